@@ -1,0 +1,72 @@
+#include "DeviationModel.h"
+
+#include <cmath>
+
+namespace prisca::core {
+
+double wrapAngle(double angle) {
+    constexpr double kTwoPi = 2.0 * M_PI;
+    // ceil keeps +pi and maps -pi to +pi, giving the half-open interval (-pi, pi].
+    return angle - kTwoPi * std::ceil((angle - M_PI) / kTwoPi);
+}
+
+void DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
+                               const Eigen::Ref<const Eigen::VectorXd>& reference,
+                               Eigen::Ref<Eigen::VectorXd> out) const {
+    out = state - reference;
+    for (int i : angleIndices) {
+        out[i] = wrapAngle(out[i]);
+    }
+    if (pose) {
+        const double dx = out[pose->x];
+        const double dy = out[pose->y];
+        const double c = std::cos(reference[pose->heading]);
+        const double s = std::sin(reference[pose->heading]);
+        out[pose->x] = c * dx + s * dy;   // longitudinal, along the desired heading
+        out[pose->y] = -s * dx + c * dy;  // lateral, positive to the left
+        out[pose->heading] = wrapAngle(state[pose->heading] - reference[pose->heading]);
+    }
+}
+
+Eigen::VectorXd DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
+                                          const Eigen::Ref<const Eigen::VectorXd>& reference) const {
+    Eigen::VectorXd out(state.size());
+    deviation(state, reference, out);
+    return out;
+}
+
+DeviationModel DeviationModel::euclidean(int dimension) {
+    DeviationModel model;
+    model.dimension = dimension;
+    return model;
+}
+
+DeviationModel DeviationModel::planarVehicle(int dimension, PlanarPoseIndices pose) {
+    DeviationModel model;
+    model.dimension = dimension;
+    model.pose = pose;
+    return model;
+}
+
+QString DeviationModel::validate() const {
+    if (dimension < 1) {
+        return QStringLiteral("state dimension must be >= 1, got %1").arg(dimension);
+    }
+    auto bad = [this](int i) { return i < 0 || i >= dimension; };
+    for (int i : angleIndices) {
+        if (bad(i)) {
+            return QStringLiteral("angle index %1 is outside 0..%2").arg(i).arg(dimension - 1);
+        }
+    }
+    if (pose && (bad(pose->x) || bad(pose->y) || bad(pose->heading) || pose->x == pose->y ||
+                 pose->x == pose->heading || pose->y == pose->heading)) {
+        return QStringLiteral("pose indices (%1, %2, %3) must be distinct and within 0..%4")
+            .arg(pose->x)
+            .arg(pose->y)
+            .arg(pose->heading)
+            .arg(dimension - 1);
+    }
+    return {};
+}
+
+}  // namespace prisca::core

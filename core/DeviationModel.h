@@ -1,0 +1,51 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace prisca::core {
+
+/// Wraps an angle to (-pi, pi] [rad].
+double wrapAngle(double angle);
+
+/// Indices of a planar pose (x, y, heading) in a state vector.
+struct PlanarPoseIndices {
+    int x = 0;        ///< world x [m]
+    int y = 1;        ///< world y [m]
+    int heading = 2;  ///< heading of the body x axis [rad], counter-clockwise from world x
+};
+
+/// How the tracking error e = s (-) s* is formed from a state and its reference.
+///
+/// Plain components subtract. Angle components subtract and wrap to (-pi, pi]. For planar
+/// vehicles the pose (x, y, heading) is expressed in the frame of the desired pose
+/// (DESIGN.md "Body-frame deviation"): the x slot holds the longitudinal error, the y slot the
+/// lateral error (positive = left of the desired pose), the heading slot the wrapped heading
+/// error. Velocities already in the body frame subtract plainly.
+struct DeviationModel {
+    int dimension = 0;                ///< state dimension n
+    std::vector<int> angleIndices;    ///< components wrapped to (-pi, pi]
+    std::optional<PlanarPoseIndices> pose;   ///< if set, pose error in the desired frame
+
+    /// e = s (-) reference; both of size n. Writes into out (size n), no allocation.
+    void deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
+                   const Eigen::Ref<const Eigen::VectorXd>& reference,
+                   Eigen::Ref<Eigen::VectorXd> out) const;
+    /// Convenience overload returning e.
+    Eigen::VectorXd deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
+                              const Eigen::Ref<const Eigen::VectorXd>& reference) const;
+
+    /// Plain vector difference for every component (no angles, no pose).
+    static DeviationModel euclidean(int dimension);
+    /// Planar vehicle with pose (x, y, heading) at the given indices.
+    static DeviationModel planarVehicle(int dimension, PlanarPoseIndices pose = {});
+
+    /// Empty when consistent; else a description of the first bad index.
+    QString validate() const;
+};
+
+}  // namespace prisca::core

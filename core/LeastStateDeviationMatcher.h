@@ -1,0 +1,57 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace prisca::core {
+
+/// How the reference index j_k of step k is chosen.
+struct MatchingParameters {
+    enum class Mode {
+        LeastStateDeviation,  ///< eq. 12: the demonstration state nearest to s_k
+        TimeDriven            ///< j_k = k (PGSD, plain PD, action playback)
+    };
+    Mode mode = Mode::LeastStateDeviation;
+    /// Forward search window [samples]: candidates are j_{k-1} .. j_{k-1} + window, so progress
+    /// along the demonstration is monotone. The first step searches 0 .. window.
+    int window = 40;
+    /// Per-component weights of the L1 distance (size n); empty means all ones.
+    Eigen::VectorXd weights;
+    /// State components that are angles: their differences wrap to (-pi, pi].
+    std::vector<int> angleIndices;
+};
+
+/// Least-state-deviation reference matching (eq. 12): j_k minimises the weighted L1 distance
+/// sum_c w_c |s_k,c - s*_j,c| over a forward window after the previous match; ties go to the
+/// earlier sample. In TimeDriven mode j_k = min(k, T - 1).
+/// One instance per controller; not thread-safe. match() does not allocate.
+class LeastStateDeviationMatcher {
+public:
+    /// @param demonstrationStates T x n, row j is s*_j
+    LeastStateDeviationMatcher(const Eigen::MatrixXd& demonstrationStates,
+                               MatchingParameters parameters);
+
+    /// Back to the start of the demonstration.
+    void reset();
+    /// The reference index for the next observation (call once per control step).
+    int match(const Eigen::Ref<const Eigen::VectorXd>& state);
+    /// The last index returned by match(), -1 before the first call.
+    int lastIndex() const { return last_; }
+    /// Weighted L1 distance between a state and demonstration sample j.
+    double distance(const Eigen::Ref<const Eigen::VectorXd>& state, int j) const;
+
+    const MatchingParameters& parameters() const { return parameters_; }
+    int length() const { return static_cast<int>(states_.cols()); }
+
+private:
+    Eigen::MatrixXd states_;  // n x T: one contiguous column per demonstration sample
+    Eigen::VectorXd weights_;
+    Eigen::ArrayXd angleMask_;  // 1 where the component is an angle
+    MatchingParameters parameters_;
+    int last_ = -1;
+    int step_ = 0;
+    bool hasAngles_ = false;
+};
+
+}  // namespace prisca::core

@@ -1,0 +1,164 @@
+#include "PriscaController.h"
+
+#include "NestedExpectation.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace prisca::core {
+
+namespace {
+
+TrackingProblem checked(TrackingProblem problem) {
+    const QString problemText = problem.validate();
+    if (!problemText.isEmpty()) {
+        throw std::invalid_argument(problemText.toStdString());
+    }
+    return problem;
+}
+
+}  // namespace
+
+PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
+                                   Eigen::MatrixXd actionMapping, PriscaParameters parameters,
+                                   QString name)
+    : problem_(checked(std::move(problem))),
+      featureMap_(std::move(features)),
+      parameters_(parameters),
+      name_(std::move(name)),
+      matcher_(problem_.demonstration->states, problem_.matching),
+      baseline_(std::max(featureMap_.featureCount(), 1), std::max(featureMap_.channelCount(), 1),
+                parameters.baselineWindow > 0 ? parameters.baselineWindow
+                                              : 2 * std::max(parameters.horizon, 1)),
+      depreciation_(std::max(parameters.horizon, 1), parameters.gamma, parameters.depreciationMode) {
+    const Demonstration& demo = *problem_.demonstration;
+    const int n = demo.stateDimension();
+    const int m = demo.actionDimension();
+    const int p = featureMap_.featureCount();
+    const int H = parameters_.horizon;
+    if (featureMap_.channelCount() != m) {
+        throw std::invalid_argument("PriscaController: the feature map must have one entry per control");
+    }
+    const QString featureProblem = featureMap_.validate(n);
+    if (!featureProblem.isEmpty()) {
+        throw std::invalid_argument(featureProblem.toStdString());
+    }
+    if (actionMapping.rows() != m || actionMapping.cols() != n) {
+        throw std::invalid_argument("PriscaController: the action mapping B must be m x n");
+    }
+    if (H < 1) {
+        throw std::invalid_argument("PriscaController: the horizon H must be >= 1");
+    }
+    referenceStates_ = demo.states.transpose();
+    referenceActions_ = demo.actions.transpose();
+    stateEffect_ = demo.dt * actionMapping;
+    costWeights_ = problem_.costWeights.size() == n ? problem_.costWeights : Eigen::VectorXd::Ones(n);
+    for (int c = 1; c <= H + 1; ++c) {
+        windowWeights_.push_back(nestedExpectationWeights(c));
+    }
+    theta_.setZero(p, m);
+    phi_.setZero(p, m);
+    gradient_.setZero(p, m);
+    smoothedA_.setZero(p, m);
+    smoothedG_.setZero(p, m);
+    historyA_.setZero(p * m, H + 1);
+    historyCost_.setZero(H + 1);
+    weightedError_.setZero(n);
+    projected_.setZero(m);
+    depreciationOfWindow_.resize(H + 1);
+    record_.action.setZero(m);
+    record_.referenceAction.setZero(m);
+    record_.deviation.setZero(n);
+}
+
+std::unique_ptr<Controller> PriscaController::clone() const {
+    return std::make_unique<PriscaController>(*this);
+}
+
+void PriscaController::setTheta(const Eigen::MatrixXd& theta) {
+    if (theta.rows() != theta_.rows() || theta.cols() != theta_.cols()) {
+        throw std::invalid_argument("PriscaController::setTheta: theta must be p x m");
+    }
+    theta_ = theta;
+}
+
+void PriscaController::reset(ResetMode mode) {
+    matcher_.reset();
+    baseline_.reset();
+    step_ = 0;
+    gradient_.setZero();
+    smoothedA_.setZero();
+    smoothedG_.setZero();
+    alpha_ = 0.0;
+    smoothedCost_ = 0.0;
+    if (mode == ResetMode::Cold) {
+        theta_.setZero();
+        learningStep_ = 0;
+    }
+}
+
+const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd>& observation) {
+    const int H = parameters_.horizon;
+    const int m = static_cast<int>(theta_.cols());
+    const int k = step_;
+
+    // 1. Reference and tracking error.
+    const int j = matcher_.match(observation);
+    problem_.deviation.deviation(observation, referenceStates_.col(j), record_.deviation);
+    const Eigen::VectorXd& e = record_.deviation;
+    featureMap_.evaluate(e, observation, phi_);
+
+    // 2. a_k: column l is phi_l scaled by how much control l moves the weighted error.
+    weightedError_ = costWeights_.cwiseProduct(e);
+    projected_.noalias() = stateEffect_ * weightedError_;
+    const int slot = k % (H + 1);
+    for (int l = 0; l < m; ++l) {
+        historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) = phi_.col(l) * projected_[l];
+    }
+    record_.cost = e.dot(weightedError_);
+    historyCost_[slot] = record_.cost;
+
+    // 3. Nested-expectation smoothing over the window, with the inverse depreciation.
+    const int count = std::min(k, H) + 1;
+    const Eigen::VectorXd& w = windowWeights_[count - 1];
+    smoothedA_.setZero();
+    smoothedG_.setZero();
+    smoothedCost_ = 0.0;
+    depreciationOfWindow_.resize(count);  // changes size only while the first window fills
+    for (int t = 0; t < count; ++t) {
+        const int sample = k - count + 1 + t;
+        const int ring = sample % (H + 1);
+        const double D = parameters_.useInverseDepreciation ? depreciation_.at(sample, k) : 1.0;
+        depreciationOfWindow_[t] = D;
+        const auto a = historyA_.col(ring).reshaped(phi_.rows(), m);
+        smoothedA_ += w[t] * a;
+        smoothedG_ += (w[t] * D) * a;
+        smoothedCost_ += w[t] * historyCost_[ring];
+    }
+
+    // 4. Gradient with the local optimal baseline.
+    if (parameters_.useBaseline) {
+        baseline_.push(smoothedA_, smoothedG_);
+        gradient_ = smoothedG_ - baseline_.value().cwiseProduct(smoothedA_);
+    } else {
+        gradient_ = smoothedG_;
+    }
+
+    // 5. Parameter update.
+    alpha_ = parameters_.stepSize.at(learningStep_);
+    if (parameters_.learning) {
+        theta_ -= alpha_ * gradient_;
+    }
+
+    // 6. Control input from the updated theta.
+    record_.referenceIndex = j;
+    record_.referenceAction = referenceActions_.col(j);
+    record_.action = (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
+    problem_.limits.saturate(record_.action);
+    record_.step = k;
+    ++step_;
+    ++learningStep_;
+    return record_;
+}
+
+}  // namespace prisca::core

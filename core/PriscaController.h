@@ -1,0 +1,107 @@
+#pragma once
+
+#include "Controller.h"
+#include "FeatureMap.h"
+#include "InverseDepreciation.h"
+#include "LeastStateDeviationMatcher.h"
+#include "LocalOptimalBaseline.h"
+#include "StepSize.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace prisca::core {
+
+/// Tuning of PRISCA (Algorithm 1, inputs 4-6). Plain data.
+struct PriscaParameters {
+    int horizon = 10;     ///< H, the smoothing horizon [steps] (>= 1)
+    double gamma = 0.9;   ///< rate of inverse depreciation in [0, 1] (eq. 10)
+    InverseDepreciation::Mode depreciationMode = InverseDepreciation::Mode::RelativeToWindow;
+    bool useInverseDepreciation = true;  ///< false: D = 1 (the PGSD special case)
+    bool useBaseline = true;             ///< false: b = 0 (the PGSD special case)
+    int baselineWindow = 0;              ///< tau' [steps] for eq. 15; 0 means 2H
+    StepSize stepSize;                   ///< alpha_k (eq. 3)
+    bool learning = true;                ///< false: theta stays as set (policy evaluation)
+};
+
+/// PRISCA as an online controller (Algorithm 1, lines 10-19). Each step:
+///   1. match the reference j_k (eq. 12, or by time) and form e_k = s_k (-) s*_{j_k};
+///   2. a_k = phi_l(s_k) (e_k^T W dS_l) per channel, dS_l = dt B[l, :] (eq. 4-6, 14);
+///   3. A_k = sum_j w_j a_j and G_k = sum_j w_j a_j D_j over the H-step window (eq. 13, 14);
+///   4. b from the last tau' pairs (A, G) (eq. 15); g = G_k - b (.) A_k;
+///   5. theta -= alpha_k g (eq. 2, 3);
+///   6. u_k = theta^T phi(s_k) + u*_{j_k} per channel, saturated (line 18).
+/// step() does not allocate. Single-threaded; clone() for parallel trials.
+class PriscaController : public Controller {
+public:
+    /// @param problem        demonstration, deviation model, matching, cost weights, limits
+    /// @param features       phi_l for each of the m channels
+    /// @param actionMapping  B (m x n): B_v (.) B~ for PRISCA, B~ itself for a sign-only model
+    PriscaController(TrackingProblem problem, FeatureMap features, Eigen::MatrixXd actionMapping,
+                     PriscaParameters parameters, QString name = QStringLiteral("prisca"));
+
+    QString name() const override { return name_; }
+    void reset(ResetMode mode = ResetMode::Cold) override;
+    const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
+    std::unique_ptr<Controller> clone() const override;
+
+    /// theta (p x m), column l = theta_l.
+    const Eigen::MatrixXd& theta() const { return theta_; }
+    /// Replaces theta (p x m), e.g. to evaluate a fixed policy or to warm start from a session.
+    void setTheta(const Eigen::MatrixXd& theta);
+    /// g of the last step (p x m).
+    const Eigen::MatrixXd& gradient() const { return gradient_; }
+    /// b of the last step (p x m); zero when the baseline is off.
+    const Eigen::MatrixXd& baseline() const { return baseline_.value(); }
+    /// A_k and G_k of the last step (p x m).
+    const Eigen::MatrixXd& smoothedA() const { return smoothedA_; }
+    const Eigen::MatrixXd& smoothedG() const { return smoothedG_; }
+    /// Phi of the last step (p x m).
+    const Eigen::MatrixXd& features() const { return phi_; }
+    /// alpha_k of the last step.
+    double stepSize() const { return alpha_; }
+    /// D of the samples of the last window, oldest first (size min(k, H) + 1).
+    const Eigen::VectorXd& depreciation() const { return depreciationOfWindow_; }
+    /// J_k = sum_j w_j C_j, the smoothed cost of the last window (eq. 9).
+    double smoothedCost() const { return smoothedCost_; }
+    /// dS (m x n): row l is the state effect dt B[l, :] of control l.
+    const Eigen::MatrixXd& stateEffect() const { return stateEffect_; }
+    const PriscaParameters& parameters() const { return parameters_; }
+    const FeatureMap& featureMap() const { return featureMap_; }
+    /// Steps taken since the last cold reset (the k of alpha_k).
+    int learningSteps() const { return learningStep_; }
+
+private:
+    TrackingProblem problem_;
+    FeatureMap featureMap_;
+    PriscaParameters parameters_;
+    QString name_;
+    LeastStateDeviationMatcher matcher_;
+    LocalOptimalBaseline baseline_;
+    InverseDepreciation depreciation_;
+
+    Eigen::MatrixXd referenceStates_;   // n x T
+    Eigen::MatrixXd referenceActions_;  // m x T
+    Eigen::MatrixXd stateEffect_;       // m x n, dt * B
+    Eigen::VectorXd costWeights_;       // n
+    std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
+
+    Eigen::MatrixXd theta_;
+    Eigen::MatrixXd phi_;
+    Eigen::MatrixXd gradient_;
+    Eigen::MatrixXd smoothedA_;
+    Eigen::MatrixXd smoothedG_;
+    Eigen::MatrixXd historyA_;  // (p*m) x (H+1) ring of a_j
+    Eigen::VectorXd historyCost_;  // (H+1) ring of C_j
+    Eigen::VectorXd weightedError_;
+    Eigen::VectorXd projected_;
+    Eigen::VectorXd depreciationOfWindow_;
+    ControlStep record_;
+    double alpha_ = 0.0;
+    double smoothedCost_ = 0.0;
+    int step_ = 0;          // k within the trial
+    int learningStep_ = 0;  // k of alpha_k, kept across warm starts
+};
+
+}  // namespace prisca::core

@@ -1,0 +1,28 @@
+# Fails when prisca_core links, or its sources include, anything above QtCore and Eigen.
+# Run by CTest as: cmake -DLINKS_FILE=... -DCORE_DIR=... -P check_core_links.cmake
+file(READ "${LINKS_FILE}" links)
+string(REPLACE "\n" ";" links "${links}")
+set(allowed "Qt6::Core" "Eigen3::Eigen" "")
+foreach(lib IN LISTS links)
+    string(STRIP "${lib}" lib)
+    if(NOT lib IN_LIST allowed)
+        message(FATAL_ERROR "prisca_core links '${lib}', which is above QtCore + Eigen")
+    endif()
+endforeach()
+
+file(GLOB sources "${CORE_DIR}/*.h" "${CORE_DIR}/*.cpp")
+set(forbidden "QtGui" "QtWidgets" "QtCharts" "QtSerialPort" "QWidget" "QPainter" "QImage"
+              "opencv" "box2d" "QObject")
+foreach(src IN LISTS sources)
+    file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include")
+    foreach(line IN LISTS includes)
+        foreach(word IN LISTS forbidden)
+            string(FIND "${line}" "${word}" at)
+            if(NOT at EQUAL -1)
+                message(FATAL_ERROR "${src}: '${line}' reaches above QtCore + Eigen (${word})")
+            endif()
+        endforeach()
+    endforeach()
+endforeach()
+list(LENGTH sources count)
+message(STATUS "prisca_core: ${count} sources, links only QtCore + Eigen")
