@@ -1,12 +1,13 @@
 #include "LocalOptimalBaseline.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 namespace prisca::core {
 
-LocalOptimalBaseline::LocalOptimalBaseline(int rows, int cols, int window)
-    : rows_(rows), cols_(cols), window_(window) {
+LocalOptimalBaseline::LocalOptimalBaseline(int rows, int cols, int window, Mode mode)
+    : rows_(rows), cols_(cols), window_(window), mode_(mode) {
     if (rows < 1 || cols < 1 || window < 1) {
         throw std::invalid_argument("LocalOptimalBaseline: shape and window must be >= 1");
     }
@@ -15,6 +16,7 @@ LocalOptimalBaseline::LocalOptimalBaseline(int rows, int cols, int window)
     meanA_.setZero(rows * cols);
     meanAA_.setZero(rows * cols);
     meanGA_.setZero(rows * cols);
+    meanG_.setZero(rows * cols);
     baseline_.setZero(rows, cols);
 }
 
@@ -22,6 +24,7 @@ void LocalOptimalBaseline::reset() {
     count_ = 0;
     next_ = 0;
     baseline_.setZero();
+    meanA_.setZero();
 }
 
 void LocalOptimalBaseline::push(const Eigen::Ref<const Eigen::MatrixXd>& a,
@@ -40,11 +43,34 @@ void LocalOptimalBaseline::push(const Eigen::Ref<const Eigen::MatrixXd>& a,
     meanA_ = storedA.rowwise().sum() * inv;
     meanAA_ = storedA.square().rowwise().sum() * inv;
     meanGA_ = (storedG * storedA).rowwise().sum() * inv;
+    if (mode_ == Mode::ControlVariate) {
+        meanG_ = storedG.rowwise().sum() * inv;
+    }
     for (int i = 0; i < rows_ * cols_; ++i) {
-        const double denominator = meanAA_[i] + meanA_[i] * meanA_[i];
-        baseline_.data()[i] = denominator > std::numeric_limits<double>::min()
-                                  ? 2.0 * meanGA_[i] / denominator
-                                  : 0.0;
+        double numerator = 0.0;
+        double denominator = 0.0;
+        if (mode_ == Mode::PaperEq15) {
+            numerator = 2.0 * meanGA_[i];
+            denominator = meanAA_[i] + meanA_[i] * meanA_[i];
+        } else {
+            numerator = meanGA_[i] - meanG_[i] * meanA_[i];
+            denominator = meanAA_[i] - meanA_[i] * meanA_[i];
+        }
+        // A variance that rounding left at a sliver of its mean square is no variance at all.
+        const double floor = mode_ == Mode::ControlVariate ? 1e-12 * meanAA_[i] : 0.0;
+        baseline_.data()[i] =
+            denominator > std::max(floor, std::numeric_limits<double>::min()) ? numerator / denominator
+                                                                              : 0.0;
+    }
+}
+
+void LocalOptimalBaseline::gradient(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                    const Eigen::Ref<const Eigen::MatrixXd>& g,
+                                    Eigen::Ref<Eigen::MatrixXd> out) const {
+    if (mode_ == Mode::PaperEq15) {
+        out = g - baseline_.cwiseProduct(a);
+    } else {
+        out = g - baseline_.cwiseProduct(a - meanA_.reshaped(rows_, cols_).matrix());
     }
 }
 

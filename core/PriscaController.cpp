@@ -29,7 +29,8 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
       matcher_(problem_.demonstration->states, problem_.matching),
       baseline_(std::max(featureMap_.featureCount(), 1), std::max(featureMap_.channelCount(), 1),
                 parameters.baselineWindow > 0 ? parameters.baselineWindow
-                                              : 2 * std::max(parameters.horizon, 1)),
+                                              : 2 * std::max(parameters.horizon, 1),
+                parameters.baselineMode),
       depreciation_(std::max(parameters.horizon, 1), parameters.gamma, parameters.depreciationMode) {
     const Demonstration& demo = *problem_.demonstration;
     const int n = demo.stateDimension();
@@ -139,7 +140,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     // 4. Gradient with the local optimal baseline.
     if (parameters_.useBaseline) {
         baseline_.push(smoothedA_, smoothedG_);
-        gradient_ = smoothedG_ - baseline_.value().cwiseProduct(smoothedA_);
+        baseline_.gradient(smoothedA_, smoothedG_, gradient_);
     } else {
         gradient_ = smoothedG_;
     }

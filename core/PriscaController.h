@@ -20,6 +20,9 @@ struct PriscaParameters {
     InverseDepreciation::Mode depreciationMode = InverseDepreciation::Mode::RelativeToWindow;
     bool useInverseDepreciation = true;  ///< false: D = 1 (the PGSD special case)
     bool useBaseline = true;             ///< false: b = 0 (the PGSD special case)
+    /// Which local baseline (see LocalOptimalBaseline): eq. 15 as printed diverges on a
+    /// linear plant, so the unbiased control-variate form is the default.
+    LocalOptimalBaseline::Mode baselineMode = LocalOptimalBaseline::Mode::ControlVariate;
     int baselineWindow = 0;              ///< tau' [steps] for eq. 15; 0 means 2H
     StepSize stepSize;                   ///< alpha_k (eq. 3)
     bool learning = true;                ///< false: theta stays as set (policy evaluation)
@@ -29,7 +32,8 @@ struct PriscaParameters {
 ///   1. match the reference j_k (eq. 12, or by time) and form e_k = s_k (-) s*_{j_k};
 ///   2. a_k = phi_l(s_k) (e_k^T W dS_l) per channel, dS_l = dt B[l, :] (eq. 4-6, 14);
 ///   3. A_k = sum_j w_j a_j and G_k = sum_j w_j a_j D_j over the H-step window (eq. 13, 14);
-///   4. b from the last tau' pairs (A, G) (eq. 15); g = G_k - b (.) A_k;
+///   4. b from the last tau' pairs (A, G) (eq. 15) and g = G_k - b (.) A_k, or the unbiased
+///      control-variate form (LocalOptimalBaseline explains the choice);
 ///   5. theta -= alpha_k g (eq. 2, 3);
 ///   6. u_k = theta^T phi(s_k) + u*_{j_k} per channel, saturated (line 18).
 /// step() does not allocate. Single-threaded; clone() for parallel trials.

@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.24)
 # Fails when prisca_core links, or its sources include, anything above QtCore and Eigen.
 # Run by CTest as: cmake -DLINKS_FILE=... -DCORE_DIR=... -P check_core_links.cmake
 file(READ "${LINKS_FILE}" links)

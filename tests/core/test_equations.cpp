@@ -116,7 +116,7 @@ private slots:
         std::mt19937 rng(3);
         std::normal_distribution<double> normal(0.0, 1.0);
         const int p = 3, m = 2, window = 6;
-        LocalOptimalBaseline baseline(p, m, window);
+        LocalOptimalBaseline baseline(p, m, window, LocalOptimalBaseline::Mode::PaperEq15);
         std::vector<Eigen::MatrixXd> As, Gs;
         for (int k = 0; k < 25; ++k) {
             Eigen::MatrixXd A(p, m), G(p, m);
@@ -155,6 +155,60 @@ private slots:
         baseline.reset();
         QCOMPARE(baseline.size(), 0);
         QVERIFY(baseline.value().isZero());
+    }
+
+    void controlVariateBaseline_isCovarianceOverVarianceAndKeepsTheMean() {
+        std::mt19937 rng(4);
+        std::normal_distribution<double> normal(0.0, 1.0);
+        const int p = 2, m = 2, window = 5;
+        LocalOptimalBaseline baseline(p, m, window, LocalOptimalBaseline::Mode::ControlVariate);
+        std::vector<Eigen::MatrixXd> As, Gs;
+        for (int k = 0; k < 20; ++k) {
+            Eigen::MatrixXd A(p, m), G(p, m);
+            for (int i = 0; i < p; ++i)
+                for (int l = 0; l < m; ++l) {
+                    A(i, l) = 1.0 + normal(rng);
+                    G(i, l) = 3.0 * A(i, l) + 0.5 * normal(rng);
+                }
+            A(1, 1) = 2.0;  // constant: no variance, so b = 0 there
+            As.push_back(A);
+            Gs.push_back(G);
+            baseline.push(A, G);
+            const int first = std::max(0, k - window + 1);
+            const double count = k - first + 1;
+            Eigen::MatrixXd g(p, m);
+            baseline.gradient(A, G, g);
+            for (int i = 0; i < p; ++i) {
+                for (int l = 0; l < m; ++l) {
+                    double ma = 0, mg = 0;
+                    for (int t = first; t <= k; ++t) {
+                        ma += As[t](i, l) / count;
+                        mg += Gs[t](i, l) / count;
+                    }
+                    double cov = 0, var = 0;
+                    for (int t = first; t <= k; ++t) {
+                        cov += (Gs[t](i, l) - mg) * (As[t](i, l) - ma) / count;
+                        var += (As[t](i, l) - ma) * (As[t](i, l) - ma) / count;
+                    }
+                    const double b = var > 1e-12 ? cov / var : 0.0;
+                    QVERIFY2(std::abs(baseline.value()(i, l) - b) <= 1e-10 * (1 + std::abs(b)),
+                             qPrintable(QString("k=%1 (%2,%3): %4 vs %5").arg(k).arg(i).arg(l).arg(baseline.value()(i, l)).arg(b)));
+                    const double expected = G(i, l) - b * (A(i, l) - ma);
+                    QVERIFY(std::abs(g(i, l) - expected) <= 1e-10 * (1 + std::abs(expected)));
+                }
+            }
+        }
+        QCOMPARE(baseline.value()(1, 1), 0.0);
+        // Averaged over the window, the corrected gradient keeps G's mean: the control variate
+        // A - E[A] sums to zero over the stored steps.
+        Eigen::MatrixXd meanCorrected = Eigen::MatrixXd::Zero(p, m), meanG = Eigen::MatrixXd::Zero(p, m);
+        for (int t = 20 - window; t < 20; ++t) {
+            Eigen::MatrixXd g(p, m);
+            baseline.gradient(As[t], Gs[t], g);
+            meanCorrected += g / window;
+            meanG += Gs[t] / window;
+        }
+        QVERIFY((meanCorrected - meanG).cwiseAbs().maxCoeff() <= 1e-12);
     }
 
     void wrapAngle_isHalfOpenAroundZero() {

@@ -1,0 +1,235 @@
+// The comparison methods: PD and its H / LSD variants, action playback, PEGASUS.
+#include "core/ActionPlayback.h"
+#include "core/PdController.h"
+#include "core/Pegasus.h"
+#include "core/PriscaController.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <set>
+
+using namespace prisca::core;
+
+namespace {
+
+// Demonstration of an integrator s_{k+1} = s_k + dt G u_k driven by smooth actions.
+std::shared_ptr<Demonstration> integratorDemonstration(const Eigen::MatrixXd& G, int T, double dt) {
+    auto d = std::make_shared<Demonstration>();
+    d->dt = dt;
+    const int n = static_cast<int>(G.rows()), m = static_cast<int>(G.cols());
+    for (int c = 0; c < n; ++c) {
+        d->stateNames << QStringLiteral("s%1").arg(c);
+        d->stateUnits << QStringLiteral("m");
+    }
+    for (int l = 0; l < m; ++l) {
+        d->actionNames << QStringLiteral("u%1").arg(l);
+        d->actionUnits << QStringLiteral("1");
+    }
+    d->time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * dt);
+    d->states.resize(T, n);
+    d->actions.resize(T, m);
+    Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < T; ++k) {
+        for (int l = 0; l < m; ++l) d->actions(k, l) = std::sin(1.1 * k * dt + l);
+        d->states.row(k) = s.transpose();
+        s += dt * G * d->actions.row(k).transpose();
+    }
+    return d;
+}
+
+TrackingProblem problemFor(std::shared_ptr<const Demonstration> demo, MatchingParameters::Mode mode) {
+    TrackingProblem problem;
+    problem.demonstration = demo;
+    problem.deviation = DeviationModel::euclidean(demo->stateDimension());
+    problem.matching.mode = mode;
+    problem.matching.window = 10;
+    problem.limits = ActionLimits::symmetric(demo->actionDimension(), 5.0);
+    return problem;
+}
+
+// Mean cost of one closed-loop trial on the integrator with gain scaled by `gainError`.
+double closedLoopCost(Controller& controller, const Demonstration& demo, const Eigen::MatrixXd& G,
+                      double gainError, ResetMode mode = ResetMode::Cold) {
+    controller.reset(mode);
+    Eigen::VectorXd s = Eigen::VectorXd::Constant(G.rows(), 0.05);
+    double sum = 0.0;
+    for (int k = 0; k < demo.length(); ++k) {
+        const ControlStep& out = controller.step(s);
+        sum += out.cost;
+        s += demo.dt * gainError * G * out.action;
+    }
+    return sum / demo.length();
+}
+
+}  // namespace
+
+class TestBaselines : public QObject {
+    Q_OBJECT
+private slots:
+    void pd_isNegativeFeedbackOnTheCombinedError() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(2, 2), 50, 0.1);
+        PdParameters gains;
+        gains.errorCombination = (Eigen::MatrixXd(2, 2) << 1.0, 0.5, 0.0, 1.0).finished();
+        gains.kp = Eigen::Vector2d(2.0, 3.0);
+        gains.kd = Eigen::Vector2d(0.5, 0.0);
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven), gains, "pd");
+        double previous0 = 0.0;
+        for (int k = 0; k < 10; ++k) {
+            const Eigen::Vector2d e(0.1 * k, -0.05 * k * k);
+            const ControlStep& out = pd.step(demo->states.row(k).transpose() + e);
+            const double eps0 = e[0] + 0.5 * e[1], eps1 = e[1];
+            const double rate0 = k == 0 ? 0.0 : (eps0 - previous0) / 0.1;
+            previous0 = eps0;
+            QVERIFY(std::abs(out.action[0] - (demo->actions(k, 0) - 2.0 * eps0 - 0.5 * rate0)) <= 1e-12);
+            QVERIFY(std::abs(out.action[1] - std::clamp(demo->actions(k, 1) - 3.0 * eps1, -5.0, 5.0)) <= 1e-12);
+            QCOMPARE(out.referenceIndex, k);
+        }
+    }
+
+    void pdH_smoothsTheErrorWithTheNestedWeights() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(1, 1), 40, 0.1);
+        PdParameters gains;
+        gains.errorCombination = Eigen::MatrixXd::Ones(1, 1);
+        gains.kp = Eigen::VectorXd::Constant(1, 1.0);
+        gains.kd = Eigen::VectorXd::Zero(1);
+        gains.horizon = 3;
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven), gains, "pd-h");
+        std::vector<double> errors;
+        for (int k = 0; k < 12; ++k) {
+            const double e = std::cos(0.9 * k);
+            errors.push_back(e);
+            const double u = pd.step(demo->states.row(k).transpose() + Eigen::VectorXd::Constant(1, e)).action[0];
+            const int a = std::max(0, k - 3);
+            double smoothed = 0.0;  // E_{i=a:k} E_{j=i:k} e_j, literally
+            for (int i = a; i <= k; ++i) {
+                double inner = 0.0;
+                for (int j = i; j <= k; ++j) inner += errors[j];
+                smoothed += inner / (k - i + 1);
+            }
+            smoothed /= (k - a + 1);
+            QVERIFY2(std::abs(u - (demo->actions(k, 0) - smoothed)) <= 1e-12, qPrintable(QString::number(k)));
+        }
+    }
+
+    void pdLsd_followsTheNearestDemonstrationState() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(1, 1), 60, 0.1);
+        PdParameters gains;
+        gains.errorCombination = Eigen::MatrixXd::Ones(1, 1);
+        gains.kp = Eigen::VectorXd::Constant(1, 1.0);
+        gains.kd = Eigen::VectorXd::Zero(1);
+        PdController pd(problemFor(demo, MatchingParameters::Mode::LeastStateDeviation), gains,
+                        PdController::variantName(false, true));
+        QCOMPARE(pd.name(), QStringLiteral("pd-lsd"));
+        // Holding still at the start: the reference waits instead of running away by time.
+        for (int k = 0; k < 5; ++k) QCOMPARE(pd.step(demo->states.row(0).transpose()).referenceIndex, 0);
+        QCOMPARE(PdController::variantName(true, true), QStringLiteral("pd-h-lsd"));
+        QCOMPARE(PdController::variantName(true, false), QStringLiteral("pd-h"));
+    }
+
+    void pd_closesTheLoopBetterThanPlaybackWhenTheGainIsWrong() {
+        const Eigen::MatrixXd G = Eigen::MatrixXd::Identity(2, 2);
+        auto demo = integratorDemonstration(G, 300, 0.025);
+        PdParameters gains;
+        gains.errorCombination = Eigen::MatrixXd::Identity(2, 2);
+        gains.kp = Eigen::Vector2d(8.0, 8.0);
+        gains.kd = Eigen::Vector2d(0.0, 0.0);
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven), gains, "pd");
+        ActionPlayback playback(problemFor(demo, MatchingParameters::Mode::TimeDriven));
+        const double pdCost = closedLoopCost(pd, *demo, G, 2.0);
+        const double playbackCost = closedLoopCost(playback, *demo, G, 2.0);
+        QVERIFY2(pdCost * 5.0 < playbackCost, qPrintable(QString("%1 vs %2").arg(pdCost).arg(playbackCost)));
+    }
+
+    void playback_replaysActionsByTimeAndHoldsTheLast() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(1, 1), 8, 0.1);
+        TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::LeastStateDeviation);
+        problem.limits = ActionLimits::symmetric(1, 0.9);
+        ActionPlayback playback(problem);
+        for (int k = 0; k < 12; ++k) {
+            const Eigen::VectorXd s = Eigen::VectorXd::Constant(1, 100.0);  // ignored for the action
+            const ControlStep& out = playback.step(s);
+            const int j = std::min(k, 7);
+            QCOMPARE(out.referenceIndex, j);
+            QCOMPARE(out.action[0], std::clamp(demo->actions(j, 0), -0.9, 0.9));
+            QVERIFY(std::abs(out.cost - std::pow(100.0 - demo->states(j, 0), 2)) <= 1e-9);
+        }
+        playback.reset();
+        QCOMPARE(playback.step(Eigen::VectorXd::Zero(1)).referenceIndex, 0);
+    }
+
+    void pegasus_finiteDifferenceGradientIsExactOnAQuadratic() {
+        Eigen::MatrixXd target(2, 2);
+        target << 1.0, -2.0, 0.5, 3.0;
+        std::set<int> scenariosSeen;
+        auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
+            scenariosSeen.insert(scenario);
+            const Eigen::MatrixXd shifted = target.array() + 0.1 * scenario;
+            return EpisodeOutcome{(theta - shifted).squaredNorm(), 100};
+        };
+        PegasusParameters parameters;
+        parameters.scenarios = 3;
+        parameters.stepSize = 0.25;
+        parameters.perturbation = 0.01;
+        Pegasus pegasus(rollout, Eigen::MatrixXd::Zero(2, 2), parameters);
+        const auto first = pegasus.iterate();
+        QVERIFY(first.has_value());
+        const Eigen::MatrixXd meanTarget = target.array() + 0.1;  // mean of the three shifts
+        QVERIFY((first->gradient - (-2.0 * meanTarget)).cwiseAbs().maxCoeff() <= 1e-9);
+        QCOMPARE(first->stepsConsumed, (2LL * 4 + 1) * 3 * 100);
+        QCOMPARE(pegasus.stepsConsumed(), first->stepsConsumed);
+        QCOMPARE(scenariosSeen, (std::set<int>{0, 1, 2}));
+        for (int i = 0; i < 40; ++i) pegasus.iterate();
+        QVERIFY((pegasus.theta() - meanTarget).cwiseAbs().maxCoeff() <= 1e-9);
+    }
+
+    void pegasus_cancelLeavesThetaAndLimitsTheStep() {
+        auto rollout = [](const Eigen::MatrixXd& theta, int) { return EpisodeOutcome{theta.squaredNorm(), 1}; };
+        PegasusParameters parameters;
+        parameters.stepSize = 100.0;
+        parameters.maxStepNorm = 0.5;
+        Pegasus pegasus(rollout, Eigen::MatrixXd::Constant(1, 2, 3.0), parameters);
+        int polls = 0;
+        QVERIFY(!pegasus.iterate([&] { return ++polls > 3; }).has_value());
+        QCOMPARE(pegasus.theta(), Eigen::MatrixXd::Constant(1, 2, 3.0));
+        QVERIFY(pegasus.iterate().has_value());
+        QVERIFY(std::abs((pegasus.theta() - Eigen::MatrixXd::Constant(1, 2, 3.0)).norm() - 0.5) <= 1e-12);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Pegasus({}, Eigen::MatrixXd::Zero(1, 1), {}));
+    }
+
+    void pegasus_improvesAFrozenLinearPolicyOnFixedScenarios() {
+        const Eigen::MatrixXd G = Eigen::MatrixXd::Identity(1, 1);
+        auto demo = integratorDemonstration(G, 200, 0.025);
+        PriscaParameters frozen;
+        frozen.learning = false;
+        PriscaController policy(problemFor(demo, MatchingParameters::Mode::TimeDriven),
+                                FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 1), frozen);
+        auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
+            policy.setTheta(theta);
+            policy.reset(ResetMode::WarmStart);
+            Eigen::VectorXd s = Eigen::VectorXd::Constant(1, 0.1 * (scenario + 1));
+            double sum = 0.0;
+            for (int k = 0; k < demo->length(); ++k) {
+                const ControlStep& out = policy.step(s);
+                sum += out.cost;
+                s += demo->dt * 2.5 * G * out.action;  // the real gain differs
+            }
+            return EpisodeOutcome{sum / demo->length(), demo->length()};
+        };
+        PegasusParameters parameters;
+        parameters.scenarios = 2;
+        parameters.stepSize = 20.0;
+        parameters.maxStepNorm = 2.0;
+        Pegasus pegasus(rollout, Eigen::MatrixXd::Zero(1, 1), parameters);
+        const double before = pegasus.evaluate(pegasus.theta());
+        for (int i = 0; i < 30; ++i) pegasus.iterate();
+        const double after = pegasus.evaluate(pegasus.theta());
+        QVERIFY2(after < 0.5 * before, qPrintable(QString("%1 -> %2").arg(before).arg(after)));
+        QVERIFY(pegasus.theta()(0, 0) < 0.0);  // negative feedback was found
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBaselines)
+#include "test_baselines.moc"
