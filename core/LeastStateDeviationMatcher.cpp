@@ -9,11 +9,17 @@
 
 namespace prisca::core {
 
+namespace {
+// Candidates are scored in blocks of this many samples: large enough to vectorise, small
+// enough that the scratch stays in L1 cache.
+constexpr int kChunk = 256;
+}  // namespace
+
 LeastStateDeviationMatcher::LeastStateDeviationMatcher(const Eigen::MatrixXd& demonstrationStates,
                                                        MatchingParameters parameters)
-    : states_(demonstrationStates.transpose()), parameters_(std::move(parameters)) {
-    const int n = static_cast<int>(states_.rows());
-    if (states_.cols() < 1 || n < 1) {
+    : states_(demonstrationStates), parameters_(std::move(parameters)) {
+    const int n = static_cast<int>(states_.cols());
+    if (states_.rows() < 1 || n < 1) {
         throw std::invalid_argument("LeastStateDeviationMatcher: empty demonstration");
     }
     if (parameters_.window < 0) {
@@ -23,14 +29,20 @@ LeastStateDeviationMatcher::LeastStateDeviationMatcher(const Eigen::MatrixXd& de
     if (weights_.size() != n) {
         throw std::invalid_argument("LeastStateDeviationMatcher: weights must have size n");
     }
-    angleMask_.setZero(n);
     for (int i : parameters_.angleIndices) {
         if (i < 0 || i >= n) {
             throw std::invalid_argument("LeastStateDeviationMatcher: angle index out of range");
         }
-        angleMask_[i] = 1.0;
-        hasAngles_ = true;
+        angleRows_.push_back(i);
+        // Stored wrapped, so a difference of two angles lies in (-2 pi, 2 pi) and its wrapped
+        // magnitude is min(|d|, 2 pi - |d|): branch-free and vectorisable.
+        for (Eigen::Index j = 0; j < states_.rows(); ++j) {
+            states_(j, i) = wrapAngle(states_(j, i));
+        }
     }
+    wrappedState_.resize(n);
+    difference_.resize(kChunk);
+    distances_.resize(kChunk);
 }
 
 void LeastStateDeviationMatcher::reset() {
@@ -40,18 +52,11 @@ void LeastStateDeviationMatcher::reset() {
 
 double LeastStateDeviationMatcher::distance(const Eigen::Ref<const Eigen::VectorXd>& state,
                                             int j) const {
-    if (!hasAngles_) {
-        return (weights_.array() * (state - states_.col(j)).array().abs()).sum();
+    Eigen::ArrayXd d = (state - states_.row(j).transpose()).array();
+    for (int c : angleRows_) {
+        d[c] = wrapAngle(d[c]);
     }
-    double sum = 0.0;
-    for (int c = 0; c < states_.rows(); ++c) {
-        double d = state[c] - states_(c, j);
-        if (angleMask_[c] != 0.0) {
-            d = wrapAngle(d);
-        }
-        sum += weights_[c] * std::abs(d);
-    }
-    return sum;
+    return (weights_.array() * d.abs()).sum();
 }
 
 int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& state) {
@@ -63,13 +68,31 @@ int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& s
     }
     const int first = std::max(last_, 0);
     const int end = std::min(T - 1, first + parameters_.window);
+    constexpr double kTwoPi = 2.0 * M_PI;
+    wrappedState_ = state;
+    for (int c : angleRows_) {
+        wrappedState_[c] = wrapAngle(state[c]);
+    }
     int best = first;
     double bestDistance = std::numeric_limits<double>::infinity();
-    for (int j = first; j <= end; ++j) {
-        const double d = distance(state, j);
-        if (d < bestDistance) {  // strict: ties keep the earlier sample
-            bestDistance = d;
-            best = j;
+    for (int start = first; start <= end; start += kChunk) {
+        const int count = std::min(kChunk, end - start + 1);
+        // One contiguous pass per component: sum_c w_c |s*_j,c - s_c| for the whole block.
+        auto dist = distances_.head(count);
+        auto diff = difference_.head(count);
+        dist.setZero();
+        for (int c = 0; c < states_.cols(); ++c) {
+            diff = (states_.col(c).segment(start, count).array() - wrappedState_[c]).abs();
+            if (std::find(angleRows_.begin(), angleRows_.end(), c) != angleRows_.end()) {
+                diff = diff.min(kTwoPi - diff);
+            }
+            dist += weights_[c] * diff;
+        }
+        for (int t = 0; t < count; ++t) {
+            if (dist[t] < bestDistance) {  // strict: ties keep the earlier sample
+                bestDistance = dist[t];
+                best = start + t;
+            }
         }
     }
     last_ = best;

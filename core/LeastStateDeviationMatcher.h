@@ -42,16 +42,18 @@ public:
     double distance(const Eigen::Ref<const Eigen::VectorXd>& state, int j) const;
 
     const MatchingParameters& parameters() const { return parameters_; }
-    int length() const { return static_cast<int>(states_.cols()); }
+    int length() const { return static_cast<int>(states_.rows()); }
 
 private:
-    Eigen::MatrixXd states_;  // n x T: one contiguous column per demonstration sample
+    Eigen::MatrixXd states_;  // T x n: each component contiguous over time, angles in (-pi, pi]
     Eigen::VectorXd weights_;
-    Eigen::ArrayXd angleMask_;  // 1 where the component is an angle
+    std::vector<int> angleRows_;  // components that are angles
+    Eigen::ArrayXd difference_;   // kChunk scratch, so match() never allocates
+    Eigen::ArrayXd distances_;    // kChunk scratch
+    Eigen::VectorXd wrappedState_;  // n scratch
     MatchingParameters parameters_;
     int last_ = -1;
     int step_ = 0;
-    bool hasAngles_ = false;
 };
 
 }  // namespace prisca::core

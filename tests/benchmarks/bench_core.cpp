@@ -1,6 +1,7 @@
 // Core benchmarks (make bench): one PRISCA control step and the least-state-deviation match.
 // Prints medians over batches; compare with the targets in DESIGN.md "Performance targets".
 #include "core/Controller.h"
+#include "core/DemonstrationCsv.h"
 #include "core/DeviationModel.h"
 #include "core/FeatureMap.h"
 #include "core/LeastStateDeviationMatcher.h"
@@ -128,6 +129,18 @@ int main() {
         });
         std::printf("lsd_match (T=10000, window %d samples): median %.3f us per step "
                     "(target <= 10 us) [%lld]\n", window, us, sink * 0);
+    }
+    // Reading a 100,000-row demonstration (about 40 minutes at 40 Hz).
+    {
+        auto big = syntheticDemonstration(100000);
+        const QByteArray text = formatDemonstrationCsv(*big);
+        FileError error;
+        bool ok = true;
+        const double us = medianMicroseconds(7, 1, [&] {
+            ok = ok && parseDemonstrationCsv(text, QStringLiteral("bench"), &error).has_value();
+        });
+        std::printf("csv_read (100000 rows, %.1f MB): median %.1f ms%s\n", text.size() / 1e6,
+                    us / 1000.0, ok ? "" : " (PARSE FAILED)");
     }
     return 0;
 }

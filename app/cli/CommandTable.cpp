@@ -1,0 +1,30 @@
+#include "app/cli/CommandTable.h"
+
+#include <algorithm>
+
+namespace prisca::app::cli {
+
+const std::vector<CliCommand>& commandTable() {
+    // A command is wired in by replacing its nullptr with the function from its own file.
+    static const std::vector<CliCommand> table = {
+        {"simulate", "Simulate a plant from an initial state under given actions", nullptr},
+        {"demo", "Generate a scripted demonstration for a plant", nullptr},
+        {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", nullptr},
+        {"run", "Run PRISCA or a baseline on a plant and log the trial", nullptr},
+        {"table1", "Run batches of trials and report the paper's Table I metrics", nullptr},
+        {"curve", "Learning curves of several methods over many runs", nullptr},
+        {"track", "Track the car's IR LEDs in a video and write its poses", nullptr},
+        {"link", "Send channel values to a transmitter over a serial link", nullptr},
+    };
+    return table;
+}
+
+const CliCommand* findCommand(QStringView name) {
+    const std::vector<CliCommand>& table = commandTable();
+    const auto found = std::find_if(table.cbegin(), table.cend(), [name](const CliCommand& c) {
+        return name == QLatin1String(c.name);
+    });
+    return found == table.cend() ? nullptr : &*found;
+}
+
+}  // namespace prisca::app::cli

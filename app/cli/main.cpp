@@ -1,0 +1,78 @@
+// prisca-cli: the headless front end of PRISCA Lab. It never opens a window.
+#include "app/cli/CommandTable.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+
+namespace {
+
+using prisca::app::cli::CliCommand;
+using prisca::app::cli::kExitUsage;
+
+// One line on stderr, prefixed so it is clear which program complained inside a script.
+int fail(const QString& message) {
+    std::fprintf(stderr, "prisca-cli: %s\n", message.toLocal8Bit().constData());
+    return kExitUsage;
+}
+
+QString describeCommands() {
+    QString text = QStringLiteral(
+        "PRISCA Lab without a window: simulate plants, fit the action mapping, run PRISCA and "
+        "its baselines, and report the paper's metrics.\n\nCommands:\n");
+    for (const CliCommand& command : prisca::app::cli::commandTable()) {
+        const QString state = command.run ? QString() : QStringLiteral(" (planned)");
+        text += QStringLiteral("  %1  %2%3\n")
+                    .arg(QLatin1String(command.name), -9)
+                    .arg(QLatin1String(command.summary), state);
+    }
+    text += QStringLiteral(
+        "\nCommands marked (planned) are not available in this version.\n"
+        "Run 'prisca-cli <command> --help' for the options of an available command.");
+    return text;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication application(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));
+    QCoreApplication::setApplicationName(QStringLiteral("prisca-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(PRISCA_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(describeCommands());
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("command"),
+                                 QStringLiteral("One of the commands above."),
+                                 QStringLiteral("<command> [<options>...]"));
+    // Everything after the command is the command's own, including its --help.
+    parser.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
+
+    // parse() rather than process(): process() exits with 1 on bad input, we promise 2.
+    if (!parser.parse(QCoreApplication::arguments())) {
+        return fail(parser.errorText());
+    }
+    if (parser.isSet(versionOption)) {
+        parser.showVersion();
+    }
+    if (parser.isSet(helpOption)) {
+        parser.showHelp(0);
+    }
+
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty()) {
+        return fail(QStringLiteral("no command given (see --help)"));
+    }
+    const QString name = positional.first();
+    const CliCommand* command = prisca::app::cli::findCommand(name);
+    if (command == nullptr) {
+        return fail(QStringLiteral("unknown command '%1' (see --help)").arg(name));
+    }
+    if (command->run == nullptr) {
+        return fail(QStringLiteral("command '%1' is not available in this version").arg(name));
+    }
+    return command->run(positional.mid(1));
+}

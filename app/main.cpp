@@ -1,0 +1,23 @@
+// prisca: the PRISCA Lab desktop application.
+#include "app/ApplicationIcon.h"
+#include "app/LanguageSwitcher.h"
+#include "app/MainWindow.h"
+
+#include <QApplication>
+
+int main(int argc, char* argv[]) {
+    QApplication application(argc, argv);
+    // QSettings derives its file location from these names.
+    QApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));
+    QApplication::setApplicationName(QStringLiteral("prisca"));
+    QApplication::setApplicationVersion(QStringLiteral(PRISCA_VERSION));
+    QApplication::setWindowIcon(prisca::app::applicationIcon());
+
+    // The language goes in before any widget exists, so the first paint is already translated.
+    prisca::app::LanguageSwitcher languages;
+    languages.restoreLanguage();
+
+    prisca::app::MainWindow window(languages);
+    window.show();
+    return QApplication::exec();
+}

@@ -1,0 +1,239 @@
+// The main window driven offscreen: title, menus, run-time language switch, remembered settings,
+// clean close.
+#include "app/LanguageSwitcher.h"
+#include "app/MainWindow.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTimer>
+#include <QtTest>
+
+using prisca::app::LanguageSwitcher;
+using prisca::app::MainWindow;
+
+namespace {
+
+const QString kChineseFileMenu = QStringLiteral("檔案(&F)");
+
+QMenu* menu(const QWidget& window, const char* name) {
+    return window.findChild<QMenu*>(QLatin1String(name));
+}
+
+QAction* action(const QWidget& window, const QString& name) {
+    return window.findChild<QAction*>(name);
+}
+
+QStringList menuBarTitles(const QMainWindow& window) {
+    QStringList titles;
+    for (const QAction* entry : window.menuBar()->actions()) {
+        titles << entry->text();
+    }
+    return titles;
+}
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase();
+    void init();
+
+    void construct_showsTitleMenusStatusBarAndPlaceholder();
+    void languageMenu_switchesFileMenuToChineseAndBack();
+    void languageChoice_isRememberedForTheNextStart();
+    void geometry_isRememberedForTheNextStart();
+    void aboutAction_showsWhatTheAppIs();
+    void quitShortcut_closesWindowAndEndsTheEventLoopWithZero();
+};
+
+void TestMainWindow::initTestCase() {
+    // Test mode keeps the operator's real settings out of reach.
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_main_window"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7"));
+    // The harness outlives the window; closing it must not end the test's event processing.
+    QApplication::setQuitOnLastWindowClosed(false);
+}
+
+void TestMainWindow::init() {
+    QSettings().clear();
+    // Any warning is a failure, except the offscreen platform's note on size hints.
+    QTest::failOnWarning(QRegularExpression(
+        QStringLiteral("^(?!This plugin does not support propagateSizeHints\\(\\)$)")));
+}
+
+void TestMainWindow::construct_showsTitleMenusStatusBarAndPlaceholder() {
+    LanguageSwitcher languages;
+    languages.restoreLanguage();
+    QVERIFY(languages.setLanguage(QStringLiteral("en")));
+    MainWindow window(languages);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+    QCOMPARE(window.windowTitle(), QStringLiteral("PRISCA Lab"));
+    QCOMPARE(menuBarTitles(window), (QStringList{QStringLiteral("&File"), QStringLiteral("&View"),
+                                                 QStringLiteral("&Help")}));
+
+    QAction* quit = action(window, QStringLiteral("quitAction"));
+    QVERIFY(quit);
+    QCOMPARE(quit->shortcut(), QKeySequence(QStringLiteral("Ctrl+Q")));
+    QVERIFY(menu(window, "fileMenu")->actions().contains(quit));
+
+    QMenu* language = menu(window, "languageMenu");
+    QVERIFY(language);
+    QCOMPARE(language->title(), QStringLiteral("&Language"));
+    QVERIFY(menu(window, "viewMenu")->actions().contains(language->menuAction()));
+    QCOMPARE(language->actions().size(), 2);
+    QCOMPARE(language->actions().at(0)->text(), QStringLiteral("English"));
+    QCOMPARE(language->actions().at(1)->text(), QStringLiteral("繁體中文 (香港)"));
+    QVERIFY(language->actions().at(0)->isChecked());
+    QVERIFY(!language->actions().at(1)->isChecked());
+
+    QAction* about = action(window, QStringLiteral("aboutAction"));
+    QVERIFY(about);
+    QCOMPARE(about->text(), QStringLiteral("&About PRISCA Lab"));
+    QVERIFY(menu(window, "helpMenu")->actions().contains(about));
+
+    QStatusBar* status = window.findChild<QStatusBar*>();
+    QVERIFY(status);
+    QVERIFY(status->isVisible());
+    QVERIFY(status->findChild<QLabel*>());
+    QCOMPARE(status->findChild<QLabel*>()->text(), QStringLiteral("Version 9.8.7"));
+
+    // The placeholder explains and promises; it offers nothing to press that would do nothing.
+    QWidget* panel = window.centralWidget();
+    QVERIFY(panel);
+    QCOMPARE(panel->objectName(), QStringLiteral("welcomePanel"));
+    QString shown;
+    for (const QLabel* label : panel->findChildren<QLabel*>()) {
+        shown += label->text() + QLatin1Char('\n');
+    }
+    QVERIFY2(shown.contains(QStringLiteral("coming versions")), qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("demonstration")), qPrintable(shown));
+    QVERIFY(panel->findChildren<QAbstractButton*>().isEmpty());
+}
+
+void TestMainWindow::languageMenu_switchesFileMenuToChineseAndBack() {
+    LanguageSwitcher languages;
+    MainWindow window(languages);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QMenu* file = menu(window, "fileMenu");
+    QLabel* heading = window.findChild<QLabel*>(QStringLiteral("welcomeHeading"));
+    QVERIFY(heading);
+    const QString englishHeading = heading->text();
+    QCOMPARE(file->title(), QStringLiteral("&File"));
+
+    QAction* chinese = action(window, QStringLiteral("languageAction_zh_HK"));
+    QVERIFY(chinese);
+    chinese->trigger();
+    QTRY_COMPARE(file->title(), kChineseFileMenu);
+    QCOMPARE(languages.currentLanguage(), QStringLiteral("zh_HK"));
+    QVERIFY(chinese->isChecked());
+    QCOMPARE(menu(window, "languageMenu")->title(), QStringLiteral("語言(&L)"));
+    QVERIFY(heading->text() != englishHeading);
+    QCOMPARE(QSettings().value(QLatin1String(LanguageSwitcher::kSettingsKey)).toString(),
+             QStringLiteral("zh_HK"));
+    // The language names themselves never change, so anyone can find their own.
+    QCOMPARE(action(window, QStringLiteral("languageAction_en"))->text(),
+             QStringLiteral("English"));
+
+    action(window, QStringLiteral("languageAction_en"))->trigger();
+    QTRY_COMPARE(file->title(), QStringLiteral("&File"));
+    QCOMPARE(heading->text(), englishHeading);
+    QVERIFY(!chinese->isChecked());
+    QCOMPARE(QSettings().value(QLatin1String(LanguageSwitcher::kSettingsKey)).toString(),
+             QStringLiteral("en"));
+}
+
+void TestMainWindow::languageChoice_isRememberedForTheNextStart() {
+    {
+        LanguageSwitcher languages;
+        QVERIFY(languages.setLanguage(QStringLiteral("zh_HK")));
+    }
+    LanguageSwitcher languages;
+    languages.restoreLanguage();
+    QCOMPARE(languages.currentLanguage(), QStringLiteral("zh_HK"));
+    // Restored before the window exists, so it is Chinese from the first paint.
+    MainWindow window(languages);
+    QCOMPARE(menu(window, "fileMenu")->title(), kChineseFileMenu);
+    QVERIFY(action(window, QStringLiteral("languageAction_zh_HK"))->isChecked());
+}
+
+void TestMainWindow::geometry_isRememberedForTheNextStart() {
+    LanguageSwitcher languages;
+    {
+        MainWindow window(languages);
+        window.resize(900, 600);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.close());
+    }
+    QVERIFY(QSettings().contains(QLatin1String(MainWindow::kGeometryKey)));
+    MainWindow window(languages);
+    QCOMPARE(window.size(), QSize(900, 600));
+}
+
+void TestMainWindow::aboutAction_showsWhatTheAppIs() {
+    LanguageSwitcher languages;
+    MainWindow window(languages);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+    QString title;
+    QString text;
+    // The box is modal: read and dismiss it from a timer while trigger() waits in its loop.
+    QTimer poll;
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            title = box->windowTitle();
+            text = box->text();
+            box->accept();
+        }
+    });
+    poll.start(20);
+    action(window, QStringLiteral("aboutAction"))->trigger();
+    poll.stop();
+
+    QCOMPARE(title, QStringLiteral("About PRISCA Lab"));
+    QVERIFY2(text.contains(QStringLiteral("PRISCA Lab 9.8.7")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("one demonstrated manoeuvre")), qPrintable(text));
+}
+
+void TestMainWindow::quitShortcut_closesWindowAndEndsTheEventLoopWithZero() {
+    // As in main(): the last window closing is what ends QApplication::exec().
+    QApplication::setQuitOnLastWindowClosed(true);
+    LanguageSwitcher languages;
+    MainWindow window(languages);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+
+    QTimer::singleShot(0, &window,
+                       [&window] { QTest::keyClick(&window, Qt::Key_Q, Qt::ControlModifier); });
+    // A window that ignored Ctrl+Q would otherwise hang the test.
+    QTimer guard;
+    guard.setSingleShot(true);
+    connect(&guard, &QTimer::timeout, this, [] { QCoreApplication::exit(99); });
+    guard.start(10000);
+    const int exitCode = QApplication::exec();
+    guard.stop();
+    QApplication::setQuitOnLastWindowClosed(false);
+
+    QCOMPARE(exitCode, 0);
+    QVERIFY(!window.isVisible());
+    QVERIFY(QSettings().contains(QLatin1String(MainWindow::kGeometryKey)));
+    QVERIFY(QSettings().contains(QLatin1String(MainWindow::kStateKey)));
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
