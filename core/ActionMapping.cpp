@@ -80,7 +80,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     const int d = options.latency;
     if (mapping.controls() != m || mapping.states() != n) {
         throw std::invalid_argument(
-            QStringLiteral("the mapping is %1 x %2 but the demonstration has %3 controls and %4 states")
+            QStringLiteral(
+                "the mapping is %1 x %2 but the demonstration has %3 controls and %4 states")
                 .arg(mapping.controls())
                 .arg(mapping.states())
                 .arg(m)
@@ -167,10 +168,11 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                 sqrtW.asDiagonal() * X);
             const Eigen::VectorXd beta = solver.solve(sqrtW.asDiagonal() * y);
             if (solver.rank() < X.cols()) {
-                fit.warnings << QStringLiteral(
-                                    "state '%1': the controls acting on it moved together, so their "
-                                    "shares cannot be told apart (minimum-norm fit)")
-                                    .arg(demonstration.stateNames.value(c, QString::number(c)));
+                fit.warnings
+                    << QStringLiteral(
+                           "state '%1': the controls acting on it moved together, so their "
+                           "shares cannot be told apart (minimum-norm fit)")
+                           .arg(demonstration.stateNames.value(c, QString::number(c)));
             }
             for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
                 fit.bv(controls[j], c) = beta[j];
@@ -179,8 +181,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
             const double meanY = w.dot(y);
             const double total = (w.array() * (y.array() - meanY).square()).sum();
             const double residual = (w.array() * (y - prediction).array().square()).sum();
-            fit.rSquared[c] = total > 0.0 ? 1.0 - residual / total
-                                          : std::numeric_limits<double>::quiet_NaN();
+            fit.rSquared[c] =
+                total > 0.0 ? 1.0 - residual / total : std::numeric_limits<double>::quiet_NaN();
         }
         fit.residualRms[c] = std::sqrt((w.array() * (y - prediction).array().square()).sum());
     }

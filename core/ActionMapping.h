@@ -55,22 +55,23 @@ struct ActionMappingFitOptions {
 
 /// The fitted action mapping and its diagnostics.
 struct ActionMappingFit {
-    Eigen::MatrixXd bv;            ///< B_v, m x n (0 where B~ is 0 or the channel was never excited)
-    Eigen::MatrixXd b;             ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
-    Eigen::VectorXd residualRms;   ///< per state component: weighted RMS of ds - B^T dt du
-    Eigen::VectorXd rSquared;      ///< per state component; NaN where no control acts on it
+    Eigen::MatrixXd bv;           ///< B_v, m x n (0 where B~ is 0 or the channel was never excited)
+    Eigen::MatrixXd b;            ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
+    Eigen::VectorXd residualRms;  ///< per state component: weighted RMS of ds - B^T dt du
+    Eigen::VectorXd rSquared;     ///< per state component; NaN where no control acts on it
     std::vector<std::pair<int, int>> signConflicts;  ///< (control, state): fitted B_v < 0
     std::vector<int> unexcitedChannels;              ///< controls that never changed
-    int samples = 0;               ///< number of (ds, du) pairs used
-    QStringList warnings;          ///< one line each, in the operator's words
+    int samples = 0;                                 ///< number of (ds, du) pairs used
+    QStringList warnings;                            ///< one line each, in the operator's words
 };
 
 /// Fits B_v (eq. 8): minimises sum_k w_k || y_{k+1+d} - (B_v (.) B~)^T dt du_k ||^2 with the
 /// nested-expectation weights w of E_{i=0:T} E_{j=i:T}, du_k = u_k - u_{k-1}, and y the state
 /// change chosen by options.target. State changes are expressed by the deviation model (a
-/// planar vehicle's displacement is measured in its own frame at the earlier sample). The problem separates into one weighted least-squares problem per state
-/// component in the non-zero entries of that column of B~. Throws std::invalid_argument on
-/// inconsistent dimensions or a demonstration too short for the latency.
+/// planar vehicle's displacement is measured in its own frame at the earlier sample). The problem
+/// separates into one weighted least-squares problem per state component in the non-zero entries of
+/// that column of B~. Throws std::invalid_argument on inconsistent dimensions or a demonstration
+/// too short for the latency.
 ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                                   const IntuitiveMapping& mapping, const DeviationModel& deviation,
                                   const ActionMappingFitOptions& options = {});

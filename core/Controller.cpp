@@ -3,7 +3,8 @@
 namespace prisca::core {
 
 ActionLimits ActionLimits::symmetric(int channels, double bound) {
-    return {Eigen::VectorXd::Constant(channels, -bound), Eigen::VectorXd::Constant(channels, bound)};
+    return {Eigen::VectorXd::Constant(channels, -bound),
+            Eigen::VectorXd::Constant(channels, bound)};
 }
 
 void ActionLimits::saturate(Eigen::Ref<Eigen::VectorXd> u) const {
@@ -39,7 +40,9 @@ QString TrackingProblem::validate() const {
         return QStringLiteral("an action lower limit exceeds its upper limit");
     }
     if (matching.weights.size() != 0 && matching.weights.size() != n) {
-        return QStringLiteral("%1 matching weights for %2 states").arg(matching.weights.size()).arg(n);
+        return QStringLiteral("%1 matching weights for %2 states")
+            .arg(matching.weights.size())
+            .arg(n);
     }
     if (matching.window < 0) {
         return QStringLiteral("the matching window must be >= 0");

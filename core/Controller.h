@@ -27,10 +27,10 @@ struct ActionLimits {
 /// reference index is matched, how errors are weighed in the cost, and the actuator limits.
 struct TrackingProblem {
     std::shared_ptr<const Demonstration> demonstration;  ///< S*, U*
-    DeviationModel deviation;        ///< e = s (-) s*
-    MatchingParameters matching;     ///< least-state-deviation or time-driven reference
-    Eigen::VectorXd costWeights;     ///< W in C = e^T W e (size n; empty = identity)
-    ActionLimits limits;             ///< saturation
+    DeviationModel deviation;                            ///< e = s (-) s*
+    MatchingParameters matching;  ///< least-state-deviation or time-driven reference
+    Eigen::VectorXd costWeights;  ///< W in C = e^T W e (size n; empty = identity)
+    ActionLimits limits;          ///< saturation
 
     /// Empty when consistent; else a one-line description of the first problem.
     QString validate() const;
@@ -38,12 +38,12 @@ struct TrackingProblem {
 
 /// The record of one control step. Valid until the next call to step() or reset().
 struct ControlStep {
-    int step = 0;                    ///< k, counted from the last reset
-    int referenceIndex = 0;          ///< j_k, the matched demonstration sample
-    Eigen::VectorXd action;          ///< u_k after saturation (size m)
-    Eigen::VectorXd referenceAction; ///< u*_{j_k} (size m)
-    Eigen::VectorXd deviation;       ///< e_k (size n)
-    double cost = 0.0;               ///< C_k = e_k^T W e_k
+    int step = 0;                     ///< k, counted from the last reset
+    int referenceIndex = 0;           ///< j_k, the matched demonstration sample
+    Eigen::VectorXd action;           ///< u_k after saturation (size m)
+    Eigen::VectorXd referenceAction;  ///< u*_{j_k} (size m)
+    Eigen::VectorXd deviation;        ///< e_k (size n)
+    double cost = 0.0;                ///< C_k = e_k^T W e_k
 };
 
 /// How reset() treats what was learned.
@@ -55,7 +55,7 @@ enum class ResetMode {
 /// A feedback policy run at the control rate: observation in, saturated action out.
 /// Implementations are single-threaded objects; clone() one per parallel trial.
 class Controller {
-public:
+  public:
     virtual ~Controller() = default;
 
     /// Short method name as used by the command line, e.g. "prisca", "pd-h".

@@ -11,15 +11,15 @@ namespace prisca::core {
 /// One recorded manoeuvre: states and actions sampled at a fixed period.
 /// Plain data; copy freely across threads.
 struct Demonstration {
-    QString plant;            ///< plant identifier, e.g. "slidecar"; empty when unknown
-    double dt = 0.025;        ///< sampling (control) period [s]
-    QStringList stateNames;   ///< n names, e.g. "x"
-    QStringList stateUnits;   ///< n units, e.g. "m" ("1" for dimensionless)
-    QStringList actionNames;  ///< m names, e.g. "throttle"
-    QStringList actionUnits;  ///< m units
-    Eigen::VectorXd time;     ///< T sample times [s], strictly increasing
-    Eigen::MatrixXd states;   ///< T x n; row k is the state s*_k
-    Eigen::MatrixXd actions;  ///< T x m; row k is the action u*_k applied at time t_k
+    QString plant;                    ///< plant identifier, e.g. "slidecar"; empty when unknown
+    double dt = 0.025;                ///< sampling (control) period [s]
+    QStringList stateNames;           ///< n names, e.g. "x"
+    QStringList stateUnits;           ///< n units, e.g. "m" ("1" for dimensionless)
+    QStringList actionNames;          ///< m names, e.g. "throttle"
+    QStringList actionUnits;          ///< m units
+    Eigen::VectorXd time;             ///< T sample times [s], strictly increasing
+    Eigen::MatrixXd states;           ///< T x n; row k is the state s*_k
+    Eigen::MatrixXd actions;          ///< T x m; row k is the action u*_k applied at time t_k
     QMap<QString, QString> metadata;  ///< further "# key: value" lines, kept verbatim
 
     /// Number of samples T.

@@ -28,8 +28,9 @@ void DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
     }
 }
 
-Eigen::VectorXd DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
-                                          const Eigen::Ref<const Eigen::VectorXd>& reference) const {
+Eigen::VectorXd DeviationModel::deviation(
+    const Eigen::Ref<const Eigen::VectorXd>& state,
+    const Eigen::Ref<const Eigen::VectorXd>& reference) const {
     Eigen::VectorXd out(state.size());
     deviation(state, reference, out);
     return out;

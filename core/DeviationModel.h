@@ -27,9 +27,9 @@ struct PlanarPoseIndices {
 /// lateral error (positive = left of the desired pose), the heading slot the wrapped heading
 /// error. Velocities already in the body frame subtract plainly.
 struct DeviationModel {
-    int dimension = 0;                ///< state dimension n
-    std::vector<int> angleIndices;    ///< components wrapped to (-pi, pi]
-    std::optional<PlanarPoseIndices> pose;   ///< if set, pose error in the desired frame
+    int dimension = 0;                      ///< state dimension n
+    std::vector<int> angleIndices;          ///< components wrapped to (-pi, pi]
+    std::optional<PlanarPoseIndices> pose;  ///< if set, pose error in the desired frame
 
     /// e = s (-) reference; both of size n. Writes into out (size n), no allocation.
     void deviation(const Eigen::Ref<const Eigen::VectorXd>& state,

@@ -33,9 +33,15 @@ void FeatureMap::evaluate(const Eigen::Ref<const Eigen::VectorXd>& deviation,
         for (int i = 0; i < featureCount_; ++i) {
             const FeatureTerm& t = channel[i];
             switch (t.source) {
-                case FeatureTerm::Source::Deviation: phi(i, l) = t.scale * deviation[t.index]; break;
-                case FeatureTerm::Source::State: phi(i, l) = t.scale * state[t.index]; break;
-                case FeatureTerm::Source::Constant: phi(i, l) = t.scale; break;
+                case FeatureTerm::Source::Deviation:
+                    phi(i, l) = t.scale * deviation[t.index];
+                    break;
+                case FeatureTerm::Source::State:
+                    phi(i, l) = t.scale * state[t.index];
+                    break;
+                case FeatureTerm::Source::Constant:
+                    phi(i, l) = t.scale;
+                    break;
             }
         }
     }

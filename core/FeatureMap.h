@@ -23,7 +23,7 @@ struct FeatureTerm {
 /// Per-channel state features phi_l(s) in R^p (Algorithm 1, line 3): column l of the p x m
 /// matrix Phi holds phi_l. Every channel has the same number p of terms.
 class FeatureMap {
-public:
+  public:
     FeatureMap() = default;
     /// @param perChannel  m lists of p terms each
     explicit FeatureMap(std::vector<std::vector<FeatureTerm>> perChannel);
@@ -31,7 +31,7 @@ public:
     /// The same deviation components for every one of m channels.
     static FeatureMap deviationFeatures(int channels, const std::vector<int>& components);
 
-    int featureCount() const { return featureCount_; }  ///< p
+    int featureCount() const { return featureCount_; }                    ///< p
     int channelCount() const { return static_cast<int>(terms_.size()); }  ///< m
     const std::vector<std::vector<FeatureTerm>>& terms() const { return terms_; }
 
@@ -43,7 +43,7 @@ public:
     /// Empty when every index is within a state of dimension n; else the first problem.
     QString validate(int stateDimension) const;
 
-private:
+  private:
     std::vector<std::vector<FeatureTerm>> terms_;
     int featureCount_ = 0;
 };

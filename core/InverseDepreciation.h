@@ -9,7 +9,7 @@ namespace prisca::core {
 /// weight). The Absolute mode uses r = j instead (the paper's D_i with i the time index).
 /// D grows from H/2 (r = 0, or any r when gamma = 1) towards H as r grows (gamma < 1).
 class InverseDepreciation {
-public:
+  public:
     enum class Mode { RelativeToWindow, Absolute };
 
     /// @param horizon  H >= 1, the smoothing horizon [steps]
@@ -25,7 +25,7 @@ public:
     double gamma() const { return gamma_; }
     Mode mode() const { return mode_; }
 
-private:
+  private:
     int horizon_;
     double gamma_;
     Mode mode_;

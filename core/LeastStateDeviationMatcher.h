@@ -27,7 +27,7 @@ struct MatchingParameters {
 /// earlier sample. In TimeDriven mode j_k = min(k, T - 1).
 /// One instance per controller; not thread-safe. match() does not allocate.
 class LeastStateDeviationMatcher {
-public:
+  public:
     /// @param demonstrationStates T x n, row j is s*_j
     LeastStateDeviationMatcher(const Eigen::MatrixXd& demonstrationStates,
                                MatchingParameters parameters);
@@ -44,12 +44,12 @@ public:
     const MatchingParameters& parameters() const { return parameters_; }
     int length() const { return static_cast<int>(states_.rows()); }
 
-private:
+  private:
     Eigen::MatrixXd states_;  // T x n: each component contiguous over time, angles in (-pi, pi]
     Eigen::VectorXd weights_;
-    std::vector<int> angleRows_;  // components that are angles
-    Eigen::ArrayXd difference_;   // kChunk scratch, so match() never allocates
-    Eigen::ArrayXd distances_;    // kChunk scratch
+    std::vector<int> angleRows_;    // components that are angles
+    Eigen::ArrayXd difference_;     // kChunk scratch, so match() never allocates
+    Eigen::ArrayXd distances_;      // kChunk scratch
     Eigen::VectorXd wrappedState_;  // n scratch
     MatchingParameters parameters_;
     int last_ = -1;

@@ -58,9 +58,9 @@ void LocalOptimalBaseline::push(const Eigen::Ref<const Eigen::MatrixXd>& a,
         }
         // A variance that rounding left at a sliver of its mean square is no variance at all.
         const double floor = mode_ == Mode::ControlVariate ? 1e-12 * meanAA_[i] : 0.0;
-        baseline_.data()[i] =
-            denominator > std::max(floor, std::numeric_limits<double>::min()) ? numerator / denominator
-                                                                              : 0.0;
+        baseline_.data()[i] = denominator > std::max(floor, std::numeric_limits<double>::min())
+                                  ? numerator / denominator
+                                  : 0.0;
     }
 }
 

@@ -21,7 +21,7 @@ namespace prisca::core {
 ///
 /// b = 0 wherever the denominator is zero. Not thread-safe; one instance per controller.
 class LocalOptimalBaseline {
-public:
+  public:
     enum class Mode { PaperEq15, ControlVariate };
 
     /// @param rows, cols  shape of A and G (p x m)
@@ -32,19 +32,21 @@ public:
     void reset();
     /// Stores A_k and G_k (evicting the oldest beyond tau') and recomputes b over the history,
     /// the new pair included. No allocation.
-    void push(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& g);
+    void push(const Eigen::Ref<const Eigen::MatrixXd>& a,
+              const Eigen::Ref<const Eigen::MatrixXd>& g);
     /// The current b (p x m).
     const Eigen::MatrixXd& value() const { return baseline_; }
     /// The gradient of the last push: G - b (.) A (PaperEq15) or G - b (.) (A - E[A]).
     /// No allocation.
-    void gradient(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& g,
+    void gradient(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                  const Eigen::Ref<const Eigen::MatrixXd>& g,
                   Eigen::Ref<Eigen::MatrixXd> out) const;
     Mode mode() const { return mode_; }
     /// Number of stored steps (<= window).
     int size() const { return count_; }
     int window() const { return window_; }
 
-private:
+  private:
     int rows_;
     int cols_;
     int window_;

@@ -78,9 +78,9 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
             signal_ += w[t] * rawSignals_[t];
         }
     }
-    const Eigen::VectorXd rate =
-        step_ == 0 ? Eigen::VectorXd::Zero(signal_.size())
-                   : Eigen::VectorXd((signal_ - previousSignal_) / demo.dt);
+    const Eigen::VectorXd rate = step_ == 0
+                                     ? Eigen::VectorXd::Zero(signal_.size())
+                                     : Eigen::VectorXd((signal_ - previousSignal_) / demo.dt);
     previousSignal_ = signal_;
 
     record_.step = step_;

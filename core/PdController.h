@@ -28,7 +28,7 @@ struct PdParameters {
 /// (PD+LSD, PD+H+LSD), as set in the problem's matching parameters. d/dt is the backward
 /// difference over one control period, zero on the first step.
 class PdController : public Controller {
-public:
+  public:
     PdController(TrackingProblem problem, PdParameters parameters, QString name);
 
     /// The method name for a variant: "pd", "pd-h", "pd-lsd" or "pd-h-lsd".
@@ -43,7 +43,7 @@ public:
     /// The error signal eps (m) of the last step, after smoothing.
     const Eigen::VectorXd& errorSignal() const { return signal_; }
 
-private:
+  private:
     TrackingProblem problem_;
     PdParameters parameters_;
     QString name_;

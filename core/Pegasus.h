@@ -33,14 +33,14 @@ struct PegasusParameters {
 /// Each iteration costs (2 p m + 1) S episodes; stepsConsumed() counts their simulated steps so
 /// learning curves compare methods by experience used.
 class Pegasus {
-public:
+  public:
     Pegasus(RolloutFunction rollout, Eigen::MatrixXd initialTheta, PegasusParameters parameters);
 
     /// What one iteration did.
     struct Iteration {
-        double cost = 0.0;             ///< J(theta) before the step
-        Eigen::MatrixXd gradient;      ///< finite-difference gradient at that theta
-        long long stepsConsumed = 0;   ///< cumulative simulated steps after the iteration
+        double cost = 0.0;            ///< J(theta) before the step
+        Eigen::MatrixXd gradient;     ///< finite-difference gradient at that theta
+        long long stepsConsumed = 0;  ///< cumulative simulated steps after the iteration
     };
 
     /// One gradient step. Returns nullopt (theta unchanged) if cancelled() turned true; it is
@@ -53,7 +53,7 @@ public:
     long long stepsConsumed() const { return steps_; }
     const PegasusParameters& parameters() const { return parameters_; }
 
-private:
+  private:
     std::optional<double> evaluateCancellable(const Eigen::MatrixXd& theta,
                                               const std::function<bool()>& cancelled);
     RolloutFunction rollout_;

@@ -7,8 +7,8 @@
 
 namespace prisca::core {
 
-PgsdController::PgsdController(TrackingProblem problem, FeatureMap features,
-                               IntuitiveMapping signs, PgsdParameters parameters)
+PgsdController::PgsdController(TrackingProblem problem, FeatureMap features, IntuitiveMapping signs,
+                               PgsdParameters parameters)
     : problem_(std::move(problem)),
       features_(std::move(features)),
       signs_(std::move(signs)),
@@ -22,7 +22,8 @@ PgsdController::PgsdController(TrackingProblem problem, FeatureMap features,
     const int m = problem_.demonstration->actionDimension();
     if (signs_.controls() != m || signs_.states() != n || features_.channelCount() != m ||
         parameters_.horizon < 1) {
-        throw std::invalid_argument("PgsdController: B~ must be m x n, features per control, H >= 1");
+        throw std::invalid_argument(
+            "PgsdController: B~ must be m x n, features per control, H >= 1");
     }
     theta_.setZero(features_.featureCount(), m);
     gradient_.setZero(features_.featureCount(), m);

@@ -24,7 +24,7 @@ struct PgsdParameters {
 /// Written out on its own (not through PriscaController) so that the equivalence of the two
 /// is a real check of both.
 class PgsdController : public Controller {
-public:
+  public:
     /// The problem's matching mode is ignored: PGSD is always time-driven.
     PgsdController(TrackingProblem problem, FeatureMap features, IntuitiveMapping signs,
                    PgsdParameters parameters);
@@ -37,7 +37,7 @@ public:
     const Eigen::MatrixXd& theta() const { return theta_; }
     const Eigen::MatrixXd& gradient() const { return gradient_; }
 
-private:
+  private:
     struct Sample {
         Eigen::MatrixXd phi;        // p x m
         Eigen::VectorXd deviation;  // n

@@ -31,14 +31,16 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
                 parameters.baselineWindow > 0 ? parameters.baselineWindow
                                               : 2 * std::max(parameters.horizon, 1),
                 parameters.baselineMode),
-      depreciation_(std::max(parameters.horizon, 1), parameters.gamma, parameters.depreciationMode) {
+      depreciation_(std::max(parameters.horizon, 1), parameters.gamma,
+                    parameters.depreciationMode) {
     const Demonstration& demo = *problem_.demonstration;
     const int n = demo.stateDimension();
     const int m = demo.actionDimension();
     const int p = featureMap_.featureCount();
     const int H = parameters_.horizon;
     if (featureMap_.channelCount() != m) {
-        throw std::invalid_argument("PriscaController: the feature map must have one entry per control");
+        throw std::invalid_argument(
+            "PriscaController: the feature map must have one entry per control");
     }
     const QString featureProblem = featureMap_.validate(n);
     if (!featureProblem.isEmpty()) {
@@ -53,7 +55,8 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     referenceStates_ = demo.states.transpose();
     referenceActions_ = demo.actions.transpose();
     stateEffect_ = demo.dt * actionMapping;
-    costWeights_ = problem_.costWeights.size() == n ? problem_.costWeights : Eigen::VectorXd::Ones(n);
+    costWeights_ =
+        problem_.costWeights.size() == n ? problem_.costWeights : Eigen::VectorXd::Ones(n);
     for (int c = 1; c <= H + 1; ++c) {
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
@@ -154,7 +157,8 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     // 6. Control input from the updated theta.
     record_.referenceIndex = j;
     record_.referenceAction = referenceActions_.col(j);
-    record_.action = (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
+    record_.action =
+        (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     problem_.limits.saturate(record_.action);
     record_.step = k;
     ++step_;

@@ -15,17 +15,17 @@ namespace prisca::core {
 
 /// Tuning of PRISCA (Algorithm 1, inputs 4-6). Plain data.
 struct PriscaParameters {
-    int horizon = 10;     ///< H, the smoothing horizon [steps] (>= 1)
-    double gamma = 0.9;   ///< rate of inverse depreciation in [0, 1] (eq. 10)
+    int horizon = 10;    ///< H, the smoothing horizon [steps] (>= 1)
+    double gamma = 0.9;  ///< rate of inverse depreciation in [0, 1] (eq. 10)
     InverseDepreciation::Mode depreciationMode = InverseDepreciation::Mode::RelativeToWindow;
     bool useInverseDepreciation = true;  ///< false: D = 1 (the PGSD special case)
     bool useBaseline = true;             ///< false: b = 0 (the PGSD special case)
     /// Which local baseline (see LocalOptimalBaseline): eq. 15 as printed diverges on a
     /// linear plant, so the unbiased control-variate form is the default.
     LocalOptimalBaseline::Mode baselineMode = LocalOptimalBaseline::Mode::ControlVariate;
-    int baselineWindow = 0;              ///< tau' [steps] for eq. 15; 0 means 2H
-    StepSize stepSize;                   ///< alpha_k (eq. 3)
-    bool learning = true;                ///< false: theta stays as set (policy evaluation)
+    int baselineWindow = 0;  ///< tau' [steps] for eq. 15; 0 means 2H
+    StepSize stepSize;       ///< alpha_k (eq. 3)
+    bool learning = true;    ///< false: theta stays as set (policy evaluation)
 };
 
 /// PRISCA as an online controller (Algorithm 1, lines 10-19). Each step:
@@ -38,7 +38,7 @@ struct PriscaParameters {
 ///   6. u_k = theta^T phi(s_k) + u*_{j_k} per channel, saturated (line 18).
 /// step() does not allocate. Single-threaded; clone() for parallel trials.
 class PriscaController : public Controller {
-public:
+  public:
     /// @param problem        demonstration, deviation model, matching, cost weights, limits
     /// @param features       phi_l for each of the m channels
     /// @param actionMapping  B (m x n): B_v (.) B~ for PRISCA, B~ itself for a sign-only model
@@ -76,7 +76,7 @@ public:
     /// Steps taken since the last cold reset (the k of alpha_k).
     int learningSteps() const { return learningStep_; }
 
-private:
+  private:
     TrackingProblem problem_;
     FeatureMap featureMap_;
     PriscaParameters parameters_;
@@ -85,10 +85,10 @@ private:
     LocalOptimalBaseline baseline_;
     InverseDepreciation depreciation_;
 
-    Eigen::MatrixXd referenceStates_;   // n x T
-    Eigen::MatrixXd referenceActions_;  // m x T
-    Eigen::MatrixXd stateEffect_;       // m x n, dt * B
-    Eigen::VectorXd costWeights_;       // n
+    Eigen::MatrixXd referenceStates_;             // n x T
+    Eigen::MatrixXd referenceActions_;            // m x T
+    Eigen::MatrixXd stateEffect_;                 // m x n, dt * B
+    Eigen::VectorXd costWeights_;                 // n
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
@@ -96,7 +96,7 @@ private:
     Eigen::MatrixXd gradient_;
     Eigen::MatrixXd smoothedA_;
     Eigen::MatrixXd smoothedG_;
-    Eigen::MatrixXd historyA_;  // (p*m) x (H+1) ring of a_j
+    Eigen::MatrixXd historyA_;     // (p*m) x (H+1) ring of a_j
     Eigen::VectorXd historyCost_;  // (H+1) ring of C_j
     Eigen::VectorXd weightedError_;
     Eigen::VectorXd projected_;

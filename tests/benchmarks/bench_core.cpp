@@ -34,8 +34,7 @@ std::shared_ptr<Demonstration> syntheticDemonstration(int T) {
     for (int k = 0; k < T; ++k) {
         const double t = k * demo->dt;
         demo->time[k] = t;
-        demo->states.row(k) << std::cos(0.1 * t) * t, std::sin(0.1 * t) * t, 0.1 * t, 1.0, 0.1,
-            0.1;
+        demo->states.row(k) << std::cos(0.1 * t) * t, std::sin(0.1 * t) * t, 0.1 * t, 1.0, 0.1, 0.1;
         demo->actions.row(k) << 0.5 + 0.1 * std::sin(t), 0.3 * std::cos(0.5 * t);
     }
     return demo;
@@ -104,8 +103,10 @@ int main() {
             sink += controller.step(s).action[0];
             ++k;
         });
-        std::printf("prisca_step (n=6, m=2, p=4, H=10, LSD window 40): median %.3f us "
-                    "(target <= 5 us) [%g]\n", us, sink * 0.0);
+        std::printf(
+            "prisca_step (n=6, m=2, p=4, H=10, LSD window 40): median %.3f us "
+            "(target <= 5 us) [%g]\n",
+            us, sink * 0.0);
     }
 
     // Least-state-deviation match on a 10,000-sample demonstration.
@@ -127,8 +128,10 @@ int main() {
             sink += matcher.match(s);
             ++k;
         });
-        std::printf("lsd_match (T=10000, window %d samples): median %.3f us per step "
-                    "(target <= 10 us) [%lld]\n", window, us, sink * 0);
+        std::printf(
+            "lsd_match (T=10000, window %d samples): median %.3f us per step "
+            "(target <= 10 us) [%lld]\n",
+            window, us, sink * 0);
     }
     // Reading a 100,000-row demonstration (about 40 minutes at 40 Hz).
     {

@@ -37,7 +37,8 @@ void excite(Demonstration& d, std::mt19937& rng, const std::vector<int>& channel
         while (k < d.length()) {
             const double v = level(rng);
             const int end = std::min(d.length(), k + hold(rng));
-            for (; k < end; ++k) d.actions(k, l) = v;
+            for (; k < end; ++k)
+                d.actions(k, l) = v;
         }
     }
 }
@@ -50,7 +51,8 @@ void simulateIntegrator(Demonstration& d, const Eigen::MatrixXd& B, int delay, d
         const Eigen::VectorXd u = d.actions.row(std::max(0, k - delay)).transpose();
         Eigen::VectorXd s = d.states.row(k).transpose();
         s += d.dt * (-0.2 * s + B.transpose() * u);
-        for (int c = 0; c < s.size(); ++c) s[c] += normal(rng);
+        for (int c = 0; c < s.size(); ++c)
+            s[c] += normal(rng);
         d.states.row(k + 1) = s.transpose();
     }
 }
@@ -58,7 +60,8 @@ void simulateIntegrator(Demonstration& d, const Eigen::MatrixXd& B, int delay, d
 IntuitiveMapping mapping(const QString& text) {
     QString error;
     auto parsed = IntuitiveMapping::parse(text, &error);
-    if (!parsed) qFatal("%s", qPrintable(error));
+    if (!parsed)
+        qFatal("%s", qPrintable(error));
     return *parsed;
 }
 
@@ -66,7 +69,7 @@ IntuitiveMapping mapping(const QString& text) {
 
 class TestActionMapping : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void parse_readsSignsAndRoundTrips() {
         const IntuitiveMapping b = mapping(" 1, 0,0 ; 0,+1,-1");
         QCOMPARE(b.controls(), 2);
@@ -102,7 +105,8 @@ private slots:
         QVERIFY(fit.signConflicts.empty());
         QVERIFY(fit.unexcitedChannels.empty());
         for (int c = 0; c < 3; ++c) {
-            QVERIFY2(fit.rSquared[c] > 0.9, qPrintable(QString("R2[%1] = %2").arg(c).arg(fit.rSquared[c])));
+            QVERIFY2(fit.rSquared[c] > 0.9,
+                     qPrintable(QString("R2[%1] = %2").arg(c).arg(fit.rSquared[c])));
             QVERIFY(fit.residualRms[c] > 0.0 && fit.residualRms[c] < 1e-3);
         }
         QCOMPARE(fit.samples, 4000 - 2);
@@ -118,7 +122,8 @@ private slots:
         simulateIntegrator(d, Eigen::MatrixXd::Constant(1, 1, 2.0), 0, 0.0, rng);
         ActionMappingFitOptions literal;
         literal.target = ActionMappingFitOptions::Target::StateChange;
-        const double literalGain = fitActionMapping(d, signs, DeviationModel::euclidean(1), literal).bv(0, 0);
+        const double literalGain =
+            fitActionMapping(d, signs, DeviationModel::euclidean(1), literal).bv(0, 0);
         const double rateGain = fitActionMapping(d, signs, DeviationModel::euclidean(1)).bv(0, 0);
         QVERIFY2(std::abs(rateGain - 2.0) < 0.02, qPrintable(QString::number(rateGain)));
         QVERIFY2(std::abs(literalGain - 2.0) > 0.5, qPrintable(QString::number(literalGain)));
@@ -137,7 +142,8 @@ private slots:
         }
         ActionMappingFitOptions options;
         options.target = ActionMappingFitOptions::Target::StateChange;
-        const ActionMappingFit fit = fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
+        const ActionMappingFit fit =
+            fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
         QVERIFY(std::abs(fit.bv(0, 0) - 1.5) < 0.01);
         QVERIFY(std::abs(fit.bv(0, 1) - 4.0) < 0.01);
     }
@@ -148,35 +154,43 @@ private slots:
         Demonstration d = emptyDemo(60, 2, 2, 0.1);
         excite(d, rng, {0, 1});
         std::normal_distribution<double> normal(0.0, 0.3);
-        for (int k = 0; k < d.length(); ++k) d.states.row(k) << normal(rng), normal(rng);
+        for (int k = 0; k < d.length(); ++k)
+            d.states.row(k) << normal(rng), normal(rng);
         ActionMappingFitOptions options;
         options.latency = 1;
-        const ActionMappingFit fit = fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
+        const ActionMappingFit fit =
+            fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
         // Normal equations written out: pairs k = 1..T-3, weights of E_{i=0:K-1} E_{j=i:K-1}.
         const int K = d.length() - 3;
         std::vector<double> w(K);
         for (int t = 0; t < K; ++t) {
             double inner = 0;
-            for (int i = 0; i <= t; ++i) inner += 1.0 / (K - i);
+            for (int i = 0; i <= t; ++i)
+                inner += 1.0 / (K - i);
             w[t] = inner / K;
         }
         for (int c = 0; c < 2; ++c) {
             double xx[2][2] = {{0, 0}, {0, 0}}, xy[2] = {0, 0};
             for (int t = 0; t < K; ++t) {
                 const int k = t + 1;
-                const double y = (d.states(k + 2, c) - d.states(k + 1, c)) - (d.states(k + 1, c) - d.states(k, c));
+                const double y = (d.states(k + 2, c) - d.states(k + 1, c)) -
+                                 (d.states(k + 1, c) - d.states(k, c));
                 double x[2];
-                for (int l = 0; l < 2; ++l) x[l] = signs.signs(l, c) * d.dt * (d.actions(k, l) - d.actions(k - 1, l));
+                for (int l = 0; l < 2; ++l)
+                    x[l] = signs.signs(l, c) * d.dt * (d.actions(k, l) - d.actions(k - 1, l));
                 for (int a = 0; a < 2; ++a) {
                     xy[a] += w[t] * x[a] * y;
-                    for (int b = 0; b < 2; ++b) xx[a][b] += w[t] * x[a] * x[b];
+                    for (int b = 0; b < 2; ++b)
+                        xx[a][b] += w[t] * x[a] * x[b];
                 }
             }
             const double det = xx[0][0] * xx[1][1] - xx[0][1] * xx[1][0];
             const double b0 = (xy[0] * xx[1][1] - xx[0][1] * xy[1]) / det;
             const double b1 = (xx[0][0] * xy[1] - xx[1][0] * xy[0]) / det;
-            QVERIFY2(std::abs(fit.bv(0, c) - b0) <= 1e-9 * (1 + std::abs(b0)), qPrintable(QString("%1 vs %2").arg(fit.bv(0, c)).arg(b0)));
-            QVERIFY2(std::abs(fit.bv(1, c) - b1) <= 1e-9 * (1 + std::abs(b1)), qPrintable(QString("%1 vs %2").arg(fit.bv(1, c)).arg(b1)));
+            QVERIFY2(std::abs(fit.bv(0, c) - b0) <= 1e-9 * (1 + std::abs(b0)),
+                     qPrintable(QString("%1 vs %2").arg(fit.bv(0, c)).arg(b0)));
+            QVERIFY2(std::abs(fit.bv(1, c) - b1) <= 1e-9 * (1 + std::abs(b1)),
+                     qPrintable(QString("%1 vs %2").arg(fit.bv(1, c)).arg(b1)));
         }
     }
 
@@ -188,7 +202,8 @@ private slots:
         simulateIntegrator(d, Eigen::MatrixXd::Constant(1, 1, 3.0), 2, 0.0, rng);
         ActionMappingFitOptions shifted;
         shifted.latency = 2;
-        const ActionMappingFit fit = fitActionMapping(d, signs, DeviationModel::euclidean(1), shifted);
+        const ActionMappingFit fit =
+            fitActionMapping(d, signs, DeviationModel::euclidean(1), shifted);
         QVERIFY2(std::abs(fit.bv(0, 0) - 3.0) < 0.05, qPrintable(QString::number(fit.bv(0, 0))));
         const ActionMappingFit unshifted = fitActionMapping(d, signs, DeviationModel::euclidean(1));
         QVERIFY(std::abs(unshifted.bv(0, 0)) < 0.5);
@@ -210,8 +225,9 @@ private slots:
         QCOMPARE(fit.signConflicts[0], std::make_pair(0, 1));
         QVERIFY(std::abs(fit.bv(0, 1) + 2.0) < 0.05);
         const QString all = fit.warnings.join('\n');
-        QVERIFY2(all.contains("'u1' never changed") && all.contains("'u0' moved 's1' the opposite way"),
-                 qPrintable(all));
+        QVERIFY2(
+            all.contains("'u1' never changed") && all.contains("'u0' moved 's1' the opposite way"),
+            qPrintable(all));
     }
 
     void fit_unmodelledStateHasNoRSquared() {
@@ -219,7 +235,8 @@ private slots:
         Demonstration d = emptyDemo(200, 2, 1, 0.025);
         excite(d, rng, {0});
         simulateIntegrator(d, (Eigen::MatrixXd(1, 2) << 1.0, 1.0).finished(), 0, 1e-3, rng);
-        const ActionMappingFit fit = fitActionMapping(d, mapping("1,0"), DeviationModel::euclidean(2));
+        const ActionMappingFit fit =
+            fitActionMapping(d, mapping("1,0"), DeviationModel::euclidean(2));
         QVERIFY(std::isnan(fit.rSquared[1]));
         QCOMPARE(fit.bv(0, 1), 0.0);
         QVERIFY(fit.residualRms[1] > 0.0);
@@ -227,14 +244,16 @@ private slots:
 
     void fit_rejectsWrongDimensionsAndShortDemonstrations() {
         Demonstration d = emptyDemo(10, 2, 1, 0.025);
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                                 fitActionMapping(d, mapping("1,0,1"), DeviationModel::euclidean(2)));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            fitActionMapping(d, mapping("1,0,1"), DeviationModel::euclidean(2)));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  fitActionMapping(d, mapping("1,0"), DeviationModel::euclidean(3)));
         ActionMappingFitOptions longDelay;
         longDelay.latency = 9;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                                 fitActionMapping(d, mapping("1,0"), DeviationModel::euclidean(2), longDelay));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            fitActionMapping(d, mapping("1,0"), DeviationModel::euclidean(2), longDelay));
     }
 };
 

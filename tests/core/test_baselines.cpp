@@ -33,14 +33,16 @@ std::shared_ptr<Demonstration> integratorDemonstration(const Eigen::MatrixXd& G,
     d->actions.resize(T, m);
     Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < T; ++k) {
-        for (int l = 0; l < m; ++l) d->actions(k, l) = std::sin(1.1 * k * dt + l);
+        for (int l = 0; l < m; ++l)
+            d->actions(k, l) = std::sin(1.1 * k * dt + l);
         d->states.row(k) = s.transpose();
         s += dt * G * d->actions.row(k).transpose();
     }
     return d;
 }
 
-TrackingProblem problemFor(std::shared_ptr<const Demonstration> demo, MatchingParameters::Mode mode) {
+TrackingProblem problemFor(std::shared_ptr<const Demonstration> demo,
+                           MatchingParameters::Mode mode) {
     TrackingProblem problem;
     problem.demonstration = demo;
     problem.deviation = DeviationModel::euclidean(demo->stateDimension());
@@ -68,7 +70,7 @@ double closedLoopCost(Controller& controller, const Demonstration& demo, const E
 
 class TestBaselines : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void pd_isNegativeFeedbackOnTheCombinedError() {
         auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(2, 2), 50, 0.1);
         PdParameters gains;
@@ -83,8 +85,10 @@ private slots:
             const double eps0 = e[0] + 0.5 * e[1], eps1 = e[1];
             const double rate0 = k == 0 ? 0.0 : (eps0 - previous0) / 0.1;
             previous0 = eps0;
-            QVERIFY(std::abs(out.action[0] - (demo->actions(k, 0) - 2.0 * eps0 - 0.5 * rate0)) <= 1e-12);
-            QVERIFY(std::abs(out.action[1] - std::clamp(demo->actions(k, 1) - 3.0 * eps1, -5.0, 5.0)) <= 1e-12);
+            QVERIFY(std::abs(out.action[0] - (demo->actions(k, 0) - 2.0 * eps0 - 0.5 * rate0)) <=
+                    1e-12);
+            QVERIFY(std::abs(out.action[1] -
+                             std::clamp(demo->actions(k, 1) - 3.0 * eps1, -5.0, 5.0)) <= 1e-12);
             QCOMPARE(out.referenceIndex, k);
         }
     }
@@ -101,16 +105,20 @@ private slots:
         for (int k = 0; k < 12; ++k) {
             const double e = std::cos(0.9 * k);
             errors.push_back(e);
-            const double u = pd.step(demo->states.row(k).transpose() + Eigen::VectorXd::Constant(1, e)).action[0];
+            const double u =
+                pd.step(demo->states.row(k).transpose() + Eigen::VectorXd::Constant(1, e))
+                    .action[0];
             const int a = std::max(0, k - 3);
             double smoothed = 0.0;  // E_{i=a:k} E_{j=i:k} e_j, literally
             for (int i = a; i <= k; ++i) {
                 double inner = 0.0;
-                for (int j = i; j <= k; ++j) inner += errors[j];
+                for (int j = i; j <= k; ++j)
+                    inner += errors[j];
                 smoothed += inner / (k - i + 1);
             }
             smoothed /= (k - a + 1);
-            QVERIFY2(std::abs(u - (demo->actions(k, 0) - smoothed)) <= 1e-12, qPrintable(QString::number(k)));
+            QVERIFY2(std::abs(u - (demo->actions(k, 0) - smoothed)) <= 1e-12,
+                     qPrintable(QString::number(k)));
         }
     }
 
@@ -124,7 +132,8 @@ private slots:
                         PdController::variantName(false, true));
         QCOMPARE(pd.name(), QStringLiteral("pd-lsd"));
         // Holding still at the start: the reference waits instead of running away by time.
-        for (int k = 0; k < 5; ++k) QCOMPARE(pd.step(demo->states.row(0).transpose()).referenceIndex, 0);
+        for (int k = 0; k < 5; ++k)
+            QCOMPARE(pd.step(demo->states.row(0).transpose()).referenceIndex, 0);
         QCOMPARE(PdController::variantName(true, true), QStringLiteral("pd-h-lsd"));
         QCOMPARE(PdController::variantName(true, false), QStringLiteral("pd-h"));
     }
@@ -140,7 +149,8 @@ private slots:
         ActionPlayback playback(problemFor(demo, MatchingParameters::Mode::TimeDriven));
         const double pdCost = closedLoopCost(pd, *demo, G, 2.0);
         const double playbackCost = closedLoopCost(playback, *demo, G, 2.0);
-        QVERIFY2(pdCost * 5.0 < playbackCost, qPrintable(QString("%1 vs %2").arg(pdCost).arg(playbackCost)));
+        QVERIFY2(pdCost * 5.0 < playbackCost,
+                 qPrintable(QString("%1 vs %2").arg(pdCost).arg(playbackCost)));
     }
 
     void playback_replaysActionsByTimeAndHoldsTheLast() {
@@ -149,7 +159,8 @@ private slots:
         problem.limits = ActionLimits::symmetric(1, 0.9);
         ActionPlayback playback(problem);
         for (int k = 0; k < 12; ++k) {
-            const Eigen::VectorXd s = Eigen::VectorXd::Constant(1, 100.0);  // ignored for the action
+            const Eigen::VectorXd s =
+                Eigen::VectorXd::Constant(1, 100.0);  // ignored for the action
             const ControlStep& out = playback.step(s);
             const int j = std::min(k, 7);
             QCOMPARE(out.referenceIndex, j);
@@ -181,12 +192,15 @@ private slots:
         QCOMPARE(first->stepsConsumed, (2LL * 4 + 1) * 3 * 100);
         QCOMPARE(pegasus.stepsConsumed(), first->stepsConsumed);
         QCOMPARE(scenariosSeen, (std::set<int>{0, 1, 2}));
-        for (int i = 0; i < 40; ++i) pegasus.iterate();
+        for (int i = 0; i < 40; ++i)
+            pegasus.iterate();
         QVERIFY((pegasus.theta() - meanTarget).cwiseAbs().maxCoeff() <= 1e-9);
     }
 
     void pegasus_cancelLeavesThetaAndLimitsTheStep() {
-        auto rollout = [](const Eigen::MatrixXd& theta, int) { return EpisodeOutcome{theta.squaredNorm(), 1}; };
+        auto rollout = [](const Eigen::MatrixXd& theta, int) {
+            return EpisodeOutcome{theta.squaredNorm(), 1};
+        };
         PegasusParameters parameters;
         parameters.stepSize = 100.0;
         parameters.maxStepNorm = 0.5;
@@ -195,8 +209,10 @@ private slots:
         QVERIFY(!pegasus.iterate([&] { return ++polls > 3; }).has_value());
         QCOMPARE(pegasus.theta(), Eigen::MatrixXd::Constant(1, 2, 3.0));
         QVERIFY(pegasus.iterate().has_value());
-        QVERIFY(std::abs((pegasus.theta() - Eigen::MatrixXd::Constant(1, 2, 3.0)).norm() - 0.5) <= 1e-12);
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Pegasus({}, Eigen::MatrixXd::Zero(1, 1), {}));
+        QVERIFY(std::abs((pegasus.theta() - Eigen::MatrixXd::Constant(1, 2, 3.0)).norm() - 0.5) <=
+                1e-12);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 Pegasus({}, Eigen::MatrixXd::Zero(1, 1), {}));
     }
 
     void pegasus_improvesAFrozenLinearPolicyOnFixedScenarios() {
@@ -205,7 +221,8 @@ private slots:
         PriscaParameters frozen;
         frozen.learning = false;
         PriscaController policy(problemFor(demo, MatchingParameters::Mode::TimeDriven),
-                                FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 1), frozen);
+                                FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 1),
+                                frozen);
         auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
             policy.setTheta(theta);
             policy.reset(ResetMode::WarmStart);
@@ -224,7 +241,8 @@ private slots:
         parameters.maxStepNorm = 2.0;
         Pegasus pegasus(rollout, Eigen::MatrixXd::Zero(1, 1), parameters);
         const double before = pegasus.evaluate(pegasus.theta());
-        for (int i = 0; i < 30; ++i) pegasus.iterate();
+        for (int i = 0; i < 30; ++i)
+            pegasus.iterate();
         const double after = pegasus.evaluate(pegasus.theta());
         QVERIFY2(after < 0.5 * before, qPrintable(QString("%1 -> %2").arg(before).arg(after)));
         QVERIFY(pegasus.theta()(0, 0) < 0.0);  // negative feedback was found

@@ -36,22 +36,26 @@ double nestedMeanBruteForce(const std::vector<double>& x, int a, int k) {
 
 class TestEquations : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void nestedWeights_equalLiteralNestedMean() {
         std::mt19937 rng(1);
         std::uniform_real_distribution<double> u(-5, 5);
         for (int H : {0, 1, 2, 5, 10, 37}) {
             for (int k = 0; k < 60; ++k) {
                 std::vector<double> x(k + 1);
-                for (double& v : x) v = u(rng);
+                for (double& v : x)
+                    v = u(rng);
                 const Eigen::VectorXd w = smoothingWeights(k, H);
                 const int a = std::max(0, k - H);
                 QCOMPARE(w.size(), k - a + 1);
                 double weighted = 0.0;
-                for (int t = 0; t < w.size(); ++t) weighted += w[t] * x[a + t];
+                for (int t = 0; t < w.size(); ++t)
+                    weighted += w[t] * x[a + t];
                 const double brute = nestedMeanBruteForce(x, a, k);
-                QVERIFY2(std::abs(weighted - brute) <= kTol,
-                         qPrintable(QString("H=%1 k=%2: %3 vs %4").arg(H).arg(k).arg(weighted).arg(brute)));
+                QVERIFY2(
+                    std::abs(weighted - brute) <= kTol,
+                    qPrintable(
+                        QString("H=%1 k=%2: %3 vs %4").arg(H).arg(k).arg(weighted).arg(brute)));
             }
         }
     }
@@ -60,7 +64,8 @@ private slots:
         for (int N : {1, 2, 11, 1000}) {
             const Eigen::VectorXd w = nestedExpectationWeights(N);
             QVERIFY(std::abs(w.sum() - 1.0) <= kTol);
-            for (int t = 1; t < N; ++t) QVERIFY(w[t] > w[t - 1]);
+            for (int t = 1; t < N; ++t)
+                QVERIFY(w[t] > w[t - 1]);
         }
         // N = 2 by hand: w_0 = 1/2 * 1/2, w_1 = 1/2 * (1/2 + 1).
         const Eigen::VectorXd w2 = nestedExpectationWeights(2);
@@ -79,10 +84,12 @@ private slots:
                 for (int k = 0; k < 80; ++k) {
                     for (int j = std::max(0, k - H); j <= k; ++j) {
                         double power = 1.0;  // gamma^r by repeated multiplication
-                        for (int r = 0; r < j - (k - H); ++r) power *= gamma;
+                        for (int r = 0; r < j - (k - H); ++r)
+                            power *= gamma;
                         QVERIFY(std::abs(relative.at(j, k) - H / (power + 1.0)) <= kTol);
                         double powerAbs = 1.0;
-                        for (int r = 0; r < j; ++r) powerAbs *= gamma;
+                        for (int r = 0; r < j; ++r)
+                            powerAbs *= gamma;
                         QVERIFY(std::abs(absolute.at(j, k) - H / (powerAbs + 1.0)) <= kTol);
                     }
                 }
@@ -103,7 +110,8 @@ private slots:
     void stepSize_matchesEq3() {
         StepSize alpha;
         alpha.beta = 7.0;
-        for (int k = 0; k < 100; ++k) QVERIFY(std::abs(alpha.at(k) - 7.0 / (k + 7.0)) <= kTol);
+        for (int k = 0; k < 100; ++k)
+            QVERIFY(std::abs(alpha.at(k) - 7.0 / (k + 7.0)) <= kTol);
         QCOMPARE(alpha.at(0), 1.0);
         StepSize fixed;
         fixed.mode = StepSize::Mode::Fixed;
@@ -145,7 +153,8 @@ private slots:
                     a /= count;
                     const double denominator = aa + a * a;
                     const double expected = denominator == 0.0 ? 0.0 : 2.0 * ga / denominator;
-                    QVERIFY2(std::abs(baseline.value()(i, l) - expected) <= kTol * (1 + std::abs(expected)),
+                    QVERIFY2(std::abs(baseline.value()(i, l) - expected) <=
+                                 kTol * (1 + std::abs(expected)),
                              qPrintable(QString("k=%1 (%2,%3)").arg(k).arg(i).arg(l)));
                 }
             }
@@ -192,7 +201,12 @@ private slots:
                     }
                     const double b = var > 1e-12 ? cov / var : 0.0;
                     QVERIFY2(std::abs(baseline.value()(i, l) - b) <= 1e-10 * (1 + std::abs(b)),
-                             qPrintable(QString("k=%1 (%2,%3): %4 vs %5").arg(k).arg(i).arg(l).arg(baseline.value()(i, l)).arg(b)));
+                             qPrintable(QString("k=%1 (%2,%3): %4 vs %5")
+                                            .arg(k)
+                                            .arg(i)
+                                            .arg(l)
+                                            .arg(baseline.value()(i, l))
+                                            .arg(b)));
                     const double expected = G(i, l) - b * (A(i, l) - ma);
                     QVERIFY(std::abs(g(i, l) - expected) <= 1e-10 * (1 + std::abs(expected)));
                 }
@@ -201,7 +215,8 @@ private slots:
         QCOMPARE(baseline.value()(1, 1), 0.0);
         // Averaged over the window, the corrected gradient keeps G's mean: the control variate
         // A - E[A] sums to zero over the stored steps.
-        Eigen::MatrixXd meanCorrected = Eigen::MatrixXd::Zero(p, m), meanG = Eigen::MatrixXd::Zero(p, m);
+        Eigen::MatrixXd meanCorrected = Eigen::MatrixXd::Zero(p, m),
+                        meanG = Eigen::MatrixXd::Zero(p, m);
         for (int t = 20 - window; t < 20; ++t) {
             Eigen::MatrixXd g(p, m);
             baseline.gradient(As[t], Gs[t], g);
@@ -231,10 +246,10 @@ private slots:
         // Actual pose 0.5 m further along +y (ahead) and 0.2 m towards -x (left of +y heading).
         state << 0.8, 2.5, M_PI / 2 + 0.1, 1.5, 0.2, 0.3;
         const Eigen::VectorXd e = model.deviation(state, reference);
-        QVERIFY(std::abs(e[0] - 0.5) <= kTol);   // longitudinal: ahead
-        QVERIFY(std::abs(e[1] - 0.2) <= kTol);   // lateral: to the left
-        QVERIFY(std::abs(e[2] - 0.1) <= kTol);   // heading
-        QVERIFY(std::abs(e[3] - 0.5) <= kTol);   // body velocities subtract
+        QVERIFY(std::abs(e[0] - 0.5) <= kTol);  // longitudinal: ahead
+        QVERIFY(std::abs(e[1] - 0.2) <= kTol);  // lateral: to the left
+        QVERIFY(std::abs(e[2] - 0.1) <= kTol);  // heading
+        QVERIFY(std::abs(e[3] - 0.5) <= kTol);  // body velocities subtract
         QVERIFY(std::abs(e[4] - 0.2) <= kTol);
         QVERIFY(std::abs(e[5] - 0.3) <= kTol);
         // Heading error wraps across +-pi.
@@ -254,8 +269,9 @@ private slots:
     }
 
     void featureMap_evaluatesEachChannelsTerms() {
-        FeatureMap map({{{FeatureTerm::Source::Deviation, 1, 2.0}, {FeatureTerm::Source::Constant, 0, 0.5}},
-                        {{FeatureTerm::Source::State, 0, -1.0}, {FeatureTerm::Source::Deviation, 2, 1.0}}});
+        FeatureMap map(
+            {{{FeatureTerm::Source::Deviation, 1, 2.0}, {FeatureTerm::Source::Constant, 0, 0.5}},
+             {{FeatureTerm::Source::State, 0, -1.0}, {FeatureTerm::Source::Deviation, 2, 1.0}}});
         QCOMPARE(map.featureCount(), 2);
         QCOMPARE(map.channelCount(), 2);
         Eigen::VectorXd e(3), s(3);

@@ -12,14 +12,15 @@ using namespace prisca::core;
 
 class TestLeastStateDeviation : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void match_equalsBruteForceArgminInForwardWindow() {
         std::mt19937 rng(11);
         std::normal_distribution<double> normal(0.0, 1.0);
         const int T = 300, n = 4, window = 15;
         Eigen::MatrixXd demo(T, n);
         for (int j = 0; j < T; ++j)
-            for (int c = 0; c < n; ++c) demo(j, c) = std::sin(0.05 * j * (c + 1)) + 0.1 * normal(rng);
+            for (int c = 0; c < n; ++c)
+                demo(j, c) = std::sin(0.05 * j * (c + 1)) + 0.1 * normal(rng);
         Eigen::VectorXd weights(n);
         weights << 1.0, 0.5, 2.0, 0.1;
         MatchingParameters parameters;
@@ -32,7 +33,8 @@ private slots:
         for (int k = 0; k < 400; ++k) {
             const int near = std::min(T - 1, k * 3 / 4);
             Eigen::VectorXd s = demo.row(near).transpose();
-            for (int c = 0; c < n; ++c) s[c] += 0.2 * normal(rng);
+            for (int c = 0; c < n; ++c)
+                s[c] += 0.2 * normal(rng);
             s[2] += (k % 7 == 0) ? 2 * M_PI : 0.0;  // an angle off by a full turn is no deviation
             const int got = matcher.match(s);
             int best = -1;
@@ -41,7 +43,8 @@ private slots:
                 double d = 0.0;
                 for (int c = 0; c < n; ++c) {
                     double diff = s[c] - demo(j, c);
-                    if (c == 2) diff = std::remainder(diff, 2 * M_PI);
+                    if (c == 2)
+                        diff = std::remainder(diff, 2 * M_PI);
                     d += weights[c] * std::abs(diff);
                 }
                 if (d < bestDistance) {
@@ -58,11 +61,13 @@ private slots:
 
     void match_tiesGoToEarlierSampleSoAStandingRobotWaits() {
         Eigen::MatrixXd demo = Eigen::MatrixXd::Zero(50, 2);  // demonstration starts at rest
-        for (int j = 10; j < 50; ++j) demo(j, 0) = 0.1 * (j - 9);
+        for (int j = 10; j < 50; ++j)
+            demo(j, 0) = 0.1 * (j - 9);
         MatchingParameters parameters;
         parameters.window = 30;
         LeastStateDeviationMatcher matcher(demo, parameters);
-        for (int k = 0; k < 5; ++k) QCOMPARE(matcher.match(Eigen::Vector2d(0, 0)), 0);
+        for (int k = 0; k < 5; ++k)
+            QCOMPARE(matcher.match(Eigen::Vector2d(0, 0)), 0);
         QCOMPARE(matcher.match(Eigen::Vector2d(1.0, 0)), 19);
         matcher.reset();
         QCOMPARE(matcher.lastIndex(), -1);
@@ -75,7 +80,8 @@ private slots:
         parameters.mode = MatchingParameters::Mode::TimeDriven;
         LeastStateDeviationMatcher matcher(demo, parameters);
         const Eigen::VectorXd far = Eigen::VectorXd::Constant(3, 100.0);
-        for (int k = 0; k < 8; ++k) QCOMPARE(matcher.match(far), std::min(k, 4));
+        for (int k = 0; k < 8; ++k)
+            QCOMPARE(matcher.match(far), std::min(k, 4));
         matcher.reset();
         QCOMPARE(matcher.match(far), 0);
     }
@@ -84,12 +90,14 @@ private slots:
         Eigen::MatrixXd demo = Eigen::MatrixXd::Zero(5, 3);
         MatchingParameters badWeights;
         badWeights.weights = Eigen::VectorXd::Ones(2);
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, LeastStateDeviationMatcher(demo, badWeights));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 LeastStateDeviationMatcher(demo, badWeights));
         MatchingParameters badAngle;
         badAngle.angleIndices = {3};
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, LeastStateDeviationMatcher(demo, badAngle));
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                                 LeastStateDeviationMatcher(Eigen::MatrixXd(0, 3), MatchingParameters{}));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            LeastStateDeviationMatcher(Eigen::MatrixXd(0, 3), MatchingParameters{}));
     }
 };
 

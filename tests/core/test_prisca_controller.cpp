@@ -15,7 +15,8 @@ using namespace prisca::core;
 
 namespace {
 
-std::shared_ptr<Demonstration> randomDemonstration(int T, int n, int m, double dt, std::mt19937& rng) {
+std::shared_ptr<Demonstration> randomDemonstration(int T, int n, int m, double dt,
+                                                   std::mt19937& rng) {
     std::normal_distribution<double> normal(0.0, 1.0);
     auto d = std::make_shared<Demonstration>();
     d->dt = dt;
@@ -31,8 +32,10 @@ std::shared_ptr<Demonstration> randomDemonstration(int T, int n, int m, double d
     d->states.resize(T, n);
     d->actions.resize(T, m);
     for (int k = 0; k < T; ++k) {
-        for (int c = 0; c < n; ++c) d->states(k, c) = std::sin(0.1 * k + c) + 0.05 * normal(rng);
-        for (int l = 0; l < m; ++l) d->actions(k, l) = 0.5 * std::cos(0.07 * k + l);
+        for (int c = 0; c < n; ++c)
+            d->states(k, c) = std::sin(0.1 * k + c) + 0.05 * normal(rng);
+        for (int l = 0; l < m; ++l)
+            d->actions(k, l) = 0.5 * std::cos(0.07 * k + l);
     }
     return d;
 }
@@ -54,27 +57,31 @@ struct LiteralPrisca {
     double gamma;
     int tauPrime;
     double beta;
-    Eigen::MatrixXd B;       // m x n
-    Eigen::VectorXd W;       // cost weights
+    Eigen::MatrixXd B;  // m x n
+    Eigen::VectorXd W;  // cost weights
     double dt;
-    Eigen::MatrixXd theta;   // p x m
+    Eigen::MatrixXd theta;                // p x m
     std::vector<Eigen::MatrixXd> a;       // a_j, p x m
     std::vector<Eigen::MatrixXd> As, Gs;  // A_k, G_k
 
     // One step given the error e_k and the features Phi_k; returns theta after the update.
     Eigen::MatrixXd step(int k, const Eigen::VectorXd& e, const Eigen::MatrixXd& phi) {
-        const int p = static_cast<int>(phi.rows()), m = static_cast<int>(phi.cols()), n = static_cast<int>(e.size());
+        const int p = static_cast<int>(phi.rows()), m = static_cast<int>(phi.cols()),
+                  n = static_cast<int>(e.size());
         Eigen::MatrixXd ak(p, m);
         for (int l = 0; l < m; ++l) {
             double projection = 0.0;  // e^T W dS_l
-            for (int c = 0; c < n; ++c) projection += e[c] * W[c] * dt * B(l, c);
-            for (int i = 0; i < p; ++i) ak(i, l) = phi(i, l) * projection;
+            for (int c = 0; c < n; ++c)
+                projection += e[c] * W[c] * dt * B(l, c);
+            for (int i = 0; i < p; ++i)
+                ak(i, l) = phi(i, l) * projection;
         }
         a.push_back(ak);
         const int start = std::max(0, k - H);
         Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, m), G = Eigen::MatrixXd::Zero(p, m);
         for (int i = start; i <= k; ++i) {  // E_{i=k-H:k} E_{j=i:k}
-            Eigen::MatrixXd innerA = Eigen::MatrixXd::Zero(p, m), innerG = Eigen::MatrixXd::Zero(p, m);
+            Eigen::MatrixXd innerA = Eigen::MatrixXd::Zero(p, m),
+                            innerG = Eigen::MatrixXd::Zero(p, m);
             for (int j = i; j <= k; ++j) {
                 const double D = H / (std::pow(gamma, j - (k - H)) + 1.0);
                 innerA += a[j];
@@ -120,14 +127,15 @@ struct IntegratorPlant {
 
 class TestPriscaController : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void step_equalsLiteralAlgorithm1() {
         std::mt19937 rng(21);
         std::normal_distribution<double> normal(0.0, 1.0);
         const int n = 3, m = 2, T = 80;
         auto demo = randomDemonstration(T, n, m, 0.05, rng);
-        FeatureMap features({{{FeatureTerm::Source::Deviation, 0, 1.0}, {FeatureTerm::Source::Constant, 0, 1.0}},
-                             {{FeatureTerm::Source::Deviation, 2, 2.0}, {FeatureTerm::Source::Deviation, 1, 1.0}}});
+        FeatureMap features(
+            {{{FeatureTerm::Source::Deviation, 0, 1.0}, {FeatureTerm::Source::Constant, 0, 1.0}},
+             {{FeatureTerm::Source::Deviation, 2, 2.0}, {FeatureTerm::Source::Deviation, 1, 1.0}}});
         Eigen::MatrixXd B(m, n);
         B << 1.5, 0.0, 0.7, 0.0, -2.0, 1.1;
         PriscaParameters parameters;
@@ -139,11 +147,13 @@ private slots:
         TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::TimeDriven, 1e9);
         problem.costWeights = Eigen::Vector3d(1.0, 0.5, 2.0);
         PriscaController controller(problem, features, B, parameters);
-        LiteralPrisca literal{4, 0.8, 6, 5.0, B, problem.costWeights, 0.05, Eigen::MatrixXd::Zero(2, 2), {}, {}, {}};
+        LiteralPrisca literal{
+            4, 0.8, 6, 5.0, B, problem.costWeights, 0.05, Eigen::MatrixXd::Zero(2, 2), {}, {}, {}};
 
         for (int k = 0; k < T; ++k) {
             Eigen::VectorXd s = demo->states.row(k).transpose();
-            for (int c = 0; c < n; ++c) s[c] += 0.3 * normal(rng);
+            for (int c = 0; c < n; ++c)
+                s[c] += 0.3 * normal(rng);
             const ControlStep& out = controller.step(s);
             const Eigen::VectorXd e = s - demo->states.row(k).transpose();
             Eigen::MatrixXd phi(2, 2);
@@ -151,12 +161,17 @@ private slots:
             const Eigen::MatrixXd theta = literal.step(k, e, phi);
             const double scale = 1.0 + theta.cwiseAbs().maxCoeff();
             QVERIFY2((controller.theta() - theta).cwiseAbs().maxCoeff() <= 1e-12 * scale,
-                     qPrintable(QString("k=%1 theta differs by %2").arg(k).arg((controller.theta() - theta).cwiseAbs().maxCoeff())));
+                     qPrintable(QString("k=%1 theta differs by %2")
+                                    .arg(k)
+                                    .arg((controller.theta() - theta).cwiseAbs().maxCoeff())));
             Eigen::VectorXd u(2);
-            for (int l = 0; l < m; ++l) u[l] = theta.col(l).dot(phi.col(l)) + demo->actions(k, l);
-            QVERIFY((out.action - u).cwiseAbs().maxCoeff() <= 1e-12 * (1.0 + u.cwiseAbs().maxCoeff()));
+            for (int l = 0; l < m; ++l)
+                u[l] = theta.col(l).dot(phi.col(l)) + demo->actions(k, l);
+            QVERIFY((out.action - u).cwiseAbs().maxCoeff() <=
+                    1e-12 * (1.0 + u.cwiseAbs().maxCoeff()));
             QCOMPARE(out.referenceIndex, k);
-            QVERIFY(std::abs(out.cost - e.dot(problem.costWeights.cwiseProduct(e))) <= 1e-12 * (1 + out.cost));
+            QVERIFY(std::abs(out.cost - e.dot(problem.costWeights.cwiseProduct(e))) <=
+                    1e-12 * (1 + out.cost));
             QVERIFY(std::abs(controller.stepSize() - 5.0 / (k + 5.0)) <= 1e-15);
         }
         QVERIFY(!controller.theta().isZero());  // it did learn something
@@ -205,7 +220,8 @@ private slots:
             }
             return last;
         };
-        TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::LeastStateDeviation, 10.0);
+        TrackingProblem problem =
+            problemFor(demo, MatchingParameters::Mode::LeastStateDeviation, 10.0);
         problem.matching.window = 20;
         const FeatureMap features = FeatureMap::deviationFeatures(2, {0, 1});
         PriscaParameters frozen;
@@ -241,7 +257,8 @@ private slots:
         QString error;
         const IntuitiveMapping signs = *IntuitiveMapping::parse("1,0,1;0,-1,1", &error);
         const FeatureMap features = FeatureMap::deviationFeatures(m, {0, 1, 2});
-        TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::LeastStateDeviation, 0.8);
+        TrackingProblem problem =
+            problemFor(demo, MatchingParameters::Mode::LeastStateDeviation, 0.8);
         problem.costWeights = Eigen::Vector3d(1.0, 3.0, 0.5);
         PgsdParameters pgsdParameters;
         pgsdParameters.horizon = 6;
@@ -263,19 +280,23 @@ private slots:
             prisca.reset(trial == 0 ? ResetMode::Cold : ResetMode::WarmStart);
             for (int k = 0; k < T + 10; ++k) {
                 Eigen::VectorXd s = demo->states.row(std::min(k, T - 1)).transpose();
-                for (int c = 0; c < n; ++c) s[c] += 0.2 * normal(rng);
+                for (int c = 0; c < n; ++c)
+                    s[c] += 0.2 * normal(rng);
                 const ControlStep a = pgsd.step(s);
                 const ControlStep& b = prisca.step(s);
                 QCOMPARE(a.referenceIndex, b.referenceIndex);
                 QVERIFY2((a.action - b.action).cwiseAbs().maxCoeff() <= 1e-12,
-                         qPrintable(QString("k=%1: %2").arg(k).arg((a.action - b.action).cwiseAbs().maxCoeff())));
+                         qPrintable(QString("k=%1: %2")
+                                        .arg(k)
+                                        .arg((a.action - b.action).cwiseAbs().maxCoeff())));
                 QVERIFY((pgsd.theta() - prisca.theta()).cwiseAbs().maxCoeff() <= 1e-12);
             }
         }
         QVERIFY(!pgsd.theta().isZero());
         // And it is a real special case: PRISCA's own settings give a different policy.
         PriscaController full(problem, features, signs.asDouble(), PriscaParameters{});
-        for (int k = 0; k < 20; ++k) full.step(demo->states.row(k).transpose() + Eigen::Vector3d(0.3, -0.2, 0.1));
+        for (int k = 0; k < 20; ++k)
+            full.step(demo->states.row(k).transpose() + Eigen::Vector3d(0.3, -0.2, 0.1));
         QVERIFY((full.theta() - pgsd.theta()).cwiseAbs().maxCoeff() > 1e-6);
     }
 
@@ -287,7 +308,8 @@ private slots:
         PriscaController controller(problemFor(demo, MatchingParameters::Mode::TimeDriven, 1.0),
                                     FeatureMap::deviationFeatures(1, {0, 1}),
                                     Eigen::MatrixXd::Ones(1, 2), parameters);
-        for (int k = 0; k < 20; ++k) controller.step(demo->states.row(k).transpose() + Eigen::Vector2d(0.5, 0.5));
+        for (int k = 0; k < 20; ++k)
+            controller.step(demo->states.row(k).transpose() + Eigen::Vector2d(0.5, 0.5));
         const Eigen::MatrixXd learned = controller.theta();
         QVERIFY(!learned.isZero());
         QCOMPARE(controller.learningSteps(), 20);
@@ -308,14 +330,17 @@ private slots:
         PriscaParameters frozen;
         frozen.learning = false;
         PriscaController controller(problemFor(demo, MatchingParameters::Mode::TimeDriven, 0.25),
-                                    FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2), frozen);
+                                    FeatureMap::deviationFeatures(1, {0}),
+                                    Eigen::MatrixXd::Ones(1, 2), frozen);
         controller.setTheta(Eigen::MatrixXd::Constant(1, 1, -100.0));
         for (int k = 0; k < 10; ++k) {
-            const ControlStep& out = controller.step(demo->states.row(k).transpose() + Eigen::Vector2d(1.0, 0.0));
+            const ControlStep& out =
+                controller.step(demo->states.row(k).transpose() + Eigen::Vector2d(1.0, 0.0));
             QCOMPARE(out.action[0], -0.25);  // -100 * 1.0 + u*, clamped to the lower limit
         }
         QCOMPARE(controller.theta()(0, 0), -100.0);
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.setTheta(Eigen::MatrixXd::Zero(2, 1)));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 controller.setTheta(Eigen::MatrixXd::Zero(2, 1)));
     }
 
     void construction_rejectsInconsistentShapes() {
