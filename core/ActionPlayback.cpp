@@ -5,12 +5,8 @@
 
 namespace prisca::core {
 
-ActionPlayback::ActionPlayback(TrackingProblem problem) : problem_(std::move(problem)) {
-    const QString text = problem_.validate();
-    if (!text.isEmpty()) {
-        throw std::invalid_argument(text.toStdString());
-    }
-}
+ActionPlayback::ActionPlayback(TrackingProblem problem)
+    : problem_(TrackingProblem::validated(std::move(problem))) {}
 
 void ActionPlayback::reset(ResetMode) {
     step_ = 0;
@@ -29,10 +25,7 @@ const ControlStep& ActionPlayback::step(const Eigen::Ref<const Eigen::VectorXd>&
     record_.action = record_.referenceAction;
     problem_.limits.saturate(record_.action);
     record_.deviation = problem_.deviation.deviation(observation, demo.states.row(j).transpose());
-    const Eigen::VectorXd W = problem_.costWeights.size() == record_.deviation.size()
-                                  ? problem_.costWeights
-                                  : Eigen::VectorXd::Ones(record_.deviation.size());
-    record_.cost = record_.deviation.dot(W.cwiseProduct(record_.deviation));
+    record_.cost = problem_.cost(record_.deviation);
     ++step_;
     return record_;
 }

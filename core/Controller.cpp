@@ -50,4 +50,15 @@ QString TrackingProblem::validate() const {
     return {};
 }
 
+TrackingProblem TrackingProblem::validated(TrackingProblem problem) {
+    const QString text = problem.validate();
+    if (!text.isEmpty()) {
+        throw std::invalid_argument(text.toStdString());
+    }
+    if (problem.costWeights.size() == 0) {
+        problem.costWeights = Eigen::VectorXd::Ones(problem.demonstration->stateDimension());
+    }
+    return problem;
+}
+
 }  // namespace prisca::core

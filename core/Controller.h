@@ -9,6 +9,7 @@
 #include <QString>
 
 #include <memory>
+#include <stdexcept>
 
 namespace prisca::core {
 
@@ -34,6 +35,13 @@ struct TrackingProblem {
 
     /// Empty when consistent; else a one-line description of the first problem.
     QString validate() const;
+    /// The problem ready for a controller: throws std::invalid_argument with validate()'s
+    /// message when inconsistent, and fills empty cost weights with ones.
+    static TrackingProblem validated(TrackingProblem problem);
+    /// C = e^T W e for a problem returned by validated().
+    double cost(const Eigen::Ref<const Eigen::VectorXd>& deviation) const {
+        return deviation.dot(costWeights.cwiseProduct(deviation));
+    }
 };
 
 /// The record of one control step. Valid until the next call to step() or reset().

@@ -6,20 +6,8 @@
 
 namespace prisca::core {
 
-namespace {
-
-TrackingProblem checkedProblem(TrackingProblem problem) {
-    const QString text = problem.validate();
-    if (!text.isEmpty()) {
-        throw std::invalid_argument(text.toStdString());
-    }
-    return problem;
-}
-
-}  // namespace
-
 PdController::PdController(TrackingProblem problem, PdParameters parameters, QString name)
-    : problem_(checkedProblem(std::move(problem))),
+    : problem_(TrackingProblem::validated(std::move(problem))),
       parameters_(std::move(parameters)),
       name_(std::move(name)),
       matcher_(problem_.demonstration->states, problem_.matching) {
@@ -89,10 +77,7 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
     record_.action = record_.referenceAction - parameters_.kp.cwiseProduct(signal_) -
                      parameters_.kd.cwiseProduct(rate);
     problem_.limits.saturate(record_.action);
-    const Eigen::VectorXd W = problem_.costWeights.size() == e.size()
-                                  ? problem_.costWeights
-                                  : Eigen::VectorXd::Ones(e.size());
-    record_.cost = e.dot(W.cwiseProduct(e));
+    record_.cost = problem_.cost(e);
     ++step_;
     return record_;
 }

@@ -9,15 +9,11 @@ namespace prisca::core {
 
 PgsdController::PgsdController(TrackingProblem problem, FeatureMap features, IntuitiveMapping signs,
                                PgsdParameters parameters)
-    : problem_(std::move(problem)),
+    : problem_(TrackingProblem::validated(std::move(problem))),
       features_(std::move(features)),
       signs_(std::move(signs)),
       parameters_(parameters) {
     problem_.matching.mode = MatchingParameters::Mode::TimeDriven;
-    const QString problemText = problem_.validate();
-    if (!problemText.isEmpty()) {
-        throw std::invalid_argument(problemText.toStdString());
-    }
     const int n = problem_.demonstration->stateDimension();
     const int m = problem_.demonstration->actionDimension();
     if (signs_.controls() != m || signs_.states() != n || features_.channelCount() != m ||
@@ -58,8 +54,7 @@ const ControlStep& PgsdController::step(const Eigen::Ref<const Eigen::VectorXd>&
         window_.pop_front();
     }
 
-    const Eigen::VectorXd W =
-        problem_.costWeights.size() == n ? problem_.costWeights : Eigen::VectorXd::Ones(n);
+    const Eigen::VectorXd& W = problem_.costWeights;
     const Eigen::VectorXd w = nestedExpectationWeights(static_cast<int>(window_.size()));
     gradient_.setZero();
     for (int t = 0; t < static_cast<int>(window_.size()); ++t) {
@@ -79,7 +74,7 @@ const ControlStep& PgsdController::step(const Eigen::Ref<const Eigen::VectorXd>&
     record_.referenceIndex = j;
     record_.referenceAction = demo.actions.row(j).transpose();
     record_.deviation = sample.deviation;
-    record_.cost = sample.deviation.dot(W.cwiseProduct(sample.deviation));
+    record_.cost = problem_.cost(sample.deviation);
     record_.action.resize(m);
     for (int l = 0; l < m; ++l) {
         record_.action[l] = theta_.col(l).dot(sample.phi.col(l)) + record_.referenceAction[l];

@@ -7,22 +7,10 @@
 
 namespace prisca::core {
 
-namespace {
-
-TrackingProblem checked(TrackingProblem problem) {
-    const QString problemText = problem.validate();
-    if (!problemText.isEmpty()) {
-        throw std::invalid_argument(problemText.toStdString());
-    }
-    return problem;
-}
-
-}  // namespace
-
 PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
                                    Eigen::MatrixXd actionMapping, PriscaParameters parameters,
                                    QString name)
-    : problem_(checked(std::move(problem))),
+    : problem_(TrackingProblem::validated(std::move(problem))),
       featureMap_(std::move(features)),
       parameters_(parameters),
       name_(std::move(name)),
@@ -55,8 +43,6 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     referenceStates_ = demo.states.transpose();
     referenceActions_ = demo.actions.transpose();
     stateEffect_ = demo.dt * actionMapping;
-    costWeights_ =
-        problem_.costWeights.size() == n ? problem_.costWeights : Eigen::VectorXd::Ones(n);
     for (int c = 1; c <= H + 1; ++c) {
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
@@ -113,7 +99,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     featureMap_.evaluate(e, observation, phi_);
 
     // 2. a_k: column l is phi_l scaled by how much control l moves the weighted error.
-    weightedError_ = costWeights_.cwiseProduct(e);
+    weightedError_ = problem_.costWeights.cwiseProduct(e);
     projected_.noalias() = stateEffect_ * weightedError_;
     const int slot = k % (H + 1);
     for (int l = 0; l < m; ++l) {

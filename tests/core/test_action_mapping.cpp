@@ -1,4 +1,5 @@
 // The intuitive mapping B~ and the fit of B_v (eq. 8).
+#include "TestDemonstrations.h"
 #include "core/ActionMapping.h"
 #include "core/NestedExpectation.h"
 
@@ -12,20 +13,7 @@ using namespace prisca::core;
 namespace {
 
 Demonstration emptyDemo(int T, int n, int m, double dt) {
-    Demonstration d;
-    d.dt = dt;
-    for (int c = 0; c < n; ++c) {
-        d.stateNames << QStringLiteral("s%1").arg(c);
-        d.stateUnits << QStringLiteral("1");
-    }
-    for (int l = 0; l < m; ++l) {
-        d.actionNames << QStringLiteral("u%1").arg(l);
-        d.actionUnits << QStringLiteral("1");
-    }
-    d.time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * dt);
-    d.states.setZero(T, n);
-    d.actions.setZero(T, m);
-    return d;
+    return prisca::test::namedDemonstration(T, n, m, dt);
 }
 
 // Random piecewise-constant actions: a human holding the stick, then moving it.

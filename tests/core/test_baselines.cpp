@@ -1,4 +1,5 @@
 // The comparison methods: PD and its H / LSD variants, action playback, PEGASUS.
+#include "TestDemonstrations.h"
 #include "core/ActionPlayback.h"
 #include "core/PdController.h"
 #include "core/Pegasus.h"
@@ -17,20 +18,8 @@ namespace {
 
 // Demonstration of an integrator s_{k+1} = s_k + dt G u_k driven by smooth actions.
 std::shared_ptr<Demonstration> integratorDemonstration(const Eigen::MatrixXd& G, int T, double dt) {
-    auto d = std::make_shared<Demonstration>();
-    d->dt = dt;
     const int n = static_cast<int>(G.rows()), m = static_cast<int>(G.cols());
-    for (int c = 0; c < n; ++c) {
-        d->stateNames << QStringLiteral("s%1").arg(c);
-        d->stateUnits << QStringLiteral("m");
-    }
-    for (int l = 0; l < m; ++l) {
-        d->actionNames << QStringLiteral("u%1").arg(l);
-        d->actionUnits << QStringLiteral("1");
-    }
-    d->time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * dt);
-    d->states.resize(T, n);
-    d->actions.resize(T, m);
+    auto d = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, n, m, dt, "m"));
     Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < T; ++k) {
         for (int l = 0; l < m; ++l)

@@ -1,5 +1,6 @@
 // PRISCA (Algorithm 1) against a literal re-computation of eq. 2, 3, 9-15, closed-loop learning
 // on a linear plant with a wrong gain, and the PGSD special case.
+#include "TestDemonstrations.h"
 #include "core/ActionMapping.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
@@ -18,19 +19,7 @@ namespace {
 std::shared_ptr<Demonstration> randomDemonstration(int T, int n, int m, double dt,
                                                    std::mt19937& rng) {
     std::normal_distribution<double> normal(0.0, 1.0);
-    auto d = std::make_shared<Demonstration>();
-    d->dt = dt;
-    for (int c = 0; c < n; ++c) {
-        d->stateNames << QStringLiteral("s%1").arg(c);
-        d->stateUnits << QStringLiteral("1");
-    }
-    for (int l = 0; l < m; ++l) {
-        d->actionNames << QStringLiteral("u%1").arg(l);
-        d->actionUnits << QStringLiteral("1");
-    }
-    d->time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * dt);
-    d->states.resize(T, n);
-    d->actions.resize(T, m);
+    auto d = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, n, m, dt));
     for (int k = 0; k < T; ++k) {
         for (int c = 0; c < n; ++c)
             d->states(k, c) = std::sin(0.1 * k + c) + 0.05 * normal(rng);
@@ -183,15 +172,8 @@ class TestPriscaController : public QObject {
         const int T = 400;
         Eigen::MatrixXd Gnominal(2, 2);  // n x m: u0 drives s0 (and a little s1), u1 drives s1
         Gnominal << 1.0, 0.0, 0.3, 1.0;
-        auto demo = std::make_shared<Demonstration>();
-        demo->dt = dt;
-        demo->stateNames = {"s0", "s1"};
-        demo->stateUnits = {"m", "m"};
-        demo->actionNames = {"u0", "u1"};
-        demo->actionUnits = {"1", "1"};
-        demo->time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * dt);
-        demo->states.resize(T, 2);
-        demo->actions.resize(T, 2);
+        auto demo =
+            std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, 2, 2, dt, "m"));
         IntegratorPlant nominal{Gnominal, dt, Eigen::Vector2d::Zero()};
         for (int k = 0; k < T; ++k) {
             const double t = k * dt;
