@@ -164,15 +164,68 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
             }
             // Complete orthogonal decomposition: the minimum-norm answer if two controls move
             // together in the demonstration, instead of an arbitrary split.
-            const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(
-                sqrtW.asDiagonal() * X);
-            const Eigen::VectorXd beta = solver.solve(sqrtW.asDiagonal() * y);
+            const Eigen::MatrixXd WX = sqrtW.asDiagonal() * X;
+            const Eigen::VectorXd Wy = sqrtW.asDiagonal() * y;
+            const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(WX);
+            Eigen::VectorXd beta = solver.solve(Wy);
             if (solver.rank() < X.cols()) {
                 fit.warnings
                     << QStringLiteral(
                            "state '%1': the controls acting on it moved together, so their "
                            "shares cannot be told apart (minimum-norm fit)")
                            .arg(demonstration.stateNames.value(c, QString::number(c)));
+            }
+            for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
+                if (beta[j] < 0.0) {
+                    fit.signConflicts.emplace_back(controls[j], c);
+                    fit.warnings
+                        << QStringLiteral(
+                               "'%1' moved '%2' the opposite way to the intuitive mapping "
+                               "(unconstrained B_v = %3)%4")
+                               .arg(demonstration.actionNames.value(controls[j]),
+                                    demonstration.stateNames.value(c))
+                               .arg(beta[j], 0, 'g', 4)
+                               .arg(options.nonNegative
+                                        ? QStringLiteral("; set to 0, check the sign or the "
+                                                         "demonstration")
+                                        : QStringLiteral("; check the sign or the demonstration"));
+                }
+            }
+            if (options.nonNegative && (beta.array() < 0.0).any()) {
+                // Few unknowns per column (one per control): try every subset of entries left
+                // free, the rest at 0, and keep the best feasible one. Exact, and cheap for m <= 4.
+                const int q = static_cast<int>(beta.size());
+                double best = std::numeric_limits<double>::infinity();
+                Eigen::VectorXd bestBeta = Eigen::VectorXd::Zero(q);
+                for (int mask = 0; mask < (1 << q); ++mask) {
+                    std::vector<int> free;
+                    for (int j = 0; j < q; ++j) {
+                        if (mask & (1 << j)) {
+                            free.push_back(j);
+                        }
+                    }
+                    Eigen::VectorXd candidate = Eigen::VectorXd::Zero(q);
+                    if (!free.empty()) {
+                        Eigen::MatrixXd sub(K, static_cast<int>(free.size()));
+                        for (int f = 0; f < static_cast<int>(free.size()); ++f) {
+                            sub.col(f) = WX.col(free[f]);
+                        }
+                        const Eigen::VectorXd part =
+                            sub.completeOrthogonalDecomposition().solve(Wy);
+                        if ((part.array() < 0.0).any()) {
+                            continue;
+                        }
+                        for (int f = 0; f < static_cast<int>(free.size()); ++f) {
+                            candidate[free[f]] = part[f];
+                        }
+                    }
+                    const double residual = (Wy - WX * candidate).squaredNorm();
+                    if (residual < best) {
+                        best = residual;
+                        bestBeta = candidate;
+                    }
+                }
+                beta = bestBeta;
             }
             for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
                 fit.bv(controls[j], c) = beta[j];
@@ -187,19 +240,6 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
         fit.residualRms[c] = std::sqrt((w.array() * (y - prediction).array().square()).sum());
     }
 
-    for (int l = 0; l < m; ++l) {
-        for (int c = 0; c < n; ++c) {
-            if (mapping.signs(l, c) != 0 && excited[l] && fit.bv(l, c) < 0.0) {
-                fit.signConflicts.emplace_back(l, c);
-                fit.warnings << QStringLiteral(
-                                    "'%1' moved '%2' the opposite way to the intuitive mapping "
-                                    "(fitted B_v = %3); check the sign or the demonstration")
-                                    .arg(demonstration.actionNames.value(l, QString::number(l)))
-                                    .arg(demonstration.stateNames.value(c, QString::number(c)))
-                                    .arg(fit.bv(l, c), 0, 'g', 4);
-            }
-        }
-    }
     fit.b = fit.bv.cwiseProduct(mapping.asDouble());
     return fit;
 }

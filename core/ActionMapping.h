@@ -49,6 +49,9 @@ struct ActionMappingFitOptions {
     Target target = Target::RateChange;
     /// Latency shift d [steps] >= 0: pairs ds_{k+1+d} with du_k.
     int latency = 0;
+    /// Constrain B_v >= 0, so B keeps the signs of B~ (B~ says which way, B_v how much). An
+    /// entry the data would make negative is reported as a sign conflict and set to 0.
+    bool nonNegative = true;
     /// A channel whose weighted mean square du is below this is reported as never excited.
     double excitationThreshold = 1e-12;
 };
@@ -59,7 +62,8 @@ struct ActionMappingFit {
     Eigen::MatrixXd b;            ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
     Eigen::VectorXd residualRms;  ///< per state component: weighted RMS of ds - B^T dt du
     Eigen::VectorXd rSquared;     ///< per state component; NaN where no control acts on it
-    std::vector<std::pair<int, int>> signConflicts;  ///< (control, state): fitted B_v < 0
+    /// (control, state) where the unconstrained fit of B_v is negative: the data contradicts B~.
+    std::vector<std::pair<int, int>> signConflicts;
     std::vector<int> unexcitedChannels;              ///< controls that never changed
     int samples = 0;                                 ///< number of (ds, du) pairs used
     QStringList warnings;                            ///< one line each, in the operator's words

@@ -74,6 +74,9 @@ class Controller {
     virtual const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) = 0;
     /// An independent copy in the same state.
     virtual std::unique_ptr<Controller> clone() const = 0;
+    /// The learned policy parameters theta (p x m) for logging and plotting, or nullptr for a
+    /// controller that learns nothing.
+    virtual const Eigen::MatrixXd* learnedParameters() const { return nullptr; }
 };
 
 }  // namespace prisca::core

@@ -1,7 +1,6 @@
 #include "DemonstrationCsv.h"
 
 #include <QFile>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <charconv>
@@ -69,11 +68,8 @@ QString quoted(Text s) {
     return quoted(toQString(s));
 }
 
-// The shortest text that reads back to the same double; locale independent, unlike printf.
 void appendNumber(QByteArray& out, double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, static_cast<qsizetype>(result.ptr - buffer));
+    appendCsvNumber(out, value);
 }
 
 QString numberText(double value) {
@@ -700,20 +696,6 @@ void appendList(QByteArray& out, const char* key, const QStringList& names,
 
 }  // namespace
 
-QString FileError::toString() const {
-    QString text = path;
-    if (line > 0) {
-        text += QStringLiteral(":%1").arg(line);
-        if (column > 0) {
-            text += QStringLiteral(":%1").arg(column);
-        }
-    }
-    if (!text.isEmpty()) {
-        text += QStringLiteral(": ");
-    }
-    return text + message;
-}
-
 std::optional<Demonstration> parseDemonstrationCsv(const QByteArray& text,
                                                    const QString& sourceName, FileError* error,
                                                    const CsvReadOptions& options) {
@@ -904,20 +886,7 @@ bool writeDemonstrationCsv(const Demonstration& demo, const QString& path, FileE
     if (text.isEmpty()) {
         return fail(QStringLiteral("cannot write this demonstration: %1").arg(problem));
     }
-    // QSaveFile writes a temporary file and renames it over the target only on commit().
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        return fail(QStringLiteral("cannot open for writing: %1").arg(file.errorString()));
-    }
-    if (file.write(text) != text.size()) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return fail(QStringLiteral("cannot write: %1").arg(reason));
-    }
-    if (!file.commit()) {
-        return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));
-    }
-    return true;
+    return writeFileAtomically(path, text, error);
 }
 
 }  // namespace prisca::core

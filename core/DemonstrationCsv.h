@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Demonstration.h"
+#include "FileIo.h"
 
 #include <QByteArray>
 #include <QString>
@@ -30,19 +31,6 @@ namespace prisca::core {
 // comment lines among the data rows, spaces or tabs around fields and a leading '+' on numbers.
 // A list entry without "[unit]" gets unit "1". When the dt line is missing, dt is the median time
 // step. All functions are pure, never throw and may be called from any thread.
-
-/// Where and why a file could not be read or written.
-struct FileError {
-    QString path;  ///< file path, or the source name given for in-memory text
-    int line = 0;  ///< 1-based line number of the problem; 0 when not applicable
-    /// 1-based field number in the header or a data row (1 is the time column t), or entry
-    /// number in a "states:" / "actions:" list; 0 when not applicable.
-    int column = 0;
-    QString message;  ///< one line; names the offending column and quotes the offending text
-
-    /// "path:line:column: message", leaving out the parts that are empty or zero.
-    QString toString() const;
-};
 
 /// Options for reading a demonstration CSV.
 struct CsvReadOptions {

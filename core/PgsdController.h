@@ -33,6 +33,7 @@ class PgsdController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
+    const Eigen::MatrixXd* learnedParameters() const override { return &theta_; }
 
     const Eigen::MatrixXd& theta() const { return theta_; }
     const Eigen::MatrixXd& gradient() const { return gradient_; }

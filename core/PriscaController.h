@@ -49,6 +49,7 @@ class PriscaController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
+    const Eigen::MatrixXd* learnedParameters() const override { return &theta_; }
 
     /// theta (p x m), column l = theta_l.
     const Eigen::MatrixXd& theta() const { return theta_; }

@@ -1,5 +1,7 @@
 #include "app/cli/CommandTable.h"
 
+#include "app/cli/Commands.h"
+
 #include <algorithm>
 
 namespace prisca::app::cli {
@@ -7,10 +9,10 @@ namespace prisca::app::cli {
 const std::vector<CliCommand>& commandTable() {
     // A command is wired in by replacing its nullptr with the function from its own file.
     static const std::vector<CliCommand> table = {
-        {"simulate", "Simulate a plant from an initial state under given actions", nullptr},
-        {"demo", "Generate a scripted demonstration for a plant", nullptr},
-        {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", nullptr},
-        {"run", "Run PRISCA or a baseline on a plant and log the trial", nullptr},
+        {"simulate", "Simulate a plant from an initial state under given actions", simulateCommand},
+        {"demo", "Generate a scripted demonstration for a plant", demoCommand},
+        {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", fitCommand},
+        {"run", "Run PRISCA or a baseline on a plant and log the trial", runCommand},
         {"table1", "Run batches of trials and report the paper's Table I metrics", nullptr},
         {"curve", "Learning curves of several methods over many runs", nullptr},
         {"track", "Track the car's IR LEDs in a video and write its poses", nullptr},

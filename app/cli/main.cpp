@@ -1,4 +1,5 @@
 // prisca-cli: the headless front end of PRISCA Lab. It never opens a window.
+#include "app/cli/CliSupport.h"
 #include "app/cli/CommandTable.h"
 
 #include <QCommandLineParser>
@@ -74,5 +75,13 @@ int main(int argc, char* argv[]) {
     if (command->run == nullptr) {
         return fail(QStringLiteral("command '%1' is not available in this version").arg(name));
     }
-    return command->run(positional.mid(1));
+    // Bad arguments and files surface as UsageError; anything else thrown below is a bad
+    // argument combination that a layer refused (std::invalid_argument): one line, exit 2.
+    try {
+        return command->run(positional.mid(1));
+    } catch (const prisca::app::cli::UsageError& error) {
+        return fail(QStringLiteral("%1: %2").arg(name, QString::fromStdString(error.what())));
+    } catch (const std::exception& error) {
+        return fail(QStringLiteral("%1: %2").arg(name, QString::fromStdString(error.what())));
+    }
 }

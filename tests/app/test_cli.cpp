@@ -31,6 +31,10 @@ const QStringList kPlannedCommands = {
     QStringLiteral("run"),      QStringLiteral("table1"), QStringLiteral("curve"),
     QStringLiteral("track"),    QStringLiteral("link"),
 };
+// Those not built yet (test_cli_commands covers the others end to end).
+const QStringList kNotYetBuilt = {
+    QStringLiteral("table1"), QStringLiteral("curve"), QStringLiteral("track"), QStringLiteral("link"),
+};
 
 }  // namespace
 
@@ -66,7 +70,7 @@ void TestCli::version_printsTheProjectVersion() {
 void TestCli::commandNotBuiltYet_exitsTwoWithOneLineError_data() {
     // Remove a row when its command is implemented.
     QTest::addColumn<QString>("command");
-    for (const QString& command : kPlannedCommands) {
+    for (const QString& command : kNotYetBuilt) {
         QTest::newRow(qPrintable(command)) << command;
     }
 }

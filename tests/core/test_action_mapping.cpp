@@ -146,6 +146,7 @@ class TestActionMapping : public QObject {
             d.states.row(k) << normal(rng), normal(rng);
         ActionMappingFitOptions options;
         options.latency = 1;
+        options.nonNegative = false;  // the plain normal equations, unconstrained
         const ActionMappingFit fit =
             fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
         // Normal equations written out: pairs k = 1..T-3, weights of E_{i=0:K-1} E_{j=i:K-1}.
@@ -206,16 +207,49 @@ class TestActionMapping : public QObject {
         Eigen::MatrixXd bTrue(2, 2);
         bTrue << 1.0, -2.0, 0.0, 0.0;  // control 0 moves state 1 the "wrong" way
         simulateIntegrator(d, bTrue, 0, 1e-5, rng);
-        const ActionMappingFit fit = fitActionMapping(d, signs, DeviationModel::euclidean(2));
+        ActionMappingFitOptions unconstrained;
+        unconstrained.nonNegative = false;
+        const ActionMappingFit fit =
+            fitActionMapping(d, signs, DeviationModel::euclidean(2), unconstrained);
         QCOMPARE(fit.unexcitedChannels, std::vector<int>{1});
         QCOMPARE(fit.bv(1, 0), 0.0);
         QCOMPARE(static_cast<int>(fit.signConflicts.size()), 1);
         QCOMPARE(fit.signConflicts[0], std::make_pair(0, 1));
         QVERIFY(std::abs(fit.bv(0, 1) + 2.0) < 0.05);
         const QString all = fit.warnings.join('\n');
-        QVERIFY2(
-            all.contains("'u1' never changed") && all.contains("'u0' moved 's1' the opposite way"),
-            qPrintable(all));
+        QVERIFY2(all.contains("'u1' never changed") &&
+                     all.contains("'u0' moved 's1' the opposite way"),
+                 qPrintable(all));
+        // By default B_v >= 0: the contradicted entry is reported and set to 0.
+        const ActionMappingFit constrained = fitActionMapping(d, signs, DeviationModel::euclidean(2));
+        QCOMPARE(constrained.bv(0, 1), 0.0);
+        QCOMPARE(static_cast<int>(constrained.signConflicts.size()), 1);
+        QVERIFY(constrained.warnings.join('\n').contains("set to 0"));
+        QVERIFY(std::abs(constrained.bv(0, 0) - fit.bv(0, 0)) < 1e-12);
+    }
+
+    void fit_nonNegativeRefitsTheRemainingControls() {
+        // Two controls on one state; the data makes the second one's share negative. The
+        // constrained answer is the one-control least-squares fit of the first.
+        std::mt19937 rng(13);
+        Demonstration d = emptyDemo(800, 1, 2, 0.025);
+        excite(d, rng, {0, 1});
+        simulateIntegrator(d, (Eigen::MatrixXd(2, 1) << 1.5, -0.7).finished(), 0, 1e-5, rng);
+        const ActionMappingFit fit = fitActionMapping(d, mapping("1;1"), DeviationModel::euclidean(1));
+        QCOMPARE(fit.bv(1, 0), 0.0);
+        const int K = d.length() - 2;
+        const Eigen::VectorXd w = nestedExpectationWeights(K);
+        double xy = 0.0, xx = 0.0;
+        for (int t = 0; t < K; ++t) {
+            const int k = t + 1;
+            const double y = (d.states(k + 1, 0) - d.states(k, 0)) - (d.states(k, 0) - d.states(k - 1, 0));
+            const double x = d.dt * (d.actions(k, 0) - d.actions(k - 1, 0));
+            xy += w[t] * x * y;
+            xx += w[t] * x * x;
+        }
+        QVERIFY2(std::abs(fit.bv(0, 0) - xy / xx) <= 1e-9 * std::abs(xy / xx),
+                 qPrintable(QString("%1 vs %2").arg(fit.bv(0, 0)).arg(xy / xx)));
+        QCOMPARE(fit.signConflicts, (std::vector<std::pair<int, int>>{{1, 0}}));
     }
 
     void fit_unmodelledStateHasNoRSquared() {

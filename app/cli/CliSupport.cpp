@@ -1,0 +1,135 @@
+#include "app/cli/CliSupport.h"
+
+#include "core/DemonstrationCsv.h"
+
+#include <QJsonDocument>
+
+#include <unistd.h>
+#include <cmath>
+#include <cstdio>
+
+namespace prisca::app::cli {
+
+CommandLine::CommandLine(const QString& command, const QString& description) : command_(command) {
+    parser_.setApplicationDescription(description);
+    parser_.addHelpOption();
+}
+
+void CommandLine::addValue(const QString& name, const QString& description,
+                           const QString& valueName, const QString& defaultValue) {
+    QCommandLineOption option(name, description, valueName);
+    if (!defaultValue.isEmpty()) {
+        option.setDefaultValue(defaultValue);
+    }
+    parser_.addOption(option);
+}
+
+void CommandLine::addFlag(const QString& name, const QString& description) {
+    parser_.addOption(QCommandLineOption(name, description));
+}
+
+void CommandLine::addFormat(const QStringList& choices) {
+    addValue(QStringLiteral("format"),
+             QStringLiteral("Output format: %1 (default %2).")
+                 .arg(choices.join(QStringLiteral(", ")), choices.first()),
+             QStringLiteral("format"), choices.first());
+    formats_ = choices;
+}
+
+bool CommandLine::parse(const QStringList& arguments) {
+    // QCommandLineParser wants the program name first.
+    if (!parser_.parse(QStringList{QStringLiteral("prisca-cli %1").arg(command_)} + arguments)) {
+        throw UsageError(parser_.errorText());
+    }
+    if (parser_.isSet(QStringLiteral("help"))) {
+        std::printf("%s", parser_.helpText().toLocal8Bit().constData());
+        return false;
+    }
+    if (!parser_.positionalArguments().isEmpty()) {
+        throw UsageError(QStringLiteral("unexpected argument '%1' (see --help)")
+                             .arg(parser_.positionalArguments().first()));
+    }
+    if (!formats_.isEmpty() && !formats_.contains(format())) {
+        throw UsageError(QStringLiteral("--format must be one of %1, got '%2'")
+                             .arg(formats_.join(QStringLiteral(", ")), format()));
+    }
+    return true;
+}
+
+QString CommandLine::required(const QString& name) const {
+    if (!parser_.isSet(name) || parser_.value(name).isEmpty()) {
+        throw UsageError(QStringLiteral("--%1 is required (see --help)").arg(name));
+    }
+    return parser_.value(name);
+}
+
+double CommandLine::number(const QString& name, double minimum, double maximum) const {
+    const QString text = parser_.value(name);
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        throw UsageError(QStringLiteral("--%1 needs a number, got '%2'").arg(name, text));
+    }
+    if (value < minimum || value > maximum) {
+        throw UsageError(QStringLiteral("--%1 must lie in [%2, %3], got %4")
+                             .arg(name)
+                             .arg(minimum)
+                             .arg(maximum)
+                             .arg(value));
+    }
+    return value;
+}
+
+long long CommandLine::integer(const QString& name, long long minimum, long long maximum) const {
+    const QString text = parser_.value(name);
+    bool ok = false;
+    const long long value = text.toLongLong(&ok);
+    if (!ok) {
+        throw UsageError(QStringLiteral("--%1 needs a whole number, got '%2'").arg(name, text));
+    }
+    if (value < minimum || value > maximum) {
+        throw UsageError(QStringLiteral("--%1 must lie in [%2, %3], got %4")
+                             .arg(name)
+                             .arg(minimum)
+                             .arg(maximum)
+                             .arg(value));
+    }
+    return value;
+}
+
+core::Demonstration readDemonstration(const QString& path) {
+    core::FileError error;
+    auto demonstration = core::readDemonstrationCsv(path, &error);
+    if (!demonstration) {
+        throw UsageError(error.toString());
+    }
+    return *demonstration;
+}
+
+void writeDemonstration(const core::Demonstration& demonstration, const QString& path) {
+    core::FileError error;
+    if (!core::writeDemonstrationCsv(demonstration, path, &error)) {
+        throw UsageError(error.toString());
+    }
+}
+
+void printJson(const QJsonObject& object) {
+    std::printf("%s", QJsonDocument(object).toJson(QJsonDocument::Indented).constData());
+}
+
+void printText(const QString& text) {
+    std::printf("%s", text.toLocal8Bit().constData());
+}
+
+void printProgress(const QString& text) {
+    static const bool terminal = isatty(fileno(stderr));
+    if (terminal) {
+        // Overwrite the line in place; empty text just clears it.
+        std::fprintf(stderr, "\r\033[K%s", text.toLocal8Bit().constData());
+    } else if (!text.isEmpty()) {
+        std::fprintf(stderr, "%s\n", text.toLocal8Bit().constData());
+    }
+    std::fflush(stderr);
+}
+
+}  // namespace prisca::app::cli

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "core/Demonstration.h"
+
+#include <QCommandLineParser>
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <stdexcept>
+
+namespace prisca::app::cli {
+
+/// A bad argument or file: main() prints "prisca-cli: <command>: <message>" and exits 2.
+class UsageError : public std::runtime_error {
+  public:
+    explicit UsageError(const QString& message) : std::runtime_error(message.toStdString()) {}
+};
+
+/// The options every command shares and the parsing of its own. One per command invocation.
+class CommandLine {
+  public:
+    /// @param command      the command's name, for --help and messages
+    /// @param description  what the command does (shown by --help)
+    CommandLine(const QString& command, const QString& description);
+
+    /// Adds an option taking a value.
+    void addValue(const QString& name, const QString& description, const QString& valueName,
+                  const QString& defaultValue = {});
+    /// Adds a switch.
+    void addFlag(const QString& name, const QString& description);
+    /// Adds --format with the given choices (the first is the default).
+    void addFormat(const QStringList& choices);
+
+    /// Parses; prints help and returns false for --help; throws UsageError on bad options or
+    /// unexpected positional arguments.
+    bool parse(const QStringList& arguments);
+
+    bool isSet(const QString& name) const { return parser_.isSet(name); }
+    /// The value of a required option; UsageError naming it if missing.
+    QString required(const QString& name) const;
+    /// The value (or default) of an option.
+    QString value(const QString& name) const { return parser_.value(name); }
+    /// A number in [minimum, maximum]; UsageError naming the option and the bad text.
+    double number(const QString& name, double minimum, double maximum) const;
+    /// An integer in [minimum, maximum].
+    long long integer(const QString& name, long long minimum, long long maximum) const;
+    /// The chosen output format.
+    QString format() const { return parser_.value(QStringLiteral("format")); }
+
+  private:
+    QString command_;
+    QCommandLineParser parser_;
+    QStringList formats_;
+};
+
+/// Reads a demonstration CSV; UsageError with "file:line:column: message" if bad.
+core::Demonstration readDemonstration(const QString& path);
+/// Writes a demonstration CSV atomically; UsageError if it cannot.
+void writeDemonstration(const core::Demonstration& demonstration, const QString& path);
+
+/// Prints a JSON object on stdout (indented).
+void printJson(const QJsonObject& object);
+/// Prints text on stdout.
+void printText(const QString& text);
+/// A progress line on stderr ("\r"-updated when stderr is a terminal, one line per call
+/// otherwise). Empty text ends the line.
+void printProgress(const QString& text);
+
+}  // namespace prisca::app::cli

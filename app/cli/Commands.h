@@ -1,0 +1,13 @@
+#pragma once
+
+#include <QStringList>
+
+namespace prisca::app::cli {
+
+// One function per command, each in its own file; CommandTable lists them.
+int simulateCommand(const QStringList& arguments);
+int demoCommand(const QStringList& arguments);
+int fitCommand(const QStringList& arguments);
+int runCommand(const QStringList& arguments);
+
+}  // namespace prisca::app::cli

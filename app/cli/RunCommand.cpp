@@ -1,0 +1,269 @@
+// prisca-cli run: PRISCA or a baseline on a simulated plant, trial after trial, with a run log.
+#include "app/cli/CliSupport.h"
+#include "app/cli/Commands.h"
+#include "app/cli/TaskSetup.h"
+#include "core/RunLogCsv.h"
+#include "sim/ControllerFactory.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/MethodTraining.h"
+#include "sim/PlantCatalog.h"
+#include "sim/TrialMetrics.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace prisca::app::cli {
+
+namespace {
+
+// The training trials of PEGASUS and PD (selected) never share a seed with evaluation trials.
+constexpr std::uint64_t kTrainingStream = 0x7EA1;
+
+QJsonValue finiteOrNull(double value) {
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+}
+
+// Appends one trial's steps to the run log rows.
+void appendTrial(core::RunLog& log, int trial, const sim::EpisodeResult& result, double dt) {
+    const Eigen::Index first = log.rows.rows();
+    log.rows.conservativeResize(first + static_cast<Eigen::Index>(result.steps.size()),
+                                log.columns.size());
+    for (size_t k = 0; k < result.steps.size(); ++k) {
+        const sim::StepRecord& s = result.steps[k];
+        Eigen::RowVectorXd row(log.columns.size());
+        Eigen::Index c = 0;
+        row[c++] = trial;
+        row[c++] = k * dt;
+        for (const Eigen::VectorXd* v : {&s.state, &s.observation}) {
+            row.segment(c, v->size()) = v->transpose();
+            c += v->size();
+        }
+        row[c++] = s.referenceIndex;
+        for (const Eigen::VectorXd* v : {&s.deviation, &s.action, &s.referenceAction}) {
+            row.segment(c, v->size()) = v->transpose();
+            c += v->size();
+        }
+        row[c++] = s.cost;
+        if (s.parameters.size() > 0) {
+            row.segment(c, s.parameters.size()) = s.parameters.transpose();
+            c += s.parameters.size();
+        }
+        log.rows.row(first + static_cast<Eigen::Index>(k)) = row.head(c);
+    }
+}
+
+}  // namespace
+
+int runCommand(const QStringList& arguments) {
+    CommandLine line(QStringLiteral("run"),
+                     QStringLiteral("Run PRISCA or a baseline on a simulated plant for one or more "
+                                    "trials (learning carries over between trials) and log every "
+                                    "control step."));
+    line.addValue("plant", "Plant: " + sim::PlantCatalog::names().join(", ") + ".", "name");
+    line.addValue("demo", "Demonstration CSV to repeat.", "file");
+    line.addValue("method", "Method: " + sim::ControllerFactory::methods().join(", ") + ".",
+                  "name");
+    line.addValue("trials", "Trials in a row (warm start: PRISCA and PGSD keep learning).", "N",
+                  "1");
+    line.addValue("seed", "Seed of the trials' perturbations and sensor noise.", "N", "1");
+    line.addValue("perturbation", "Scale of the plant perturbation (0 nominal, 1 realistic).",
+                  "level", "1");
+    line.addValue("sensor", "Scale of the sensor noise (0 perfect, 1 realistic).", "level", "1");
+    line.addValue("mask", "Intuitive mapping B~ (default: the plant's), as for 'fit'.", "signs");
+    line.addValue("H", "PRISCA/PGSD smoothing horizon H [steps] (eq. 9).", "steps");
+    line.addValue("gamma", "PRISCA inverse-depreciation rate in [0, 1] (eq. 10).", "gamma");
+    line.addValue("beta", "PRISCA step-size rate beta > 0 (eq. 3).", "beta");
+    line.addValue("alpha", "PGSD fixed step size.", "alpha");
+    line.addValue("window", "Least-state-deviation search window [samples] (eq. 12).", "samples");
+    line.addValue("iterations", "PEGASUS gradient steps before evaluation.", "N");
+    line.addValue("training-trials", "Training trials for PEGASUS and PD (selected).", "N", "4");
+    line.addValue("jobs", "Worker threads for training.", "N", "2");
+    line.addValue("out", "Run log CSV.", "file");
+    line.addFormat({"text", "json"});
+    if (!line.parse(arguments)) {
+        return 0;
+    }
+    const QString plantName = line.required("plant");
+    const QString method = line.required("method");
+    if (!sim::ControllerFactory::isMethod(method)) {
+        throw UsageError(QStringLiteral("unknown method '%1' (one of: %2)")
+                             .arg(method, sim::ControllerFactory::methods().join(' ')));
+    }
+    const QString out = line.required("out");
+    Task task = loadTask(plantName, line.required("demo"), line.value("mask"));
+    sim::PlantProfile& profile = task.profile;
+    if (line.isSet("H")) {
+        profile.prisca.horizon = profile.pgsd.horizon = profile.pdHorizon =
+            static_cast<int>(line.integer("H", 1, 1000));
+    }
+    if (line.isSet("gamma")) {
+        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
+    }
+    if (line.isSet("beta")) {
+        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
+    }
+    if (line.isSet("alpha")) {
+        profile.pgsd.stepSize = line.number("alpha", 0.0, 1e6);
+    }
+    if (line.isSet("window")) {
+        profile.matchingWindow = static_cast<int>(line.integer("window", 0, 1000000));
+    }
+    const int trials = static_cast<int>(line.integer("trials", 1, 100000));
+    const auto seed =
+        static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));
+    const double perturbationLevel = line.number("perturbation", 0.0, 10.0);
+    const double sensorLevel = line.number("sensor", 0.0, 10.0);
+    const int jobs = static_cast<int>(line.integer("jobs", 1, 256));
+    const int trainingTrials = static_cast<int>(line.integer("training-trials", 1, 10000));
+
+    const core::Demonstration& demo = *task.demonstration;
+    const double demoDuration = demo.length() * demo.dt;
+    sim::EpisodeSettings episode;
+    episode.perturbation = {perturbationLevel, perturbationLevel, perturbationLevel};
+    episode.measurement = profile.measurement;
+    if (episode.measurement.noise.size() > 0) {
+        episode.measurement.noise *= sensorLevel;
+    }
+    if (sensorLevel == 0.0) {
+        episode.measurement.latencySteps = 0;
+        episode.measurement.dropProbability = 0.0;
+    }
+    episode.duration = demoDuration + profile.settleTime;
+    episode.stopAtRestAfter = profile.info.pose ? demoDuration : -1.0;
+
+    // Offline-tuned methods train first, on their own seeds.
+    Eigen::MatrixXd pegasusTheta;
+    if (method == QLatin1String("pegasus") || method == QLatin1String("pd-selected")) {
+        sim::TrainingSetup training;
+        training.plant = task.plant;
+        training.profile = profile;
+        training.demonstration = task.demonstration;
+        training.fittedB = task.fit.b;
+        training.episode = episode;
+        training.episode.recordSteps = false;
+        for (int i = 0; i < trainingTrials; ++i) {
+            training.seeds.push_back(sim::mixSeed(seed ^ kTrainingStream, i));
+        }
+        training.threads = jobs;
+        training.progress = [](const QString& text) { printProgress(text); };
+        if (method == QLatin1String("pegasus")) {
+            const int iterations = line.isSet("iterations")
+                                       ? static_cast<int>(line.integer("iterations", 0, 100000))
+                                       : profile.pegasusIterations;
+            pegasusTheta = sim::trainPegasus(training, iterations).theta;
+        } else {
+            profile.pd = sim::selectPdGains(training);
+        }
+        printProgress(QString());
+    }
+
+    auto plant = sim::PlantCatalog::create(task.plant, task.timing);
+    auto controller =
+        sim::ControllerFactory::create(method, profile, task.demonstration, task.fit.b,
+                                       pegasusTheta.size() ? &pegasusTheta : nullptr);
+    const sim::PlantInfo& info = plant->info();
+
+    core::RunLog log;
+    log.plant = task.plant;
+    log.method = method;
+    log.dt = demo.dt;
+    log.metadata.insert(QStringLiteral("seed"), QString::number(seed));
+    log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
+    log.metadata.insert(QStringLiteral("perturbation"), QString::number(perturbationLevel));
+    log.metadata.insert(QStringLiteral("sensor"), QString::number(sensorLevel));
+    log.metadata.insert(QStringLiteral("demonstration"), line.value("demo"));
+    log.columns << "trial"
+                << "t";
+    log.units << "1"
+              << "s";
+    for (const QString& prefix : {QStringLiteral(""), QStringLiteral("obs_")}) {
+        for (int i = 0; i < info.stateDimension(); ++i) {
+            log.columns << prefix + info.stateNames[i];
+            log.units << info.stateUnits[i];
+        }
+    }
+    log.columns << "ref_index";
+    log.units << "1";
+    for (int i = 0; i < info.stateDimension(); ++i) {
+        // A vehicle's pose error is in the desired pose's frame: say so in the column name.
+        QString name = info.stateNames[i];
+        if (info.pose) {
+            name = i == info.pose->x         ? QStringLiteral("lon")
+                   : i == info.pose->y       ? QStringLiteral("lat")
+                   : i == info.pose->heading ? QStringLiteral("heading")
+                                             : name;
+        }
+        log.columns << "e_" + name;
+        log.units << info.stateUnits[i];
+    }
+    for (const QString& prefix : {QStringLiteral("u_"), QStringLiteral("ustar_")}) {
+        for (int l = 0; l < info.actionDimension(); ++l) {
+            log.columns << prefix + info.actionNames[l];
+            log.units << info.actionUnits[l];
+        }
+    }
+    log.columns << "cost";
+    log.units << "1";
+    if (const Eigen::MatrixXd* theta = controller->learnedParameters()) {
+        for (Eigen::Index l = 0; l < theta->cols(); ++l) {
+            for (Eigen::Index i = 0; i < theta->rows(); ++i) {
+                log.columns << QStringLiteral("theta_%1_%2").arg(i).arg(info.actionNames[l]);
+                log.units << "1";
+            }
+        }
+    }
+
+    QJsonArray trialsJson;
+    QString text;
+    for (int trial = 0; trial < trials; ++trial) {
+        episode.seed = sim::mixSeed(seed, trial);
+        episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+        const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, episode);
+        appendTrial(log, trial, result, demo.dt);
+        const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
+        trialsJson.append(QJsonObject{
+            {"trial", trial},
+            {"duration", summary.duration},
+            {"finalPositionErrorCm", finiteOrNull(summary.finalPositionError * 100.0)},
+            {"finalHeadingErrorDeg", finiteOrNull(summary.finalHeadingError * 180.0 / M_PI)},
+            {"trackingRms", summary.trackingRms},
+            {"meanCost", summary.meanCost}});
+        if (info.pose) {
+            text += QStringLiteral(
+                        "trial %1: final position error %2 cm, heading error %3 deg, "
+                        "tracking RMS %4 m\n")
+                        .arg(trial)
+                        .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
+                        .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
+                        .arg(summary.trackingRms, 0, 'f', 3);
+        } else {
+            text += QStringLiteral("trial %1: tracking RMS %2 rad, mean cost %3\n")
+                        .arg(trial)
+                        .arg(summary.trackingRms, 0, 'f', 4)
+                        .arg(summary.meanCost, 0, 'g', 4);
+        }
+        if (trials > 1) {
+            printProgress(QStringLiteral("run: trial %1/%2").arg(trial + 1).arg(trials));
+        }
+    }
+    if (trials > 1) {
+        printProgress(QString());
+    }
+    core::FileError error;
+    if (!core::writeRunLogCsv(log, out, &error)) {
+        throw UsageError(error.toString());
+    }
+    if (line.format() == QLatin1String("json")) {
+        printJson({{"plant", task.plant},
+                   {"method", method},
+                   {"seed", static_cast<double>(seed)},
+                   {"trials", trialsJson},
+                   {"out", out}});
+    } else {
+        printText(text + QStringLiteral("wrote %1\n").arg(out));
+    }
+    return 0;
+}
+
+}  // namespace prisca::app::cli

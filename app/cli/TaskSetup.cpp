@@ -1,0 +1,68 @@
+#include "app/cli/TaskSetup.h"
+
+#include "app/cli/CliSupport.h"
+#include "sim/PlantCatalog.h"
+
+namespace prisca::app::cli {
+
+Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
+              const core::ActionMappingFitOptions& options) {
+    Task task;
+    core::Demonstration demonstration = readDemonstration(demonstrationPath);
+    task.plant = plant.isEmpty() ? demonstration.plant : plant;
+    if (!sim::PlantCatalog::contains(task.plant)) {
+        throw UsageError(
+            QStringLiteral("%1: unknown plant '%2' (one of: %3; or give --plant)")
+                .arg(demonstrationPath, task.plant, sim::PlantCatalog::names().join(' ')));
+    }
+    if (!demonstration.plant.isEmpty() && demonstration.plant != task.plant) {
+        throw UsageError(QStringLiteral("%1 was recorded on '%2', not '%3'")
+                             .arg(demonstrationPath, demonstration.plant, task.plant));
+    }
+    const sim::PlantInfo info = sim::PlantCatalog::describe(task.plant);
+    if (demonstration.stateNames != info.stateNames ||
+        demonstration.actionNames != info.actionNames) {
+        throw UsageError(
+            QStringLiteral("%1 has states (%2) and actions (%3); the %4 has (%5) and (%6)")
+                .arg(demonstrationPath, demonstration.stateNames.join(", "),
+                     demonstration.actionNames.join(", "), task.plant, info.stateNames.join(", "),
+                     info.actionNames.join(", ")));
+    }
+    if (demonstration.length() < 4) {
+        throw UsageError(QStringLiteral("%1 has %2 samples; at least 4 are needed")
+                             .arg(demonstrationPath)
+                             .arg(demonstration.length()));
+    }
+    task.timing.controlPeriod = demonstration.dt;
+    task.profile = sim::PlantProfile::forPlant(info);
+    if (!mask.isEmpty()) {
+        QString error;
+        auto parsed = core::IntuitiveMapping::parse(mask, &error);
+        if (!parsed) {
+            throw UsageError(QStringLiteral("--mask: %1").arg(error));
+        }
+        if (parsed->controls() != info.actionDimension() ||
+            parsed->states() != info.stateDimension()) {
+            throw UsageError(
+                QStringLiteral("--mask is %1 x %2; the %3 needs %4 rows (controls) of %5 "
+                               "entries (states)")
+                    .arg(parsed->controls())
+                    .arg(parsed->states())
+                    .arg(task.plant)
+                    .arg(info.actionDimension())
+                    .arg(info.stateDimension()));
+        }
+        task.profile.mapping = *parsed;
+    }
+    try {
+        task.fit = core::fitActionMapping(demonstration, task.profile.mapping,
+                                          info.deviationModel(), options);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(
+            QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
+    }
+    task.demonstration = std::make_shared<const core::Demonstration>(std::move(demonstration));
+    return task;
+}
+
+}  // namespace prisca::app::cli

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "core/ActionMapping.h"
+#include "core/Demonstration.h"
+#include "sim/Plant.h"
+#include "sim/PlantProfile.h"
+
+#include <memory>
+
+namespace prisca::app::cli {
+
+/// A demonstration checked against its plant, with the plant's profile and the fitted B.
+struct Task {
+    QString plant;                 ///< plant name
+    sim::PlantProfile profile;     ///< profile (mapping possibly from --mask)
+    sim::SimulationTiming timing;  ///< control period = the demonstration's dt
+    std::shared_ptr<const core::Demonstration> demonstration;  ///< S*, U*
+    core::ActionMappingFit fit;                                ///< B_v, B and diagnostics
+};
+
+/// Reads the demonstration, checks that it belongs to the plant (names, dimensions), applies a
+/// mask text "r0c0,...;r1c0,..." if given, and fits B_v. Throws UsageError naming what is wrong.
+Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
+              const core::ActionMappingFitOptions& options = {});
+
+}  // namespace prisca::app::cli

@@ -1,0 +1,70 @@
+#include "ControllerFactory.h"
+
+#include "core/ActionPlayback.h"
+#include "core/PdController.h"
+#include "core/PgsdController.h"
+#include "core/PriscaController.h"
+
+#include <stdexcept>
+
+namespace prisca::sim {
+
+using Mode = core::MatchingParameters::Mode;
+
+QStringList ControllerFactory::methods() {
+    return {"prisca", "pgsd",   "pegasus",  "pd",      "pd-selected",
+            "pd-h",   "pd-lsd", "pd-h-lsd", "playback"};
+}
+
+bool ControllerFactory::isMethod(const QString& method) {
+    return methods().contains(method);
+}
+
+std::unique_ptr<core::Controller> ControllerFactory::create(
+    const QString& method, const PlantProfile& profile,
+    std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
+    const Eigen::MatrixXd* theta) {
+    if (method == QLatin1String("prisca")) {
+        return std::make_unique<core::PriscaController>(
+            profile.trackingProblem(demonstration, Mode::LeastStateDeviation), profile.features,
+            fittedB, profile.prisca);
+    }
+    if (method == QLatin1String("pgsd")) {
+        return std::make_unique<core::PgsdController>(
+            profile.trackingProblem(demonstration, Mode::TimeDriven), profile.features,
+            profile.mapping, profile.pgsd);
+    }
+    if (method == QLatin1String("pegasus")) {
+        // PEGASUS learns offline, episode by episode; online it is the same linear policy
+        // around the demonstration, with theta frozen.
+        core::PriscaParameters frozen = profile.prisca;
+        frozen.learning = false;
+        auto policy = std::make_unique<core::PriscaController>(
+            profile.trackingProblem(demonstration, Mode::TimeDriven), profile.features,
+            profile.mapping.asDouble(), frozen, QStringLiteral("pegasus"));
+        if (theta) {
+            policy->setTheta(*theta);
+        }
+        return policy;
+    }
+    if (method == QLatin1String("playback")) {
+        return std::make_unique<core::ActionPlayback>(
+            profile.trackingProblem(demonstration, Mode::TimeDriven));
+    }
+    const bool smoothed = method == QLatin1String("pd-h") || method == QLatin1String("pd-h-lsd");
+    const bool lsd = method == QLatin1String("pd-lsd") || method == QLatin1String("pd-h-lsd");
+    if (method == QLatin1String("pd") || method == QLatin1String("pd-selected") || smoothed ||
+        lsd) {
+        core::PdParameters gains = profile.pd;
+        gains.horizon = smoothed ? profile.pdHorizon : 0;
+        return std::make_unique<core::PdController>(
+            profile.trackingProblem(demonstration,
+                                    lsd ? Mode::LeastStateDeviation : Mode::TimeDriven),
+            gains, method);
+    }
+    throw std::invalid_argument(QStringLiteral("unknown method '%1' (one of: %2)")
+                                    .arg(method, methods().join(QLatin1Char(' ')))
+                                    .toStdString());
+}
+
+}  // namespace prisca::sim

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "MeasurementModel.h"
+#include "Plant.h"
+#include "core/Controller.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <vector>
+
+namespace prisca::sim {
+
+/// How one closed-loop trial is run.
+struct EpisodeSettings {
+    std::uint64_t seed = 1;             ///< draws the plant perturbation and the sensor noise
+    Perturbation perturbation;          ///< plant perturbation
+    MeasurementParameters measurement;  ///< the sensor between plant and controller
+    double duration = 10.0;             ///< longest trial [s]
+    /// End early once the plant is at rest and at least this much time has passed [s]
+    /// (negative: never end early).
+    double stopAtRestAfter = -1.0;
+    core::ResetMode resetMode = core::ResetMode::Cold;  ///< how the controller starts the trial
+    bool recordSteps = true;                            ///< keep a StepRecord per control step
+};
+
+/// One control step of a trial.
+struct StepRecord {
+    double time = 0.0;                ///< t_k [s]
+    Eigen::VectorXd state;            ///< true state s_k
+    Eigen::VectorXd observation;      ///< what the controller saw
+    int referenceIndex = 0;           ///< matched demonstration sample j_k
+    Eigen::VectorXd deviation;        ///< e_k as the controller formed it
+    Eigen::VectorXd action;           ///< u_k applied over [t_k, t_k + dt)
+    Eigen::VectorXd referenceAction;  ///< u*_{j_k}
+    double cost = 0.0;                ///< C_k
+    Eigen::VectorXd parameters;       ///< theta flattened column by column (empty if none)
+};
+
+/// What a trial produced.
+struct EpisodeResult {
+    std::vector<StepRecord> steps;  ///< per step, if recorded
+    Eigen::VectorXd finalState;     ///< true state at the end
+    double duration = 0.0;          ///< simulated time [s]
+    int stepCount = 0;              ///< control steps taken
+    double meanCost = 0.0;          ///< mean of C_k over the steps
+    bool cancelled = false;         ///< stopped by the cancel predicate
+};
+
+/// Runs one trial: reset plant (seed, perturbation) and controller, then at every control step
+/// measure -> control -> step the plant, until the duration (or rest) is reached. The result is a
+/// pure function of the arguments: the same seed gives the same trial bit for bit.
+/// `cancelled` is polled every step (any thread may flip what it reads).
+EpisodeResult runEpisode(Plant& plant, core::Controller& controller,
+                         const EpisodeSettings& settings,
+                         const std::function<bool()>& cancelled = {});
+
+}  // namespace prisca::sim

@@ -1,0 +1,103 @@
+#include "MethodTraining.h"
+
+#include "ControllerFactory.h"
+#include "ParallelTrials.h"
+#include "PlantCatalog.h"
+#include "TrialMetrics.h"
+#include "core/Pegasus.h"
+#include "core/PriscaController.h"
+
+#include <limits>
+
+namespace prisca::sim {
+
+core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<double>& kpScales,
+                                 const std::vector<double>& kdScales) {
+    struct Candidate {
+        double kp, kd;
+    };
+    std::vector<Candidate> grid;
+    for (double kp : kpScales) {
+        for (double kd : kdScales) {
+            grid.push_back({kp, kd});
+        }
+    }
+    const int seeds = static_cast<int>(setup.seeds.size());
+    // One job per (candidate, seed) so both cores stay busy on small grids.
+    const std::function<double(int)> job = [&](int index) {
+        const Candidate& c = grid[index / seeds];
+        PlantProfile profile = setup.profile;
+        profile.pd.kp *= c.kp;
+        profile.pd.kd *= c.kd;
+        auto plant = PlantCatalog::create(setup.plant);
+        auto controller = ControllerFactory::create(QStringLiteral("pd"), profile,
+                                                    setup.demonstration, setup.fittedB);
+        EpisodeSettings episode = setup.episode;
+        episode.seed = setup.seeds[index % seeds];
+        const EpisodeResult result = runEpisode(*plant, *controller, episode, setup.cancelled);
+        return tuningScore(plant->info(),
+                           summarizeTrial(plant->info(), *setup.demonstration, result));
+    };
+    const std::vector<double> scores = runParallel<double>(
+        static_cast<int>(grid.size()) * seeds, setup.threads, job, setup.cancelled,
+        [&](int done, int total) {
+            // About ten lines in all, however large the grid.
+            if (setup.progress && (done == total || done * 10 / total != (done - 1) * 10 / total)) {
+                setup.progress(QStringLiteral("pd-selected: grid %1/%2").arg(done).arg(total));
+            }
+        });
+    double best = std::numeric_limits<double>::infinity();
+    Candidate chosen{1.0, 1.0};
+    for (size_t g = 0; g < grid.size(); ++g) {
+        double mean = 0.0;
+        for (int s = 0; s < seeds; ++s) {
+            mean += scores[g * seeds + s] / seeds;
+        }
+        if (mean < best) {
+            best = mean;
+            chosen = grid[g];
+        }
+    }
+    core::PdParameters gains = setup.profile.pd;
+    gains.kp *= chosen.kp;
+    gains.kd *= chosen.kd;
+    return gains;
+}
+
+PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations) {
+    const int scenarios = static_cast<int>(setup.seeds.size());
+    auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
+        auto plant = PlantCatalog::create(setup.plant);
+        auto policy = ControllerFactory::create(QStringLiteral("pegasus"), setup.profile,
+                                                setup.demonstration, setup.fittedB, &theta);
+        EpisodeSettings episode = setup.episode;
+        episode.seed = setup.seeds[scenario];
+        episode.recordSteps = false;
+        const EpisodeResult result = runEpisode(*plant, *policy, episode, setup.cancelled);
+        return core::EpisodeOutcome{result.meanCost, result.stepCount};
+    };
+    core::PegasusParameters parameters = setup.profile.pegasus;
+    parameters.scenarios = scenarios;
+    const Eigen::MatrixXd start = Eigen::MatrixXd::Zero(setup.profile.features.featureCount(),
+                                                        setup.profile.features.channelCount());
+    core::Pegasus pegasus(rollout, start, parameters);
+    PegasusTraining training;
+    for (int i = 0; i < iterations; ++i) {
+        const auto iteration = pegasus.iterate(setup.cancelled);
+        if (!iteration) {
+            break;
+        }
+        training.costs.push_back(iteration->cost);
+        training.steps.push_back(iteration->stepsConsumed);
+        if (setup.progress) {
+            setup.progress(QStringLiteral("pegasus: iteration %1/%2, cost %3")
+                               .arg(i + 1)
+                               .arg(iterations)
+                               .arg(iteration->cost, 0, 'g', 4));
+        }
+    }
+    training.theta = pegasus.theta();
+    return training;
+}
+
+}  // namespace prisca::sim

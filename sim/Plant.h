@@ -1,0 +1,88 @@
+#pragma once
+
+#include "core/DeviationModel.h"
+
+#include <Eigen/Core>
+
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace prisca::sim {
+
+/// The clocks of a simulation. No wall clock is ever read inside sim.
+struct SimulationTiming {
+    double controlPeriod = 0.025;  ///< one control step [s] (40 Hz)
+    int physicsSubsteps = 10;      ///< physics steps per control period, >= 1 (400 Hz)
+
+    /// The physics step [s].
+    double physicsStep() const { return controlPeriod / physicsSubsteps; }
+};
+
+/// How far a trial departs from the nominal plant. Each field scales the plant's own
+/// "realistic lab" level (documented by each plant): 0 is the nominal plant, 1 the realistic
+/// level, 2 twice that. Everything drawn from it comes from the trial seed.
+struct Perturbation {
+    double initialState = 0.0;   ///< initial pose / state offsets
+    double parameters = 0.0;     ///< parameter variation (friction, gains, trim, wind, ...)
+    double actuatorNoise = 0.0;  ///< per-step noise on the applied action
+
+    static Perturbation none() { return {}; }
+    static Perturbation realistic() { return {1.0, 1.0, 1.0}; }
+};
+
+/// What a plant is: names and units of its state and action, limits, and how its tracking
+/// error is formed. Plain data.
+struct PlantInfo {
+    QString name;                                 ///< "slidecar", "acrobot" or "aircraft"
+    QString description;                          ///< one line for the operator
+    QStringList stateNames;                       ///< n names
+    QStringList stateUnits;                       ///< n units
+    QStringList actionNames;                      ///< m names
+    QStringList actionUnits;                      ///< m units
+    Eigen::VectorXd actionLower;                  ///< m lower limits
+    Eigen::VectorXd actionUpper;                  ///< m upper limits
+    std::vector<int> angleIndices;                ///< state components that are angles
+    std::optional<core::PlanarPoseIndices> pose;  ///< planar vehicles: x, y, heading
+
+    int stateDimension() const { return static_cast<int>(stateNames.size()); }
+    int actionDimension() const { return static_cast<int>(actionNames.size()); }
+    /// The tracking-error model of this plant (body frame for vehicles, wrapped angles).
+    core::DeviationModel deviationModel() const;
+};
+
+/// One simulated robot (OMPL-style narrow interface). Built on Box2D; SI units inside.
+/// A Plant is single-threaded: one instance per trial. It never draws and never emits signals.
+class Plant {
+  public:
+    virtual ~Plant() = default;
+
+    virtual const PlantInfo& info() const = 0;
+    virtual const SimulationTiming& timing() const = 0;
+
+    /// Starts a new trial from the plant's nominal start, with perturbations, initial offsets and
+    /// noise streams drawn from the seed. Returns the state.
+    virtual Eigen::VectorXd reset(std::uint64_t seed, const Perturbation& perturbation) = 0;
+    /// Starts from exactly this state (size n) with nominal parameters and no noise.
+    /// Throws std::invalid_argument for a wrong size or a non-finite value.
+    virtual Eigen::VectorXd resetTo(const Eigen::VectorXd& state) = 0;
+    /// Applies the action (size m; clamped to the limits, then perturbed as the trial says) for
+    /// one control period. Returns the new state. Throws std::invalid_argument on a wrong size.
+    virtual Eigen::VectorXd step(const Eigen::VectorXd& action) = 0;
+
+    /// The current state (size n).
+    virtual Eigen::VectorXd state() const = 0;
+    /// Simulated time since the last reset [s].
+    virtual double time() const = 0;
+    /// True once the plant is at rest (vehicles: speed and yaw rate below small thresholds).
+    virtual bool atRest() const { return false; }
+};
+
+/// A well-mixed 64-bit seed for stream `stream` of trial seed `seed` (splitmix64), so that
+/// neighbouring seeds give unrelated random streams.
+std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t stream);
+
+}  // namespace prisca::sim

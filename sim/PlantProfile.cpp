@@ -1,0 +1,158 @@
+#include "PlantProfile.h"
+
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+using core::FeatureTerm;
+using Source = core::FeatureTerm::Source;
+
+core::IntuitiveMapping signs(const char* text) {
+    QString error;
+    auto mapping = core::IntuitiveMapping::parse(QString::fromLatin1(text), &error);
+    if (!mapping) {
+        throw std::logic_error(error.toStdString());
+    }
+    return *mapping;
+}
+
+Eigen::VectorXd vector(std::initializer_list<double> values) {
+    Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
+    Eigen::Index i = 0;
+    for (double x : values) {
+        v[i++] = x;
+    }
+    return v;
+}
+
+// Slide-car: e = (longitudinal, lateral, heading, vx, vy, r) in the desired pose's frame.
+// "More throttle, more speed and further along"; "steer left, move and turn left".
+PlantProfile slideCar(const PlantInfo& info) {
+    PlantProfile p;
+    p.info = info;
+    p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
+    p.features = core::FeatureMap({
+        {{Source::Deviation, 0, 1.0}, {Source::Deviation, 3, 0.3}, {Source::Constant, 0, 0.1}},
+        {{Source::Deviation, 1, 1.0}, {Source::Deviation, 2, 0.3}, {Source::Constant, 0, 0.1}},
+    });
+    p.matchingWeights = vector({1.0, 1.0, 0.3, 0.2, 0.2, 0.05});
+    p.matchingWindow = 40;
+    p.costWeights = vector({1.0, 1.0, 0.3, 0.1, 0.1, 0.02});
+    // A ceiling camera at 40 Hz: millimetre-level pose noise, velocities from differences.
+    p.measurement.noise = vector({0.005, 0.005, 0.01, 0.03, 0.03, 0.05});
+    p.measurement.latencySteps = 1;
+    p.measurement.dropProbability = 0.02;
+    p.settleTime = 2.0;
+    p.prisca.horizon = 10;
+    p.prisca.stepSize.beta = 2000.0;
+    p.pgsd.horizon = 10;
+    p.pgsd.stepSize = 1.0;
+    p.pd.errorCombination = (Eigen::MatrixXd(2, 6) << 1.0, 0, 0, 0.3, 0, 0,  //
+                             0, 1.0, 0.5, 0, 0, 0.1)
+                                .finished();
+    p.pd.kp = vector({1.0, 2.0});
+    p.pd.kd = vector({0.05, 0.1});
+    p.pegasus.scenarios = 4;
+    p.pegasus.stepSize = 0.5;
+    p.pegasus.perturbation = 0.05;
+    p.pegasus.maxStepNorm = 0.5;
+    return p;
+}
+
+// Acrobot: e = joint angle and rate errors; each torque drives its own joint (paper V.A).
+PlantProfile acrobot(const PlantInfo& info) {
+    PlantProfile p;
+    p.info = info;
+    p.mapping = signs("1,0,1,0;0,1,0,1");
+    p.features = core::FeatureMap({
+        {{Source::Deviation, 0, 1.0}, {Source::Deviation, 2, 1.0}},
+        {{Source::Deviation, 1, 1.0}, {Source::Deviation, 3, 1.0}},
+    });
+    p.matchingWeights = vector({1.0, 1.0, 0.1, 0.1});
+    p.matchingWindow = 20;
+    p.costWeights = vector({1.0, 1.0, 0.1, 0.1});
+    // Joint encoders: small noise, no latency.
+    p.measurement.noise = vector({0.002, 0.002, 0.02, 0.02});
+    p.settleTime = 0.0;
+    p.prisca.horizon = 10;
+    p.prisca.stepSize.beta = 2000.0;
+    p.pgsd.horizon = 10;
+    p.pgsd.stepSize = 1.0;
+    p.pd.errorCombination = (Eigen::MatrixXd(2, 4) << 1.0, 0, 0.2, 0,  //
+                             0, 1.0, 0, 0.2)
+                                .finished();
+    p.pd.kp = vector({20.0, 20.0});
+    p.pd.kd = vector({0.0, 0.0});
+    p.pegasus.scenarios = 4;
+    p.pegasus.stepSize = 20.0;
+    p.pegasus.perturbation = 0.5;
+    p.pegasus.maxStepNorm = 5.0;
+    return p;
+}
+
+// Planar aircraft: rudder left turns left; throttle speeds up (paper V.B, Fig. 4, 5).
+PlantProfile aircraft(const PlantInfo& info) {
+    PlantProfile p;
+    p.info = info;
+    p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
+    p.features = core::FeatureMap({
+        {{Source::Deviation, 0, 1.0}, {Source::Deviation, 3, 1.0}},
+        {{Source::Deviation, 1, 1.0}, {Source::Deviation, 2, 10.0}},
+    });
+    p.matchingWeights = vector({1.0, 1.0, 10.0, 0.5, 0.5, 1.0});
+    p.matchingWindow = 40;
+    p.costWeights = vector({1.0, 1.0, 10.0, 0.1, 0.1, 1.0});
+    // A GPS-and-compass autopilot sensor: metre-level position noise, 50 ms late.
+    p.measurement.noise = vector({0.5, 0.5, 0.02, 0.2, 0.2, 0.02});
+    p.measurement.latencySteps = 2;
+    p.settleTime = 0.0;
+    p.prisca.horizon = 10;
+    p.prisca.stepSize.beta = 2000.0;
+    p.pgsd.horizon = 10;
+    p.pgsd.stepSize = 0.01;
+    p.pd.errorCombination = (Eigen::MatrixXd(2, 6) << 0.1, 0, 0, 1.0, 0, 0,  //
+                             0, 0.05, 1.0, 0, 0, 0.3)
+                                .finished();
+    p.pd.kp = vector({0.2, 1.0});
+    p.pd.kd = vector({0.0, 0.1});
+    p.pegasus.scenarios = 4;
+    p.pegasus.stepSize = 1e-3;
+    p.pegasus.perturbation = 0.01;
+    p.pegasus.maxStepNorm = 0.1;
+    return p;
+}
+
+}  // namespace
+
+PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
+    if (info.name == QLatin1String("slidecar")) {
+        return slideCar(info);
+    }
+    if (info.name == QLatin1String("acrobot")) {
+        return acrobot(info);
+    }
+    if (info.name == QLatin1String("aircraft")) {
+        return aircraft(info);
+    }
+    throw std::invalid_argument(
+        QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
+}
+
+core::TrackingProblem PlantProfile::trackingProblem(
+    std::shared_ptr<const core::Demonstration> demonstration,
+    core::MatchingParameters::Mode mode) const {
+    core::TrackingProblem problem;
+    problem.demonstration = std::move(demonstration);
+    problem.deviation = info.deviationModel();
+    problem.matching.mode = mode;
+    problem.matching.window = matchingWindow;
+    problem.matching.weights = matchingWeights;
+    problem.matching.angleIndices = info.angleIndices;
+    problem.costWeights = costWeights;
+    problem.limits = core::ActionLimits{info.actionLower, info.actionUpper};
+    return problem;
+}
+
+}  // namespace prisca::sim

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "MeasurementModel.h"
+#include "Plant.h"
+#include "core/ActionMapping.h"
+#include "core/FeatureMap.h"
+#include "core/PdController.h"
+#include "core/Pegasus.h"
+#include "core/PgsdController.h"
+#include "core/PriscaController.h"
+
+#include <Eigen/Core>
+
+namespace prisca::sim {
+
+/// How each method is set up on one plant: the intuitive mapping B~, the features, the
+/// matching and cost weights, a camera-like measurement model, and every method's default
+/// tuning. The app, the CLI and the experiments all start from here, so the baselines share
+/// the plant, features and limits with PRISCA (DESIGN.md "Baselines"). Plain data.
+struct PlantProfile {
+    PlantInfo info;                     ///< the plant
+    core::IntuitiveMapping mapping;     ///< B~ (m x n signs)
+    core::FeatureMap features;          ///< phi_l per channel
+    Eigen::VectorXd matchingWeights;    ///< L1 weights of the least-state-deviation match (n)
+    int matchingWindow = 40;            ///< forward search window [samples]
+    Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
+    MeasurementParameters measurement;  ///< the sensor at "realistic" level
+    double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
+    core::PriscaParameters prisca;      ///< PRISCA defaults
+    core::PgsdParameters pgsd;          ///< PGSD defaults
+    core::PdParameters pd;              ///< PD gains (error combination, Kp, Kd; horizon 0)
+    int pdHorizon = 10;                 ///< H for PD+H and PD+H+LSD [steps]
+    core::PegasusParameters pegasus;    ///< PEGASUS defaults
+    int pegasusIterations = 10;         ///< gradient steps PEGASUS takes before it is evaluated
+
+    /// The profile of a plant by its info (name "slidecar", "acrobot" or "aircraft").
+    /// Throws std::invalid_argument for an unknown plant.
+    static PlantProfile forPlant(const PlantInfo& info);
+    /// The tracking problem for a demonstration of this plant (deviation, matching, weights,
+    /// limits); mode chooses least-state-deviation or time-driven matching.
+    core::TrackingProblem trackingProblem(std::shared_ptr<const core::Demonstration> demonstration,
+                                          core::MatchingParameters::Mode mode) const;
+};
+
+}  // namespace prisca::sim

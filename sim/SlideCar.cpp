@@ -1,0 +1,286 @@
+#include "SlideCar.h"
+
+#include <box2d/box2d.h>
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+Eigen::Vector2d toEigen(const b2Vec2& v) {
+    return {v.x, v.y};
+}
+
+b2Vec2 toBox2d(const Eigen::Vector2d& v) {
+    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
+}
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+int delaySteps(double delay, const SimulationTiming& timing) {
+    return std::max(0, static_cast<int>(std::lround(delay / timing.physicsStep())));
+}
+
+}  // namespace
+
+PlantInfo SlideCar::describe() {
+    PlantInfo info;
+    info.name = QStringLiteral("slidecar");
+    info.description = QStringLiteral("Brakeless 4x4 1:10 RC car sliding on a flat floor");
+    info.stateNames = {"x", "y", "psi", "vx", "vy", "r"};
+    info.stateUnits = {"m", "m", "rad", "m/s", "m/s", "rad/s"};
+    info.actionNames = {"throttle", "steering"};
+    info.actionUnits = {"1", "1"};
+    info.actionLower = Eigen::Vector2d(-1.0, -1.0);
+    info.actionUpper = Eigen::Vector2d(1.0, 1.0);
+    info.angleIndices = {2};
+    info.pose = core::PlanarPoseIndices{0, 1, 2};
+    return info;
+}
+
+SlideCar::SlideCar(SlideCarParameters parameters, SimulationTiming timing)
+    : parameters_(parameters), timing_(timing), info_(describe()) {
+    if (timing_.controlPeriod <= 0.0 || timing_.physicsSubsteps < 1) {
+        throw std::invalid_argument("SlideCar: control period > 0 and >= 1 physics substep needed");
+    }
+    build(0, 0, 0, 0, 0, 0);
+}
+
+SlideCar::~SlideCar() = default;
+
+void SlideCar::build(double x, double y, double psi, double vx, double vy, double r) {
+    // A fresh world per trial: nothing of the previous trial (contacts, sleep state) survives.
+    world_ = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(static_cast<float>(x), static_cast<float>(y));
+    def.angle = static_cast<float>(psi);
+    def.allowSleep = false;
+    def.bullet = false;
+    body_ = world_->CreateBody(&def);
+    b2PolygonShape box;
+    box.SetAsBox(static_cast<float>(parameters_.length / 2),
+                 static_cast<float>(parameters_.width / 2));
+    b2FixtureDef fixture;
+    fixture.shape = &box;
+    fixture.density = 1.0f;
+    body_->CreateFixture(&fixture);
+    b2MassData mass;
+    mass.mass = static_cast<float>(parameters_.mass);
+    mass.center.SetZero();
+    const double inertia = parameters_.yawInertia > 0.0
+                               ? parameters_.yawInertia
+                               : parameters_.mass *
+                                     (parameters_.length * parameters_.length +
+                                      parameters_.width * parameters_.width) /
+                                     12.0;
+    mass.I = static_cast<float>(inertia);
+    body_->SetMassData(&mass);
+    const Eigen::Vector2d forward(std::cos(psi), std::sin(psi));
+    const Eigen::Vector2d left(-std::sin(psi), std::cos(psi));
+    body_->SetLinearVelocity(toBox2d(vx * forward + vy * left));
+    body_->SetAngularVelocity(static_cast<float>(r));
+    time_ = 0.0;
+    steeringAngle_ = 0.0;
+    longitudinalAcceleration_ = 0.0;
+    sliding_ = {false, false};
+    throttleQueue_.assign(delaySteps(parameters_.throttleDelay, timing_), 0.0);
+    steeringQueue_.assign(delaySteps(parameters_.servoDelay, timing_), 0.0);
+}
+
+Eigen::VectorXd SlideCar::reset(std::uint64_t seed, const Perturbation& perturbation) {
+    std::mt19937_64 draw(mixSeed(seed, 0));
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const double s0 = perturbation.initialState;
+    const double x = 0.03 * s0 * normal(draw);
+    const double y = 0.03 * s0 * normal(draw);
+    const double psi = 0.0349 * s0 * normal(draw);
+    const double sp = perturbation.parameters;
+    // Clamped so that a wild draw at a large level still leaves a drivable car.
+    frictionScale_ = std::clamp(1.0 + 0.10 * sp * normal(draw), 0.5, 1.5);
+    throttleGain_ = std::clamp(1.0 + 0.08 * sp * normal(draw), 0.5, 1.5);
+    steeringTrim_ = std::clamp(0.03 * sp * normal(draw), -0.3, 0.3);
+    actuatorNoise_ = 0.02 * perturbation.actuatorNoise;
+    noise_.seed(mixSeed(seed, 1));
+    build(x, y, psi, 0, 0, 0);
+    return state();
+}
+
+Eigen::VectorXd SlideCar::resetTo(const Eigen::VectorXd& s) {
+    if (s.size() != 6 || !s.allFinite()) {
+        throw std::invalid_argument(
+            "SlideCar::resetTo: the state needs 6 finite values "
+            "(x, y, psi, vx, vy, r)");
+    }
+    frictionScale_ = 1.0;
+    throttleGain_ = 1.0;
+    steeringTrim_ = 0.0;
+    actuatorNoise_ = 0.0;
+    build(s[0], s[1], s[2], s[3], s[4], s[5]);
+    return state();
+}
+
+Eigen::VectorXd SlideCar::state() const {
+    const double psi = body_->GetAngle();
+    const Eigen::Vector2d v = toEigen(body_->GetLinearVelocity());
+    const Eigen::Vector2d forward(std::cos(psi), std::sin(psi));
+    const Eigen::Vector2d left(-std::sin(psi), std::cos(psi));
+    Eigen::VectorXd s(6);
+    s << body_->GetPosition().x, body_->GetPosition().y, psi, v.dot(forward), v.dot(left),
+        body_->GetAngularVelocity();
+    return s;
+}
+
+bool SlideCar::atRest() const {
+    return toEigen(body_->GetLinearVelocity()).norm() < parameters_.restSpeed &&
+           std::abs(body_->GetAngularVelocity()) < parameters_.restYawRate;
+}
+
+Eigen::VectorXd SlideCar::step(const Eigen::VectorXd& action) {
+    if (action.size() != 2) {
+        throw std::invalid_argument(
+            "SlideCar::step: the action needs 2 values (throttle, steering)");
+    }
+    double throttle = std::clamp(action[0], -1.0, 1.0);
+    double steering = std::clamp(action[1], -1.0, 1.0);
+    if (!std::isfinite(throttle) || !std::isfinite(steering)) {
+        // A broken command must never move the car: neutral throttle, centred steering.
+        throttle = 0.0;
+        steering = 0.0;
+    }
+    if (actuatorNoise_ > 0.0) {
+        std::normal_distribution<double> normal(0.0, actuatorNoise_);
+        throttle = std::clamp(throttle + normal(noise_), -1.0, 1.0);
+        steering = std::clamp(steering + normal(noise_), -1.0, 1.0);
+    }
+    for (int i = 0; i < timing_.physicsSubsteps; ++i) {
+        physicsStep(throttle, steering);
+    }
+    return state();
+}
+
+void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
+    const SlideCarParameters& p = parameters_;
+    const double h = timing_.physicsStep();
+
+    // Dead times: the command applied now is the one queued delay steps ago.
+    throttleQueue_.push_back(throttleCommand);
+    steeringQueue_.push_back(steeringCommand);
+    const double throttle = std::clamp(throttleQueue_.front() * throttleGain_, -1.0, 1.0);
+    const double steering = std::clamp(steeringQueue_.front() + steeringTrim_, -1.0, 1.0);
+    throttleQueue_.pop_front();
+    steeringQueue_.pop_front();
+
+    // Servo: the wheel angle slews towards its target.
+    const double target = steering * p.maxSteeringAngle;
+    const double maxChange = p.servoRate * h;
+    steeringAngle_ += std::clamp(target - steeringAngle_, -maxChange, maxChange);
+
+    const double psi = body_->GetAngle();
+    const Eigen::Vector2d v = toEigen(body_->GetLinearVelocity());
+    const double omega = body_->GetAngularVelocity();
+    const double mass = p.mass;
+    const double inertia = body_->GetInertia();
+    const Eigen::Vector2d carForward(std::cos(psi), std::sin(psi));
+    const Eigen::Vector2d carLeft(-std::sin(psi), std::cos(psi));
+
+    // Axle geometry: 0 front (steered), 1 rear.
+    std::array<Eigen::Vector2d, 2> arm = {carForward * (p.wheelbase / 2),
+                                          -carForward * (p.wheelbase / 2)};
+    std::array<Eigen::Vector2d, 2> forward;
+    std::array<Eigen::Vector2d, 2> lateral;
+    forward[0] = Eigen::Vector2d(std::cos(psi + steeringAngle_), std::sin(psi + steeringAngle_));
+    lateral[0] = Eigen::Vector2d(-forward[0].y(), forward[0].x());
+    forward[1] = carForward;
+    lateral[1] = carLeft;
+
+    // Normal loads with longitudinal load transfer (accelerating unloads the front).
+    const double transfer = mass * longitudinalAcceleration_ * p.cgHeight / p.wheelbase;
+    std::array<double, 2> load;
+    load[0] = std::max(0.0, mass * p.gravity / 2 - transfer);
+    load[1] = std::max(0.0, mass * p.gravity / 2 + transfer);
+
+    // Longitudinal forces per axle: the motor (half the traction each) and rolling losses.
+    std::array<double, 2> longitudinal{};
+    std::array<Eigen::Vector2d, 2> contactVelocity;
+    for (int a = 0; a < 2; ++a) {
+        contactVelocity[a] = v + omega * Eigen::Vector2d(-arm[a].y(), arm[a].x());
+        const double rolling = contactVelocity[a].dot(forward[a]);
+        // An ESC without brake: the motor pushes towards throttle * top speed and freewheels
+        // rather than ever braking.
+        const double drive = throttle - rolling / p.topSpeed;
+        const double motor =
+            throttle >= 0.0 ? std::clamp(drive, 0.0, throttle) : std::clamp(drive, throttle, 0.0);
+        longitudinal[a] = 0.5 * p.maxDriveForce * motor -
+                          p.rollingResistance * load[a] * std::tanh(rolling / 0.05) -
+                          0.5 * p.drivelineDrag * rolling;
+    }
+
+    // Lateral impulses that would stop both axles slipping sideways this step (2 x 2 solve).
+    auto response =
+        [&](int a, int b) {  // velocity change along lateral[a] per unit impulse along lateral[b]
+            return lateral[a].dot(lateral[b]) / mass +
+                   cross(arm[a], lateral[a]) * cross(arm[b], lateral[b]) / inertia;
+        };
+    Eigen::Matrix2d K;
+    K << response(0, 0), response(0, 1), response(1, 0), response(1, 1);
+    const Eigen::Vector2d slip(contactVelocity[0].dot(lateral[0]),
+                               contactVelocity[1].dot(lateral[1]));
+    Eigen::Vector2d impulse = K.fullPivLu().solve(-slip);
+
+    // Friction circle per axle with stick-slip. Returns whether the axle is at its limit.
+    std::array<double, 2> lateralForce{};
+    auto limit = [&](int a, double wanted) {
+        const double demand = std::hypot(longitudinal[a], wanted);
+        const double grip = frictionScale_ * load[a] * (a == 1 ? p.rearGripRatio : 1.0);
+        const double muS = p.staticFriction * grip;
+        const double muK = p.kineticFriction * grip;
+        if (!sliding_[a] && demand > muS) {
+            sliding_[a] = true;
+        } else if (sliding_[a] && demand <= muK) {
+            sliding_[a] = false;
+        }
+        if (sliding_[a]) {
+            // A sliding tyre: the motor or rolling force takes its share of mu_k N first (a
+            // spinning or dragged wheel loses its side grip), and the rest opposes the axle's
+            // own sideways slip.
+            longitudinal[a] = std::clamp(longitudinal[a], -muK, muK);
+            const double side =
+                std::sqrt(std::max(0.0, muK * muK - longitudinal[a] * longitudinal[a]));
+            lateralForce[a] = slip[a] > 0.0 ? -side : (slip[a] < 0.0 ? side : 0.0);
+            return true;
+        }
+        lateralForce[a] = wanted;
+        return false;
+    };
+    const bool frontLimited = limit(0, impulse[0] / h);
+    const bool rearLimited = limit(1, impulse[1] / h);
+    if (frontLimited != rearLimited) {
+        // One axle slides: hold it at its limit and re-solve the other, so the pair stays
+        // consistent (the gripping axle must also stop what the sliding one no longer does).
+        const int fixed = frontLimited ? 0 : 1;
+        const int free = 1 - fixed;
+        const double fixedImpulse = lateralForce[fixed] * h;
+        limit(free, (-slip[free] - K(free, fixed) * fixedImpulse) / K(free, free) / h);
+    }
+
+    Eigen::Vector2d total = Eigen::Vector2d::Zero();
+    for (int a = 0; a < 2; ++a) {
+        const Eigen::Vector2d force = longitudinal[a] * forward[a] + lateralForce[a] * lateral[a];
+        total += force;
+        const Eigen::Vector2d point = toEigen(body_->GetPosition()) + arm[a];
+        body_->ApplyForce(toBox2d(force), toBox2d(point), true);
+    }
+    longitudinalAcceleration_ = total.dot(carForward) / mass;
+    world_->Step(static_cast<float>(h), 8, 3);
+    time_ += h;
+}
+
+}  // namespace prisca::sim

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "EpisodeRunner.h"
+#include "Plant.h"
+#include "core/Demonstration.h"
+
+#include <Eigen/Core>
+
+namespace prisca::sim {
+
+/// How well one trial repeated the demonstration. NaN where a metric does not apply.
+struct TrialSummary {
+    double finalPositionError = 0.0;  ///< |p_end - p_lot| [m] (planar vehicles)
+    double finalHeadingError = 0.0;   ///< |wrap(psi_end - psi_lot)| [rad] (planar vehicles)
+    double trackingRms = 0.0;         ///< RMS over time of the tracked error (see trackedError)
+    double meanCost = 0.0;            ///< mean C_k the controller saw
+    double duration = 0.0;            ///< simulated time [s]
+};
+
+/// The error that "tracking error" means for a plant at step k, against the demonstration
+/// sample of the same time (the last one past its end): the position error [m] for planar
+/// vehicles, the joint-angle error norm [rad] otherwise (the paper's Fig. 3b uses its square).
+double trackedError(const PlantInfo& info, const core::Demonstration& demonstration,
+                    const Eigen::VectorXd& state, int step);
+
+/// Summary of a trial against the demonstration (the lot is its final pose).
+/// The result must have its steps recorded for trackingRms (else it is NaN).
+TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
+                            const EpisodeResult& result);
+
+/// A single number to minimise when tuning on training seeds: the final position error for
+/// planar vehicles (what Table I ranks), the tracking RMS otherwise.
+double tuningScore(const PlantInfo& info, const TrialSummary& summary);
+
+}  // namespace prisca::sim

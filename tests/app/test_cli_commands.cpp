@@ -1,0 +1,357 @@
+// prisca-cli simulate, demo, fit and run end to end on real files, and every bad-input path:
+// one line on stderr naming the problem, exit code 2, nothing written.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct CliResult {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+CliResult runCli(const QStringList& arguments, const QString& directory) {
+    QProcess process;
+    process.setWorkingDirectory(directory);
+    process.start(QStringLiteral(PRISCA_CLI), arguments);
+    CliResult result;
+    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit) {
+        result.err = QStringLiteral("did not finish: ") + process.errorString();
+        return result;
+    }
+    result.exitCode = process.exitCode();
+    result.out = QString::fromLocal8Bit(process.readAllStandardOutput());
+    result.err = QString::fromLocal8Bit(process.readAllStandardError());
+    return result;
+}
+
+QJsonObject parseJson(const QString& text) {
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(text.toUtf8(), &error);
+    if (error.error != QJsonParseError::NoError || !document.isObject()) {
+        qWarning("not JSON: %s\n%s", qPrintable(error.errorString()), qPrintable(text));
+        return {};
+    }
+    return document.object();
+}
+
+void writeFile(const QString& path, const QByteArray& content) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(content);
+}
+
+// The last data row of a CSV written by the CLI, as numbers.
+QList<double> lastRow(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return {};
+    }
+    const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+    QList<double> values;
+    for (const QByteArray& field : lines.last().split(',')) {
+        values << field.toDouble();
+    }
+    return values;
+}
+
+}  // namespace
+
+class TestCliCommands : public QObject {
+    Q_OBJECT
+  private:
+    QTemporaryDir dir_;
+    QString path(const QString& name) const { return dir_.filePath(name); }
+    CliResult cli(const QStringList& arguments) const { return runCli(arguments, dir_.path()); }
+
+  private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        const CliResult demo =
+            cli({"demo", "--plant", "slidecar", "--seed", "2", "--out", "car.csv"});
+        QCOMPARE(demo.exitCode, 0);
+        QVERIFY(QFile::exists(path("car.csv")));
+    }
+
+    void demo_writesADemonstrationForEveryPlant_data() {
+        QTest::addColumn<QString>("plant");
+        QTest::newRow("slidecar") << "slidecar";
+        QTest::newRow("acrobot") << "acrobot";
+        QTest::newRow("aircraft") << "aircraft";
+    }
+    void demo_writesADemonstrationForEveryPlant() {
+        QFETCH(QString, plant);
+        const CliResult r =
+            cli({"demo", "--plant", plant, "--out", plant + "-demo.csv", "--format", "json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject summary = parseJson(r.out);
+        QCOMPARE(summary.value("plant").toString(), plant);
+        QVERIFY(summary.value("samples").toInt() > 50);
+        QFile file(path(plant + "-demo.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.readLine().startsWith("# prisca-demonstration 1"));
+        // And it reads back: fit it.
+        const CliResult fit = cli({"fit", "--demo", plant + "-demo.csv", "--format", "json"});
+        QCOMPARE(fit.exitCode, 0);
+        QCOMPARE(parseJson(fit.out).value("plant").toString(), plant);
+    }
+
+    void fit_reportsTheMappingAndDiagnosticsAsJson() {
+        const CliResult r = cli({"fit", "--demo", "car.csv", "--format", "json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject fit = parseJson(r.out);
+        QCOMPARE(fit.value("B").toArray().size(), 2);
+        QCOMPARE(fit.value("B").toArray().at(0).toArray().size(), 6);
+        QVERIFY(fit.value("B").toArray().at(0).toArray().at(3).toDouble() > 0.5);  // throttle -> vx
+        QCOMPARE(fit.value("rSquared").toArray().size(), 6);
+        QVERIFY(fit.contains("warnings") && fit.contains("signConflicts"));
+        // A mask that says throttle does nothing to vx: that entry is 0.
+        const CliResult masked = cli(
+            {"fit", "--demo", "car.csv", "--mask", "1,0,0,0,0,0;0,1,1,0,0,1", "--format", "json"});
+        QCOMPARE(masked.exitCode, 0);
+        QCOMPARE(parseJson(masked.out).value("B").toArray().at(0).toArray().at(3).toDouble(), 0.0);
+        const CliResult text = cli({"fit", "--demo", "car.csv"});
+        QCOMPARE(text.exitCode, 0);
+        QVERIFY(text.out.contains("R^2") && text.out.contains("steering"));
+    }
+
+    void run_logsEveryStepOfEveryTrial() {
+        const CliResult r =
+            cli({"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
+                 "--trials", "2", "--seed", "5", "--out", "log.csv", "--format", "json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject summary = parseJson(r.out);
+        const QJsonArray trials = summary.value("trials").toArray();
+        QCOMPARE(trials.size(), 2);
+        for (const QJsonValue& t : trials) {
+            const double error = t.toObject().value("finalPositionErrorCm").toDouble(-1);
+            QVERIFY(error >= 0.0 && error < 1000.0);
+        }
+        QFile file(path("log.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+        QVERIFY(lines.first().startsWith("# prisca-run-log 1"));
+        int header = 0;
+        while (lines[header].startsWith('#'))
+            ++header;
+        const QList<QByteArray> columns = lines[header].split(',');
+        QCOMPARE(columns.first(), QByteArray("trial"));
+        QVERIFY(columns.contains("theta_0_steering") && columns.contains("e_lat") &&
+                columns.contains("ref_index"));
+        QSet<int> trialIds;
+        for (int i = header + 1; i < lines.size(); ++i) {
+            const QList<QByteArray> fields = lines[i].split(',');
+            QCOMPARE(fields.size(), columns.size());
+            trialIds.insert(fields.first().toInt());
+        }
+        QCOMPARE(trialIds, (QSet<int>{0, 1}));
+        // The same seed gives the same log, byte for byte.
+        QCOMPARE(cli({"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
+                      "--trials", "2", "--seed", "5", "--out", "again.csv"})
+                     .exitCode,
+                 0);
+        QFile again(path("again.csv"));
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        QVERIFY(file.seek(0));
+        QVERIFY(file.readAll() == again.readAll());
+    }
+
+    void run_everyMethodOnEveryPlant_data() {
+        QTest::addColumn<QString>("plant");
+        QTest::addColumn<QString>("method");
+        for (const char* plant : {"slidecar", "acrobot", "aircraft"}) {
+            for (const char* method : {"prisca", "pgsd", "pegasus", "pd", "pd-selected", "pd-h",
+                                       "pd-lsd", "pd-h-lsd", "playback"}) {
+                QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(plant, method)))
+                    << plant << method;
+            }
+        }
+    }
+    void run_everyMethodOnEveryPlant() {
+        QFETCH(QString, plant);
+        QFETCH(QString, method);
+        const QString demo = plant + "-demo.csv";
+        if (!QFile::exists(path(demo))) {
+            QCOMPARE(cli({"demo", "--plant", plant, "--out", demo}).exitCode, 0);
+        }
+        // Small training budgets: this checks the plumbing, not the tuning.
+        const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
+                                 "--iterations", "1", "--training-trials", "1", "--out",
+                                 plant + "-" + method + ".csv", "--format", "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
+        QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
+        QVERIFY(QFile::exists(path(plant + "-" + method + ".csv")));
+    }
+
+    void simulate_replaysActionsOrCoastsFromTheGivenState() {
+        writeFile(path("actions.csv"),
+                  "# full throttle, straight\nthrottle,steering\n1,0\n1,0\n1,0\n1,0\n");
+        const CliResult r =
+            cli({"simulate", "--plant", "slidecar", "--initial", "0,0,0,0,0,0", "--actions",
+                 "actions.csv", "--out", "sim.csv", "--format", "json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject summary = parseJson(r.out);
+        QCOMPARE(summary.value("steps").toInt(), 4);
+        const double vx = summary.value("finalState").toArray().at(3).toDouble();
+        QVERIFY(vx > 0.1);
+        // The file holds the start and every step: 5 rows, the last with the final state.
+        const QList<double> last = lastRow(path("sim.csv"));
+        QCOMPARE(last.size(), 9);
+        QVERIFY(std::abs(last[4] - vx) < 1e-12);
+        // Coasting from 2 m/s with zero action: it slows down but keeps going straight.
+        const CliResult coast =
+            cli({"simulate", "--plant", "slidecar", "--initial", "0,0,0,2,0,0", "--zero-action",
+                 "--duration", "1", "--out", "coast.csv", "--format", "json"});
+        QCOMPARE(coast.exitCode, 0);
+        const QJsonArray end = parseJson(coast.out).value("finalState").toArray();
+        QVERIFY(end.at(0).toDouble() > 1.0 && end.at(3).toDouble() < 2.0 &&
+                end.at(3).toDouble() > 0.5);
+        QCOMPARE(end.at(1).toDouble(), 0.0);
+        // A demonstration file is a valid action file too (extra columns ignored).
+        QCOMPARE(
+            cli({"simulate", "--plant", "slidecar", "--actions", "car.csv", "--out", "replay.csv"})
+                .exitCode,
+            0);
+    }
+
+    void badInput_oneLineErrorExitTwoNothingWritten_data() {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("mentions");
+        writeFile(path("bad-actions.csv"), "throttle,steering\n1,0\n1,abc\n");
+        writeFile(path("no-steering.csv"), "throttle\n1\n");
+        writeFile(path("short-actions.csv"), "throttle,steering\n1,0\n1,0\n");
+        writeFile(
+            path("bad-demo.csv"),
+            "# prisca-demonstration 1\n# plant: slidecar\n# dt: 0.025\n"
+            "# states: x[m], y[m], psi[rad], vx[m/s], vy[m/s], r[rad/s]\n"
+            "# actions: throttle[1], steering[1]\n"
+            "t,x,y,psi,vx,vy,r,throttle,steering\n0,0,0,0,0,0,0,0,0\n0.025,0,0,0,nan,0,0,0,0\n");
+        const QStringList out = {"--out", "never.csv"};
+        QTest::newRow("simulate: no plant")
+            << (QStringList{"simulate", "--zero-action", "--duration", "1"} + out)
+            << "--plant is required";
+        QTest::newRow("simulate: unknown plant")
+            << (QStringList{"simulate", "--plant", "boat", "--zero-action", "--duration", "1"} +
+                out)
+            << "unknown plant 'boat'";
+        QTest::newRow("simulate: no actions")
+            << (QStringList{"simulate", "--plant", "slidecar"} + out) << "exactly one of --actions";
+        QTest::newRow("simulate: both actions")
+            << (QStringList{"simulate", "--plant", "slidecar", "--zero-action", "--actions",
+                            "a.csv", "--duration", "1"} +
+                out)
+            << "exactly one of --actions";
+        QTest::newRow("simulate: zero without duration")
+            << (QStringList{"simulate", "--plant", "slidecar", "--zero-action"} + out)
+            << "--zero-action needs --duration";
+        QTest::newRow("simulate: initial count")
+            << (QStringList{"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1",
+                            "--initial", "0,0"} +
+                out)
+            << "--initial has 2 values";
+        QTest::newRow("simulate: initial text")
+            << (QStringList{"simulate", "--plant", "acrobot", "--zero-action", "--duration", "1",
+                            "--initial", "0,x,0,0"} +
+                out)
+            << "'x', for theta2";
+        QTest::newRow("simulate: bad duration")
+            << (QStringList{"simulate", "--plant", "slidecar", "--zero-action", "--duration",
+                            "-3"} +
+                out)
+            << "--duration must lie in";
+        QTest::newRow("simulate: missing actions file")
+            << (QStringList{"simulate", "--plant", "slidecar", "--actions", "nope.csv"} + out)
+            << "nope.csv: cannot open";
+        QTest::newRow("simulate: bad action value")
+            << (QStringList{"simulate", "--plant", "slidecar", "--actions", "bad-actions.csv"} +
+                out)
+            << "bad-actions.csv:3:2: 'abc'";
+        QTest::newRow("simulate: action column missing")
+            << (QStringList{"simulate", "--plant", "slidecar", "--actions", "no-steering.csv"} +
+                out)
+            << "no column 'steering'";
+        QTest::newRow("simulate: actions too short")
+            << (QStringList{"simulate", "--plant", "slidecar", "--actions", "short-actions.csv",
+                            "--duration", "9"} +
+                out)
+            << "has 2 action rows";
+        QTest::newRow("simulate: no out")
+            << QStringList{"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1"}
+            << "--out is required";
+        QTest::newRow("simulate: unwritable out")
+            << QStringList{"simulate",   "--plant", "slidecar", "--zero-action",
+                           "--duration", "1",       "--out",    "no/such/dir/x.csv"}
+            << "no/such/dir/x.csv";
+        QTest::newRow("demo: bad seed")
+            << (QStringList{"demo", "--plant", "slidecar", "--seed", "-1"} + out)
+            << "--seed must lie in";
+        QTest::newRow("demo: bad format")
+            << (QStringList{"demo", "--plant", "slidecar", "--format", "xml"} + out)
+            << "--format must be one of";
+        QTest::newRow("demo: stray argument")
+            << (QStringList{"demo", "--plant", "slidecar", "extra"} + out)
+            << "unexpected argument 'extra'";
+        QTest::newRow("fit: missing file")
+            << QStringList{"fit", "--demo", "missing.csv"} << "missing.csv";
+        QTest::newRow("fit: malformed demo")
+            << QStringList{"fit", "--demo", "bad-demo.csv"} << "bad-demo.csv:8:5";
+        QTest::newRow("fit: bad mask entry")
+            << QStringList{"fit", "--demo", "car.csv", "--mask", "1,0,0,1,0,0;0,1,2,0,0,1"}
+            << "row 2, column 3";
+        QTest::newRow("fit: mask shape")
+            << QStringList{"fit", "--demo", "car.csv", "--mask", "1,0;0,1"} << "--mask is 2 x 2";
+        QTest::newRow("fit: bad target")
+            << QStringList{"fit", "--demo", "car.csv", "--target", "speed"} << "--target must be";
+        QTest::newRow("fit: wrong plant")
+            << QStringList{"fit", "--demo", "car.csv", "--plant", "acrobot"}
+            << "recorded on 'slidecar', not 'acrobot'";
+        QTest::newRow("run: unknown method")
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "lqr"} +
+                out)
+            << "unknown method 'lqr'";
+        QTest::newRow("run: demo of another plant")
+            << (QStringList{"run", "--plant", "acrobot", "--demo", "car.csv", "--method", "pd"} +
+                out)
+            << "recorded on 'slidecar'";
+        QTest::newRow("run: gamma out of range")
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
+                            "--gamma", "1.5"} +
+                out)
+            << "--gamma must lie in [0, 1]";
+        QTest::newRow("run: trials not a number")
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
+                            "--trials", "two"} +
+                out)
+            << "--trials needs a whole number";
+    }
+    void badInput_oneLineErrorExitTwoNothingWritten() {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, mentions);
+        QFile::remove(path("never.csv"));
+        const CliResult r = cli(arguments);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith(QStringLiteral("prisca-cli: %1: ").arg(arguments.first())),
+                 qPrintable(r.err));
+        QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
+        QCOMPARE(r.err.count(u'\n'), 1);
+        QCOMPARE(r.out, QString());
+        QVERIFY(!QFile::exists(path("never.csv")));
+    }
+
+    void help_documentsEachCommandsOptions() {
+        for (const char* command : {"simulate", "demo", "fit", "run"}) {
+            const CliResult r = cli({command, "--help"});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.contains("--format"), qPrintable(r.out));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliCommands)
+#include "test_cli_commands.moc"

@@ -1,0 +1,202 @@
+// The closed loop: measurement model, episode runner, parallel trials, the controller factory.
+#include "core/ActionMapping.h"
+#include "sim/ControllerFactory.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/MeasurementModel.h"
+#include "sim/ParallelTrials.h"
+#include "sim/PlantProfile.h"
+#include "sim/SlideCar.h"
+#include "sim/SlideCarDemonstrator.h"
+
+#include <QtTest>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+bool identical(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+struct SlideCarSetup {
+    std::shared_ptr<const core::Demonstration> demo =
+        std::make_shared<core::Demonstration>(SlideCarDemonstrator::record(1));
+    PlantProfile profile = PlantProfile::forPlant(SlideCar::describe());
+    Eigen::MatrixXd fittedB =
+        core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
+
+    EpisodeSettings settings(std::uint64_t seed) const {
+        EpisodeSettings s;
+        s.seed = seed;
+        s.perturbation = Perturbation::realistic();
+        s.measurement = profile.measurement;
+        s.duration = demo->length() * demo->dt + profile.settleTime;
+        s.stopAtRestAfter = demo->length() * demo->dt;
+        return s;
+    }
+};
+
+}  // namespace
+
+class TestEpisodeRunner : public QObject {
+    Q_OBJECT
+  private slots:
+    void measurement_delaysByItsLatency() {
+        MeasurementParameters p;
+        p.latencySteps = 3;
+        MeasurementModel sensor(p, 1);
+        sensor.reset(Eigen::VectorXd::Constant(1, -1.0));
+        for (int k = 0; k < 10; ++k) {
+            const double seen = sensor.observe(Eigen::VectorXd::Constant(1, k))[0];
+            QCOMPARE(seen, k < 3 ? -1.0 : double(k - 3));
+        }
+    }
+
+    void measurement_dropsHoldTheLastSampleAtTheGivenRate() {
+        MeasurementParameters p;
+        p.dropProbability = 0.2;
+        MeasurementModel sensor(p, 2);
+        sensor.reset(Eigen::VectorXd::Zero(1));
+        int drops = 0;
+        double previous = 0.0;
+        for (int k = 1; k <= 20000; ++k) {
+            const double seen = sensor.observe(Eigen::VectorXd::Constant(1, k))[0];
+            if (sensor.lastDropped()) {
+                ++drops;
+                QCOMPARE(seen, previous);
+            } else {
+                QCOMPARE(seen, double(k));
+            }
+            previous = seen;
+        }
+        QVERIFY2(std::abs(drops / 20000.0 - 0.2) < 0.01, qPrintable(QString::number(drops)));
+    }
+
+    void measurement_noiseHasTheGivenSpread() {
+        MeasurementParameters p;
+        p.noise = Eigen::Vector2d(0.5, 0.0);
+        MeasurementModel sensor(p, 3);
+        sensor.reset(Eigen::Vector2d::Zero());
+        double sum = 0, sumSquares = 0;
+        const int N = 40000;
+        for (int k = 0; k < N; ++k) {
+            const Eigen::VectorXd seen = sensor.observe(Eigen::Vector2d(1.0, 2.0));
+            sum += seen[0] - 1.0;
+            sumSquares += (seen[0] - 1.0) * (seen[0] - 1.0);
+            QCOMPARE(seen[1], 2.0);
+        }
+        QVERIFY(std::abs(sum / N) < 0.01);
+        QVERIFY(std::abs(std::sqrt(sumSquares / N) - 0.5) < 0.01);
+        MeasurementParameters bad;
+        bad.dropProbability = 1.0;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, MeasurementModel(bad, 1));
+    }
+
+    void episode_sameSeedSameTrialBitForBit() {
+        const SlideCarSetup setup;
+        auto run = [&](std::uint64_t seed) {
+            SlideCar car;
+            auto controller =
+                ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+            return runEpisode(car, *controller, setup.settings(seed));
+        };
+        const EpisodeResult a = run(7), b = run(7), c = run(8);
+        QVERIFY(a.stepCount > 100);
+        QCOMPARE(a.stepCount, b.stepCount);
+        QCOMPARE(static_cast<int>(a.steps.size()), a.stepCount);
+        for (int k = 0; k < a.stepCount; ++k) {
+            QVERIFY(identical(a.steps[k].state, b.steps[k].state));
+            QVERIFY(identical(a.steps[k].action, b.steps[k].action));
+            QVERIFY(identical(a.steps[k].parameters, b.steps[k].parameters));
+        }
+        QVERIFY(identical(a.finalState, b.finalState));
+        QVERIFY(!identical(a.finalState, c.finalState));
+        // The record carries what the operator plots: theta (p x m flattened) and the reference.
+        QCOMPARE(a.steps.back().parameters.size(), 6);
+        QVERIFY(a.steps.back().referenceIndex > 0);
+    }
+
+    void episode_stopsAtRestAfterTheDemonstrationAndOnCancel() {
+        const SlideCarSetup setup;
+        SlideCar car;
+        auto playback =
+            ControllerFactory::create("playback", setup.profile, setup.demo, setup.fittedB);
+        EpisodeSettings s = setup.settings(3);
+        s.duration = 60.0;
+        const EpisodeResult rested = runEpisode(car, *playback, s);
+        QVERIFY(rested.duration < 20.0);
+        QVERIFY(rested.duration >= s.stopAtRestAfter);
+        QVERIFY(car.atRest());
+        int polls = 0;
+        const EpisodeResult cancelled = runEpisode(car, *playback, s, [&] { return ++polls > 10; });
+        QVERIFY(cancelled.cancelled);
+        QCOMPARE(cancelled.stepCount, 10);
+    }
+
+    void parallelTrials_sameResultsWhateverTheThreadCount() {
+        const SlideCarSetup setup;
+        auto trial = [&](int i) {
+            SlideCar car;
+            auto controller =
+                ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+            EpisodeSettings s = setup.settings(mixSeed(99, i));
+            s.recordSteps = false;
+            return runEpisode(car, *controller, s).finalState;
+        };
+        std::atomic<int> progressCalls{0};
+        const auto one = runParallel<Eigen::VectorXd>(8, 1, trial);
+        const auto two =
+            runParallel<Eigen::VectorXd>(8, 2, trial, {}, [&](int, int) { ++progressCalls; });
+        QCOMPARE(progressCalls.load(), 8);
+        for (int i = 0; i < 8; ++i)
+            QVERIFY(identical(one[i], two[i]));
+        QVERIFY(!identical(one[0], one[1]));
+    }
+
+    void parallelTrials_cancelAndErrorsAreReported() {
+        std::atomic<int> started{0};
+        std::vector<bool> completed;
+        const auto results = runParallel<int>(
+            100, 2,
+            [&](int i) {
+                ++started;
+                return i;
+            },
+            [&] { return started.load() >= 5; }, {}, &completed);
+        QVERIFY(started.load() < 100);
+        QCOMPARE(static_cast<int>(completed.size()), 100);
+        QVERIFY(completed[0]);
+        QVERIFY(!completed[99]);
+        QVERIFY_THROWS_EXCEPTION(std::runtime_error, runParallel<int>(10, 2, [](int i) -> int {
+                                     if (i == 4)
+                                         throw std::runtime_error("trial 4 failed");
+                                     return i;
+                                 }));
+    }
+
+    void factory_buildsEveryMethodForTheSlideCar() {
+        const SlideCarSetup setup;
+        for (const QString& method : ControllerFactory::methods()) {
+            SlideCar car;
+            auto controller =
+                ControllerFactory::create(method, setup.profile, setup.demo, setup.fittedB);
+            QCOMPARE(controller->name(), method);
+            EpisodeSettings s = setup.settings(1);
+            s.duration = 1.0;
+            const EpisodeResult r = runEpisode(car, *controller, s);
+            QCOMPARE(r.stepCount, 40);
+            QVERIFY(r.finalState.allFinite());
+        }
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            ControllerFactory::create("bogus", setup.profile, setup.demo, setup.fittedB));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestEpisodeRunner)
+#include "test_episode_runner.moc"
