@@ -1,0 +1,94 @@
+// Simulation benchmarks (make bench): slide-car speed against real time, and a 20-trial batch
+// of closed-loop PRISCA trials on 1 and 2 threads.
+#include "core/ActionMapping.h"
+#include "sim/ControllerFactory.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/ParallelTrials.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantProfile.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+using namespace prisca;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main() {
+    // Plant speed: 60 simulated seconds of driving around, 10 physics substeps per 25 ms step.
+    for (const QString& name : sim::PlantCatalog::names()) {
+        std::vector<double> factors;
+        for (int repeat = 0; repeat < 5; ++repeat) {
+            auto plant = sim::PlantCatalog::create(name);
+            plant->reset(1, sim::Perturbation::realistic());
+            const int m = plant->info().actionDimension();
+            const int steps = 2400;
+            const auto start = Clock::now();
+            for (int k = 0; k < steps; ++k) {
+                Eigen::VectorXd u = plant->info().actionLower +
+                                    (plant->info().actionUpper - plant->info().actionLower) *
+                                        (0.5 + 0.4 * std::sin(0.01 * k));
+                if (m != u.size())
+                    return 1;
+                plant->step(u);
+            }
+            factors.push_back(steps * plant->timing().controlPeriod / seconds(start));
+        }
+        std::printf("%s simulation: median %.0fx real time on one core (400 Hz physics)%s\n",
+                    qPrintable(name), median(factors),
+                    name == QLatin1String("slidecar") ? " (target >= 200x)" : "");
+    }
+
+    // A 20-trial batch of PRISCA on the slide-car with realistic perturbation and sensor.
+    auto demo =
+        std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate("slidecar", 1));
+    const sim::PlantProfile profile =
+        sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const Eigen::MatrixXd B =
+        core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
+    const std::function<double(int)> trial = [&](int i) {
+        auto plant = sim::PlantCatalog::create("slidecar");
+        auto controller = sim::ControllerFactory::create("prisca", profile, demo, B);
+        sim::EpisodeSettings s;
+        s.seed = sim::mixSeed(7, i);
+        s.perturbation = sim::Perturbation::realistic();
+        s.measurement = profile.measurement;
+        s.duration = demo->length() * demo->dt + profile.settleTime;
+        s.stopAtRestAfter = demo->length() * demo->dt;
+        s.recordSteps = false;
+        return sim::runEpisode(*plant, *controller, s).finalState[0];
+    };
+    double oneThread = 0.0;
+    for (int threads : {1, 2}) {
+        std::vector<double> times;
+        for (int repeat = 0; repeat < 5; ++repeat) {
+            const auto start = Clock::now();
+            sim::runParallel<double>(20, threads, trial);
+            times.push_back(seconds(start));
+        }
+        const double t = median(times);
+        if (threads == 1)
+            oneThread = t;
+        std::printf(
+            "20-trial slide-car batch (PRISCA) on %d thread%s: median %.1f ms%s\n", threads,
+            threads == 1 ? "" : "s", t * 1000.0,
+            threads == 1
+                ? ""
+                : qPrintable(QStringLiteral(" (speed-up %1x)").arg(oneThread / t, 0, 'f', 2)));
+    }
+    return 0;
+}
