@@ -9,7 +9,7 @@ packages=(
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libgl-dev libeigen3-dev libopencv-dev libbox2d-dev
     xvfb xauth
-    libqt6svg6 qt6-translations-l10n fonts-noto-cjk
+    qt6-svg-dev qt6-translations-l10n fonts-noto-cjk
 )
 
 missing=()

@@ -5,7 +5,9 @@
 #include <QJsonDocument>
 
 #include <unistd.h>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 
 namespace prisca::app::cli {
@@ -95,6 +97,25 @@ long long CommandLine::integer(const QString& name, long long minimum, long long
                              .arg(value));
     }
     return value;
+}
+
+namespace {
+// Lock-free, so the signal handler may set it (std::atomic<bool> is on every target we build).
+std::atomic<bool> interruptRequested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void onInterrupt(int) {
+    interruptRequested.store(true);
+}
+}  // namespace
+
+void installInterruptHandler() {
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+}
+
+bool interrupted() {
+    return interruptRequested.load();
 }
 
 core::Demonstration readDemonstration(const QString& path) {

@@ -55,6 +55,14 @@ class CommandLine {
     QStringList formats_;
 };
 
+/// Makes Ctrl-C (SIGINT) and SIGTERM ask long commands to stop: interrupted() turns true, the
+/// command finishes the step it is on, keeps what finished and exits with kExitInterrupted.
+void installInterruptHandler();
+/// Whether Ctrl-C was pressed. Any thread.
+bool interrupted();
+/// Exit code after an interruption (128 + SIGINT, as shells report it).
+constexpr int kExitInterrupted = 130;
+
 /// Reads a demonstration CSV; UsageError with "file:line:column: message" if bad.
 core::Demonstration readDemonstration(const QString& path);
 /// Writes a demonstration CSV atomically; UsageError if it cannot.

@@ -9,5 +9,6 @@ int simulateCommand(const QStringList& arguments);
 int demoCommand(const QStringList& arguments);
 int fitCommand(const QStringList& arguments);
 int runCommand(const QStringList& arguments);
+int table1Command(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

@@ -1,0 +1,144 @@
+#include "Table1Report.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace prisca::core {
+
+namespace {
+
+QString fixed(double value) {
+    return std::isfinite(value) ? QString::number(value, 'f', 2) : QStringLiteral("n/a");
+}
+
+QString full(double value) {
+    return std::isfinite(value) ? QString::number(value, 'g', 17) : QString();
+}
+
+QJsonValue jsonNumber(double value) {
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+}
+
+QJsonObject summaryJson(const ErrorSummary& s) {
+    return {{"meanAbsoluteError", jsonNumber(s.meanAbsoluteError)},
+            {"standardDeviation", jsonNumber(s.standardDeviation)},
+            {"variance", jsonNumber(s.variance)},
+            {"minimum", jsonNumber(s.minimum)},
+            {"maximum", jsonNumber(s.maximum)},
+            {"count", s.count},
+            {"failed", s.nonFinite}};
+}
+
+}  // namespace
+
+std::optional<TableFormat> parseTableFormat(const QString& text) {
+    if (text == QLatin1String("md"))
+        return TableFormat::Markdown;
+    if (text == QLatin1String("csv"))
+        return TableFormat::Csv;
+    if (text == QLatin1String("latex"))
+        return TableFormat::Latex;
+    if (text == QLatin1String("json"))
+        return TableFormat::Json;
+    return std::nullopt;
+}
+
+QString table1Label(const QString& method) {
+    if (method == QLatin1String("prisca"))
+        return QStringLiteral("OURS (PRISCA)");
+    if (method == QLatin1String("pd"))
+        return QStringLiteral("PD");
+    if (method == QLatin1String("pd-selected"))
+        return QStringLiteral("PD (SELECTED)");
+    if (method == QLatin1String("pd-h"))
+        return QStringLiteral("PD+H");
+    if (method == QLatin1String("pd-lsd"))
+        return QStringLiteral("PD+LSD");
+    if (method == QLatin1String("pd-h-lsd"))
+        return QStringLiteral("PD+H+LSD");
+    if (method == QLatin1String("playback"))
+        return QStringLiteral("ACTION PLAYBACK");
+    return method.toUpper();
+}
+
+QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
+                     const QString& caption) {
+    QString out;
+    switch (format) {
+        case TableFormat::Markdown:
+            out += caption + QStringLiteral("\n\n");
+            out += QStringLiteral(
+                "| method | trials | position MAE ± std [cm] | position variance [cm²] "
+                "| orientation MAE ± std [deg] | orientation variance [deg²] |\n");
+            out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: |\n");
+            for (const Table1Row& r : rows) {
+                out +=
+                    QStringLiteral("| %1 | %2 | %3 ± %4 | %5 | %6 ± %7 | %8 |\n")
+                        .arg(table1Label(r.method))
+                        .arg(r.position.count)
+                        .arg(fixed(r.position.meanAbsoluteError),
+                             fixed(r.position.standardDeviation), fixed(r.position.variance),
+                             fixed(r.orientation.meanAbsoluteError),
+                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance));
+            }
+            break;
+        case TableFormat::Csv:
+            out += QStringLiteral(
+                "method,label,trials,position_mae_cm,position_std_cm,position_var_cm2,"
+                "orientation_mae_deg,orientation_std_deg,orientation_var_deg2\n");
+            for (const Table1Row& r : rows) {
+                out +=
+                    QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9\n")
+                        .arg(r.method, table1Label(r.method))
+                        .arg(r.position.count)
+                        .arg(full(r.position.meanAbsoluteError), full(r.position.standardDeviation),
+                             full(r.position.variance), full(r.orientation.meanAbsoluteError),
+                             full(r.orientation.standardDeviation), full(r.orientation.variance));
+            }
+            break;
+        case TableFormat::Latex: {
+            QString escapedCaption = caption;
+            escapedCaption.replace(QLatin1Char('%'), QStringLiteral("\\%"))
+                .replace(QLatin1Char('_'), QStringLiteral("\\_"));
+            out += QStringLiteral("\\begin{table}[t]\n\\centering\n\\caption{%1}\n")
+                       .arg(escapedCaption);
+            out += QStringLiteral("\\begin{tabular}{lrrrrr}\n\\hline\n");
+            out += QStringLiteral(
+                " & & \\multicolumn{2}{c}{Position} & \\multicolumn{2}{c}{Orientation} \\\\\n");
+            out += QStringLiteral(
+                "Method & $N$ & MAE [cm] & Var. [cm$^2$] & MAE [$^\\circ$] & Var. [$^{\\circ 2}$] "
+                "\\\\\n\\hline\n");
+            for (const Table1Row& r : rows) {
+                out +=
+                    QStringLiteral("%1 & %2 & $%3 \\pm %4$ & %5 & $%6 \\pm %7$ & %8 \\\\\n")
+                        .arg(table1Label(r.method))
+                        .arg(r.position.count)
+                        .arg(fixed(r.position.meanAbsoluteError),
+                             fixed(r.position.standardDeviation), fixed(r.position.variance),
+                             fixed(r.orientation.meanAbsoluteError),
+                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance));
+            }
+            out += QStringLiteral("\\hline\n\\end{tabular}\n\\end{table}\n");
+            break;
+        }
+        case TableFormat::Json: {
+            QJsonArray array;
+            for (const Table1Row& r : rows) {
+                array.append(QJsonObject{{"method", r.method},
+                                         {"label", table1Label(r.method)},
+                                         {"positionCm", summaryJson(r.position)},
+                                         {"orientationDeg", summaryJson(r.orientation)}});
+            }
+            out =
+                QString::fromUtf8(QJsonDocument(QJsonObject{{"caption", caption}, {"rows", array}})
+                                      .toJson(QJsonDocument::Indented));
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace prisca::core

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "Statistics.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace prisca::core {
+
+/// One row of the paper's Table I: a method's final position and orientation errors over its
+/// trials, as mean absolute error +- standard deviation and variance.
+struct Table1Row {
+    QString method;            ///< command-line name, e.g. "pd-h"
+    ErrorSummary position;     ///< |p_end - p_lot| [cm]
+    ErrorSummary orientation;  ///< |wrap(psi_end - psi_lot)| [deg]
+};
+
+/// Output formats of Table I.
+enum class TableFormat { Markdown, Csv, Latex, Json };
+
+/// "md", "csv", "latex" or "json".
+std::optional<TableFormat> parseTableFormat(const QString& text);
+/// The paper's row label: "OURS (PRISCA)", "PD", "PD (SELECTED)", "PD+H", "PD+LSD",
+/// "PD+H+LSD", "ACTION PLAYBACK", "PGSD"; the method name upper-cased otherwise.
+QString table1Label(const QString& method);
+/// The table as text. Markdown and LaTeX show "MAE +- std" and the variance for position (cm,
+/// cm^2) and orientation (deg, deg^2) with two decimals and the trial count; CSV and JSON carry
+/// full precision. `caption` describes the experiment (seed, trials, perturbation).
+QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
+                     const QString& caption);
+
+}  // namespace prisca::core

@@ -1,0 +1,182 @@
+#include "Table1Experiment.h"
+
+#include "ControllerFactory.h"
+#include "MethodTraining.h"
+#include "ParallelTrials.h"
+#include "PlantCatalog.h"
+
+#include <map>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+// Training seeds come from their own stream, so they never coincide with evaluation seeds.
+constexpr std::uint64_t kTrainingStream = 0x7EA1;
+
+bool learnsOnline(const QString& method) {
+    return method == QLatin1String("prisca") || method == QLatin1String("pgsd");
+}
+
+}  // namespace
+
+EpisodeSettings table1Episode(const Table1Settings& settings,
+                              const core::Demonstration& demonstration,
+                              const PlantProfile& profile) {
+    EpisodeSettings episode;
+    episode.perturbation = {settings.perturbation, settings.perturbation, settings.perturbation};
+    episode.measurement = profile.measurement;
+    if (episode.measurement.noise.size() > 0) {
+        episode.measurement.noise *= settings.sensor;
+    }
+    if (settings.sensor == 0.0) {
+        episode.measurement.latencySteps = 0;
+        episode.measurement.dropProbability = 0.0;
+    }
+    const double demoDuration = demonstration.length() * demonstration.dt;
+    episode.duration = demoDuration + profile.settleTime;
+    episode.stopAtRestAfter = demoDuration;
+    return episode;
+}
+
+Table1Result runTable1(const Table1Settings& settings,
+                       std::shared_ptr<const core::Demonstration> demonstration,
+                       const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
+    if (!profile.info.pose) {
+        throw std::invalid_argument("Table I needs a planar vehicle (final position and heading)");
+    }
+    for (const QString& method : settings.methods) {
+        if (!ControllerFactory::isMethod(method) || method == QLatin1String("pegasus")) {
+            throw std::invalid_argument(
+                QStringLiteral("Table I has no row for method '%1'").arg(method).toStdString());
+        }
+    }
+    const auto say = [&](const QString& text) {
+        if (settings.progress) {
+            settings.progress(text);
+        }
+    };
+    const EpisodeSettings base = table1Episode(settings, *demonstration, profile);
+    std::vector<std::uint64_t> trainingSeeds;
+    for (int i = 0; i < settings.trainingTrials; ++i) {
+        trainingSeeds.push_back(mixSeed(settings.seed ^ kTrainingStream, i));
+    }
+
+    Table1Result result;
+    const int T = demonstration->length();
+    result.lot = demonstration->states.row(T - 1).head<3>().transpose();
+
+    // Training: the grid search of PD (selected), and the learners' warm-up runs (each learner
+    // a sequential chain of trials, the chains side by side on the pool).
+    std::map<QString, std::shared_ptr<const core::Controller>> trained;
+    PlantProfile selectedProfile = profile;
+    if (settings.methods.contains(QStringLiteral("pd-selected")) && !trainingSeeds.empty()) {
+        TrainingSetup training;
+        training.plant = settings.plant;
+        training.profile = profile;
+        training.demonstration = demonstration;
+        training.fittedB = fittedB;
+        training.episode = base;
+        training.episode.recordSteps = false;
+        training.seeds = trainingSeeds;
+        training.threads = settings.threads;
+        training.cancelled = settings.cancelled;
+        training.progress = settings.progress;
+        selectedProfile.pd = selectPdGains(training);
+    }
+    QStringList learners;
+    for (const QString& method : settings.methods) {
+        if (learnsOnline(method)) {
+            learners << method;
+        }
+    }
+    const std::function<std::shared_ptr<const core::Controller>(int)> warmUp = [&](int i) {
+        auto plant = PlantCatalog::create(settings.plant);
+        std::shared_ptr<core::Controller> controller =
+            ControllerFactory::create(learners[i], profile, demonstration, fittedB);
+        for (size_t t = 0; t < trainingSeeds.size(); ++t) {
+            EpisodeSettings episode = base;
+            episode.seed = trainingSeeds[t];
+            episode.recordSteps = false;
+            episode.resetMode = t == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+            runEpisode(*plant, *controller, episode, settings.cancelled);
+        }
+        say(QStringLiteral("table1: %1 learned on %2 training trials")
+                .arg(learners[i])
+                .arg(trainingSeeds.size()));
+        return std::shared_ptr<const core::Controller>(controller);
+    };
+    const auto warmed = runParallel<std::shared_ptr<const core::Controller>>(
+        static_cast<int>(learners.size()), settings.threads, warmUp, settings.cancelled);
+    for (int i = 0; i < learners.size(); ++i) {
+        trained[learners[i]] = warmed[i];
+    }
+
+    // Evaluation: every (method, trial) pair is an independent job.
+    const int methods = static_cast<int>(settings.methods.size());
+    const int trials = settings.trials;
+    struct Outcome {
+        TrialSummary summary;
+        std::vector<Eigen::Vector3d> path;
+        bool finished = false;  // false if cancellation cut the trial short
+    };
+    const std::function<Outcome(int)> evaluate = [&](int job) {
+        const QString& method = settings.methods[job / trials];
+        const int trial = job % trials;
+        auto plant = PlantCatalog::create(settings.plant);
+        std::unique_ptr<core::Controller> controller;
+        EpisodeSettings episode = base;
+        episode.seed = mixSeed(settings.seed, trial);
+        episode.recordSteps = settings.keepPaths;
+        const auto learned = trained.find(method);
+        if (learned != trained.end() && learned->second) {
+            controller = learned->second->clone();
+            episode.resetMode = core::ResetMode::WarmStart;
+        } else {
+            controller = ControllerFactory::create(
+                method, method == QLatin1String("pd-selected") ? selectedProfile : profile,
+                demonstration, fittedB);
+        }
+        // Summaries need only the final state; the path is kept for Fig. 7 when asked.
+        const EpisodeResult run = runEpisode(*plant, *controller, episode, settings.cancelled);
+        Outcome outcome;
+        outcome.summary = summarizeTrial(plant->info(), *demonstration, run);
+        for (const StepRecord& step : run.steps) {
+            outcome.path.emplace_back(step.state[0], step.state[1], step.state[2]);
+        }
+        if (settings.keepPaths) {
+            outcome.path.emplace_back(run.finalState[0], run.finalState[1], run.finalState[2]);
+        }
+        outcome.finished = !run.cancelled;
+        return outcome;
+    };
+    std::vector<bool> completed;
+    const std::vector<Outcome> outcomes = runParallel<Outcome>(
+        methods * trials, settings.threads, evaluate, settings.cancelled,
+        [&](int done, int total) {
+            if (done == total || done * 20 / total != (done - 1) * 20 / total) {
+                say(QStringLiteral("table1: %1/%2 trials").arg(done).arg(total));
+            }
+        },
+        &completed);
+    result.cancelled = settings.cancelled && settings.cancelled();
+    for (int m = 0; m < methods; ++m) {
+        MethodTrials rows;
+        rows.method = settings.methods[m];
+        for (int t = 0; t < trials; ++t) {
+            const int job = m * trials + t;
+            // Kept only if it ran to its end: a cancelled trial's pose means nothing.
+            const bool done = completed[job] && outcomes[job].finished;
+            rows.completed.push_back(done);
+            rows.trials.push_back(done ? outcomes[job].summary : TrialSummary{});
+            if (settings.keepPaths) {
+                rows.paths.push_back(done ? outcomes[job].path : std::vector<Eigen::Vector3d>{});
+            }
+        }
+        result.methods.push_back(std::move(rows));
+    }
+    return result;
+}
+
+}  // namespace prisca::sim
