@@ -97,8 +97,12 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     // Pairs k = first .. T-2-d: du_k needs u_{k-1}, ds_{k+1+d} needs s_{k+1+d}, and the rate
     // change also needs ds_{k+d} = s_{k+d} - s_{k+d-1}.
     const bool rateChange = options.target == ActionMappingFitOptions::Target::RateChange;
+    const int R = rateChange ? options.responseSteps : 1;
+    if (R < 1) {
+        throw std::invalid_argument("fitActionMapping: the response horizon must be >= 1");
+    }
     const int first = 1;
-    const int last = T - 2 - d;
+    const int last = T - 1 - R - d;
     const int K = last - first + 1;
     if (K < 1) {
         throw std::invalid_argument(
@@ -112,27 +116,35 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     Eigen::MatrixXd du(K, m);  // row t: change of action
     Eigen::VectorXd change(n);
     Eigen::VectorXd previousChange(n);
+    Eigen::VectorXd earlierPart(n);
     for (int t = 0; t < K; ++t) {
         const int k = first + t;
-        deviation.deviation(demonstration.states.row(k + 1 + d).transpose(),
-                            demonstration.states.row(k + d).transpose(), change);
         if (rateChange) {
-            // Both changes in the frame of s_{k+d}, so a turning vehicle's frame cancels.
+            // (s_{k+R} - s_{k+R-1}) - (s_k - s_{k-1}) (with the latency shift d), every part in
+            // the frame of s_{k+d} so a turning vehicle's own rotation cancels.
+            deviation.deviation(demonstration.states.row(k + R + d).transpose(),
+                                demonstration.states.row(k + d).transpose(), change);
+            deviation.deviation(demonstration.states.row(k + R - 1 + d).transpose(),
+                                demonstration.states.row(k + d).transpose(), earlierPart);
+            change -= earlierPart;
             deviation.deviation(demonstration.states.row(k + d - 1).transpose(),
                                 demonstration.states.row(k + d).transpose(), previousChange);
-            change += previousChange;  // (s_{k+1} - s_k) - (s_k - s_{k-1})
+            change += previousChange;
+        } else {
+            deviation.deviation(demonstration.states.row(k + 1 + d).transpose(),
+                                demonstration.states.row(k + d).transpose(), change);
         }
         ds.row(t) = change.transpose();
         du.row(t) = demonstration.actions.row(k) - demonstration.actions.row(k - 1);
     }
     const Eigen::VectorXd w = nestedExpectationWeights(K);
-    const Eigen::VectorXd sqrtW = w.array().sqrt();
 
     ActionMappingFit fit;
     fit.samples = K;
     fit.bv.setZero(m, n);
     fit.residualRms.setZero(n);
     fit.rSquared.setConstant(n, std::numeric_limits<double>::quiet_NaN());
+    fit.outlierShare.setZero(n);
 
     std::vector<bool> excited(m, true);
     for (int l = 0; l < m; ++l) {
@@ -156,88 +168,144 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
         }
         const Eigen::VectorXd y = ds.col(c);
         Eigen::VectorXd prediction = Eigen::VectorXd::Zero(K);
+        double residualRms = 0.0;
         if (!controls.empty()) {
             // Column j of X is B~[l, c] dt du_l, so the unknowns are the B_v entries themselves.
             Eigen::MatrixXd X(K, static_cast<int>(controls.size()));
             for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
                 X.col(j) = mapping.signs(controls[j], c) * dt * du.col(controls[j]);
             }
-            // Complete orthogonal decomposition: the minimum-norm answer if two controls move
-            // together in the demonstration, instead of an arbitrary split.
-            const Eigen::MatrixXd WX = sqrtW.asDiagonal() * X;
-            const Eigen::VectorXd Wy = sqrtW.asDiagonal() * y;
-            const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(WX);
-            Eigen::VectorXd beta = solver.solve(Wy);
-            if (solver.rank() < X.cols()) {
-                fit.warnings
-                    << QStringLiteral(
-                           "state '%1': the controls acting on it moved together, so their "
-                           "shares cannot be told apart (minimum-norm fit)")
-                           .arg(demonstration.stateNames.value(c, QString::number(c)));
-            }
-            for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
-                if (beta[j] < 0.0) {
-                    fit.signConflicts.emplace_back(controls[j], c);
+            // One weighted fit (with the sign constraint) for given per-sample weights.
+            const auto solve = [&](const Eigen::VectorXd& weights, bool report) {
+                const Eigen::VectorXd root = weights.array().sqrt();
+                // Complete orthogonal decomposition: the minimum-norm answer if two controls move
+                // together in the demonstration, instead of an arbitrary split.
+                const Eigen::MatrixXd WX = root.asDiagonal() * X;
+                const Eigen::VectorXd Wy = root.asDiagonal() * y;
+                const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(WX);
+                Eigen::VectorXd beta = solver.solve(Wy);
+                if (report && solver.rank() < X.cols()) {
                     fit.warnings
                         << QStringLiteral(
-                               "'%1' moved '%2' the opposite way to the intuitive mapping "
-                               "(unconstrained B_v = %3)%4")
-                               .arg(demonstration.actionNames.value(controls[j]),
-                                    demonstration.stateNames.value(c))
-                               .arg(beta[j], 0, 'g', 4)
-                               .arg(options.nonNegative
-                                        ? QStringLiteral("; set to 0, check the sign or the "
-                                                         "demonstration")
-                                        : QStringLiteral("; check the sign or the demonstration"));
+                               "state '%1': the controls acting on it moved together, so their "
+                               "shares cannot be told apart (minimum-norm fit)")
+                               .arg(demonstration.stateNames.value(c, QString::number(c)));
                 }
-            }
-            if (options.nonNegative && (beta.array() < 0.0).any()) {
-                // Few unknowns per column (one per control): try every subset of entries left
-                // free, the rest at 0, and keep the best feasible one. Exact, and cheap for m <= 4.
-                const int q = static_cast<int>(beta.size());
-                double best = std::numeric_limits<double>::infinity();
-                Eigen::VectorXd bestBeta = Eigen::VectorXd::Zero(q);
-                for (int mask = 0; mask < (1 << q); ++mask) {
-                    std::vector<int> free;
-                    for (int j = 0; j < q; ++j) {
-                        if (mask & (1 << j)) {
-                            free.push_back(j);
-                        }
-                    }
-                    Eigen::VectorXd candidate = Eigen::VectorXd::Zero(q);
-                    if (!free.empty()) {
-                        Eigen::MatrixXd sub(K, static_cast<int>(free.size()));
-                        for (int f = 0; f < static_cast<int>(free.size()); ++f) {
-                            sub.col(f) = WX.col(free[f]);
-                        }
-                        const Eigen::VectorXd part =
-                            sub.completeOrthogonalDecomposition().solve(Wy);
-                        if ((part.array() < 0.0).any()) {
-                            continue;
-                        }
-                        for (int f = 0; f < static_cast<int>(free.size()); ++f) {
-                            candidate[free[f]] = part[f];
-                        }
-                    }
-                    const double residual = (Wy - WX * candidate).squaredNorm();
-                    if (residual < best) {
-                        best = residual;
-                        bestBeta = candidate;
+                for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
+                    if (report && beta[j] < 0.0) {
+                        fit.signConflicts.emplace_back(controls[j], c);
+                        fit.warnings
+                            << QStringLiteral(
+                                   "'%1' moved '%2' the opposite way to the intuitive mapping "
+                                   "(unconstrained B_v = %3)%4")
+                                   .arg(demonstration.actionNames.value(controls[j]),
+                                        demonstration.stateNames.value(c))
+                                   .arg(beta[j], 0, 'g', 4)
+                                   .arg(options.nonNegative
+                                            ? QStringLiteral("; set to 0, check the sign or the "
+                                                             "demonstration")
+                                            : QStringLiteral(
+                                                  "; check the sign or the demonstration"));
                     }
                 }
-                beta = bestBeta;
+                if (options.nonNegative && (beta.array() < 0.0).any()) {
+                    // Few unknowns per column (one per control): try every subset of entries left
+                    // free, the rest at 0, and keep the best feasible one. Exact, and cheap for m
+                    // <= 4.
+                    const int q = static_cast<int>(beta.size());
+                    double best = std::numeric_limits<double>::infinity();
+                    Eigen::VectorXd bestBeta = Eigen::VectorXd::Zero(q);
+                    for (int mask = 0; mask < (1 << q); ++mask) {
+                        std::vector<int> free;
+                        for (int j = 0; j < q; ++j) {
+                            if (mask & (1 << j)) {
+                                free.push_back(j);
+                            }
+                        }
+                        Eigen::VectorXd candidate = Eigen::VectorXd::Zero(q);
+                        if (!free.empty()) {
+                            Eigen::MatrixXd sub(K, static_cast<int>(free.size()));
+                            for (int f = 0; f < static_cast<int>(free.size()); ++f) {
+                                sub.col(f) = WX.col(free[f]);
+                            }
+                            const Eigen::VectorXd part =
+                                sub.completeOrthogonalDecomposition().solve(Wy);
+                            if ((part.array() < 0.0).any()) {
+                                continue;
+                            }
+                            for (int f = 0; f < static_cast<int>(free.size()); ++f) {
+                                candidate[free[f]] = part[f];
+                            }
+                        }
+                        const double residual = (Wy - WX * candidate).squaredNorm();
+                        if (residual < best) {
+                            best = residual;
+                            bestBeta = candidate;
+                        }
+                    }
+                    beta = bestBeta;
+                }
+                return beta;
+            };
+            Eigen::VectorXd weights = w;
+            Eigen::VectorXd beta = solve(weights, !options.robust);
+            if (options.robust) {
+                // IRLS with Tukey's bisquare: residuals beyond 4.685 robust sigmas get no weight.
+                for (int iteration = 0; iteration < 50; ++iteration) {
+                    const Eigen::VectorXd residual = y - X * beta;
+                    // The scale comes from the samples that carry information (du != 0): with
+                    // held sticks most samples have du = 0 and a residual of exactly 0.
+                    std::vector<double> magnitudes;
+                    for (int t = 0; t < K; ++t) {
+                        if (X.row(t).squaredNorm() > 0.0) {
+                            magnitudes.push_back(std::abs(residual[t]));
+                        }
+                    }
+                    if (magnitudes.empty()) {
+                        break;
+                    }
+                    const size_t middle = magnitudes.size() / 2;
+                    std::nth_element(magnitudes.begin(), magnitudes.begin() + middle,
+                                     magnitudes.end());
+                    const double scale = 1.4826 * magnitudes[middle];
+                    if (!(scale > 0.0)) {
+                        break;
+                    }
+                    Eigen::VectorXd next = w;
+                    for (int t = 0; t < K; ++t) {
+                        const double u = residual[t] / (4.685 * scale);
+                        next[t] *= std::abs(u) < 1.0 ? (1.0 - u * u) * (1.0 - u * u) : 0.0;
+                    }
+                    const Eigen::VectorXd updated = solve(next, false);
+                    const bool settled = (updated - beta).norm() <= 1e-10 * (1.0 + beta.norm());
+                    beta = updated;
+                    weights = next;
+                    if (settled) {
+                        break;
+                    }
+                }
+                beta = solve(weights, true);  // once more, to report conflicts on the final weights
+                int setAside = 0;
+                for (int t = 0; t < K; ++t) {
+                    setAside += weights[t] < 0.01 * w[t];
+                }
+                fit.outlierShare[c] = static_cast<double>(setAside) / K;
             }
             for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
                 fit.bv(controls[j], c) = beta[j];
             }
             prediction = X * beta;
-            const double meanY = w.dot(y);
-            const double total = (w.array() * (y.array() - meanY).square()).sum();
-            const double residual = (w.array() * (y - prediction).array().square()).sum();
+            const Eigen::VectorXd rw = weights / weights.sum();
+            const double meanY = rw.dot(y);
+            const double total = (rw.array() * (y.array() - meanY).square()).sum();
+            const double residual = (rw.array() * (y - prediction).array().square()).sum();
+            residualRms = std::sqrt(residual);
             fit.rSquared[c] =
                 total > 0.0 ? 1.0 - residual / total : std::numeric_limits<double>::quiet_NaN();
         }
-        fit.residualRms[c] = std::sqrt((w.array() * (y - prediction).array().square()).sum());
+        fit.residualRms[c] = controls.empty()
+                                 ? std::sqrt((w.array() * (y - prediction).array().square()).sum())
+                                 : residualRms;
     }
 
     fit.b = fit.bv.cwiseProduct(mapping.asDouble());

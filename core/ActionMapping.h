@@ -49,9 +49,18 @@ struct ActionMappingFitOptions {
     Target target = Target::RateChange;
     /// Latency shift d [steps] >= 0: pairs ds_{k+1+d} with du_k.
     int latency = 0;
+    /// Response horizon R >= 1 [steps] of the RateChange target: the change of the one-step
+    /// change across R steps, (s_{k+R} - s_{k+R-1}) - (s_k - s_{k-1}), so an effect that builds
+    /// up over a few steps (servo slew, a yaw rate turning into heading) is still seen. 1 is the
+    /// single-step target.
+    int responseSteps = 1;
     /// Constrain B_v >= 0, so B keeps the signs of B~ (B~ says which way, B_v how much). An
     /// entry the data would make negative is reported as a sign conflict and set to 0.
     bool nonNegative = true;
+    /// Robust regression (iteratively reweighted least squares, Tukey's bisquare on residuals
+    /// scaled by their median absolute deviation): samples the linear model cannot explain, such
+    /// as a car sliding on saturated tyres, stop dominating the fit of the samples it can.
+    bool robust = true;
     /// A channel whose weighted mean square du is below this is reported as never excited.
     double excitationThreshold = 1e-12;
 };
@@ -62,11 +71,12 @@ struct ActionMappingFit {
     Eigen::MatrixXd b;            ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
     Eigen::VectorXd residualRms;  ///< per state component: weighted RMS of ds - B^T dt du
     Eigen::VectorXd rSquared;     ///< per state component; NaN where no control acts on it
+    Eigen::VectorXd outlierShare;  ///< per state: share of samples the robust fit set aside
     /// (control, state) where the unconstrained fit of B_v is negative: the data contradicts B~.
     std::vector<std::pair<int, int>> signConflicts;
-    std::vector<int> unexcitedChannels;              ///< controls that never changed
-    int samples = 0;                                 ///< number of (ds, du) pairs used
-    QStringList warnings;                            ///< one line each, in the operator's words
+    std::vector<int> unexcitedChannels;  ///< controls that never changed
+    int samples = 0;                     ///< number of (ds, du) pairs used
+    QStringList warnings;                ///< one line each, in the operator's words
 };
 
 /// Fits B_v (eq. 8): minimises sum_k w_k || y_{k+1+d} - (B_v (.) B~)^T dt du_k ||^2 with the

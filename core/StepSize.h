@@ -5,16 +5,20 @@ namespace prisca::core {
 /// The learning-rate schedule alpha_k of the update theta -= alpha_k g (eq. 2).
 struct StepSize {
     enum class Mode {
-        Decaying,  ///< eq. 3: alpha_k = beta / (k + beta), square summable but not summable
+        Decaying,  ///< eq. 3 scaled: alpha_k = scale * beta / (k + beta), square summable but not
+                   ///< summable
         Fixed      ///< alpha_k = fixed (PGSD)
     };
     Mode mode = Mode::Decaying;
     double beta = 1000.0;  ///< rate of learning in eq. 3 (> 0) [steps]
-    double fixed = 1e-3;   ///< alpha in Fixed mode (>= 0)
+    /// alpha_0 [theta units^2 per gradient unit]: eq. 3 is scale = 1. The gradient's size depends
+    /// on the units of e, phi and B, so a fixed alpha_0 = 1 is a choice of units, not a law.
+    double scale = 1.0;
+    double fixed = 1e-3;  ///< alpha in Fixed mode (>= 0)
 
     /// alpha_k for step k >= 0.
     double at(int step) const {
-        return mode == Mode::Fixed ? fixed : beta / (static_cast<double>(step) + beta);
+        return mode == Mode::Fixed ? fixed : scale * beta / (static_cast<double>(step) + beta);
     }
 };
 

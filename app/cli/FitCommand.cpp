@@ -38,6 +38,9 @@ int fitCommand(const QStringList& arguments) {
                   "-1, 0 or 1 per state separated by ',' (default: the plant's).",
                   "signs");
     line.addValue("latency", "Latency shift d [steps]: pairs ds_{k+1+d} with du_k.", "steps", "0");
+    line.addValue("response",
+                  "Response horizon R [steps] of the rate target (see ActionMapping.h).", "steps",
+                  "1");
     line.addValue("target",
                   "'rate' (change of the state change, default) or 'state' (eq. 8 "
                   "read literally).",
@@ -49,6 +52,7 @@ int fitCommand(const QStringList& arguments) {
     }
     core::ActionMappingFitOptions options;
     options.latency = static_cast<int>(line.integer("latency", 0, 1000));
+    options.responseSteps = static_cast<int>(line.integer("response", 1, 1000));
     const QString target = line.value("target");
     if (target == QLatin1String("state")) {
         options.target = core::ActionMappingFitOptions::Target::StateChange;

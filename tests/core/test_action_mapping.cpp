@@ -147,6 +147,7 @@ class TestActionMapping : public QObject {
         ActionMappingFitOptions options;
         options.latency = 1;
         options.nonNegative = false;  // the plain normal equations, unconstrained
+        options.robust = false;
         const ActionMappingFit fit =
             fitActionMapping(d, signs, DeviationModel::euclidean(2), options);
         // Normal equations written out: pairs k = 1..T-3, weights of E_{i=0:K-1} E_{j=i:K-1}.
@@ -217,11 +218,12 @@ class TestActionMapping : public QObject {
         QCOMPARE(fit.signConflicts[0], std::make_pair(0, 1));
         QVERIFY(std::abs(fit.bv(0, 1) + 2.0) < 0.05);
         const QString all = fit.warnings.join('\n');
-        QVERIFY2(all.contains("'u1' never changed") &&
-                     all.contains("'u0' moved 's1' the opposite way"),
-                 qPrintable(all));
+        QVERIFY2(
+            all.contains("'u1' never changed") && all.contains("'u0' moved 's1' the opposite way"),
+            qPrintable(all));
         // By default B_v >= 0: the contradicted entry is reported and set to 0.
-        const ActionMappingFit constrained = fitActionMapping(d, signs, DeviationModel::euclidean(2));
+        const ActionMappingFit constrained =
+            fitActionMapping(d, signs, DeviationModel::euclidean(2));
         QCOMPARE(constrained.bv(0, 1), 0.0);
         QCOMPARE(static_cast<int>(constrained.signConflicts.size()), 1);
         QVERIFY(constrained.warnings.join('\n').contains("set to 0"));
@@ -235,14 +237,18 @@ class TestActionMapping : public QObject {
         Demonstration d = emptyDemo(800, 1, 2, 0.025);
         excite(d, rng, {0, 1});
         simulateIntegrator(d, (Eigen::MatrixXd(2, 1) << 1.5, -0.7).finished(), 0, 1e-5, rng);
-        const ActionMappingFit fit = fitActionMapping(d, mapping("1;1"), DeviationModel::euclidean(1));
+        ActionMappingFitOptions plain;
+        plain.robust = false;
+        const ActionMappingFit fit =
+            fitActionMapping(d, mapping("1;1"), DeviationModel::euclidean(1), plain);
         QCOMPARE(fit.bv(1, 0), 0.0);
         const int K = d.length() - 2;
         const Eigen::VectorXd w = nestedExpectationWeights(K);
         double xy = 0.0, xx = 0.0;
         for (int t = 0; t < K; ++t) {
             const int k = t + 1;
-            const double y = (d.states(k + 1, 0) - d.states(k, 0)) - (d.states(k, 0) - d.states(k - 1, 0));
+            const double y =
+                (d.states(k + 1, 0) - d.states(k, 0)) - (d.states(k, 0) - d.states(k - 1, 0));
             const double x = d.dt * (d.actions(k, 0) - d.actions(k - 1, 0));
             xy += w[t] * x * y;
             xx += w[t] * x * x;
@@ -250,6 +256,34 @@ class TestActionMapping : public QObject {
         QVERIFY2(std::abs(fit.bv(0, 0) - xy / xx) <= 1e-9 * std::abs(xy / xx),
                  qPrintable(QString("%1 vs %2").arg(fit.bv(0, 0)).arg(xy / xx)));
         QCOMPARE(fit.signConflicts, (std::vector<std::pair<int, int>>{{1, 0}}));
+    }
+
+    void fit_robustIgnoresSamplesTheModelCannotExplain() {
+        // An integrator whose response saturates in a fifth of the samples (a car sliding):
+        // there the action barely acts and the state jolts by amounts no action explains.
+        std::mt19937 rng(14);
+        std::uniform_real_distribution<double> jolt(-0.02, 0.02);
+        Demonstration d = emptyDemo(2000, 1, 1, 0.025);
+        excite(d, rng, {0});
+        for (int k = 0; k + 1 < d.length(); ++k) {
+            const bool sliding = k >= 1200 && k < 1600;
+            d.states(k + 1, 0) = d.states(k, 0) + d.dt * (sliding ? 0.2 : 2.0) * d.actions(k, 0) +
+                                 (sliding ? jolt(rng) : 0.0);
+        }
+        ActionMappingFitOptions plain;
+        plain.robust = false;
+        const ActionMappingFit ols =
+            fitActionMapping(d, mapping("1"), DeviationModel::euclidean(1), plain);
+        const ActionMappingFit robust =
+            fitActionMapping(d, mapping("1"), DeviationModel::euclidean(1));
+        qInfo("true B_v 2: plain fit %.3f (R^2 %.3f), robust fit %.3f (R^2 %.3f, %.0f%% set aside)",
+              ols.bv(0, 0), ols.rSquared[0], robust.bv(0, 0), robust.rSquared[0],
+              100 * robust.outlierShare[0]);
+        QVERIFY(std::abs(robust.bv(0, 0) - 2.0) < 0.05);
+        QVERIFY(std::abs(ols.bv(0, 0) - 2.0) > 0.2);
+        QVERIFY(ols.rSquared[0] < 0.5);
+        QVERIFY(robust.outlierShare[0] > 0.15 && robust.outlierShare[0] < 0.3);
+        QVERIFY(robust.rSquared[0] > 0.9);
     }
 
     void fit_unmodelledStateHasNoRSquared() {
