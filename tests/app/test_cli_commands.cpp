@@ -324,6 +324,13 @@ class TestCliCommands : public QObject {
                             "--gamma", "1.5"} +
                 out)
             << "--gamma must lie in [0, 1]";
+        QTest::newRow("table1: not a table method")
+            << QStringList{"table1", "--methods", "prisca,pegasus"}
+            << "'pegasus' is not a Table I method";
+        QTest::newRow("table1: not a vehicle")
+            << QStringList{"table1", "--plant", "acrobot"} << "planar vehicles";
+        QTest::newRow("table1: bad format")
+            << QStringList{"table1", "--format", "xlsx"} << "--format must be one of";
         QTest::newRow("run: trials not a number")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
                             "--trials", "two"} +
@@ -344,8 +351,60 @@ class TestCliCommands : public QObject {
         QVERIFY(!QFile::exists(path("never.csv")));
     }
 
+    void table1_writesEveryFormatWellFormed() {
+        const QStringList base = {"table1", "--trials", "3", "--training-trials",
+                                  "2",      "--seed",   "4"};
+        const CliResult md = cli(base);
+        QCOMPARE(md.exitCode, 0);
+        for (const char* label :
+             {"OURS (PRISCA)", "PD (SELECTED)", "PD+H+LSD", "ACTION PLAYBACK", "PGSD"}) {
+            QVERIFY2(md.out.contains(QStringLiteral("| %1 | 3 |").arg(label)), qPrintable(md.out));
+        }
+        QVERIFY(md.err.contains("table1:"));  // progress on stderr, the table on stdout
+        const CliResult json = cli(base + QStringList{"--format", "json"});
+        QCOMPARE(json.exitCode, 0);
+        const QJsonArray rows = parseJson(json.out).value("rows").toArray();
+        QCOMPARE(rows.size(), 8);
+        for (const QJsonValue& row : rows) {
+            const QJsonObject position = row.toObject().value("positionCm").toObject();
+            QCOMPARE(position.value("count").toInt(), 3);
+            QVERIFY(position.value("meanAbsoluteError").toDouble(-1) >= 0.0);
+            QVERIFY(std::abs(position.value("variance").toDouble() -
+                             std::pow(position.value("standardDeviation").toDouble(), 2)) < 1e-9);
+        }
+        // The same seed gives the same table; --out writes it to a file instead.
+        QCOMPARE(cli(base + QStringList{"--format", "json"}).out, json.out);
+        const CliResult csv = cli(base + QStringList{"--format", "csv", "--out", "table.csv"});
+        QCOMPARE(csv.exitCode, 0);
+        QCOMPARE(csv.out, QString());
+        QFile file(path("table.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll().trimmed().split('\n').size(), 9);
+        const CliResult tex =
+            cli(base + QStringList{"--format", "latex", "--methods", "prisca,pd"});
+        QCOMPARE(tex.exitCode, 0);
+        QVERIFY(tex.out.contains("\\begin{tabular}") && tex.out.contains("OURS (PRISCA) & 3"));
+    }
+
+    void table1_interruptKeepsWhatFinished() {
+        QProcess process;
+        process.setWorkingDirectory(dir_.path());
+        process.start(QStringLiteral(PRISCA_CLI),
+                      {"table1", "--trials", "100000", "--training-trials", "0", "--methods", "pd",
+                       "--jobs", "1"});
+        QVERIFY(process.waitForStarted());
+        QTest::qWait(1500);
+        process.terminate();  // SIGTERM, handled like Ctrl-C
+        QVERIFY(process.waitForFinished(60000));
+        QCOMPARE(process.exitCode(), 130);
+        const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
+        const QString err = QString::fromLocal8Bit(process.readAllStandardError());
+        QVERIFY2(out.contains("interrupted:") && out.contains("| PD |"), qPrintable(out));
+        QVERIFY2(err.contains("kept the"), qPrintable(err));
+    }
+
     void help_documentsEachCommandsOptions() {
-        for (const char* command : {"simulate", "demo", "fit", "run"}) {
+        for (const char* command : {"simulate", "demo", "fit", "run", "table1"}) {
             const CliResult r = cli({command, "--help"});
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.contains("--format"), qPrintable(r.out));

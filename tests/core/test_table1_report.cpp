@@ -1,0 +1,81 @@
+// Table I formatting: the numbers in each format against hand-computed statistics.
+#include "core/Table1Report.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+using namespace prisca::core;
+
+class TestTable1Report : public QObject {
+    Q_OBJECT
+  private:
+    // Position errors {3, 5, 7} cm: MAE 5, sample std 2, variance 4.
+    // Orientation errors {-10, 20, 30} deg: |e| = {10, 20, 30}: MAE 20, std 10, variance 100.
+    static std::vector<Table1Row> rows() {
+        return {{"prisca", summarizeErrors({3, 5, 7}), summarizeErrors({-10, 20, 30})},
+                {"pd-h-lsd", summarizeErrors({1, 1}), summarizeErrors({4, 4})}};
+    }
+
+  private slots:
+    void markdown_showsMaeStdAndVarianceWithTheirUnits() {
+        const QString md = formatTable1(rows(), TableFormat::Markdown, "caption here");
+        QVERIFY(md.startsWith("caption here\n"));
+        QVERIFY2(md.contains("| OURS (PRISCA) | 3 | 5.00 ± 2.00 | 4.00 | 20.00 ± 10.00 | 100.00 |"),
+                 qPrintable(md));
+        QVERIFY(md.contains("| PD+H+LSD | 2 | 1.00 ± 0.00 | 0.00 | 4.00 ± 0.00 | 0.00 |"));
+        QVERIFY(md.contains("[cm²]") && md.contains("[deg]"));
+    }
+
+    void csv_carriesFullPrecisionOneRowPerMethod() {
+        const QString csv = formatTable1(rows(), TableFormat::Csv, "c");
+        const QStringList lines = csv.trimmed().split('\n');
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[1], QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100"));
+        QCOMPARE(lines[0].split(',').size(), lines[1].split(',').size());
+    }
+
+    void latex_isATabularWithEscapedCaption() {
+        const QString tex = formatTable1(rows(), TableFormat::Latex, "50% of trials_x");
+        QVERIFY(tex.contains("\\begin{tabular}") && tex.contains("\\end{table}"));
+        QVERIFY(tex.contains("50\\% of trials\\_x"));
+        QVERIFY2(
+            tex.contains(
+                "OURS (PRISCA) & 3 & $5.00 \\pm 2.00$ & 4.00 & $20.00 \\pm 10.00$ & 100.00 \\\\"),
+            qPrintable(tex));
+    }
+
+    void json_parsesAndHoldsTheSummaries() {
+        const QJsonObject root =
+            QJsonDocument::fromJson(formatTable1(rows(), TableFormat::Json, "c").toUtf8()).object();
+        const QJsonArray array = root.value("rows").toArray();
+        QCOMPARE(array.size(), 2);
+        const QJsonObject position = array[0].toObject().value("positionCm").toObject();
+        QCOMPARE(position.value("meanAbsoluteError").toDouble(), 5.0);
+        QCOMPARE(position.value("standardDeviation").toDouble(), 2.0);
+        QCOMPARE(position.value("variance").toDouble(), 4.0);
+        QCOMPARE(
+            array[0].toObject().value("orientationDeg").toObject().value("variance").toDouble(),
+            100.0);
+        QCOMPARE(array[1].toObject().value("label").toString(), QStringLiteral("PD+H+LSD"));
+    }
+
+    void emptyRow_showsNotAvailableRatherThanNan() {
+        const std::vector<Table1Row> none = {{"pd", summarizeErrors({}), summarizeErrors({})}};
+        const QString md = formatTable1(none, TableFormat::Markdown, "c");
+        QVERIFY(md.contains("| PD | 0 | n/a ± n/a |"));
+        QVERIFY(!md.contains("nan"));
+        QVERIFY(QJsonDocument::fromJson(formatTable1(none, TableFormat::Json, "c").toUtf8())
+                    .isObject());
+    }
+
+    void formats_parseByName() {
+        QCOMPARE(parseTableFormat("md"), std::optional<TableFormat>(TableFormat::Markdown));
+        QCOMPARE(parseTableFormat("latex"), std::optional<TableFormat>(TableFormat::Latex));
+        QVERIFY(!parseTableFormat("html"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTable1Report)
+#include "test_table1_report.moc"
