@@ -69,6 +69,9 @@ const ControlStep& PgsdController::step(const Eigen::Ref<const Eigen::VectorXd>&
         }
     }
     theta_ -= parameters_.stepSize * gradient_;
+    if (parameters_.thetaBound > 0.0) {
+        theta_ = theta_.cwiseMax(-parameters_.thetaBound).cwiseMin(parameters_.thetaBound);
+    }
 
     record_.step = step_;
     record_.referenceIndex = j;

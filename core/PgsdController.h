@@ -14,6 +14,9 @@ namespace prisca::core {
 struct PgsdParameters {
     int horizon = 10;        ///< H, the smoothing horizon [steps] (>= 1)
     double stepSize = 1e-3;  ///< fixed alpha (no decay)
+    /// If > 0, theta is kept in the box |theta_i| <= thetaBound (the same safeguard PRISCA may
+    /// use, so that the comparison is of the methods and not of this guard).
+    double thetaBound = 0.0;
 };
 
 /// Policy search via the signed derivative, as the paper's special case of PRISCA (Section II):

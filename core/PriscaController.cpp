@@ -138,6 +138,9 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     alpha_ = parameters_.stepSize.at(learningStep_);
     if (parameters_.learning) {
         theta_ -= alpha_ * gradient_;
+        if (parameters_.thetaBound > 0.0) {
+            theta_ = theta_.cwiseMax(-parameters_.thetaBound).cwiseMin(parameters_.thetaBound);
+        }
     }
 
     // 6. Control input from the updated theta.

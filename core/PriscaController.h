@@ -26,6 +26,10 @@ struct PriscaParameters {
     int baselineWindow = 0;  ///< tau' [steps] for eq. 15; 0 means 2H
     StepSize stepSize;       ///< alpha_k (eq. 3)
     bool learning = true;    ///< false: theta stays as set (policy evaluation)
+    /// If > 0, theta is projected onto the box |theta_i| <= thetaBound after each update
+    /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
+    /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.
+    double thetaBound = 0.0;
 };
 
 /// PRISCA as an online controller (Algorithm 1, lines 10-19). Each step:

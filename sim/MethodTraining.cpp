@@ -7,6 +7,7 @@
 #include "core/Pegasus.h"
 #include "core/PriscaController.h"
 
+#include <cmath>
 #include <limits>
 
 namespace prisca::sim {
@@ -46,15 +47,24 @@ core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<d
                 setup.progress(QStringLiteral("pd-selected: grid %1/%2").arg(done).arg(total));
             }
         });
+    // Risk-averse: mean + standard deviation over the training trials, so gains that are good
+    // on most trials but break on some are not chosen.
     double best = std::numeric_limits<double>::infinity();
     Candidate chosen{1.0, 1.0};
     for (size_t g = 0; g < grid.size(); ++g) {
+        std::vector<double> trialScores(scores.begin() + g * seeds,
+                                        scores.begin() + (g + 1) * seeds);
         double mean = 0.0;
-        for (int s = 0; s < seeds; ++s) {
-            mean += scores[g * seeds + s] / seeds;
+        for (double v : trialScores) {
+            mean += v / seeds;
         }
-        if (mean < best) {
-            best = mean;
+        double spread = 0.0;
+        for (double v : trialScores) {
+            spread += (v - mean) * (v - mean);
+        }
+        const double score = mean + (seeds > 1 ? std::sqrt(spread / (seeds - 1)) : 0.0);
+        if (score < best) {
+            best = score;
             chosen = grid[g];
         }
     }

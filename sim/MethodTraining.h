@@ -27,7 +27,8 @@ struct TrainingSetup {
 };
 
 /// PD (selected): a grid search over common scales of the profile's Kp and Kd (each scale
-/// multiplies every channel's gain), scored by tuningScore() averaged over the training seeds.
+/// multiplies every channel's gain), scored by the mean plus the standard deviation of
+/// tuningScore() over the training seeds.
 /// Returns the profile's PD parameters with the best gains.
 core::PdParameters selectPdGains(const TrainingSetup& setup,
                                  const std::vector<double>& kpScales = {0.25, 0.5, 1, 2, 4},

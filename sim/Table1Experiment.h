@@ -24,7 +24,7 @@ struct Table1Settings {
     /// Training trials (their own seeds, never evaluation ones): PD (selected) scores its gain
     /// grid on them; PRISCA and PGSD learn on them in a row before evaluation (each evaluation
     /// trial then starts from what they learned and keeps learning online).
-    int trainingTrials = 8;
+    int trainingTrials = 16;
     double perturbation = 1.0;  ///< plant perturbation level
     double sensor = 1.0;        ///< sensor noise level (0: perfect state)
     int threads = 2;            ///< worker threads
