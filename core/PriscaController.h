@@ -59,6 +59,8 @@ class PriscaController : public Controller {
     const Eigen::MatrixXd& theta() const { return theta_; }
     /// Replaces theta (p x m), e.g. to evaluate a fixed policy or to warm start from a session.
     void setTheta(const Eigen::MatrixXd& theta);
+    /// Turns learning on or off from the next step (theta kept as it is).
+    void setLearning(bool learning) { parameters_.learning = learning; }
     /// g of the last step (p x m).
     const Eigen::MatrixXd& gradient() const { return gradient_; }
     /// b of the last step (p x m); zero when the baseline is off.
