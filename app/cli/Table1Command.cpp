@@ -25,7 +25,7 @@ int table1Command(const QStringList& arguments) {
                   "1");
     line.addValue("trials", "Evaluation trials per method.", "N", "20");
     line.addValue("training-trials", "Training trials for PD (selected), PRISCA and PGSD.", "N",
-                  "8");
+                  "16");
     line.addValue("seed", "Seed of the evaluation trials.", "N", "1");
     line.addValue("jobs", "Worker threads.", "N", "2");
     line.addValue("perturbation", "Plant perturbation level (0 nominal, 1 realistic).", "level",
