@@ -6,6 +6,7 @@
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantProfile.h"
+#include "sim/Table1Experiment.h"
 
 #include <algorithm>
 #include <chrono>
@@ -89,6 +90,21 @@ int main() {
             threads == 1
                 ? ""
                 : qPrintable(QStringLiteral(" (speed-up %1x)").arg(oneThread / t, 0, 'f', 2)));
+    }
+    // Table I: 8 methods x 20 trials (plus the training phases), as `prisca-cli table1 --jobs N`.
+    for (int threads : {1, 2}) {
+        std::vector<double> times;
+        for (int repeat = 0; repeat < 3; ++repeat) {
+            sim::Table1Settings settings;
+            settings.threads = threads;
+            const auto start = Clock::now();
+            sim::runTable1(settings, demo, profile, B);
+            times.push_back(seconds(start));
+        }
+        std::printf(
+            "table1 (8 methods x 20 trials, 16 training trials) on %d thread%s: median %.2f s%s\n",
+            threads, threads == 1 ? "" : "s", median(times),
+            threads == 2 ? " (target <= 10 s on 2 cores)" : "");
     }
     return 0;
 }
