@@ -14,7 +14,7 @@ const std::vector<CliCommand>& commandTable() {
         {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", fitCommand},
         {"run", "Run PRISCA or a baseline on a plant and log the trial", runCommand},
         {"table1", "Run batches of trials and report the paper's Table I metrics", table1Command},
-        {"curve", "Learning curves of several methods over many runs", nullptr},
+        {"curve", "Learning curves of several methods over many runs", curveCommand},
         {"track", "Track the car's IR LEDs in a video and write its poses", nullptr},
         {"link", "Send channel values to a transmitter over a serial link", nullptr},
     };

@@ -10,5 +10,6 @@ int demoCommand(const QStringList& arguments);
 int fitCommand(const QStringList& arguments);
 int runCommand(const QStringList& arguments);
 int table1Command(const QStringList& arguments);
+int curveCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

@@ -3,6 +3,10 @@
 #include "app/cli/CliSupport.h"
 #include "sim/PlantCatalog.h"
 
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+
 namespace prisca::app::cli {
 
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
@@ -62,6 +66,24 @@ Task loadTask(const QString& plant, const QString& demonstrationPath, const QStr
             QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
     }
     task.demonstration = std::make_shared<const core::Demonstration>(std::move(demonstration));
+    return task;
+}
+
+Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
+                       std::uint64_t demoSeed) {
+    if (!demonstrationPath.isEmpty()) {
+        return loadTask(plant, demonstrationPath, QString());
+    }
+    if (!sim::PlantCatalog::contains(plant)) {
+        throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
+                             .arg(plant, sim::PlantCatalog::names().join(' ')));
+    }
+    // Through a scratch file, so a scripted demonstration passes the same checks as a recorded one.
+    const QString scratch = QDir::temp().filePath(
+        QStringLiteral("prisca-demo-%1-%2.csv").arg(plant).arg(QCoreApplication::applicationPid()));
+    writeDemonstration(sim::PlantCatalog::demonstrate(plant, demoSeed), scratch);
+    Task task = loadTask(plant, scratch, QString());
+    QFile::remove(scratch);
     return task;
 }
 

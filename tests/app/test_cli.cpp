@@ -33,7 +33,8 @@ const QStringList kPlannedCommands = {
 };
 // Those not built yet (test_cli_commands covers the others end to end).
 const QStringList kNotYetBuilt = {
-    QStringLiteral("curve"), QStringLiteral("track"), QStringLiteral("link"),
+    QStringLiteral("track"),
+    QStringLiteral("link"),
 };
 
 }  // namespace

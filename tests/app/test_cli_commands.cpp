@@ -331,6 +331,9 @@ class TestCliCommands : public QObject {
             << QStringList{"table1", "--plant", "acrobot"} << "planar vehicles";
         QTest::newRow("table1: bad format")
             << QStringList{"table1", "--format", "xlsx"} << "--format must be one of";
+        QTest::newRow("curve: not a learner")
+            << (QStringList{"curve", "--methods", "prisca,pd"} + out) << "'pd' is not a learner";
+        QTest::newRow("curve: no out") << QStringList{"curve"} << "--out is required";
         QTest::newRow("run: trials not a number")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
                             "--trials", "two"} +
@@ -386,6 +389,29 @@ class TestCliCommands : public QObject {
         QVERIFY(tex.out.contains("\\begin{tabular}") && tex.out.contains("OURS (PRISCA) & 3"));
     }
 
+    void curve_writesAMeanAndBandPerMethod() {
+        // 12800 steps: one PEGASUS iteration (36 rollouts of 320 steps) fits in the budget.
+        const CliResult r = cli(
+            {"curve", "--runs", "2", "--budget", "12800", "--out", "curve.csv", "--format", "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(parseJson(r.out).value("methods").toArray().size(), 3);
+        QFile file(path("curve.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+        QCOMPARE(lines.first(), QByteArray("method,steps,time_s,mean,lower,upper,runs"));
+        QSet<QByteArray> methods;
+        for (int i = 1; i < lines.size(); ++i) {
+            const QList<QByteArray> f = lines[i].split(',');
+            QCOMPARE(f.size(), 7);
+            methods.insert(f[0]);
+            const double mean = f[3].toDouble(), lower = f[4].toDouble(), upper = f[5].toDouble();
+            QVERIFY(lower <= mean + 1e-12 && mean <= upper + 1e-12 && mean >= 0.0);
+            QCOMPARE(f[1].toLongLong() % 320, 0LL);  // one point per demonstration length
+            QVERIFY(f[6].toInt() >= 1 && f[6].toInt() <= 2);
+        }
+        QCOMPARE(methods, (QSet<QByteArray>{"prisca", "pgsd", "pegasus"}));
+    }
+
     void table1_interruptKeepsWhatFinished() {
         QProcess process;
         process.setWorkingDirectory(dir_.path());
@@ -404,7 +430,7 @@ class TestCliCommands : public QObject {
     }
 
     void help_documentsEachCommandsOptions() {
-        for (const char* command : {"simulate", "demo", "fit", "run", "table1"}) {
+        for (const char* command : {"simulate", "demo", "fit", "run", "table1", "curve"}) {
             const CliResult r = cli({command, "--help"});
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.contains("--format"), qPrintable(r.out));

@@ -1,0 +1,150 @@
+#include "LearningCurveExperiment.h"
+
+#include "ControllerFactory.h"
+#include "ParallelTrials.h"
+#include "PlantCatalog.h"
+#include "TrialMetrics.h"
+#include "core/Pegasus.h"
+
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+// Mean over the trial of the squared tracked error (the paper's "square of the l2-norm of the
+// joint angle deviation" for the acrobot), against the time-aligned demonstration.
+double meanSquaredTracking(const PlantInfo& info, const core::Demonstration& demonstration,
+                           const EpisodeResult& result) {
+    if (result.steps.empty()) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    double sum = 0.0;
+    for (size_t k = 0; k < result.steps.size(); ++k) {
+        const double e =
+            trackedError(info, demonstration, result.steps[k].state, static_cast<int>(k));
+        sum += e * e;
+    }
+    return sum / result.steps.size();
+}
+
+}  // namespace
+
+std::vector<double> resampleCurve(const std::vector<CurvePoint>& run,
+                                  const std::vector<long long>& grid) {
+    std::vector<double> values(grid.size(), std::numeric_limits<double>::quiet_NaN());
+    size_t next = 0;
+    double current = std::numeric_limits<double>::quiet_NaN();
+    for (size_t g = 0; g < grid.size(); ++g) {
+        while (next < run.size() && run[next].steps <= grid[g]) {
+            current = run[next].trackingError;
+            ++next;
+        }
+        values[g] = current;
+    }
+    return values;
+}
+
+std::vector<MethodCurves> runLearningCurves(
+    const LearningCurveSettings& settings, std::shared_ptr<const core::Demonstration> demonstration,
+    const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
+    for (const QString& method : settings.methods) {
+        if (method != QLatin1String("prisca") && method != QLatin1String("pgsd") &&
+            method != QLatin1String("pegasus")) {
+            throw std::invalid_argument(
+                QStringLiteral("learning curves are for learners (prisca, pgsd, pegasus), not '%1'")
+                    .arg(method)
+                    .toStdString());
+        }
+    }
+    EpisodeSettings base;
+    base.perturbation = {settings.perturbation, settings.perturbation, settings.perturbation};
+    base.measurement = profile.measurement;
+    if (base.measurement.noise.size() > 0) {
+        base.measurement.noise *= settings.sensor;
+    }
+    base.duration = demonstration->length() * demonstration->dt;
+
+    const int runs = settings.runs;
+    const std::function<std::vector<CurvePoint>(int)> job = [&](int index) {
+        const QString& method = settings.methods[index / runs];
+        const std::uint64_t runSeed = mixSeed(settings.seed, index % runs);
+        auto plant = PlantCatalog::create(settings.plant);
+        const PlantInfo info = plant->info();
+        std::vector<CurvePoint> curve;
+        long long consumed = 0;
+        if (method == QLatin1String("pegasus")) {
+            // Fixed scenarios for this run; every rollout is charged to the budget.
+            std::vector<double> scenarioTracking;
+            auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
+                auto policy = ControllerFactory::create(QStringLiteral("pegasus"), profile,
+                                                        demonstration, fittedB, &theta);
+                EpisodeSettings episode = base;
+                episode.seed = mixSeed(runSeed, 1000 + scenario);
+                const EpisodeResult result =
+                    runEpisode(*plant, *policy, episode, settings.cancelled);
+                scenarioTracking.push_back(meanSquaredTracking(info, *demonstration, result));
+                return core::EpisodeOutcome{result.meanCost, result.stepCount};
+            };
+            core::PegasusParameters parameters = profile.pegasus;
+            core::Pegasus pegasus(rollout,
+                                  Eigen::MatrixXd::Zero(profile.features.featureCount(),
+                                                        profile.features.channelCount()),
+                                  parameters);
+            while (consumed < settings.budgetSteps &&
+                   !(settings.cancelled && settings.cancelled())) {
+                scenarioTracking.clear();
+                const auto iteration = pegasus.iterate(settings.cancelled);
+                if (!iteration) {
+                    break;
+                }
+                // The first S rollouts of an iteration evaluate the current policy.
+                double mean = 0.0;
+                for (int s = 0; s < parameters.scenarios; ++s) {
+                    mean += scenarioTracking[s] / parameters.scenarios;
+                }
+                consumed = iteration->stepsConsumed;
+                curve.push_back({consumed, mean});
+            }
+        } else {
+            auto controller = ControllerFactory::create(method, profile, demonstration, fittedB);
+            for (int trial = 0; consumed < settings.budgetSteps; ++trial) {
+                if (settings.cancelled && settings.cancelled()) {
+                    break;
+                }
+                EpisodeSettings episode = base;
+                episode.seed = mixSeed(runSeed, trial);
+                episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+                const EpisodeResult result =
+                    runEpisode(*plant, *controller, episode, settings.cancelled);
+                if (result.cancelled) {
+                    break;
+                }
+                consumed += result.stepCount;
+                curve.push_back({consumed, meanSquaredTracking(info, *demonstration, result)});
+            }
+        }
+        return curve;
+    };
+    const auto all = runParallel<std::vector<CurvePoint>>(
+        static_cast<int>(settings.methods.size()) * runs, settings.threads, job, settings.cancelled,
+        [&](int done, int total) {
+            if (settings.progress &&
+                (done == total || done * 10 / total != (done - 1) * 10 / total)) {
+                settings.progress(QStringLiteral("curve: %1/%2 runs").arg(done).arg(total));
+            }
+        });
+    std::vector<MethodCurves> curves;
+    for (int m = 0; m < settings.methods.size(); ++m) {
+        MethodCurves method;
+        method.method = settings.methods[m];
+        for (int r = 0; r < runs; ++r) {
+            method.runs.push_back(all[m * runs + r]);
+        }
+        curves.push_back(std::move(method));
+    }
+    return curves;
+}
+
+}  // namespace prisca::sim
