@@ -26,7 +26,7 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
     const Eigen::MatrixXd* theta) {
     if (method == QLatin1String("prisca")) {
         return std::make_unique<core::PriscaController>(
-            profile.trackingProblem(demonstration, Mode::LeastStateDeviation), profile.features,
+            profile.trackingProblem(demonstration, profile.priscaMatching), profile.features,
             fittedB, profile.prisca);
     }
     if (method == QLatin1String("pgsd")) {

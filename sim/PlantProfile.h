@@ -27,11 +27,16 @@ struct PlantProfile {
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
     core::PriscaParameters prisca;      ///< PRISCA defaults
-    core::PgsdParameters pgsd;          ///< PGSD defaults
-    core::PdParameters pd;              ///< PD gains (error combination, Kp, Kd; horizon 0)
-    int pdHorizon = 10;                 ///< H for PD+H and PD+H+LSD [steps]
-    core::PegasusParameters pegasus;    ///< PEGASUS defaults
-    int pegasusIterations = 10;         ///< gradient steps PEGASUS takes before it is evaluated
+    /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
+    /// wherever the path ends), time-driven where it is a timed trajectory (the acrobot's
+    /// "desired joint angles at each time step", paper V.A).
+    core::MatchingParameters::Mode priscaMatching =
+        core::MatchingParameters::Mode::LeastStateDeviation;
+    core::PgsdParameters pgsd;        ///< PGSD defaults
+    core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
+    int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]
+    core::PegasusParameters pegasus;  ///< PEGASUS defaults
+    int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
 
     /// The profile of a plant by its info (name "slidecar", "acrobot" or "aircraft").
     /// Throws std::invalid_argument for an unknown plant.
