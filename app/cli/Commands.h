@@ -11,5 +11,6 @@ int fitCommand(const QStringList& arguments);
 int runCommand(const QStringList& arguments);
 int table1Command(const QStringList& arguments);
 int curveCommand(const QStringList& arguments);
+int lemma41Command(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

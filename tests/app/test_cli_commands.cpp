@@ -391,8 +391,8 @@ class TestCliCommands : public QObject {
 
     void curve_writesAMeanAndBandPerMethod() {
         // 12800 steps: one PEGASUS iteration (36 rollouts of 320 steps) fits in the budget.
-        const CliResult r = cli(
-            {"curve", "--runs", "2", "--budget", "12800", "--out", "curve.csv", "--format", "json"});
+        const CliResult r = cli({"curve", "--runs", "2", "--budget", "12800", "--out", "curve.csv",
+                                 "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(parseJson(r.out).value("methods").toArray().size(), 3);
         QFile file(path("curve.csv"));
@@ -410,6 +410,26 @@ class TestCliCommands : public QObject {
             QVERIFY(f[6].toInt() >= 1 && f[6].toInt() <= 2);
         }
         QCOMPARE(methods, (QSet<QByteArray>{"prisca", "pgsd", "pegasus"}));
+    }
+
+    void lemma41_writesTheGridAndCountsTheCells() {
+        const CliResult r = cli({"lemma41", "--out", "lemma.csv", "--format", "json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject summary = parseJson(r.out);
+        QCOMPARE(summary.value("cells").toInt(), 5050);
+        QCOMPARE(summary.value("satisfied").toInt(),
+                 800);  // the count Lemma41Grid's tests pin down
+        // gamma = 1 makes D constant: the lemma holds there for every H.
+        for (const QJsonValue& t : summary.value("thresholds").toArray()) {
+            QVERIFY(t.toObject().value("satisfiedFromGamma").toDouble() <= 1.0);
+        }
+        QFile file(path("lemma.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), 5051);
+        QCOMPARE(lines.first(), QByteArray("H,gamma,variance,satisfied"));
+        // H = 1, gamma = 0: D = (1/2, 1) over tau' = 2 steps, variance 1/16.
+        QCOMPARE(lines[1], QByteArray("1,0,0.0625,1"));
     }
 
     void table1_interruptKeepsWhatFinished() {
@@ -430,7 +450,8 @@ class TestCliCommands : public QObject {
     }
 
     void help_documentsEachCommandsOptions() {
-        for (const char* command : {"simulate", "demo", "fit", "run", "table1", "curve"}) {
+        for (const char* command :
+             {"simulate", "demo", "fit", "run", "table1", "curve", "lemma41"}) {
             const CliResult r = cli({command, "--help"});
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.contains("--format"), qPrintable(r.out));
