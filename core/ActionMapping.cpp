@@ -116,20 +116,16 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     Eigen::MatrixXd du(K, m);  // row t: change of action
     Eigen::VectorXd change(n);
     Eigen::VectorXd previousChange(n);
-    Eigen::VectorXd earlierPart(n);
     for (int t = 0; t < K; ++t) {
         const int k = first + t;
         if (rateChange) {
-            // (s_{k+R} - s_{k+R-1}) - (s_k - s_{k-1}) (with the latency shift d), every part in
-            // the frame of s_{k+d} so a turning vehicle's own rotation cancels.
+            // (s_{k+R} - s_k) - R (s_k - s_{k-1}) (with the latency shift d), both parts in the
+            // frame of s_{k+d} so a turning vehicle's own rotation cancels.
             deviation.deviation(demonstration.states.row(k + R + d).transpose(),
                                 demonstration.states.row(k + d).transpose(), change);
-            deviation.deviation(demonstration.states.row(k + R - 1 + d).transpose(),
-                                demonstration.states.row(k + d).transpose(), earlierPart);
-            change -= earlierPart;
             deviation.deviation(demonstration.states.row(k + d - 1).transpose(),
                                 demonstration.states.row(k + d).transpose(), previousChange);
-            change += previousChange;
+            change += R * previousChange;
         } else {
             deviation.deviation(demonstration.states.row(k + 1 + d).transpose(),
                                 demonstration.states.row(k + d).transpose(), change);

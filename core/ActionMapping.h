@@ -49,10 +49,11 @@ struct ActionMappingFitOptions {
     Target target = Target::RateChange;
     /// Latency shift d [steps] >= 0: pairs ds_{k+1+d} with du_k.
     int latency = 0;
-    /// Response horizon R >= 1 [steps] of the RateChange target: the change of the one-step
-    /// change across R steps, (s_{k+R} - s_{k+R-1}) - (s_k - s_{k-1}), so an effect that builds
-    /// up over a few steps (servo slew, a yaw rate turning into heading) is still seen. 1 is the
-    /// single-step target.
+    /// Response horizon R >= 1 [steps] of the RateChange target: how far the state moves over R
+    /// steps beyond where its last step was taking it, (s_{k+R} - s_k) - R (s_k - s_{k-1}), so
+    /// effects that build up over a few steps (a yaw rate turning into heading, then into lateral
+    /// position) are seen. R = 1 is the change of the one-step change; R about H matches the
+    /// window PRISCA's cost covers.
     int responseSteps = 1;
     /// Constrain B_v >= 0, so B keeps the signs of B~ (B~ says which way, B_v how much). An
     /// entry the data would make negative is reported as a sign conflict and set to 0.
