@@ -1,6 +1,7 @@
 #include "AircraftDemonstrator.h"
 
 #include "DemonstrationRecorder.h"
+#include "ScriptedInput.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +10,6 @@
 namespace prisca::sim {
 
 namespace {
-
-// 0 -> 1 over [start, start + duration] with zero slope at both ends, like a hand on a stick.
-double smoothStep(double t, double start, double duration) {
-    const double x = std::clamp((t - start) / std::max(duration, 1e-9), 0.0, 1.0);
-    return x * x * (3.0 - 2.0 * x);
-}
 
 // A slow random wander of a hand (first-order Gauss-Markov, exact step), rms sigma.
 class HandTremor {

@@ -1,5 +1,7 @@
 #include "PlanarAircraft.h"
 
+#include "Box2dConversions.h"
+
 #include <box2d/box2d.h>
 
 #include <algorithm>
@@ -27,14 +29,6 @@ constexpr double kActuatorNoise = 0.02;                     // fraction of each 
 constexpr std::uint64_t kDrawStream = 0;
 constexpr std::uint64_t kNoiseStream = 1;
 constexpr std::uint64_t kWindStream = 2;
-
-Eigen::Vector2d toEigen(const b2Vec2& v) {
-    return {v.x, v.y};
-}
-
-b2Vec2 toBox2d(const Eigen::Vector2d& v) {
-    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
-}
 
 Eigen::Vector2d forwardOf(double psi) {
     return {std::cos(psi), std::sin(psi)};

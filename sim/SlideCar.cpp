@@ -1,5 +1,7 @@
 #include "SlideCar.h"
 
+#include "Box2dConversions.h"
+
 #include <box2d/box2d.h>
 
 #include <Eigen/LU>
@@ -11,14 +13,6 @@
 namespace prisca::sim {
 
 namespace {
-
-Eigen::Vector2d toEigen(const b2Vec2& v) {
-    return {v.x, v.y};
-}
-
-b2Vec2 toBox2d(const Eigen::Vector2d& v) {
-    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
-}
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() * b.y() - a.y() * b.x();

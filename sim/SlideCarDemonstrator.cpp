@@ -1,22 +1,13 @@
 #include "SlideCarDemonstrator.h"
 
 #include "DemonstrationRecorder.h"
+#include "ScriptedInput.h"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
 namespace prisca::sim {
-
-namespace {
-
-// 0 -> 1 over [start, start + duration] with zero slope at both ends, like a hand on a stick.
-double smoothStep(double t, double start, double duration) {
-    const double x = std::clamp((t - start) / std::max(duration, 1e-9), 0.0, 1.0);
-    return x * x * (3.0 - 2.0 * x);
-}
-
-}  // namespace
 
 core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,

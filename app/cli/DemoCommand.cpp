@@ -1,6 +1,7 @@
 // prisca-cli demo: the plant's scripted, human-like demonstration.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/TaskSetup.h"
 #include "sim/PlantCatalog.h"
 
 namespace prisca::app::cli {
@@ -15,11 +16,7 @@ int demoCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
-    const QString plantName = line.required("plant");
-    if (!sim::PlantCatalog::contains(plantName)) {
-        throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
-                             .arg(plantName, sim::PlantCatalog::names().join(' ')));
-    }
+    const QString plantName = checkedPlant(line.required("plant"));
     const QString out = line.required("out");
     const auto seed =
         static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));

@@ -3,6 +3,7 @@
 #include "app/cli/ActionTable.h"
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/TaskSetup.h"
 #include "sim/DemonstrationRecorder.h"
 #include "sim/PlantCatalog.h"
 
@@ -33,11 +34,7 @@ int simulateCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
-    const QString plantName = line.required("plant");
-    if (!sim::PlantCatalog::contains(plantName)) {
-        throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
-                             .arg(plantName, sim::PlantCatalog::names().join(' ')));
-    }
+    const QString plantName = checkedPlant(line.required("plant"));
     const QString out = line.required("out");
     sim::SimulationTiming timing;
     timing.controlPeriod = line.number("dt", 1e-4, 1.0);

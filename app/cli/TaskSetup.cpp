@@ -69,15 +69,20 @@ Task loadTask(const QString& plant, const QString& demonstrationPath, const QStr
     return task;
 }
 
+QString checkedPlant(const QString& name) {
+    if (!sim::PlantCatalog::contains(name)) {
+        throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
+                             .arg(name, sim::PlantCatalog::names().join(' ')));
+    }
+    return name;
+}
+
 Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
                        std::uint64_t demoSeed) {
     if (!demonstrationPath.isEmpty()) {
         return loadTask(plant, demonstrationPath, QString());
     }
-    if (!sim::PlantCatalog::contains(plant)) {
-        throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
-                             .arg(plant, sim::PlantCatalog::names().join(' ')));
-    }
+    checkedPlant(plant);
     // Through a scratch file, so a scripted demonstration passes the same checks as a recorded one.
     const QString scratch = QDir::temp().filePath(
         QStringLiteral("prisca-demo-%1-%2.csv").arg(plant).arg(QCoreApplication::applicationPid()));

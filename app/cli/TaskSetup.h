@@ -23,6 +23,9 @@ struct Task {
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
               const core::ActionMappingFitOptions& options = {});
 
+/// The plant name, checked against the catalogue; UsageError naming the known plants if not.
+QString checkedPlant(const QString& name);
+
 /// The task from a demonstration file if one is given, else from the plant's scripted
 /// demonstration with this seed (checked the same way as a file).
 Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,

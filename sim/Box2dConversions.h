@@ -1,0 +1,19 @@
+#pragma once
+// Conversions between Box2D's float vectors and the double Eigen vectors the plants compute in.
+// Include only from .cpp files of plants (Box2D stays out of the public headers).
+
+#include <box2d/b2_math.h>
+
+#include <Eigen/Core>
+
+namespace prisca::sim {
+
+inline Eigen::Vector2d toEigen(const b2Vec2& v) {
+    return {v.x, v.y};
+}
+
+inline b2Vec2 toBox2d(const Eigen::Vector2d& v) {
+    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
+}
+
+}  // namespace prisca::sim
