@@ -1,6 +1,7 @@
 // prisca-cli curve: learning curves at an equal budget of simulated experience (paper Fig. 3b).
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
 #include "core/FileIo.h"
 #include "core/Statistics.h"
@@ -30,6 +31,7 @@ int curveCommand(const QStringList& arguments) {
     line.addValue("sensor", "Sensor noise level.", "level", "1");
     line.addValue("out", "CSV of the curves: method, steps, time, mean, lower, upper, runs.",
                   "file");
+    line.addValue("plot", "Also draw the curves (Fig. 3b) to this .png or .svg file.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -72,12 +74,21 @@ int curveCommand(const QStringList& arguments) {
     QByteArray csv("method,steps,time_s,mean,lower,upper,runs\n");
     QJsonArray summary;
     QString text;
+    std::vector<QString> plotted;
+    std::vector<std::vector<double>> plottedSeconds;
+    std::vector<core::ConfidenceBand> plottedBands;
     for (const sim::MethodCurves& method : curves) {
         std::vector<std::vector<double>> resampled;
         for (const auto& run : method.runs) {
             resampled.push_back(sim::resampleCurve(run, grid));
         }
         const core::ConfidenceBand band = core::confidenceBand(resampled, 0.95);
+        plotted.push_back(method.method);
+        plottedBands.push_back(band);
+        plottedSeconds.emplace_back();
+        for (long long steps : grid) {
+            plottedSeconds.back().push_back(steps * dt);
+        }
         for (size_t g = 0; g < grid.size(); ++g) {
             if (band.count[g] == 0) {
                 continue;
@@ -113,6 +124,13 @@ int curveCommand(const QStringList& arguments) {
     core::FileError error;
     if (!core::writeFileAtomically(out, csv, &error)) {
         throw UsageError(error.toString());
+    }
+    if (line.isSet("plot")) {
+        const QString yLabel = task.profile.info.pose
+                                   ? QStringLiteral("mean squared position error [m\u00b2]")
+                                   : QStringLiteral("mean squared joint-angle error [rad\u00b2]");
+        saveFigureOrThrow(learningCurveFigure(plotted, plottedSeconds, plottedBands, yLabel),
+                          line.value("plot"));
     }
     if (line.format() == QLatin1String("json")) {
         printJson({{"plant", task.plant},

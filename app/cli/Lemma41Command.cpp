@@ -1,6 +1,7 @@
 // prisca-cli lemma41: the H-gamma grid of Lemma 4.1 / Fig. 2 (where Var(D) < 1).
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/Plots.h"
 #include "core/FileIo.h"
 #include "core/Lemma41.h"
 
@@ -16,6 +17,7 @@ int lemma41Command(const QStringList& arguments) {
     line.addValue("max-h", "Largest horizon H.", "N", "50");
     line.addValue("gamma-steps", "Grid points of gamma in [0, 1].", "N", "101");
     line.addValue("out", "CSV: H, gamma, variance, satisfied.", "file");
+    line.addValue("plot", "Also draw the grid (Fig. 2) to this .png or .svg file.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -55,6 +57,9 @@ int lemma41Command(const QStringList& arguments) {
                         .arg(H, 2)
                         .arg(from, 0, 'f', 2);
         }
+    }
+    if (line.isSet("plot")) {
+        saveFigureOrThrow(lemma41Figure(grid, maxH, steps), line.value("plot"));
     }
     const int satisfied = core::lemma41SatisfiedCount(grid);
     if (line.format() == QLatin1String("json")) {

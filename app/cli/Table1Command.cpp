@@ -1,6 +1,7 @@
 // prisca-cli table1: the paper's Table I (slide parking) in simulation.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
 #include "core/FileIo.h"
 #include "core/Table1Report.h"
@@ -37,6 +38,10 @@ int table1Command(const QStringList& arguments) {
     line.addValue("gamma", "PRISCA gamma in [0, 1].", "gamma");
     line.addValue("beta", "PRISCA beta > 0.", "beta");
     line.addValue("out", "Write the table here instead of standard output.", "file");
+    line.addValue("plot",
+                  "Also draw Fig. 7 (paths and end postures of playback, PD and PRISCA) "
+                  "to this .png or .svg file.",
+                  "file");
     line.addFormat({"md", "csv", "latex", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -91,6 +96,7 @@ int table1Command(const QStringList& arguments) {
     }
     const auto format = core::parseTableFormat(line.format());
 
+    settings.keepPaths = line.isSet("plot");
     installInterruptHandler();
     settings.cancelled = [] { return interrupted(); };
     settings.progress = [](const QString& text) { printProgress(text); };
@@ -134,6 +140,9 @@ int table1Command(const QStringList& arguments) {
         }
     } else {
         printText(table);
+    }
+    if (line.isSet("plot")) {
+        saveFigureOrThrow(parkingFigure(result, 0.40, 0.20), line.value("plot"));
     }
     if (result.cancelled) {
         std::fprintf(stderr, "prisca-cli: table1: interrupted; kept the %d trials that finished\n",

@@ -4,8 +4,12 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
+#include <QGuiApplication>
 
 #include <cstdio>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 
@@ -37,7 +41,20 @@ QString describeCommands() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    QCoreApplication application(argc, argv);
+    // A GUI application only so that plots can lay out text; the offscreen platform means no
+    // window and no display are ever needed.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+    // Without a runtime directory Qt warns on stderr, which would break the promise of one line
+    // there on error: give it a private one (mode 0700, as the XDG specification asks).
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QByteArray runtime = QDir::tempPath().toLocal8Bit() + "/prisca-runtime-" +
+                                   QByteArray::number(static_cast<qulonglong>(getuid()));
+        ::mkdir(runtime.constData(), 0700);
+        qputenv("XDG_RUNTIME_DIR", runtime);
+    }
+    QGuiApplication application(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));
     QCoreApplication::setApplicationName(QStringLiteral("prisca-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PRISCA_VERSION));

@@ -1,5 +1,6 @@
 // prisca-cli simulate, demo, fit and run end to end on real files, and every bad-input path:
 // one line on stderr naming the problem, exit code 2, nothing written.
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -430,6 +431,20 @@ class TestCliCommands : public QObject {
         QCOMPARE(lines.first(), QByteArray("H,gamma,variance,satisfied"));
         // H = 1, gamma = 0: D = (1/2, 1) over tau' = 2 steps, variance 1/16.
         QCOMPARE(lines[1], QByteArray("1,0,0.0625,1"));
+    }
+
+    void plots_areWrittenAsPngAndSvg() {
+        QCOMPARE(cli({"table1", "--trials", "2", "--training-trials", "1", "--plot", "fig7.png"})
+                     .exitCode,
+                 0);
+        QCOMPARE(QImage(path("fig7.png")).size(), QSize(1500, 1000));
+        QCOMPARE(cli({"lemma41", "--out", "l.csv", "--plot", "fig2.svg"}).exitCode, 0);
+        QFile svg(path("fig2.svg"));
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        QVERIFY(svg.readAll().contains("<svg"));
+        const CliResult bad = cli({"lemma41", "--out", "l.csv", "--plot", "fig2.gif"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("fig2.gif"), qPrintable(bad.err));
     }
 
     void table1_interruptKeepsWhatFinished() {

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "app/plot/Figure.h"
+#include "core/Lemma41.h"
+#include "core/Statistics.h"
+#include "sim/LearningCurveExperiment.h"
+#include "sim/Table1Experiment.h"
+
+#include <vector>
+
+namespace prisca::app::cli {
+
+/// Fig. 7: the trajectories and end postures of action playback, PD and PRISCA (top: the whole
+/// manoeuvre; bottom: a close-up of the lot), in centimetres. Methods missing from the result
+/// are left out.
+plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, double carWidth);
+
+/// Fig. 3b: mean tracking error and 95% band per method against simulated time, log scale.
+plot::Figure learningCurveFigure(const std::vector<QString>& methods,
+                                 const std::vector<std::vector<double>>& seconds,
+                                 const std::vector<core::ConfidenceBand>& bands,
+                                 const QString& yLabel);
+
+/// Fig. 2: where Var(D) < 1 on the (H, gamma) grid.
+plot::Figure lemma41Figure(const std::vector<core::Lemma41Cell>& grid, int maxHorizon,
+                           int gammaSteps);
+
+/// Saves a figure; UsageError naming the path on failure.
+void saveFigureOrThrow(const plot::Figure& figure, const QString& path);
+
+}  // namespace prisca::app::cli
