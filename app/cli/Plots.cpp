@@ -142,6 +142,43 @@ plot::Figure lemma41Figure(const std::vector<core::Lemma41Cell>& grid, int maxHo
     return figure;
 }
 
+plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
+                              const std::vector<TrajectoryPanel>& panels) {
+    plot::Figure figure;
+    figure.size = QSize(700 * static_cast<int>(std::max<size_t>(1, panels.size())), 700);
+    figure.columns = static_cast<int>(std::max<size_t>(1, panels.size()));
+    for (const TrajectoryPanel& panel : panels) {
+        plot::Axes axes;
+        double mean = 0.0;
+        for (double r : panel.rms) {
+            mean += r / std::max<size_t>(1, panel.rms.size());
+        }
+        axes.title = QStringLiteral("%1: tracking RMS %2 m (mean of %3)")
+                         .arg(core::table1Label(panel.method))
+                         .arg(mean, 0, 'f', 2)
+                         .arg(panel.rms.size());
+        axes.xLabel = QStringLiteral("x [m]");
+        axes.yLabel = QStringLiteral("y [m]");
+        axes.equalAspect = true;
+        plot::Line target;
+        target.label = QStringLiteral("desired");
+        target.color = QColor(0x2c, 0xa0, 0x2c);
+        target.width = 2.5;
+        target.points = desired;
+        for (size_t t = 0; t < panel.paths.size(); ++t) {
+            plot::Line actual;
+            actual.label = t == 0 ? QStringLiteral("actual") : QString();
+            actual.color = QColor(0xd6, 0x27, 0x28, 150);
+            actual.width = 1.2;
+            actual.points = panel.paths[t];
+            axes.lines.push_back(actual);
+        }
+        axes.lines.push_back(target);
+        figure.panels.push_back(axes);
+    }
+    return figure;
+}
+
 void saveFigureOrThrow(const plot::Figure& figure, const QString& path) {
     QString error;
     if (!plot::saveFigure(figure, path, &error)) {

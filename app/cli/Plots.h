@@ -25,6 +25,18 @@ plot::Figure learningCurveFigure(const std::vector<QString>& methods,
 plot::Figure lemma41Figure(const std::vector<core::Lemma41Cell>& grid, int maxHorizon,
                            int gammaSteps);
 
+/// One method's trials for trajectoryFigure.
+struct TrajectoryPanel {
+    QString method;
+    std::vector<std::vector<QPointF>> paths;  ///< per trial, world x, y [m]
+    std::vector<double> rms;                  ///< per trial, tracking RMS [m]
+};
+
+/// Fig. 4: the desired path (green) and every trial's actual path (red), one panel per method,
+/// with the mean tracking RMS in the title.
+plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
+                              const std::vector<TrajectoryPanel>& panels);
+
 /// Saves a figure; UsageError naming the path on failure.
 void saveFigureOrThrow(const plot::Figure& figure, const QString& path);
 

@@ -1,6 +1,7 @@
 // prisca-cli run: PRISCA or a baseline on a simulated plant, trial after trial, with a run log.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
 #include "core/RunLogCsv.h"
 #include "sim/ControllerFactory.h"
@@ -80,6 +81,12 @@ int runCommand(const QStringList& arguments) {
     line.addValue("training-trials", "Training trials for PEGASUS and PD (selected).", "N", "4");
     line.addValue("jobs", "Worker threads for training.", "N", "2");
     line.addValue("out", "Run log CSV.", "file");
+    line.addValue("compare", "Also run this method on the same trials and report it beside.",
+                  "name");
+    line.addValue("plot",
+                  "Draw desired and actual paths (of both methods with --compare) to this "
+                  ".png or .svg file (planar vehicles).",
+                  "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -133,35 +140,43 @@ int runCommand(const QStringList& arguments) {
     episode.stopAtRestAfter = profile.info.pose ? demoDuration : -1.0;
 
     // Offline-tuned methods train first, on their own seeds.
-    Eigen::MatrixXd pegasusTheta;
-    if (method == QLatin1String("pegasus") || method == QLatin1String("pd-selected")) {
-        sim::TrainingSetup training;
-        training.plant = task.plant;
-        training.profile = profile;
-        training.demonstration = task.demonstration;
-        training.fittedB = task.fit.b;
-        training.episode = episode;
-        training.episode.recordSteps = false;
-        for (int i = 0; i < trainingTrials; ++i) {
-            training.seeds.push_back(sim::mixSeed(seed ^ kTrainingStream, i));
+    const auto build = [&](const QString& name) {
+        Eigen::MatrixXd pegasusTheta;
+        sim::PlantProfile tuned = profile;
+        if (name == QLatin1String("pegasus") || name == QLatin1String("pd-selected")) {
+            sim::TrainingSetup training;
+            training.plant = task.plant;
+            training.profile = profile;
+            training.demonstration = task.demonstration;
+            training.fittedB = task.fit.b;
+            training.episode = episode;
+            training.episode.recordSteps = false;
+            for (int i = 0; i < trainingTrials; ++i) {
+                training.seeds.push_back(sim::mixSeed(seed ^ kTrainingStream, i));
+            }
+            training.threads = jobs;
+            training.progress = [](const QString& text) { printProgress(text); };
+            if (name == QLatin1String("pegasus")) {
+                const int iterations = line.isSet("iterations")
+                                           ? static_cast<int>(line.integer("iterations", 0, 100000))
+                                           : profile.pegasusIterations;
+                pegasusTheta = sim::trainPegasus(training, iterations).theta;
+            } else {
+                tuned.pd = sim::selectPdGains(training);
+            }
+            printProgress(QString());
         }
-        training.threads = jobs;
-        training.progress = [](const QString& text) { printProgress(text); };
-        if (method == QLatin1String("pegasus")) {
-            const int iterations = line.isSet("iterations")
-                                       ? static_cast<int>(line.integer("iterations", 0, 100000))
-                                       : profile.pegasusIterations;
-            pegasusTheta = sim::trainPegasus(training, iterations).theta;
-        } else {
-            profile.pd = sim::selectPdGains(training);
-        }
-        printProgress(QString());
-    }
+        return sim::ControllerFactory::create(name, tuned, task.demonstration, task.fit.b,
+                                              pegasusTheta.size() ? &pegasusTheta : nullptr);
+    };
 
     auto plant = sim::PlantCatalog::create(task.plant, task.timing);
-    auto controller =
-        sim::ControllerFactory::create(method, profile, task.demonstration, task.fit.b,
-                                       pegasusTheta.size() ? &pegasusTheta : nullptr);
+    auto controller = build(method);
+    const QString compareMethod = line.value("compare");
+    if (!compareMethod.isEmpty() && !sim::ControllerFactory::isMethod(compareMethod)) {
+        throw UsageError(QStringLiteral("--compare: unknown method '%1'").arg(compareMethod));
+    }
+    auto comparison = compareMethod.isEmpty() ? nullptr : build(compareMethod);
     const sim::PlantInfo& info = plant->info();
 
     core::RunLog log;
@@ -215,13 +230,42 @@ int runCommand(const QStringList& arguments) {
     }
 
     QJsonArray trialsJson;
+    QJsonArray compareJson;
     QString text;
+    std::vector<std::vector<QPointF>> paths, comparePaths;
+    std::vector<double> rms, compareRms;
+    const auto pathOf = [&](const sim::EpisodeResult& result) {
+        std::vector<QPointF> path;
+        if (info.pose) {
+            for (const sim::StepRecord& step : result.steps) {
+                path.emplace_back(step.state[info.pose->x], step.state[info.pose->y]);
+            }
+        }
+        return path;
+    };
     for (int trial = 0; trial < trials; ++trial) {
         episode.seed = sim::mixSeed(seed, trial);
         episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+        if (comparison) {
+            // The same trial (seed, perturbation, sensor noise) for the other method.
+            const sim::EpisodeResult other = sim::runEpisode(*plant, *comparison, episode);
+            const sim::TrialSummary otherSummary = sim::summarizeTrial(info, demo, other);
+            compareRms.push_back(otherSummary.trackingRms);
+            comparePaths.push_back(pathOf(other));
+            compareJson.append(QJsonObject{
+                {"trial", trial},
+                {"finalPositionErrorCm", finiteOrNull(otherSummary.finalPositionError * 100.0)},
+                {"trackingRms", otherSummary.trackingRms}});
+            text += QStringLiteral("trial %1 (%2): tracking RMS %3\n")
+                        .arg(trial)
+                        .arg(compareMethod)
+                        .arg(otherSummary.trackingRms, 0, 'f', 4);
+        }
         const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, episode);
         appendTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
+        rms.push_back(summary.trackingRms);
+        paths.push_back(pathOf(result));
         trialsJson.append(QJsonObject{
             {"trial", trial},
             {"duration", summary.duration},
@@ -254,12 +298,32 @@ int runCommand(const QStringList& arguments) {
     if (!core::writeRunLogCsv(log, out, &error)) {
         throw UsageError(error.toString());
     }
+    if (line.isSet("plot")) {
+        if (!info.pose) {
+            throw UsageError(
+                QStringLiteral("--plot draws planar paths; '%1' has none").arg(task.plant));
+        }
+        std::vector<QPointF> desired;
+        for (int k = 0; k < demo.length(); ++k) {
+            desired.emplace_back(demo.states(k, info.pose->x), demo.states(k, info.pose->y));
+        }
+        std::vector<TrajectoryPanel> panels{{method, paths, rms}};
+        if (comparison) {
+            panels.insert(panels.begin(), TrajectoryPanel{compareMethod, comparePaths, compareRms});
+        }
+        saveFigureOrThrow(trajectoryFigure(desired, panels), line.value("plot"));
+    }
     if (line.format() == QLatin1String("json")) {
-        printJson({{"plant", task.plant},
-                   {"method", method},
-                   {"seed", static_cast<double>(seed)},
-                   {"trials", trialsJson},
-                   {"out", out}});
+        QJsonObject summary{{"plant", task.plant},
+                            {"method", method},
+                            {"seed", static_cast<double>(seed)},
+                            {"trials", trialsJson},
+                            {"out", out}};
+        if (comparison) {
+            summary.insert("compare",
+                           QJsonObject{{"method", compareMethod}, {"trials", compareJson}});
+        }
+        printJson(summary);
     } else {
         printText(text + QStringLiteral("wrote %1\n").arg(out));
     }

@@ -7,9 +7,9 @@
 #include <QDir>
 #include <QGuiApplication>
 
-#include <cstdio>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cstdio>
 
 namespace {
 

@@ -447,6 +447,33 @@ class TestCliCommands : public QObject {
         QVERIFY2(bad.err.contains("fig2.gif"), qPrintable(bad.err));
     }
 
+    void run_compareRunsBothMethodsOnTheSameTrialsAndPlotsThem() {
+        if (!QFile::exists(path("aircraft-demo.csv"))) {
+            QCOMPARE(cli({"demo", "--plant", "aircraft", "--out", "aircraft-demo.csv"}).exitCode,
+                     0);
+        }
+        const QStringList base = {"run",      "--plant", "aircraft", "--demo", "aircraft-demo.csv",
+                                  "--trials", "2",       "--format", "json"};
+        const CliResult both = cli(base + QStringList{"--method", "prisca", "--compare", "pd",
+                                                      "--out", "cmp.csv", "--plot", "fig4.png"});
+        QVERIFY2(both.exitCode == 0, qPrintable(both.err));
+        const QJsonObject summary = parseJson(both.out);
+        const QJsonArray compared = summary.value("compare").toObject().value("trials").toArray();
+        QCOMPARE(compared.size(), 2);
+        QCOMPARE(QImage(path("fig4.png")).size(), QSize(1400, 700));
+        // The comparison is the plain run of that method on the same seeds.
+        const CliResult alone = cli(base + QStringList{"--method", "pd", "--out", "pd.csv"});
+        QCOMPARE(alone.exitCode, 0);
+        const QJsonArray pdTrials = parseJson(alone.out).value("trials").toArray();
+        for (int t = 0; t < 2; ++t) {
+            QCOMPARE(compared[t].toObject().value("trackingRms").toDouble(),
+                     pdTrials[t].toObject().value("trackingRms").toDouble());
+        }
+        QCOMPARE(cli(base + QStringList{"--method", "prisca", "--compare", "lqr", "--out", "x.csv"})
+                     .exitCode,
+                 2);
+    }
+
     void table1_interruptKeepsWhatFinished() {
         QProcess process;
         process.setWorkingDirectory(dir_.path());
