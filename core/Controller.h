@@ -56,7 +56,8 @@ struct ControlStep {
 
 /// How reset() treats what was learned.
 enum class ResetMode {
-    Cold,      ///< forget everything: theta = 0, step counter 0
+    Cold,      ///< forget what was learned: theta back to its initial value (0 unless set), step
+               ///< counter 0
     WarmStart  ///< new trial, keep theta and the step-size schedule (learning continues)
 };
 

@@ -47,6 +47,7 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
     theta_.setZero(p, m);
+    initialTheta_.setZero(p, m);
     phi_.setZero(p, m);
     gradient_.setZero(p, m);
     smoothedA_.setZero(p, m);
@@ -72,6 +73,11 @@ void PriscaController::setTheta(const Eigen::MatrixXd& theta) {
     theta_ = theta;
 }
 
+void PriscaController::setInitialTheta(const Eigen::MatrixXd& theta) {
+    setTheta(theta);
+    initialTheta_ = theta;
+}
+
 void PriscaController::reset(ResetMode mode) {
     matcher_.reset();
     baseline_.reset();
@@ -82,7 +88,7 @@ void PriscaController::reset(ResetMode mode) {
     alpha_ = 0.0;
     smoothedCost_ = 0.0;
     if (mode == ResetMode::Cold) {
-        theta_.setZero();
+        theta_ = initialTheta_;
         learningStep_ = 0;
     }
 }

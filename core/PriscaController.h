@@ -59,6 +59,9 @@ class PriscaController : public Controller {
     const Eigen::MatrixXd& theta() const { return theta_; }
     /// Replaces theta (p x m), e.g. to evaluate a fixed policy or to warm start from a session.
     void setTheta(const Eigen::MatrixXd& theta);
+    /// The theta a cold reset returns to (zero unless set), e.g. a fixed policy found offline.
+    /// Also sets the current theta.
+    void setInitialTheta(const Eigen::MatrixXd& theta);
     /// Turns learning on or off from the next step (theta kept as it is).
     void setLearning(bool learning) { parameters_.learning = learning; }
     /// g of the last step (p x m).
@@ -99,6 +102,7 @@ class PriscaController : public Controller {
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
+    Eigen::MatrixXd initialTheta_;  // what a cold reset returns to
     Eigen::MatrixXd phi_;
     Eigen::MatrixXd gradient_;
     Eigen::MatrixXd smoothedA_;

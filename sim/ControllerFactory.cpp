@@ -43,7 +43,7 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
             profile.trackingProblem(demonstration, Mode::TimeDriven), profile.features,
             profile.mapping.asDouble(), frozen, QStringLiteral("pegasus"));
         if (theta) {
-            policy->setTheta(*theta);
+            policy->setInitialTheta(*theta);
         }
         return policy;
     }

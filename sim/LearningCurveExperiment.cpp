@@ -76,7 +76,6 @@ std::vector<MethodCurves> runLearningCurves(
         long long consumed = 0;
         if (method == QLatin1String("pegasus")) {
             // Fixed scenarios for this run; every rollout is charged to the budget.
-            std::vector<double> scenarioTracking;
             auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
                 auto policy = ControllerFactory::create(QStringLiteral("pegasus"), profile,
                                                         demonstration, fittedB, &theta);
@@ -84,7 +83,6 @@ std::vector<MethodCurves> runLearningCurves(
                 episode.seed = mixSeed(runSeed, 1000 + scenario);
                 const EpisodeResult result =
                     runEpisode(*plant, *policy, episode, settings.cancelled);
-                scenarioTracking.push_back(meanSquaredTracking(info, *demonstration, result));
                 return core::EpisodeOutcome{result.meanCost, result.stepCount};
             };
             core::PegasusParameters parameters = profile.pegasus;
@@ -94,16 +92,19 @@ std::vector<MethodCurves> runLearningCurves(
                                   parameters);
             while (consumed < settings.budgetSteps &&
                    !(settings.cancelled && settings.cancelled())) {
-                scenarioTracking.clear();
                 const auto iteration = pegasus.iterate(settings.cancelled);
                 if (!iteration) {
                     break;
                 }
-                // The first S rollouts of an iteration evaluate the current policy.
-                double mean = 0.0;
-                for (int s = 0; s < parameters.scenarios; ++s) {
-                    mean += scenarioTracking[s] / parameters.scenarios;
-                }
+                // Scored like the online learners: on a fresh trial it never trained on (an
+                // evaluation, so not charged to its budget).
+                auto policy = ControllerFactory::create(QStringLiteral("pegasus"), profile,
+                                                        demonstration, fittedB, &pegasus.theta());
+                EpisodeSettings episode = base;
+                episode.seed = mixSeed(runSeed, 5000 + static_cast<std::uint64_t>(curve.size()));
+                const EpisodeResult evaluation =
+                    runEpisode(*plant, *policy, episode, settings.cancelled);
+                const double mean = meanSquaredTracking(info, *demonstration, evaluation);
                 consumed = iteration->stepsConsumed;
                 curve.push_back({consumed, mean});
             }

@@ -41,8 +41,9 @@ struct MethodCurves {
 
 /// Runs the experiment: PRISCA and PGSD learn online over consecutive trials (warm start), and
 /// each trial's own tracking error is a point; PEGASUS iterates on fixed scenarios (mixSeed of the
-/// run seed), and after each iteration the mean tracking error of its scenario rollouts at the
-/// current policy is a point. Independent of the thread count.
+/// run seed), and after each iteration its policy is scored on a fresh trial it never trained on,
+/// as the online learners are (that evaluation is not charged to its budget). Independent of the
+/// thread count.
 std::vector<MethodCurves> runLearningCurves(
     const LearningCurveSettings& settings, std::shared_ptr<const core::Demonstration> demonstration,
     const PlantProfile& profile, const Eigen::MatrixXd& fittedB);

@@ -98,10 +98,12 @@ PlantProfile acrobot(const PlantInfo& info) {
                                 .finished();
     p.pd.kp = vector({20.0, 20.0});
     p.pd.kd = vector({0.0, 0.0});
-    p.pegasus.scenarios = 4;
-    p.pegasus.stepSize = 20.0;
+    // From a sweep on tuning seeds (run seed 100): step in {20, 1e3, 1e4, 1e5, 1e6}, h in {0.5, 2},
+    // scenarios in {1, 2, 4}, step limit in {5, 20, 50, 200}.
+    p.pegasus.scenarios = 2;
+    p.pegasus.stepSize = 1e5;
     p.pegasus.perturbation = 0.5;
-    p.pegasus.maxStepNorm = 5.0;
+    p.pegasus.maxStepNorm = 50.0;
     return p;
 }
 

@@ -306,6 +306,23 @@ class TestPriscaController : public QObject {
         QCOMPARE(copy->name(), QStringLiteral("prisca"));
     }
 
+    void coldReset_returnsToTheInitialThetaNotToZero() {
+        std::mt19937 rng(52);
+        auto demo = randomDemonstration(30, 2, 1, 0.05, rng);
+        PriscaParameters frozen;
+        frozen.learning = false;
+        PriscaController policy(problemFor(demo, MatchingParameters::Mode::TimeDriven, 10.0),
+                                FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2),
+                                frozen);
+        const Eigen::MatrixXd theta = Eigen::MatrixXd::Constant(1, 1, -2.5);
+        policy.setInitialTheta(theta);
+        policy.reset(ResetMode::Cold);
+        QCOMPARE(policy.theta(), theta);  // a fixed policy found offline survives a new trial
+        policy.setTheta(Eigen::MatrixXd::Constant(1, 1, 7.0));
+        policy.reset(ResetMode::Cold);
+        QCOMPARE(policy.theta(), theta);
+    }
+
     void frozenPolicy_keepsThetaAndSaturates() {
         std::mt19937 rng(51);
         auto demo = randomDemonstration(30, 2, 1, 0.05, rng);
