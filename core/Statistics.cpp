@@ -82,7 +82,7 @@ double logBeta(double a, double b) {
     return std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b);
 }
 
-// Continued fraction of the incomplete beta function (modified Lentz, Numerical Recipes 6.4);
+// Continued fraction of the incomplete beta function (modified Lentz method);
 // converges fast for x < (a + 1) / (a + b + 2), in O(sqrt(max(a, b))) iterations.
 double betaContinuedFraction(double a, double b, double x, double y) {
     constexpr double tiny = 1e-300;

@@ -38,8 +38,8 @@ Eigen::Vector4d AcrobotEquations::derivative(const Eigen::Vector4d& s,
     const double dth2 = s[3];
     const Eigen::Matrix2d m = massMatrix(th2);
     const double sin2 = std::sin(th2);
-    // The book's phi terms, written exactly as in Sutton & Barto so the reduction test compares
-    // like with like.
+    // The book's phi terms, written exactly as the book dynamics write them, so the reduction test
+    // compares like with like.
     const double phi2 = c.m2 * c.lc2 * c.g * std::cos(th1 + th2 - kPi / 2.0);
     const double phi1 = -c.m2 * c.l1 * c.lc2 * dth2 * dth2 * sin2 -
                         2.0 * c.m2 * c.l1 * c.lc2 * dth2 * dth1 * sin2 +

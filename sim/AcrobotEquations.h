@@ -4,7 +4,7 @@
 
 namespace prisca::sim {
 
-/// The constants of the common RL acrobot (Sutton & Barto; the gym Acrobot "book" dynamics).
+/// The constants of the common reinforcement-learning acrobot (its "book" dynamics).
 /// Plain data; SI units. The defaults are the standard values (DESIGN.md "Plants").
 struct AcrobotConstants {
     double m1 = 1.0;   ///< mass of link 1 [kg]

@@ -14,10 +14,9 @@ namespace prisca::sim {
 /// Physical constants of the small fixed-wing UAV (about 2 kg, 2 m span, cruising 15-20 m/s).
 /// Plain data; SI units. Aerodynamic derivatives are per radian and in the plant's frame (body x
 /// forward, y left, yaw counter-clockwise, rudder positive = nose left); their magnitudes are the
-/// usual textbook ones: the Navion has CY_beta -0.56, Cn_beta 0.071, Cn_r -0.125,
-/// |Cn_delta_r| 0.072 (Nelson, "Flight Stability and Automatic Control", app. B), the Aerosonde
-/// UAV CY_beta -0.98, Cn_beta 0.25, Cn_r -0.35 (Beard & McLain, "Small Unmanned Aircraft",
-/// app. E). Against NED body axes with the usual rudder sign (trailing edge left positive) the
+/// usual published ones: a light general-aviation aircraft has about CY_beta -0.56,
+/// Cn_beta 0.071, Cn_r -0.125, |Cn_delta_r| 0.072, and a small survey UAV about CY_beta -0.98,
+/// Cn_beta 0.25, Cn_r -0.35. Against NED body axes with the usual rudder sign (trailing edge left positive) the
 /// rudder derivatives flip sign; the beta and r ones do not.
 struct PlanarAircraftParameters {
     double mass = 2.0;              ///< [kg]

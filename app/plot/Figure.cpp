@@ -61,7 +61,7 @@ QFont makeFont(qreal pixels, int weight = QFont::Normal) {
 Style makeStyle(QSize size) {
     Style style;
     // Scales with the shorter side, counting a 3:2 landscape figure's height as its width, so a
-    // 1200 x 800 figure gets 16 px labels (Matplotlib's look at its default size).
+    // 1200 x 800 figure gets 16 px labels (the usual look of a plot at that size).
     const qreal side = std::min<qreal>(size.width(), size.height() * 1.5);
     style.em = std::clamp(side / 75.0, 9.0, 48.0);
     style.scale = style.em / 16.0;
@@ -251,7 +251,7 @@ QColor mix(const QColor& a, const QColor& b, double t) {
                             static_cast<float>(a.alphaF() + (b.alphaF() - a.alphaF()) * t));
 }
 
-// Matplotlib's viridis at nine evenly spaced points: perceptually uniform and readable in grey.
+// The viridis colour scale at nine evenly spaced points: perceptually uniform and readable in grey.
 const std::array<QRgb, 9> kViridis = {0x440154, 0x482878, 0x3e4989, 0x31688e, 0x26828e,
                                       0x1f9e89, 0x35b779, 0x6ece58, 0xfde725};
 

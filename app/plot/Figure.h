@@ -137,7 +137,7 @@ std::vector<double> niceTicks(double lo, double hi, int target);
 /// so there are at most about target; within less than a decade, 1-2-5 values or nice ticks.
 std::vector<double> logTicks(double lo, double hi, int target);
 
-/// The i-th colour of the default palette (Matplotlib's "tab10"); wraps around.
+/// The i-th colour of the default palette (a ten-colour categorical palette); wraps around.
 QColor paletteColor(int index);
 
 }  // namespace prisca::app::plot
