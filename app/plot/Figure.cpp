@@ -5,7 +5,6 @@
 #include <QGuiApplication>
 #include <QLinearGradient>
 #include <QPainter>
-#include <QPainterPath>
 #include <QSaveFile>
 #include <QSvgGenerator>
 
@@ -20,9 +19,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxImageSide = 16384;
-// Points per drawPolyline call: the stroker's cost grows faster than linearly with the length of
-// one self-overlapping antialiased path, and short calls keep it flat.
+// Points per drawPolyline call (SVG, shape outlines): one stroked path's cost grows faster than
+// linearly with its length where it overlaps itself; raster lines avoid polylines altogether.
 constexpr int kPolylineChunk = 1024;
+// Segments per drawLines call (raster images).
+constexpr std::size_t kSegmentBatch = 1024;
 
 const QColor kFrameColor(0x33, 0x33, 0x33);
 const QColor kGridColor(0xe3, 0xe3, 0xe3);
@@ -60,10 +61,11 @@ QFont makeFont(qreal pixels, int weight = QFont::Normal) {
 
 Style makeStyle(QSize size) {
     Style style;
-    // Scales with the shorter side, counting a 3:2 landscape figure's height as its width, so a
-    // 1200 x 800 figure gets 16 px labels (the usual look of a plot at that size).
+    // Grows with the square root of the shorter side (a 3:2 landscape figure's height counted as
+    // its width): 16 px labels at 1200 x 800, 14.6 px at 1000 x 800, not proportionally smaller
+    // text on smaller figures, which would drop below readable sizes first.
     const qreal side = std::min<qreal>(size.width(), size.height() * 1.5);
-    style.em = std::clamp(side / 75.0, 9.0, 48.0);
+    style.em = std::clamp(16.0 * std::sqrt(std::max<qreal>(side, 1.0) / 1200.0), 9.0, 48.0);
     style.scale = style.em / 16.0;
     style.tickFont = makeFont(style.em * 0.85);
     style.exponentFont = makeFont(style.em * 0.6);
@@ -173,7 +175,8 @@ std::vector<TickLabel> linearLabels(const std::vector<double>& ticks) {
     if (!(step > 0.0)) {
         step = largest > 0.0 ? largest : 1.0;
     }
-    const bool scientific = largest >= 1e5 || (largest > 0.0 && largest < 1e-3);
+    // Up to six digits read more easily than "2e4" (step counts, time in ms).
+    const bool scientific = largest >= 1e6 || (largest > 0.0 && largest < 1e-3);
     for (const double t : ticks) {
         const double v = std::abs(t) < step * 1e-9 ? 0.0 : t;
         QString text;
@@ -192,13 +195,20 @@ std::vector<TickLabel> linearLabels(const std::vector<double>& ticks) {
     return labels;
 }
 
+bool isPowerOfTen(double v) {
+    const double exponent = std::log10(v);
+    return std::abs(exponent - std::round(exponent)) < 1e-9;
+}
+
+// Powers of ten as 10 with a superscript exponent; a mix with 2 and 5 multiples (axes spanning
+// few decades) as plain numbers throughout, so neighbouring labels read alike.
 std::vector<TickLabel> logLabels(const std::vector<double>& ticks) {
+    const bool decades = std::all_of(ticks.begin(), ticks.end(), isPowerOfTen);
     std::vector<TickLabel> labels;
     for (const double t : ticks) {
-        const double exponent = std::log10(t);
-        const long rounded = std::lround(exponent);
-        if (std::abs(exponent - rounded) < 1e-9) {
-            labels.push_back({QStringLiteral("10"), withMinusSign(QString::number(rounded))});
+        if (decades) {
+            const long exponent = std::lround(std::log10(t));
+            labels.push_back({QStringLiteral("10"), withMinusSign(QString::number(exponent))});
         } else {
             labels.push_back({withMinusSign(compactExponent(QString::number(t, 'g', 6))), {}});
         }
@@ -448,9 +458,10 @@ QPolygonF clipPolygon(const QPolygonF& polygon, const QRectF& rect) {
     return input;
 }
 
-// Keeps, per pixel column, the first, lowest, highest and last point (in their order): what
-// an antialiased line of many more points than pixels looks like, at a fraction of the cost.
-Polyline decimate(const Polyline& points) {
+// Keeps, per column 1/columnsPerPixel wide, the first, lowest, highest and last point (in their
+// order): what an antialiased line of many more points than columns looks like, at a fraction
+// of the cost and file size.
+Polyline decimate(const Polyline& points, qreal columnsPerPixel) {
     Polyline out;
     out.reserve(std::min<std::size_t>(points.size(), 4096));
     std::size_t begin = 0;
@@ -474,7 +485,8 @@ Polyline decimate(const Polyline& points) {
         }
     };
     for (std::size_t i = 1; i <= points.size(); ++i) {
-        if (i == points.size() || std::floor(points[i].x()) != std::floor(points[begin].x())) {
+        if (i == points.size() || std::floor(points[i].x() * columnsPerPixel) !=
+                                      std::floor(points[begin].x() * columnsPerPixel)) {
             emitBucket(begin, i);
             begin = i;
         }
@@ -651,22 +663,17 @@ void resolveRange(PanelPlan* plan) {
     double y0 = data.hasY() ? data.y0 : (logY ? 1.0 : 0.0);
     double y1 = data.hasY() ? data.y1 : (logY ? 10.0 : 1.0);
     // A heatmap fills its panel edge to edge unless other data reaches beyond it.
-    const bool snug = heatmap && !data.hasX() == false &&
-                      (!others.hasX() || (others.x0 >= data.x0 && others.x1 <= data.x1));
     const QRectF extent = heatmap ? axes.heatmap->extent : QRectF();
-    const bool snugX = heatmap && snug && data.x0 == extent.left() && data.x1 == extent.right();
-    const bool snugY = heatmap &&
-                       (!others.hasY() || (others.y0 >= data.y0 && others.y1 <= data.y1)) &&
-                       data.y0 == extent.top() && data.y1 == extent.bottom();
-    if (plan->empty || !snugX) {
-        if (any) {
-            pad(&x0, &x1, 0.05, false);
-        }
+    const bool snugX =
+        heatmap && (!others.hasX() || (others.x0 >= extent.left() && others.x1 <= extent.right()));
+    const bool snugY =
+        heatmap && (!logY || extent.top() > 0.0) &&
+        (!others.hasY() || (others.y0 >= extent.top() && others.y1 <= extent.bottom()));
+    if (any && !snugX) {
+        pad(&x0, &x1, 0.05, false);
     }
-    if (plan->empty || !snugY) {
-        if (any) {
-            pad(&y0, &y1, 0.05, logY);
-        }
+    if (any && !snugY) {
+        pad(&y0, &y1, 0.05, logY);
     }
     if (axes.range) {
         const QRectF r = axes.range->normalized();
@@ -836,8 +843,11 @@ void computeTicks(PanelPlan* plan, const Style& style) {
         if (map.y1 - map.y0 <= 8.0) {
             for (int k = static_cast<int>(std::floor(map.y0)); k <= std::ceil(map.y1); ++k) {
                 for (int m = 2; m <= 9; ++m) {
-                    const double v = m * std::pow(10.0, k);
-                    if (v >= lo && v <= hi) {
+                    const double v = k >= 0 ? m * std::pow(10.0, k) : m / std::pow(10.0, -k);
+                    const bool major =
+                        std::find(plan->yTicks.major.begin(), plan->yTicks.major.end(), v) !=
+                        plan->yTicks.major.end();
+                    if (v >= lo && v <= hi && !major) {
                         plan->yTicks.minor.push_back(v);
                     }
                 }
@@ -919,8 +929,7 @@ Margins neededMargins(const PanelPlan& plan, const Style& style) {
         overhangLeft = std::max(overhangLeft, plan.area.left() - (x - half));
         overhangRight = std::max(overhangRight, x + half - plan.area.right());
     }
-    m.left = std::max(m.left, style.pad + overhangLeft + (plan.area.left() - plan.cell.left()) -
-                                  (plan.area.left() - plan.cell.left()));
+    m.left = std::max(m.left, style.pad + overhangLeft);
     m.right =
         style.pad + std::max<qreal>(overhangRight, style.em * 0.5) + colourKeyWidth(plan, style);
     return m;
@@ -1036,6 +1045,89 @@ void drawPieces(QPainter& painter, const std::vector<Polyline>& pieces, QPen pen
     }
 }
 
+// Raster images: each segment on its own, which Qt fills as a simple quadrilateral. One long
+// self-overlapping polyline is filled as a single path instead, and a dense 4,000-point zigzag
+// then takes 16 s rather than 50 ms. Square caps close the joins of curves; a dash pattern
+// continues from segment to segment.
+void drawSegments(QPainter& painter, const std::vector<Polyline>& pieces, QPen pen) {
+    const bool dashed = pen.style() != Qt::SolidLine;
+    pen.setCapStyle(dashed ? Qt::FlatCap : Qt::SquareCap);
+    painter.setPen(pen);
+    const qreal unit = std::max<qreal>(pen.widthF(), 1.0);
+    std::vector<QLineF> batch;
+    batch.reserve(kSegmentBatch);
+    const auto flush = [&] {
+        if (!batch.empty()) {
+            painter.drawLines(batch.data(), static_cast<int>(batch.size()));
+            batch.clear();
+        }
+    };
+    for (const Polyline& piece : pieces) {
+        qreal dashOffset = 0.0;
+        for (std::size_t i = 1; i < piece.size(); ++i) {
+            const QLineF segment(piece[i - 1], piece[i]);
+            const qreal length = segment.length();
+            if (length <= 0.0) {
+                continue;
+            }
+            if (dashed) {
+                pen.setDashOffset(dashOffset);
+                painter.setPen(pen);
+                painter.drawLine(segment);
+                dashOffset += length / unit;
+                continue;
+            }
+            batch.push_back(segment);
+            if (batch.size() == kSegmentBatch) {
+                flush();
+            }
+        }
+    }
+    flush();
+}
+
+// Strokes a line's visible pieces. A translucent raster line goes through an opaque layer laid
+// on at the line's alpha, so where its segments overlap it does not darken in spots.
+void strokePieces(QPainter& painter, const std::vector<Polyline>& pieces, const QPen& pen,
+                  const QRectF& clip, const Target& target) {
+    if (target.vector) {
+        drawPieces(painter, pieces, pen);  // the viewer rasterizes; keep the joins exact
+        return;
+    }
+    if (pen.color().alpha() == 255 || target.mask) {
+        drawSegments(painter, pieces, pen);
+        return;
+    }
+    QRectF bounds;
+    for (const Polyline& piece : pieces) {
+        for (const QPointF& p : piece) {
+            bounds |= QRectF(p, QSizeF(0.001, 0.001));
+        }
+    }
+    const qreal reach = pen.widthF() + 2.0;
+    const QRect rect =
+        bounds.adjusted(-reach, -reach, reach, reach).intersected(clip).toAlignedRect();
+    if (rect.isEmpty()) {
+        return;
+    }
+    QImage layer(rect.size(), QImage::Format_ARGB32_Premultiplied);
+    layer.fill(Qt::transparent);
+    {
+        QPainter layerPainter(&layer);
+        layerPainter.setRenderHint(QPainter::Antialiasing, true);
+        layerPainter.translate(-rect.topLeft());
+        QPen opaque = pen;
+        QColor color = pen.color();
+        color.setAlpha(255);
+        opaque.setColor(color);
+        drawSegments(layerPainter, pieces, opaque);
+    }
+    painter.save();
+    painter.setOpacity(pen.color().alphaF());
+    painter.drawImage(rect.topLeft(), layer);
+    painter.restore();
+}
+
 void drawHeatmap(QPainter& painter, const PanelPlan& plan, const Target& target) {
     if (!plan.heatmap.valid || target.mask) {
         return;
@@ -1050,33 +1142,57 @@ void drawHeatmap(QPainter& painter, const PanelPlan& plan, const Target& target)
     // Adjacent antialiased rectangles leave faint seams; whole-pixel fills do not.
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(Qt::NoPen);
-    const qreal overlap = target.vector ? 0.4 : 0.0;  // hides seams in SVG viewers
-    for (int r = 0; r < heatmap.rows; ++r) {
+    // An SVG viewer antialiases every edge, so abutting rectangles show hairline seams. There each
+    // run reaches one cell further right and down, rows drawn top to bottom and runs left to
+    // right: every cell is painted last by its own rectangle over an already covered boundary.
+    const double spill = target.vector ? 1.0 : 0.0;
+    std::vector<QRectF> blanks;
+    for (int r = heatmap.rows - 1; r >= 0; --r) {
         const double ya = heatmap.extent.top() + r * cellHeight;
-        const qreal top = map.py(ya + cellHeight);
-        const qreal bottom = map.py(ya);
+        const double yb = ya + cellHeight;
+        const qreal top = map.py(yb);
+        const qreal bottom = map.py(std::max(ya - spill * cellHeight, heatmap.extent.top()));
         if (!finite(top) || !finite(bottom)) {
             continue;
         }
-        for (int c = 0; c < heatmap.columns; ++c) {
+        const auto colourOf = [&](int c) {
             const double v = heatmap.values[static_cast<std::size_t>(r) * heatmap.columns + c];
             if (!finite(v)) {
-                continue;
+                return QColor();  // left blank
+            }
+            if (heatmap.threshold) {
+                return v < *heatmap.threshold ? h.below : h.above;
+            }
+            return h.scale.at(span > 0.0 ? (v - h.minimum) / span : 0.0);
+        };
+        // One rectangle per run of equal colour along the row: a threshold map becomes a few
+        // dozen rectangles instead of thousands of SVG elements.
+        for (int c = 0; c < heatmap.columns;) {
+            const QColor color = colourOf(c);
+            int end = c + 1;
+            while (end < heatmap.columns && colourOf(end) == color) {
+                ++end;
             }
             const double xa = heatmap.extent.left() + c * cellWidth;
-            QRectF cell(QPointF(map.px(xa), top), QPointF(map.px(xa + cellWidth), bottom));
-            cell = cell.normalized().adjusted(0, -overlap, overlap, 0).intersected(plan.area);
-            if (cell.isEmpty()) {
-                continue;
+            const double xb = heatmap.extent.left() + end * cellWidth;
+            if (color.isValid()) {
+                const double right = std::min(xb + spill * cellWidth, heatmap.extent.right());
+                const QRectF run = QRectF(QPointF(map.px(xa), top), QPointF(map.px(right), bottom))
+                                       .normalized()
+                                       .intersected(plan.area);
+                if (!run.isEmpty()) {
+                    painter.fillRect(run, color);
+                }
+            } else if (spill > 0.0) {
+                blanks.push_back(QRectF(QPointF(map.px(xa), top), QPointF(map.px(xb), map.py(ya)))
+                                     .normalized()
+                                     .intersected(plan.area));
             }
-            QColor color;
-            if (heatmap.threshold) {
-                color = v < *heatmap.threshold ? h.below : h.above;
-            } else {
-                color = h.scale.at(span > 0.0 ? (v - h.minimum) / span : 0.0);
-            }
-            painter.fillRect(cell, color);
+            c = end;
         }
+    }
+    for (const QRectF& blank : blanks) {
+        painter.fillRect(blank, Qt::white);  // undo the neighbours' spill
     }
     painter.restore();
 }
@@ -1165,7 +1281,9 @@ void drawLines(QPainter& painter, const PanelPlan& plan, const Style& style, con
     // Geometry is cut at the plot area (SVG); a raster image gets a margin and the painter's
     // exact clip instead, so line ends at the frame are not capped.
     const QRectF clip = target.vector ? plan.area : plan.area.adjusted(-4, -4, 4, 4);
-    const std::size_t decimateAbove = static_cast<std::size_t>(4 * plan.area.width());
+    // SVG keeps quarter-pixel detail, so a reader may zoom in four times.
+    const qreal columnsPerPixel = target.vector ? 4.0 : 1.0;
+    const auto decimateAbove = static_cast<std::size_t>(4.0 * columnsPerPixel * plan.area.width());
     for (std::size_t l = 0; l < plan.axes->lines.size(); ++l) {
         const Line& line = plan.axes->lines[l];
         const qreal width = line.width * style.scale;
@@ -1176,15 +1294,14 @@ void drawLines(QPainter& painter, const PanelPlan& plan, const Style& style, con
                 clipper.add(map(p.x(), p.y()));
             }
         }
-        if (!target.vector) {
-            for (Polyline& piece : pieces) {
-                if (piece.size() > decimateAbove) {
-                    piece = decimate(piece);
-                }
+        for (Polyline& piece : pieces) {
+            if (piece.size() > decimateAbove) {
+                piece = decimate(piece, columnsPerPixel);
             }
         }
         if (line.style != Qt::NoPen) {
-            drawPieces(painter, pieces, dataPen(plan.lineColors[l], width, line.style, target));
+            strokePieces(painter, pieces, dataPen(plan.lineColors[l], width, line.style, target),
+                         clip, target);
         }
         if (line.markers) {
             std::vector<QPointF> visible;
@@ -1629,6 +1746,23 @@ std::vector<double> logTicks(double lo, double hi, int target) {
     const int k1 = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
     const int decades = k1 - k0 + 1;
     std::vector<double> ticks;
+    // Fewer than three powers of ten inside: 1, 2 and 5 times powers of ten label the axis
+    // better (0.02 0.05 0.1 0.2 ...), if they are not too many.
+    if (decades < 3) {
+        for (int k = static_cast<int>(std::floor(std::log10(lo)));
+             k <= static_cast<int>(std::ceil(std::log10(hi))); ++k) {
+            for (const int m : {1, 2, 5}) {
+                const double v = k >= 0 ? m * std::pow(10.0, k) : m / std::pow(10.0, -k);
+                if (v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12)) {
+                    ticks.push_back(v);
+                }
+            }
+        }
+        if (ticks.size() >= 2 && static_cast<int>(ticks.size()) <= target) {
+            return ticks;
+        }
+        ticks.clear();
+    }
     if (decades >= 2) {
         const int every = (decades + target - 1) / target;
         // Multiples of the stride (10^0, 10^3, 10^6, ...), so labels read as a regular scale.
@@ -1641,27 +1775,15 @@ std::vector<double> logTicks(double lo, double hi, int target) {
         }
         return ticks;
     }
-    // Less than two powers of ten inside: 1, 2 and 5 times powers of ten, else linear nice ticks.
-    for (int k = static_cast<int>(std::floor(std::log10(lo))); k <= std::ceil(std::log10(hi));
-         ++k) {
-        for (const int m : {1, 2, 5}) {
-            const double v = k >= 0 ? m * std::pow(10.0, k) : m / std::pow(10.0, -k);
-            if (v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12)) {
-                ticks.push_back(v);
-            }
-        }
-    }
-    if (ticks.size() >= 2 && static_cast<int>(ticks.size()) <= target) {
-        return ticks;
-    }
+    // Within a decade and too many 1-2-5 values for the room: evenly spaced nice values.
     return niceTicks(lo, hi, target);
 }
 
 QColor paletteColor(int index) {
-    static const std::array<QRgb, 10> kTab10 = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
-                                                0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
-    const int n = static_cast<int>(kTab10.size());
-    return QColor(kTab10[static_cast<std::size_t>(((index % n) + n) % n)]);
+    static const std::array<QRgb, 10> kPalette = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
+                                                  0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+    const int n = static_cast<int>(kPalette.size());
+    return QColor(kPalette[static_cast<std::size_t>(((index % n) + n) % n)]);
 }
 
 std::vector<PanelGeometry> layoutFigure(const Figure& figure) {

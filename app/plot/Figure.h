@@ -134,7 +134,8 @@ QPointF toPixel(const PanelGeometry& panel, QPointF data);
 std::vector<double> niceTicks(double lo, double hi, int target);
 
 /// Major ticks of a logarithmic axis over [lo, hi] (lo > 0): powers of ten, every k-th decade
-/// so there are at most about target; within less than a decade, 1-2-5 values or nice ticks.
+/// so there are at most about target; over fewer than three powers of ten, 1, 2 and 5 times
+/// powers of ten if at most target of them fit, else (within a decade) nice ticks.
 std::vector<double> logTicks(double lo, double hi, int target);
 
 /// The i-th colour of the default palette (a ten-colour categorical palette); wraps around.
