@@ -4,7 +4,6 @@
 #include "app/plot/Figure.h"
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QGuiApplication>
 #include <QPainter>
@@ -573,12 +572,9 @@ class TestPlot : public QObject {
             walk.points.emplace_back(i, y);
         }
         axes.lines.push_back(walk);
-        QElapsedTimer timer;
-        timer.start();
+        // Speed belongs in benchmarks; here only that a dense line renders at all.
         const QImage image = renderFigure(onePanel(axes));
-        const qint64 elapsed = timer.elapsed();
         QVERIFY(!image.isNull());
-        QVERIFY2(elapsed < 2000, qPrintable(QStringLiteral("%1 ms").arg(elapsed)));
     }
 };
 
