@@ -24,6 +24,27 @@ double trackedError(const PlantInfo& info, const core::Demonstration& demonstrat
     return std::sqrt(sum);
 }
 
+double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstration, double x,
+                      double y) {
+    const auto& p = *info.pose;
+    const int T = demonstration.length();
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < T; ++j) {
+        const double ax = demonstration.states(j, p.x), ay = demonstration.states(j, p.y);
+        if (j + 1 == T) {
+            best = std::min(best, std::hypot(x - ax, y - ay));
+            break;
+        }
+        const double dx = demonstration.states(j + 1, p.x) - ax;
+        const double dy = demonstration.states(j + 1, p.y) - ay;
+        const double length2 = dx * dx + dy * dy;
+        const double s =
+            length2 > 0.0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / length2, 0.0, 1.0) : 0.0;
+        best = std::min(best, std::hypot(x - ax - s * dx, y - ay - s * dy));
+    }
+    return best;
+}
+
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
                             const EpisodeResult& result) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -43,14 +64,22 @@ TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& de
     }
     if (result.steps.empty()) {
         summary.trackingRms = nan;
+        summary.pathRms = nan;
     } else {
-        double sum = 0.0;
+        double sum = 0.0, pathSum = 0.0;
         for (size_t k = 0; k < result.steps.size(); ++k) {
-            const double e =
-                trackedError(info, demonstration, result.steps[k].state, static_cast<int>(k));
+            const Eigen::VectorXd& state = result.steps[k].state;
+            const double e = trackedError(info, demonstration, state, static_cast<int>(k));
             sum += e * e;
+            if (info.pose) {
+                const double d =
+                    distanceToPath(info, demonstration, state[info.pose->x], state[info.pose->y]);
+                pathSum += d * d;
+            }
         }
-        summary.trackingRms = std::sqrt(sum / result.steps.size());
+        const double count = static_cast<double>(result.steps.size());
+        summary.trackingRms = std::sqrt(sum / count);
+        summary.pathRms = info.pose ? std::sqrt(pathSum / count) : nan;
     }
     return summary;
 }

@@ -13,8 +13,11 @@ struct TrialSummary {
     double finalPositionError = 0.0;  ///< |p_end - p_lot| [m] (planar vehicles)
     double finalHeadingError = 0.0;   ///< |wrap(psi_end - psi_lot)| [rad] (planar vehicles)
     double trackingRms = 0.0;         ///< RMS over time of the tracked error (see trackedError)
-    double meanCost = 0.0;            ///< mean C_k the controller saw
-    double duration = 0.0;            ///< simulated time [s]
+    /// RMS over time of the distance to the nearest point of the demonstrated path [m]: how well
+    /// the path is held regardless of timing (planar vehicles; NaN otherwise).
+    double pathRms = 0.0;
+    double meanCost = 0.0;  ///< mean C_k the controller saw
+    double duration = 0.0;  ///< simulated time [s]
 };
 
 /// The error that "tracking error" means for a plant at step k, against the demonstration
@@ -23,6 +26,10 @@ struct TrialSummary {
 double trackedError(const PlantInfo& info, const core::Demonstration& demonstration,
                     const Eigen::VectorXd& state, int step);
 
+/// Distance [m] from (x, y) to the polyline through the demonstration's positions.
+/// Requires a planar vehicle (info.pose).
+double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstration, double x,
+                      double y);
 /// Summary of a trial against the demonstration (the lot is its final pose).
 /// The result must have its steps recorded for trackingRms (else it is NaN).
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,

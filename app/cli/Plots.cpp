@@ -149,13 +149,17 @@ plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
     figure.columns = static_cast<int>(std::max<size_t>(1, panels.size()));
     for (const TrajectoryPanel& panel : panels) {
         plot::Axes axes;
-        double mean = 0.0;
-        for (double r : panel.rms) {
-            mean += r / std::max<size_t>(1, panel.rms.size());
-        }
-        axes.title = QStringLiteral("%1: tracking RMS %2 m (mean of %3)")
+        const auto mean = [](const std::vector<double>& values) {
+            double sum = 0.0;
+            for (double v : values) {
+                sum += v;
+            }
+            return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+        };
+        axes.title = QStringLiteral("%1: RMS %2 m in time, %3 m to the path (mean of %4)")
                          .arg(core::table1Label(panel.method))
-                         .arg(mean, 0, 'f', 2)
+                         .arg(mean(panel.rms), 0, 'f', 2)
+                         .arg(mean(panel.pathRms), 0, 'f', 2)
                          .arg(panel.rms.size());
         axes.xLabel = QStringLiteral("x [m]");
         axes.yLabel = QStringLiteral("y [m]");

@@ -30,10 +30,11 @@ struct TrajectoryPanel {
     QString method;
     std::vector<std::vector<QPointF>> paths;  ///< per trial, world x, y [m]
     std::vector<double> rms;                  ///< per trial, tracking RMS [m]
+    std::vector<double> pathRms;              ///< per trial, RMS distance to the path [m]
 };
 
 /// Fig. 4: the desired path (green) and every trial's actual path (red), one panel per method,
-/// with the mean tracking RMS in the title.
+/// with the mean tracking RMS (time-aligned, and distance to the path) in the title.
 plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
                               const std::vector<TrajectoryPanel>& panels);
 

@@ -233,7 +233,7 @@ int runCommand(const QStringList& arguments) {
     QJsonArray compareJson;
     QString text;
     std::vector<std::vector<QPointF>> paths, comparePaths;
-    std::vector<double> rms, compareRms;
+    std::vector<double> rms, compareRms, pathRms, comparePathRms;
     const auto pathOf = [&](const sim::EpisodeResult& result) {
         std::vector<QPointF> path;
         if (info.pose) {
@@ -251,20 +251,28 @@ int runCommand(const QStringList& arguments) {
             const sim::EpisodeResult other = sim::runEpisode(*plant, *comparison, episode);
             const sim::TrialSummary otherSummary = sim::summarizeTrial(info, demo, other);
             compareRms.push_back(otherSummary.trackingRms);
+            comparePathRms.push_back(otherSummary.pathRms);
             comparePaths.push_back(pathOf(other));
             compareJson.append(QJsonObject{
                 {"trial", trial},
                 {"finalPositionErrorCm", finiteOrNull(otherSummary.finalPositionError * 100.0)},
-                {"trackingRms", otherSummary.trackingRms}});
-            text += QStringLiteral("trial %1 (%2): tracking RMS %3\n")
-                        .arg(trial)
-                        .arg(compareMethod)
-                        .arg(otherSummary.trackingRms, 0, 'f', 4);
+                {"trackingRms", otherSummary.trackingRms},
+                {"pathRms", finiteOrNull(otherSummary.pathRms)}});
+            text += info.pose ? QStringLiteral("trial %1 (%2): tracking RMS %3 m, path RMS %4 m\n")
+                                    .arg(trial)
+                                    .arg(compareMethod)
+                                    .arg(otherSummary.trackingRms, 0, 'f', 3)
+                                    .arg(otherSummary.pathRms, 0, 'f', 3)
+                              : QStringLiteral("trial %1 (%2): tracking RMS %3\n")
+                                    .arg(trial)
+                                    .arg(compareMethod)
+                                    .arg(otherSummary.trackingRms, 0, 'f', 4);
         }
         const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, episode);
         appendTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
         rms.push_back(summary.trackingRms);
+        pathRms.push_back(summary.pathRms);
         paths.push_back(pathOf(result));
         trialsJson.append(QJsonObject{
             {"trial", trial},
@@ -272,15 +280,17 @@ int runCommand(const QStringList& arguments) {
             {"finalPositionErrorCm", finiteOrNull(summary.finalPositionError * 100.0)},
             {"finalHeadingErrorDeg", finiteOrNull(summary.finalHeadingError * 180.0 / M_PI)},
             {"trackingRms", summary.trackingRms},
+            {"pathRms", finiteOrNull(summary.pathRms)},
             {"meanCost", summary.meanCost}});
         if (info.pose) {
             text += QStringLiteral(
                         "trial %1: final position error %2 cm, heading error %3 deg, "
-                        "tracking RMS %4 m\n")
+                        "tracking RMS %4 m, path RMS %5 m\n")
                         .arg(trial)
                         .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
                         .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
-                        .arg(summary.trackingRms, 0, 'f', 3);
+                        .arg(summary.trackingRms, 0, 'f', 3)
+                        .arg(summary.pathRms, 0, 'f', 3);
         } else {
             text += QStringLiteral("trial %1: tracking RMS %2 rad, mean cost %3\n")
                         .arg(trial)
@@ -307,9 +317,10 @@ int runCommand(const QStringList& arguments) {
         for (int k = 0; k < demo.length(); ++k) {
             desired.emplace_back(demo.states(k, info.pose->x), demo.states(k, info.pose->y));
         }
-        std::vector<TrajectoryPanel> panels{{method, paths, rms}};
+        std::vector<TrajectoryPanel> panels{{method, paths, rms, pathRms}};
         if (comparison) {
-            panels.insert(panels.begin(), TrajectoryPanel{compareMethod, comparePaths, compareRms});
+            panels.insert(panels.begin(),
+                          TrajectoryPanel{compareMethod, comparePaths, compareRms, comparePathRms});
         }
         saveFigureOrThrow(trajectoryFigure(desired, panels), line.value("plot"));
     }

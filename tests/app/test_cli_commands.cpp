@@ -468,6 +468,10 @@ class TestCliCommands : public QObject {
         for (int t = 0; t < 2; ++t) {
             QCOMPARE(compared[t].toObject().value("trackingRms").toDouble(),
                      pdTrials[t].toObject().value("trackingRms").toDouble());
+            // On the path is never farther than on the timed trajectory.
+            const double pathRms = pdTrials[t].toObject().value("pathRms").toDouble(-1);
+            QVERIFY(pathRms >= 0.0);
+            QVERIFY(pathRms <= pdTrials[t].toObject().value("trackingRms").toDouble());
         }
         QCOMPARE(cli(base + QStringList{"--method", "prisca", "--compare", "lqr", "--out", "x.csv"})
                      .exitCode,

@@ -7,6 +7,7 @@
 #include "sim/PlantProfile.h"
 #include "sim/SlideCar.h"
 #include "sim/SlideCarDemonstrator.h"
+#include "sim/TrialMetrics.h"
 
 #include <QtTest>
 
@@ -177,6 +178,38 @@ class TestEpisodeRunner : public QObject {
                                          throw std::runtime_error("trial 4 failed");
                                      return i;
                                  }));
+    }
+
+    void metrics_timeAlignedAndPathDistanceByHand() {
+        // An L-shaped demonstration: (0,0) -> (1,0) -> (1,1), one sample per metre, heading 0.
+        const PlantInfo info = SlideCar::describe();
+        core::Demonstration demo;
+        demo.dt = 0.1;
+        demo.states = Eigen::MatrixXd::Zero(3, info.stateDimension());
+        demo.actions = Eigen::MatrixXd::Zero(3, info.actionDimension());
+        demo.states(1, info.pose->x) = 1.0;
+        demo.states(2, info.pose->x) = 1.0;
+        demo.states(2, info.pose->y) = 1.0;
+        // Points on either side of the path, and one beyond its end.
+        QCOMPARE(distanceToPath(info, demo, 0.5, 0.25), 0.25);
+        QCOMPARE(distanceToPath(info, demo, 1.5, 0.5), 0.5);
+        QCOMPARE(distanceToPath(info, demo, 1.0, 3.0), 2.0);
+        QCOMPARE(distanceToPath(info, demo, -3.0, 4.0), 5.0);
+
+        // A trial that follows the path one sample late: on the path all along, behind in time.
+        EpisodeResult result;
+        for (int k = 0; k < 3; ++k) {
+            StepRecord step;
+            step.state = demo.states.row(std::max(0, k - 1)).transpose();
+            result.steps.push_back(step);
+        }
+        result.finalState = result.steps.back().state;
+        const TrialSummary s = summarizeTrial(info, demo, result);
+        QCOMPARE(s.pathRms, 0.0);
+        // Time-aligned errors 0, 1, 1 m: RMS sqrt(2/3).
+        QCOMPARE(s.trackingRms, std::sqrt(2.0 / 3.0));
+        // Ends at (1, 0), the lot is (1, 1).
+        QCOMPARE(s.finalPositionError, 1.0);
     }
 
     void factory_buildsEveryMethodForTheSlideCar() {
