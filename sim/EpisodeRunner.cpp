@@ -2,52 +2,85 @@
 
 namespace prisca::sim {
 
+EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
+                               const EpisodeSettings& settings)
+    : plant_(plant),
+      controller_(controller),
+      settings_(settings),
+      // The sensor's noise stream is its own, so changing the plant's draws never shifts it.
+      sensor_(settings.measurement, mixSeed(settings.seed, 7)) {
+    state_ = plant_.reset(settings_.seed, settings_.perturbation);
+    sensor_.reset(state_);
+    controller_.reset(settings_.resetMode);
+    maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
+}
+
+bool EpisodeStepper::finished() const {
+    if (k_ >= maxSteps_) {
+        return true;
+    }
+    const double t = k_ * plant_.timing().controlPeriod;
+    return settings_.stopAtRestAfter >= 0.0 && t >= settings_.stopAtRestAfter && plant_.atRest();
+}
+
+const StepRecord& EpisodeStepper::step() {
+    const double t = k_ * plant_.timing().controlPeriod;
+    Eigen::VectorXd observation = sensor_.observe(state_);
+    const core::ControlStep& control = controller_.step(observation);
+    costSum_ += control.cost;
+    last_.time = t;
+    last_.state = state_;
+    last_.observation = std::move(observation);
+    last_.referenceIndex = control.referenceIndex;
+    last_.deviation = control.deviation;
+    last_.action = control.action;
+    last_.referenceAction = control.referenceAction;
+    last_.cost = control.cost;
+    if (const Eigen::MatrixXd* theta = controller_.learnedParameters()) {
+        last_.parameters = theta->reshaped();
+    }
+    if (settings_.recordSteps) {
+        steps_.push_back(last_);
+    }
+    state_ = plant_.step(control.action);
+    ++k_;
+    return last_;
+}
+
+EpisodeResult EpisodeStepper::result() const {
+    EpisodeResult result;
+    result.finalState = state_;
+    result.stepCount = k_;
+    result.duration = k_ * plant_.timing().controlPeriod;
+    result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
+    result.steps = steps_;
+    return result;
+}
+
+EpisodeResult EpisodeStepper::takeResult() {
+    EpisodeResult result;
+    result.steps = std::move(steps_);
+    steps_.clear();
+    result.finalState = state_;
+    result.stepCount = k_;
+    result.duration = k_ * plant_.timing().controlPeriod;
+    result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
+    return result;
+}
+
 EpisodeResult runEpisode(Plant& plant, core::Controller& controller,
                          const EpisodeSettings& settings, const std::function<bool()>& cancelled) {
-    EpisodeResult result;
-    Eigen::VectorXd state = plant.reset(settings.seed, settings.perturbation);
-    // The sensor's noise stream is its own, so changing the plant's draws never shifts it.
-    MeasurementModel sensor(settings.measurement, mixSeed(settings.seed, 7));
-    sensor.reset(state);
-    controller.reset(settings.resetMode);
-
-    const double dt = plant.timing().controlPeriod;
-    const int maxSteps = static_cast<int>(settings.duration / dt + 0.5);
-    double costSum = 0.0;
-    int k = 0;
-    for (; k < maxSteps; ++k) {
+    EpisodeStepper stepper(plant, controller, settings);
+    bool wasCancelled = false;
+    while (!stepper.finished()) {
         if (cancelled && cancelled()) {
-            result.cancelled = true;
+            wasCancelled = true;
             break;
         }
-        const double t = k * dt;
-        if (settings.stopAtRestAfter >= 0.0 && t >= settings.stopAtRestAfter && plant.atRest()) {
-            break;
-        }
-        const Eigen::VectorXd observation = sensor.observe(state);
-        const core::ControlStep& control = controller.step(observation);
-        costSum += control.cost;
-        if (settings.recordSteps) {
-            StepRecord record;
-            record.time = t;
-            record.state = state;
-            record.observation = observation;
-            record.referenceIndex = control.referenceIndex;
-            record.deviation = control.deviation;
-            record.action = control.action;
-            record.referenceAction = control.referenceAction;
-            record.cost = control.cost;
-            if (const Eigen::MatrixXd* theta = controller.learnedParameters()) {
-                record.parameters = theta->reshaped();
-            }
-            result.steps.push_back(std::move(record));
-        }
-        state = plant.step(control.action);
+        stepper.step();
     }
-    result.finalState = state;
-    result.stepCount = k;
-    result.duration = k * dt;
-    result.meanCost = k > 0 ? costSum / k : 0.0;
+    EpisodeResult result = stepper.takeResult();
+    result.cancelled = wasCancelled;
     return result;
 }
 

@@ -47,6 +47,43 @@ struct EpisodeResult {
     bool cancelled = false;         ///< stopped by the cancel predicate
 };
 
+/// One trial taken a control step at a time, for callers that pace it themselves (the
+/// application's live run: real time, 10x, or as fast as possible, pausing and stopping between
+/// steps). runEpisode() is this stepper run to its end, so both give the same trial bit for bit.
+/// The plant and controller must outlive the stepper; it is single-threaded like them.
+class EpisodeStepper {
+  public:
+    /// Resets the plant (seed, perturbation), the sensor and the controller (settings.resetMode).
+    EpisodeStepper(Plant& plant, core::Controller& controller, const EpisodeSettings& settings);
+
+    /// True once the duration is reached, or the plant rests past settings.stopAtRestAfter.
+    bool finished() const;
+    /// Takes one control step: observe, control, step the plant. Returns the step's record (the
+    /// state and observation at its start, the action applied over it). Must not be called once
+    /// finished(). The reference stays valid until the next call.
+    const StepRecord& step();
+    /// The true state now (after the last step).
+    const Eigen::VectorXd& state() const { return state_; }
+    /// Control steps taken so far.
+    int stepCount() const { return k_; }
+    /// The trial so far (steps only if settings.recordSteps).
+    EpisodeResult result() const;
+    /// The same, moving the recorded steps out (the stepper keeps none afterwards).
+    EpisodeResult takeResult();
+
+  private:
+    Plant& plant_;
+    core::Controller& controller_;
+    EpisodeSettings settings_;
+    MeasurementModel sensor_;
+    Eigen::VectorXd state_;
+    StepRecord last_;
+    std::vector<StepRecord> steps_;
+    double costSum_ = 0.0;
+    int k_ = 0;
+    int maxSteps_ = 0;
+};
+
 /// Runs one trial: reset plant (seed, perturbation) and controller, then at every control step
 /// measure -> control -> step the plant, until the duration (or rest) is reached. The result is a
 /// pure function of the arguments: the same seed gives the same trial bit for bit.

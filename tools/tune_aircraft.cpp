@@ -6,7 +6,7 @@
 // best settings are then shown on evaluation seed sets 1, 2 and 3, with the RMS distance to the
 // path beside the time-aligned RMS.
 //
-//     tune_aircraft prisca|pgsd|pd [settings, default 200]
+//     tune_aircraft prisca|pgsd|pd [settings, default 600]
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
@@ -21,6 +21,8 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <set>
+#include <string>
 
 using namespace prisca;
 using Source = core::FeatureTerm::Source;
@@ -34,7 +36,7 @@ struct Setting {
     // PRISCA and PGSD (stepScale is PGSD's fixed step)
     double stepScale = 1, beta = 2000, gamma = 0.95, bound = 0;
     int horizon = 10, responseSteps = 1;
-    bool signModel = false;  // PRISCA: B = B~ (the signs alone) instead of the fitted B
+    bool signModel = false;   // PRISCA: B = B~ (the signs alone) instead of the fitted B
     bool timeDriven = false;  // PRISCA: time-driven reference instead of least state deviation
     double lon = 1, u = 1, lat = 1, psi = 10;
     double weightPsi = 10, weightVelocity = 0.1, weightR = 1;
@@ -54,7 +56,8 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plantName));
     core::ActionMappingFitOptions fitOptions;
     fitOptions.responseSteps = s.responseSteps;
-    Eigen::MatrixXd B = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fitOptions).b;
+    Eigen::MatrixXd B =
+        core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fitOptions).b;
     if (s.signModel) {
         B = p.mapping.asDouble();
     }
@@ -102,13 +105,15 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
         score.value += rms / kRuns;
         score.path += path / kRuns;
     }
-    if (!std::isfinite(score.value)) score.value = 1e9;
+    if (!std::isfinite(score.value))
+        score.value = 1e9;
     return score;
 }
 
 template <class T>
 T pick(std::mt19937& g, std::initializer_list<T> values) {
-    return *(values.begin() + std::uniform_int_distribution<int>(0, static_cast<int>(values.size()) - 1)(g));
+    return *(values.begin() +
+             std::uniform_int_distribution<int>(0, static_cast<int>(values.size()) - 1)(g));
 }
 
 Setting draw(std::mt19937& g, const char* method) {
@@ -131,21 +136,42 @@ Setting draw(std::mt19937& g, const char* method) {
         s.weightR = pick(g, {0.1, 1.0, 10.0});
         s.window = pick(g, {20, 40, 80});
     } else if (!std::strcmp(method, "pgsd")) {
-        // PGSD shares PRISCA's default features and weights; its own knobs only.
+        // PGSD searches the same features and cost weights as PRISCA, and its own knobs.
         s.stepScale = pick(g, {0.001, 0.003, 0.01, 0.03, 0.1, 0.3});
         s.horizon = pick(g, {5, 10, 20});
         s.bound = pick(g, {0.0, 0.5, 2.0});
+        s.lon = pick(g, {0.1, 0.3, 1.0});
+        s.u = pick(g, {0.3, 1.0, 3.0});
+        s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
+        s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
+        s.weightPsi = pick(g, {1.0, 10.0, 100.0});
+        s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
+        s.weightR = pick(g, {0.1, 1.0, 10.0});
     } else {
         s.kpThrottle = pick(g, {0.05, 0.1, 0.2, 0.5, 1.0});
-        s.kpRudder = pick(g, {0.25, 0.5, 1.0, 2.0, 4.0});
+        s.kpRudder = pick(g, {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0});
         s.kdThrottle = pick(g, {0.0, 0.05, 0.2});
         s.kdRudder = pick(g, {0.0, 0.05, 0.1, 0.3});
-        s.comboLon = pick(g, {0.0, 0.05, 0.1, 0.3});
-        s.comboLat = pick(g, {0.01, 0.03, 0.05, 0.1, 0.2});
+        s.comboLon = pick(g, {0.0, 0.05, 0.1, 0.3, 1.0});
+        s.comboLat = pick(g, {0.01, 0.03, 0.05, 0.1, 0.2, 0.5});
         s.comboPsi = pick(g, {0.3, 1.0, 3.0});
         s.comboR = pick(g, {0.0, 0.1, 0.3, 1.0});
     }
     return s;
+}
+
+std::string describe(const Setting& s) {
+    char text[512];
+    std::snprintf(
+        text, sizeof text,
+        "alpha0/step %g beta %g H %d gamma %g bound %g R %d %s %s features (%g %g | %g %g) "
+        "W (psi %g, v %g, r %g) window %d | PD kp (%g %g) kd (%g %g) combo (lon %g u %g | lat %g "
+        "psi %g r %g)",
+        s.stepScale, s.beta, s.horizon, s.gamma, s.bound, s.responseSteps,
+        s.signModel ? "sign-model" : "fitted-B", s.timeDriven ? "time-driven" : "LSD", s.lon, s.u,
+        s.lat, s.psi, s.weightPsi, s.weightVelocity, s.weightR, s.window, s.kpThrottle, s.kpRudder,
+        s.kdThrottle, s.kdRudder, s.comboLon, s.comboU, s.comboLat, s.comboPsi, s.comboR);
+    return text;
 }
 
 }  // namespace
@@ -156,29 +182,29 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: tune_aircraft prisca|pgsd|pd [settings]\n");
         return 2;
     }
-    const int count = argc > 2 ? std::atoi(argv[2]) : 200;
+    const int count = argc > 2 ? std::atoi(argv[2]) : 600;
     std::mt19937 g(12345);
     std::vector<std::pair<Score, Setting>> results;
+    std::set<std::string> seen;
     for (int i = 0; i < count; ++i) {
+        // Every draw counts against the budget; a setting already scored is not scored again.
         const Setting s = i == 0 ? Setting{} : draw(g, method);
+        if (!seen.insert(describe(s)).second)
+            continue;
         Score a = evaluate(s, method, 100);
         const Score b = evaluate(s, method, 101);
         a.value = 0.5 * (a.value + b.value);
         a.path = 0.5 * (a.path + b.path);
         results.emplace_back(a, s);
-        if ((i + 1) % 25 == 0) std::fprintf(stderr, "tune_aircraft: %d/%d settings\n", i + 1, count);
+        if ((i + 1) % 25 == 0)
+            std::fprintf(stderr, "tune_aircraft: %d/%d settings\n", i + 1, count);
     }
-    std::sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.first.value < b.first.value; });
-    for (int i = 0; i < std::min(5, count); ++i) {
+    std::sort(results.begin(), results.end(),
+              [](const auto& a, const auto& b) { return a.first.value < b.first.value; });
+    for (int i = 0; i < std::min<int>(5, static_cast<int>(results.size())); ++i) {
         const Setting& s = results[i].second;
-        std::printf("%d. tuning RMS %.2f m (path %.2f) | alpha0/step %g beta %g H %d gamma %g bound %g R %d %s %s "
-                    "features (%g %g | %g %g) W (psi %g, v %g, r %g) window %d | PD kp (%g %g) kd (%g %g) "
-                    "combo (lon %g u %g | lat %g psi %g r %g)\n",
-                    i + 1, results[i].first.value, results[i].first.path, s.stepScale, s.beta, s.horizon, s.gamma,
-                    s.bound, s.responseSteps, s.signModel ? "sign-model" : "fitted-B",
-                    s.timeDriven ? "time-driven" : "LSD", s.lon, s.u, s.lat, s.psi, s.weightPsi, s.weightVelocity,
-                    s.weightR, s.window, s.kpThrottle, s.kpRudder, s.kdThrottle, s.kdRudder, s.comboLon, s.comboU,
-                    s.comboLat, s.comboPsi, s.comboR);
+        std::printf("%d. tuning RMS %.2f m (path %.2f) | %s\n", i + 1, results[i].first.value,
+                    results[i].first.path, describe(s).c_str());
         for (std::uint64_t set : {1, 2, 3}) {
             const Score e = evaluate(s, method, set);
             std::printf("     evaluation seed set %llu: RMS %.2f m in time, %.2f m to the path\n",

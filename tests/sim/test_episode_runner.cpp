@@ -122,6 +122,32 @@ class TestEpisodeRunner : public QObject {
         QVERIFY(a.steps.back().referenceIndex > 0);
     }
 
+    void stepper_stepByStepIsTheSameTrialAsRunEpisode() {
+        const SlideCarSetup setup;
+        SlideCar car;
+        auto controller =
+            ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+        const EpisodeResult whole = runEpisode(car, *controller, setup.settings(5));
+        EpisodeSettings settings = setup.settings(5);
+        settings.recordSteps = false;  // the live view keeps its own copy of each step
+        EpisodeStepper stepper(car, *controller, settings);
+        int k = 0;
+        while (!stepper.finished()) {
+            const StepRecord& record = stepper.step();
+            QVERIFY(k < whole.stepCount);
+            QVERIFY(identical(record.state, whole.steps[k].state));
+            QVERIFY(identical(record.action, whole.steps[k].action));
+            QCOMPARE(record.referenceIndex, whole.steps[k].referenceIndex);
+            ++k;
+        }
+        QCOMPARE(k, whole.stepCount);
+        QCOMPARE(stepper.stepCount(), whole.stepCount);
+        const EpisodeResult stepped = stepper.result();
+        QVERIFY(stepped.steps.empty());
+        QVERIFY(identical(stepped.finalState, whole.finalState));
+        QCOMPARE(stepped.meanCost, whole.meanCost);
+    }
+
     void episode_stopsAtRestAfterTheDemonstrationAndOnCancel() {
         const SlideCarSetup setup;
         SlideCar car;
