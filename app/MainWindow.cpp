@@ -1,12 +1,22 @@
 #include "app/MainWindow.h"
 
+#include "app/ArenaView.h"
+#include "app/ControllerPanel.h"
+#include "app/LabSession.h"
 #include "app/LanguageMenu.h"
 #include "app/LanguageSwitcher.h"
-#include "app/WelcomePanel.h"
+#include "app/LiveChartsPanel.h"
+#include "app/RunController.h"
+#include "app/RunPanel.h"
+#include "app/TaskPanel.h"
+#include "sim/PlantCatalog.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QCoreApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -19,34 +29,125 @@ namespace {
 
 // The product name is a proper noun and stays untranslated in every language.
 const QString kProductName = QStringLiteral("PRISCA Lab");
-const QSize kDefaultSize(1024, 700);  // px, used until the operator has sized the window
+const QSize kDefaultSize(1280, 800);  // px, used until the operator has sized the window
 constexpr int kStatusMessageMs = 4000;
+constexpr int kMaxRecent = 8;
+const char* const kRecentKey = "session/recent";
+
+QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel,
+                  Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(window);
+    d->setObjectName(name);  // saveState() needs the name
+    d->setWidget(panel);
+    window->addDockWidget(area, d);
+    return d;
+}
 
 }  // namespace
 
 MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     : QMainWindow(parent),
       languages_(languages),
-      welcomePanel_(new WelcomePanel(this)),
+      session_(new LabSession(this)),
+      run_(new RunController(this)),
       versionLabel_(new QLabel(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(kProductName);
-    setCentralWidget(welcomePanel_);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    // The right-hand panels run the full height; the charts sit under the arena only.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+
+    const QSettings settings;
+    QString plant = settings.value(QStringLiteral("task/plant")).toString();
+    if (!sim::PlantCatalog::names().contains(plant)) {
+        plant = QStringLiteral("slidecar");
+    }
+    session_->setPlant(plant);
+
+    createPanels();
     createMenus();
     statusBar()->addPermanentWidget(versionLabel_);
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
+    connect(run_, &RunController::progress, this,
+            [this](const QString& text) { statusBar()->showMessage(text); });
+    connect(run_, &RunController::failed, this,
+            [this](const QString& text) { QMessageBox::warning(this, tr("Run"), text); });
     retranslateUi();
+    showScene();
 
-    const QSettings settings;
     if (!restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
         resize(kDefaultSize);
     }
     restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
 }
 
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createPanels() {
+    arena_ = new ArenaView(this);
+    setCentralWidget(arena_);
+    taskPanel_ = new TaskPanel(*session_, this);
+    controllerPanel_ = new ControllerPanel(*session_, this);
+    runPanel_ = new RunPanel(*session_, *run_, this);
+    chartsPanel_ = new LiveChartsPanel(this);
+    taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
+    controllerDock_ =
+        dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
+    runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
+    chartsDock_ = dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(taskDock_, controllerDock_);
+    taskDock_->raise();
+    resizeDocks({chartsDock_}, {260}, Qt::Vertical);
+    resizeDocks({runDock_}, {380}, Qt::Horizontal);
+
+    connect(session_, &LabSession::demonstrationChanged, this, &MainWindow::showScene);
+    connect(session_, &LabSession::plantChanged, this, &MainWindow::showScene);
+    connect(runPanel_, &RunPanel::runStarting, this, [this] {
+        arena_->clearTrails();
+        chartsPanel_->clear();
+    });
+    connect(run_, &RunController::samplesReady, arena_, &ArenaView::addSamples);
+    connect(run_, &RunController::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
+}
+
+void MainWindow::showScene() {
+    const sim::PlantProfile& profile = session_->profile();
+    arena_->setScene(profile.info, session_->demonstration());
+    chartsPanel_->setPlant(profile.info,
+                           profile.features.featureCount() * profile.features.channelCount());
+}
+
 void MainWindow::createMenus() {
     fileMenu_ = menuBar()->addMenu(QString());
     fileMenu_->setObjectName(QStringLiteral("fileMenu"));
+    openSessionAction_ = fileMenu_->addAction(QString());
+    openSessionAction_->setObjectName(QStringLiteral("openSessionAction"));
+    openSessionAction_->setShortcut(QKeySequence::Open);
+    connect(openSessionAction_, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open session"), QFileInfo(sessionPath_).absolutePath(),
+            tr("PRISCA Lab sessions (*.json);;All files (*)"));
+        if (!path.isEmpty()) {
+            openSession(path);
+        }
+    });
+    recentMenu_ = fileMenu_->addMenu(QString());
+    recentMenu_->setObjectName(QStringLiteral("recentMenu"));
+    saveSessionAction_ = fileMenu_->addAction(QString());
+    saveSessionAction_->setObjectName(QStringLiteral("saveSessionAction"));
+    saveSessionAction_->setShortcut(QKeySequence::Save);
+    connect(saveSessionAction_, &QAction::triggered, this, [this] {
+        QString path = QFileDialog::getSaveFileName(this, tr("Save session"), sessionPath_,
+                                                    tr("PRISCA Lab sessions (*.json)"));
+        if (!path.isEmpty()) {
+            if (QFileInfo(path).suffix().isEmpty()) {
+                path += QStringLiteral(".json");
+            }
+            saveSession(path);
+        }
+    });
+    fileMenu_->addSeparator();
     quitAction_ = fileMenu_->addAction(QString());
     quitAction_->setObjectName(QStringLiteral("quitAction"));
     // Ctrl+Q on every platform, not the platform's Quit key (which is empty on Windows).
@@ -54,9 +155,20 @@ void MainWindow::createMenus() {
     quitAction_->setMenuRole(QAction::QuitRole);
     // Closing the window (not QCoreApplication::quit) so closeEvent saves the geometry.
     connect(quitAction_, &QAction::triggered, this, &QWidget::close);
+    updateRecentMenu();
+
+    runMenu_ = menuBar()->addMenu(QString());
+    runMenu_->setObjectName(QStringLiteral("runMenu"));
+    emergencyAction_ = runMenu_->addAction(QString());
+    emergencyAction_->setObjectName(QStringLiteral("emergencyStopAction"));
+    connect(emergencyAction_, &QAction::triggered, run_, &RunController::emergencyStop);
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
+    for (QDockWidget* d : {taskDock_, controllerDock_, runDock_, chartsDock_}) {
+        viewMenu_->addAction(d->toggleViewAction());
+    }
+    viewMenu_->addSeparator();
     languageMenu_ = new LanguageMenu(languages_, viewMenu_);
     viewMenu_->addMenu(languageMenu_);
 
@@ -68,6 +180,55 @@ void MainWindow::createMenus() {
     connect(aboutAction_, &QAction::triggered, this, &MainWindow::showAbout);
 }
 
+bool MainWindow::openSession(const QString& path) {
+    QString error;
+    if (!session_->open(path, &error)) {
+        QMessageBox::warning(this, tr("Open session"),
+                             tr("The session could not be opened.\n\n%1").arg(error));
+        return false;
+    }
+    sessionPath_ = path;
+    rememberRecent(path);
+    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), kStatusMessageMs);
+    return true;
+}
+
+bool MainWindow::saveSession(const QString& path) {
+    QString error;
+    if (!session_->save(path, &error)) {
+        QMessageBox::warning(this, tr("Save session"), error);
+        return false;
+    }
+    sessionPath_ = path;
+    rememberRecent(path);
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kStatusMessageMs);
+    return true;
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(QLatin1String(kRecentKey)).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    while (recent.size() > kMaxRecent) {
+        recent.removeLast();
+    }
+    settings.setValue(QLatin1String(kRecentKey), recent);
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value(QLatin1String(kRecentKey)).toStringList();
+    for (const QString& path : recent) {
+        QAction* action = recentMenu_->addAction(QFileInfo(path).fileName());
+        action->setToolTip(path);
+        connect(action, &QAction::triggered, this, [this, path] { openSession(path); });
+    }
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
 void MainWindow::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
@@ -77,9 +238,18 @@ void MainWindow::changeEvent(QEvent* event) {
 
 void MainWindow::retranslateUi() {
     fileMenu_->setTitle(tr("&File"));
+    openSessionAction_->setText(tr("&Open session..."));
+    recentMenu_->setTitle(tr("Open &recent"));
+    saveSessionAction_->setText(tr("&Save session as..."));
     quitAction_->setText(tr("&Quit"));
     quitAction_->setStatusTip(tr("Close the window and leave PRISCA Lab"));
+    runMenu_->setTitle(tr("&Run"));
+    emergencyAction_->setText(tr("E-STOP (Space / Esc)"));
     viewMenu_->setTitle(tr("&View"));
+    taskDock_->setWindowTitle(tr("Task"));
+    controllerDock_->setWindowTitle(tr("Controller"));
+    runDock_->setWindowTitle(tr("Run"));
+    chartsDock_->setWindowTitle(tr("Live charts"));
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About PRISCA Lab"));
     aboutAction_->setStatusTip(tr("Show the version and what PRISCA Lab does"));
@@ -88,6 +258,7 @@ void MainWindow::retranslateUi() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    run_->stop();
     QSettings settings;
     settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
     settings.setValue(QLatin1String(kStateKey), saveState());

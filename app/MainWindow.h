@@ -3,18 +3,26 @@
 #include <QMainWindow>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 
 namespace prisca::app {
 
+class ArenaView;
+class ControllerPanel;
+class LabSession;
 class LanguageMenu;
 class LanguageSwitcher;
-class WelcomePanel;
+class LiveChartsPanel;
+class RunController;
+class RunPanel;
+class TaskPanel;
 
-/// The application window: menus, status bar and the central panel. It only arranges panels;
-/// each panel is its own class. Geometry and dock state are restored from QSettings on
-/// construction and saved when the window closes.
+/// The application window: it arranges the panels (arena in the middle; task, controller and
+/// run panels on the right; live charts below), owns the session and the run thread's handle,
+/// and holds the menus. Each panel is its own class and talks to the session or the run
+/// directly. Geometry and dock layout are restored from QSettings and saved on close.
 class MainWindow : public QMainWindow {
     Q_OBJECT
   public:
@@ -22,28 +30,58 @@ class MainWindow : public QMainWindow {
     static constexpr const char* kGeometryKey = "mainWindow/geometry";
     static constexpr const char* kStateKey = "mainWindow/state";
 
-    /// `languages` must outlive the window.
+    /// `languages` must outlive the window. Opens on the target last used (the simulated
+    /// slide-car the first time), ready to run.
     explicit MainWindow(LanguageSwitcher& languages, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    LabSession& session() { return *session_; }
+    RunController& run() { return *run_; }
+
+    /// Opens a session file; a bad file gets a message box and changes nothing.
+    bool openSession(const QString& path);
+    /// Saves the session; a failure gets a message box.
+    bool saveSession(const QString& path);
 
   protected:
     void changeEvent(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
 
   private:
+    void createPanels();
     void createMenus();
     void retranslateUi();
     void showAbout();
     void announceLanguage(const QString& code);
+    void showScene();
+    void rememberRecent(const QString& path);
+    void updateRecentMenu();
 
     LanguageSwitcher& languages_;
-    WelcomePanel* welcomePanel_;
+    LabSession* session_;
+    RunController* run_;
+    ArenaView* arena_ = nullptr;
+    TaskPanel* taskPanel_ = nullptr;
+    ControllerPanel* controllerPanel_ = nullptr;
+    RunPanel* runPanel_ = nullptr;
+    LiveChartsPanel* chartsPanel_ = nullptr;
+    QDockWidget* taskDock_ = nullptr;
+    QDockWidget* controllerDock_ = nullptr;
+    QDockWidget* runDock_ = nullptr;
+    QDockWidget* chartsDock_ = nullptr;
     QMenu* fileMenu_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
+    QMenu* runMenu_ = nullptr;
     LanguageMenu* languageMenu_ = nullptr;
     QMenu* helpMenu_ = nullptr;
+    QAction* openSessionAction_ = nullptr;
+    QAction* saveSessionAction_ = nullptr;
     QAction* quitAction_ = nullptr;
+    QAction* emergencyAction_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QLabel* versionLabel_;
+    QString sessionPath_;
 };
 
 }  // namespace prisca::app

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages PRISCA Lab needs to build, test and run.
+# (Qt Charts needs the OpenGL module's CMake files, which qt6-charts-dev does not pull in.)
 # Quick when nothing is missing: it only asks dpkg, and calls apt-get for what is absent.
 set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    qt6-base-dev qt6-charts-dev qt6-serialport-dev
+    qt6-base-dev qt6-charts-dev libqt6opengl6-dev qt6-serialport-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libgl-dev libeigen3-dev libopencv-dev libbox2d-dev
     xvfb xauth

@@ -2,122 +2,764 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_HK">
 <context>
+    <name>prisca::app::ArenaView</name>
+    <message>
+        <location filename="../app/ArenaView.cpp" line="178" />
+        <source>desired</source>
+        <translation>期望</translation>
+    </message>
+    <message>
+        <location filename="../app/ArenaView.cpp" line="179" />
+        <source>actual</source>
+        <translation>實際</translation>
+    </message>
+    <message>
+        <location filename="../app/ArenaView.cpp" line="196" />
+        <source>%1 cm</source>
+        <translation>%1 厘米</translation>
+    </message>
+    <message>
+        <location filename="../app/ArenaView.cpp" line="197" />
+        <source>%1 m</source>
+        <translation>%1 米</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::ControllerPanel</name>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="143" />
+        <source>Method:</source>
+        <translation>方法：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="144" />
+        <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
+        <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="146" />
+        <source>Horizon H:</source>
+        <translation>時域 H：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="147" />
+        <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
+        <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="148" />
+        <source>Depreciation γ:</source>
+        <translation>折舊率 γ：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="149" />
+        <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
+        <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="150" />
+        <source>Step rate β:</source>
+        <translation>步長速率 β：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="151" />
+        <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
+        <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="152" />
+        <source>Step scale α_0:</source>
+        <translation>步長比例 α_0：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="153" />
+        <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
+        <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="155" />
+        <source>θ bound:</source>
+        <translation>θ 界限：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="156" />
+        <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
+        <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="158" />
+        <source>Matching window:</source>
+        <translation>匹配窗口：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="159" />
+        <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
+        <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <source>PGSD step α:</source>
+        <translation>PGSD 步長 α：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <source>The fixed step size of PGSD (no decay).</source>
+        <translation>PGSD 的固定步長（不遞減）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="162" />
+        <source>Restore the plant's tuned preset</source>
+        <translation>還原此對象的調校預設值</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="163" />
+        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <source> steps</source>
+        <translation> 步</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="165" />
+        <source> samples</source>
+        <translation> 個樣本</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::LabSession</name>
+    <message>
+        <location filename="../app/LabSession.cpp" line="39" />
+        <source>'%1' must be a number from %2 to %3</source>
+        <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="53" />
+        <source>'%1' must be a whole number</source>
+        <translation>「%1」必須是整數</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="67" />
+        <source>'%1' must be a list of %2 numbers</source>
+        <translation>「%1」必須是含 %2 個數字的列表</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="73" />
+        <source>'%1' entry %2 must be a number &gt;= 0</source>
+        <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="108" />
+        <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
+        <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="195" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="205" />
+        <source>not valid JSON at byte %1 (%2)</source>
+        <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="211" />
+        <source>not a PRISCA Lab session (no "format": "prisca-session")</source>
+        <translation>不是 PRISCA Lab 工作階段檔（沒有 "format": "prisca-session"）</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="214" />
+        <source>written by a newer PRISCA Lab (session version %1)</source>
+        <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="219" />
+        <source>'plant' must be one of %1</source>
+        <translation>「plant」必須是以下其中之一：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="227" />
+        <source>'mapping': %1</source>
+        <translation>「mapping」：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="231" />
+        <source>'mapping' must have %1 rows of %2 signs for the %3</source>
+        <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="240" />
+        <source>'method' must be one of %1</source>
+        <translation>「method」必須是以下其中之一：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="282" />
+        <source>its demonstration: %1</source>
+        <translation>其示範：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="286" />
+        <source>its demonstration %1 is not a %2 demonstration</source>
+        <translation>其示範 %1 不是 %2 的示範</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::LanguageMenu</name>
     <message>
-        <location filename="../app/LanguageMenu.cpp" line="40"/>
+        <location filename="../app/LanguageMenu.cpp" line="40" />
         <source>&amp;Language</source>
         <translation>語言(&amp;L)</translation>
     </message>
 </context>
 <context>
+    <name>prisca::app::LiveChartsPanel</name>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="326" />
+        <source>cannot write the picture to %1</source>
+        <translation>無法把圖片寫入 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="333" />
+        <location filename="../app/LiveChartsPanel.cpp" line="337" />
+        <source>Export chart data</source>
+        <translation>匯出圖表數據</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="334" />
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 檔案 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="342" />
+        <location filename="../app/LiveChartsPanel.cpp" line="346" />
+        <source>Export charts as picture</source>
+        <translation>把圖表匯出為圖片</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="343" />
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG 圖片 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="359" />
+        <source>Tracking error</source>
+        <translation>追蹤誤差</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="360" />
+        <source>Policy θ</source>
+        <translation>策略 θ</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="361" />
+        <source>Action u and u*</source>
+        <translation>動作 u 與 u*</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="362" />
+        <source>error</source>
+        <translation>誤差</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="363" />
+        <source>smoothed (1 s)</source>
+        <translation>平滑（1 秒）</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="364" />
+        <source>error [m]</source>
+        <translation>誤差 [米]</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="365" />
+        <source>error [rad]</source>
+        <translation>誤差 [弧度]</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="367" />
+        <source>run time [s]</source>
+        <translation>運行時間 [秒]</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="369" />
+        <source>θ</source>
+        <translation>θ</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="370" />
+        <source>action</source>
+        <translation>動作</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="371" />
+        <source>Freeze</source>
+        <translation>凍結</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="372" />
+        <source>Stop redrawing to look closely; the data keeps being recorded.</source>
+        <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="373" />
+        <source>Fit</source>
+        <translation>全部顯示</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="374" />
+        <source>Show all the data again after zooming (drag a box to zoom).</source>
+        <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="375" />
+        <source>Export CSV...</source>
+        <translation>匯出 CSV...</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="376" />
+        <source>Export PNG...</source>
+        <translation>匯出 PNG...</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="80"/>
+        <location filename="../app/MainWindow.cpp" line="75" />
+        <location filename="../app/MainWindow.cpp" line="252" />
+        <source>Run</source>
+        <translation>運行</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="130" />
+        <location filename="../app/MainWindow.cpp" line="187" />
+        <source>Open session</source>
+        <translation>開啟工作階段</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="131" />
+        <source>PRISCA Lab sessions (*.json);;All files (*)</source>
+        <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="142" />
+        <location filename="../app/MainWindow.cpp" line="200" />
+        <source>Save session</source>
+        <translation>儲存工作階段</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="143" />
+        <source>PRISCA Lab sessions (*.json)</source>
+        <translation>PRISCA Lab 工作階段 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="188" />
+        <source>The session could not be opened.
+
+%1</source>
+        <translation>無法開啟工作階段。
+
+%1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="193" />
+        <source>Opened %1</source>
+        <translation>已開啟 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="205" />
+        <source>Saved %1</source>
+        <translation>已儲存 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="241" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="81"/>
+        <location filename="../app/MainWindow.cpp" line="242" />
+        <source>&amp;Open session...</source>
+        <translation>開啟工作階段(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="243" />
+        <source>Open &amp;recent</source>
+        <translation>最近開啟(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="244" />
+        <source>&amp;Save session as...</source>
+        <translation>工作階段另存為(&amp;S)...</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="245" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="82"/>
+        <location filename="../app/MainWindow.cpp" line="246" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="83"/>
+        <location filename="../app/MainWindow.cpp" line="247" />
+        <source>&amp;Run</source>
+        <translation>運行(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="248" />
+        <source>E-STOP (Space / Esc)</source>
+        <translation>緊急停止（空格鍵 / Esc）</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="249" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="84"/>
+        <location filename="../app/MainWindow.cpp" line="250" />
+        <source>Task</source>
+        <translation>任務</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="251" />
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="253" />
+        <source>Live charts</source>
+        <translation>即時圖表</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="254" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="85"/>
+        <location filename="../app/MainWindow.cpp" line="255" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="86"/>
+        <location filename="../app/MainWindow.cpp" line="256" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="88"/>
+        <location filename="../app/MainWindow.cpp" line="258" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="101"/>
+        <location filename="../app/MainWindow.cpp" line="272" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="113"/>
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="115"/>
-        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
+        <location filename="../app/MainWindow.cpp" line="286" />
+        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="119"/>
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="122"/>
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
 </context>
 <context>
-    <name>prisca::app::WelcomePanel</name>
+    <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="69"/>
-        <source>Teach a robot to repeat one demonstrated manoeuvre</source>
-        <translation>教機械人重複一次示範過的動作</translation>
+        <location filename="../app/RunPanel.cpp" line="180" />
+        <location filename="../app/RunPanel.cpp" line="231" />
+        <source>Resume (F6)</source>
+        <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="71"/>
-        <source>Drive the robot through the manoeuvre once, on the lab floor or in simulation, while the ceiling camera or the simulator records what it does. PRISCA then learns from this single demonstration: it adjusts its controller online, trial after trial, until the robot repeats the manoeuvre precisely, even when the floor, the tyres or the starting position differ.</source>
-        <translation>先在實驗室地面或模擬器中駕駛機械人完成一次動作，由天花板的攝影機或模擬器記錄整個過程。PRISCA 隨即從這一次示範中學習：在一次又一次的試驗中在線調整控制器，直至機械人能精準地重複該動作；即使地面、輪胎或起步位置有所不同，亦能做到。</translation>
+        <location filename="../app/RunPanel.cpp" line="180" />
+        <location filename="../app/RunPanel.cpp" line="231" />
+        <source>Pause (F6)</source>
+        <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="79"/>
-        <source>Simulator: slide-car, acrobot and planar aircraft</source>
-        <translation>模擬器：甩尾模型車、雙連桿擺臂（Acrobot）及平面飛行器</translation>
+        <location filename="../app/RunPanel.cpp" line="182" />
+        <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
+        <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="80"/>
-        <source>Recording: drive by keyboard or gamepad and record a demonstration</source>
-        <translation>錄製：以鍵盤或手掣駕駛，錄製一次示範</translation>
+        <location filename="../app/RunPanel.cpp" line="184" />
+        <source>Training before the run...</source>
+        <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="81"/>
-        <source>Learning: fit the action mapping, run PRISCA or a baseline, and watch the tracking error live, with an emergency stop</source>
-        <translation>學習：擬合動作映射，執行 PRISCA 或基準方法，並即時監察追蹤誤差，設有緊急停止</translation>
+        <location filename="../app/RunPanel.cpp" line="214" />
+        <source>Trials in a row:</source>
+        <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="83"/>
-        <source>Evaluation: batches of trials, Table I metrics and learning curves</source>
-        <translation>評估：批次試驗、表 I 指標及學習曲線</translation>
+        <location filename="../app/RunPanel.cpp" line="215" />
+        <source>Learners keep what they learnt from one trial to the next.</source>
+        <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="86"/>
-        <source>Arriving in coming versions:</source>
-        <translation>以下功能將於往後版本推出：</translation>
+        <location filename="../app/RunPanel.cpp" line="216" />
+        <source>Seed:</source>
+        <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/WelcomePanel.cpp" line="94"/>
-        <source>This version has no working panels yet: nothing here records, learns or drives a robot.</source>
-        <translation>此版本尚未有可用的操作面板：這裏不會錄製、學習或駕駛任何機械人。</translation>
+        <location filename="../app/RunPanel.cpp" line="217" />
+        <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
+        <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="219" />
+        <source>Perturbation:</source>
+        <translation>擾動：</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="221" />
+        <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
+        <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="223" />
+        <source>Sensor noise:</source>
+        <translation>感測器噪聲：</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="224" />
+        <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
+        <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="226" />
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="227" />
+        <source>Real time (1x)</source>
+        <translation>實時 (1x)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="228" />
+        <source>10x</source>
+        <translation>10 倍</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="229" />
+        <source>As fast as possible</source>
+        <translation>盡快</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="230" />
+        <source>Run (F5)</source>
+        <translation>運行 (F5)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="232" />
+        <source>Stop (Shift+F5)</source>
+        <translation>停止 (Shift+F5)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="233" />
+        <source>E-STOP (Space / Esc)</source>
+        <translation>緊急停止（空格鍵 / Esc）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="235" />
+        <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
+        <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="236" />
+        <source>Reset E-STOP</source>
+        <translation>重設緊急停止</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="239" />
+        <source>Trial</source>
+        <translation>試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="239" />
+        <source>Δp [cm]</source>
+        <translation>Δp [厘米]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="239" />
+        <source>Δψ [deg]</source>
+        <translation>Δψ [度]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="240" />
+        <source>RMS [m]</source>
+        <translation>RMS [米]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="240" />
+        <source>RMS [rad]</source>
+        <translation>RMS [弧度]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="241" />
+        <source>Trial in the run</source>
+        <translation>本次運行中的試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="242" />
+        <source>Final position error: distance from the lot [cm]</source>
+        <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="243" />
+        <source>Final heading error [deg]</source>
+        <translation>最終航向誤差 [度]</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="244" />
+        <source>Time-aligned RMS tracking error over the trial</source>
+        <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::RunWorker</name>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="39" />
+        <source>E-STOP is engaged: reset it before starting a run.</source>
+        <translation>緊急停止已啟動：開始運行前請先重設。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="101" />
+        <source>Cannot start the run: %1</source>
+        <translation>無法開始運行：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="116" />
+        <source>Trial %1 of %2</source>
+        <translation>第 %1 次試驗（共 %2 次）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="190" />
+        <source>Run finished: %1 trials</source>
+        <translation>運行完成：%1 次試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="230" />
+        <source>Run stopped</source>
+        <translation>運行已停止</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="240" />
+        <source>E-STOP: run stopped</source>
+        <translation>緊急停止：運行已停止</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::TaskPanel</name>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="78" />
+        <location filename="../app/TaskPanel.cpp" line="85" />
+        <location filename="../app/TaskPanel.cpp" line="95" />
+        <source>Open demonstration</source>
+        <translation>開啟示範</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="79" />
+        <source>The demonstration could not be read.
+
+%1</source>
+        <translation>無法讀取示範。
+
+%1</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="86" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="96" />
+        <source>Demonstrations (*.csv);;All files (*)</source>
+        <translation>示範 (*.csv);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="104" />
+        <location filename="../app/TaskPanel.cpp" line="111" />
+        <source>Save demonstration</source>
+        <translation>儲存示範</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="105" />
+        <source>Demonstrations (*.csv)</source>
+        <translation>示範 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="122" />
+        <source>the scripted operator</source>
+        <translation>預設腳本操作員</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="124" />
+        <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
+        <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="139" />
+        <source>Target:</source>
+        <translation>對象：</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="142" />
+        <source>Simulated slide-car</source>
+        <translation>模擬漂移車</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="143" />
+        <source>Simulated acrobot</source>
+        <translation>模擬雙擺機械臂</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="144" />
+        <source>Simulated aircraft</source>
+        <translation>模擬飛機</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="146" />
+        <source>Open...</source>
+        <translation>開啟...</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="147" />
+        <source>Open a demonstration CSV recorded earlier</source>
+        <translation>開啟先前錄製的示範 CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="148" />
+        <source>Save as...</source>
+        <translation>另存為...</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="149" />
+        <source>Save the demonstration as CSV</source>
+        <translation>把示範儲存為 CSV</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="150" />
+        <source>Scripted</source>
+        <translation>腳本示範</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="151" />
+        <source>Use the scripted operator's demonstration for this target</source>
+        <translation>為此對象使用預設腳本操作員的示範</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,6 @@
 // The main window driven offscreen: title, menus, run-time language switch, remembered settings,
 // clean close.
+#include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
 #include "app/MainWindow.h"
 
@@ -47,7 +48,7 @@ class TestMainWindow : public QObject {
     void initTestCase();
     void init();
 
-    void construct_showsTitleMenusStatusBarAndPlaceholder();
+    void construct_showsTitleMenusStatusBarAndPanels();
     void languageMenu_switchesFileMenuToChineseAndBack();
     void languageChoice_isRememberedForTheNextStart();
     void geometry_isRememberedForTheNextStart();
@@ -72,7 +73,7 @@ void TestMainWindow::init() {
         QStringLiteral("^(?!This plugin does not support propagateSizeHints\\(\\)$)")));
 }
 
-void TestMainWindow::construct_showsTitleMenusStatusBarAndPlaceholder() {
+void TestMainWindow::construct_showsTitleMenusStatusBarAndPanels() {
     LanguageSwitcher languages;
     languages.restoreLanguage();
     QVERIFY(languages.setLanguage(QStringLiteral("en")));
@@ -81,8 +82,9 @@ void TestMainWindow::construct_showsTitleMenusStatusBarAndPlaceholder() {
     QVERIFY(QTest::qWaitForWindowExposed(&window));
 
     QCOMPARE(window.windowTitle(), QStringLiteral("PRISCA Lab"));
-    QCOMPARE(menuBarTitles(window), (QStringList{QStringLiteral("&File"), QStringLiteral("&View"),
-                                                 QStringLiteral("&Help")}));
+    QCOMPARE(menuBarTitles(window),
+             (QStringList{QStringLiteral("&File"), QStringLiteral("&Run"), QStringLiteral("&View"),
+                          QStringLiteral("&Help")}));
 
     QAction* quit = action(window, QStringLiteral("quitAction"));
     QVERIFY(quit);
@@ -110,17 +112,17 @@ void TestMainWindow::construct_showsTitleMenusStatusBarAndPlaceholder() {
     QVERIFY(status->findChild<QLabel*>());
     QCOMPARE(status->findChild<QLabel*>()->text(), QStringLiteral("Version 9.8.7"));
 
-    // The placeholder explains and promises; it offers nothing to press that would do nothing.
-    QWidget* panel = window.centralWidget();
-    QVERIFY(panel);
-    QCOMPARE(panel->objectName(), QStringLiteral("welcomePanel"));
-    QString shown;
-    for (const QLabel* label : panel->findChildren<QLabel*>()) {
-        shown += label->text() + QLatin1Char('\n');
+    // Ready to go on the simulated slide-car: the arena in the middle, panels around it.
+    QWidget* central = window.centralWidget();
+    QVERIFY(central);
+    QCOMPARE(central->objectName(), QStringLiteral("arenaView"));
+    for (const char* name : {"taskPanel", "controllerPanel", "runPanel", "liveChartsPanel"}) {
+        QVERIFY2(window.findChild<QWidget*>(QLatin1String(name)), name);
     }
-    QVERIFY2(shown.contains(QStringLiteral("coming versions")), qPrintable(shown));
-    QVERIFY2(shown.contains(QStringLiteral("demonstration")), qPrintable(shown));
-    QVERIFY(panel->findChildren<QAbstractButton*>().isEmpty());
+    QCOMPARE(window.session().plant(), QStringLiteral("slidecar"));
+    auto* run = window.findChild<QAbstractButton*>(QStringLiteral("runButton"));
+    QVERIFY(run);
+    QVERIFY(run->isEnabled());
 }
 
 void TestMainWindow::languageMenu_switchesFileMenuToChineseAndBack() {
@@ -129,7 +131,7 @@ void TestMainWindow::languageMenu_switchesFileMenuToChineseAndBack() {
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QMenu* file = menu(window, "fileMenu");
-    QLabel* heading = window.findChild<QLabel*>(QStringLiteral("welcomeHeading"));
+    QAbstractButton* heading = window.findChild<QAbstractButton*>(QStringLiteral("runButton"));
     QVERIFY(heading);
     const QString englishHeading = heading->text();
     QCOMPARE(file->title(), QStringLiteral("&File"));
@@ -174,14 +176,14 @@ void TestMainWindow::geometry_isRememberedForTheNextStart() {
     LanguageSwitcher languages;
     {
         MainWindow window(languages);
-        window.resize(900, 600);
+        window.resize(1200, 780);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QVERIFY(window.close());
     }
     QVERIFY(QSettings().contains(QLatin1String(MainWindow::kGeometryKey)));
     MainWindow window(languages);
-    QCOMPARE(window.size(), QSize(900, 600));
+    QCOMPARE(window.size(), QSize(1200, 780));
 }
 
 void TestMainWindow::aboutAction_showsWhatTheAppIs() {

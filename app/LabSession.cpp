@@ -1,0 +1,308 @@
+#include "app/LabSession.h"
+
+#include "core/DemonstrationCsv.h"
+#include "core/FileIo.h"
+#include "sim/ControllerFactory.h"
+#include "sim/PlantCatalog.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace prisca::app {
+
+namespace {
+
+constexpr int kSessionVersion = 1;
+
+QJsonArray toJson(const Eigen::VectorXd& v) {
+    QJsonArray a;
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+        a.append(v[i]);
+    }
+    return a;
+}
+
+// Reads a number from `object[key]`, or explains what is wrong with it.
+bool readNumber(const QJsonObject& object, const QString& key, double low, double high,
+                double* value, QString* error) {
+    if (!object.contains(key)) {
+        return true;  // keep the default
+    }
+    const QJsonValue v = object.value(key);
+    if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < low ||
+        v.toDouble() > high) {
+        *error = LabSession::tr("'%1' must be a number from %2 to %3").arg(key).arg(low).arg(high);
+        return false;
+    }
+    *value = v.toDouble();
+    return true;
+}
+
+bool readInteger(const QJsonObject& object, const QString& key, int low, int high, int* value,
+                 QString* error) {
+    double d = *value;
+    if (!readNumber(object, key, low, high, &d, error)) {
+        return false;
+    }
+    if (d != std::floor(d)) {
+        *error = LabSession::tr("'%1' must be a whole number").arg(key);
+        return false;
+    }
+    *value = static_cast<int>(d);
+    return true;
+}
+
+bool readVector(const QJsonObject& object, const QString& key, Eigen::Index size,
+                Eigen::VectorXd* value, QString* error) {
+    if (!object.contains(key)) {
+        return true;
+    }
+    const QJsonArray a = object.value(key).toArray();
+    if (!object.value(key).isArray() || a.size() != size) {
+        *error = LabSession::tr("'%1' must be a list of %2 numbers").arg(key).arg(size);
+        return false;
+    }
+    Eigen::VectorXd v(size);
+    for (int i = 0; i < a.size(); ++i) {
+        if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()) || a[i].toDouble() < 0.0) {
+            *error = LabSession::tr("'%1' entry %2 must be a number >= 0").arg(key).arg(i + 1);
+            return false;
+        }
+        v[i] = a[i].toDouble();
+    }
+    *value = v;
+    return true;
+}
+
+}  // namespace
+
+LabSession::LabSession(QObject* parent) : QObject(parent) {}
+
+void LabSession::setPlant(const QString& plant) {
+    if (!sim::PlantCatalog::names().contains(plant)) {
+        throw std::invalid_argument(QStringLiteral("unknown plant '%1'").arg(plant).toStdString());
+    }
+    plant_ = plant;
+    profile_ = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    demonstration_ =
+        std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plant, 1));
+    demonstrationSource_.clear();
+    refit();
+    emit plantChanged(plant_);
+    emit demonstrationChanged();
+    emit fitChanged();
+    emit controllerChanged();
+}
+
+void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
+                                  const QString& source) {
+    if (!demonstration || demonstration->stateDimension() != profile_.info.stateDimension() ||
+        demonstration->actionDimension() != profile_.info.actionDimension()) {
+        throw std::invalid_argument(
+            tr("the demonstration does not fit the %1: it needs %2 state and %3 action columns")
+                .arg(plant_)
+                .arg(profile_.info.stateDimension())
+                .arg(profile_.info.actionDimension())
+                .toStdString());
+    }
+    demonstration_ = std::move(demonstration);
+    demonstrationSource_ = source;
+    refit();
+    emit demonstrationChanged();
+    emit fitChanged();
+}
+
+void LabSession::setProfile(const sim::PlantProfile& profile) {
+    const bool mappingChanged = profile.mapping.signs != profile_.mapping.signs;
+    profile_ = profile;
+    if (mappingChanged) {
+        refit();
+        emit fitChanged();
+    }
+    emit controllerChanged();
+}
+
+void LabSession::setFitOptions(const core::ActionMappingFitOptions& options) {
+    fitOptions_ = options;
+    refit();
+    emit fitChanged();
+}
+
+void LabSession::setMethod(const QString& method) {
+    if (!sim::ControllerFactory::isMethod(method)) {
+        throw std::invalid_argument(
+            QStringLiteral("unknown method '%1'").arg(method).toStdString());
+    }
+    method_ = method;
+    emit controllerChanged();
+}
+
+void LabSession::refit() {
+    fit_ = core::fitActionMapping(*demonstration_, profile_.mapping, profile_.info.deviationModel(),
+                                  fitOptions_);
+}
+
+bool LabSession::save(const QString& path, QString* error) const {
+    QJsonObject fit{
+        {"latency", fitOptions_.latency},
+        {"responseSteps", fitOptions_.responseSteps},
+        {"target", fitOptions_.target == core::ActionMappingFitOptions::Target::StateChange
+                       ? "state"
+                       : "rate"},
+        {"nonNegative", fitOptions_.nonNegative},
+        {"robust", fitOptions_.robust}};
+    const core::PriscaParameters& p = profile_.prisca;
+    QJsonObject prisca{{"horizon", p.horizon},
+                       {"gamma", p.gamma},
+                       {"beta", p.stepSize.beta},
+                       {"stepScale", p.stepSize.scale},
+                       {"thetaBound", p.thetaBound},
+                       {"useBaseline", p.useBaseline},
+                       {"useInverseDepreciation", p.useInverseDepreciation}};
+    QJsonObject pgsd{{"horizon", profile_.pgsd.horizon},
+                     {"stepSize", profile_.pgsd.stepSize},
+                     {"thetaBound", profile_.pgsd.thetaBound}};
+    QJsonObject pd{{"kp", toJson(profile_.pd.kp)},
+                   {"kd", toJson(profile_.pd.kd)},
+                   {"horizon", profile_.pdHorizon}};
+    QJsonObject root{{"format", "prisca-session"},
+                     {"version", kSessionVersion},
+                     {"plant", plant_},
+                     {"demonstration", demonstrationSource_},
+                     {"mapping", profile_.mapping.toString()},
+                     {"fit", fit},
+                     {"method", method_},
+                     {"matchingWindow", profile_.matchingWindow},
+                     {"prisca", prisca},
+                     {"pgsd", pgsd},
+                     {"pd", pd}};
+    core::FileError fileError;
+    if (!core::writeFileAtomically(path, QJsonDocument(root).toJson(QJsonDocument::Indented),
+                                   &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    return true;
+}
+
+bool LabSession::open(const QString& path, QString* error) {
+    const auto fail = [&](const QString& what) {
+        *error = tr("%1: %2").arg(path, what);
+        return false;
+    };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return fail(file.errorString());
+    }
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        return fail(tr("not valid JSON at byte %1 (%2)")
+                        .arg(parseError.offset)
+                        .arg(parseError.errorString()));
+    }
+    const QJsonObject root = document.object();
+    if (root.value("format").toString() != QLatin1String("prisca-session")) {
+        return fail(tr("not a PRISCA Lab session (no \"format\": \"prisca-session\")"));
+    }
+    if (root.value("version").toInt(-1) > kSessionVersion) {
+        return fail(tr("written by a newer PRISCA Lab (session version %1)")
+                        .arg(root.value("version").toInt()));
+    }
+    const QString plant = root.value("plant").toString();
+    if (!sim::PlantCatalog::names().contains(plant)) {
+        return fail(tr("'plant' must be one of %1").arg(sim::PlantCatalog::names().join(", ")));
+    }
+    sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    QString what;
+    if (root.contains("mapping")) {
+        const auto mapping = core::IntuitiveMapping::parse(root.value("mapping").toString(), &what);
+        if (!mapping) {
+            return fail(tr("'mapping': %1").arg(what));
+        }
+        if (mapping->signs.rows() != profile.mapping.signs.rows() ||
+            mapping->signs.cols() != profile.mapping.signs.cols()) {
+            return fail(tr("'mapping' must have %1 rows of %2 signs for the %3")
+                            .arg(profile.mapping.signs.rows())
+                            .arg(profile.mapping.signs.cols())
+                            .arg(plant));
+        }
+        profile.mapping = *mapping;
+    }
+    const QString method = root.value("method").toString(QStringLiteral("prisca"));
+    if (!sim::ControllerFactory::isMethod(method)) {
+        return fail(
+            tr("'method' must be one of %1").arg(sim::ControllerFactory::methods().join(", ")));
+    }
+    core::ActionMappingFitOptions fitOptions;
+    const QJsonObject fit = root.value("fit").toObject();
+    const QJsonObject prisca = root.value("prisca").toObject();
+    const QJsonObject pgsd = root.value("pgsd").toObject();
+    const QJsonObject pd = root.value("pd").toObject();
+    core::PriscaParameters& p = profile.prisca;
+    const bool ok =
+        readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
+        readInteger(fit, "responseSteps", 1, 1000, &fitOptions.responseSteps, &what) &&
+        readInteger(root, "matchingWindow", 0, 1000000, &profile.matchingWindow, &what) &&
+        readInteger(prisca, "horizon", 1, 1000, &p.horizon, &what) &&
+        readNumber(prisca, "gamma", 0.0, 1.0, &p.gamma, &what) &&
+        readNumber(prisca, "beta", 1e-9, 1e12, &p.stepSize.beta, &what) &&
+        readNumber(prisca, "stepScale", 0.0, 1e12, &p.stepSize.scale, &what) &&
+        readNumber(prisca, "thetaBound", 0.0, 1e12, &p.thetaBound, &what) &&
+        readInteger(pgsd, "horizon", 1, 1000, &profile.pgsd.horizon, &what) &&
+        readNumber(pgsd, "stepSize", 0.0, 1e12, &profile.pgsd.stepSize, &what) &&
+        readNumber(pgsd, "thetaBound", 0.0, 1e12, &profile.pgsd.thetaBound, &what) &&
+        readVector(pd, "kp", profile.pd.kp.size(), &profile.pd.kp, &what) &&
+        readVector(pd, "kd", profile.pd.kd.size(), &profile.pd.kd, &what) &&
+        readInteger(pd, "horizon", 1, 1000, &profile.pdHorizon, &what);
+    if (!ok) {
+        return fail(what);
+    }
+    fitOptions.target = fit.value("target").toString() == QLatin1String("state")
+                            ? core::ActionMappingFitOptions::Target::StateChange
+                            : core::ActionMappingFitOptions::Target::RateChange;
+    fitOptions.nonNegative = fit.value("nonNegative").toBool(true);
+    fitOptions.robust = fit.value("robust").toBool(true);
+    p.useBaseline = prisca.value("useBaseline").toBool(true);
+    p.useInverseDepreciation = prisca.value("useInverseDepreciation").toBool(true);
+
+    // The demonstration: the file the session names, else the plant's scripted one.
+    std::shared_ptr<const core::Demonstration> demonstration;
+    const QString source = root.value("demonstration").toString();
+    if (!source.isEmpty()) {
+        core::FileError fileError;
+        auto loaded = core::readDemonstrationCsv(source, &fileError);
+        if (!loaded) {
+            return fail(tr("its demonstration: %1").arg(fileError.toString()));
+        }
+        if (loaded->stateDimension() != profile.info.stateDimension() ||
+            loaded->actionDimension() != profile.info.actionDimension()) {
+            return fail(tr("its demonstration %1 is not a %2 demonstration").arg(source, plant));
+        }
+        demonstration = std::make_shared<core::Demonstration>(std::move(*loaded));
+    } else {
+        demonstration =
+            std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plant, 1));
+    }
+
+    // Everything checked: only now does the session change.
+    plant_ = plant;
+    profile_ = profile;
+    method_ = method;
+    fitOptions_ = fitOptions;
+    demonstration_ = std::move(demonstration);
+    demonstrationSource_ = source;
+    refit();
+    emit plantChanged(plant_);
+    emit demonstrationChanged();
+    emit fitChanged();
+    emit controllerChanged();
+    return true;
+}
+
+}  // namespace prisca::app

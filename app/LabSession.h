@@ -1,0 +1,82 @@
+#pragma once
+
+#include "core/ActionMapping.h"
+#include "core/Demonstration.h"
+#include "sim/PlantProfile.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+
+namespace prisca::app {
+
+/// What the operator is working on: the target plant, the demonstration to repeat, the intuitive
+/// mapping B~ and its fit, and the controller's method and parameters. Lives on the GUI thread;
+/// panels read it and change it through its setters, and listen to its signals. It holds plain
+/// data only, so a run copies what it needs before crossing to the worker thread.
+class LabSession : public QObject {
+    Q_OBJECT
+  public:
+    explicit LabSession(QObject* parent = nullptr);
+
+    /// The target: "slidecar", "acrobot" or "aircraft" (sim::PlantCatalog names).
+    const QString& plant() const { return plant_; }
+    /// Chooses a target: loads its profile (mapping, features, method defaults) and its scripted
+    /// demonstration, and fits B_v. Throws std::invalid_argument for an unknown plant.
+    void setPlant(const QString& plant);
+
+    /// The demonstration being repeated (never null once a plant is set).
+    std::shared_ptr<const core::Demonstration> demonstration() const { return demonstration_; }
+    /// Where the demonstration came from: a file path, or empty for the scripted one.
+    const QString& demonstrationSource() const { return demonstrationSource_; }
+    /// Replaces the demonstration and refits B_v. Throws std::invalid_argument if its state or
+    /// action dimension does not match the plant.
+    void setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
+                          const QString& source);
+
+    /// The plant's profile with the operator's edits (mapping B~, method parameters).
+    const sim::PlantProfile& profile() const { return profile_; }
+    /// Replaces the profile (its mapping must keep the plant's m x n) and refits B_v.
+    void setProfile(const sim::PlantProfile& profile);
+
+    /// Options of the last fit of B_v, and the fit itself.
+    const core::ActionMappingFitOptions& fitOptions() const { return fitOptions_; }
+    void setFitOptions(const core::ActionMappingFitOptions& options);
+    const core::ActionMappingFit& fit() const { return fit_; }
+
+    /// The method a run uses (sim::ControllerFactory names).
+    const QString& method() const { return method_; }
+    void setMethod(const QString& method);
+
+    /// Saves mapping, fit options, method and parameters as JSON (atomically). On failure returns
+    /// false and sets *error naming the file and what went wrong.
+    bool save(const QString& path, QString* error) const;
+    /// Opens a session saved by save(). On failure the session is unchanged, *error says what is
+    /// wrong and where (file, key), and false is returned.
+    bool open(const QString& path, QString* error);
+
+  signals:
+    /// The plant changed (everything else changed with it).
+    void plantChanged(const QString& plant);
+    /// The demonstration changed.
+    void demonstrationChanged();
+    /// B~, the fit options or the demonstration changed and B_v was refitted.
+    void fitChanged();
+    /// The method or its parameters changed.
+    void controllerChanged();
+
+  private:
+    void refit();
+
+    QString plant_;
+    QString method_ = QStringLiteral("prisca");
+    std::shared_ptr<const core::Demonstration> demonstration_;
+    QString demonstrationSource_;
+    sim::PlantProfile profile_;
+    core::ActionMappingFitOptions fitOptions_;
+    core::ActionMappingFit fit_;
+};
+
+}  // namespace prisca::app

@@ -1,0 +1,384 @@
+#include "app/LiveChartsPanel.h"
+
+#include "app/ChartDecimation.h"
+#include "core/FileIo.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLineSeries>
+#include <QMessageBox>
+#include <QPainter>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace prisca::app {
+
+namespace {
+
+constexpr int kRedrawMs = 40;
+constexpr int kBuckets = 800;              // decimation slices per chart
+constexpr double kSmoothingSeconds = 1.0;  // time constant of the smoothed error [s]
+
+void attachAxes(QChart* chart, QLineSeries* series) {
+    const auto axes = chart->axes();
+    for (QAbstractAxis* axis : axes) {
+        series->attachAxis(axis);
+    }
+}
+
+void setRange(QChart* chart, double x0, double x1, double y0, double y1) {
+    const auto horizontal = chart->axes(Qt::Horizontal);
+    const auto vertical = chart->axes(Qt::Vertical);
+    if (horizontal.isEmpty() || vertical.isEmpty()) {
+        return;
+    }
+    if (!(x1 > x0)) {
+        x1 = x0 + 1.0;
+    }
+    if (!(y1 > y0)) {
+        y0 -= 0.5;
+        y1 += 0.5;
+    }
+    const double pad = 0.05 * (y1 - y0);
+    horizontal.first()->setRange(x0, x1);
+    vertical.first()->setRange(y0 - pad, y1 + pad);
+}
+
+}  // namespace
+
+LiveChartsPanel::LiveChartsPanel(QWidget* parent)
+    : QWidget(parent),
+      tabs_(new QTabWidget(this)),
+      errorChart_(new QChart),
+      thetaChart_(new QChart),
+      actionChart_(new QChart),
+      errorSeries_(new QLineSeries),
+      smoothSeries_(new QLineSeries),
+      freeze_(new QCheckBox(this)),
+      fit_(new QPushButton(this)),
+      exportCsv_(new QPushButton(this)),
+      exportPng_(new QPushButton(this)),
+      redrawTimer_(new QTimer(this)) {
+    setObjectName(QStringLiteral("liveChartsPanel"));
+    freeze_->setObjectName(QStringLiteral("freezeCharts"));
+    exportCsv_->setObjectName(QStringLiteral("exportChartsCsv"));
+    exportPng_->setObjectName(QStringLiteral("exportChartsPng"));
+    for (QChart* chart : {errorChart_, thetaChart_, actionChart_}) {
+        chart->legend()->setAlignment(Qt::AlignRight);
+        chart->setMargins(QMargins(4, 4, 4, 4));
+        auto* x = new QValueAxis;
+        auto* y = new QValueAxis;
+        x->setLabelFormat(QStringLiteral("%.0f"));
+        chart->addAxis(x, Qt::AlignBottom);
+        chart->addAxis(y, Qt::AlignLeft);
+    }
+    errorSeries_->setPen(QPen(QColor(0xd6, 0x27, 0x28, 110), 1));
+    smoothSeries_->setPen(QPen(QColor(0x8b, 0x00, 0x00), 2));
+    errorChart_->addSeries(errorSeries_);
+    errorChart_->addSeries(smoothSeries_);
+    attachAxes(errorChart_, errorSeries_);
+    attachAxes(errorChart_, smoothSeries_);
+    errorView_ = makeView(errorChart_);
+    thetaView_ = makeView(thetaChart_);
+    actionView_ = makeView(actionChart_);
+    tabs_->addTab(errorView_, QString());
+    tabs_->addTab(thetaView_, QString());
+    tabs_->addTab(actionView_, QString());
+
+    redrawTimer_->setSingleShot(true);
+    redrawTimer_->setInterval(kRedrawMs);
+    connect(redrawTimer_, &QTimer::timeout, this, &LiveChartsPanel::redraw);
+    connect(freeze_, &QCheckBox::toggled, this, [this](bool frozen) {
+        if (!frozen) {
+            scheduleRedraw();
+        }
+    });
+    connect(fit_, &QPushButton::clicked, this, [this] {
+        zoomed_ = false;
+        redraw();
+    });
+    connect(exportCsv_, &QPushButton::clicked, this, &LiveChartsPanel::askExportCsv);
+    connect(exportPng_, &QPushButton::clicked, this, &LiveChartsPanel::askExportPng);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(freeze_);
+    buttons->addStretch(1);
+    buttons->addWidget(fit_);
+    buttons->addWidget(exportCsv_);
+    buttons->addWidget(exportPng_);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tabs_, 1);
+    layout->addLayout(buttons);
+    retranslateUi();
+}
+
+QChartView* LiveChartsPanel::makeView(QChart* chart) {
+    auto* view = new QChartView(chart, this);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setRubberBand(QChartView::RectangleRubberBand);
+    view->setMinimumHeight(160);
+    // A zoom by the operator means "hold this view": live redraws stop moving the axes.
+    auto* axis = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).first());
+    connect(axis, &QValueAxis::rangeChanged, this, [this] {
+        if (!fitting_) {
+            zoomed_ = true;
+        }
+    });
+    return view;
+}
+
+void LiveChartsPanel::setPlant(const sim::PlantInfo& info, int parameterCount) {
+    info_ = info;
+    for (QLineSeries* s : thetaSeries_ + actionSeries_ + referenceSeries_) {
+        s->chart()->removeSeries(s);
+        delete s;
+    }
+    thetaSeries_.clear();
+    actionSeries_.clear();
+    referenceSeries_.clear();
+    static const QColor palette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e),
+                                     QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
+                                     QColor(0x8c, 0x56, 0x4b), QColor(0xe3, 0x77, 0xc2),
+                                     QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22)};
+    const int m = info.actionDimension();
+    const int perChannel = m > 0 ? parameterCount / m : 0;
+    for (int i = 0; i < parameterCount; ++i) {
+        auto* s = new QLineSeries;
+        s->setName(QStringLiteral("θ%1 %2")
+                       .arg(i % std::max(1, perChannel))
+                       .arg(info.actionNames.value(perChannel > 0 ? i / perChannel : 0)));
+        s->setPen(QPen(palette[i % 8], 1.5));
+        thetaChart_->addSeries(s);
+        attachAxes(thetaChart_, s);
+        thetaSeries_.push_back(s);
+    }
+    for (int l = 0; l < m; ++l) {
+        auto* u = new QLineSeries;
+        u->setName(QStringLiteral("u %1").arg(info.actionNames[l]));
+        u->setPen(QPen(palette[l % 8], 1.5));
+        auto* ref = new QLineSeries;
+        ref->setName(QStringLiteral("u* %1").arg(info.actionNames[l]));
+        ref->setPen(QPen(palette[l % 8], 1.0, Qt::DashLine));
+        actionChart_->addSeries(u);
+        actionChart_->addSeries(ref);
+        attachAxes(actionChart_, u);
+        attachAxes(actionChart_, ref);
+        actionSeries_.push_back(u);
+        referenceSeries_.push_back(ref);
+    }
+    retranslateUi();
+    clear();
+}
+
+void LiveChartsPanel::clear() {
+    error_.clear();
+    smooth_.clear();
+    theta_ = QVector<QVector<QPointF>>(thetaSeries_.size());
+    action_ = QVector<QVector<QPointF>>(actionSeries_.size());
+    reference_ = QVector<QVector<QPointF>>(referenceSeries_.size());
+    smoothed_ = 0.0;
+    zoomed_ = false;
+    redraw();
+}
+
+void LiveChartsPanel::addSamples(const QVector<LiveSample>& samples) {
+    for (const LiveSample& s : samples) {
+        const double t = s.runTime;
+        const double dt = error_.isEmpty() ? 0.0 : std::max(0.0, t - error_.back().x());
+        const double a = error_.isEmpty() ? 1.0 : 1.0 - std::exp(-dt / kSmoothingSeconds);
+        smoothed_ += a * (s.trackedError - smoothed_);
+        error_.push_back({t, s.trackedError});
+        smooth_.push_back({t, smoothed_});
+        for (int i = 0; i < theta_.size() && i < s.theta.size(); ++i) {
+            theta_[i].push_back({t, s.theta[i]});
+        }
+        for (int l = 0; l < action_.size() && l < s.action.size(); ++l) {
+            action_[l].push_back({t, s.action[l]});
+            reference_[l].push_back({t, s.referenceAction[l]});
+        }
+    }
+    scheduleRedraw();
+}
+
+void LiveChartsPanel::scheduleRedraw() {
+    if (!redrawTimer_->isActive()) {
+        redrawTimer_->start();
+    }
+}
+
+int LiveChartsPanel::drawnPoints() const {
+    return static_cast<int>(errorSeries_->count());
+}
+
+void LiveChartsPanel::redraw() {
+    if (freeze_->isChecked()) {
+        return;
+    }
+    errorSeries_->replace(decimateMinMax(error_, kBuckets));
+    smoothSeries_->replace(decimateMinMax(smooth_, kBuckets));
+    for (int i = 0; i < thetaSeries_.size(); ++i) {
+        thetaSeries_[i]->replace(decimateMinMax(theta_[i], kBuckets));
+    }
+    for (int l = 0; l < actionSeries_.size(); ++l) {
+        actionSeries_[l]->replace(decimateMinMax(action_[l], kBuckets));
+        referenceSeries_[l]->replace(decimateMinMax(reference_[l], kBuckets));
+    }
+    if (!zoomed_) {
+        fitAxes();
+    }
+}
+
+void LiveChartsPanel::fitAxes() {
+    fitting_ = true;
+    const auto fit = [](QChart* chart, const QVector<const QVector<QPointF>*>& data) {
+        double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+        for (const QVector<QPointF>* d : data) {
+            for (const QPointF& p : *d) {
+                x0 = std::min(x0, p.x());
+                x1 = std::max(x1, p.x());
+                if (std::isfinite(p.y())) {
+                    y0 = std::min(y0, p.y());
+                    y1 = std::max(y1, p.y());
+                }
+            }
+        }
+        if (std::isfinite(x0) && std::isfinite(y0)) {
+            setRange(chart, x0, x1, y0, y1);
+        } else {
+            setRange(chart, 0, 10, 0, 1);
+        }
+    };
+    fit(errorChart_, {&error_});
+    QVector<const QVector<QPointF>*> theta, action;
+    for (const auto& d : theta_)
+        theta.push_back(&d);
+    for (const auto& d : action_)
+        action.push_back(&d);
+    for (const auto& d : reference_)
+        action.push_back(&d);
+    fit(thetaChart_, theta);
+    fit(actionChart_, action);
+    fitting_ = false;
+}
+
+bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
+    QByteArray text = "# PRISCA Lab live chart export\nt,error,error_smoothed";
+    for (int i = 0; i < theta_.size(); ++i) {
+        text += ",theta_" + QByteArray::number(i);
+    }
+    for (int l = 0; l < action_.size(); ++l) {
+        text += ",u_" + info_.actionNames.value(l).toUtf8();
+    }
+    for (int l = 0; l < reference_.size(); ++l) {
+        text += ",ustar_" + info_.actionNames.value(l).toUtf8();
+    }
+    text += '\n';
+    for (int k = 0; k < error_.size(); ++k) {
+        QByteArray line;
+        core::appendCsvNumber(line, error_[k].x());
+        line += ',';
+        core::appendCsvNumber(line, error_[k].y());
+        line += ',';
+        core::appendCsvNumber(line, smooth_[k].y());
+        for (const auto* group : {&theta_, &action_, &reference_}) {
+            for (const QVector<QPointF>& series : *group) {
+                line += ',';
+                if (k < series.size()) {
+                    core::appendCsvNumber(line, series[k].y());
+                }
+            }
+        }
+        text += line;
+        text += '\n';
+    }
+    core::FileError fileError;
+    if (!core::writeFileAtomically(path, text, &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    return true;
+}
+
+bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
+    redraw();
+    const QSize size(900, 300);
+    QImage image(size.width(), size.height() * 3, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    int y = 0;
+    for (QChartView* view : {errorView_, thetaView_, actionView_}) {
+        const QSize old = view->size();
+        view->resize(size);
+        view->render(&painter, QRectF(0, y, size.width(), size.height()));
+        view->resize(old);
+        y += size.height();
+    }
+    painter.end();
+    if (!image.save(path, "PNG")) {
+        *error = tr("cannot write the picture to %1").arg(path);
+        return false;
+    }
+    return true;
+}
+
+void LiveChartsPanel::askExportCsv() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export chart data"), QString(),
+                                                      tr("CSV files (*.csv)"));
+    QString error;
+    if (!path.isEmpty() && !exportCsv(path, &error)) {
+        QMessageBox::warning(this, tr("Export chart data"), error);
+    }
+}
+
+void LiveChartsPanel::askExportPng() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export charts as picture"),
+                                                      QString(), tr("PNG pictures (*.png)"));
+    QString error;
+    if (!path.isEmpty() && !exportPng(path, &error)) {
+        QMessageBox::warning(this, tr("Export charts as picture"), error);
+    }
+}
+
+void LiveChartsPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void LiveChartsPanel::retranslateUi() {
+    const bool planar = info_.pose.has_value();
+    tabs_->setTabText(0, tr("Tracking error"));
+    tabs_->setTabText(1, tr("Policy θ"));
+    tabs_->setTabText(2, tr("Action u and u*"));
+    errorSeries_->setName(tr("error"));
+    smoothSeries_->setName(tr("smoothed (1 s)"));
+    errorChart_->axes(Qt::Vertical)
+        .first()
+        ->setTitleText(planar ? tr("error [m]") : tr("error [rad]"));
+    for (QChart* chart : {errorChart_, thetaChart_, actionChart_}) {
+        chart->axes(Qt::Horizontal).first()->setTitleText(tr("run time [s]"));
+    }
+    thetaChart_->axes(Qt::Vertical).first()->setTitleText(tr("θ"));
+    actionChart_->axes(Qt::Vertical).first()->setTitleText(tr("action"));
+    freeze_->setText(tr("Freeze"));
+    freeze_->setToolTip(tr("Stop redrawing to look closely; the data keeps being recorded."));
+    fit_->setText(tr("Fit"));
+    fit_->setToolTip(tr("Show all the data again after zooming (drag a box to zoom)."));
+    exportCsv_->setText(tr("Export CSV..."));
+    exportPng_->setText(tr("Export PNG..."));
+}
+
+}  // namespace prisca::app

@@ -1,0 +1,87 @@
+#pragma once
+
+#include "app/RunWorker.h"
+#include "sim/Plant.h"
+
+#include <QPointF>
+#include <QVector>
+#include <QWidget>
+
+class QChart;
+class QChartView;
+class QCheckBox;
+class QLineSeries;
+class QPushButton;
+class QTabWidget;
+class QTimer;
+class QValueAxis;
+
+namespace prisca::app {
+
+/// Live charts of a run against run time: the tracking error (raw and smoothed), theta, and
+/// each action u against the demonstration's u*. Samples are buffered as they arrive and the
+/// charts redrawn from a single-shot 40 ms timer with min/max decimation, so a 40 Hz stream with
+/// 100,000 points stays fluid. Freeze stops redrawing (the data keeps coming), drag zooms, Fit
+/// restores; PNG and CSV export.
+class LiveChartsPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit LiveChartsPanel(QWidget* parent = nullptr);
+
+    /// A new plant: series for its actions and parameters; clears the data.
+    void setPlant(const sim::PlantInfo& info, int parameterCount);
+    /// Clears the data (a new run).
+    void clear();
+    /// Buffers samples; the charts follow within one redraw period.
+    void addSamples(const QVector<LiveSample>& samples);
+
+    /// Points buffered for the tracking-error series (tests).
+    int bufferedPoints() const { return static_cast<int>(error_.size()); }
+    /// Points the tracking-error chart shows after decimation (tests).
+    int drawnPoints() const;
+
+    /// Writes every buffered sample as CSV (time, error, smoothed error, theta..., u..., u*...).
+    /// On failure returns false and sets *error.
+    bool exportCsv(const QString& path, QString* error) const;
+    /// Renders the three charts into one PNG. On failure returns false and sets *error.
+    bool exportPng(const QString& path, QString* error);
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void scheduleRedraw();
+    void redraw();
+    void fitAxes();
+    void retranslateUi();
+    void askExportCsv();
+    void askExportPng();
+    QChartView* makeView(QChart* chart);
+
+    sim::PlantInfo info_;
+    QTabWidget* tabs_;
+    QChart* errorChart_;
+    QChart* thetaChart_;
+    QChart* actionChart_;
+    QChartView* errorView_;
+    QChartView* thetaView_;
+    QChartView* actionView_;
+    QLineSeries* errorSeries_;
+    QLineSeries* smoothSeries_;
+    QVector<QLineSeries*> thetaSeries_;
+    QVector<QLineSeries*> actionSeries_;     ///< u per channel
+    QVector<QLineSeries*> referenceSeries_;  ///< u* per channel
+    QCheckBox* freeze_;
+    QPushButton* fit_;
+    QPushButton* exportCsv_;
+    QPushButton* exportPng_;
+    QTimer* redrawTimer_;
+    // Buffers (GUI thread only).
+    QVector<QPointF> error_, smooth_;
+    QVector<QVector<QPointF>> theta_, action_, reference_;
+    double smoothed_ = 0.0;
+    bool zoomed_ = false;
+    bool fitting_ = false;  ///< fitAxes() is moving the axes (not the operator)
+};
+
+}  // namespace prisca::app

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "app/RunWorker.h"
+
+#include <QObject>
+#include <QThread>
+
+namespace prisca::app {
+
+/// The GUI thread's handle on a RunWorker running on its own thread. Every call returns at once;
+/// the worker's signals arrive queued on the GUI thread. E-STOP is flagged directly (an atomic)
+/// so it takes effect at the worker's next control step even while its event queue is busy.
+class RunController : public QObject {
+    Q_OBJECT
+  public:
+    explicit RunController(QObject* parent = nullptr);
+    /// Stops the run, quits the thread and waits for it (bounded; never terminates it).
+    ~RunController() override;
+
+    void start(const RunRequest& request);
+    void pause();
+    void resume();
+    void stop();
+    void emergencyStop();
+    void resetEmergencyStop();
+    /// Simulated seconds per wall second; 0 = as fast as possible.
+    void setSpeed(double speed);
+
+    RunPhase phase() const { return phase_; }
+    /// The worker, for connecting to its signals (do not call its slots directly).
+    const RunWorker* worker() const { return worker_; }
+
+  signals:
+    void samplesReady(const QVector<prisca::app::LiveSample>& samples);
+    void phaseChanged(prisca::app::RunPhase phase);
+    void progress(const QString& text);
+    void trialFinished(int trial, const prisca::sim::TrialSummary& summary);
+    void runFinished();
+    void failed(const QString& message);
+
+  private:
+    QThread thread_;
+    RunWorker* worker_;
+    RunPhase phase_ = RunPhase::Idle;
+};
+
+}  // namespace prisca::app

@@ -1,0 +1,253 @@
+#include "app/RunPanel.h"
+
+#include "app/LabSession.h"
+#include "app/RunController.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QShortcut>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace prisca::app {
+
+namespace {
+const char* const kSettingsGroup = "run";
+}
+
+RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      run_(run),
+      trialsLabel_(new QLabel(this)),
+      trials_(new QSpinBox(this)),
+      seedLabel_(new QLabel(this)),
+      seed_(new QSpinBox(this)),
+      perturbationLabel_(new QLabel(this)),
+      perturbation_(new QDoubleSpinBox(this)),
+      sensorLabel_(new QLabel(this)),
+      sensor_(new QDoubleSpinBox(this)),
+      speedLabel_(new QLabel(this)),
+      speed_(new QComboBox(this)),
+      runButton_(new QPushButton(this)),
+      pauseButton_(new QPushButton(this)),
+      stopButton_(new QPushButton(this)),
+      emergencyButton_(new QPushButton(this)),
+      resetEmergencyButton_(new QPushButton(this)),
+      status_(new QLabel(this)),
+      results_(new QTableWidget(0, 4, this)) {
+    setObjectName(QStringLiteral("runPanel"));
+    trials_->setObjectName(QStringLiteral("trials"));
+    trials_->setRange(1, 1000);
+    seed_->setObjectName(QStringLiteral("seed"));
+    seed_->setRange(0, 1000000);
+    perturbation_->setObjectName(QStringLiteral("perturbation"));
+    perturbation_->setRange(0.0, 5.0);
+    perturbation_->setSingleStep(0.25);
+    sensor_->setObjectName(QStringLiteral("sensor"));
+    sensor_->setRange(0.0, 5.0);
+    sensor_->setSingleStep(0.25);
+    speed_->setObjectName(QStringLiteral("speed"));
+    for (int i = 0; i < speeds().size(); ++i) {
+        speed_->addItem(QString(), speeds()[i]);
+    }
+    runButton_->setObjectName(QStringLiteral("runButton"));
+    pauseButton_->setObjectName(QStringLiteral("pauseButton"));
+    stopButton_->setObjectName(QStringLiteral("stopButton"));
+    runButton_->setShortcut(QKeySequence(Qt::Key_F5));
+    pauseButton_->setShortcut(QKeySequence(Qt::Key_F6));
+    stopButton_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
+    emergencyButton_->setMinimumHeight(64);
+    emergencyButton_->setStyleSheet(QStringLiteral(
+        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 20px;"
+        " border: 3px solid #7f0000; border-radius: 8px; }"
+        "QPushButton:pressed { background: #8e0000; }"));
+    emergencyButton_->setFocusPolicy(Qt::NoFocus);
+    resetEmergencyButton_->setObjectName(QStringLiteral("resetEmergencyButton"));
+    status_->setObjectName(QStringLiteral("runStatus"));
+    status_->setWordWrap(true);
+    results_->setObjectName(QStringLiteral("trialResults"));
+    results_->verticalHeader()->setVisible(false);
+    results_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    results_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    results_->setMinimumHeight(60);
+
+    auto* form = new QFormLayout;
+    form->addRow(trialsLabel_, trials_);
+    form->addRow(seedLabel_, seed_);
+    form->addRow(perturbationLabel_, perturbation_);
+    form->addRow(sensorLabel_, sensor_);
+    form->addRow(speedLabel_, speed_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(runButton_);
+    buttons->addWidget(pauseButton_);
+    buttons->addWidget(stopButton_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(buttons);
+    layout->addWidget(emergencyButton_);
+    layout->addWidget(resetEmergencyButton_);
+    layout->addWidget(status_);
+    layout->addWidget(results_, 1);
+
+    QSettings settings;
+    settings.beginGroup(QLatin1String(kSettingsGroup));
+    trials_->setValue(settings.value("trials", 5).toInt());
+    seed_->setValue(settings.value("seed", 1).toInt());
+    perturbation_->setValue(settings.value("perturbation", 1.0).toDouble());
+    sensor_->setValue(settings.value("sensor", 1.0).toDouble());
+    speed_->setCurrentIndex(std::clamp(settings.value("speedIndex", 0).toInt(), 0,
+                                       static_cast<int>(speeds().size()) - 1));
+    settings.endGroup();
+    run_.setSpeed(speed_->currentData().toDouble());
+
+    connect(runButton_, &QPushButton::clicked, this, &RunPanel::startRun);
+    connect(pauseButton_, &QPushButton::clicked, this, [this] {
+        if (phase_ == RunPhase::Paused) {
+            run_.resume();
+        } else {
+            run_.pause();
+        }
+    });
+    connect(stopButton_, &QPushButton::clicked, &run_, &RunController::stop);
+    connect(emergencyButton_, &QPushButton::pressed, &run_, &RunController::emergencyStop);
+    connect(resetEmergencyButton_, &QPushButton::clicked, &run_,
+            &RunController::resetEmergencyStop);
+    connect(speed_, &QComboBox::currentIndexChanged, this, [this] {
+        run_.setSpeed(speed_->currentData().toDouble());
+        QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());
+    });
+    // E-STOP answers Space and Esc anywhere in the window, whatever has the focus.
+    for (const QKeySequence& key : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape)}) {
+        auto* shortcut = new QShortcut(key, this);
+        shortcut->setContext(Qt::WindowShortcut);
+        connect(shortcut, &QShortcut::activated, &run_, &RunController::emergencyStop);
+    }
+    connect(&run_, &RunController::phaseChanged, this, &RunPanel::updateButtons);
+    connect(&run_, &RunController::progress, status_, &QLabel::setText);
+    connect(&run_, &RunController::failed, status_, &QLabel::setText);
+    connect(&run_, &RunController::trialFinished, this, &RunPanel::addTrialRow);
+    retranslateUi();
+    updateButtons(run_.phase());
+}
+
+void RunPanel::startRun() {
+    if (phase_ == RunPhase::Running || phase_ == RunPhase::Training) {
+        return;
+    }
+    QSettings settings;
+    settings.beginGroup(QLatin1String(kSettingsGroup));
+    settings.setValue("trials", trials_->value());
+    settings.setValue("seed", seed_->value());
+    settings.setValue("perturbation", perturbation_->value());
+    settings.setValue("sensor", sensor_->value());
+    settings.endGroup();
+
+    RunRequest request;
+    request.plant = session_.plant();
+    request.method = session_.method();
+    request.profile = session_.profile();
+    request.demonstration = session_.demonstration();
+    request.fittedB = session_.fit().b;
+    request.trials = trials_->value();
+    request.seed = static_cast<std::uint64_t>(seed_->value());
+    request.perturbation = perturbation_->value();
+    request.sensor = sensor_->value();
+    results_->setRowCount(0);
+    emit runStarting();
+    run_.start(request);
+}
+
+void RunPanel::updateButtons(RunPhase phase) {
+    phase_ = phase;
+    const bool active =
+        phase == RunPhase::Running || phase == RunPhase::Paused || phase == RunPhase::Training;
+    runButton_->setEnabled(phase == RunPhase::Idle);
+    pauseButton_->setEnabled(phase == RunPhase::Running || phase == RunPhase::Paused);
+    stopButton_->setEnabled(active);
+    resetEmergencyButton_->setVisible(phase == RunPhase::EmergencyStopped);
+    pauseButton_->setText(phase == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
+    if (phase == RunPhase::EmergencyStopped) {
+        status_->setText(tr("E-STOP engaged: the run is stopped. Reset E-STOP to run again."));
+    } else if (phase == RunPhase::Training) {
+        status_->setText(tr("Training before the run..."));
+    }
+}
+
+void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
+    const int row = results_->rowCount();
+    results_->insertRow(row);
+    const bool planar = session_.profile().info.pose.has_value();
+    const auto cell = [&](int column, const QString& text) {
+        auto* item = new QTableWidgetItem(text);
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        results_->setItem(row, column, item);
+    };
+    cell(0, QString::number(trial + 1));
+    cell(1, planar ? QString::number(summary.finalPositionError * 100.0, 'f', 1)
+                   : QStringLiteral("—"));
+    cell(2, planar ? QString::number(summary.finalHeadingError * 180.0 / M_PI, 'f', 1)
+                   : QStringLiteral("—"));
+    cell(3, QString::number(summary.trackingRms, 'f', 3));
+    results_->scrollToBottom();
+}
+
+void RunPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void RunPanel::retranslateUi() {
+    trialsLabel_->setText(tr("Trials in a row:"));
+    trials_->setToolTip(tr("Learners keep what they learnt from one trial to the next."));
+    seedLabel_->setText(tr("Seed:"));
+    seed_->setToolTip(
+        tr("Draws the perturbation and sensor noise of each trial; the same seed "
+           "gives the same trials."));
+    perturbationLabel_->setText(tr("Perturbation:"));
+    perturbation_->setToolTip(
+        tr("Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 "
+           "a realistic lab."));
+    sensorLabel_->setText(tr("Sensor noise:"));
+    sensor_->setToolTip(
+        tr("Measurement noise, latency and dropped samples: 0 perfect, 1 "
+           "realistic."));
+    speedLabel_->setText(tr("Speed:"));
+    speed_->setItemText(0, tr("Real time (1x)"));
+    speed_->setItemText(1, tr("10x"));
+    speed_->setItemText(2, tr("As fast as possible"));
+    runButton_->setText(tr("Run (F5)"));
+    pauseButton_->setText(phase_ == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
+    stopButton_->setText(tr("Stop (Shift+F5)"));
+    emergencyButton_->setText(tr("E-STOP (Space / Esc)"));
+    emergencyButton_->setToolTip(
+        tr("Stops the run at once, within one control period, and stays engaged until reset."));
+    resetEmergencyButton_->setText(tr("Reset E-STOP"));
+    // Short headings (the table is narrow); the tooltips say them in full.
+    results_->setHorizontalHeaderLabels(
+        {tr("Trial"), tr("Δp [cm]"), tr("Δψ [deg]"),
+         session_.profile().info.pose ? tr("RMS [m]") : tr("RMS [rad]")});
+    const QStringList tips = {
+        tr("Trial in the run"), tr("Final position error: distance from the lot [cm]"),
+        tr("Final heading error [deg]"), tr("Time-aligned RMS tracking error over the trial")};
+    for (int i = 0; i < tips.size(); ++i) {
+        if (QTableWidgetItem* header = results_->horizontalHeaderItem(i)) {
+            header->setToolTip(tips[i]);
+        }
+    }
+}
+
+}  // namespace prisca::app

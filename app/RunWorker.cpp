@@ -1,0 +1,272 @@
+#include "app/RunWorker.h"
+
+#include "core/Controller.h"
+#include "sim/ControllerFactory.h"
+#include "sim/MethodTraining.h"
+#include "sim/PlantCatalog.h"
+
+#include <QLoggingCategory>
+#include <QTimer>
+
+#include <exception>
+
+Q_LOGGING_CATEGORY(lcRun, "prisca.app.run")
+
+namespace prisca::app {
+
+namespace {
+
+constexpr int kTickMs = 5;             // how often the pace is checked [ms]
+constexpr int kFlushMs = 40;           // samples are sent at most this often [ms]
+constexpr qint64 kFastSliceMs = 12;    // "as fast as possible": wall time per slice [ms]
+constexpr int kMaxCatchUpSteps = 400;  // a stalled pace never runs more than this per tick
+
+}  // namespace
+
+RunWorker::RunWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+    timer_->setTimerType(Qt::PreciseTimer);
+    timer_->setInterval(kTickMs);
+    connect(timer_, &QTimer::timeout, this, &RunWorker::tick);
+}
+
+RunWorker::~RunWorker() = default;
+
+void RunWorker::start(const RunRequest& request) {
+    timer_->stop();
+    stepper_.reset();
+    pending_.clear();
+    if (emergency_.load()) {
+        emit failed(tr("E-STOP is engaged: reset it before starting a run."));
+        setPhase(RunPhase::EmergencyStopped);
+        return;
+    }
+    cancelTraining_.store(false);
+    request_ = request;
+    try {
+        plant_ = sim::PlantCatalog::create(request_.plant);
+        const core::Demonstration& demo = *request_.demonstration;
+        const double demoDuration = demo.length() * demo.dt;
+        const double level = request_.perturbation;
+        episode_ = sim::EpisodeSettings{};
+        episode_.perturbation = {level, level, level};
+        episode_.measurement = request_.profile.measurement;
+        if (episode_.measurement.noise.size() > 0) {
+            episode_.measurement.noise *= request_.sensor;
+        }
+        if (request_.sensor == 0.0) {
+            episode_.measurement.latencySteps = 0;
+            episode_.measurement.dropProbability = 0.0;
+        }
+        episode_.duration = demoDuration + request_.profile.settleTime;
+        episode_.stopAtRestAfter = request_.profile.info.pose ? demoDuration : -1.0;
+
+        sim::PlantProfile profile = request_.profile;
+        Eigen::MatrixXd pegasusTheta;
+        if (request_.method == QLatin1String("pd-selected") ||
+            request_.method == QLatin1String("pegasus")) {
+            // Offline methods train first, on seeds the run never uses.
+            setPhase(RunPhase::Training);
+            sim::TrainingSetup training;
+            training.plant = request_.plant;
+            training.profile = profile;
+            training.demonstration = request_.demonstration;
+            training.fittedB = request_.fittedB;
+            training.episode = episode_;
+            training.episode.recordSteps = false;
+            for (int i = 0; i < request_.trainingTrials; ++i) {
+                training.seeds.push_back(sim::mixSeed(request_.seed ^ 0x7261696eULL, i));
+            }
+            training.threads = 1;
+            training.cancelled = [this] { return cancelTraining_.load() || emergency_.load(); };
+            training.progress = [this](const QString& text) { emit progress(text); };
+            if (request_.method == QLatin1String("pegasus")) {
+                pegasusTheta = sim::trainPegasus(training, profile.pegasusIterations).theta;
+            } else {
+                profile.pd = sim::selectPdGains(training);
+            }
+            if (emergency_.load()) {
+                enterEmergencyStop();
+                return;
+            }
+            if (cancelTraining_.load()) {
+                setPhase(RunPhase::Idle);
+                return;
+            }
+        }
+        controller_ = sim::ControllerFactory::create(request_.method, profile,
+                                                     request_.demonstration, request_.fittedB,
+                                                     pegasusTheta.size() ? &pegasusTheta : nullptr);
+    } catch (const std::exception& e) {
+        setPhase(RunPhase::Idle);
+        emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
+        return;
+    }
+    trial_ = 0;
+    runTimeOffset_ = 0.0;
+    stepsTaken_.store(0);
+    beginTrial();
+    setPhase(RunPhase::Running);
+    timer_->start();
+}
+
+void RunWorker::beginTrial() {
+    episode_.seed = sim::mixSeed(request_.seed, static_cast<std::uint64_t>(trial_));
+    episode_.resetMode = trial_ == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+    stepper_ = std::make_unique<sim::EpisodeStepper>(*plant_, *controller_, episode_);
+    emit progress(tr("Trial %1 of %2").arg(trial_ + 1).arg(request_.trials));
+    repace();
+    flushClock_.start();
+}
+
+void RunWorker::repace() {
+    paceClock_.start();
+    paceOriginStep_ = stepper_ ? stepper_->stepCount() : 0;
+}
+
+void RunWorker::tick() {
+    if (phase_ != RunPhase::Running || !stepper_) {
+        return;
+    }
+    const double dt = plant_->timing().controlPeriod;
+    int due = 0;
+    if (speed_ > 0.0) {
+        const double simulated = paceClock_.nsecsElapsed() * 1e-9 * speed_;
+        due = static_cast<int>(simulated / dt) - (stepper_->stepCount() - paceOriginStep_);
+        if (due > kMaxCatchUpSteps) {
+            // Behind (a slow machine, a debugger): drop the backlog rather than race to catch up.
+            due = kMaxCatchUpSteps;
+            repace();
+        }
+    }
+    QElapsedTimer slice;
+    slice.start();
+    for (int i = 0; speed_ <= 0.0 || i < due; ++i) {
+        if (speed_ <= 0.0 && slice.elapsed() >= kFastSliceMs) {
+            break;
+        }
+        // Checked before every step: E-STOP takes effect within one control period.
+        if (emergency_.load()) {
+            enterEmergencyStop();
+            return;
+        }
+        if (stepper_->finished()) {
+            endTrial();
+            return;
+        }
+        const sim::StepRecord& record = stepper_->step();
+        stepsTaken_.fetch_add(1);
+        LiveSample sample;
+        sample.trial = trial_;
+        sample.step = stepper_->stepCount() - 1;
+        sample.time = record.time;
+        sample.runTime = runTimeOffset_ + record.time;
+        sample.state = record.state;
+        sample.action = record.action;
+        sample.referenceAction = record.referenceAction;
+        sample.theta = record.parameters;
+        sample.referenceIndex = record.referenceIndex;
+        sample.cost = record.cost;
+        sample.trackedError = sim::trackedError(request_.profile.info, *request_.demonstration,
+                                                record.state, sample.step);
+        pending_.push_back(std::move(sample));
+    }
+    if (flushClock_.elapsed() >= kFlushMs) {
+        flushSamples();
+    }
+}
+
+void RunWorker::endTrial() {
+    flushSamples();
+    const sim::EpisodeResult result = stepper_->takeResult();
+    const sim::TrialSummary summary =
+        sim::summarizeTrial(request_.profile.info, *request_.demonstration, result);
+    emit trialFinished(trial_, summary);
+    runTimeOffset_ += result.duration;
+    ++trial_;
+    if (trial_ >= request_.trials) {
+        timer_->stop();
+        stepper_.reset();
+        setPhase(RunPhase::Idle);
+        emit progress(tr("Run finished: %1 trials").arg(request_.trials));
+        emit runFinished();
+        return;
+    }
+    beginTrial();
+}
+
+void RunWorker::flushSamples() {
+    if (!pending_.isEmpty()) {
+        emit samplesReady(pending_);
+        pending_.clear();
+    }
+    flushClock_.restart();
+}
+
+void RunWorker::pause() {
+    if (phase_ == RunPhase::Running) {
+        flushSamples();
+        setPhase(RunPhase::Paused);
+    }
+}
+
+void RunWorker::resume() {
+    if (phase_ == RunPhase::Paused) {
+        repace();
+        setPhase(RunPhase::Running);
+    }
+}
+
+void RunWorker::stop() {
+    cancelTraining_.store(true);
+    if (phase_ == RunPhase::Running || phase_ == RunPhase::Paused) {
+        flushSamples();
+        timer_->stop();
+        if (stepper_ && stepper_->stepCount() > 0) {
+            const sim::EpisodeResult result = stepper_->takeResult();
+            emit trialFinished(trial_, sim::summarizeTrial(request_.profile.info,
+                                                           *request_.demonstration, result));
+        }
+        stepper_.reset();
+        emit progress(tr("Run stopped"));
+        setPhase(RunPhase::Idle);
+    }
+}
+
+void RunWorker::enterEmergencyStop() {
+    timer_->stop();
+    flushSamples();
+    stepper_.reset();
+    qCWarning(lcRun) << "E-STOP after" << stepsTaken_.load() << "steps";
+    emit progress(tr("E-STOP: run stopped"));
+    setPhase(RunPhase::EmergencyStopped);
+}
+
+void RunWorker::engageEmergencyStop() {
+    emergency_.store(true);
+    if (phase_ != RunPhase::EmergencyStopped) {
+        enterEmergencyStop();
+    }
+}
+
+void RunWorker::resetEmergencyStop() {
+    emergency_.store(false);
+    if (phase_ == RunPhase::EmergencyStopped) {
+        setPhase(RunPhase::Idle);
+    }
+}
+
+void RunWorker::setSpeed(double speed) {
+    speed_ = speed;
+    if (stepper_) {
+        repace();
+    }
+}
+
+void RunWorker::setPhase(RunPhase phase) {
+    if (phase != phase_) {
+        phase_ = phase;
+        emit phaseChanged(phase);
+    }
+}
+
+}  // namespace prisca::app

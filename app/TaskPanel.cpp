@@ -1,0 +1,156 @@
+#include "app/TaskPanel.h"
+
+#include "app/LabSession.h"
+#include "core/DemonstrationCsv.h"
+#include "sim/PlantCatalog.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QVBoxLayout>
+
+namespace prisca::app {
+
+TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      targetLabel_(new QLabel(this)),
+      target_(new QComboBox(this)),
+      demonstration_(new QLabel(this)),
+      open_(new QPushButton(this)),
+      save_(new QPushButton(this)),
+      scripted_(new QPushButton(this)) {
+    setObjectName(QStringLiteral("taskPanel"));
+    target_->setObjectName(QStringLiteral("target"));
+    for (const QString& name : sim::PlantCatalog::names()) {
+        target_->addItem(QString(), name);
+    }
+    demonstration_->setObjectName(QStringLiteral("demonstrationInfo"));
+    demonstration_->setWordWrap(true);
+    open_->setObjectName(QStringLiteral("openDemonstration"));
+    save_->setObjectName(QStringLiteral("saveDemonstration"));
+    scripted_->setObjectName(QStringLiteral("scriptedDemonstration"));
+
+    auto* form = new QFormLayout;
+    form->addRow(targetLabel_, target_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(open_);
+    buttons->addWidget(save_);
+    buttons->addWidget(scripted_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(demonstration_);
+    layout->addLayout(buttons);
+    layout->addStretch(1);
+
+    connect(target_, &QComboBox::activated, this, [this](int index) {
+        const QString plant = target_->itemData(index).toString();
+        if (plant != session_.plant()) {
+            session_.setPlant(plant);
+            QSettings().setValue(QStringLiteral("task/plant"), plant);
+        }
+    });
+    connect(open_, &QPushButton::clicked, this, &TaskPanel::askOpen);
+    connect(save_, &QPushButton::clicked, this, &TaskPanel::askSave);
+    connect(scripted_, &QPushButton::clicked, this,
+            [this] { session_.setPlant(session_.plant()); });
+    connect(&session_, &LabSession::plantChanged, this,
+            [this](const QString& plant) { target_->setCurrentIndex(target_->findData(plant)); });
+    connect(&session_, &LabSession::demonstrationChanged, this, &TaskPanel::showDemonstration);
+    retranslateUi();
+    if (!session_.plant().isEmpty()) {
+        target_->setCurrentIndex(target_->findData(session_.plant()));
+        showDemonstration();
+    }
+}
+
+bool TaskPanel::openDemonstration(const QString& path) {
+    core::FileError error;
+    auto demo = core::readDemonstrationCsv(path, &error);
+    if (!demo) {
+        QMessageBox::warning(
+            this, tr("Open demonstration"),
+            tr("The demonstration could not be read.\n\n%1").arg(error.toString()));
+        return false;
+    }
+    try {
+        session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(*demo)), path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Open demonstration"),
+                             tr("%1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    QSettings().setValue(QStringLiteral("task/lastDirectory"), QFileInfo(path).absolutePath());
+    return true;
+}
+
+void TaskPanel::askOpen() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open demonstration"), QSettings().value("task/lastDirectory").toString(),
+        tr("Demonstrations (*.csv);;All files (*)"));
+    if (!path.isEmpty()) {
+        openDemonstration(path);
+    }
+}
+
+void TaskPanel::askSave() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save demonstration"), QSettings().value("task/lastDirectory").toString(),
+        tr("Demonstrations (*.csv)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    core::FileError error;
+    if (!core::writeDemonstrationCsv(*session_.demonstration(), path, &error)) {
+        QMessageBox::warning(this, tr("Save demonstration"), error.toString());
+    }
+}
+
+void TaskPanel::showDemonstration() {
+    const auto demo = session_.demonstration();
+    if (!demo) {
+        demonstration_->clear();
+        return;
+    }
+    const QString source = session_.demonstrationSource().isEmpty()
+                               ? tr("the scripted operator")
+                               : QFileInfo(session_.demonstrationSource()).fileName();
+    demonstration_->setText(tr("Demonstration: %1 samples, %2 s at %3 Hz, from %4.")
+                                .arg(demo->length())
+                                .arg(demo->length() * demo->dt, 0, 'f', 1)
+                                .arg(1.0 / demo->dt, 0, 'f', 0)
+                                .arg(source));
+}
+
+void TaskPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void TaskPanel::retranslateUi() {
+    targetLabel_->setText(tr("Target:"));
+    for (int i = 0; i < target_->count(); ++i) {
+        const QString name = target_->itemData(i).toString();
+        target_->setItemText(i, name == QLatin1String("slidecar")  ? tr("Simulated slide-car")
+                                : name == QLatin1String("acrobot") ? tr("Simulated acrobot")
+                                                                   : tr("Simulated aircraft"));
+    }
+    open_->setText(tr("Open..."));
+    open_->setToolTip(tr("Open a demonstration CSV recorded earlier"));
+    save_->setText(tr("Save as..."));
+    save_->setToolTip(tr("Save the demonstration as CSV"));
+    scripted_->setText(tr("Scripted"));
+    scripted_->setToolTip(tr("Use the scripted operator's demonstration for this target"));
+    showDemonstration();
+}
+
+}  // namespace prisca::app

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace prisca::app {
+
+class LabSession;
+
+/// The target (simulated slide-car, acrobot or aircraft) and the demonstration to repeat:
+/// which one is loaded, open one from a CSV file, save it, or go back to the scripted one.
+/// A file that cannot be used gets a message box naming the file and the problem.
+class TaskPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit TaskPanel(LabSession& session, QWidget* parent = nullptr);
+
+    /// Opens a demonstration CSV into the session; on failure shows a message box and leaves
+    /// the session as it was. Returns whether it was loaded.
+    bool openDemonstration(const QString& path);
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void retranslateUi();
+    void showDemonstration();
+    void askOpen();
+    void askSave();
+
+    LabSession& session_;
+    QLabel* targetLabel_;
+    QComboBox* target_;
+    QLabel* demonstration_;
+    QPushButton* open_;
+    QPushButton* save_;
+    QPushButton* scripted_;
+};
+
+}  // namespace prisca::app

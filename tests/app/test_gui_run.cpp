@@ -1,0 +1,264 @@
+// The operator's application driven offscreen through its real widgets: run PRISCA on the
+// simulated slide-car, E-STOP, pause, chart export read back, sessions saved and opened, bad
+// files answered with a message box.
+#include "app/ChartDecimation.h"
+#include "app/ControllerPanel.h"
+#include "app/LabSession.h"
+#include "app/LanguageSwitcher.h"
+#include "app/LiveChartsPanel.h"
+#include "app/MainWindow.h"
+#include "app/RunController.h"
+#include "app/TaskPanel.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QFile>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+
+using namespace prisca::app;
+
+namespace {
+
+constexpr int kRunTimeoutMs = 60000;
+
+// Reads and dismisses the next modal message box while `trigger` runs.
+QString answerMessageBox(QObject* context, const std::function<void()>& trigger) {
+    QString text;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, context, [&] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            text = box->text();
+            box->accept();
+        }
+    });
+    poll.start(20);
+    trigger();
+    poll.stop();
+    return text;
+}
+
+struct Window {
+    LanguageSwitcher languages;
+    MainWindow window{languages};
+    Window() {
+        window.resize(1280, 800);
+        window.show();
+    }
+    template <class T>
+    T* find(const char* name) {
+        return window.findChild<T*>(QLatin1String(name));
+    }
+    void setSpeedIndex(int index) { find<QComboBox>("speed")->setCurrentIndex(index); }
+    QTableWidget* results() { return find<QTableWidget>("trialResults"); }
+};
+
+}  // namespace
+
+class TestGuiRun : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_gui_run"));
+        QApplication::setQuitOnLastWindowClosed(false);
+    }
+    void init() { QSettings().clear(); }
+
+    void decimation_keepsEverySpikeWithBoundedPoints() {
+        QVector<QPointF> points;
+        for (int i = 0; i < 100000; ++i) {
+            points.push_back({i * 0.025, std::sin(i * 0.01)});
+        }
+        points[54321].setY(25.0);   // one spike up
+        points[77777].setY(-30.0);  // one down
+        const QVector<QPointF> drawn = decimateMinMax(points, 500);
+        QVERIFY(drawn.size() <= 4 * 500);
+        QVERIFY(drawn.size() >= 500);
+        double high = -1e9, low = 1e9;
+        for (int i = 0; i < drawn.size(); ++i) {
+            high = std::max(high, drawn[i].y());
+            low = std::min(low, drawn[i].y());
+            if (i > 0) {
+                QVERIFY(drawn[i].x() > drawn[i - 1].x());  // still a function of x
+            }
+        }
+        QCOMPARE(high, 25.0);
+        QCOMPARE(low, -30.0);
+        QCOMPARE(drawn.front(), points.front());
+        QCOMPARE(drawn.back(), points.back());
+        // Short series pass through untouched.
+        const QVector<QPointF> few = {{0, 1}, {1, 2}, {2, 0}};
+        QCOMPARE(decimateMinMax(few, 500), few);
+    }
+
+    void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {
+        Window w;
+        QCOMPARE(w.window.session().method(), QStringLiteral("prisca"));
+        w.setSpeedIndex(2);  // as fast as possible
+        w.find<QSpinBox>("trials")->setValue(2);
+        QSignalSpy finished(&w.window.run(), &RunController::runFinished);
+        w.find<QAbstractButton>("runButton")->click();
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QCOMPARE(w.results()->rowCount(), 2);
+        // A slide-park ends within a metre of the lot even on the first, untrained trial.
+        for (int row = 0; row < 2; ++row) {
+            const double cm = w.results()->item(row, 1)->text().toDouble();
+            QVERIFY2(cm >= 0.0 && cm < 100.0, qPrintable(w.results()->item(row, 1)->text()));
+        }
+        auto* charts = w.find<LiveChartsPanel>("liveChartsPanel");
+        // Two trials of at least the demonstration's 158 steps each, all buffered, fewer drawn.
+        QVERIFY2(charts->bufferedPoints() >= 2 * 158,
+                 qPrintable(QString::number(charts->bufferedPoints())));
+        QTRY_VERIFY(charts->drawnPoints() > 0);
+        QVERIFY(w.find<QAbstractButton>("runButton")->isEnabled());
+
+        // Export the charts and read the CSV back: one row per buffered step.
+        QTemporaryDir dir;
+        QString error;
+        const QString csv = dir.filePath("charts.csv");
+        QVERIFY2(charts->exportCsv(csv, &error), qPrintable(error));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), charts->bufferedPoints() + 2);  // comment + header
+        QVERIFY(lines[1].startsWith("t,error,error_smoothed,theta_0"));
+        QVERIFY(lines[1].contains("u_throttle") && lines[1].contains("ustar_steering"));
+        const QList<QByteArray> last = lines.back().split(',');
+        QCOMPARE(last.size(), lines[1].split(',').size());
+        const QString png = dir.filePath("charts.png");
+        QVERIFY2(charts->exportPng(png, &error), qPrintable(error));
+        QCOMPARE(QImage(png).size(), QSize(900, 900));
+    }
+
+    void emergencyStop_spaceStopsWithinOneControlPeriodAndLatches() {
+        Window w;
+        w.setSpeedIndex(2);  // as fast as possible: the hardest case for stopping promptly
+        w.find<QSpinBox>("trials")->setValue(50);
+        const RunWorker* worker = w.window.run().worker();
+        w.find<QAbstractButton>("runButton")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(worker->stepsTaken() > 100, kRunTimeoutMs);
+        QTest::keyClick(&w.window, Qt::Key_Space);
+        const int atPress = worker->stepsTaken();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        // The flag is read before every step: at most the step already under way completes.
+        QVERIFY2(worker->stepsTaken() - atPress <= 1,
+                 qPrintable(
+                     QStringLiteral("%1 steps after E-STOP").arg(worker->stepsTaken() - atPress)));
+        QTest::qWait(200);
+        QVERIFY(worker->stepsTaken() - atPress <= 1);
+        // Latched: Run is refused until E-STOP is reset.
+        auto* run = w.find<QAbstractButton>("runButton");
+        auto* reset = w.find<QAbstractButton>("resetEmergencyButton");
+        QVERIFY(!run->isEnabled());
+        QVERIFY(reset->isVisible());
+        reset->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        QVERIFY(run->isEnabled());
+        // Esc works the same, here while idle.
+        QTest::keyClick(&w.window, Qt::Key_Escape);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+    }
+
+    void pauseAndStop_holdAndEndTheRun() {
+        Window w;
+        w.setSpeedIndex(0);  // real time
+        w.find<QSpinBox>("trials")->setValue(3);
+        const RunWorker* worker = w.window.run().worker();
+        w.find<QAbstractButton>("runButton")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(worker->stepsTaken() > 10, kRunTimeoutMs);
+        w.find<QAbstractButton>("pauseButton")->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Paused);
+        const int paused = worker->stepsTaken();
+        QTest::qWait(300);  // 12 control periods at 40 Hz
+        QCOMPARE(worker->stepsTaken(), paused);
+        w.find<QAbstractButton>("pauseButton")->click();  // resume
+        QTRY_VERIFY(worker->stepsTaken() > paused);
+        w.find<QAbstractButton>("stopButton")->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        // The interrupted trial is reported as far as it went.
+        QTRY_COMPARE(w.results()->rowCount(), 1);
+    }
+
+    void session_savedAndOpenedWithItsParameters() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("session.json");
+        {
+            Window w;
+            w.find<QComboBox>("target")->setCurrentIndex(
+                w.find<QComboBox>("target")->findData(QStringLiteral("aircraft")));
+            // activated() is what an operator's choice emits.
+            emit w.find<QComboBox>("target")->activated(
+                w.find<QComboBox>("target")->currentIndex());
+            QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));
+            w.find<QSpinBox>("horizon")->setValue(17);
+            auto* method = w.find<QComboBox>("method");
+            method->setCurrentIndex(method->findData(QStringLiteral("pgsd")));
+            emit method->activated(method->currentIndex());
+            QCOMPARE(w.window.session().method(), QStringLiteral("pgsd"));
+            QVERIFY(w.window.saveSession(path));
+        }
+        Window w;
+        QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));  // remembered target
+        w.find<QComboBox>("target")->setCurrentIndex(1);
+        emit w.find<QComboBox>("target")->activated(1);
+        QCOMPARE(w.window.session().plant(), QStringLiteral("acrobot"));
+        QVERIFY(w.window.openSession(path));
+        QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));
+        QCOMPARE(w.window.session().method(), QStringLiteral("pgsd"));
+        QCOMPARE(w.window.session().profile().prisca.horizon, 17);
+        QCOMPARE(w.find<QSpinBox>("horizon")->value(), 17);
+        QCOMPARE(w.find<QComboBox>("target")->currentData().toString(), QStringLiteral("aircraft"));
+    }
+
+    void badFiles_getAClearMessageAndChangeNothing() {
+        QTemporaryDir dir;
+        Window w;
+        const auto demoBefore = w.window.session().demonstration();
+
+        const QString garbage = dir.filePath("garbage.json");
+        QFile f(garbage);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(
+            "{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", \"prisca\": {\"gamma\": 7} "
+            "}");
+        f.close();
+        QString text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
+        QVERIFY2(text.contains("garbage.json") && text.contains("gamma"), qPrintable(text));
+
+        const QString notJson = dir.filePath("not.json");
+        QFile g(notJson);
+        QVERIFY(g.open(QIODevice::WriteOnly));
+        g.write("\x01\x02 nonsense");
+        g.close();
+        text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(notJson)); });
+        QVERIFY2(text.contains("not valid JSON"), qPrintable(text));
+
+        // A demonstration with a NaN: the reader names the line; the session keeps its own.
+        const QString csv = dir.filePath("bad-demo.csv");
+        QFile h(csv);
+        QVERIFY(h.open(QIODevice::WriteOnly));
+        h.write(
+            "# prisca-demonstration 1\n# plant: slidecar\n# dt: 0.025\n"
+            "# states: x[m], y[m], psi[rad], vx[m/s], vy[m/s], r[rad/s]\n"
+            "# actions: throttle[1], steering[1]\n"
+            "t,x,y,psi,vx,vy,r,throttle,steering\n"
+            "0,0,0,0,0,0,0,0,0\n0.025,0,nan,0,0,0,0,0,0\n");
+        h.close();
+        auto* task = w.find<TaskPanel>("taskPanel");
+        text = answerMessageBox(this, [&] { QVERIFY(!task->openDemonstration(csv)); });
+        QVERIFY2(text.contains("bad-demo.csv") && text.contains(":8"), qPrintable(text));
+        QCOMPARE(w.window.session().demonstration(), demoBefore);
+    }
+};
+
+QTEST_MAIN(TestGuiRun)
+#include "test_gui_run.moc"
