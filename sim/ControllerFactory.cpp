@@ -25,9 +25,17 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
     std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
     const Eigen::MatrixXd* theta) {
     if (method == QLatin1String("prisca")) {
+        core::TrackingProblem problem =
+            profile.trackingProblem(demonstration, profile.priscaMatching);
+        if (profile.priscaCostWeights.size() > 0) {
+            problem.costWeights = profile.priscaCostWeights;
+        }
+        const Eigen::MatrixXd model = profile.priscaModel == PlantProfile::PriscaModel::Signs
+                                          ? profile.mapping.asDouble()
+                                          : fittedB;
         return std::make_unique<core::PriscaController>(
-            profile.trackingProblem(demonstration, profile.priscaMatching), profile.features,
-            fittedB, profile.prisca);
+            std::move(problem), profile.priscaFeatures.value_or(profile.features), model,
+            profile.prisca);
     }
     if (method == QLatin1String("pgsd")) {
         return std::make_unique<core::PgsdController>(

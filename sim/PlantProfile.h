@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+
 namespace prisca::sim {
 
 /// How each method is set up on one plant: the intuitive mapping B~, the features, the
@@ -32,6 +34,14 @@ struct PlantProfile {
     /// "desired joint angles at each time step", paper V.A).
     core::MatchingParameters::Mode priscaMatching =
         core::MatchingParameters::Mode::LeastStateDeviation;
+    /// PRISCA's own features and cost weights where its tuning chose others than the shared
+    /// ones that PGSD and PEGASUS use (unset / empty: the shared ones).
+    std::optional<core::FeatureMap> priscaFeatures;
+    Eigen::VectorXd priscaCostWeights;
+    /// PRISCA's model B (m x n): the fit B_v (.) B~, or the signs B~ alone where the fit is not
+    /// to be trusted (a demonstration flown in closed loop confounds eq. 8; see README).
+    enum class PriscaModel { Fitted, Signs };
+    PriscaModel priscaModel = PriscaModel::Fitted;
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]

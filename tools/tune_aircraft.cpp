@@ -61,6 +61,10 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     if (s.signModel) {
         B = p.mapping.asDouble();
     }
+    // Every method is scored on the setting drawn, not on the profile's tuned choices.
+    p.priscaFeatures.reset();
+    p.priscaCostWeights.resize(0);
+    p.priscaModel = sim::PlantProfile::PriscaModel::Fitted;
     p.features = core::FeatureMap({{{Source::Deviation, 0, s.lon}, {Source::Deviation, 3, s.u}},
                                    {{Source::Deviation, 1, s.lat}, {Source::Deviation, 2, s.psi}}});
     p.costWeights << 1, 1, s.weightPsi, s.weightVelocity, s.weightVelocity, s.weightR;
