@@ -6,6 +6,7 @@
 #include "app/LanguageMenu.h"
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
+#include "app/RecordPanel.h"
 #include "app/RunController.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
@@ -90,13 +91,16 @@ void MainWindow::createPanels() {
     taskPanel_ = new TaskPanel(*session_, this);
     controllerPanel_ = new ControllerPanel(*session_, this);
     runPanel_ = new RunPanel(*session_, *run_, this);
+    recordPanel_ = new RecordPanel(*session_, this);
     chartsPanel_ = new LiveChartsPanel(this);
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
+    recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     controllerDock_ =
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
     runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
     chartsDock_ = dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea);
-    tabifyDockWidget(taskDock_, controllerDock_);
+    tabifyDockWidget(taskDock_, recordDock_);
+    tabifyDockWidget(recordDock_, controllerDock_);
     taskDock_->raise();
     resizeDocks({chartsDock_}, {260}, Qt::Vertical);
     resizeDocks({runDock_}, {380}, Qt::Horizontal);
@@ -108,6 +112,11 @@ void MainWindow::createPanels() {
         chartsPanel_->clear();
     });
     connect(run_, &RunController::samplesReady, arena_, &ArenaView::addSamples);
+    connect(recordPanel_, &RecordPanel::recordingStarted, arena_, &ArenaView::clearTrails);
+    connect(recordPanel_, &RecordPanel::samplesReady, arena_, &ArenaView::addSamples);
+    // E-STOP ends a recording too (the operator may be driving when it is pressed).
+    connect(runPanel_, &RunPanel::emergencyStopRequested, recordPanel_,
+            &RecordPanel::emergencyStop);
     connect(run_, &RunController::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
 }
 
@@ -161,11 +170,14 @@ void MainWindow::createMenus() {
     runMenu_->setObjectName(QStringLiteral("runMenu"));
     emergencyAction_ = runMenu_->addAction(QString());
     emergencyAction_->setObjectName(QStringLiteral("emergencyStopAction"));
-    connect(emergencyAction_, &QAction::triggered, run_, &RunController::emergencyStop);
+    connect(emergencyAction_, &QAction::triggered, this, [this] {
+        run_->emergencyStop();
+        recordPanel_->emergencyStop();
+    });
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
-    for (QDockWidget* d : {taskDock_, controllerDock_, runDock_, chartsDock_}) {
+    for (QDockWidget* d : {taskDock_, recordDock_, controllerDock_, runDock_, chartsDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -247,6 +259,7 @@ void MainWindow::retranslateUi() {
     emergencyAction_->setText(tr("E-STOP (Space / Esc)"));
     viewMenu_->setTitle(tr("&View"));
     taskDock_->setWindowTitle(tr("Task"));
+    recordDock_->setWindowTitle(tr("Record"));
     controllerDock_->setWindowTitle(tr("Controller"));
     runDock_->setWindowTitle(tr("Run"));
     chartsDock_->setWindowTitle(tr("Live charts"));

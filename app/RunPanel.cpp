@@ -121,7 +121,11 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         }
     });
     connect(stopButton_, &QPushButton::clicked, &run_, &RunController::stop);
-    connect(emergencyButton_, &QPushButton::pressed, &run_, &RunController::emergencyStop);
+    const auto emergency = [this] {
+        run_.emergencyStop();
+        emit emergencyStopRequested();
+    };
+    connect(emergencyButton_, &QPushButton::pressed, this, emergency);
     connect(resetEmergencyButton_, &QPushButton::clicked, &run_,
             &RunController::resetEmergencyStop);
     connect(speed_, &QComboBox::currentIndexChanged, this, [this] {
@@ -132,7 +136,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     for (const QKeySequence& key : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape)}) {
         auto* shortcut = new QShortcut(key, this);
         shortcut->setContext(Qt::WindowShortcut);
-        connect(shortcut, &QShortcut::activated, &run_, &RunController::emergencyStop);
+        connect(shortcut, &QShortcut::activated, this, emergency);
     }
     connect(&run_, &RunController::phaseChanged, this, &RunPanel::updateButtons);
     connect(&run_, &RunController::progress, status_, &QLabel::setText);

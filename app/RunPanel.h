@@ -32,6 +32,8 @@ class RunPanel : public QWidget {
   signals:
     /// A run is about to start: views clear their trails and charts.
     void runStarting();
+    /// The operator pressed E-STOP (button, Space or Esc); sent at once, before the run reacts.
+    void emergencyStopRequested();
 
   protected:
     void changeEvent(QEvent* event) override;

@@ -813,6 +813,20 @@ QString checkDemonstrationForCsv(const Demonstration& demo) {
     return {};
 }
 
+void appendDemonstrationCsvRow(QByteArray& out, double time, const Eigen::VectorXd& state,
+                               const Eigen::VectorXd& action) {
+    appendNumber(out, time);
+    for (Eigen::Index c = 0; c < state.size(); ++c) {
+        out += ',';
+        appendNumber(out, state[c]);
+    }
+    for (Eigen::Index c = 0; c < action.size(); ++c) {
+        out += ',';
+        appendNumber(out, action[c]);
+    }
+    out += '\n';
+}
+
 QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem) {
     try {
         const QString why = checkDemonstrationForCsv(demo);
@@ -851,16 +865,8 @@ QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem) {
         }
         out += '\n';
         for (int k = 0; k < rows; ++k) {
-            appendNumber(out, demo.time[k]);
-            for (int c = 0; c < n; ++c) {
-                out += ',';
-                appendNumber(out, demo.states(k, c));
-            }
-            for (int c = 0; c < m; ++c) {
-                out += ',';
-                appendNumber(out, demo.actions(k, c));
-            }
-            out += '\n';
+            appendDemonstrationCsvRow(out, demo.time[k], demo.states.row(k).transpose(),
+                                      demo.actions.row(k).transpose());
         }
         return out;
     } catch (const std::bad_alloc&) {

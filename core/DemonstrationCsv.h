@@ -67,6 +67,11 @@ QString checkDemonstrationForCsv(const Demonstration& demo);
 /// @return the text, or an empty array when checkDemonstrationForCsv() reports a problem
 QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem = nullptr);
 
+/// Appends one data row (t, states..., actions...) in the format of formatDemonstrationCsv(), so
+/// a recording can be streamed to disk row by row after a header written by that function.
+void appendDemonstrationCsvRow(QByteArray& out, double time, const Eigen::VectorXd& state,
+                               const Eigen::VectorXd& action);
+
 /// Writes @p demo to @p path atomically (QSaveFile): on any failure an existing file at
 /// @p path is left untouched and no partial file remains.
 /// @param error  when non-null and writing fails, receives the path and the reason (an invalid

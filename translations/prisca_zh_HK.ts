@@ -146,7 +146,7 @@
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="108" />
+        <location filename="../app/LabSession.cpp" line="107" />
         <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
@@ -176,12 +176,12 @@
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="227" />
+        <location filename="../app/LabSession.cpp" line="226" />
         <source>'mapping': %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="231" />
+        <location filename="../app/LabSession.cpp" line="230" />
         <source>'mapping' must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
@@ -191,12 +191,12 @@
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="282" />
+        <location filename="../app/LabSession.cpp" line="281" />
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="286" />
+        <location filename="../app/LabSession.cpp" line="285" />
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
@@ -212,109 +212,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="326" />
+        <location filename="../app/LiveChartsPanel.cpp" line="330" />
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="333" />
         <location filename="../app/LiveChartsPanel.cpp" line="337" />
+        <location filename="../app/LiveChartsPanel.cpp" line="341" />
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="334" />
+        <location filename="../app/LiveChartsPanel.cpp" line="338" />
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="342" />
         <location filename="../app/LiveChartsPanel.cpp" line="346" />
+        <location filename="../app/LiveChartsPanel.cpp" line="350" />
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="343" />
+        <location filename="../app/LiveChartsPanel.cpp" line="347" />
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="359" />
+        <location filename="../app/LiveChartsPanel.cpp" line="363" />
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="360" />
+        <location filename="../app/LiveChartsPanel.cpp" line="364" />
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="361" />
+        <location filename="../app/LiveChartsPanel.cpp" line="365" />
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="362" />
+        <location filename="../app/LiveChartsPanel.cpp" line="366" />
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="363" />
+        <location filename="../app/LiveChartsPanel.cpp" line="367" />
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="364" />
+        <location filename="../app/LiveChartsPanel.cpp" line="370" />
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="365" />
+        <location filename="../app/LiveChartsPanel.cpp" line="370" />
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="367" />
+        <location filename="../app/LiveChartsPanel.cpp" line="372" />
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="369" />
+        <location filename="../app/LiveChartsPanel.cpp" line="374" />
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="370" />
+        <location filename="../app/LiveChartsPanel.cpp" line="375" />
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="371" />
+        <location filename="../app/LiveChartsPanel.cpp" line="376" />
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="372" />
+        <location filename="../app/LiveChartsPanel.cpp" line="377" />
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="373" />
+        <location filename="../app/LiveChartsPanel.cpp" line="378" />
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="374" />
+        <location filename="../app/LiveChartsPanel.cpp" line="379" />
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="375" />
+        <location filename="../app/LiveChartsPanel.cpp" line="380" />
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="376" />
+        <location filename="../app/LiveChartsPanel.cpp" line="381" />
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -322,35 +322,35 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="75" />
-        <location filename="../app/MainWindow.cpp" line="252" />
+        <location filename="../app/MainWindow.cpp" line="76" />
+        <location filename="../app/MainWindow.cpp" line="264" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="130" />
-        <location filename="../app/MainWindow.cpp" line="187" />
+        <location filename="../app/MainWindow.cpp" line="138" />
+        <location filename="../app/MainWindow.cpp" line="198" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="131" />
+        <location filename="../app/MainWindow.cpp" line="139" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="142" />
-        <location filename="../app/MainWindow.cpp" line="200" />
+        <location filename="../app/MainWindow.cpp" line="150" />
+        <location filename="../app/MainWindow.cpp" line="211" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="143" />
+        <location filename="../app/MainWindow.cpp" line="151" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="188" />
+        <location filename="../app/MainWindow.cpp" line="199" />
         <source>The session could not be opened.
 
 %1</source>
@@ -359,272 +359,385 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="193" />
+        <location filename="../app/MainWindow.cpp" line="204" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="205" />
+        <location filename="../app/MainWindow.cpp" line="216" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="241" />
+        <location filename="../app/MainWindow.cpp" line="252" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="242" />
+        <location filename="../app/MainWindow.cpp" line="253" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="243" />
+        <location filename="../app/MainWindow.cpp" line="254" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="244" />
+        <location filename="../app/MainWindow.cpp" line="255" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="245" />
+        <location filename="../app/MainWindow.cpp" line="256" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="246" />
+        <location filename="../app/MainWindow.cpp" line="257" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="247" />
+        <location filename="../app/MainWindow.cpp" line="258" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="248" />
+        <location filename="../app/MainWindow.cpp" line="259" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="249" />
+        <location filename="../app/MainWindow.cpp" line="260" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="250" />
+        <location filename="../app/MainWindow.cpp" line="261" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="251" />
+        <location filename="../app/MainWindow.cpp" line="262" />
+        <source>Record</source>
+        <translation>錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="263" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="253" />
+        <location filename="../app/MainWindow.cpp" line="265" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="254" />
+        <location filename="../app/MainWindow.cpp" line="266" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="255" />
+        <location filename="../app/MainWindow.cpp" line="267" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="256" />
+        <location filename="../app/MainWindow.cpp" line="268" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="258" />
+        <location filename="../app/MainWindow.cpp" line="270" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="272" />
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="296" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="298" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="302" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293" />
+        <location filename="../app/MainWindow.cpp" line="305" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
 </context>
 <context>
+    <name>prisca::app::RecordPanel</name>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="106" />
+        <location filename="../app/RecordPanel.cpp" line="320" />
+        <source>Record</source>
+        <translation>錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="168" />
+        <source>Recording... drive, then press Stop.</source>
+        <translation>錄製中……請駕駛，完成後按「停止」。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="174" />
+        <source>Recording starts in %1 s</source>
+        <translation>%1 秒後開始錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="229" />
+        <source>Recording cancelled.</source>
+        <translation>已取消錄製。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="252" />
+        <source>Nothing recorded.</source>
+        <translation>沒有錄得任何內容。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="259" />
+        <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
+        <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="269" />
+        <location filename="../app/RecordPanel.cpp" line="279" />
+        <source>Save demonstration</source>
+        <translation>儲存示範</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="270" />
+        <source>Demonstrations (*.csv)</source>
+        <translation>示範 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="282" />
+        <source>Saved %1</source>
+        <translation>已儲存 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="293" />
+        <source>Recording discarded; the previous demonstration is back.</source>
+        <translation>已捨棄錄製；已恢復先前的示範。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="315" />
+        <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
+        <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="318" />
+        <source>Countdown:</source>
+        <translation>倒數：</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="319" />
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="321" />
+        <source>Count down, then record while you drive</source>
+        <translation>倒數後，一邊駕駛一邊錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="322" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="323" />
+        <source>Save as...</source>
+        <translation>另存為...</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="324" />
+        <source>Discard</source>
+        <translation>捨棄</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="325" />
+        <source>Delete this recording and go back to the previous demonstration</source>
+        <translation>刪除此錄製並返回先前的示範</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::RecordingWorker</name>
+    <message>
+        <location filename="../app/RecordingWorker.cpp" line="44" />
+        <source>Cannot record to %1: %2</source>
+        <translation>無法錄製到 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordingWorker.cpp" line="121" />
+        <source>Writing the recording to %1 failed: %2</source>
+        <translation>把錄製寫入 %1 失敗：%2</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="180" />
-        <location filename="../app/RunPanel.cpp" line="231" />
+        <location filename="../app/RunPanel.cpp" line="184" />
+        <location filename="../app/RunPanel.cpp" line="237" />
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="180" />
-        <location filename="../app/RunPanel.cpp" line="231" />
+        <location filename="../app/RunPanel.cpp" line="184" />
+        <location filename="../app/RunPanel.cpp" line="237" />
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="182" />
+        <location filename="../app/RunPanel.cpp" line="186" />
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184" />
+        <location filename="../app/RunPanel.cpp" line="188" />
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="214" />
+        <location filename="../app/RunPanel.cpp" line="218" />
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="215" />
+        <location filename="../app/RunPanel.cpp" line="219" />
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="216" />
+        <location filename="../app/RunPanel.cpp" line="220" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="217" />
+        <location filename="../app/RunPanel.cpp" line="222" />
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="219" />
+        <location filename="../app/RunPanel.cpp" line="224" />
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="221" />
+        <location filename="../app/RunPanel.cpp" line="226" />
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="223" />
+        <location filename="../app/RunPanel.cpp" line="228" />
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="224" />
+        <location filename="../app/RunPanel.cpp" line="230" />
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="226" />
+        <location filename="../app/RunPanel.cpp" line="232" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="227" />
+        <location filename="../app/RunPanel.cpp" line="233" />
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="228" />
+        <location filename="../app/RunPanel.cpp" line="234" />
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="229" />
+        <location filename="../app/RunPanel.cpp" line="235" />
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="230" />
+        <location filename="../app/RunPanel.cpp" line="236" />
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="232" />
+        <location filename="../app/RunPanel.cpp" line="238" />
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233" />
+        <location filename="../app/RunPanel.cpp" line="239" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235" />
+        <location filename="../app/RunPanel.cpp" line="241" />
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="236" />
+        <location filename="../app/RunPanel.cpp" line="242" />
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="240" />
+        <location filename="../app/RunPanel.cpp" line="246" />
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="240" />
+        <location filename="../app/RunPanel.cpp" line="246" />
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241" />
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="242" />
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243" />
+        <location filename="../app/RunPanel.cpp" line="249" />
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="244" />
+        <location filename="../app/RunPanel.cpp" line="249" />
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -665,14 +778,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="78" />
-        <location filename="../app/TaskPanel.cpp" line="85" />
-        <location filename="../app/TaskPanel.cpp" line="95" />
+        <location filename="../app/TaskPanel.cpp" line="79" />
+        <location filename="../app/TaskPanel.cpp" line="86" />
+        <location filename="../app/TaskPanel.cpp" line="96" />
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="79" />
+        <location filename="../app/TaskPanel.cpp" line="80" />
         <source>The demonstration could not be read.
 
 %1</source>
@@ -681,83 +794,83 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="86" />
+        <location filename="../app/TaskPanel.cpp" line="87" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="96" />
+        <location filename="../app/TaskPanel.cpp" line="97" />
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="104" />
-        <location filename="../app/TaskPanel.cpp" line="111" />
+        <location filename="../app/TaskPanel.cpp" line="105" />
+        <location filename="../app/TaskPanel.cpp" line="112" />
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="105" />
+        <location filename="../app/TaskPanel.cpp" line="106" />
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122" />
+        <location filename="../app/TaskPanel.cpp" line="123" />
         <source>the scripted operator</source>
         <translation>預設腳本操作員</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124" />
+        <location filename="../app/TaskPanel.cpp" line="125" />
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="139" />
+        <location filename="../app/TaskPanel.cpp" line="140" />
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="142" />
+        <location filename="../app/TaskPanel.cpp" line="143" />
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="143" />
+        <location filename="../app/TaskPanel.cpp" line="144" />
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="144" />
+        <location filename="../app/TaskPanel.cpp" line="145" />
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="146" />
+        <location filename="../app/TaskPanel.cpp" line="147" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="147" />
+        <location filename="../app/TaskPanel.cpp" line="148" />
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="148" />
+        <location filename="../app/TaskPanel.cpp" line="149" />
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="149" />
+        <location filename="../app/TaskPanel.cpp" line="150" />
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="150" />
+        <location filename="../app/TaskPanel.cpp" line="151" />
         <source>Scripted</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="151" />
+        <location filename="../app/TaskPanel.cpp" line="152" />
         <source>Use the scripted operator's demonstration for this target</source>
         <translation>為此對象使用預設腳本操作員的示範</translation>
     </message>

@@ -7,8 +7,10 @@
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
 #include "app/MainWindow.h"
+#include "app/RecordPanel.h"
 #include "app/RunController.h"
 #include "app/TaskPanel.h"
+#include "core/DemonstrationCsv.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -98,6 +100,64 @@ class TestGuiRun : public QObject {
         // Short series pass through untouched.
         const QVector<QPointF> few = {{0, 1}, {1, 2}, {2, 0}};
         QCOMPARE(decimateMinMax(few, 500), few);
+    }
+
+    void record_drivingWithTheKeyboardMakesTheDemonstration() {
+        Window w;
+        auto* panel = w.find<RecordPanel>("recordPanel");
+        w.find<QSpinBox>("countdown")->setValue(0);
+        const auto scripted = w.window.session().demonstration();
+        w.find<QAbstractButton>("recordButton")->click();
+        QVERIFY(panel->isRecording());
+        // Full throttle by ramp (2 per second), then a left turn, then hands off.
+        QTest::keyPress(&w.window, Qt::Key_Up);
+        QTRY_VERIFY(panel->input()[0] > 0.99);
+        QTest::qWait(600);
+        QTest::keyPress(&w.window, Qt::Key_A);
+        QTRY_VERIFY(panel->input()[1] > 0.5);
+        QTest::keyRelease(&w.window, Qt::Key_A);
+        QTest::keyRelease(&w.window, Qt::Key_Up);
+        QTRY_VERIFY(panel->input().isZero());
+        w.find<QAbstractButton>("stopRecordingButton")->click();
+        QTRY_VERIFY(!panel->isRecording());
+        QTRY_VERIFY(w.window.session().demonstration() != scripted);
+
+        const auto demo = w.window.session().demonstration();
+        const QString stream = w.window.session().demonstrationSource();
+        QVERIFY2(stream.contains("recordings"), qPrintable(stream));
+        QVERIFY2(demo->length() >= 40, qPrintable(QString::number(demo->length())));
+        QVERIFY(demo->actions.col(0).maxCoeff() > 0.99);  // full throttle was recorded
+        QVERIFY(demo->actions.col(1).maxCoeff() > 0.5);   // so was the left steer
+        QVERIFY(demo->states.col(0).maxCoeff() > 0.3);    // and the car drove forward
+        QVERIFY(demo->states.col(1).maxCoeff() > 0.0);    // and turned left
+        // The stream on disk is a complete demonstration file of the same samples.
+        prisca::core::FileError error;
+        const auto onDisk = prisca::core::readDemonstrationCsv(stream, &error);
+        QVERIFY2(onDisk, qPrintable(error.toString()));
+        QCOMPARE(onDisk->length(), demo->length());
+        QVERIFY(onDisk->states == demo->states);
+        QVERIFY(onDisk->actions == demo->actions);
+        // The fit follows the new demonstration.
+        QCOMPARE(w.window.session().fit().samples > 0, true);
+
+        // Discard: the scripted demonstration is back and the recording is gone.
+        w.find<QAbstractButton>("discardRecordingButton")->click();
+        QCOMPARE(w.window.session().demonstration(), scripted);
+        QVERIFY(!QFile::exists(stream));
+    }
+
+    void record_emergencyStopEndsTheRecording() {
+        Window w;
+        auto* panel = w.find<RecordPanel>("recordPanel");
+        w.find<QSpinBox>("countdown")->setValue(0);
+        w.find<QAbstractButton>("recordButton")->click();
+        QVERIFY(panel->isRecording());
+        QTest::keyPress(&w.window, Qt::Key_Up);
+        QTest::qWait(300);
+        QTest::keyClick(&w.window, Qt::Key_Space);
+        QTRY_VERIFY(!panel->isRecording());
+        QTest::keyRelease(&w.window, Qt::Key_Up);
+        QVERIFY(panel->input().isZero());
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {

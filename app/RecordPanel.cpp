@@ -1,0 +1,336 @@
+#include "app/RecordPanel.h"
+
+#include "app/LabSession.h"
+#include "core/DemonstrationCsv.h"
+
+#include <QApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace prisca::app {
+
+namespace {
+constexpr int kTickMs = 25;        // keyboard ramp and countdown resolution [ms]
+constexpr double kRampUp = 2.0;    // input units per second while a key is held
+constexpr double kRampDown = 3.0;  // back to neutral per second once released
+constexpr unsigned long kShutdownWaitMs = 3000;
+
+// Which key means what: index 0 up, 1 down, 2 left, 3 right; -1 not a driving key.
+int drivingKey(int key) {
+    switch (key) {
+        case Qt::Key_Up:
+        case Qt::Key_W:
+            return 0;
+        case Qt::Key_Down:
+        case Qt::Key_S:
+            return 1;
+        case Qt::Key_Left:
+        case Qt::Key_A:
+            return 2;
+        case Qt::Key_Right:
+        case Qt::Key_D:
+            return 3;
+        default:
+            return -1;
+    }
+}
+}  // namespace
+
+RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      worker_(new RecordingWorker),
+      keys_(new QLabel(this)),
+      countdownLabel_(new QLabel(this)),
+      countdown_(new QSpinBox(this)),
+      record_(new QPushButton(this)),
+      stop_(new QPushButton(this)),
+      save_(new QPushButton(this)),
+      discard_(new QPushButton(this)),
+      status_(new QLabel(this)),
+      timer_(new QTimer(this)) {
+    setObjectName(QStringLiteral("recordPanel"));
+    qRegisterMetaType<core::Demonstration>();
+    record_->setObjectName(QStringLiteral("recordButton"));
+    stop_->setObjectName(QStringLiteral("stopRecordingButton"));
+    save_->setObjectName(QStringLiteral("saveRecordingButton"));
+    discard_->setObjectName(QStringLiteral("discardRecordingButton"));
+    countdown_->setObjectName(QStringLiteral("countdown"));
+    countdown_->setRange(0, 10);
+    countdown_->setValue(QSettings().value(QStringLiteral("record/countdown"), 3).toInt());
+    status_->setObjectName(QStringLiteral("recordStatus"));
+    status_->setWordWrap(true);
+    keys_->setWordWrap(true);
+
+    auto* form = new QFormLayout;
+    form->addRow(countdownLabel_, countdown_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(record_);
+    buttons->addWidget(stop_);
+    auto* after = new QHBoxLayout;
+    after->addWidget(save_);
+    after->addWidget(discard_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(keys_);
+    layout->addLayout(form);
+    layout->addLayout(buttons);
+    layout->addLayout(after);
+    layout->addWidget(status_);
+    layout->addStretch(1);
+
+    thread_.setObjectName(QStringLiteral("prisca-record"));
+    worker_->moveToThread(&thread_);
+    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+    connect(worker_, &RecordingWorker::samplesReady, this, &RecordPanel::samplesReady);
+    connect(worker_, &RecordingWorker::finished, this, &RecordPanel::finished);
+    connect(worker_, &RecordingWorker::failed, this, [this](const QString& message) {
+        recording_ = false;
+        updateButtons();
+        status_->setText(message);
+        QMessageBox::warning(this, tr("Record"), message);
+    });
+    thread_.start();
+
+    timer_->setInterval(kTickMs);
+    connect(timer_, &QTimer::timeout, this, &RecordPanel::tick);
+    connect(record_, &QPushButton::clicked, this, &RecordPanel::startCountdown);
+    connect(stop_, &QPushButton::clicked, this, &RecordPanel::stopRecording);
+    connect(save_, &QPushButton::clicked, this, &RecordPanel::save);
+    connect(discard_, &QPushButton::clicked, this, &RecordPanel::discard);
+    connect(countdown_, &QSpinBox::valueChanged, this,
+            [](int s) { QSettings().setValue(QStringLiteral("record/countdown"), s); });
+    connect(&session_, &LabSession::plantChanged, this, [this] {
+        streamPath_.clear();
+        previous_.reset();
+        retranslateUi();
+        updateButtons();
+    });
+    retranslateUi();
+    updateButtons();
+}
+
+RecordPanel::~RecordPanel() {
+    worker_->requestStop();
+    thread_.quit();
+    thread_.wait(kShutdownWaitMs);
+}
+
+QString RecordPanel::recordingsFolder() {
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+           QStringLiteral("/recordings");
+}
+
+void RecordPanel::startCountdown() {
+    if (recording_ || countdownLeft_ > 0 || session_.plant().isEmpty()) {
+        return;
+    }
+    input_ = Eigen::VectorXd::Zero(session_.profile().info.actionDimension());
+    std::fill(std::begin(keysHeld_), std::end(keysHeld_), false);
+    // Driving keys reach this panel wherever the focus is, for as long as the recording lasts.
+    qApp->installEventFilter(this);
+    countdownLeft_ = countdown_->value() * 1000 / kTickMs;
+    timer_->start();
+    if (countdownLeft_ == 0) {
+        beginRecording();
+    } else {
+        updateButtons();
+        tick();
+    }
+}
+
+void RecordPanel::beginRecording() {
+    countdownLeft_ = 0;
+    recording_ = true;
+    streamPath_ =
+        recordingsFolder() + QStringLiteral("/%1-%2.csv")
+                                 .arg(session_.plant(), QDateTime::currentDateTime().toString(
+                                                            QStringLiteral("yyyyMMdd-HHmmss")));
+    emit recordingStarted();
+    QMetaObject::invokeMethod(
+        worker_,
+        [w = worker_, plant = session_.plant(), path = streamPath_] { w->start(plant, path); },
+        Qt::QueuedConnection);
+    status_->setText(tr("Recording... drive, then press Stop."));
+    updateButtons();
+}
+
+void RecordPanel::tick() {
+    if (countdownLeft_ > 0) {
+        status_->setText(
+            tr("Recording starts in %1 s").arg((countdownLeft_ * kTickMs + 999) / 1000));
+        if (--countdownLeft_ == 0) {
+            beginRecording();
+        }
+        return;
+    }
+    if (!recording_) {
+        timer_->stop();
+        return;
+    }
+    // Proportional ramp per channel: channel 0 on up/down, channel 1 on left/right.
+    const double dt = kTickMs / 1000.0;
+    for (int channel = 0; channel < std::min<int>(2, static_cast<int>(input_.size())); ++channel) {
+        const bool plus = keysHeld_[channel == 0 ? 0 : 2];
+        const bool minus = keysHeld_[channel == 0 ? 1 : 3];
+        double& u = input_[channel];
+        if (plus != minus) {
+            u = std::clamp(u + (plus ? 1.0 : -1.0) * kRampUp * dt, -1.0, 1.0);
+        } else if (u > 0.0) {
+            u = std::max(0.0, u - kRampDown * dt);
+        } else {
+            u = std::min(0.0, u + kRampDown * dt);
+        }
+    }
+    // Inputs are in [-1, 1] per channel; the plant's own limits scale them.
+    const sim::PlantInfo& info = session_.profile().info;
+    Eigen::VectorXd scaled(input_.size());
+    for (Eigen::Index l = 0; l < input_.size(); ++l) {
+        scaled[l] =
+            input_[l] >= 0.0 ? input_[l] * info.actionUpper[l] : -input_[l] * info.actionLower[l];
+    }
+    QMetaObject::invokeMethod(
+        worker_, [w = worker_, scaled] { w->setInput(scaled); }, Qt::QueuedConnection);
+}
+
+bool RecordPanel::eventFilter(QObject* watched, QEvent* event) {
+    if ((event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease) &&
+        (recording_ || countdownLeft_ > 0)) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const int index = drivingKey(key->key());
+        if (index >= 0) {
+            if (!key->isAutoRepeat()) {
+                keysHeld_[index] = event->type() == QEvent::KeyPress;
+            }
+            return true;  // driving keys never move spin boxes or focus while recording
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void RecordPanel::stopRecording() {
+    if (countdownLeft_ > 0) {
+        countdownLeft_ = 0;
+        timer_->stop();
+        qApp->removeEventFilter(this);
+        status_->setText(tr("Recording cancelled."));
+        updateButtons();
+        return;
+    }
+    if (recording_) {
+        QMetaObject::invokeMethod(worker_, &RecordingWorker::stop, Qt::QueuedConnection);
+    }
+}
+
+void RecordPanel::emergencyStop() {
+    if (countdownLeft_ > 0 || recording_) {
+        // Neutral at once, and no key held any more can ramp it up again.
+        std::fill(std::begin(keysHeld_), std::end(keysHeld_), false);
+        input_.setZero();
+        timer_->stop();
+        worker_->requestStop();
+        QMetaObject::invokeMethod(
+            worker_, [w = worker_, n = input_.size()] { w->setInput(Eigen::VectorXd::Zero(n)); },
+            Qt::QueuedConnection);
+        stopRecording();
+    }
+}
+
+void RecordPanel::finished(const core::Demonstration& demonstration, const QString& streamPath) {
+    recording_ = false;
+    timer_->stop();
+    qApp->removeEventFilter(this);
+    if (demonstration.length() < 2) {
+        QFile::remove(streamPath);
+        status_->setText(tr("Nothing recorded."));
+        updateButtons();
+        return;
+    }
+    previous_ = session_.demonstration();
+    previousSource_ = session_.demonstrationSource();
+    session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration), streamPath);
+    status_->setText(tr("Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; "
+                        "save it or discard it.")
+                         .arg(demonstration.length())
+                         .arg(demonstration.length() * demonstration.dt, 0, 'f', 1)
+                         .arg(QDir::toNativeSeparators(streamPath)));
+    updateButtons();
+}
+
+void RecordPanel::save() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save demonstration"),
+                                                QSettings().value("task/lastDirectory").toString(),
+                                                tr("Demonstrations (*.csv)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    if (!path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+        path += QStringLiteral(".csv");
+    }
+    core::FileError error;
+    if (!core::writeDemonstrationCsv(*session_.demonstration(), path, &error)) {
+        QMessageBox::warning(this, tr("Save demonstration"), error.toString());
+        return;
+    }
+    status_->setText(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+}
+
+void RecordPanel::discard() {
+    if (!previous_) {
+        return;
+    }
+    QFile::remove(streamPath_);
+    session_.setDemonstration(previous_, previousSource_);
+    previous_.reset();
+    streamPath_.clear();
+    status_->setText(tr("Recording discarded; the previous demonstration is back."));
+    updateButtons();
+}
+
+void RecordPanel::updateButtons() {
+    const bool busy = recording_ || countdownLeft_ > 0;
+    record_->setEnabled(!busy);
+    stop_->setEnabled(busy);
+    const bool pending = !busy && previous_ != nullptr;
+    save_->setEnabled(pending);
+    discard_->setEnabled(pending);
+}
+
+void RecordPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void RecordPanel::retranslateUi() {
+    const QStringList names = session_.profile().info.actionNames;
+    keys_->setText(tr("Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is "
+                      "E-STOP.")
+                       .arg(names.value(0), names.value(1)));
+    countdownLabel_->setText(tr("Countdown:"));
+    countdown_->setSuffix(tr(" s"));
+    record_->setText(tr("Record"));
+    record_->setToolTip(tr("Count down, then record while you drive"));
+    stop_->setText(tr("Stop"));
+    save_->setText(tr("Save as..."));
+    discard_->setText(tr("Discard"));
+    discard_->setToolTip(tr("Delete this recording and go back to the previous demonstration"));
+}
+
+}  // namespace prisca::app

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "app/RecordingWorker.h"
+
+#include <QThread>
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTimer;
+
+namespace prisca::app {
+
+class LabSession;
+
+/// Record a demonstration by driving the simulated plant with the keyboard: arrows or WASD,
+/// with a proportional ramp (holding a key pushes the input towards full at 2 per second;
+/// releasing it returns to neutral at 3 per second). A countdown first, then Stop; the recording
+/// becomes the session's demonstration at once and can be saved or discarded. It streams to a
+/// file as it goes (flushed every second), so a crash loses at most a second of driving.
+class RecordPanel : public QWidget {
+    Q_OBJECT
+  public:
+    RecordPanel(LabSession& session, QWidget* parent = nullptr);
+    ~RecordPanel() override;
+
+    /// Where recordings stream to (the application's data folder, "recordings").
+    static QString recordingsFolder();
+    /// The input the keyboard is asking for now (tests).
+    const Eigen::VectorXd& input() const { return input_; }
+    bool isRecording() const { return recording_; }
+
+  public slots:
+    void startCountdown();
+    void stopRecording();
+    /// Any thread-safe stop path (E-STOP): stops at the next control period.
+    void emergencyStop();
+
+  signals:
+    /// Live samples while recording (the arena draws the plant as it is driven).
+    void samplesReady(const QVector<prisca::app::LiveSample>& samples);
+    /// Recording started (views clear their trails).
+    void recordingStarted();
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void retranslateUi();
+    void tick();
+    void beginRecording();
+    void finished(const core::Demonstration& demonstration, const QString& streamPath);
+    void save();
+    void discard();
+    void updateButtons();
+
+    LabSession& session_;
+    QThread thread_;
+    RecordingWorker* worker_;
+    QLabel* keys_;
+    QLabel* countdownLabel_;
+    QSpinBox* countdown_;
+    QPushButton* record_;
+    QPushButton* stop_;
+    QPushButton* save_;
+    QPushButton* discard_;
+    QLabel* status_;
+    QTimer* timer_;
+    int countdownLeft_ = 0;  ///< ticks until recording starts; 0 when not counting down
+    bool recording_ = false;
+    bool keysHeld_[4] = {false, false, false, false};  ///< up, down, left, right
+    Eigen::VectorXd input_;
+    QString streamPath_;
+    /// The demonstration before the recording, restored by Discard.
+    std::shared_ptr<const core::Demonstration> previous_;
+    QString previousSource_;
+};
+
+}  // namespace prisca::app

@@ -1,0 +1,148 @@
+#include "app/RecordingWorker.h"
+
+#include "core/DemonstrationCsv.h"
+#include "sim/DemonstrationRecorder.h"
+#include "sim/PlantCatalog.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QTimer>
+
+namespace prisca::app {
+
+namespace {
+constexpr int kTickMs = 5;
+constexpr int kSampleFlushMs = 40;
+constexpr int kStreamFlushMs = 1000;  // at most this much is lost on a crash
+}  // namespace
+
+RecordingWorker::RecordingWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+    timer_->setTimerType(Qt::PreciseTimer);
+    timer_->setInterval(kTickMs);
+    connect(timer_, &QTimer::timeout, this, &RecordingWorker::tick);
+}
+
+RecordingWorker::~RecordingWorker() {
+    if (active_) {
+        flushStream();
+    }
+}
+
+void RecordingWorker::start(const QString& plant, const QString& streamPath) {
+    if (active_) {
+        stop();
+    }
+    try {
+        plant_ = sim::PlantCatalog::create(plant);
+    } catch (const std::exception& e) {
+        emit failed(QString::fromStdString(e.what()));
+        return;
+    }
+    QDir().mkpath(QFileInfo(streamPath).absolutePath());
+    stream_.setFileName(streamPath);
+    if (!stream_.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        emit failed(tr("Cannot record to %1: %2").arg(streamPath, stream_.errorString()));
+        return;
+    }
+    state_ = plant_->reset(1, sim::Perturbation::none());
+    input_ = Eigen::VectorXd::Zero(plant_->info().actionDimension());
+    states_.clear();
+    actions_.clear();
+    pending_.clear();
+    samples_.clear();
+    stopRequested_.store(false);
+    active_ = true;
+    clock_.start();
+    flushClock_.start();
+    timer_->start();
+}
+
+void RecordingWorker::setInput(const Eigen::VectorXd& input) {
+    if (!plant_ || input.size() != input_.size() || !input.allFinite()) {
+        return;  // a malformed input never reaches the plant
+    }
+    const sim::PlantInfo& info = plant_->info();
+    input_ = input.cwiseMax(info.actionLower).cwiseMin(info.actionUpper);
+}
+
+void RecordingWorker::tick() {
+    if (!active_) {
+        return;
+    }
+    if (stopRequested_.load()) {
+        stop();
+        return;
+    }
+    const double dt = plant_->timing().controlPeriod;
+    const int due =
+        static_cast<int>(clock_.nsecsElapsed() * 1e-9 / dt) + 1 - static_cast<int>(states_.size());
+    for (int i = 0; i < due && i < 40; ++i) {
+        const int k = static_cast<int>(states_.size());
+        const double t = k * dt;
+        if (k == 0) {
+            // The header is the demonstration format's own, from a one-row demonstration.
+            sim::DemonstrationRecorder first(plant_->info(), dt);
+            first.record(state_, input_);
+            core::Demonstration demo = first.demonstration();
+            demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
+            pending_ += core::formatDemonstrationCsv(demo);
+        } else {
+            core::appendDemonstrationCsvRow(pending_, t, state_, input_);
+        }
+        states_.push_back(state_);
+        actions_.push_back(input_);
+        LiveSample sample;
+        sample.step = k;
+        sample.time = t;
+        sample.runTime = t;
+        sample.state = state_;
+        sample.action = input_;
+        sample.referenceAction = input_;
+        samples_.push_back(std::move(sample));
+        state_ = plant_->step(input_);
+    }
+    if (flushClock_.elapsed() >= kSampleFlushMs && !samples_.isEmpty()) {
+        emit samplesReady(samples_);
+        samples_.clear();
+    }
+    if (flushClock_.elapsed() >= kStreamFlushMs) {
+        flushStream();
+    }
+}
+
+bool RecordingWorker::flushStream() {
+    flushClock_.restart();
+    if (pending_.isEmpty()) {
+        return true;
+    }
+    const bool ok = stream_.write(pending_) == pending_.size() && stream_.flush();
+    pending_.clear();
+    if (!ok) {
+        emit failed(tr("Writing the recording to %1 failed: %2")
+                        .arg(stream_.fileName(), stream_.errorString()));
+    }
+    return ok;
+}
+
+void RecordingWorker::stop() {
+    if (!active_) {
+        return;
+    }
+    timer_->stop();
+    active_ = false;
+    if (!samples_.isEmpty()) {
+        emit samplesReady(samples_);
+        samples_.clear();
+    }
+    flushStream();
+    stream_.close();
+    sim::DemonstrationRecorder recorder(plant_->info(), plant_->timing().controlPeriod);
+    for (size_t k = 0; k < states_.size(); ++k) {
+        recorder.record(states_[k], actions_[k]);
+    }
+    core::Demonstration demo = recorder.demonstration();
+    demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
+    emit finished(demo, stream_.fileName());
+}
+
+}  // namespace prisca::app
