@@ -6,6 +6,7 @@
 #include "app/LanguageMenu.h"
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
+#include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
 #include "app/RunController.h"
 #include "app/RunPanel.h"
@@ -21,6 +22,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -39,7 +41,16 @@ QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel,
                   Qt::DockWidgetArea area) {
     auto* d = new QDockWidget(window);
     d->setObjectName(name);  // saveState() needs the name
-    d->setWidget(panel);
+    if (area == Qt::RightDockWidgetArea) {
+        // Side panels scroll rather than force the window taller than a laptop screen.
+        auto* scroll = new QScrollArea(d);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(panel);
+        d->setWidget(scroll);
+    } else {
+        d->setWidget(panel);
+    }
     window->addDockWidget(area, d);
     return d;
 }
@@ -92,15 +103,19 @@ void MainWindow::createPanels() {
     controllerPanel_ = new ControllerPanel(*session_, this);
     runPanel_ = new RunPanel(*session_, *run_, this);
     recordPanel_ = new RecordPanel(*session_, this);
+    mappingPanel_ = new MappingPanel(*session_, this);
     chartsPanel_ = new LiveChartsPanel(this);
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
+    mappingDock_ =
+        dock(this, QStringLiteral("mappingDock"), mappingPanel_, Qt::RightDockWidgetArea);
     controllerDock_ =
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
     runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
     chartsDock_ = dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea);
     tabifyDockWidget(taskDock_, recordDock_);
-    tabifyDockWidget(recordDock_, controllerDock_);
+    tabifyDockWidget(recordDock_, mappingDock_);
+    tabifyDockWidget(mappingDock_, controllerDock_);
     taskDock_->raise();
     resizeDocks({chartsDock_}, {260}, Qt::Vertical);
     resizeDocks({runDock_}, {380}, Qt::Horizontal);
@@ -177,7 +192,8 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
-    for (QDockWidget* d : {taskDock_, recordDock_, controllerDock_, runDock_, chartsDock_}) {
+    for (QDockWidget* d :
+         {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_, chartsDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -260,6 +276,7 @@ void MainWindow::retranslateUi() {
     viewMenu_->setTitle(tr("&View"));
     taskDock_->setWindowTitle(tr("Task"));
     recordDock_->setWindowTitle(tr("Record"));
+    mappingDock_->setWindowTitle(tr("Mapping"));
     controllerDock_->setWindowTitle(tr("Controller"));
     runDock_->setWindowTitle(tr("Run"));
     chartsDock_->setWindowTitle(tr("Live charts"));

@@ -148,4 +148,28 @@ std::vector<MethodCurves> runLearningCurves(
     return curves;
 }
 
+std::vector<CurveSummary> summarizeCurves(const std::vector<MethodCurves>& curves, long long unit,
+                                          long long budgetSteps, double dt) {
+    std::vector<long long> grid;
+    for (long long s = unit; unit > 0 && s <= budgetSteps; s += unit) {
+        grid.push_back(s);
+    }
+    std::vector<CurveSummary> out;
+    for (const MethodCurves& method : curves) {
+        std::vector<std::vector<double>> resampled;
+        for (const auto& run : method.runs) {
+            resampled.push_back(resampleCurve(run, grid));
+        }
+        CurveSummary summary;
+        summary.method = method.method;
+        summary.steps = grid;
+        for (long long steps : grid) {
+            summary.seconds.push_back(steps * dt);
+        }
+        summary.band = core::confidenceBand(resampled, 0.95);
+        out.push_back(std::move(summary));
+    }
+    return out;
+}
+
 }  // namespace prisca::sim

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/Statistics.h"
+
 #include "EpisodeRunner.h"
 #include "PlantProfile.h"
 #include "core/Demonstration.h"
@@ -52,5 +54,18 @@ std::vector<MethodCurves> runLearningCurves(
 /// recent point at or before it (NaN before the first).
 std::vector<double> resampleCurve(const std::vector<CurvePoint>& run,
                                   const std::vector<long long>& grid);
+
+/// One method's curve on a common grid: mean and 95% band over its runs (Fig. 3b).
+struct CurveSummary {
+    QString method;
+    std::vector<long long> steps;  ///< grid of simulated steps
+    std::vector<double> seconds;   ///< the same in simulated seconds
+    core::ConfidenceBand band;     ///< mean, lower, upper and count per grid point
+};
+
+/// Resamples every run on a grid of one point per `unit` steps up to `budgetSteps` and
+/// summarises each method over its runs.
+std::vector<CurveSummary> summarizeCurves(const std::vector<MethodCurves>& curves, long long unit,
+                                          long long budgetSteps, double dt);
 
 }  // namespace prisca::sim

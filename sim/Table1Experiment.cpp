@@ -1,5 +1,7 @@
 #include "Table1Experiment.h"
 
+#include <cmath>
+
 #include "ControllerFactory.h"
 #include "MethodTraining.h"
 #include "ParallelTrials.h"
@@ -177,6 +179,27 @@ Table1Result runTable1(const Table1Settings& settings,
         result.methods.push_back(std::move(rows));
     }
     return result;
+}
+
+std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finished) {
+    std::vector<core::Table1Row> rows;
+    int count = 0;
+    for (const MethodTrials& method : result.methods) {
+        std::vector<double> position, orientation;
+        for (size_t t = 0; t < method.trials.size(); ++t) {
+            if (method.completed[t]) {
+                position.push_back(method.trials[t].finalPositionError * 100.0);
+                orientation.push_back(method.trials[t].finalHeadingError * 180.0 / M_PI);
+                ++count;
+            }
+        }
+        rows.push_back(
+            {method.method, core::summarizeErrors(position), core::summarizeErrors(orientation)});
+    }
+    if (finished) {
+        *finished = count;
+    }
+    return rows;
 }
 
 }  // namespace prisca::sim

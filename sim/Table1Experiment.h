@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/Table1Report.h"
+
 #include "EpisodeRunner.h"
 #include "PlantProfile.h"
 #include "TrialMetrics.h"
@@ -60,5 +62,9 @@ Table1Result runTable1(const Table1Settings& settings,
 EpisodeSettings table1Episode(const Table1Settings& settings,
                               const core::Demonstration& demonstration,
                               const PlantProfile& profile);
+
+/// Table I's rows from a result: per method, the position [cm] and orientation [deg] error
+/// summaries over the trials that finished. *finished (if given) receives their number.
+std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finished = nullptr);
 
 }  // namespace prisca::sim

@@ -322,35 +322,35 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="76" />
-        <location filename="../app/MainWindow.cpp" line="264" />
+        <location filename="../app/MainWindow.cpp" line="87" />
+        <location filename="../app/MainWindow.cpp" line="280" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="138" />
-        <location filename="../app/MainWindow.cpp" line="198" />
+        <location filename="../app/MainWindow.cpp" line="153" />
+        <location filename="../app/MainWindow.cpp" line="213" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="139" />
+        <location filename="../app/MainWindow.cpp" line="154" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="150" />
-        <location filename="../app/MainWindow.cpp" line="211" />
+        <location filename="../app/MainWindow.cpp" line="165" />
+        <location filename="../app/MainWindow.cpp" line="226" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="151" />
+        <location filename="../app/MainWindow.cpp" line="166" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="199" />
+        <location filename="../app/MainWindow.cpp" line="214" />
         <source>The session could not be opened.
 
 %1</source>
@@ -359,217 +359,331 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="204" />
+        <location filename="../app/MainWindow.cpp" line="219" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="216" />
+        <location filename="../app/MainWindow.cpp" line="231" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="252" />
+        <location filename="../app/MainWindow.cpp" line="267" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="253" />
+        <location filename="../app/MainWindow.cpp" line="268" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="254" />
+        <location filename="../app/MainWindow.cpp" line="269" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="255" />
+        <location filename="../app/MainWindow.cpp" line="270" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="256" />
+        <location filename="../app/MainWindow.cpp" line="271" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="257" />
+        <location filename="../app/MainWindow.cpp" line="272" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="258" />
+        <location filename="../app/MainWindow.cpp" line="273" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="259" />
+        <location filename="../app/MainWindow.cpp" line="274" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="260" />
+        <location filename="../app/MainWindow.cpp" line="275" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="261" />
+        <location filename="../app/MainWindow.cpp" line="276" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="262" />
+        <location filename="../app/MainWindow.cpp" line="277" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="263" />
+        <location filename="../app/MainWindow.cpp" line="278" />
+        <source>Mapping</source>
+        <translation>映射</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="279" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="265" />
+        <location filename="../app/MainWindow.cpp" line="281" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="266" />
+        <location filename="../app/MainWindow.cpp" line="282" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="267" />
+        <location filename="../app/MainWindow.cpp" line="283" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="268" />
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="270" />
+        <location filename="../app/MainWindow.cpp" line="286" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="300" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296" />
+        <location filename="../app/MainWindow.cpp" line="312" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298" />
+        <location filename="../app/MainWindow.cpp" line="314" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302" />
+        <location filename="../app/MainWindow.cpp" line="318" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305" />
+        <location filename="../app/MainWindow.cpp" line="321" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::MappingPanel</name>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="113" />
+        <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
+        <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="164" />
+        <source>R²</source>
+        <translation>R²</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="164" />
+        <source>residual RMS</source>
+        <translation>殘差 RMS</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="164" />
+        <source>set aside</source>
+        <translation>剔除</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="176" />
+        <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
+        <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="181" />
+        <source>Share of the change of %1 the fit explains</source>
+        <translation>擬合能解釋的 %1 變化比例</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="184" />
+        <source>RMS of what the fit leaves unexplained [%1]</source>
+        <translation>擬合未能解釋部分的 RMS [%1]</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="189" />
+        <source>Samples the robust fit set aside (a car sliding, for example)</source>
+        <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="192" />
+        <source>Fit on %1 samples:</source>
+        <translation>以 %1 個樣本擬合：</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="206" />
+        <source>Intuitive mapping B~ (which way each control moves each state):</source>
+        <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="207" />
+        <source>Latency:</source>
+        <translation>延遲：</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="208" />
+        <location filename="../app/MappingPanel.cpp" line="212" />
+        <source> steps</source>
+        <translation> 步</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="209" />
+        <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
+        <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="211" />
+        <source>Response horizon:</source>
+        <translation>響應時域：</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="213" />
+        <source>How many steps of response the fit looks at: 1 is eq. 5's one-step model; more sees effects that build up (yaw rate into heading).</source>
+        <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="215" />
+        <source>Keep the signs of B~ (B_v ≥ 0)</source>
+        <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="216" />
+        <source>An entry the data would make negative is reported and set to 0.</source>
+        <translation>數據會令其變負的項目會被報告並設為 0。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="217" />
+        <source>Robust fit</source>
+        <translation>穩健擬合</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="218" />
+        <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
+        <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="220" />
+        <source>Fit B_v</source>
+        <translation>擬合 B_v</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="221" />
+        <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
+        <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
 </context>
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="106" />
-        <location filename="../app/RecordPanel.cpp" line="320" />
+        <location filename="../app/RecordPanel.cpp" line="328" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="168" />
+        <location filename="../app/RecordPanel.cpp" line="169" />
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="174" />
+        <location filename="../app/RecordPanel.cpp" line="176" />
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="229" />
+        <location filename="../app/RecordPanel.cpp" line="231" />
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="252" />
+        <location filename="../app/RecordPanel.cpp" line="260" />
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="259" />
+        <location filename="../app/RecordPanel.cpp" line="267" />
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="269" />
-        <location filename="../app/RecordPanel.cpp" line="279" />
+        <location filename="../app/RecordPanel.cpp" line="276" />
+        <location filename="../app/RecordPanel.cpp" line="287" />
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="270" />
+        <location filename="../app/RecordPanel.cpp" line="278" />
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282" />
+        <location filename="../app/RecordPanel.cpp" line="290" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293" />
+        <location filename="../app/RecordPanel.cpp" line="301" />
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="315" />
+        <location filename="../app/RecordPanel.cpp" line="323" />
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="318" />
+        <location filename="../app/RecordPanel.cpp" line="326" />
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="319" />
+        <location filename="../app/RecordPanel.cpp" line="327" />
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="321" />
+        <location filename="../app/RecordPanel.cpp" line="329" />
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="322" />
+        <location filename="../app/RecordPanel.cpp" line="330" />
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="323" />
+        <location filename="../app/RecordPanel.cpp" line="331" />
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="324" />
+        <location filename="../app/RecordPanel.cpp" line="332" />
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="325" />
+        <location filename="../app/RecordPanel.cpp" line="333" />
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>

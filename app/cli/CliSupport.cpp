@@ -153,4 +153,11 @@ void printProgress(const QString& text) {
     std::fflush(stderr);
 }
 
+void saveFigureOrThrow(const plot::Figure& figure, const QString& path) {
+    QString error;
+    if (!plot::saveFigure(figure, path, &error)) {
+        throw UsageError(error);
+    }
+}
+
 }  // namespace prisca::app::cli

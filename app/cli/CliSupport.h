@@ -1,5 +1,7 @@
 #pragma once
 
+#include "app/plot/Figure.h"
+
 #include "core/Demonstration.h"
 
 #include <QCommandLineParser>
@@ -75,5 +77,8 @@ void printText(const QString& text);
 /// A progress line on stderr ("\r"-updated when stderr is a terminal, one line per call
 /// otherwise). Empty text ends the line.
 void printProgress(const QString& text);
+
+/// Saves a figure to a .png or .svg file; UsageError naming the path on failure.
+void saveFigureOrThrow(const plot::Figure& figure, const QString& path);
 
 }  // namespace prisca::app::cli

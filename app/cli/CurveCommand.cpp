@@ -1,8 +1,8 @@
 // prisca-cli curve: learning curves at an equal budget of simulated experience (paper Fig. 3b).
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
-#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
+#include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Statistics.h"
 #include "sim/LearningCurveExperiment.h"
@@ -12,6 +12,8 @@
 #include <cmath>
 
 namespace prisca::app::cli {
+
+using namespace figures;
 
 int curveCommand(const QStringList& arguments) {
     CommandLine line(
@@ -65,30 +67,22 @@ int curveCommand(const QStringList& arguments) {
     printProgress(QString());
 
     // A common grid: one point per demonstration length of experience.
-    const long long unit = task.demonstration->length();
-    std::vector<long long> grid;
-    for (long long s = unit; s <= settings.budgetSteps; s += unit) {
-        grid.push_back(s);
-    }
     const double dt = task.demonstration->dt;
+    const std::vector<sim::CurveSummary> summaries =
+        sim::summarizeCurves(curves, task.demonstration->length(), settings.budgetSteps, dt);
     QByteArray csv("method,steps,time_s,mean,lower,upper,runs\n");
     QJsonArray summary;
     QString text;
     std::vector<QString> plotted;
     std::vector<std::vector<double>> plottedSeconds;
     std::vector<core::ConfidenceBand> plottedBands;
-    for (const sim::MethodCurves& method : curves) {
-        std::vector<std::vector<double>> resampled;
-        for (const auto& run : method.runs) {
-            resampled.push_back(sim::resampleCurve(run, grid));
-        }
-        const core::ConfidenceBand band = core::confidenceBand(resampled, 0.95);
+    for (size_t i = 0; i < summaries.size(); ++i) {
+        const sim::MethodCurves& method = curves[i];
+        const std::vector<long long>& grid = summaries[i].steps;
+        const core::ConfidenceBand& band = summaries[i].band;
         plotted.push_back(method.method);
         plottedBands.push_back(band);
-        plottedSeconds.emplace_back();
-        for (long long steps : grid) {
-            plottedSeconds.back().push_back(steps * dt);
-        }
+        plottedSeconds.push_back(summaries[i].seconds);
         for (size_t g = 0; g < grid.size(); ++g) {
             if (band.count[g] == 0) {
                 continue;

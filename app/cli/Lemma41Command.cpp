@@ -1,13 +1,15 @@
 // prisca-cli lemma41: the H-gamma grid of Lemma 4.1 / Fig. 2 (where Var(D) < 1).
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
-#include "app/cli/Plots.h"
+#include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Lemma41.h"
 
 #include <QJsonArray>
 
 namespace prisca::app::cli {
+
+using namespace figures;
 
 int lemma41Command(const QStringList& arguments) {
     CommandLine line(

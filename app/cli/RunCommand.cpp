@@ -1,8 +1,8 @@
 // prisca-cli run: PRISCA or a baseline on a simulated plant, trial after trial, with a run log.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
-#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
+#include "app/figures/PaperFigures.h"
 #include "core/RunLogCsv.h"
 #include "sim/ControllerFactory.h"
 #include "sim/EpisodeRunner.h"
@@ -15,6 +15,8 @@
 #include <cmath>
 
 namespace prisca::app::cli {
+
+using namespace figures;
 
 namespace {
 

@@ -1,8 +1,8 @@
 // prisca-cli table1: the paper's Table I (slide parking) in simulation.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
-#include "app/cli/Plots.h"
 #include "app/cli/TaskSetup.h"
+#include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Table1Report.h"
 #include "sim/ControllerFactory.h"
@@ -14,6 +14,8 @@
 #include <cmath>
 
 namespace prisca::app::cli {
+
+using namespace figures;
 
 int table1Command(const QStringList& arguments) {
     CommandLine line(QStringLiteral("table1"),
@@ -104,20 +106,8 @@ int table1Command(const QStringList& arguments) {
         sim::runTable1(settings, task.demonstration, task.profile, task.fit.b);
     printProgress(QString());
 
-    std::vector<core::Table1Row> rows;
     int finished = 0;
-    for (const sim::MethodTrials& method : result.methods) {
-        std::vector<double> position, orientation;
-        for (size_t t = 0; t < method.trials.size(); ++t) {
-            if (method.completed[t]) {
-                position.push_back(method.trials[t].finalPositionError * 100.0);
-                orientation.push_back(method.trials[t].finalHeadingError * 180.0 / M_PI);
-                ++finished;
-            }
-        }
-        rows.push_back(
-            {method.method, core::summarizeErrors(position), core::summarizeErrors(orientation)});
-    }
+    const std::vector<core::Table1Row> rows = sim::table1Rows(result, &finished);
     QString caption = QStringLiteral(
                           "Slide parking in simulation (%1): %2 trials per method, seed %3, "
                           "%4 training trials, perturbation %5, sensor %6")

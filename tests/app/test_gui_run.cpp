@@ -7,6 +7,7 @@
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
 #include "app/MainWindow.h"
+#include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
 #include "app/RunController.h"
 #include "app/TaskPanel.h"
@@ -16,6 +17,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSpinBox>
@@ -158,6 +160,39 @@ class TestGuiRun : public QObject {
         QTRY_VERIFY(!panel->isRecording());
         QTest::keyRelease(&w.window, Qt::Key_Up);
         QVERIFY(panel->input().isZero());
+    }
+
+    void mapping_editAndFitShowsValuesAndSignConflicts() {
+        Window w;
+        auto* panel = w.find<MappingPanel>("mappingPanel");
+        auto* result = w.find<QTableWidget>("fitResult");
+        auto* signs = w.find<QTableWidget>("signs");
+        const double steeringToPsi = w.window.session().fit().b(1, 2);
+        QVERIFY(steeringToPsi > 0.0);
+        QCOMPARE(result->item(1, 2)->text(), QString::number(steeringToPsi, 'g', 2));
+        // R² row under the two controls.
+        QCOMPARE(result->verticalHeaderItem(2)->text(), QStringLiteral("R²"));
+        // Clicking cycles 0 -> +1 -> -1; "steering turns right" contradicts the demonstration.
+        QCOMPARE(signs->item(1, 2)->text(), QStringLiteral("+1"));
+        signs->setCurrentCell(1, 2);
+        emit signs->cellClicked(1, 2);
+        QCOMPARE(signs->item(1, 2)->text(), QStringLiteral("−1"));
+        w.find<QAbstractButton>("fitButton")->click();
+        QCOMPARE(w.window.session().profile().mapping.signs(1, 2), -1);
+        QCOMPARE(w.window.session().fit().b(1, 2), 0.0);  // B_v >= 0 keeps B~'s sign: set to 0
+        QCOMPARE(result->item(1, 2)->text(), QStringLiteral("·"));
+        auto* warnings = w.find<QListWidget>("fitWarnings");
+        QVERIFY(warnings->count() >= 1);
+        bool named = false;
+        for (int i = 0; i < warnings->count(); ++i) {
+            named |= warnings->item(i)->text().contains("steering") &&
+                     warnings->item(i)->text().contains("psi");
+        }
+        QVERIFY(named);
+        // Back to +1 through the panel's setter and the fit returns.
+        panel->setSign(1, 2, 1);
+        panel->fit();
+        QCOMPARE(w.window.session().fit().b(1, 2), steeringToPsi);
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {

@@ -1,11 +1,10 @@
-#include "app/cli/Plots.h"
+#include "app/figures/PaperFigures.h"
 
-#include "app/cli/CliSupport.h"
 #include "core/Table1Report.h"
 
 #include <cmath>
 
-namespace prisca::app::cli {
+namespace prisca::app::figures {
 
 namespace {
 
@@ -183,11 +182,4 @@ plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
     return figure;
 }
 
-void saveFigureOrThrow(const plot::Figure& figure, const QString& path) {
-    QString error;
-    if (!plot::saveFigure(figure, path, &error)) {
-        throw UsageError(error);
-    }
-}
-
-}  // namespace prisca::app::cli
+}  // namespace prisca::app::figures

@@ -8,7 +8,9 @@
 
 #include <vector>
 
-namespace prisca::app::cli {
+/// The paper's figures built as plot::Figure data from experiment results; shared by the
+/// command line (files) and the application (on screen).
+namespace prisca::app::figures {
 
 /// Fig. 7: the trajectories and end postures of action playback, PD and PRISCA (top: the whole
 /// manoeuvre; bottom: a close-up of the lot), in centimetres. Methods missing from the result
@@ -38,7 +40,4 @@ struct TrajectoryPanel {
 plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
                               const std::vector<TrajectoryPanel>& panels);
 
-/// Saves a figure; UsageError naming the path on failure.
-void saveFigureOrThrow(const plot::Figure& figure, const QString& path);
-
-}  // namespace prisca::app::cli
+}  // namespace prisca::app::figures

@@ -1,0 +1,229 @@
+#include "app/MappingPanel.h"
+
+#include "app/LabSession.h"
+
+#include <QCheckBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace prisca::app {
+
+namespace {
+
+QString signText(int sign) {
+    return sign > 0 ? QStringLiteral("+1") : sign < 0 ? QStringLiteral("−1") : QStringLiteral("0");
+}
+
+QBrush signColour(int sign) {
+    return sign > 0   ? QBrush(QColor(0xd4, 0xed, 0xda))
+           : sign < 0 ? QBrush(QColor(0xf8, 0xd7, 0xda))
+                      : QBrush();
+}
+
+QString number(double v) {
+    return std::isfinite(v) ? QString::number(v, 'g', 2) : QStringLiteral("—");
+}
+
+}  // namespace
+
+MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      signsLabel_(new QLabel(this)),
+      signs_(new QTableWidget(this)),
+      latencyLabel_(new QLabel(this)),
+      latency_(new QSpinBox(this)),
+      responseLabel_(new QLabel(this)),
+      response_(new QSpinBox(this)),
+      nonNegative_(new QCheckBox(this)),
+      robust_(new QCheckBox(this)),
+      fit_(new QPushButton(this)),
+      resultLabel_(new QLabel(this)),
+      result_(new QTableWidget(this)),
+      warnings_(new QListWidget(this)) {
+    setObjectName(QStringLiteral("mappingPanel"));
+    signs_->setObjectName(QStringLiteral("signs"));
+    result_->setObjectName(QStringLiteral("fitResult"));
+    warnings_->setObjectName(QStringLiteral("fitWarnings"));
+    fit_->setObjectName(QStringLiteral("fitButton"));
+    latency_->setObjectName(QStringLiteral("fitLatency"));
+    response_->setObjectName(QStringLiteral("fitResponse"));
+    latency_->setRange(0, 40);
+    response_->setRange(1, 80);
+    for (QTableWidget* table : {signs_, result_}) {
+        table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+        table->horizontalHeader()->setMinimumSectionSize(36);
+        table->setWordWrap(false);
+        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    }
+    warnings_->setWordWrap(true);
+    signsLabel_->setWordWrap(true);
+    warnings_->setMaximumHeight(90);
+
+    auto* options = new QFormLayout;
+    options->addRow(latencyLabel_, latency_);
+    options->addRow(responseLabel_, response_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(signsLabel_);
+    layout->addWidget(signs_);
+    layout->addLayout(options);
+    layout->addWidget(nonNegative_);
+    layout->addWidget(robust_);
+    layout->addWidget(fit_);
+    layout->addWidget(resultLabel_);
+    layout->addWidget(result_);
+    layout->addWidget(warnings_);
+    layout->addStretch(1);
+
+    connect(fit_, &QPushButton::clicked, this, &MappingPanel::fit);
+    // A click cycles an entry 0 -> +1 -> -1 -> 0.
+    connect(signs_, &QTableWidget::cellClicked, this, [this](int row, int column) {
+        if (const QTableWidgetItem* item = signs_->item(row, column)) {
+            const int sign = item->data(Qt::UserRole).toInt();
+            setSign(row, column, sign == 0 ? 1 : sign > 0 ? -1 : 0);
+        }
+    });
+    connect(&session_, &LabSession::plantChanged, this, &MappingPanel::showSession);
+    connect(&session_, &LabSession::fitChanged, this, &MappingPanel::showFit);
+    retranslateUi();
+    showSession();
+}
+
+void MappingPanel::showSession() {
+    const sim::PlantProfile& p = session_.profile();
+    const int m = p.info.actionDimension(), n = p.info.stateDimension();
+    signs_->clear();
+    signs_->setRowCount(m);
+    signs_->setColumnCount(n);
+    signs_->setHorizontalHeaderLabels(p.info.stateNames);
+    signs_->setVerticalHeaderLabels(p.info.actionNames);
+    for (int l = 0; l < m; ++l) {
+        for (int i = 0; i < n; ++i) {
+            auto* item = new QTableWidgetItem;
+            item->setTextAlignment(Qt::AlignCenter);
+            item->setToolTip(tr("Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not "
+                                "at all (B~, eq. 6). Click to change.")
+                                 .arg(p.info.actionNames[l], p.info.stateNames[i]));
+            signs_->setItem(l, i, item);
+            setSign(l, i, p.mapping.signs(l, i));
+        }
+    }
+    const core::ActionMappingFitOptions& o = session_.fitOptions();
+    latency_->setValue(o.latency);
+    response_->setValue(o.responseSteps);
+    nonNegative_->setChecked(o.nonNegative);
+    robust_->setChecked(o.robust);
+    showFit();
+}
+
+void MappingPanel::setSign(int control, int state, int sign) {
+    if (QTableWidgetItem* item = signs_->item(control, state)) {
+        item->setData(Qt::UserRole, sign);
+        item->setText(signText(sign));
+        item->setBackground(signColour(sign));
+    }
+}
+
+void MappingPanel::fit() {
+    sim::PlantProfile p = session_.profile();
+    for (int l = 0; l < signs_->rowCount(); ++l) {
+        for (int i = 0; i < signs_->columnCount(); ++i) {
+            if (const QTableWidgetItem* item = signs_->item(l, i)) {
+                p.mapping.signs(l, i) = item->data(Qt::UserRole).toInt();
+            }
+        }
+    }
+    core::ActionMappingFitOptions o = session_.fitOptions();
+    o.latency = latency_->value();
+    o.responseSteps = response_->value();
+    o.nonNegative = nonNegative_->isChecked();
+    o.robust = robust_->isChecked();
+    // One refit for both changes: the options first (quietly equal if unchanged), then B~.
+    session_.setFitOptions(o);
+    session_.setProfile(p);
+}
+
+void MappingPanel::showFit() {
+    const core::ActionMappingFit& f = session_.fit();
+    const sim::PlantInfo& info = session_.profile().info;
+    const int m = info.actionDimension(), n = info.stateDimension();
+    result_->clear();
+    result_->setColumnCount(n);
+    result_->setRowCount(m + 3);
+    result_->setHorizontalHeaderLabels(info.stateNames);
+    QStringList rows = info.actionNames;
+    rows << tr("R²") << tr("residual RMS") << tr("set aside");
+    result_->setVerticalHeaderLabels(rows);
+    const auto cell = [&](int row, int column, const QString& text, const QString& tip) {
+        auto* item = new QTableWidgetItem(text);
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        item->setToolTip(tip);
+        result_->setItem(row, column, item);
+        return item;
+    };
+    for (int i = 0; i < n; ++i) {
+        for (int l = 0; l < m && f.b.rows() == m; ++l) {
+            cell(l, i, f.b(l, i) == 0.0 ? QStringLiteral("·") : number(f.b(l, i)),
+                 tr("B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]")
+                         .arg(info.actionNames[l], info.stateNames[i], info.stateUnits[i]) +
+                     QStringLiteral(": %1").arg(f.b(l, i), 0, 'g', 6));
+        }
+        if (f.rSquared.size() == n) {
+            cell(m, i, number(f.rSquared[i]),
+                 tr("Share of the change of %1 the fit explains").arg(info.stateNames[i]));
+            cell(m + 1, i, number(f.residualRms[i]),
+                 tr("RMS of what the fit leaves unexplained [%1]").arg(info.stateUnits[i]));
+            cell(m + 2, i,
+                 f.outlierShare.size() == n
+                     ? QStringLiteral("%1%").arg(f.outlierShare[i] * 100.0, 0, 'f', 0)
+                     : QStringLiteral("—"),
+                 tr("Samples the robust fit set aside (a car sliding, for example)"));
+        }
+    }
+    resultLabel_->setText(tr("Fit on %1 samples:").arg(f.samples));
+    warnings_->clear();
+    warnings_->addItems(f.warnings);
+    warnings_->setVisible(!f.warnings.isEmpty());
+}
+
+void MappingPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void MappingPanel::retranslateUi() {
+    signsLabel_->setText(tr("Intuitive mapping B~ (which way each control moves each state):"));
+    latencyLabel_->setText(tr("Latency:"));
+    latency_->setSuffix(tr(" steps"));
+    latency_->setToolTip(
+        tr("Pairs the state change d steps later with each change of action "
+           "(eq. 8)."));
+    responseLabel_->setText(tr("Response horizon:"));
+    response_->setSuffix(tr(" steps"));
+    response_->setToolTip(
+        tr("How many steps of response the fit looks at: 1 is eq. 5's one-step "
+           "model; more sees effects that build up (yaw rate into heading)."));
+    nonNegative_->setText(tr("Keep the signs of B~ (B_v ≥ 0)"));
+    nonNegative_->setToolTip(tr("An entry the data would make negative is reported and set to 0."));
+    robust_->setText(tr("Robust fit"));
+    robust_->setToolTip(
+        tr("Set aside samples the linear model cannot explain (reweighted least "
+           "squares)."));
+    fit_->setText(tr("Fit B_v"));
+    fit_->setToolTip(tr("Fit B_v to the demonstration with this B~ (eq. 8)"));
+    showFit();
+}
+
+}  // namespace prisca::app
