@@ -2,6 +2,7 @@
 
 #include "app/ArenaView.h"
 #include "app/ControllerPanel.h"
+#include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
 #include "app/LanguageMenu.h"
 #include "app/LanguageSwitcher.h"
@@ -105,6 +106,7 @@ void MainWindow::createPanels() {
     recordPanel_ = new RecordPanel(*session_, this);
     mappingPanel_ = new MappingPanel(*session_, this);
     chartsPanel_ = new LiveChartsPanel(this);
+    experimentsPanel_ = new ExperimentsPanel(*session_, this);
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     mappingDock_ =
@@ -113,6 +115,10 @@ void MainWindow::createPanels() {
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
     runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
     chartsDock_ = dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea);
+    experimentsDock_ =
+        dock(this, QStringLiteral("experimentsDock"), experimentsPanel_, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(chartsDock_, experimentsDock_);
+    chartsDock_->raise();
     tabifyDockWidget(taskDock_, recordDock_);
     tabifyDockWidget(recordDock_, mappingDock_);
     tabifyDockWidget(mappingDock_, controllerDock_);
@@ -192,8 +198,8 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
-    for (QDockWidget* d :
-         {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_, chartsDock_}) {
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_,
+                           chartsDock_, experimentsDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -280,6 +286,7 @@ void MainWindow::retranslateUi() {
     controllerDock_->setWindowTitle(tr("Controller"));
     runDock_->setWindowTitle(tr("Run"));
     chartsDock_->setWindowTitle(tr("Live charts"));
+    experimentsDock_->setWindowTitle(tr("Experiments"));
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About PRISCA Lab"));
     aboutAction_->setStatusTip(tr("Show the version and what PRISCA Lab does"));

@@ -124,6 +124,193 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::ExperimentsPanel</name>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="142" />
+        <location filename="../app/ExperimentsPanel.cpp" line="170" />
+        <source>Experiment</source>
+        <translation>實驗</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="171" />
+        <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
+        <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="189" />
+        <source>Starting...</source>
+        <translation>開始中...</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="198" />
+        <source>Cancelling: the trials under way finish first...</source>
+        <translation>取消中：正在進行的試驗會先完成...</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="214" />
+        <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
+        <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="219" />
+        <source> (cancelled: %1 trials finished)</source>
+        <translation>（已取消：完成了 %1 次試驗）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="224" />
+        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="224" />
+        <source>Position [cm]</source>
+        <translation>位置 [厘米]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="224" />
+        <source>Var. [cm²]</source>
+        <translation>方差 [厘米²]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="225" />
+        <source>Orientation [deg]</source>
+        <translation>方向 [度]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="225" />
+        <source>Var. [deg²]</source>
+        <translation>方差 [度²]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="250" />
+        <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
+        <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="256" />
+        <source> (cancelled)</source>
+        <translation>（已取消）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <source>First point</source>
+        <translation>第一點</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <source>Half way</source>
+        <translation>中段</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <source>Last point reached</source>
+        <translation>最後到達的點</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="290" />
+        <source>mean squared position error [m²]</source>
+        <translation>均方位置誤差 [米²]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="291" />
+        <source>mean squared joint-angle error [rad²]</source>
+        <translation>均方關節角誤差 [弧度²]</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="365" />
+        <source>There is no result to export yet.</source>
+        <translation>尚未有可匯出的結果。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="378" />
+        <source>There is no figure to export yet.</source>
+        <translation>尚未有可匯出的圖。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="387" />
+        <location filename="../app/ExperimentsPanel.cpp" line="399" />
+        <source>Export table</source>
+        <translation>匯出表格</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="388" />
+        <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
+        <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="404" />
+        <location filename="../app/ExperimentsPanel.cpp" line="414" />
+        <source>Export figure</source>
+        <translation>匯出圖</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="405" />
+        <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
+        <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="426" />
+        <source>Table I: slide parking, every method</source>
+        <translation>表 I：漂移泊車，所有方法</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="427" />
+        <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
+        <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="429" />
+        <source>Runs per method:</source>
+        <translation>每種方法的運行次數：</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="429" />
+        <source>Trials per method:</source>
+        <translation>每種方法的試驗次數：</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="430" />
+        <source>Seed:</source>
+        <translation>隨機種子：</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="431" />
+        <source>Budget:</source>
+        <translation>預算：</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="432" />
+        <source> steps</source>
+        <translation> 步</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="433" />
+        <source>Simulated control steps each run may use (the same for every method)</source>
+        <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="435" />
+        <source>Start</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="436" />
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="437" />
+        <source>Export table...</source>
+        <translation>匯出表格...</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="438" />
+        <source>Export figure...</source>
+        <translation>匯出圖...</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::LabSession</name>
     <message>
         <location filename="../app/LabSession.cpp" line="39" />
@@ -322,35 +509,35 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="87" />
-        <location filename="../app/MainWindow.cpp" line="280" />
+        <location filename="../app/MainWindow.cpp" line="88" />
+        <location filename="../app/MainWindow.cpp" line="288" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="153" />
-        <location filename="../app/MainWindow.cpp" line="213" />
+        <location filename="../app/MainWindow.cpp" line="159" />
+        <location filename="../app/MainWindow.cpp" line="221" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="154" />
+        <location filename="../app/MainWindow.cpp" line="160" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="165" />
-        <location filename="../app/MainWindow.cpp" line="226" />
+        <location filename="../app/MainWindow.cpp" line="171" />
+        <location filename="../app/MainWindow.cpp" line="234" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="166" />
+        <location filename="../app/MainWindow.cpp" line="172" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="214" />
+        <location filename="../app/MainWindow.cpp" line="222" />
         <source>The session could not be opened.
 
 %1</source>
@@ -359,127 +546,132 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="219" />
+        <location filename="../app/MainWindow.cpp" line="227" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="231" />
+        <location filename="../app/MainWindow.cpp" line="239" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="267" />
+        <location filename="../app/MainWindow.cpp" line="275" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="268" />
+        <location filename="../app/MainWindow.cpp" line="276" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="269" />
+        <location filename="../app/MainWindow.cpp" line="277" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="270" />
+        <location filename="../app/MainWindow.cpp" line="278" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="271" />
+        <location filename="../app/MainWindow.cpp" line="279" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="272" />
+        <location filename="../app/MainWindow.cpp" line="280" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="273" />
+        <location filename="../app/MainWindow.cpp" line="281" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="274" />
+        <location filename="../app/MainWindow.cpp" line="282" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="275" />
+        <location filename="../app/MainWindow.cpp" line="283" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="276" />
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="277" />
+        <location filename="../app/MainWindow.cpp" line="285" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="278" />
+        <location filename="../app/MainWindow.cpp" line="286" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="279" />
+        <location filename="../app/MainWindow.cpp" line="287" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="281" />
+        <location filename="../app/MainWindow.cpp" line="289" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="282" />
+        <location filename="../app/MainWindow.cpp" line="290" />
+        <source>Experiments</source>
+        <translation>實驗</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="283" />
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="295" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300" />
+        <location filename="../app/MainWindow.cpp" line="309" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="312" />
+        <location filename="../app/MainWindow.cpp" line="321" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="314" />
+        <location filename="../app/MainWindow.cpp" line="323" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="318" />
+        <location filename="../app/MainWindow.cpp" line="327" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="321" />
+        <location filename="../app/MainWindow.cpp" line="330" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -487,108 +679,108 @@
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="113" />
+        <location filename="../app/MappingPanel.cpp" line="114" />
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="164" />
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="164" />
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>residual RMS</source>
         <translation>殘差 RMS</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="164" />
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="176" />
+        <location filename="../app/MappingPanel.cpp" line="177" />
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="181" />
+        <location filename="../app/MappingPanel.cpp" line="183" />
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="184" />
+        <location filename="../app/MappingPanel.cpp" line="185" />
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="189" />
+        <location filename="../app/MappingPanel.cpp" line="190" />
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="192" />
+        <location filename="../app/MappingPanel.cpp" line="193" />
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="206" />
+        <location filename="../app/MappingPanel.cpp" line="207" />
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="207" />
+        <location filename="../app/MappingPanel.cpp" line="208" />
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="208" />
-        <location filename="../app/MappingPanel.cpp" line="212" />
+        <location filename="../app/MappingPanel.cpp" line="209" />
+        <location filename="../app/MappingPanel.cpp" line="214" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="209" />
+        <location filename="../app/MappingPanel.cpp" line="211" />
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211" />
+        <location filename="../app/MappingPanel.cpp" line="213" />
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="213" />
+        <location filename="../app/MappingPanel.cpp" line="216" />
         <source>How many steps of response the fit looks at: 1 is eq. 5's one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="215" />
+        <location filename="../app/MappingPanel.cpp" line="218" />
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="216" />
+        <location filename="../app/MappingPanel.cpp" line="219" />
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="217" />
+        <location filename="../app/MappingPanel.cpp" line="220" />
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="218" />
+        <location filename="../app/MappingPanel.cpp" line="222" />
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="220" />
+        <location filename="../app/MappingPanel.cpp" line="224" />
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="221" />
+        <location filename="../app/MappingPanel.cpp" line="225" />
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>

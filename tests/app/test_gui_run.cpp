@@ -3,6 +3,7 @@
 // files answered with a message box.
 #include "app/ChartDecimation.h"
 #include "app/ControllerPanel.h"
+#include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
@@ -17,6 +18,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QSettings>
@@ -193,6 +195,60 @@ class TestGuiRun : public QObject {
         panel->setSign(1, 2, 1);
         panel->fit();
         QCOMPARE(w.window.session().fit().b(1, 2), steeringToPsi);
+    }
+
+    void experiments_table1InTheBackgroundThenExportedAndReadBack() {
+        Window w;
+        auto* panel = w.find<ExperimentsPanel>("experimentsPanel");
+        w.find<QComboBox>("experimentKind")->setCurrentIndex(0);
+        w.find<QSpinBox>("experimentCount")->setValue(3);
+        QSignalSpy finished(panel, &ExperimentsPanel::finished);
+        w.find<QAbstractButton>("startExperiment")->click();
+        QVERIFY(panel->isRunning());
+        QVERIFY(w.find<QAbstractButton>("cancelExperiment")->isEnabled());
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(!panel->isRunning());
+        auto* table = w.find<QTableWidget>("experimentTable");
+        QCOMPARE(table->rowCount(), 8);  // every Table I row, PGSD included
+        QCOMPARE(table->item(0, 0)->text(), QStringLiteral("OURS (PRISCA)"));
+        QVERIFY(table->item(0, 1)->text().contains(QStringLiteral("±")));
+        QVERIFY(!w.find<QLabel>("experimentFigure")->pixmap().isNull());
+
+        QTemporaryDir dir;
+        QString error;
+        for (const char* name : {"t.md", "t.csv", "t.tex"}) {
+            const QString path = dir.filePath(name);
+            QVERIFY2(panel->exportTable(path, &error), qPrintable(error));
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const QString text = QString::fromUtf8(file.readAll());
+            QVERIFY2(text.contains("PRISCA") && text.contains("PLAYBACK"), qPrintable(text));
+        }
+        QFile tex(dir.filePath("t.tex"));
+        QVERIFY(tex.open(QIODevice::ReadOnly));
+        QVERIFY(tex.readAll().contains("\\begin{tabular}"));
+        const QString png = dir.filePath("fig7.png");
+        QVERIFY2(panel->exportFigure(png, &error), qPrintable(error));
+        QVERIFY(!QImage(png).isNull());
+    }
+
+    void experiments_cancelStopsTheCurvesAndKeepsWhatFinished() {
+        Window w;
+        w.find<QComboBox>("target")->setCurrentIndex(1);
+        emit w.find<QComboBox>("target")->activated(1);  // the acrobot
+        auto* panel = w.find<ExperimentsPanel>("experimentsPanel");
+        w.find<QComboBox>("experimentKind")->setCurrentIndex(1);
+        w.find<QSpinBox>("experimentCount")->setValue(20);
+        w.find<QSpinBox>("experimentBudget")->setValue(2000000);  // far more than the test waits
+        QSignalSpy finished(panel, &ExperimentsPanel::finished);
+        w.find<QAbstractButton>("startExperiment")->click();
+        QTest::qWait(300);
+        QVERIFY(panel->isRunning());
+        w.find<QAbstractButton>("cancelExperiment")->click();
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(!panel->isRunning());
+        QVERIFY(panel->tableText(prisca::core::TableFormat::Markdown).contains("cancelled"));
+        QCOMPARE(w.find<QTableWidget>("experimentTable")->rowCount(), 3);
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {

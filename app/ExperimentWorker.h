@@ -1,0 +1,60 @@
+#pragma once
+
+#include "core/Demonstration.h"
+#include "sim/LearningCurveExperiment.h"
+#include "sim/PlantProfile.h"
+#include "sim/Table1Experiment.h"
+
+#include <Eigen/Core>
+#include <QMetaType>
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+
+namespace prisca::app {
+
+/// What an experiment runs on, copied into the worker thread.
+struct ExperimentRequest {
+    enum class Kind { Table1, LearningCurves };
+    Kind kind = Kind::Table1;
+    QString plant;
+    sim::PlantProfile profile;
+    std::shared_ptr<const core::Demonstration> demonstration;
+    Eigen::MatrixXd fittedB;
+    int trials = 20;  ///< Table I: trials per method; curves: runs per method
+    std::uint64_t seed = 1;
+    long long budgetSteps = 64000;  ///< curves: simulated steps per run
+    int threads = 2;
+};
+
+/// Table I or the learning curves in the background (the same experiments as prisca-cli
+/// table1 and curve). Lives on its own thread; cancel() may be called from any thread and stops
+/// within a trial, keeping what finished.
+class ExperimentWorker : public QObject {
+    Q_OBJECT
+  public:
+    explicit ExperimentWorker(QObject* parent = nullptr) : QObject(parent) {}
+    /// Any thread.
+    void cancel() { cancelled_.store(true); }
+
+  public slots:
+    void run(const prisca::app::ExperimentRequest& request);
+
+  signals:
+    /// done of total units (trials or runs) so far, and a line for the status.
+    void progress(int done, int total, const QString& text);
+    void table1Finished(std::shared_ptr<const prisca::sim::Table1Result> result);
+    void curvesFinished(std::shared_ptr<const std::vector<prisca::sim::CurveSummary>> curves,
+                        bool cancelled);
+    void failed(const QString& message);
+
+  private:
+    std::atomic<bool> cancelled_{false};
+};
+
+}  // namespace prisca::app
+
+Q_DECLARE_METATYPE(prisca::app::ExperimentRequest)
+Q_DECLARE_METATYPE(std::shared_ptr<const prisca::sim::Table1Result>)
+Q_DECLARE_METATYPE(std::shared_ptr<const std::vector<prisca::sim::CurveSummary>>)

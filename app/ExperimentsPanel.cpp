@@ -1,0 +1,443 @@
+#include "app/ExperimentsPanel.h"
+
+#include "app/LabSession.h"
+#include "app/figures/PaperFigures.h"
+#include "core/FileIo.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QThread>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace prisca::app {
+
+namespace {
+
+constexpr unsigned long kShutdownWaitMs = 5000;
+// The slide-car's body for the end postures of Fig. 7 [m].
+constexpr double kCarLength = 0.40;
+constexpr double kCarWidth = 0.20;
+
+QString plusMinus(const core::ErrorSummary& s) {
+    if (s.count == 0) {
+        return QStringLiteral("—");
+    }
+    return QStringLiteral("%1 ± %2")
+        .arg(s.meanAbsoluteError, 0, 'f', 2)
+        .arg(s.standardDeviation, 0, 'f', 2);
+}
+
+}  // namespace
+
+ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      worker_(new ExperimentWorker),
+      kind_(new QComboBox(this)),
+      countLabel_(new QLabel(this)),
+      count_(new QSpinBox(this)),
+      seedLabel_(new QLabel(this)),
+      seed_(new QSpinBox(this)),
+      budgetLabel_(new QLabel(this)),
+      budget_(new QSpinBox(this)),
+      start_(new QPushButton(this)),
+      cancel_(new QPushButton(this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      table_(new QTableWidget(this)),
+      figureView_(new QLabel(this)),
+      exportTable_(new QPushButton(this)),
+      exportFigure_(new QPushButton(this)) {
+    setObjectName(QStringLiteral("experimentsPanel"));
+    qRegisterMetaType<ExperimentRequest>();
+    qRegisterMetaType<std::shared_ptr<const sim::Table1Result>>();
+    qRegisterMetaType<std::shared_ptr<const std::vector<sim::CurveSummary>>>();
+    kind_->setObjectName(QStringLiteral("experimentKind"));
+    kind_->addItem(QString(), static_cast<int>(ExperimentRequest::Kind::Table1));
+    kind_->addItem(QString(), static_cast<int>(ExperimentRequest::Kind::LearningCurves));
+    count_->setObjectName(QStringLiteral("experimentCount"));
+    count_->setRange(1, 1000);
+    seed_->setObjectName(QStringLiteral("experimentSeed"));
+    seed_->setRange(0, 1000000);
+    budget_->setObjectName(QStringLiteral("experimentBudget"));
+    budget_->setRange(320, 10000000);
+    budget_->setSingleStep(3200);
+    start_->setObjectName(QStringLiteral("startExperiment"));
+    cancel_->setObjectName(QStringLiteral("cancelExperiment"));
+    progress_->setObjectName(QStringLiteral("experimentProgress"));
+    table_->setObjectName(QStringLiteral("experimentTable"));
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->verticalHeader()->setVisible(false);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    figureView_->setObjectName(QStringLiteral("experimentFigure"));
+    figureView_->setAlignment(Qt::AlignCenter);
+    figureView_->setMinimumSize(200, 150);
+    figureView_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    status_->setWordWrap(true);
+
+    QSettings settings;
+    kind_->setCurrentIndex(settings.value("experiments/kind", 0).toInt() == 1 ? 1 : 0);
+    count_->setValue(settings.value("experiments/count", 20).toInt());
+    seed_->setValue(settings.value("experiments/seed", 1).toInt());
+    budget_->setValue(settings.value("experiments/budget", 64000).toInt());
+
+    auto* form = new QFormLayout;
+    form->addRow(kind_);
+    form->addRow(countLabel_, count_);
+    form->addRow(seedLabel_, seed_);
+    form->addRow(budgetLabel_, budget_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(start_);
+    buttons->addWidget(cancel_);
+    auto* exports = new QHBoxLayout;
+    exports->addWidget(exportTable_);
+    exports->addWidget(exportFigure_);
+    auto* controls = new QWidget(this);
+    auto* left = new QVBoxLayout(controls);
+    left->addLayout(form);
+    left->addLayout(buttons);
+    left->addWidget(progress_);
+    left->addWidget(status_);
+    left->addWidget(table_, 1);
+    left->addLayout(exports);
+    auto* splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->addWidget(controls);
+    splitter->addWidget(figureView_);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(splitter);
+
+    thread_.setObjectName(QStringLiteral("prisca-experiments"));
+    worker_->moveToThread(&thread_);
+    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+    connect(worker_, &ExperimentWorker::progress, this,
+            [this](int done, int total, const QString& text) {
+                if (total > 0) {
+                    progress_->setRange(0, total);
+                    progress_->setValue(done);
+                }
+                status_->setText(text);
+            });
+    connect(worker_, &ExperimentWorker::table1Finished, this, &ExperimentsPanel::showTable1);
+    connect(worker_, &ExperimentWorker::curvesFinished, this, &ExperimentsPanel::showCurves);
+    connect(worker_, &ExperimentWorker::failed, this, [this](const QString& message) {
+        setRunning(false);
+        status_->setText(message);
+        QMessageBox::warning(this, tr("Experiment"), message);
+        emit finished();
+    });
+    thread_.start();
+
+    connect(start_, &QPushButton::clicked, this, &ExperimentsPanel::start);
+    connect(cancel_, &QPushButton::clicked, this, &ExperimentsPanel::cancel);
+    connect(exportTable_, &QPushButton::clicked, this, &ExperimentsPanel::askExportTable);
+    connect(exportFigure_, &QPushButton::clicked, this, &ExperimentsPanel::askExportFigure);
+    connect(kind_, &QComboBox::currentIndexChanged, this, &ExperimentsPanel::retranslateUi);
+    retranslateUi();
+    setRunning(false);
+}
+
+ExperimentsPanel::~ExperimentsPanel() {
+    worker_->cancel();
+    thread_.quit();
+    thread_.wait(kShutdownWaitMs);
+}
+
+void ExperimentsPanel::start() {
+    if (running_) {
+        return;
+    }
+    ExperimentRequest request;
+    request.kind = static_cast<ExperimentRequest::Kind>(kind_->currentData().toInt());
+    if (request.kind == ExperimentRequest::Kind::Table1 && !session_.profile().info.pose) {
+        QMessageBox::information(
+            this, tr("Experiment"),
+            tr("Table I compares final positions and headings, so it needs a vehicle: choose the "
+               "slide-car or the aircraft as the target."));
+        return;
+    }
+    request.plant = session_.plant();
+    request.profile = session_.profile();
+    request.demonstration = session_.demonstration();
+    request.fittedB = session_.fit().b;
+    request.trials = count_->value();
+    request.seed = static_cast<std::uint64_t>(seed_->value());
+    request.budgetSteps = budget_->value();
+    request.threads = std::max(1, QThread::idealThreadCount());
+    QSettings settings;
+    settings.setValue("experiments/kind", kind_->currentIndex());
+    settings.setValue("experiments/count", count_->value());
+    settings.setValue("experiments/seed", seed_->value());
+    settings.setValue("experiments/budget", budget_->value());
+    progress_->setRange(0, 0);  // busy until the first count arrives
+    status_->setText(tr("Starting..."));
+    setRunning(true);
+    QMetaObject::invokeMethod(
+        worker_, [w = worker_, request] { w->run(request); }, Qt::QueuedConnection);
+}
+
+void ExperimentsPanel::cancel() {
+    if (running_) {
+        worker_->cancel();
+        status_->setText(tr("Cancelling: the trials under way finish first..."));
+    }
+}
+
+void ExperimentsPanel::setRunning(bool running) {
+    running_ = running;
+    start_->setEnabled(!running);
+    cancel_->setEnabled(running);
+    kind_->setEnabled(!running);
+    exportTable_->setEnabled(!running && !caption_.isEmpty());
+    exportFigure_->setEnabled(!running && hasFigure_);
+}
+
+void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> result) {
+    int done = 0;
+    rows_ = sim::table1Rows(*result, &done);
+    caption_ = tr("Slide parking in simulation (%1): %2 trials per method, seed %3")
+                   .arg(session_.plant())
+                   .arg(count_->value())
+                   .arg(seed_->value());
+    if (result->cancelled) {
+        caption_ += tr(" (cancelled: %1 trials finished)").arg(done);
+    }
+    table_->clear();
+    table_->setColumnCount(5);
+    table_->setRowCount(static_cast<int>(rows_.size()));
+    table_->setHorizontalHeaderLabels({tr("Method"), tr("Position [cm]"), tr("Var. [cm²]"),
+                                       tr("Orientation [deg]"), tr("Var. [deg²]")});
+    for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
+        const core::Table1Row& row = rows_[r];
+        const QStringList cells = {core::table1Label(row.method), plusMinus(row.position),
+                                   QString::number(row.position.variance, 'f', 2),
+                                   plusMinus(row.orientation),
+                                   QString::number(row.orientation.variance, 'f', 2)};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setTextAlignment(c == 0 ? Qt::AlignLeft | Qt::AlignVCenter
+                                          : Qt::AlignRight | Qt::AlignVCenter);
+            table_->setItem(r, c, item);
+        }
+    }
+    figure_ = figures::parkingFigure(*result, kCarLength, kCarWidth);
+    hasFigure_ = true;
+    showFigure();
+    status_->setText(caption_);
+    setRunning(false);
+    emit finished();
+}
+
+void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSummary>> curves,
+                                  bool cancelled) {
+    rows_.clear();
+    caption_ = tr("Learning curves (%1): %2 runs per method, %3 steps each, seed %4")
+                   .arg(session_.plant())
+                   .arg(count_->value())
+                   .arg(budget_->value())
+                   .arg(seed_->value());
+    if (cancelled) {
+        caption_ += tr(" (cancelled)");
+    }
+    table_->clear();
+    table_->setColumnCount(4);
+    table_->setRowCount(static_cast<int>(curves->size()));
+    table_->setHorizontalHeaderLabels(
+        {tr("Method"), tr("First point"), tr("Half way"), tr("Last point reached")});
+    std::vector<QString> methods;
+    std::vector<std::vector<double>> seconds;
+    std::vector<core::ConfidenceBand> bands;
+    for (int r = 0; r < static_cast<int>(curves->size()); ++r) {
+        const sim::CurveSummary& c = (*curves)[r];
+        methods.push_back(c.method);
+        seconds.push_back(c.seconds);
+        bands.push_back(c.band);
+        const auto at = [&](size_t i) {
+            if (i >= c.band.mean.size() || c.band.count[i] == 0) {
+                return QStringLiteral("—");
+            }
+            return QStringLiteral("%1 [%2, %3]")
+                .arg(c.band.mean[i], 0, 'g', 3)
+                .arg(c.band.lower[i], 0, 'g', 3)
+                .arg(c.band.upper[i], 0, 'g', 3);
+        };
+        size_t last = c.band.count.size();
+        while (last > 0 && c.band.count[last - 1] == 0) {
+            --last;
+        }
+        const QStringList cells = {core::table1Label(c.method), at(0), at(c.band.mean.size() / 2),
+                                   last > 0 ? at(last - 1) : QStringLiteral("—")};
+        for (int col = 0; col < cells.size(); ++col) {
+            table_->setItem(r, col, new QTableWidgetItem(cells[col]));
+        }
+    }
+    const QString yLabel = session_.profile().info.pose
+                               ? tr("mean squared position error [m²]")
+                               : tr("mean squared joint-angle error [rad²]");
+    figure_ = figures::learningCurveFigure(methods, seconds, bands, yLabel);
+    hasFigure_ = true;
+    showFigure();
+    status_->setText(caption_);
+    setRunning(false);
+    emit finished();
+}
+
+void ExperimentsPanel::showFigure() {
+    if (!hasFigure_) {
+        figureView_->clear();
+        return;
+    }
+    const QImage image = plot::renderFigure(figure_);
+    figureView_->setPixmap(QPixmap::fromImage(image).scaled(
+        figureView_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
+}
+
+void ExperimentsPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (hasFigure_) {
+        showFigure();
+    }
+}
+
+QString ExperimentsPanel::tableText(core::TableFormat format) const {
+    if (caption_.isEmpty()) {
+        return {};
+    }
+    if (!rows_.empty()) {
+        return core::formatTable1(rows_, format, caption_);
+    }
+    // Learning curves: the table as shown, in the format asked for.
+    const bool csv = format == core::TableFormat::Csv;
+    const bool latex = format == core::TableFormat::Latex;
+    QString out;
+    if (latex) {
+        out += QStringLiteral("\\begin{tabular}{llll}\n");
+    } else if (!csv) {
+        out += QStringLiteral("%1\n\n").arg(caption_);
+    }
+    for (int r = -1; r < table_->rowCount(); ++r) {
+        QStringList cells;
+        for (int c = 0; c < table_->columnCount(); ++c) {
+            cells << (r < 0 ? table_->horizontalHeaderItem(c)->text() : table_->item(r, c)->text());
+        }
+        if (csv) {
+            for (QString& cell : cells) {
+                cell = QStringLiteral("\"%1\"").arg(cell.replace('"', QStringLiteral("\"\"")));
+            }
+            out += cells.join(',') + '\n';
+        } else if (latex) {
+            out += cells.join(QStringLiteral(" & ")) + QStringLiteral(" \\\\\n");
+        } else {
+            out += QStringLiteral("| %1 |\n").arg(cells.join(QStringLiteral(" | ")));
+            if (r < 0) {
+                out += QStringLiteral("|%1\n").arg(QStringLiteral(" --- |").repeated(cells.size()));
+            }
+        }
+    }
+    if (latex) {
+        out += QStringLiteral("\\end{tabular}\n");
+    }
+    return out;
+}
+
+bool ExperimentsPanel::exportTable(const QString& path, QString* error) const {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const core::TableFormat format = suffix == QLatin1String("csv")   ? core::TableFormat::Csv
+                                     : suffix == QLatin1String("tex") ? core::TableFormat::Latex
+                                                                      : core::TableFormat::Markdown;
+    const QString text = tableText(format);
+    if (text.isEmpty()) {
+        *error = tr("There is no result to export yet.");
+        return false;
+    }
+    core::FileError fileError;
+    if (!core::writeFileAtomically(path, text.toUtf8(), &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    return true;
+}
+
+bool ExperimentsPanel::exportFigure(const QString& path, QString* error) const {
+    if (!hasFigure_) {
+        *error = tr("There is no figure to export yet.");
+        return false;
+    }
+    return plot::saveFigure(figure_, path, error);
+}
+
+void ExperimentsPanel::askExportTable() {
+    QString filter;
+    QString path =
+        QFileDialog::getSaveFileName(this, tr("Export table"), QString(),
+                                     tr("Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)"), &filter);
+    if (path.isEmpty()) {
+        return;
+    }
+    if (QFileInfo(path).suffix().isEmpty()) {
+        path += filter.contains(QLatin1String("csv"))   ? QStringLiteral(".csv")
+                : filter.contains(QLatin1String("tex")) ? QStringLiteral(".tex")
+                                                        : QStringLiteral(".md");
+    }
+    QString error;
+    if (!exportTable(path, &error)) {
+        QMessageBox::warning(this, tr("Export table"), error);
+    }
+}
+
+void ExperimentsPanel::askExportFigure() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Export figure"), QString(),
+                                                tr("PNG pictures (*.png);;SVG drawings (*.svg)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    if (QFileInfo(path).suffix().isEmpty()) {
+        path += QStringLiteral(".png");
+    }
+    QString error;
+    if (!exportFigure(path, &error)) {
+        QMessageBox::warning(this, tr("Export figure"), error);
+    }
+}
+
+void ExperimentsPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void ExperimentsPanel::retranslateUi() {
+    kind_->setItemText(0, tr("Table I: slide parking, every method"));
+    kind_->setItemText(1, tr("Learning curves: PRISCA, PGSD, PEGASUS"));
+    const bool curves = kind_->currentIndex() == 1;
+    countLabel_->setText(curves ? tr("Runs per method:") : tr("Trials per method:"));
+    seedLabel_->setText(tr("Seed:"));
+    budgetLabel_->setText(tr("Budget:"));
+    budget_->setSuffix(tr(" steps"));
+    budget_->setToolTip(tr("Simulated control steps each run may use (the same for every method)"));
+    budget_->setEnabled(curves);
+    start_->setText(tr("Start"));
+    cancel_->setText(tr("Cancel"));
+    exportTable_->setText(tr("Export table..."));
+    exportFigure_->setText(tr("Export figure..."));
+}
+
+}  // namespace prisca::app
