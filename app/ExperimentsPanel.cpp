@@ -81,6 +81,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     cancel_->setObjectName(QStringLiteral("cancelExperiment"));
     progress_->setObjectName(QStringLiteral("experimentProgress"));
     table_->setObjectName(QStringLiteral("experimentTable"));
+    table_->setMinimumHeight(60);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->setVisible(false);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);

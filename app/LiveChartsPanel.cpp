@@ -53,6 +53,21 @@ void setRange(QChart* chart, double x0, double x1, double y0, double y1) {
     const double pad = 0.05 * (y1 - y0);
     horizontal.first()->setRange(x0, x1);
     vertical.first()->setRange(y0 - pad, y1 + pad);
+    // Round tick values (0, 10, 20 s rather than 0, 6.5, 13 s), about five per axis, on the
+    // data's own range.
+    for (QAbstractAxis* axis : {horizontal.first(), vertical.first()}) {
+        if (auto* value = qobject_cast<QValueAxis*>(axis)) {
+            const double span = value->max() - value->min();
+            const double raw = span / 5.0;
+            const double power = std::pow(10.0, std::floor(std::log10(raw)));
+            const double step = raw / power < 2.0   ? power
+                                : raw / power < 5.0 ? 2 * power
+                                                    : 5 * power;
+            value->setTickType(QValueAxis::TicksDynamic);
+            value->setTickAnchor(0.0);
+            value->setTickInterval(step);
+        }
+    }
 }
 
 }  // namespace
@@ -79,7 +94,8 @@ LiveChartsPanel::LiveChartsPanel(QWidget* parent)
         chart->setMargins(QMargins(4, 4, 4, 4));
         auto* x = new QValueAxis;
         auto* y = new QValueAxis;
-        x->setLabelFormat(QStringLiteral("%.0f"));
+        x->setLabelFormat(QStringLiteral("%g"));
+        y->setLabelFormat(QStringLiteral("%g"));
         chart->addAxis(x, Qt::AlignBottom);
         chart->addAxis(y, Qt::AlignLeft);
     }
