@@ -9,10 +9,14 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <cmath>
 
 namespace prisca::app {
 
@@ -28,6 +32,11 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       thetaBound_(new QDoubleSpinBox(this)),
       window_(new QSpinBox(this)),
       pgsdStep_(new QDoubleSpinBox(this)),
+      featuresLabel_(new QLabel(this)),
+      features_(new QTableWidget(this)),
+      limitsLabel_(new QLabel(this)),
+      limits_(new QTableWidget(this)),
+      problem_(new QLabel(this)),
       preset_(new QPushButton(this)) {
     setObjectName(QStringLiteral("controllerPanel"));
     method_->setObjectName(QStringLiteral("method"));
@@ -59,6 +68,17 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     pgsdStep_->setRange(0.0, 1e6);
     pgsdStep_->setDecimals(5);
     preset_->setObjectName(QStringLiteral("controllerPreset"));
+    features_->setObjectName(QStringLiteral("featureScales"));
+    limits_->setObjectName(QStringLiteral("actionLimits"));
+    problem_->setObjectName(QStringLiteral("controllerProblem"));
+    problem_->setWordWrap(true);
+    problem_->setStyleSheet(QStringLiteral("color: #b00020"));
+    featuresLabel_->setWordWrap(true);
+    for (QTableWidget* table : {features_, limits_}) {
+        table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+        table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+        table->setMinimumHeight(60);
+    }
 
     form_->addRow(QString(), method_);
     form_->addRow(QString(), horizon_);
@@ -70,6 +90,11 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     form_->addRow(QString(), pgsdStep_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form_);
+    layout->addWidget(featuresLabel_);
+    layout->addWidget(features_);
+    layout->addWidget(limitsLabel_);
+    layout->addWidget(limits_);
+    layout->addWidget(problem_);
     layout->addWidget(preset_);
     layout->addStretch(1);
 
@@ -80,6 +105,8 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     for (QDoubleSpinBox* box : {gamma_, beta_, stepScale_, thetaBound_, pgsdStep_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
+    connect(features_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
+    connect(limits_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
     connect(preset_, &QPushButton::clicked, this, [this] {
         sim::PlantProfile preset = sim::PlantProfile::forPlant(session_.profile().info);
         preset.mapping = session_.profile().mapping;  // the operator's B~ is not a parameter
@@ -101,7 +128,58 @@ void ControllerPanel::showSession() {
     thetaBound_->setValue(p.prisca.thetaBound);
     window_->setValue(p.matchingWindow);
     pgsdStep_->setValue(p.pgsd.stepSize);
+
+    const core::FeatureMap& features = editedFeatures();
+    const int m = p.info.actionDimension();
+    const int count = features.featureCount();
+    features_->clear();
+    features_->setRowCount(m);
+    features_->setColumnCount(count);
+    features_->setVerticalHeaderLabels(p.info.actionNames);
+    QStringList columns;
+    for (int j = 0; j < count; ++j) {
+        columns << QStringLiteral("φ%1").arg(j);
+    }
+    features_->setHorizontalHeaderLabels(columns);
+    for (int l = 0; l < m && l < features.channelCount(); ++l) {
+        for (int j = 0; j < count; ++j) {
+            const core::FeatureTerm& term = features.terms()[l][j];
+            const QString name = p.info.stateNames.value(term.index);
+            const QString what =
+                term.source == core::FeatureTerm::Source::Deviation ? tr("error in %1").arg(name)
+                : term.source == core::FeatureTerm::Source::State   ? tr("state %1").arg(name)
+                                                                    : tr("constant");
+            auto* item = new QTableWidgetItem(QString::number(term.scale, 'g', 6));
+            item->setToolTip(tr("Scale of φ%1 of %2: %3 (Algorithm 1, line 3)")
+                                 .arg(j)
+                                 .arg(p.info.actionNames[l], what));
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            features_->setItem(l, j, item);
+        }
+    }
+    limits_->clear();
+    limits_->setRowCount(m);
+    limits_->setColumnCount(2);
+    limits_->setVerticalHeaderLabels(p.info.actionNames);
+    limits_->setHorizontalHeaderLabels({tr("lower"), tr("upper")});
+    for (int l = 0; l < m; ++l) {
+        for (int side = 0; side < 2; ++side) {
+            const double v = side == 0 ? p.info.actionLower[l] : p.info.actionUpper[l];
+            auto* item = new QTableWidgetItem(QString::number(v, 'g', 6));
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            item->setToolTip(tr("The controller saturates %1 to this [%2]")
+                                 .arg(p.info.actionNames[l], p.info.actionUnits[l]));
+            limits_->setItem(l, side, item);
+        }
+    }
+    problem_->clear();
     updating_ = false;
+}
+
+const core::FeatureMap& ControllerPanel::editedFeatures() const {
+    const sim::PlantProfile& p = session_.profile();
+    return session_.method() == QLatin1String("prisca") && p.priscaFeatures ? *p.priscaFeatures
+                                                                            : p.features;
 }
 
 void ControllerPanel::apply() {
@@ -116,6 +194,50 @@ void ControllerPanel::apply() {
     p.prisca.thetaBound = thetaBound_->value();
     p.matchingWindow = window_->value();
     p.pgsd.stepSize = pgsdStep_->value();
+
+    // Feature scales and limits: every cell must be a finite number; limits within the plant's.
+    QString problem;
+    std::vector<std::vector<core::FeatureTerm>> terms = editedFeatures().terms();
+    for (int l = 0; l < features_->rowCount() && l < static_cast<int>(terms.size()); ++l) {
+        for (int j = 0; j < features_->columnCount() && j < static_cast<int>(terms[l].size());
+             ++j) {
+            bool ok = false;
+            const double v =
+                features_->item(l, j) ? features_->item(l, j)->text().toDouble(&ok) : 0.0;
+            if (!ok || !std::isfinite(v)) {
+                problem =
+                    tr("Feature φ%1 of %2 must be a number.").arg(j).arg(p.info.actionNames[l]);
+            } else {
+                terms[l][j].scale = v;
+            }
+        }
+    }
+    const sim::PlantInfo physical = sim::PlantCatalog::describe(session_.plant());
+    for (int l = 0; l < limits_->rowCount() && l < p.info.actionDimension(); ++l) {
+        bool okLow = false, okHigh = false;
+        const double low = limits_->item(l, 0) ? limits_->item(l, 0)->text().toDouble(&okLow) : 0.0;
+        const double high =
+            limits_->item(l, 1) ? limits_->item(l, 1)->text().toDouble(&okHigh) : 0.0;
+        if (!okLow || !okHigh || !(low < high) || low < physical.actionLower[l] ||
+            high > physical.actionUpper[l]) {
+            problem = tr("Limits of %1 must be numbers with lower < upper, within [%2, %3].")
+                          .arg(p.info.actionNames[l])
+                          .arg(physical.actionLower[l])
+                          .arg(physical.actionUpper[l]);
+        } else {
+            p.info.actionLower[l] = low;
+            p.info.actionUpper[l] = high;
+        }
+    }
+    problem_->setText(problem);
+    if (!problem.isEmpty()) {
+        return;  // nothing half-applied; the cell stays for the operator to correct
+    }
+    if (session_.method() == QLatin1String("prisca") && p.priscaFeatures) {
+        p.priscaFeatures = core::FeatureMap(terms);
+    } else {
+        p.features = core::FeatureMap(terms);
+    }
     const QString method = method_->currentData().toString();
     updating_ = true;  // the session echoes the change back; the boxes already show it
     session_.setProfile(p);
@@ -160,6 +282,8 @@ void ControllerPanel::retranslateUi() {
              "the whole demonstration."));
     label(pgsdStep_, tr("PGSD step α:"), tr("The fixed step size of PGSD (no decay)."));
     preset_->setText(tr("Restore the plant's tuned preset"));
+    featuresLabel_->setText(tr("Feature scales φ (per control; the policy is u = u* + θᵀφ):"));
+    limitsLabel_->setText(tr("Action limits:"));
     horizon_->setSuffix(tr(" steps"));
     beta_->setSuffix(tr(" steps"));
     window_->setSuffix(tr(" samples"));

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/FeatureMap.h"
+
 #include <QWidget>
 
 class QComboBox;
@@ -8,14 +10,17 @@ class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSpinBox;
+class QTableWidget;
 
 namespace prisca::app {
 
 class LabSession;
 
 /// The controller: the method, and PRISCA's parameters (H, gamma, beta, step scale, theta
-/// bound, matching window) with tooltips naming the paper's equations; PGSD's fixed step; a
-/// button restoring the plant's tuned preset. Every edit goes straight into the session.
+/// bound, matching window) with tooltips naming the paper's equations; PGSD's fixed step; the
+/// scales of the features phi (of the method chosen: PRISCA may have its own) and the action
+/// limits the controller saturates to; a button restoring the plant's tuned preset. Every valid
+/// edit goes straight into the session; an invalid one is named and not applied.
 class ControllerPanel : public QWidget {
     Q_OBJECT
   public:
@@ -28,6 +33,8 @@ class ControllerPanel : public QWidget {
     void retranslateUi();
     void showSession();
     void apply();
+    /// The feature set the chosen method uses (PRISCA's own where the plant has one).
+    const core::FeatureMap& editedFeatures() const;
 
     LabSession& session_;
     bool updating_ = false;
@@ -40,6 +47,11 @@ class ControllerPanel : public QWidget {
     QDoubleSpinBox* thetaBound_;
     QSpinBox* window_;
     QDoubleSpinBox* pgsdStep_;
+    QLabel* featuresLabel_;
+    QTableWidget* features_;
+    QLabel* limitsLabel_;
+    QTableWidget* limits_;
+    QLabel* problem_;
     QPushButton* preset_;
 };
 

@@ -11,6 +11,7 @@
 #include <QJsonObject>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace prisca::app {
@@ -76,6 +77,54 @@ bool readVector(const QJsonObject& object, const QString& key, Eigen::Index size
         v[i] = a[i].toDouble();
     }
     *value = v;
+    return true;
+}
+
+QJsonArray scalesToJson(const core::FeatureMap& features) {
+    QJsonArray channels;
+    for (const auto& channel : features.terms()) {
+        QJsonArray scales;
+        for (const core::FeatureTerm& term : channel) {
+            scales.append(term.scale);
+        }
+        channels.append(scales);
+    }
+    return channels;
+}
+
+// Reads the scales of `features` from object[key] (same shape), or explains what is wrong.
+bool readScales(const QJsonObject& object, const QString& key, core::FeatureMap* features,
+                QString* error) {
+    if (!object.contains(key)) {
+        return true;
+    }
+    std::vector<std::vector<core::FeatureTerm>> terms = features->terms();
+    const QJsonArray channels = object.value(key).toArray();
+    if (channels.size() != static_cast<int>(terms.size())) {
+        *error = LabSession::tr("'%1' must have %2 lists of scales").arg(key).arg(terms.size());
+        return false;
+    }
+    for (int l = 0; l < channels.size(); ++l) {
+        const QJsonArray scales = channels[l].toArray();
+        if (scales.size() != static_cast<int>(terms[l].size())) {
+            *error = LabSession::tr("'%1' list %2 must have %3 scales")
+                         .arg(key)
+                         .arg(l + 1)
+                         .arg(terms[l].size());
+            return false;
+        }
+        for (int j = 0; j < scales.size(); ++j) {
+            if (!scales[j].isDouble() || !std::isfinite(scales[j].toDouble())) {
+                *error = LabSession::tr("'%1' list %2 entry %3 must be a number")
+                             .arg(key)
+                             .arg(l + 1)
+                             .arg(j + 1);
+                return false;
+            }
+            terms[l][j].scale = scales[j].toDouble();
+        }
+    }
+    *features = core::FeatureMap(terms);
     return true;
 }
 
@@ -180,7 +229,13 @@ bool LabSession::save(const QString& path, QString* error) const {
                      {"matchingWindow", profile_.matchingWindow},
                      {"prisca", prisca},
                      {"pgsd", pgsd},
-                     {"pd", pd}};
+                     {"pd", pd},
+                     {"featureScales", scalesToJson(profile_.features)},
+                     {"limits", QJsonObject{{"lower", toJson(profile_.info.actionLower)},
+                                            {"upper", toJson(profile_.info.actionUpper)}}}};
+    if (profile_.priscaFeatures) {
+        root.insert("priscaFeatureScales", scalesToJson(*profile_.priscaFeatures));
+    }
     core::FileError fileError;
     if (!core::writeFileAtomically(path, QJsonDocument(root).toJson(QJsonDocument::Indented),
                                    &fileError)) {
@@ -262,6 +317,44 @@ bool LabSession::open(const QString& path, QString* error) {
         readInteger(pd, "horizon", 1, 1000, &profile.pdHorizon, &what);
     if (!ok) {
         return fail(what);
+    }
+    if (!readScales(root, "featureScales", &profile.features, &what)) {
+        return fail(what);
+    }
+    if (profile.priscaFeatures &&
+        !readScales(root, "priscaFeatureScales", &*profile.priscaFeatures, &what)) {
+        return fail(what);
+    }
+    if (root.contains("limits")) {
+        const QJsonObject limits = root.value("limits").toObject();
+        const sim::PlantInfo physical = sim::PlantCatalog::describe(plant);
+        const Eigen::Index m = physical.actionLower.size();
+        Eigen::VectorXd lower = physical.actionLower, upper = physical.actionUpper;
+        const auto readLimits = [&](const char* key, Eigen::VectorXd* out) {
+            const QJsonArray a = limits.value(key).toArray();
+            if (a.size() != m) {
+                what = tr("'limits.%1' must be a list of %2 numbers").arg(key).arg(m);
+                return false;
+            }
+            for (int l = 0; l < m; ++l) {
+                (*out)[l] = a[l].toDouble(std::numeric_limits<double>::quiet_NaN());
+            }
+            return true;
+        };
+        if (!readLimits("lower", &lower) || !readLimits("upper", &upper)) {
+            return fail(what);
+        }
+        for (Eigen::Index l = 0; l < m; ++l) {
+            if (!(lower[l] < upper[l]) || lower[l] < physical.actionLower[l] ||
+                upper[l] > physical.actionUpper[l]) {
+                return fail(tr("'limits' of %1 must have lower < upper within [%2, %3]")
+                                .arg(physical.actionNames[l])
+                                .arg(physical.actionLower[l])
+                                .arg(physical.actionUpper[l]));
+            }
+        }
+        profile.info.actionLower = lower;
+        profile.info.actionUpper = upper;
     }
     fitOptions.target = fit.value("target").toString() == QLatin1String("state")
                             ? core::ActionMappingFitOptions::Target::StateChange

@@ -27,98 +27,153 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="143" />
+        <location filename="../app/ControllerPanel.cpp" line="149" />
+        <source>error in %1</source>
+        <translation>%1 的誤差</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="150" />
+        <source>state %1</source>
+        <translation>狀態 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="151" />
+        <source>constant</source>
+        <translation>常數</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="153" />
+        <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
+        <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <source>lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <source>upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="170" />
+        <source>The controller saturates %1 to this [%2]</source>
+        <translation>控制器把 %1 限制於此 [%2]</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="206" />
+        <source>Feature φ%1 of %2 must be a number.</source>
+        <translation>%2 的特徵 φ%1 必須是數字。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="219" />
+        <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
+        <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="261" />
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="144" />
+        <location filename="../app/ControllerPanel.cpp" line="262" />
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
         <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="146" />
+        <location filename="../app/ControllerPanel.cpp" line="264" />
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="147" />
+        <location filename="../app/ControllerPanel.cpp" line="265" />
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="148" />
+        <location filename="../app/ControllerPanel.cpp" line="266" />
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="149" />
+        <location filename="../app/ControllerPanel.cpp" line="267" />
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="150" />
+        <location filename="../app/ControllerPanel.cpp" line="268" />
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="151" />
+        <location filename="../app/ControllerPanel.cpp" line="269" />
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="152" />
+        <location filename="../app/ControllerPanel.cpp" line="270" />
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="153" />
+        <location filename="../app/ControllerPanel.cpp" line="271" />
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="155" />
+        <location filename="../app/ControllerPanel.cpp" line="273" />
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="156" />
+        <location filename="../app/ControllerPanel.cpp" line="274" />
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="158" />
+        <location filename="../app/ControllerPanel.cpp" line="276" />
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="159" />
+        <location filename="../app/ControllerPanel.cpp" line="277" />
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <location filename="../app/ControllerPanel.cpp" line="279" />
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <location filename="../app/ControllerPanel.cpp" line="279" />
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="162" />
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>Restore the plant's tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="163" />
-        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <location filename="../app/ControllerPanel.cpp" line="281" />
+        <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
+        <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="282" />
+        <source>Action limits:</source>
+        <translation>動作限值：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="283" />
+        <location filename="../app/ControllerPanel.cpp" line="284" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="165" />
+        <location filename="../app/ControllerPanel.cpp" line="285" />
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -126,186 +181,186 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="142" />
-        <location filename="../app/ExperimentsPanel.cpp" line="170" />
+        <location filename="../app/ExperimentsPanel.cpp" line="144" />
+        <location filename="../app/ExperimentsPanel.cpp" line="172" />
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="171" />
+        <location filename="../app/ExperimentsPanel.cpp" line="173" />
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="189" />
+        <location filename="../app/ExperimentsPanel.cpp" line="191" />
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="198" />
+        <location filename="../app/ExperimentsPanel.cpp" line="200" />
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="214" />
+        <location filename="../app/ExperimentsPanel.cpp" line="216" />
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="219" />
+        <location filename="../app/ExperimentsPanel.cpp" line="221" />
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="224" />
-        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="224" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="224" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="225" />
+        <location filename="../app/ExperimentsPanel.cpp" line="227" />
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="225" />
+        <location filename="../app/ExperimentsPanel.cpp" line="227" />
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="250" />
+        <location filename="../app/ExperimentsPanel.cpp" line="252" />
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="256" />
+        <location filename="../app/ExperimentsPanel.cpp" line="258" />
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="262" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="290" />
+        <location filename="../app/ExperimentsPanel.cpp" line="293" />
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="291" />
+        <location filename="../app/ExperimentsPanel.cpp" line="294" />
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="365" />
+        <location filename="../app/ExperimentsPanel.cpp" line="368" />
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="378" />
+        <location filename="../app/ExperimentsPanel.cpp" line="381" />
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="387" />
-        <location filename="../app/ExperimentsPanel.cpp" line="399" />
+        <location filename="../app/ExperimentsPanel.cpp" line="390" />
+        <location filename="../app/ExperimentsPanel.cpp" line="402" />
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="388" />
+        <location filename="../app/ExperimentsPanel.cpp" line="391" />
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="404" />
-        <location filename="../app/ExperimentsPanel.cpp" line="414" />
+        <location filename="../app/ExperimentsPanel.cpp" line="407" />
+        <location filename="../app/ExperimentsPanel.cpp" line="417" />
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="405" />
+        <location filename="../app/ExperimentsPanel.cpp" line="408" />
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="426" />
+        <location filename="../app/ExperimentsPanel.cpp" line="429" />
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="427" />
+        <location filename="../app/ExperimentsPanel.cpp" line="430" />
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429" />
+        <location filename="../app/ExperimentsPanel.cpp" line="432" />
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429" />
+        <location filename="../app/ExperimentsPanel.cpp" line="432" />
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430" />
+        <location filename="../app/ExperimentsPanel.cpp" line="433" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="431" />
+        <location filename="../app/ExperimentsPanel.cpp" line="434" />
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432" />
+        <location filename="../app/ExperimentsPanel.cpp" line="435" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="433" />
+        <location filename="../app/ExperimentsPanel.cpp" line="436" />
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="435" />
+        <location filename="../app/ExperimentsPanel.cpp" line="438" />
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436" />
+        <location filename="../app/ExperimentsPanel.cpp" line="439" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="437" />
+        <location filename="../app/ExperimentsPanel.cpp" line="440" />
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="438" />
+        <location filename="../app/ExperimentsPanel.cpp" line="441" />
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -313,77 +368,102 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="39" />
+        <location filename="../app/LabSession.cpp" line="40" />
         <source>'%1' must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="53" />
+        <location filename="../app/LabSession.cpp" line="54" />
         <source>'%1' must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="67" />
+        <location filename="../app/LabSession.cpp" line="68" />
         <source>'%1' must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="73" />
+        <location filename="../app/LabSession.cpp" line="74" />
         <source>'%1' entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="107" />
+        <location filename="../app/LabSession.cpp" line="104" />
+        <source>'%1' must have %2 lists of scales</source>
+        <translation>「%1」必須有 %2 組比例</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="110" />
+        <source>'%1' list %2 must have %3 scales</source>
+        <translation>「%1」第 %2 組必須有 %3 個比例</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="118" />
+        <source>'%1' list %2 entry %3 must be a number</source>
+        <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="156" />
         <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="195" />
+        <location filename="../app/LabSession.cpp" line="250" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="205" />
+        <location filename="../app/LabSession.cpp" line="260" />
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="211" />
+        <location filename="../app/LabSession.cpp" line="266" />
         <source>not a PRISCA Lab session (no "format": "prisca-session")</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 "format": "prisca-session"）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="214" />
+        <location filename="../app/LabSession.cpp" line="269" />
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="219" />
+        <location filename="../app/LabSession.cpp" line="274" />
         <source>'plant' must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="226" />
+        <location filename="../app/LabSession.cpp" line="281" />
         <source>'mapping': %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="230" />
+        <location filename="../app/LabSession.cpp" line="285" />
         <source>'mapping' must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="240" />
+        <location filename="../app/LabSession.cpp" line="295" />
         <source>'method' must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="281" />
+        <location filename="../app/LabSession.cpp" line="336" />
+        <source>'limits.%1' must be a list of %2 numbers</source>
+        <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="350" />
+        <source>'limits' of %1 must have lower &lt; upper within [%2, %3]</source>
+        <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="374" />
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="285" />
+        <location filename="../app/LabSession.cpp" line="378" />
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
@@ -399,109 +479,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="330" />
+        <location filename="../app/LiveChartsPanel.cpp" line="346" />
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="337" />
-        <location filename="../app/LiveChartsPanel.cpp" line="341" />
+        <location filename="../app/LiveChartsPanel.cpp" line="353" />
+        <location filename="../app/LiveChartsPanel.cpp" line="357" />
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="338" />
+        <location filename="../app/LiveChartsPanel.cpp" line="354" />
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="346" />
-        <location filename="../app/LiveChartsPanel.cpp" line="350" />
+        <location filename="../app/LiveChartsPanel.cpp" line="362" />
+        <location filename="../app/LiveChartsPanel.cpp" line="366" />
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="347" />
+        <location filename="../app/LiveChartsPanel.cpp" line="363" />
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="363" />
+        <location filename="../app/LiveChartsPanel.cpp" line="379" />
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="364" />
+        <location filename="../app/LiveChartsPanel.cpp" line="380" />
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="365" />
+        <location filename="../app/LiveChartsPanel.cpp" line="381" />
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="366" />
+        <location filename="../app/LiveChartsPanel.cpp" line="382" />
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="367" />
+        <location filename="../app/LiveChartsPanel.cpp" line="383" />
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="370" />
+        <location filename="../app/LiveChartsPanel.cpp" line="386" />
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="370" />
+        <location filename="../app/LiveChartsPanel.cpp" line="386" />
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="372" />
+        <location filename="../app/LiveChartsPanel.cpp" line="388" />
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="374" />
+        <location filename="../app/LiveChartsPanel.cpp" line="390" />
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="375" />
+        <location filename="../app/LiveChartsPanel.cpp" line="391" />
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="376" />
+        <location filename="../app/LiveChartsPanel.cpp" line="392" />
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="377" />
+        <location filename="../app/LiveChartsPanel.cpp" line="393" />
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="378" />
+        <location filename="../app/LiveChartsPanel.cpp" line="394" />
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="379" />
+        <location filename="../app/LiveChartsPanel.cpp" line="395" />
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="380" />
+        <location filename="../app/LiveChartsPanel.cpp" line="396" />
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="381" />
+        <location filename="../app/LiveChartsPanel.cpp" line="397" />
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -510,13 +590,13 @@
     <name>prisca::app::MainWindow</name>
     <message>
         <location filename="../app/MainWindow.cpp" line="88" />
-        <location filename="../app/MainWindow.cpp" line="288" />
+        <location filename="../app/MainWindow.cpp" line="287" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="159" />
-        <location filename="../app/MainWindow.cpp" line="221" />
+        <location filename="../app/MainWindow.cpp" line="220" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
@@ -527,7 +607,7 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="171" />
-        <location filename="../app/MainWindow.cpp" line="234" />
+        <location filename="../app/MainWindow.cpp" line="233" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
@@ -537,7 +617,7 @@
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="222" />
+        <location filename="../app/MainWindow.cpp" line="221" />
         <source>The session could not be opened.
 
 %1</source>
@@ -546,132 +626,132 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="227" />
+        <location filename="../app/MainWindow.cpp" line="226" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="239" />
+        <location filename="../app/MainWindow.cpp" line="238" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="275" />
+        <location filename="../app/MainWindow.cpp" line="274" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="276" />
+        <location filename="../app/MainWindow.cpp" line="275" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="277" />
+        <location filename="../app/MainWindow.cpp" line="276" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="278" />
+        <location filename="../app/MainWindow.cpp" line="277" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="279" />
+        <location filename="../app/MainWindow.cpp" line="278" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="280" />
+        <location filename="../app/MainWindow.cpp" line="279" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="281" />
+        <location filename="../app/MainWindow.cpp" line="280" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="282" />
+        <location filename="../app/MainWindow.cpp" line="281" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="283" />
+        <location filename="../app/MainWindow.cpp" line="282" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="283" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="285" />
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="285" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="287" />
+        <location filename="../app/MainWindow.cpp" line="286" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="289" />
+        <location filename="../app/MainWindow.cpp" line="288" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="289" />
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291" />
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292" />
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293" />
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="295" />
+        <location filename="../app/MainWindow.cpp" line="294" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="309" />
+        <location filename="../app/MainWindow.cpp" line="308" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="321" />
+        <location filename="../app/MainWindow.cpp" line="320" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="323" />
+        <location filename="../app/MainWindow.cpp" line="322" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="327" />
+        <location filename="../app/MainWindow.cpp" line="326" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="330" />
+        <location filename="../app/MainWindow.cpp" line="329" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>

@@ -370,6 +370,36 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.find<QComboBox>("target")->currentData().toString(), QStringLiteral("aircraft"));
     }
 
+    void controller_featureScalesAndLimitsAreCheckedAppliedAndSaved() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("limits.json");
+        {
+            Window w;
+            auto* features = w.find<QTableWidget>("featureScales");
+            auto* limits = w.find<QTableWidget>("actionLimits");
+            auto* problem = w.find<QLabel>("controllerProblem");
+            const double before = w.window.session().profile().features.terms()[1][0].scale;
+            features->item(1, 0)->setText(QStringLiteral("lots"));
+            QVERIFY2(problem->text().contains("steering"), qPrintable(problem->text()));
+            QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, before);
+            features->item(1, 0)->setText(QStringLiteral("2.5"));
+            QVERIFY(problem->text().isEmpty());
+            QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, 2.5);
+            // Beyond what the car can do: refused with the range named.
+            limits->item(1, 1)->setText(QStringLiteral("3"));
+            QVERIFY2(problem->text().contains("[-1, 1]"), qPrintable(problem->text()));
+            QCOMPARE(w.window.session().profile().info.actionUpper[1], 1.0);
+            limits->item(1, 1)->setText(QStringLiteral("0.6"));
+            QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
+            QVERIFY(w.window.saveSession(path));
+        }
+        Window w;
+        QVERIFY(w.window.openSession(path));
+        QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, 2.5);
+        QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
+        QCOMPARE(w.find<QTableWidget>("actionLimits")->item(1, 1)->text(), QStringLiteral("0.6"));
+    }
+
     void badFiles_getAClearMessageAndChangeNothing() {
         QTemporaryDir dir;
         Window w;
