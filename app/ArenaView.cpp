@@ -73,6 +73,7 @@ void ArenaView::clearTrails() {
     lastTrail_.clear();
     skidMarks_.clear();
     trial_ = -1;
+    wind_.reset();
     update();
 }
 
@@ -101,6 +102,7 @@ void ArenaView::addSamples(const QVector<LiveSample>& samples) {
         }
         state_ = s;
         action_ = sample.action;
+        wind_ = sample.wind;
         referenceIndex_ = sample.referenceIndex;
     }
     if (!samples.isEmpty()) {
@@ -168,6 +170,9 @@ void ArenaView::paintEvent(QPaintEvent*) {
         drawPlanar(painter);
     } else if (!info_.name.isEmpty()) {
         drawAcrobot(painter);
+    }
+    if (wind_) {
+        drawWind(painter);
     }
     // Legend.
     painter.setPen(cosmetic(kDesiredColour, 2.5));
@@ -370,6 +375,30 @@ void ArenaView::drawAcrobot(QPainter& painter) const {
     // The ground line below the pivot.
     painter.setPen(cosmetic(QColor(0x80, 0x80, 0x80), 2));
     painter.drawLine(toScreen({-2.2, -2.15}), toScreen({2.2, -2.15}));
+}
+
+void ArenaView::drawWind(QPainter& painter) const {
+    // A compass-style arrow: where the air is going, and how fast.
+    const QPointF centre(60.0, 110.0);  // under the legend, clear of the grid labels
+    const double speed = wind_->norm();
+    painter.setPen(cosmetic(QColor(0x90, 0x90, 0x90), 1));
+    painter.setBrush(QColor(255, 255, 255, 200));
+    painter.drawEllipse(centre, 40, 40);
+    if (speed > 1e-3) {
+        // Screen y points down: flip the world's y.
+        const QPointF direction(wind_->x() / speed, -wind_->y() / speed);
+        const QPointF tip = centre + 30.0 * direction;
+        const QPointF tail = centre - 30.0 * direction;
+        const QPointF normal(-direction.y(), direction.x());
+        painter.setPen(cosmetic(QColor(0x1f, 0x77, 0xb4), 3));
+        painter.drawLine(tail, tip);
+        painter.setBrush(QColor(0x1f, 0x77, 0xb4));
+        painter.drawPolygon(QPolygonF{tip, tip - 10.0 * direction + 6.0 * normal,
+                                      tip - 10.0 * direction - 6.0 * normal});
+    }
+    painter.setPen(palette().color(QPalette::Text));
+    painter.drawText(QRectF(centre.x() - 60, centre.y() + 42, 120, 18), Qt::AlignCenter,
+                     tr("wind %1 m/s").arg(speed, 0, 'f', 1));
 }
 
 void ArenaView::wheelEvent(QWheelEvent* event) {

@@ -8,6 +8,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 
 namespace prisca::app {
 
@@ -57,6 +58,7 @@ class ArenaView : public QWidget {
     void drawCar(QPainter& painter, const Eigen::VectorXd& state, double steering) const;
     void drawAircraft(QPainter& painter, const Eigen::VectorXd& state) const;
     void drawAcrobot(QPainter& painter) const;
+    void drawWind(QPainter& painter) const;
     QPointF acrobotTip(double theta1, double theta2, QPointF* elbow) const;
 
     sim::PlantInfo info_;
@@ -67,6 +69,7 @@ class ArenaView : public QWidget {
     QVector<QPointF> skidMarks_;  ///< rear-axle points where the car slid (this trial)
     Eigen::VectorXd state_;
     Eigen::VectorXd action_;
+    std::optional<Eigen::Vector2d> wind_;  ///< last wind seen [m/s], world frame
     int referenceIndex_ = -1;
     int trial_ = -1;
     double scale_ = 100.0;  ///< pixels per metre

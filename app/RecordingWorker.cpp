@@ -98,6 +98,7 @@ void RecordingWorker::tick() {
         sample.state = state_;
         sample.action = input_;
         sample.referenceAction = input_;
+        sample.wind = plant_->windVelocity();
         samples_.push_back(std::move(sample));
         state_ = plant_->step(input_);
     }

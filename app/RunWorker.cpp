@@ -168,6 +168,7 @@ void RunWorker::tick() {
         sample.cost = record.cost;
         sample.trackedError = sim::trackedError(request_.profile.info, *request_.demonstration,
                                                 record.state, sample.step);
+        sample.wind = plant_->windVelocity();
         pending_.push_back(std::move(sample));
     }
     if (flushClock_.elapsed() >= kFlushMs) {

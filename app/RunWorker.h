@@ -13,6 +13,7 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 class QTimer;
 
@@ -53,6 +54,7 @@ struct LiveSample {
     int referenceIndex = 0;     ///< j_k
     double cost = 0.0;          ///< C_k
     double trackedError = 0.0;  ///< sim::trackedError: position [m] or joint angles [rad]
+    std::optional<Eigen::Vector2d> wind;  ///< wind over the ground [m/s] (flying plants)
 };
 
 /// What the worker is doing.

@@ -16,8 +16,8 @@ namespace prisca::sim {
 /// forward, y left, yaw counter-clockwise, rudder positive = nose left); their magnitudes are the
 /// usual published ones: a light general-aviation aircraft has about CY_beta -0.56,
 /// Cn_beta 0.071, Cn_r -0.125, |Cn_delta_r| 0.072, and a small survey UAV about CY_beta -0.98,
-/// Cn_beta 0.25, Cn_r -0.35. Against NED body axes with the usual rudder sign (trailing edge left positive) the
-/// rudder derivatives flip sign; the beta and r ones do not.
+/// Cn_beta 0.25, Cn_r -0.35. Against NED body axes with the usual rudder sign (trailing edge left
+/// positive) the rudder derivatives flip sign; the beta and r ones do not.
 struct PlanarAircraftParameters {
     double mass = 2.0;              ///< [kg]
     double yawInertia = 0.15;       ///< about the vertical axis through the centre of mass [kg m^2]
@@ -111,6 +111,7 @@ class PlanarAircraft : public Plant {
 
     /// The air's velocity over the ground now [m/s], world frame (zero without wind).
     Eigen::Vector2d wind() const { return wind_.velocity(); }
+    std::optional<Eigen::Vector2d> windVelocity() const override { return wind(); }
     /// The wind field of the trial (steady part, gusts, statistics).
     const GustyWind& windField() const { return wind_; }
     /// Replaces the wind for the rest of the trial (tests, scenario set-ups); the state is kept.

@@ -79,6 +79,9 @@ class Plant {
     virtual double time() const = 0;
     /// True once the plant is at rest (vehicles: speed and yaw rate below small thresholds).
     virtual bool atRest() const { return false; }
+    /// The air's velocity over the ground now [m/s], world frame, for plants that fly in wind
+    /// (for display; the controller never sees it). Empty for the others.
+    virtual std::optional<Eigen::Vector2d> windVelocity() const { return std::nullopt; }
 };
 
 /// A well-mixed 64-bit seed for stream `stream` of trial seed `seed` (splitmix64), so that

@@ -4,24 +4,29 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="178" />
+        <location filename="../app/ArenaView.cpp" line="183" />
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="179" />
+        <location filename="../app/ArenaView.cpp" line="184" />
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="196" />
+        <location filename="../app/ArenaView.cpp" line="201" />
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="197" />
+        <location filename="../app/ArenaView.cpp" line="202" />
         <source>%1 m</source>
         <translation>%1 米</translation>
+    </message>
+    <message>
+        <location filename="../app/ArenaView.cpp" line="401" />
+        <source>wind %1 m/s</source>
+        <translation>風速 %1 米/秒</translation>
     </message>
 </context>
 <context>
@@ -62,118 +67,118 @@
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="206" />
+        <location filename="../app/ControllerPanel.cpp" line="209" />
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="219" />
+        <location filename="../app/ControllerPanel.cpp" line="223" />
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="261" />
+        <location filename="../app/ControllerPanel.cpp" line="265" />
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="262" />
+        <location filename="../app/ControllerPanel.cpp" line="266" />
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
         <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="264" />
+        <location filename="../app/ControllerPanel.cpp" line="268" />
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="265" />
+        <location filename="../app/ControllerPanel.cpp" line="269" />
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="266" />
+        <location filename="../app/ControllerPanel.cpp" line="270" />
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="267" />
+        <location filename="../app/ControllerPanel.cpp" line="271" />
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="268" />
+        <location filename="../app/ControllerPanel.cpp" line="272" />
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="269" />
+        <location filename="../app/ControllerPanel.cpp" line="273" />
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="270" />
+        <location filename="../app/ControllerPanel.cpp" line="274" />
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="271" />
+        <location filename="../app/ControllerPanel.cpp" line="275" />
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="273" />
+        <location filename="../app/ControllerPanel.cpp" line="277" />
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="274" />
+        <location filename="../app/ControllerPanel.cpp" line="278" />
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="276" />
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="277" />
+        <location filename="../app/ControllerPanel.cpp" line="281" />
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="279" />
+        <location filename="../app/ControllerPanel.cpp" line="283" />
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="279" />
+        <location filename="../app/ControllerPanel.cpp" line="283" />
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280" />
+        <location filename="../app/ControllerPanel.cpp" line="284" />
         <source>Restore the plant's tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="281" />
+        <location filename="../app/ControllerPanel.cpp" line="285" />
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="282" />
+        <location filename="../app/ControllerPanel.cpp" line="286" />
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="283" />
-        <location filename="../app/ControllerPanel.cpp" line="284" />
+        <location filename="../app/ControllerPanel.cpp" line="287" />
+        <location filename="../app/ControllerPanel.cpp" line="288" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="285" />
+        <location filename="../app/ControllerPanel.cpp" line="289" />
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -968,7 +973,7 @@
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="121" />
+        <location filename="../app/RecordingWorker.cpp" line="122" />
         <source>Writing the recording to %1 failed: %2</source>
         <translation>把錄製寫入 %1 失敗：%2</translation>
     </message>
@@ -1146,17 +1151,17 @@
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="190" />
+        <location filename="../app/RunWorker.cpp" line="191" />
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="230" />
+        <location filename="../app/RunWorker.cpp" line="231" />
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="240" />
+        <location filename="../app/RunWorker.cpp" line="241" />
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>

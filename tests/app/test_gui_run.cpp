@@ -290,6 +290,32 @@ class TestGuiRun : public QObject {
         QCOMPARE(QImage(png).size(), QSize(900, 900));
     }
 
+    void run_aircraftSamplesCarryTheWindTheCarsDoNot() {
+        Window w;
+        w.setSpeedIndex(2);
+        w.find<QSpinBox>("trials")->setValue(1);
+        QVector<LiveSample> seen;
+        connect(&w.window.run(), &RunController::samplesReady, this,
+                [&](const QVector<LiveSample>& s) { seen += s; });
+        QSignalSpy finished(&w.window.run(), &RunController::runFinished);
+        w.find<QAbstractButton>("runButton")->click();
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(!seen.isEmpty());
+        QVERIFY(!seen.back().wind.has_value());
+
+        w.find<QComboBox>("target")->setCurrentIndex(2);
+        emit w.find<QComboBox>("target")->activated(2);
+        QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));
+        seen.clear();
+        w.find<QAbstractButton>("runButton")->click();
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(seen.size() > 100);
+        QVERIFY(seen.back().wind.has_value());
+        // The trial's wind is a steady part plus gusts: not zero, not the same at every step.
+        QVERIFY(seen.back().wind->norm() > 0.0);
+        QVERIFY(*seen.back().wind != *seen[seen.size() / 2].wind);
+    }
+
     void emergencyStop_spaceStopsWithinOneControlPeriodAndLatches() {
         Window w;
         w.setSpeedIndex(2);  // as fast as possible: the hardest case for stopping promptly
