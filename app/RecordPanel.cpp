@@ -1,5 +1,6 @@
 #include "app/RecordPanel.h"
 
+#include "app/GamepadInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
 
@@ -56,7 +57,9 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
     : QWidget(parent),
       session_(session),
       worker_(new RecordingWorker),
+      gamepad_(std::make_unique<GamepadInput>()),
       keys_(new QLabel(this)),
+      gamepadLabel_(new QLabel(this)),
       countdownLabel_(new QLabel(this)),
       countdown_(new QSpinBox(this)),
       record_(new QPushButton(this)),
@@ -88,6 +91,7 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
     after->addWidget(discard_);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(keys_);
+    layout->addWidget(gamepadLabel_);
     layout->addLayout(form);
     layout->addLayout(buttons);
     layout->addLayout(after);
@@ -196,6 +200,18 @@ void RecordPanel::tick() {
         } else {
             u = std::min(0.0, u + kRampDown * dt);
         }
+    }
+    // A gamepad's sticks, where pushed, drive their channel directly (proportional).
+    if (const std::optional<Eigen::Vector2d> pad = gamepad_->poll()) {
+        for (int channel = 0; channel < std::min<int>(2, static_cast<int>(input_.size()));
+             ++channel) {
+            if ((*pad)[channel] != 0.0) {
+                input_[channel] = (*pad)[channel];
+            }
+        }
+    }
+    if (gamepad_->available() != padShown_) {
+        retranslateUi();  // plugged in or pulled out mid-recording
     }
     // Inputs are in [-1, 1] per channel; the plant's own limits scale them.
     const sim::PlantInfo& info = session_.profile().info;
@@ -323,6 +339,11 @@ void RecordPanel::retranslateUi() {
     keys_->setText(tr("Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is "
                       "E-STOP.")
                        .arg(names.value(0), names.value(1)));
+    padShown_ = gamepad_->available();
+    gamepadLabel_->setText(
+        gamepad_->available()
+            ? tr("Gamepad: %1 (left stick forward, right stick sideways)").arg(gamepad_->name())
+            : tr("No gamepad found: the keyboard drives."));
     countdownLabel_->setText(tr("Countdown:"));
     countdown_->setSuffix(tr(" s"));
     record_->setText(tr("Record"));

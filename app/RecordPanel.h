@@ -5,6 +5,7 @@
 #include <QThread>
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 class QLabel;
@@ -13,14 +14,20 @@ class QSpinBox;
 class QTimer;
 
 namespace prisca::app {
+class GamepadInput;
+}
+
+namespace prisca::app {
 
 class LabSession;
 
 /// Record a demonstration by driving the simulated plant with the keyboard: arrows or WASD,
 /// with a proportional ramp (holding a key pushes the input towards full at 2 per second;
-/// releasing it returns to neutral at 3 per second). A countdown first, then Stop; the recording
-/// becomes the session's demonstration at once and can be saved or discarded. It streams to a
-/// file as it goes (flushed every second), so a crash loses at most a second of driving.
+/// releasing it returns to neutral at 3 per second), or with a gamepad's sticks when one is
+/// plugged in (left stick forward: first control; right stick sideways: second). A countdown first,
+/// then Stop; the recording becomes the session's demonstration at once and can be saved or
+/// discarded. It streams to a file as it goes (flushed every second), so a crash loses at most a
+/// second of driving.
 class RecordPanel : public QWidget {
     Q_OBJECT
   public:
@@ -61,7 +68,9 @@ class RecordPanel : public QWidget {
     LabSession& session_;
     QThread thread_;
     RecordingWorker* worker_;
+    std::unique_ptr<GamepadInput> gamepad_;
     QLabel* keys_;
+    QLabel* gamepadLabel_;
     QLabel* countdownLabel_;
     QSpinBox* countdown_;
     QPushButton* record_;
@@ -72,6 +81,7 @@ class RecordPanel : public QWidget {
     QTimer* timer_;
     int countdownLeft_ = 0;  ///< ticks until recording starts; 0 when not counting down
     bool recording_ = false;
+    bool padShown_ = false;                            ///< the label says a pad is there
     bool keysHeld_[4] = {false, false, false, false};  ///< up, down, left, right
     Eigen::VectorXd input_;
     QString streamPath_;

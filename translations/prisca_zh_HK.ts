@@ -873,94 +873,104 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="106" />
-        <location filename="../app/RecordPanel.cpp" line="328" />
+        <location filename="../app/RecordPanel.cpp" line="110" />
+        <location filename="../app/RecordPanel.cpp" line="349" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="169" />
+        <location filename="../app/RecordPanel.cpp" line="173" />
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="176" />
+        <location filename="../app/RecordPanel.cpp" line="180" />
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="231" />
+        <location filename="../app/RecordPanel.cpp" line="247" />
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260" />
+        <location filename="../app/RecordPanel.cpp" line="276" />
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="267" />
+        <location filename="../app/RecordPanel.cpp" line="283" />
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="276" />
-        <location filename="../app/RecordPanel.cpp" line="287" />
+        <location filename="../app/RecordPanel.cpp" line="292" />
+        <location filename="../app/RecordPanel.cpp" line="303" />
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="278" />
+        <location filename="../app/RecordPanel.cpp" line="294" />
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="290" />
+        <location filename="../app/RecordPanel.cpp" line="306" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="301" />
+        <location filename="../app/RecordPanel.cpp" line="317" />
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="323" />
+        <location filename="../app/RecordPanel.cpp" line="339" />
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="326" />
+        <location filename="../app/RecordPanel.cpp" line="344" />
+        <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
+        <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="346" />
+        <source>No gamepad found: the keyboard drives.</source>
+        <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="347" />
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="327" />
+        <location filename="../app/RecordPanel.cpp" line="348" />
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="329" />
+        <location filename="../app/RecordPanel.cpp" line="350" />
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="330" />
+        <location filename="../app/RecordPanel.cpp" line="351" />
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="331" />
+        <location filename="../app/RecordPanel.cpp" line="352" />
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="332" />
+        <location filename="../app/RecordPanel.cpp" line="353" />
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="333" />
+        <location filename="../app/RecordPanel.cpp" line="354" />
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
