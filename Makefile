@@ -27,7 +27,7 @@ test: build
 	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j $(JOBS) -LE benchmark
 
 bench: build
-	cd $(BUILD_DIR) && ctest --output-on-failure -L benchmark --verbose
+	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -L benchmark --verbose
 
 format:
 	find app core sim devices tests -name '*.h' -o -name '*.cpp' | xargs clang-format -i

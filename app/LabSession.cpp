@@ -20,7 +20,7 @@ namespace {
 
 constexpr int kSessionVersion = 1;
 
-QJsonArray toJson(const Eigen::VectorXd& v) {
+QJsonArray vectorToJson(const Eigen::VectorXd& v) {
     QJsonArray a;
     for (Eigen::Index i = 0; i < v.size(); ++i) {
         a.append(v[i]);
@@ -196,7 +196,7 @@ void LabSession::refit() {
                                   fitOptions_);
 }
 
-bool LabSession::save(const QString& path, QString* error) const {
+QByteArray LabSession::toJson() const {
     QJsonObject fit{
         {"latency", fitOptions_.latency},
         {"responseSteps", fitOptions_.responseSteps},
@@ -216,8 +216,8 @@ bool LabSession::save(const QString& path, QString* error) const {
     QJsonObject pgsd{{"horizon", profile_.pgsd.horizon},
                      {"stepSize", profile_.pgsd.stepSize},
                      {"thetaBound", profile_.pgsd.thetaBound}};
-    QJsonObject pd{{"kp", toJson(profile_.pd.kp)},
-                   {"kd", toJson(profile_.pd.kd)},
+    QJsonObject pd{{"kp", vectorToJson(profile_.pd.kp)},
+                   {"kd", vectorToJson(profile_.pd.kd)},
                    {"horizon", profile_.pdHorizon}};
     QJsonObject root{{"format", "prisca-session"},
                      {"version", kSessionVersion},
@@ -231,14 +231,17 @@ bool LabSession::save(const QString& path, QString* error) const {
                      {"pgsd", pgsd},
                      {"pd", pd},
                      {"featureScales", scalesToJson(profile_.features)},
-                     {"limits", QJsonObject{{"lower", toJson(profile_.info.actionLower)},
-                                            {"upper", toJson(profile_.info.actionUpper)}}}};
+                     {"limits", QJsonObject{{"lower", vectorToJson(profile_.info.actionLower)},
+                                            {"upper", vectorToJson(profile_.info.actionUpper)}}}};
     if (profile_.priscaFeatures) {
         root.insert("priscaFeatureScales", scalesToJson(*profile_.priscaFeatures));
     }
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool LabSession::save(const QString& path, QString* error) const {
     core::FileError fileError;
-    if (!core::writeFileAtomically(path, QJsonDocument(root).toJson(QJsonDocument::Indented),
-                                   &fileError)) {
+    if (!core::writeFileAtomically(path, toJson(), &fileError)) {
         *error = fileError.toString();
         return false;
     }
@@ -246,16 +249,21 @@ bool LabSession::save(const QString& path, QString* error) const {
 }
 
 bool LabSession::open(const QString& path, QString* error) {
-    const auto fail = [&](const QString& what) {
-        *error = tr("%1: %2").arg(path, what);
-        return false;
-    };
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        return fail(file.errorString());
+        *error = tr("%1: %2").arg(path, file.errorString());
+        return false;
     }
+    return fromJson(file.readAll(), path, error);
+}
+
+bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString* error) {
+    const auto fail = [&](const QString& what) {
+        *error = tr("%1: %2").arg(origin, what);
+        return false;
+    };
     QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         return fail(tr("not valid JSON at byte %1 (%2)")
                         .arg(parseError.offset)

@@ -56,6 +56,10 @@ class LabSession : public QObject {
     /// Opens a session saved by save(). On failure the session is unchanged, *error says what is
     /// wrong and where (file, key), and false is returned.
     bool open(const QString& path, QString* error);
+    /// The session as the JSON save() writes.
+    QByteArray toJson() const;
+    /// Restores a session from JSON as open() does; `source` names it in errors.
+    bool fromJson(const QByteArray& json, const QString& source, QString* error);
 
   signals:
     /// The plant changed (everything else changed with it).

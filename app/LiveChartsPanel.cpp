@@ -115,6 +115,7 @@ LiveChartsPanel::LiveChartsPanel(QWidget* parent)
     redrawTimer_->setSingleShot(true);
     redrawTimer_->setInterval(kRedrawMs);
     connect(redrawTimer_, &QTimer::timeout, this, &LiveChartsPanel::redraw);
+    connect(tabs_, &QTabWidget::currentChanged, this, &LiveChartsPanel::redraw);
     connect(freeze_, &QCheckBox::toggled, this, [this](bool frozen) {
         if (!frozen) {
             scheduleRedraw();
@@ -242,26 +243,15 @@ void LiveChartsPanel::redraw() {
     if (freeze_->isChecked()) {
         return;
     }
-    errorSeries_->replace(decimateMinMax(error_, kBuckets));
-    smoothSeries_->replace(decimateMinMax(smooth_, kBuckets));
-    for (int i = 0; i < thetaSeries_.size(); ++i) {
-        thetaSeries_[i]->replace(decimateMinMax(theta_[i], kBuckets));
-    }
-    for (int l = 0; l < actionSeries_.size(); ++l) {
-        actionSeries_[l]->replace(decimateMinMax(action_[l], kBuckets));
-        referenceSeries_[l]->replace(decimateMinMax(reference_[l], kBuckets));
-    }
-    if (!zoomed_) {
-        fitAxes();
-    }
-}
-
-void LiveChartsPanel::fitAxes() {
+    // Only the chart on show is redrawn; the others catch up when their tab is chosen (or for
+    // export). The decimated series keep every extreme, so the axes are fitted from them.
     fitting_ = true;
-    const auto fit = [](QChart* chart, const QVector<const QVector<QPointF>*>& data) {
+    const auto update = [this](QChart* chart, const QVector<QLineSeries*>& series,
+                               const QVector<const QVector<QPointF>*>& data) {
         double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-        for (const QVector<QPointF>* d : data) {
-            for (const QPointF& p : *d) {
+        for (int i = 0; i < series.size(); ++i) {
+            const QVector<QPointF> points = decimateMinMax(*data[i], kBuckets);
+            for (const QPointF& p : points) {
                 x0 = std::min(x0, p.x());
                 x1 = std::max(x1, p.x());
                 if (std::isfinite(p.y())) {
@@ -269,23 +259,36 @@ void LiveChartsPanel::fitAxes() {
                     y1 = std::max(y1, p.y());
                 }
             }
+            series[i]->replace(points);
         }
-        if (std::isfinite(x0) && std::isfinite(y0)) {
-            setRange(chart, x0, x1, y0, y1);
-        } else {
-            setRange(chart, 0, 10, 0, 1);
+        if (!zoomed_) {
+            if (std::isfinite(x0) && std::isfinite(y0)) {
+                setRange(chart, x0, x1, y0, y1);
+            } else {
+                setRange(chart, 0, 10, 0, 1);
+            }
         }
     };
-    fit(errorChart_, {&error_});
-    QVector<const QVector<QPointF>*> theta, action;
-    for (const auto& d : theta_)
-        theta.push_back(&d);
-    for (const auto& d : action_)
-        action.push_back(&d);
-    for (const auto& d : reference_)
-        action.push_back(&d);
-    fit(thetaChart_, theta);
-    fit(actionChart_, action);
+    const int tab = tabs_->currentIndex();
+    if (tab == 0 || forceAll_) {
+        update(errorChart_, {errorSeries_, smoothSeries_}, {&error_, &smooth_});
+    }
+    if (tab == 1 || forceAll_) {
+        QVector<const QVector<QPointF>*> data;
+        for (const auto& d : theta_) {
+            data.push_back(&d);
+        }
+        update(thetaChart_, thetaSeries_, data);
+    }
+    if (tab == 2 || forceAll_) {
+        QVector<QLineSeries*> series;
+        QVector<const QVector<QPointF>*> data;
+        for (int l = 0; l < actionSeries_.size(); ++l) {
+            series << actionSeries_[l] << referenceSeries_[l];
+            data << &action_[l] << &reference_[l];
+        }
+        update(actionChart_, series, data);
+    }
     fitting_ = false;
 }
 
@@ -328,7 +331,9 @@ bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
 }
 
 bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
+    forceAll_ = true;
     redraw();
+    forceAll_ = false;
     const QSize size(900, 300);
     QImage image(size.width(), size.height() * 3, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);

@@ -35,6 +35,8 @@ class LiveChartsPanel : public QWidget {
     /// Buffers samples; the charts follow within one redraw period.
     void addSamples(const QVector<LiveSample>& samples);
 
+    /// Redraws the charts from the buffers now (what the 40 ms timer does; for benchmarks).
+    void redraw();
     /// Points buffered for the tracking-error series (tests).
     int bufferedPoints() const { return static_cast<int>(error_.size()); }
     /// Points the tracking-error chart shows after decimation (tests).
@@ -51,8 +53,6 @@ class LiveChartsPanel : public QWidget {
 
   private:
     void scheduleRedraw();
-    void redraw();
-    void fitAxes();
     void retranslateUi();
     void askExportCsv();
     void askExportPng();
@@ -81,7 +81,8 @@ class LiveChartsPanel : public QWidget {
     QVector<QVector<QPointF>> theta_, action_, reference_;
     double smoothed_ = 0.0;
     bool zoomed_ = false;
-    bool fitting_ = false;  ///< fitAxes() is moving the axes (not the operator)
+    bool fitting_ = false;   ///< redraw() is moving the axes (not the operator)
+    bool forceAll_ = false;  ///< redraw every chart, not only the one on show (export)
 };
 
 }  // namespace prisca::app

@@ -37,6 +37,7 @@ const QSize kDefaultSize(1280, 800);  // px, used until the operator has sized t
 constexpr int kStatusMessageMs = 4000;
 constexpr int kMaxRecent = 8;
 const char* const kRecentKey = "session/recent";
+const char* const kLastSessionKey = "session/last";  // the session as it was at the last close
 
 QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel,
                   Qt::DockWidgetArea area) {
@@ -77,6 +78,13 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
         plant = QStringLiteral("slidecar");
     }
     session_->setPlant(plant);
+    // The session as the operator left it (kept in the settings on close); a stale or damaged
+    // copy is ignored, never an obstacle to starting.
+    const QByteArray last = settings.value(QLatin1String(kLastSessionKey)).toByteArray();
+    if (!last.isEmpty()) {
+        QString ignored;
+        session_->fromJson(last, tr("the last session"), &ignored);
+    }
 
     createPanels();
     createMenus();
@@ -297,6 +305,7 @@ void MainWindow::retranslateUi() {
 void MainWindow::closeEvent(QCloseEvent* event) {
     run_->stop();
     QSettings settings;
+    settings.setValue(QLatin1String(kLastSessionKey), session_->toJson());
     settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
     settings.setValue(QLatin1String(kStateKey), saveState());
     QMainWindow::closeEvent(event);

@@ -42,6 +42,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
       runButton_(new QPushButton(this)),
       pauseButton_(new QPushButton(this)),
       stopButton_(new QPushButton(this)),
+      resetButton_(new QPushButton(this)),
       emergencyButton_(new QPushButton(this)),
       resetEmergencyButton_(new QPushButton(this)),
       status_(new QLabel(this)),
@@ -67,6 +68,8 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     runButton_->setShortcut(QKeySequence(Qt::Key_F5));
     pauseButton_->setShortcut(QKeySequence(Qt::Key_F6));
     stopButton_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    resetButton_->setObjectName(QStringLiteral("resetButton"));
+    resetButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
     emergencyButton_->setMinimumHeight(64);
     emergencyButton_->setStyleSheet(QStringLiteral(
@@ -93,6 +96,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     buttons->addWidget(runButton_);
     buttons->addWidget(pauseButton_);
     buttons->addWidget(stopButton_);
+    buttons->addWidget(resetButton_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addLayout(buttons);
@@ -121,6 +125,13 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         }
     });
     connect(stopButton_, &QPushButton::clicked, &run_, &RunController::stop);
+    // Reset: stop whatever runs and start the views afresh (the next run starts cold anyway).
+    connect(resetButton_, &QPushButton::clicked, this, [this] {
+        run_.stop();
+        results_->setRowCount(0);
+        status_->clear();
+        emit runStarting();
+    });
     const auto emergency = [this] {
         run_.emergencyStop();
         emit emergencyStopRequested();
@@ -236,6 +247,8 @@ void RunPanel::retranslateUi() {
     runButton_->setText(tr("Run (F5)"));
     pauseButton_->setText(phase_ == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
     stopButton_->setText(tr("Stop (Shift+F5)"));
+    resetButton_->setText(tr("Reset"));
+    resetButton_->setToolTip(tr("Stop the run and clear the trails, charts and results (Ctrl+R)"));
     emergencyButton_->setText(tr("E-STOP (Space / Esc)"));
     emergencyButton_->setToolTip(
         tr("Stops the run at once, within one control period, and stays engaged until reset."));

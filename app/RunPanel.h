@@ -30,7 +30,7 @@ class RunPanel : public QWidget {
     static QList<double> speeds() { return {1.0, 10.0, 0.0}; }
 
   signals:
-    /// A run is about to start: views clear their trails and charts.
+    /// A run is about to start, or Reset was pressed: views clear their trails and charts.
     void runStarting();
     /// The operator pressed E-STOP (button, Space or Esc); sent at once, before the run reacts.
     void emergencyStopRequested();
@@ -59,6 +59,7 @@ class RunPanel : public QWidget {
     QPushButton* runButton_;
     QPushButton* pauseButton_;
     QPushButton* stopButton_;
+    QPushButton* resetButton_;
     QPushButton* emergencyButton_;
     QPushButton* resetEmergencyButton_;
     QLabel* status_;

@@ -413,62 +413,63 @@
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="250" />
+        <location filename="../app/LabSession.cpp" line="254" />
+        <location filename="../app/LabSession.cpp" line="262" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="260" />
+        <location filename="../app/LabSession.cpp" line="268" />
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="266" />
+        <location filename="../app/LabSession.cpp" line="274" />
         <source>not a PRISCA Lab session (no "format": "prisca-session")</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 "format": "prisca-session"）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="269" />
+        <location filename="../app/LabSession.cpp" line="277" />
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="274" />
+        <location filename="../app/LabSession.cpp" line="282" />
         <source>'plant' must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="281" />
+        <location filename="../app/LabSession.cpp" line="289" />
         <source>'mapping': %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="285" />
+        <location filename="../app/LabSession.cpp" line="293" />
         <source>'mapping' must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="295" />
+        <location filename="../app/LabSession.cpp" line="303" />
         <source>'method' must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="336" />
+        <location filename="../app/LabSession.cpp" line="344" />
         <source>'limits.%1' must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="350" />
+        <location filename="../app/LabSession.cpp" line="358" />
         <source>'limits' of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="374" />
+        <location filename="../app/LabSession.cpp" line="382" />
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="378" />
+        <location filename="../app/LabSession.cpp" line="386" />
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
@@ -594,35 +595,40 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="88" />
-        <location filename="../app/MainWindow.cpp" line="287" />
+        <location filename="../app/MainWindow.cpp" line="86" />
+        <source>the last session</source>
+        <translation>上次的工作階段</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="96" />
+        <location filename="../app/MainWindow.cpp" line="295" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="159" />
-        <location filename="../app/MainWindow.cpp" line="220" />
+        <location filename="../app/MainWindow.cpp" line="167" />
+        <location filename="../app/MainWindow.cpp" line="228" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="160" />
+        <location filename="../app/MainWindow.cpp" line="168" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="171" />
-        <location filename="../app/MainWindow.cpp" line="233" />
+        <location filename="../app/MainWindow.cpp" line="179" />
+        <location filename="../app/MainWindow.cpp" line="241" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="172" />
+        <location filename="../app/MainWindow.cpp" line="180" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="221" />
+        <location filename="../app/MainWindow.cpp" line="229" />
         <source>The session could not be opened.
 
 %1</source>
@@ -631,132 +637,132 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="226" />
+        <location filename="../app/MainWindow.cpp" line="234" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="238" />
+        <location filename="../app/MainWindow.cpp" line="246" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="274" />
+        <location filename="../app/MainWindow.cpp" line="282" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="275" />
+        <location filename="../app/MainWindow.cpp" line="283" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="276" />
+        <location filename="../app/MainWindow.cpp" line="284" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="277" />
+        <location filename="../app/MainWindow.cpp" line="285" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="278" />
+        <location filename="../app/MainWindow.cpp" line="286" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="279" />
+        <location filename="../app/MainWindow.cpp" line="287" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="280" />
+        <location filename="../app/MainWindow.cpp" line="288" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="281" />
+        <location filename="../app/MainWindow.cpp" line="289" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="282" />
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="283" />
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="285" />
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="294" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="288" />
+        <location filename="../app/MainWindow.cpp" line="296" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="289" />
+        <location filename="../app/MainWindow.cpp" line="297" />
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="298" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291" />
+        <location filename="../app/MainWindow.cpp" line="299" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292" />
+        <location filename="../app/MainWindow.cpp" line="300" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294" />
+        <location filename="../app/MainWindow.cpp" line="302" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="308" />
+        <location filename="../app/MainWindow.cpp" line="317" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="320" />
+        <location filename="../app/MainWindow.cpp" line="329" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="322" />
+        <location filename="../app/MainWindow.cpp" line="331" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326" />
+        <location filename="../app/MainWindow.cpp" line="335" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="329" />
+        <location filename="../app/MainWindow.cpp" line="338" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -930,7 +936,7 @@
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="344" />
+        <location filename="../app/RecordPanel.cpp" line="345" />
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
@@ -991,154 +997,164 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184" />
-        <location filename="../app/RunPanel.cpp" line="237" />
+        <location filename="../app/RunPanel.cpp" line="195" />
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184" />
-        <location filename="../app/RunPanel.cpp" line="237" />
+        <location filename="../app/RunPanel.cpp" line="195" />
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="186" />
+        <location filename="../app/RunPanel.cpp" line="197" />
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="188" />
+        <location filename="../app/RunPanel.cpp" line="199" />
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="218" />
+        <location filename="../app/RunPanel.cpp" line="229" />
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="219" />
+        <location filename="../app/RunPanel.cpp" line="230" />
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="220" />
+        <location filename="../app/RunPanel.cpp" line="231" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="222" />
+        <location filename="../app/RunPanel.cpp" line="233" />
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="224" />
+        <location filename="../app/RunPanel.cpp" line="235" />
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="226" />
+        <location filename="../app/RunPanel.cpp" line="237" />
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="228" />
+        <location filename="../app/RunPanel.cpp" line="239" />
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="230" />
+        <location filename="../app/RunPanel.cpp" line="241" />
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="232" />
+        <location filename="../app/RunPanel.cpp" line="243" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233" />
+        <location filename="../app/RunPanel.cpp" line="244" />
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="234" />
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235" />
+        <location filename="../app/RunPanel.cpp" line="246" />
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="236" />
+        <location filename="../app/RunPanel.cpp" line="247" />
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="238" />
+        <location filename="../app/RunPanel.cpp" line="249" />
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="250" />
+        <source>Reset</source>
+        <translation>重設</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="251" />
+        <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
+        <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="252" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241" />
+        <location filename="../app/RunPanel.cpp" line="254" />
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="242" />
+        <location filename="../app/RunPanel.cpp" line="255" />
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245" />
+        <location filename="../app/RunPanel.cpp" line="258" />
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245" />
+        <location filename="../app/RunPanel.cpp" line="258" />
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245" />
+        <location filename="../app/RunPanel.cpp" line="258" />
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246" />
+        <location filename="../app/RunPanel.cpp" line="259" />
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246" />
+        <location filename="../app/RunPanel.cpp" line="259" />
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="248" />
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="248" />
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249" />
+        <location filename="../app/RunPanel.cpp" line="262" />
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249" />
+        <location filename="../app/RunPanel.cpp" line="262" />
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>

@@ -13,6 +13,7 @@
 #include "app/RunController.h"
 #include "app/TaskPanel.h"
 #include "core/DemonstrationCsv.h"
+#include "sim/PlantCatalog.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -424,6 +425,25 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, 2.5);
         QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
         QCOMPARE(w.find<QTableWidget>("actionLimits")->item(1, 1)->text(), QStringLiteral("0.6"));
+    }
+
+    void session_isRememberedBetweenRunsOfTheApplication() {
+        {
+            Window w;
+            w.find<QSpinBox>("horizon")->setValue(23);
+            QVERIFY(w.window.close());
+        }
+        Window w;
+        QCOMPARE(w.window.session().profile().prisca.horizon, 23);
+        QCOMPARE(w.find<QSpinBox>("horizon")->value(), 23);
+        // A damaged copy in the settings is ignored: the application still starts.
+        QSettings().setValue("session/last", QByteArray("{ not json"));
+        Window fresh;
+        QCOMPARE(fresh.window.session().plant(), QStringLiteral("slidecar"));
+        QCOMPARE(fresh.window.session().profile().prisca.horizon,
+                 prisca::sim::PlantProfile::forPlant(
+                     prisca::sim::PlantCatalog::describe(QStringLiteral("slidecar")))
+                     .prisca.horizon);
     }
 
     void badFiles_getAClearMessageAndChangeNothing() {
