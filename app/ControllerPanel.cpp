@@ -80,14 +80,11 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
         table->setMinimumHeight(60);
     }
 
-    form_->addRow(QString(), method_);
-    form_->addRow(QString(), horizon_);
-    form_->addRow(QString(), gamma_);
-    form_->addRow(QString(), beta_);
-    form_->addRow(QString(), stepScale_);
-    form_->addRow(QString(), thetaBound_);
-    form_->addRow(QString(), window_);
-    form_->addRow(QString(), pgsdStep_);
+    // Each field gets its own label object (retranslateUi() fills in the text).
+    for (QWidget* field : std::initializer_list<QWidget*>{
+             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, window_, pgsdStep_}) {
+        form_->addRow(new QLabel(this), field);
+    }
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form_);
     layout->addWidget(featuresLabel_);

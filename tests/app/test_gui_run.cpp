@@ -19,6 +19,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QFormLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
@@ -402,6 +403,16 @@ class TestGuiRun : public QObject {
         const QString path = dir.filePath("limits.json");
         {
             Window w;
+            // Every parameter is labelled (with the paper's symbol).
+            auto* form = w.find<QWidget>("controllerPanel")->findChild<QFormLayout*>();
+            QVERIFY(form);
+            for (const char* name : {"method", "horizon", "gamma", "beta", "stepScale",
+                                     "thetaBound", "matchingWindow", "pgsdStep"}) {
+                auto* label = qobject_cast<QLabel*>(form->labelForField(w.find<QWidget>(name)));
+                QVERIFY2(label && !label->text().isEmpty(), name);
+            }
+            QCOMPARE(qobject_cast<QLabel*>(form->labelForField(w.find<QWidget>("horizon")))->text(),
+                     QStringLiteral("Horizon H:"));
             auto* features = w.find<QTableWidget>("featureScales");
             auto* limits = w.find<QTableWidget>("actionLimits");
             auto* problem = w.find<QLabel>("controllerProblem");
