@@ -1,0 +1,263 @@
+#include "devices/TransmitterLink.h"
+
+#include <QLoggingCategory>
+#include <QMetaObject>
+#include <QSerialPort>
+#include <QTimer>
+
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcLink, "prisca.devices.link")
+
+namespace prisca::devices {
+
+namespace {
+constexpr unsigned long kShutdownWaitMs = 3000;
+constexpr int kStatusMs = 200;
+}  // namespace
+
+QString failsafeReasonText(FailsafeReason reason) {
+    switch (reason) {
+        case FailsafeReason::None:
+            return QStringLiteral("none");
+        case FailsafeReason::NoCommand:
+            return QStringLiteral("no command yet");
+        case FailsafeReason::Stale:
+            return QStringLiteral("stale command");
+        case FailsafeReason::EmergencyStop:
+            return QStringLiteral("E-STOP");
+        case FailsafeReason::PoseLost:
+            return QStringLiteral("camera pose lost");
+        case FailsafeReason::ControllerFault:
+            return QStringLiteral("controller fault");
+    }
+    return {};
+}
+
+// ---- facade -------------------------------------------------------------------------------
+
+TransmitterLink::TransmitterLink(QObject* parent)
+    : QObject(parent), worker_(new TransmitterLinkWorker) {
+    qRegisterMetaType<LinkSettings>();
+    qRegisterMetaType<LinkStatus>();
+    thread_.setObjectName(QStringLiteral("prisca-link"));
+    worker_->moveToThread(&thread_);
+    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+    connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
+    thread_.start();
+}
+
+TransmitterLink::~TransmitterLink() {
+    // Failsafe first, so the last frame the far end sees is neutral, then close.
+    worker_->emergency.store(true);
+    QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::BlockingQueuedConnection);
+    thread_.quit();
+    thread_.wait(kShutdownWaitMs);
+}
+
+void TransmitterLink::start(const LinkSettings& settings) {
+    QMetaObject::invokeMethod(
+        worker_, [w = worker_, settings] { w->start(settings); }, Qt::QueuedConnection);
+}
+
+void TransmitterLink::stop() {
+    QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::QueuedConnection);
+}
+
+void TransmitterLink::setCommand(const ChannelPulses& pulses) {
+    worker_->setCommand(pulses);
+}
+
+void TransmitterLink::emergencyStop() {
+    worker_->emergency.store(true);
+}
+
+void TransmitterLink::resetEmergencyStop() {
+    worker_->fault.store(false);
+    worker_->emergency.store(false);
+}
+
+void TransmitterLink::setPoseLost(bool lost) {
+    worker_->poseLost.store(lost);
+}
+
+void TransmitterLink::reportControllerFault() {
+    worker_->fault.store(true);
+}
+
+long long TransmitterLink::framesSent() const {
+    return worker_->framesSent.load();
+}
+
+// ---- worker -------------------------------------------------------------------------------
+
+TransmitterLinkWorker::TransmitterLinkWorker(QObject* parent) : QObject(parent) {}
+
+TransmitterLinkWorker::~TransmitterLinkWorker() = default;
+
+void TransmitterLinkWorker::setCommand(const ChannelPulses& pulses) {
+    std::lock_guard<std::mutex> lock(commandMutex_);
+    command_ = pulses;
+    commandAge_.restart();
+}
+
+void TransmitterLinkWorker::start(const LinkSettings& settings) {
+    stop();
+    settings_ = settings;
+    if (settings_.baud <= 0) {
+        settings_.baud = defaultSerialFormat(settings_.protocol).baud;
+    }
+    if (!port_) {
+        port_ = new QSerialPort(this);
+        // A port that goes away mid-run (unplugged, pty closed): close and try again later.
+        connect(port_, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
+            if (e == QSerialPort::ResourceError || e == QSerialPort::WriteError ||
+                e == QSerialPort::ReadError) {
+                closePort(port_->errorString());
+            }
+        });
+        // Whatever the far end sends (telemetry, garbage) is read and dropped: never a crash,
+        // never an unbounded buffer.
+        connect(port_, &QSerialPort::readyRead, this, [this] { port_->readAll(); });
+    }
+    if (!timer_) {
+        timer_ = new QTimer(this);
+        timer_->setTimerType(Qt::PreciseTimer);
+        connect(timer_, &QTimer::timeout, this, &TransmitterLinkWorker::tick);
+    }
+    status_ = LinkStatus{};
+    running_ = true;
+    openPort();
+    statusClock_.start();
+    rateClock_.start();
+    framesAtRateMark_ = framesSent.load();
+    timer_->start(std::max(1, static_cast<int>(std::lround(1000.0 / settings_.rateHz))));
+    emit statusChanged(status_);
+}
+
+bool TransmitterLinkWorker::openPort() {
+    reconnectClock_.restart();
+    port_->setPortName(settings_.port);
+    if (!port_->open(QIODevice::ReadWrite)) {
+        status_.connected = false;
+        status_.lastError = QStringLiteral("%1: %2").arg(settings_.port, port_->errorString());
+        return false;
+    }
+    const SerialFormat format = defaultSerialFormat(settings_.protocol);
+    // Line settings a pseudo-terminal cannot take (odd baud rates, DTR/RTS) are noted, not
+    // fatal: the bytes still flow, and on real hardware the port accepts them.
+    if (!port_->setBaudRate(settings_.baud)) {
+        qCInfo(lcLink) << "baud rate" << settings_.baud << "not applied:" << port_->errorString();
+    }
+    port_->setDataBits(QSerialPort::Data8);
+    port_->setParity(format.evenParity ? QSerialPort::EvenParity : QSerialPort::NoParity);
+    port_->setStopBits(format.twoStopBits ? QSerialPort::TwoStop : QSerialPort::OneStop);
+    port_->setFlowControl(QSerialPort::NoFlowControl);
+    if (!port_->setDataTerminalReady(true) || !port_->setRequestToSend(false)) {
+        qCInfo(lcLink) << "DTR/RTS not set on" << settings_.port << "(a pseudo-terminal?)";
+    }
+    port_->clearError();
+    status_.connected = true;
+    status_.lastError.clear();
+    qCInfo(lcLink) << "sending" << protocolName(settings_.protocol) << "on" << settings_.port;
+    return true;
+}
+
+void TransmitterLinkWorker::closePort(const QString& error) {
+    if (port_ && port_->isOpen()) {
+        qCWarning(lcLink) << "lost" << settings_.port << ":" << error;
+        port_->close();
+    }
+    status_.connected = false;
+    status_.lastError = error;
+    reconnectClock_.restart();
+    emit statusChanged(status_);
+}
+
+void TransmitterLinkWorker::stop() {
+    if (!running_) {
+        return;
+    }
+    running_ = false;
+    if (timer_) {
+        timer_->stop();
+    }
+    if (port_ && port_->isOpen()) {
+        // The last frame out is failsafe.
+        port_->write(encode(settings_.failsafe, true));
+        port_->waitForBytesWritten(50);
+        port_->close();
+    }
+    status_.connected = false;
+    emit statusChanged(status_);
+}
+
+QByteArray TransmitterLinkWorker::encode(const ChannelPulses& pulses, bool failsafe) const {
+    ChannelValues values{};
+    for (int c = 0; c < 16; ++c) {
+        values[c] = pulseToValue(settings_.protocol, pulses[c]);
+    }
+    switch (settings_.protocol) {
+        case RcProtocol::Crsf:
+            return encodeCrsf(values);
+        case RcProtocol::Sbus:
+            return encodeSbus(values, failsafe);
+        case RcProtocol::Multiprotocol:
+            return encodeMultiprotocol(values, settings_.multiprotocol);
+    }
+    return {};
+}
+
+void TransmitterLinkWorker::tick() {
+    if (!running_) {
+        return;
+    }
+    if (!port_->isOpen()) {
+        if (reconnectClock_.elapsed() >= settings_.reconnectIntervalMs && openPort()) {
+            emit statusChanged(status_);
+        }
+        if (!port_->isOpen()) {
+            return;
+        }
+    }
+    // Decide what goes out: the command, or failsafe and why.
+    ChannelPulses pulses;
+    FailsafeReason reason = FailsafeReason::None;
+    {
+        std::lock_guard<std::mutex> lock(commandMutex_);
+        pulses = command_;
+        if (!commandAge_.isValid()) {
+            reason = FailsafeReason::NoCommand;
+        } else if (commandAge_.nsecsElapsed() * 1e-9 > settings_.staleAfter) {
+            reason = FailsafeReason::Stale;
+        }
+    }
+    if (emergency.load()) {
+        reason = FailsafeReason::EmergencyStop;
+    } else if (fault.load()) {
+        reason = FailsafeReason::ControllerFault;
+    } else if (poseLost.load()) {
+        reason = FailsafeReason::PoseLost;
+    }
+    const bool failsafe = reason != FailsafeReason::None;
+    const QByteArray frame = encode(failsafe ? settings_.failsafe : pulses, failsafe);
+    if (port_->write(frame) != frame.size()) {
+        closePort(port_->errorString());
+        return;
+    }
+    framesSent.fetch_add(1);
+    status_.framesSent = framesSent.load();
+    status_.failsafe = reason;
+    status_.emergencyLatched = emergency.load() || fault.load();
+    if (rateClock_.elapsed() >= 1000) {
+        status_.measuredRateHz =
+            (framesSent.load() - framesAtRateMark_) * 1000.0 / rateClock_.restart();
+        framesAtRateMark_ = framesSent.load();
+    }
+    if (statusClock_.elapsed() >= kStatusMs) {
+        statusClock_.restart();
+        emit statusChanged(status_);
+    }
+}
+
+}  // namespace prisca::devices

@@ -1,0 +1,132 @@
+#pragma once
+
+#include "devices/RcProtocols.h"
+
+#include <QElapsedTimer>
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+#include <QThread>
+
+#include <atomic>
+#include <mutex>
+
+class QSerialPort;
+class QTimer;
+
+namespace prisca::devices {
+
+/// Plain settings of a link, copied into its thread.
+struct LinkSettings {
+    QString port;  ///< device path, e.g. /dev/ttyUSB0 or a pty
+    RcProtocol protocol = RcProtocol::Crsf;
+    int baud = 0;             ///< 0: the protocol's default
+    double rateHz = 50.0;     ///< frames per second
+    double staleAfter = 0.1;  ///< a command older than this [s] gives failsafe
+    ChannelPulses failsafe = [] {
+        ChannelPulses p;
+        p.fill(1500.0);
+        return p;
+    }();                                ///< pulses sent in failsafe [us]
+    MultiprotocolHeader multiprotocol;  ///< header fields for the Multiprotocol module
+    int reconnectIntervalMs = 300;      ///< how often a lost port is tried again
+};
+
+/// Why failsafe is being sent (None: the command is).
+enum class FailsafeReason { None, NoCommand, Stale, EmergencyStop, PoseLost, ControllerFault };
+QString failsafeReasonText(FailsafeReason reason);
+
+/// What the link is doing, for the status line.
+struct LinkStatus {
+    bool connected = false;
+    long long framesSent = 0;
+    double measuredRateHz = 0.0;  ///< from the last second of writes
+    FailsafeReason failsafe = FailsafeReason::NoCommand;
+    bool emergencyLatched = false;
+    QString lastError;  ///< the last port error (cleared when connected again)
+};
+
+class TransmitterLinkWorker;
+
+/// The transmitter link: a QSerialPort in a worker object on its own thread sends the latest
+/// command at a fixed rate in the chosen protocol, and failsafe (throttle neutral, steering
+/// centred) at once on a stale command, a lost camera pose, a controller fault or E-STOP (latched
+/// until resetEmergencyStop()). A port that goes away (unplugged, the far end of a pty closed) is
+/// reopened by itself. Every method may be called from any thread; status arrives through the
+/// queued statusChanged() signal.
+class TransmitterLink : public QObject {
+    Q_OBJECT
+  public:
+    explicit TransmitterLink(QObject* parent = nullptr);
+    /// Stops sending, closes the port, quits the thread (bounded wait, never terminated).
+    ~TransmitterLink() override;
+
+    /// Opens the port and starts sending (failsafe until the first command).
+    void start(const LinkSettings& settings);
+    void stop();
+    /// The command to send, as 16 pulses [us]; stamped now.
+    void setCommand(const ChannelPulses& pulses);
+    /// Latches E-STOP: failsafe from the next frame on, whatever commands arrive.
+    void emergencyStop();
+    void resetEmergencyStop();
+    /// The camera lost (true) or found again (false) the pose.
+    void setPoseLost(bool lost);
+    /// The controller failed (latched like E-STOP until resetEmergencyStop()).
+    void reportControllerFault();
+
+    /// Frames written so far (any thread).
+    long long framesSent() const;
+
+  signals:
+    void statusChanged(const prisca::devices::LinkStatus& status);
+
+  private:
+    QThread thread_;
+    TransmitterLinkWorker* worker_;
+};
+
+/// The worker behind TransmitterLink (its own thread). Public for the link only.
+class TransmitterLinkWorker : public QObject {
+    Q_OBJECT
+  public:
+    explicit TransmitterLinkWorker(QObject* parent = nullptr);
+    ~TransmitterLinkWorker() override;
+
+    // Thread-safe inputs (a mutex for the command, atomics for the flags).
+    void setCommand(const ChannelPulses& pulses);
+    std::atomic<bool> emergency{false};
+    std::atomic<bool> poseLost{false};
+    std::atomic<bool> fault{false};
+    std::atomic<long long> framesSent{0};
+
+  public slots:
+    void start(const prisca::devices::LinkSettings& settings);
+    void stop();
+
+  signals:
+    void statusChanged(const prisca::devices::LinkStatus& status);
+
+  private:
+    void tick();
+    bool openPort();
+    void closePort(const QString& error);
+    QByteArray encode(const ChannelPulses& pulses, bool failsafe) const;
+
+    LinkSettings settings_;
+    QSerialPort* port_ = nullptr;
+    QTimer* timer_ = nullptr;
+    QElapsedTimer reconnectClock_;
+    QElapsedTimer statusClock_;
+    QElapsedTimer rateClock_;
+    long long framesAtRateMark_ = 0;
+    LinkStatus status_;
+    std::mutex commandMutex_;
+    ChannelPulses command_{};
+    QElapsedTimer commandAge_;  ///< invalid until the first command
+    bool running_ = false;
+};
+
+}  // namespace prisca::devices
+
+Q_DECLARE_METATYPE(prisca::devices::LinkSettings)
+Q_DECLARE_METATYPE(prisca::devices::LinkStatus)
