@@ -17,7 +17,7 @@ const std::vector<CliCommand>& commandTable() {
         {"curve", "Learning curves of several methods over many runs", curveCommand},
         {"lemma41", "The H-gamma grid of Lemma 4.1 (Fig. 2)", lemma41Command},
         {"track", "Track the car's IR LEDs in a video and write its poses", nullptr},
-        {"link", "Send channel values to a transmitter over a serial link", nullptr},
+        {"link", "Send channel values to a transmitter over a serial link", linkCommand},
     };
     return table;
 }

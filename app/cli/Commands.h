@@ -12,5 +12,6 @@ int runCommand(const QStringList& arguments);
 int table1Command(const QStringList& arguments);
 int curveCommand(const QStringList& arguments);
 int lemma41Command(const QStringList& arguments);
+int linkCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

@@ -34,7 +34,6 @@ const QStringList kPlannedCommands = {
 // Those not built yet (test_cli_commands covers the others end to end).
 const QStringList kNotYetBuilt = {
     QStringLiteral("track"),
-    QStringLiteral("link"),
 };
 
 }  // namespace

@@ -8,6 +8,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <fcntl.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
 namespace {
 
 struct CliResult {
@@ -188,6 +193,77 @@ class TestCliCommands : public QObject {
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
         QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
         QVERIFY(QFile::exists(path(plant + "-" + method + ".csv")));
+    }
+
+    void link_sendsTheChannelsOnAPseudoTerminalThenFailsafe() {
+        // The far end of the "transmitter": the test reads the pty master.
+        int master = -1, slave = -1;
+        char name[256] = {};
+        termios raw{};
+        cfmakeraw(&raw);
+        QCOMPARE(openpty(&master, &slave, name, &raw, nullptr), 0);
+        fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+        QProcess process;
+        process.setWorkingDirectory(dir_.path());
+        process.start(QStringLiteral(PRISCA_CLI),
+                      {"link", "--port", QString::fromLocal8Bit(name), "--protocol", "sbus",
+                       "--channels", "1400, 1500,1700", "--duration", "1", "--format", "json"});
+        QByteArray received;
+        char buffer[4096];
+        while (!process.waitForFinished(10)) {
+            const ssize_t n = ::read(master, buffer, sizeof buffer);
+            if (n > 0)
+                received.append(buffer, static_cast<int>(n));
+        }
+        for (ssize_t n; (n = ::read(master, buffer, sizeof buffer)) > 0;) {
+            received.append(buffer, static_cast<int>(n));
+        }
+        ::close(master);
+        ::close(slave);
+        QCOMPARE(process.exitCode(), 0);
+        const QJsonObject summary = parseJson(QString::fromUtf8(process.readAllStandardOutput()));
+        QCOMPARE(summary.value("protocol").toString(), QStringLiteral("sbus"));
+        const int frames = summary.value("framesSent").toInt();
+        QVERIFY2(frames >= 40 && frames <= 70, qPrintable(QString::number(frames)));
+        // SBUS frames, 25 bytes each: the channels as given, then failsafe at the end.
+        QVERIFY(received.size() >= 25 * 40);
+        int start = received.indexOf('\x0f');
+        QVERIFY(start >= 0);
+        const auto channel = [&](int frameStart, int index) {
+            int value = 0;
+            for (int b = 0; b < 11; ++b) {
+                const int bit = index * 11 + b;
+                if (static_cast<unsigned char>(received[frameStart + 1 + bit / 8]) &
+                    (1 << (bit % 8))) {
+                    value |= 1 << b;
+                }
+            }
+            return value;
+        };
+        QCOMPARE(channel(start, 0), 831);   // 1400 us
+        QCOMPARE(channel(start, 1), 992);   // 1500 us
+        QCOMPARE(channel(start, 2), 1312);  // 1700 us
+        const int last = static_cast<int>(received.size()) - 25;
+        QCOMPARE(static_cast<unsigned char>(received[last]), 0x0f);
+        QCOMPARE(channel(last, 0), 992);  // failsafe: everything back to centre
+        QCOMPARE(channel(last, 2), 992);
+        QCOMPARE(static_cast<unsigned char>(received[last + 23]) & 0x08, 0x08);
+    }
+
+    void link_badInputGivesOneLineAndExitTwo() {
+        CliResult r = cli({"link", "--port", "/dev/null", "--channels", "1500,abc"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("CH2") && r.err.count('\n') == 1, qPrintable(r.err));
+        r = cli({"link", "--port", "/dev/null", "--protocol", "ppm", "--channels", "1500"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("ppm"), qPrintable(r.err));
+        r = cli({"link", "--port", "/dev/no-such-transmitter", "--channels", "1500", "--duration",
+                 "3"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("/dev/no-such-transmitter"), qPrintable(r.err));
+        r = cli({"link", "--port", "/dev/null", "--channels", "1500,2500"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("800 to 2200"), qPrintable(r.err));
     }
 
     void simulate_replaysActionsOrCoastsFromTheGivenState() {
