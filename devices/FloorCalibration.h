@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+
+#include <opencv2/core.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace prisca::devices {
+
+/// One clicked point: where it is in the image [px] and on the floor [m].
+struct CalibrationPoint {
+    cv::Point2d image;
+    cv::Point2d floor;
+};
+
+/// The floor calibration: the homography from image pixels to floor metres, fitted to four or
+/// more points the operator clicked, and how well it fits them. JSON as DESIGN.md gives it:
+/// {"homography": [h00..h22 row-major, image px -> floor m], "points": [...], "rms_m": ...}.
+struct FloorCalibration {
+    cv::Matx33d imageToFloor = cv::Matx33d::eye();
+    std::vector<CalibrationPoint> points;
+    double rmsMetres = 0.0;  ///< RMS distance between each point's floor position and its
+                             ///< image point mapped to the floor [m]
+
+    /// Fits the homography to the points (least squares over all of them). Needs four or more
+    /// points, no three of the first four on one line. On failure returns nullopt and *error says
+    /// why.
+    static std::optional<FloorCalibration> fit(const std::vector<CalibrationPoint>& points,
+                                               QString* error);
+
+    cv::Point2d toFloor(const cv::Point2d& image) const;
+    cv::Point2d toImage(const cv::Point2d& floor) const;
+    /// Per point, the distance between its floor position and its image point mapped [m].
+    std::vector<double> residuals() const;
+
+    QByteArray toJson() const;
+    /// Reads the JSON; on failure nullopt and *error names the key and the problem.
+    static std::optional<FloorCalibration> fromJson(const QByteArray& json, QString* error);
+    /// Reads a file; errors name the file.
+    static std::optional<FloorCalibration> load(const QString& path, QString* error);
+    bool save(const QString& path, QString* error) const;
+};
+
+}  // namespace prisca::devices
