@@ -16,7 +16,7 @@ const std::vector<CliCommand>& commandTable() {
         {"table1", "Run batches of trials and report the paper's Table I metrics", table1Command},
         {"curve", "Learning curves of several methods over many runs", curveCommand},
         {"lemma41", "The H-gamma grid of Lemma 4.1 (Fig. 2)", lemma41Command},
-        {"track", "Track the car's IR LEDs in a video and write its poses", nullptr},
+        {"track", "Track the car's IR LEDs in a video and write its poses", trackCommand},
         {"link", "Send channel values to a transmitter over a serial link", linkCommand},
     };
     return table;

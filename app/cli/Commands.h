@@ -13,5 +13,6 @@ int table1Command(const QStringList& arguments);
 int curveCommand(const QStringList& arguments);
 int lemma41Command(const QStringList& arguments);
 int linkCommand(const QStringList& arguments);
+int trackCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

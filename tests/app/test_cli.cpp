@@ -31,10 +31,6 @@ const QStringList kPlannedCommands = {
     QStringLiteral("run"),      QStringLiteral("table1"), QStringLiteral("curve"),
     QStringLiteral("track"),    QStringLiteral("link"),
 };
-// Those not built yet (test_cli_commands covers the others end to end).
-const QStringList kNotYetBuilt = {
-    QStringLiteral("track"),
-};
 
 }  // namespace
 
@@ -43,8 +39,6 @@ class TestCli : public QObject {
   private slots:
     void help_exitsZeroAndListsEveryPlannedCommand();
     void version_printsTheProjectVersion();
-    void commandNotBuiltYet_exitsTwoWithOneLineError_data();
-    void commandNotBuiltYet_exitsTwoWithOneLineError();
     void unknownCommand_exitsTwoWithOneLineError();
     void noCommand_exitsTwo();
     void unknownOption_exitsTwoWithOneLineError();
@@ -65,24 +59,6 @@ void TestCli::version_printsTheProjectVersion() {
     const CliResult result = runCli({QStringLiteral("--version")});
     QCOMPARE(result.exitCode, 0);
     QCOMPARE(result.out.trimmed(), QStringLiteral("prisca-cli " PRISCA_VERSION));
-}
-
-void TestCli::commandNotBuiltYet_exitsTwoWithOneLineError_data() {
-    // Remove a row when its command is implemented.
-    QTest::addColumn<QString>("command");
-    for (const QString& command : kNotYetBuilt) {
-        QTest::newRow(qPrintable(command)) << command;
-    }
-}
-
-void TestCli::commandNotBuiltYet_exitsTwoWithOneLineError() {
-    QFETCH(QString, command);
-    const CliResult result = runCli({command, QStringLiteral("--help")});
-    QCOMPARE(result.exitCode, 2);
-    QCOMPARE(
-        result.err,
-        QStringLiteral("prisca-cli: command '%1' is not available in this version\n").arg(command));
-    QCOMPARE(result.out, QString());
 }
 
 void TestCli::unknownCommand_exitsTwoWithOneLineError() {
