@@ -54,10 +54,11 @@ cv::Mat renderLeds(const PlanarPose& pose, const FloorCalibration& calibration,
 }
 
 FloorCalibration syntheticCeilingCamera() {
-    // Image corners and centre -> floor points, a mild keystone as from a tilted mount.
+    // Image corners and centre -> floor points, a mild keystone as from a tilted mount; the
+    // floor seen is about 5.6 m x 4.2 m, enough for the slide-park and its lot.
     const std::vector<CalibrationPoint> points = {
-        {{0, 0}, {-0.50, 1.50}},    {{639, 0}, {3.50, 1.60}},   {{639, 479}, {3.45, -1.45}},
-        {{0, 479}, {-0.45, -1.50}}, {{320, 240}, {1.50, 0.05}},
+        {{0, 0}, {-0.60, 2.60}},    {{639, 0}, {5.00, 2.70}},   {{639, 479}, {4.95, -1.55}},
+        {{0, 479}, {-0.55, -1.60}}, {{320, 240}, {2.20, 0.55}},
     };
     QString error;
     return *FloorCalibration::fit(points, &error);

@@ -29,9 +29,9 @@ cv::Mat renderLeds(const PlanarPose& pose, const FloorCalibration& calibration,
                    const SyntheticCameraSettings& settings, const LedGeometry& geometry,
                    std::uint64_t seed);
 
-/// A plausible ceiling camera over a 4 m x 3 m floor for tests and the virtual rig: the image
-/// (640 x 480) sees x in [-0.5, 3.5] m and y in [-1.5, 1.5] m, slightly tilted (a true
-/// perspective homography), calibrated from its four corners and the centre.
+/// A plausible ceiling camera over the lab floor for tests and the virtual rig: the image
+/// (640 x 480) sees x in about [-0.6, 5.0] m and y in [-1.6, 2.6] m (the slide-park and its lot),
+/// slightly tilted (a true perspective homography), calibrated from its corners and centre.
 FloorCalibration syntheticCeilingCamera();
 
 }  // namespace prisca::devices

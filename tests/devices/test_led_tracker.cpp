@@ -127,7 +127,7 @@ class TestLedTracker : public QObject {
         QCOMPARE(r.blobs, 0);
         // Two LEDs: still no pose (the third is outside the image).
         s.flicker = 0.0;
-        r = tracker.track(renderLeds({3.58, 0.0, 0.0}, camera, s, LedGeometry{}, 8), camera);
+        r = tracker.track(renderLeds({5.02, 0.0, 0.0}, camera, s, LedGeometry{}, 8), camera);
         QVERIFY(r.blobs < 3);
         QVERIFY(!r.pose);
         // A frame of noise alone: no pose.
