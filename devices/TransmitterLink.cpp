@@ -5,6 +5,7 @@
 #include <QSerialPort>
 #include <QTimer>
 
+#include <chrono>
 #include <cmath>
 
 Q_LOGGING_CATEGORY(lcLink, "prisca.devices.link")
@@ -14,6 +15,12 @@ namespace prisca::devices {
 namespace {
 constexpr unsigned long kShutdownWaitMs = 3000;
 constexpr int kStatusMs = 200;
+
+std::int64_t steadyNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 }  // namespace
 
 QString failsafeReasonText(FailsafeReason reason) {
@@ -66,6 +73,17 @@ void TransmitterLink::stop() {
 
 void TransmitterLink::setCommand(const ChannelPulses& pulses) {
     worker_->setCommand(pulses);
+    if (worker_->sendOnCommand.load()) {
+        QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::sendNow, Qt::QueuedConnection);
+    }
+}
+
+std::int64_t TransmitterLink::lastCommandNs() const {
+    return worker_->lastCommandNs.load();
+}
+
+std::int64_t TransmitterLink::lastWriteNs() const {
+    return worker_->lastWriteNs.load();
 }
 
 void TransmitterLink::emergencyStop() {
@@ -99,11 +117,20 @@ void TransmitterLinkWorker::setCommand(const ChannelPulses& pulses) {
     std::lock_guard<std::mutex> lock(commandMutex_);
     command_ = pulses;
     commandAge_.restart();
+    commandNs_ = steadyNs();
+}
+
+void TransmitterLinkWorker::sendNow() {
+    if (running_ && timer_) {
+        tick();
+        timer_->start();  // the next fixed-rate frame a full period after this one
+    }
 }
 
 void TransmitterLinkWorker::start(const LinkSettings& settings) {
     stop();
     settings_ = settings;
+    sendOnCommand.store(settings.sendOnCommand);
     if (settings_.baud <= 0) {
         settings_.baud = defaultSerialFormat(settings_.protocol).baud;
     }
@@ -223,9 +250,11 @@ void TransmitterLinkWorker::tick() {
     // Decide what goes out: the command, or failsafe and why.
     ChannelPulses pulses;
     FailsafeReason reason = FailsafeReason::None;
+    std::int64_t commandNs = 0;
     {
         std::lock_guard<std::mutex> lock(commandMutex_);
         pulses = command_;
+        commandNs = commandNs_;
         if (!commandAge_.isValid()) {
             reason = FailsafeReason::NoCommand;
         } else if (commandAge_.nsecsElapsed() * 1e-9 > settings_.staleAfter) {
@@ -246,6 +275,10 @@ void TransmitterLinkWorker::tick() {
         return;
     }
     framesSent.fetch_add(1);
+    if (!failsafe) {
+        lastCommandNs.store(commandNs);
+        lastWriteNs.store(steadyNs());
+    }
     status_.framesSent = framesSent.load();
     status_.failsafe = reason;
     status_.emergencyLatched = emergency.load() || fault.load();

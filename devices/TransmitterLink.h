@@ -9,6 +9,7 @@
 #include <QThread>
 
 #include <atomic>
+#include <cstdint>
 #include <mutex>
 
 class QSerialPort;
@@ -30,6 +31,9 @@ struct LinkSettings {
     }();                                ///< pulses sent in failsafe [us]
     MultiprotocolHeader multiprotocol;  ///< header fields for the Multiprotocol module
     int reconnectIntervalMs = 300;      ///< how often a lost port is tried again
+    /// Also send at once whenever a new command arrives (the fixed rate stays the slowest
+    /// pace), so a camera frame's command goes out without waiting for the next tick.
+    bool sendOnCommand = false;
 };
 
 /// Why failsafe is being sent (None: the command is).
@@ -76,6 +80,10 @@ class TransmitterLink : public QObject {
 
     /// Frames written so far (any thread).
     long long framesSent() const;
+    /// For the last frame written that carried a fresh command: steady-clock time [ns] of the
+    /// setCommand() it carried, and of the write (0 before any). Any thread.
+    std::int64_t lastCommandNs() const;
+    std::int64_t lastWriteNs() const;
 
   signals:
     void statusChanged(const prisca::devices::LinkStatus& status);
@@ -98,10 +106,15 @@ class TransmitterLinkWorker : public QObject {
     std::atomic<bool> poseLost{false};
     std::atomic<bool> fault{false};
     std::atomic<long long> framesSent{0};
+    std::atomic<std::int64_t> lastCommandNs{0};
+    std::atomic<std::int64_t> lastWriteNs{0};
+    std::atomic<bool> sendOnCommand{false};
 
   public slots:
     void start(const prisca::devices::LinkSettings& settings);
     void stop();
+    /// Sends the current command now (sendOnCommand).
+    void sendNow();
 
   signals:
     void statusChanged(const prisca::devices::LinkStatus& status);
@@ -122,7 +135,9 @@ class TransmitterLinkWorker : public QObject {
     LinkStatus status_;
     std::mutex commandMutex_;
     ChannelPulses command_{};
-    QElapsedTimer commandAge_;  ///< invalid until the first command
+    QElapsedTimer commandAge_;    ///< invalid until the first command
+    std::int64_t commandNs_ = 0;  ///< steady time of the last setCommand()
+    bool sendQueued_ = false;
     bool running_ = false;
 };
 

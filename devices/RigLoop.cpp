@@ -1,0 +1,82 @@
+#include "devices/RigLoop.h"
+
+#include "devices/TransmitterLink.h"
+
+#include <QLoggingCategory>
+
+#include <cmath>
+#include <exception>
+
+Q_LOGGING_CATEGORY(lcRig, "prisca.devices.rig")
+
+namespace prisca::devices {
+
+Eigen::VectorXd PoseStateEstimator::update(const PlanarPose& pose, std::int64_t steadyNs) {
+    if (last_) {
+        const double dt = (steadyNs - lastNs_) * 1e-9;
+        if (dt > 1e-4 && dt < 0.5) {
+            const double dx = (pose.x - last_->x) / dt;
+            const double dy = (pose.y - last_->y) / dt;
+            const double r = std::remainder(pose.heading - last_->heading, 2.0 * M_PI) / dt;
+            // Body frame at the mid-heading of the interval.
+            const double mid =
+                last_->heading + 0.5 * std::remainder(pose.heading - last_->heading, 2.0 * M_PI);
+            const double c = std::cos(mid), s = std::sin(mid);
+            const Eigen::Vector3d measured(c * dx + s * dy, -s * dx + c * dy, r);
+            rates_ += smoothing_ * (measured - rates_);
+        } else if (dt >= 0.5) {
+            rates_.setZero();  // a long gap: start the rates afresh
+        }
+    }
+    last_ = pose;
+    lastNs_ = steadyNs;
+    Eigen::VectorXd state(6);
+    state << pose.x, pose.y, pose.heading, rates_[0], rates_[1], rates_[2];
+    return state;
+}
+
+RigLoop::RigLoop(FloorCalibration calibration, TrackerSettings tracker,
+                 std::unique_ptr<core::Controller> controller, ChannelMap channels,
+                 TransmitterLink& link)
+    : calibration_(std::move(calibration)),
+      tracker_(tracker),
+      controller_(std::move(controller)),
+      channels_(std::move(channels)),
+      link_(link) {}
+
+void RigLoop::startTrial(core::ResetMode mode) {
+    controller_->reset(mode);
+    estimator_.reset();
+    tracker_.reset();
+}
+
+RigStep RigLoop::onFrame(const CameraFrame& frame) {
+    RigStep step;
+    step.frameNs = frame.steadyNs;
+    const TrackResult tracked = tracker_.track(frame.image, calibration_);
+    step.pose = tracked.pose;
+    if (!tracked.pose) {
+        link_.setPoseLost(true);  // failsafe from the link's next frame
+        estimator_.reset();
+        return step;
+    }
+    step.state = estimator_.update(*tracked.pose, frame.steadyNs);
+    try {
+        const core::ControlStep& control = controller_->step(step.state);
+        step.action = control.action;
+        if (!step.action.allFinite()) {
+            throw std::runtime_error("the controller's action is not finite");
+        }
+    } catch (const std::exception& e) {
+        qCWarning(lcRig) << "controller fault:" << e.what();
+        link_.reportControllerFault();
+        step.fault = true;
+        return step;
+    }
+    link_.setCommand(channels_.command(step.action));
+    link_.setPoseLost(false);
+    step.commandNs = steadyNowNs();
+    return step;
+}
+
+}  // namespace prisca::devices

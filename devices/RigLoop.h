@@ -1,0 +1,68 @@
+#pragma once
+
+#include "devices/CameraSource.h"
+#include "devices/ChannelMap.h"
+#include "devices/LedTracker.h"
+
+#include "core/Controller.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <optional>
+
+namespace prisca::devices {
+
+class TransmitterLink;
+
+/// The car's state (x, y, psi, vx, vy, r as the slide-car's) from successive camera poses:
+/// velocities by finite differences over the frames' own timestamps, in the body frame, lightly
+/// smoothed. Reset when the pose is lost.
+class PoseStateEstimator {
+  public:
+    /// @param smoothing  weight of the newest difference, in (0, 1]
+    explicit PoseStateEstimator(double smoothing = 0.6) : smoothing_(smoothing) {}
+    Eigen::VectorXd update(const PlanarPose& pose, std::int64_t steadyNs);
+    void reset() { last_.reset(); }
+
+  private:
+    double smoothing_;
+    std::optional<PlanarPose> last_;
+    std::int64_t lastNs_ = 0;
+    Eigen::Vector3d rates_ = Eigen::Vector3d::Zero();  ///< vx, vy, r
+};
+
+/// What one camera frame led to.
+struct RigStep {
+    std::optional<PlanarPose> pose;  ///< empty: no pose, failsafe sent
+    Eigen::VectorXd state;           ///< the observation given to the controller (if a pose)
+    Eigen::VectorXd action;          ///< the controller's action (if a pose)
+    bool fault = false;              ///< the controller failed (failsafe latched)
+    std::int64_t frameNs = 0;        ///< when the frame arrived
+    std::int64_t commandNs = 0;      ///< when the command was handed to the link
+};
+
+/// The closed loop on the rig, one camera frame at a time: track the LEDs, estimate the state,
+/// step the controller, map the action to channel pulses and hand them to the link. A lost pose
+/// or a controller fault puts the link in failsafe at once. Runs on the camera's thread; the
+/// link's methods are thread-safe.
+class RigLoop {
+  public:
+    RigLoop(FloorCalibration calibration, TrackerSettings tracker,
+            std::unique_ptr<core::Controller> controller, ChannelMap channels,
+            TransmitterLink& link);
+    RigStep onFrame(const CameraFrame& frame);
+    /// A new trial: the controller resets (warm start keeps what it learnt), the estimator too.
+    void startTrial(core::ResetMode mode);
+    core::Controller& controller() { return *controller_; }
+
+  private:
+    FloorCalibration calibration_;
+    LedTracker tracker_;
+    PoseStateEstimator estimator_;
+    std::unique_ptr<core::Controller> controller_;
+    ChannelMap channels_;
+    TransmitterLink& link_;
+};
+
+}  // namespace prisca::devices
