@@ -120,6 +120,17 @@ T pick(std::mt19937& g, std::initializer_list<T> values) {
              std::uniform_int_distribution<int>(0, static_cast<int>(values.size()) - 1)(g));
 }
 
+// The features and cost weights PRISCA and PGSD both search (same draws, same order).
+void drawFeaturesAndWeights(std::mt19937& g, Setting& s) {
+        s.lon = pick(g, {0.1, 0.3, 1.0});
+        s.u = pick(g, {0.3, 1.0, 3.0});
+        s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
+        s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
+        s.weightPsi = pick(g, {1.0, 10.0, 100.0});
+        s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
+        s.weightR = pick(g, {0.1, 1.0, 10.0});
+}
+
 Setting draw(std::mt19937& g, const char* method) {
     Setting s;
     if (!std::strcmp(method, "prisca")) {
@@ -131,26 +142,14 @@ Setting draw(std::mt19937& g, const char* method) {
         s.responseSteps = pick(g, {1, 5, 10});
         s.signModel = pick(g, {false, true});
         s.timeDriven = pick(g, {false, true});
-        s.lon = pick(g, {0.1, 0.3, 1.0});
-        s.u = pick(g, {0.3, 1.0, 3.0});
-        s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
-        s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
-        s.weightPsi = pick(g, {1.0, 10.0, 100.0});
-        s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
-        s.weightR = pick(g, {0.1, 1.0, 10.0});
+        drawFeaturesAndWeights(g, s);
         s.window = pick(g, {20, 40, 80});
     } else if (!std::strcmp(method, "pgsd")) {
         // PGSD searches the same features and cost weights as PRISCA, and its own knobs.
         s.stepScale = pick(g, {0.001, 0.003, 0.01, 0.03, 0.1, 0.3});
         s.horizon = pick(g, {5, 10, 20});
         s.bound = pick(g, {0.0, 0.5, 2.0});
-        s.lon = pick(g, {0.1, 0.3, 1.0});
-        s.u = pick(g, {0.3, 1.0, 3.0});
-        s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
-        s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
-        s.weightPsi = pick(g, {1.0, 10.0, 100.0});
-        s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
-        s.weightR = pick(g, {0.1, 1.0, 10.0});
+        drawFeaturesAndWeights(g, s);
     } else {
         s.kpThrottle = pick(g, {0.05, 0.1, 0.2, 0.5, 1.0});
         s.kpRudder = pick(g, {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0});
