@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/VirtualCar.h"
 #include "core/Controller.h"
 #include "core/Demonstration.h"
 #include "devices/ChannelMap.h"
@@ -63,12 +64,10 @@ class VirtualRig {
 
   private:
     VirtualRigSettings settings_;
-    std::unique_ptr<sim::Plant> car_;
+    std::unique_ptr<VirtualCar> car_;
     devices::FloorCalibration calibration_;
     std::unique_ptr<devices::TransmitterLink> link_;
     std::unique_ptr<devices::RigLoop> loop_;
-    int master_ = -1;
-    int slave_ = -1;
 };
 
 }  // namespace prisca::app

@@ -1,0 +1,81 @@
+#include "app/VirtualCar.h"
+
+#include "sim/PlantCatalog.h"
+
+#include <fcntl.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <algorithm>
+
+namespace prisca::app {
+
+VirtualCar::VirtualCar(devices::RcProtocol protocol, devices::ChannelMap channels,
+                       std::uint64_t seed, double perturbation)
+    : protocol_(protocol),
+      channels_(std::move(channels)),
+      perturbation_(perturbation),
+      car_(sim::PlantCatalog::create(QStringLiteral("slidecar"))),
+      decoder_(protocol) {
+    reset(seed);
+}
+
+VirtualCar::~VirtualCar() {
+    if (master_ >= 0)
+        ::close(master_);
+    if (slave_ >= 0)
+        ::close(slave_);
+}
+
+bool VirtualCar::open(QString* error) {
+    char name[256] = {};
+    termios raw{};
+    cfmakeraw(&raw);
+    if (openpty(&master_, &slave_, name, &raw, nullptr) != 0) {
+        *error = QStringLiteral("no pseudo-terminal for the virtual car");
+        return false;
+    }
+    fcntl(master_, F_SETFL, fcntl(master_, F_GETFL) | O_NONBLOCK);
+    path_ = QString::fromLocal8Bit(name);
+    return true;
+}
+
+void VirtualCar::reset(std::uint64_t seed) {
+    state_ = car_->reset(seed, sim::Perturbation{perturbation_, perturbation_, perturbation_});
+    action_ = Eigen::VectorXd::Zero(car_->info().actionDimension());
+    time_ = 0.0;
+}
+
+void VirtualCar::readCommands() {
+    if (master_ < 0) {
+        return;
+    }
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(master_, buffer, sizeof buffer)) > 0;) {
+        for (const devices::ChannelValues& values :
+             decoder_.push(QByteArray(buffer, static_cast<int>(n)))) {
+            ++decoded_;
+            for (Eigen::Index l = 0;
+                 l < action_.size() && l < static_cast<Eigen::Index>(channels_.controls.size());
+                 ++l) {
+                const devices::ChannelSetting& c = channels_.controls[l];
+                const double pulse = devices::valueToPulse(protocol_, values[c.channel]);
+                const double u = (pulse - 1500.0 - c.trim) / 512.0;
+                action_[l] = std::clamp(c.reversed ? -u : u, -1.0, 1.0);
+            }
+        }
+    }
+}
+
+devices::PlanarPose VirtualCar::poseAt(double t) {
+    readCommands();
+    const double dt = car_->timing().controlPeriod;
+    while (time_ + dt <= t + 1e-9) {
+        state_ = car_->step(action_);
+        time_ += dt;
+    }
+    return {state_[0], state_[1], state_[2]};
+}
+
+}  // namespace prisca::app

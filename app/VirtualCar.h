@@ -1,0 +1,56 @@
+#pragma once
+
+#include "devices/ChannelMap.h"
+#include "devices/LedTracker.h"
+#include "devices/RcProtocols.h"
+#include "sim/Plant.h"
+
+#include <QString>
+
+#include <memory>
+#include <optional>
+
+namespace prisca::app {
+
+/// The far end of a transmitter link with no hardware: a pseudo-terminal whose bytes are
+/// decoded as a car's receiver would, driving a simulated slide-car. The synthetic camera asks
+/// it where the car is (poseAt), which steps the car up to that time with the newest command.
+/// Used by the virtual rig; single-threaded (the camera's thread).
+class VirtualCar {
+  public:
+    VirtualCar(devices::RcProtocol protocol, devices::ChannelMap channels, std::uint64_t seed,
+               double perturbation);
+    ~VirtualCar();
+    VirtualCar(const VirtualCar&) = delete;
+    VirtualCar& operator=(const VirtualCar&) = delete;
+
+    /// Opens the pseudo-terminal; false with *error on failure.
+    bool open(QString* error);
+    /// The path a link should open to drive this car.
+    const QString& portPath() const { return path_; }
+    /// Steps the car to time t [s] (control periods of 25 ms) with the newest decoded command,
+    /// and returns its true pose.
+    devices::PlanarPose poseAt(double t);
+    /// Frames decoded from the link so far.
+    long long framesDecoded() const { return decoded_; }
+    /// Puts the car back at its start (a new trial), with a new seed.
+    void reset(std::uint64_t seed);
+
+  private:
+    void readCommands();
+
+    devices::RcProtocol protocol_;
+    devices::ChannelMap channels_;
+    double perturbation_;
+    std::unique_ptr<sim::Plant> car_;
+    devices::RcFrameDecoder decoder_;
+    Eigen::VectorXd state_;
+    Eigen::VectorXd action_;
+    double time_ = 0.0;
+    long long decoded_ = 0;
+    int master_ = -1;
+    int slave_ = -1;
+    QString path_;
+};
+
+}  // namespace prisca::app
