@@ -9,6 +9,7 @@
 #include "app/LiveChartsPanel.h"
 #include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
+#include "app/RigPanel.h"
 #include "app/RunController.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
@@ -115,6 +116,7 @@ void MainWindow::createPanels() {
     mappingPanel_ = new MappingPanel(*session_, this);
     chartsPanel_ = new LiveChartsPanel(this);
     experimentsPanel_ = new ExperimentsPanel(*session_, this);
+    rigPanel_ = new RigPanel(*session_, this);
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     mappingDock_ =
@@ -126,6 +128,8 @@ void MainWindow::createPanels() {
     experimentsDock_ =
         dock(this, QStringLiteral("experimentsDock"), experimentsPanel_, Qt::BottomDockWidgetArea);
     tabifyDockWidget(chartsDock_, experimentsDock_);
+    rigDock_ = dock(this, QStringLiteral("rigDock"), rigPanel_, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(experimentsDock_, rigDock_);
     chartsDock_->raise();
     tabifyDockWidget(taskDock_, recordDock_);
     tabifyDockWidget(recordDock_, mappingDock_);
@@ -207,7 +211,7 @@ void MainWindow::createMenus() {
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
     for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_,
-                           chartsDock_, experimentsDock_}) {
+                           chartsDock_, experimentsDock_, rigDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -295,6 +299,7 @@ void MainWindow::retranslateUi() {
     runDock_->setWindowTitle(tr("Run"));
     chartsDock_->setWindowTitle(tr("Live charts"));
     experimentsDock_->setWindowTitle(tr("Experiments"));
+    rigDock_->setWindowTitle(tr("Rig"));
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About PRISCA Lab"));
     aboutAction_->setStatusTip(tr("Show the version and what PRISCA Lab does"));

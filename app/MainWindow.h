@@ -18,6 +18,7 @@ class ExperimentsPanel;
 class LiveChartsPanel;
 class MappingPanel;
 class RecordPanel;
+class RigPanel;
 class RunController;
 class RunPanel;
 class TaskPanel;
@@ -71,6 +72,7 @@ class MainWindow : public QMainWindow {
     MappingPanel* mappingPanel_ = nullptr;
     LiveChartsPanel* chartsPanel_ = nullptr;
     ExperimentsPanel* experimentsPanel_ = nullptr;
+    RigPanel* rigPanel_ = nullptr;
     QDockWidget* taskDock_ = nullptr;
     QDockWidget* controllerDock_ = nullptr;
     QDockWidget* runDock_ = nullptr;
@@ -78,6 +80,7 @@ class MainWindow : public QMainWindow {
     QDockWidget* mappingDock_ = nullptr;
     QDockWidget* chartsDock_ = nullptr;
     QDockWidget* experimentsDock_ = nullptr;
+    QDockWidget* rigDock_ = nullptr;
     QMenu* fileMenu_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;

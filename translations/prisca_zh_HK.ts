@@ -30,155 +30,178 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::CameraView</name>
+    <message>
+        <location filename="../app/CameraView.cpp" line="59" />
+        <source>No camera image</source>
+        <translation>沒有攝影機影像</translation>
+    </message>
+    <message>
+        <location filename="../app/CameraView.cpp" line="104" />
+        <source>x %1 m, y %2 m, heading %3°</source>
+        <translation>x %1 米，y %2 米，航向 %3°</translation>
+    </message>
+    <message>
+        <location filename="../app/CameraView.cpp" line="108" />
+        <source>no pose (failsafe)</source>
+        <translation>沒有位姿（失效保護）</translation>
+    </message>
+    <message>
+        <location filename="../app/CameraView.cpp" line="112" />
+        <source>Calibrating: click a floor point whose position you know</source>
+        <translation>校準中：點擊一個已知位置的地面點</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="149" />
+        <location filename="../app/ControllerPanel.cpp" line="146" />
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="150" />
+        <location filename="../app/ControllerPanel.cpp" line="147" />
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="151" />
+        <location filename="../app/ControllerPanel.cpp" line="148" />
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="153" />
+        <location filename="../app/ControllerPanel.cpp" line="150" />
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <location filename="../app/ControllerPanel.cpp" line="161" />
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="164" />
+        <location filename="../app/ControllerPanel.cpp" line="161" />
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="170" />
+        <location filename="../app/ControllerPanel.cpp" line="167" />
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="209" />
+        <location filename="../app/ControllerPanel.cpp" line="206" />
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="223" />
+        <location filename="../app/ControllerPanel.cpp" line="220" />
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="265" />
+        <location filename="../app/ControllerPanel.cpp" line="262" />
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="266" />
+        <location filename="../app/ControllerPanel.cpp" line="263" />
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
         <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="268" />
+        <location filename="../app/ControllerPanel.cpp" line="265" />
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="269" />
+        <location filename="../app/ControllerPanel.cpp" line="266" />
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="270" />
+        <location filename="../app/ControllerPanel.cpp" line="267" />
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="271" />
+        <location filename="../app/ControllerPanel.cpp" line="268" />
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="272" />
+        <location filename="../app/ControllerPanel.cpp" line="269" />
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="273" />
+        <location filename="../app/ControllerPanel.cpp" line="270" />
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="274" />
+        <location filename="../app/ControllerPanel.cpp" line="271" />
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="275" />
+        <location filename="../app/ControllerPanel.cpp" line="272" />
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="277" />
+        <location filename="../app/ControllerPanel.cpp" line="274" />
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="278" />
+        <location filename="../app/ControllerPanel.cpp" line="275" />
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280" />
+        <location filename="../app/ControllerPanel.cpp" line="277" />
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="281" />
+        <location filename="../app/ControllerPanel.cpp" line="278" />
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="283" />
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="283" />
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="284" />
+        <location filename="../app/ControllerPanel.cpp" line="281" />
         <source>Restore the plant's tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="285" />
+        <location filename="../app/ControllerPanel.cpp" line="282" />
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="286" />
+        <location filename="../app/ControllerPanel.cpp" line="283" />
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="287" />
-        <location filename="../app/ControllerPanel.cpp" line="288" />
+        <location filename="../app/ControllerPanel.cpp" line="284" />
+        <location filename="../app/ControllerPanel.cpp" line="285" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="289" />
+        <location filename="../app/ControllerPanel.cpp" line="286" />
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -485,109 +508,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="346" />
+        <location filename="../app/LiveChartsPanel.cpp" line="351" />
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="353" />
-        <location filename="../app/LiveChartsPanel.cpp" line="357" />
+        <location filename="../app/LiveChartsPanel.cpp" line="358" />
+        <location filename="../app/LiveChartsPanel.cpp" line="362" />
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="354" />
+        <location filename="../app/LiveChartsPanel.cpp" line="359" />
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="362" />
-        <location filename="../app/LiveChartsPanel.cpp" line="366" />
+        <location filename="../app/LiveChartsPanel.cpp" line="367" />
+        <location filename="../app/LiveChartsPanel.cpp" line="371" />
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="363" />
+        <location filename="../app/LiveChartsPanel.cpp" line="368" />
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="379" />
+        <location filename="../app/LiveChartsPanel.cpp" line="384" />
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="380" />
+        <location filename="../app/LiveChartsPanel.cpp" line="385" />
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="381" />
+        <location filename="../app/LiveChartsPanel.cpp" line="386" />
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="382" />
+        <location filename="../app/LiveChartsPanel.cpp" line="387" />
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="383" />
+        <location filename="../app/LiveChartsPanel.cpp" line="388" />
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="386" />
+        <location filename="../app/LiveChartsPanel.cpp" line="391" />
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="386" />
+        <location filename="../app/LiveChartsPanel.cpp" line="391" />
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="388" />
+        <location filename="../app/LiveChartsPanel.cpp" line="393" />
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="390" />
+        <location filename="../app/LiveChartsPanel.cpp" line="395" />
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391" />
+        <location filename="../app/LiveChartsPanel.cpp" line="396" />
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="392" />
+        <location filename="../app/LiveChartsPanel.cpp" line="397" />
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="393" />
+        <location filename="../app/LiveChartsPanel.cpp" line="398" />
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="394" />
+        <location filename="../app/LiveChartsPanel.cpp" line="399" />
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395" />
+        <location filename="../app/LiveChartsPanel.cpp" line="400" />
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="396" />
+        <location filename="../app/LiveChartsPanel.cpp" line="401" />
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="397" />
+        <location filename="../app/LiveChartsPanel.cpp" line="402" />
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -595,40 +618,40 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="86" />
+        <location filename="../app/MainWindow.cpp" line="87" />
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="96" />
-        <location filename="../app/MainWindow.cpp" line="295" />
+        <location filename="../app/MainWindow.cpp" line="97" />
+        <location filename="../app/MainWindow.cpp" line="299" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="167" />
-        <location filename="../app/MainWindow.cpp" line="228" />
+        <location filename="../app/MainWindow.cpp" line="171" />
+        <location filename="../app/MainWindow.cpp" line="232" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="168" />
+        <location filename="../app/MainWindow.cpp" line="172" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="179" />
-        <location filename="../app/MainWindow.cpp" line="241" />
+        <location filename="../app/MainWindow.cpp" line="183" />
+        <location filename="../app/MainWindow.cpp" line="245" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="180" />
+        <location filename="../app/MainWindow.cpp" line="184" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="229" />
+        <location filename="../app/MainWindow.cpp" line="233" />
         <source>The session could not be opened.
 
 %1</source>
@@ -637,132 +660,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="234" />
+        <location filename="../app/MainWindow.cpp" line="238" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="246" />
+        <location filename="../app/MainWindow.cpp" line="250" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="282" />
+        <location filename="../app/MainWindow.cpp" line="286" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="283" />
+        <location filename="../app/MainWindow.cpp" line="287" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="284" />
+        <location filename="../app/MainWindow.cpp" line="288" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="285" />
+        <location filename="../app/MainWindow.cpp" line="289" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="287" />
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="288" />
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="289" />
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="294" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291" />
+        <location filename="../app/MainWindow.cpp" line="295" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292" />
+        <location filename="../app/MainWindow.cpp" line="296" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293" />
+        <location filename="../app/MainWindow.cpp" line="297" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294" />
+        <location filename="../app/MainWindow.cpp" line="298" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296" />
+        <location filename="../app/MainWindow.cpp" line="300" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="297" />
+        <location filename="../app/MainWindow.cpp" line="301" />
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298" />
+        <location filename="../app/MainWindow.cpp" line="302" />
+        <source>Rig</source>
+        <translation>實機</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="303" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="299" />
+        <location filename="../app/MainWindow.cpp" line="304" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300" />
+        <location filename="../app/MainWindow.cpp" line="305" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302" />
+        <location filename="../app/MainWindow.cpp" line="307" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="317" />
+        <location filename="../app/MainWindow.cpp" line="322" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="329" />
+        <location filename="../app/MainWindow.cpp" line="334" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="331" />
+        <location filename="../app/MainWindow.cpp" line="336" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="335" />
+        <location filename="../app/MainWindow.cpp" line="340" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="338" />
+        <location filename="../app/MainWindow.cpp" line="343" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -992,6 +1020,176 @@
         <location filename="../app/RecordingWorker.cpp" line="122" />
         <source>Writing the recording to %1 failed: %2</source>
         <translation>把錄製寫入 %1 失敗：%2</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::RigPanel</name>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="143" />
+        <source>Open floor calibration</source>
+        <translation>開啟地面校準</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="144" />
+        <location filename="../app/RigPanel.cpp" line="151" />
+        <source>Calibrations (*.json)</source>
+        <translation>校準 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="150" />
+        <source>Save floor calibration</source>
+        <translation>儲存地面校準</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="165" />
+        <location filename="../app/RigPanel.cpp" line="176" />
+        <source>Floor point</source>
+        <translation>地面點</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="166" />
+        <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
+        <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="177" />
+        <source>'%1' is not two numbers "x, y" in metres.</source>
+        <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="229" />
+        <source>Camera</source>
+        <translation>攝影機</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="256" />
+        <source>Choose or type the transmitter's port first.</source>
+        <translation>請先選擇或輸入發射器的連接埠。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="272" />
+        <location filename="../app/RigPanel.cpp" line="289" />
+        <source>Floor calibration</source>
+        <translation>地面校準</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="273" />
+        <source>The calibration could not be read.
+
+%1</source>
+        <translation>無法讀取校準。
+
+%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="299" />
+        <source>%1 point(s) clicked; at least 4 are needed.</source>
+        <translation>已點擊 %1 個點；至少需要 4 個。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="328" />
+        <source>Link: connected, %1 frames/s, %2 sent</source>
+        <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="331" />
+        <source>Link: not connected</source>
+        <translation>連線：未連接</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="333" />
+        <source>; failsafe (%1)</source>
+        <translation>；失效保護（%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="365" />
+        <source>Camera:</source>
+        <translation>攝影機：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="366" />
+        <source>Virtual rig (synthetic camera, simulated car)</source>
+        <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="367" />
+        <source>Camera device (V4L2)</source>
+        <translation>攝影機裝置 (V4L2)</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="368" />
+        <source>Video file</source>
+        <translation>影片檔案</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="371" />
+        <source>/dev/video0</source>
+        <translation>/dev/video0</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="372" />
+        <source>path of a video file</source>
+        <translation>影片檔案路徑</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="373" />
+        <source>Start camera</source>
+        <translation>啟動攝影機</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="374" />
+        <source>Stop camera</source>
+        <translation>停止攝影機</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="375" />
+        <source>Floor calibration: %1 points, reprojection error %2 cm</source>
+        <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="378" />
+        <source>Open...</source>
+        <translation>開啟...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="379" />
+        <source>Save...</source>
+        <translation>儲存...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="380" />
+        <source>Calibrate</source>
+        <translation>校準</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="382" />
+        <source>Click four or more floor points of known position on the camera image</source>
+        <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="383" />
+        <source>Transmitter port:</source>
+        <translation>發射器連接埠：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="384" />
+        <source>A serial port found on this computer, or type a device path</source>
+        <translation>本機找到的序列埠，或輸入裝置路徑</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="385" />
+        <source>Protocol:</source>
+        <translation>協定：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="386" />
+        <source>Connect</source>
+        <translation>連接</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="387" />
+        <source>Disconnect</source>
+        <translation>中斷連接</translation>
     </message>
 </context>
 <context>

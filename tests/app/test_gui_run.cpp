@@ -10,9 +10,11 @@
 #include "app/MainWindow.h"
 #include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
+#include "app/RigPanel.h"
 #include "app/RunController.h"
 #include "app/TaskPanel.h"
 #include "core/DemonstrationCsv.h"
+#include "devices/SyntheticCamera.h"
 #include "sim/PlantCatalog.h"
 
 #include <QAbstractButton>
@@ -455,6 +457,53 @@ class TestGuiRun : public QObject {
                  prisca::sim::PlantProfile::forPlant(
                      prisca::sim::PlantCatalog::describe(QStringLiteral("slidecar")))
                      .prisca.horizon);
+    }
+
+    void rig_virtualCameraTracksTheCarAndTheLinkConnects() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);  // the virtual rig
+        rig->startCamera();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->framesSeen() > 20, 10000);
+        QTRY_VERIFY(rig->lastPose().has_value());
+        // The simulated car stands at its (perturbed) start: within a few cm of the origin.
+        QVERIFY(std::hypot(rig->lastPose()->x, rig->lastPose()->y) < 0.1);
+        QVERIFY(!rig->virtualPort().isEmpty());
+        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
+        rig->connectLink();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected && rig->linkStatus().framesSent > 5,
+                                 5000);
+        QCOMPARE(rig->linkStatus().failsafe, prisca::devices::FailsafeReason::NoCommand);
+        QVERIFY(w.find<QLabel>("linkStatus")->text().contains("failsafe"));
+        rig->stopCamera();
+        rig->disconnectLink();
+        QTRY_VERIFY(!rig->linkStatus().connected);
+    }
+
+    void rig_calibrationByClicksSavedAndBadFilesRefused() {
+        QTemporaryDir dir;
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        const prisca::devices::FloorCalibration truth = prisca::devices::syntheticCeilingCamera();
+        // Four clicks on points whose floor position the operator knows.
+        for (const auto& floor :
+             {QPointF(0.0, 0.0), QPointF(3.0, 0.0), QPointF(3.0, 1.5), QPointF(0.0, 1.5)}) {
+            const cv::Point2d image = truth.toImage({floor.x(), floor.y()});
+            rig->addCalibrationPoint(QPointF(image.x, image.y), floor);
+        }
+        QCOMPARE(rig->calibration().points.size(), size_t(4));
+        QVERIFY(rig->calibration().rmsMetres < 1e-6);
+        QVERIFY(w.find<QLabel>("calibrationInfo")->text().contains("4 points"));
+        QVERIFY(rig->saveCalibration(dir.filePath("cal.json")));
+        QFile bad(dir.filePath("bad.json"));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("{\"homography\": \"no\"}");
+        bad.close();
+        const QString text = answerMessageBox(
+            this, [&] { QVERIFY(!rig->loadCalibration(dir.filePath("bad.json"))); });
+        QVERIFY2(text.contains("bad.json") && text.contains("homography"), qPrintable(text));
+        QCOMPARE(rig->calibration().points.size(), size_t(4));  // unchanged
+        QVERIFY(rig->loadCalibration(dir.filePath("cal.json")));
     }
 
     void badFiles_getAClearMessageAndChangeNothing() {

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "devices/FloorCalibration.h"
+#include "devices/LedTracker.h"
+
+#include <QImage>
+#include <QPointF>
+#include <QVector>
+#include <QWidget>
+
+#include <optional>
+
+namespace prisca::app {
+
+/// The live camera image with what the rig knows drawn over it through the floor calibration:
+/// the tracked pose (the LED triangle and a heading arrow, or "no pose"), the desired path and
+/// the parking lot, and the calibration points. In calibration mode a click reports the image
+/// point under the cursor (pixels of the camera image, whatever the widget's size).
+class CameraView : public QWidget {
+    Q_OBJECT
+  public:
+    explicit CameraView(QWidget* parent = nullptr);
+
+    void setFrame(const QImage& image, const std::optional<devices::PlanarPose>& pose);
+    void setCalibration(const devices::FloorCalibration& calibration);
+    /// The demonstration's path and lot on the floor [m] (x, y) and the lot's heading [rad].
+    void setTask(const QVector<QPointF>& path, const QPointF& lot, double lotHeading);
+    void setCalibrating(bool on);
+    bool isCalibrating() const { return calibrating_; }
+
+    QSize sizeHint() const override { return {640, 480}; }
+
+  signals:
+    /// In calibration mode: the operator clicked this image point [px].
+    void imagePointClicked(const QPointF& image);
+
+  protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+
+  private:
+    QRectF imageRect() const;
+    QPointF toWidget(const cv::Point2d& imagePoint) const;
+
+    QImage image_;
+    std::optional<devices::PlanarPose> pose_;
+    devices::FloorCalibration calibration_;
+    bool hasCalibration_ = false;
+    QVector<QPointF> path_;
+    QPointF lot_;
+    double lotHeading_ = 0.0;
+    bool calibrating_ = false;
+};
+
+}  // namespace prisca::app

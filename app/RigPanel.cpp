@@ -1,0 +1,393 @@
+#include "app/RigPanel.h"
+
+#include "app/CameraView.h"
+#include "app/LabSession.h"
+#include "app/VirtualCar.h"
+#include "devices/LedTracker.h"
+#include "devices/SyntheticCamera.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSerialPortInfo>
+#include <QSettings>
+#include <QVBoxLayout>
+
+namespace prisca::app {
+
+namespace {
+
+QImage toImage(const cv::Mat& m) {
+    if (m.type() == CV_8UC1) {
+        return QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_Grayscale8)
+            .copy();
+    }
+    if (m.type() == CV_8UC3) {
+        return QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888)
+            .copy();
+    }
+    return {};
+}
+
+}  // namespace
+
+RigPanel::RigPanel(LabSession& session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      shared_(std::make_shared<Shared>()),
+      view_(new CameraView(this)),
+      sourceLabel_(new QLabel(this)),
+      source_(new QComboBox(this)),
+      sourcePath_(new QLineEdit(this)),
+      startCamera_(new QPushButton(this)),
+      stopCamera_(new QPushButton(this)),
+      calibrationInfo_(new QLabel(this)),
+      loadCalibration_(new QPushButton(this)),
+      saveCalibration_(new QPushButton(this)),
+      calibrate_(new QPushButton(this)),
+      portLabel_(new QLabel(this)),
+      port_(new QComboBox(this)),
+      protocolLabel_(new QLabel(this)),
+      protocol_(new QComboBox(this)),
+      connect_(new QPushButton(this)),
+      disconnect_(new QPushButton(this)),
+      linkInfo_(new QLabel(this)) {
+    setObjectName(QStringLiteral("rigPanel"));
+    source_->setObjectName(QStringLiteral("cameraSource"));
+    sourcePath_->setObjectName(QStringLiteral("cameraPath"));
+    startCamera_->setObjectName(QStringLiteral("startCamera"));
+    stopCamera_->setObjectName(QStringLiteral("stopCamera"));
+    calibrate_->setObjectName(QStringLiteral("calibrate"));
+    calibrate_->setCheckable(true);
+    port_->setObjectName(QStringLiteral("linkPort"));
+    port_->setEditable(true);
+    protocol_->setObjectName(QStringLiteral("linkProtocol"));
+    connect_->setObjectName(QStringLiteral("connectLink"));
+    disconnect_->setObjectName(QStringLiteral("disconnectLink"));
+    linkInfo_->setObjectName(QStringLiteral("linkStatus"));
+    calibrationInfo_->setObjectName(QStringLiteral("calibrationInfo"));
+    for (int i = 0; i < 3; ++i) {
+        source_->addItem(QString(), i);
+    }
+    for (devices::RcProtocol p : {devices::RcProtocol::Crsf, devices::RcProtocol::Sbus,
+                                  devices::RcProtocol::Multiprotocol}) {
+        protocol_->addItem(devices::protocolName(p).toUpper(), static_cast<int>(p));
+    }
+    linkInfo_->setWordWrap(true);
+    calibrationInfo_->setWordWrap(true);
+
+    QSettings settings;
+    source_->setCurrentIndex(settings.value("rig/source", 0).toInt());
+    sourcePath_->setText(settings.value("rig/path", QStringLiteral("/dev/video0")).toString());
+    protocol_->setCurrentIndex(settings.value("rig/protocol", 0).toInt());
+
+    auto* form = new QFormLayout;
+    form->addRow(sourceLabel_, source_);
+    form->addRow(QString(), sourcePath_);
+    auto* cameraButtons = new QHBoxLayout;
+    cameraButtons->addWidget(startCamera_);
+    cameraButtons->addWidget(stopCamera_);
+    auto* calibrationButtons = new QHBoxLayout;
+    calibrationButtons->addWidget(loadCalibration_);
+    calibrationButtons->addWidget(saveCalibration_);
+    calibrationButtons->addWidget(calibrate_);
+    auto* linkForm = new QFormLayout;
+    linkForm->addRow(portLabel_, port_);
+    linkForm->addRow(protocolLabel_, protocol_);
+    auto* linkButtons = new QHBoxLayout;
+    linkButtons->addWidget(connect_);
+    linkButtons->addWidget(disconnect_);
+    auto* controls = new QVBoxLayout;
+    controls->addLayout(form);
+    controls->addLayout(cameraButtons);
+    controls->addWidget(calibrationInfo_);
+    controls->addLayout(calibrationButtons);
+    controls->addLayout(linkForm);
+    controls->addLayout(linkButtons);
+    controls->addWidget(linkInfo_);
+    controls->addStretch(1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(view_, 3);
+    layout->addLayout(controls, 2);
+
+    // The camera thread tracks every frame; the screen gets a thinned copy with the pose.
+    camera_.setConsumer([shared = shared_, tracker = std::make_shared<devices::LedTracker>()](
+                            const devices::CameraFrame& frame) {
+        devices::FloorCalibration calibration;
+        {
+            std::lock_guard<std::mutex> lock(shared->mutex);
+            calibration = shared->calibration;
+        }
+        const devices::TrackResult r = tracker->track(frame.image, calibration);
+        std::lock_guard<std::mutex> lock(shared->mutex);
+        shared->pose = r.pose;
+    });
+    connect(&camera_, &devices::Camera::frameReady, this, &RigPanel::showFrame);
+    connect(&camera_, &devices::Camera::failed, this,
+            [this](const QString& message) { linkInfo_->setText(message); });
+    connect(&link_, &devices::TransmitterLink::statusChanged, this, &RigPanel::showLinkStatus);
+    connect(startCamera_, &QPushButton::clicked, this, &RigPanel::startCamera);
+    connect(stopCamera_, &QPushButton::clicked, this, &RigPanel::stopCamera);
+    connect(connect_, &QPushButton::clicked, this, &RigPanel::connectLink);
+    connect(disconnect_, &QPushButton::clicked, this, &RigPanel::disconnectLink);
+    connect(source_, &QComboBox::currentIndexChanged, this, &RigPanel::retranslateUi);
+    connect(loadCalibration_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open floor calibration"),
+                                                          QString(), tr("Calibrations (*.json)"));
+        if (!path.isEmpty()) {
+            loadCalibration(path);
+        }
+    });
+    connect(saveCalibration_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save floor calibration"),
+                                                          QString(), tr("Calibrations (*.json)"));
+        if (!path.isEmpty()) {
+            saveCalibration(path);
+        }
+    });
+    connect(calibrate_, &QPushButton::toggled, this, [this](bool on) {
+        if (on) {
+            clicked_.clear();
+        }
+        view_->setCalibrating(on);
+    });
+    connect(view_, &CameraView::imagePointClicked, this, [this](const QPointF& image) {
+        bool ok = false;
+        const QString text = QInputDialog::getText(
+            this, tr("Floor point"),
+            tr("Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):"),
+            QLineEdit::Normal, QString(), &ok);
+        if (!ok) {
+            return;
+        }
+        const QStringList parts = text.split(QLatin1Char(','));
+        bool okX = false, okY = false;
+        const double x = parts.value(0).trimmed().toDouble(&okX);
+        const double y = parts.value(1).trimmed().toDouble(&okY);
+        if (parts.size() != 2 || !okX || !okY) {
+            QMessageBox::warning(this, tr("Floor point"),
+                                 tr("'%1' is not two numbers \"x, y\" in metres.").arg(text));
+            return;
+        }
+        addCalibrationPoint(image, QPointF(x, y));
+    });
+    connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
+
+    // Until the operator calibrates, the synthetic camera's own calibration.
+    calibration_ = devices::syntheticCeilingCamera();
+    shared_->calibration = calibration_;
+    view_->setCalibration(calibration_);
+    refreshPorts();
+    retranslateUi();
+    showTask();
+    showLinkStatus(linkStatus_);
+}
+
+RigPanel::~RigPanel() {
+    camera_.stop();
+    disconnectLink();
+}
+
+void RigPanel::refreshPorts() {
+    const QString current = port_->currentText();
+    port_->clear();
+    if (car_) {
+        port_->addItem(car_->portPath());
+    }
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
+        port_->addItem(info.systemLocation());
+    }
+    port_->setEditText(current.isEmpty() ? QSettings().value("rig/port").toString() : current);
+}
+
+QString RigPanel::virtualPort() const {
+    return car_ ? car_->portPath() : QString();
+}
+
+void RigPanel::startCamera() {
+    if (camera_.isRunning()) {
+        return;
+    }
+    const auto source = static_cast<Source>(source_->currentData().toInt());
+    QSettings().setValue("rig/source", source_->currentIndex());
+    QSettings().setValue("rig/path", sourcePath_->text());
+    std::unique_ptr<devices::CameraSource> camera;
+    if (source == Source::Virtual) {
+        if (!car_) {
+            auto car = std::make_shared<VirtualCar>(devices::RcProtocol::Crsf,
+                                                    devices::ChannelMap::car(), 1, 1.0);
+            QString error;
+            if (!car->open(&error)) {
+                QMessageBox::warning(this, tr("Camera"), error);
+                return;
+            }
+            car_ = car;
+            refreshPorts();
+            port_->setEditText(car_->portPath());
+        }
+        car_->reset(1);
+        camera = devices::makeSyntheticSource(
+            [car = car_](double t) { return std::optional<devices::PlanarPose>(car->poseAt(t)); },
+            devices::syntheticCeilingCamera(), {}, 40.0);
+    } else if (source == Source::Device) {
+        devices::V4l2Settings settings;
+        settings.device = sourcePath_->text();
+        camera = devices::makeV4l2Source(settings);
+    } else {
+        camera = devices::makeVideoFileSource(sourcePath_->text(), true);
+    }
+    camera_.start(std::shared_ptr<devices::CameraSource>(std::move(camera)));
+}
+
+void RigPanel::stopCamera() {
+    camera_.stop();
+}
+
+void RigPanel::connectLink() {
+    devices::LinkSettings settings;
+    settings.port = port_->currentText().trimmed();
+    if (settings.port.isEmpty()) {
+        linkInfo_->setText(tr("Choose or type the transmitter's port first."));
+        return;
+    }
+    settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
+    settings.failsafe = devices::ChannelMap::car().failsafe();
+    QSettings().setValue("rig/port", settings.port);
+    QSettings().setValue("rig/protocol", protocol_->currentIndex());
+    link_.start(settings);
+}
+
+void RigPanel::disconnectLink() {
+    link_.stop();
+}
+
+bool RigPanel::loadCalibration(const QString& path) {
+    QString error;
+    const auto loaded = devices::FloorCalibration::load(path, &error);
+    if (!loaded) {
+        QMessageBox::warning(this, tr("Floor calibration"),
+                             tr("The calibration could not be read.\n\n%1").arg(error));
+        return false;
+    }
+    calibration_ = *loaded;
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->calibration = calibration_;
+    }
+    view_->setCalibration(calibration_);
+    retranslateUi();
+    return true;
+}
+
+bool RigPanel::saveCalibration(const QString& path) {
+    QString error;
+    if (!calibration_.save(path, &error)) {
+        QMessageBox::warning(this, tr("Floor calibration"), error);
+        return false;
+    }
+    return true;
+}
+
+void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
+    clicked_.push_back({{image.x(), image.y()}, {floor.x(), floor.y()}});
+    if (clicked_.size() < 4) {
+        calibrationInfo_->setText(
+            tr("%1 point(s) clicked; at least 4 are needed.").arg(clicked_.size()));
+        return;
+    }
+    QString error;
+    const auto fit = devices::FloorCalibration::fit(clicked_, &error);
+    if (!fit) {
+        calibrationInfo_->setText(error);
+        return;
+    }
+    calibration_ = *fit;
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->calibration = calibration_;
+    }
+    view_->setCalibration(calibration_);
+    retranslateUi();
+}
+
+std::optional<devices::PlanarPose> RigPanel::lastPose() const {
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    return shared_->pose;
+}
+
+void RigPanel::showFrame(const devices::CameraFrame& frame) {
+    view_->setFrame(toImage(frame.image), lastPose());
+}
+
+void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
+    linkStatus_ = status;
+    QString text = status.connected ? tr("Link: connected, %1 frames/s, %2 sent")
+                                          .arg(status.measuredRateHz, 0, 'f', 0)
+                                          .arg(status.framesSent)
+                                    : tr("Link: not connected");
+    if (status.connected && status.failsafe != devices::FailsafeReason::None) {
+        text += tr("; failsafe (%1)").arg(devices::failsafeReasonText(status.failsafe));
+    }
+    if (!status.lastError.isEmpty()) {
+        text += QStringLiteral("\n") + status.lastError;
+    }
+    linkInfo_->setText(text);
+}
+
+void RigPanel::showTask() {
+    const auto demo = session_.demonstration();
+    const auto& pose = session_.profile().info.pose;
+    if (!demo || !pose || demo->length() == 0) {
+        view_->setTask({}, {}, 0.0);
+        return;
+    }
+    QVector<QPointF> path;
+    for (int k = 0; k < demo->length(); ++k) {
+        path.push_back({demo->states(k, pose->x), demo->states(k, pose->y)});
+    }
+    const int last = demo->length() - 1;
+    view_->setTask(path, {demo->states(last, pose->x), demo->states(last, pose->y)},
+                   demo->states(last, pose->heading));
+}
+
+void RigPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+    }
+    QWidget::changeEvent(event);
+}
+
+void RigPanel::retranslateUi() {
+    sourceLabel_->setText(tr("Camera:"));
+    source_->setItemText(0, tr("Virtual rig (synthetic camera, simulated car)"));
+    source_->setItemText(1, tr("Camera device (V4L2)"));
+    source_->setItemText(2, tr("Video file"));
+    const auto source = static_cast<Source>(source_->currentData().toInt());
+    sourcePath_->setEnabled(source != Source::Virtual);
+    sourcePath_->setPlaceholderText(source == Source::Device ? tr("/dev/video0")
+                                                             : tr("path of a video file"));
+    startCamera_->setText(tr("Start camera"));
+    stopCamera_->setText(tr("Stop camera"));
+    calibrationInfo_->setText(tr("Floor calibration: %1 points, reprojection error %2 cm")
+                                  .arg(calibration_.points.size())
+                                  .arg(calibration_.rmsMetres * 100.0, 0, 'f', 2));
+    loadCalibration_->setText(tr("Open..."));
+    saveCalibration_->setText(tr("Save..."));
+    calibrate_->setText(tr("Calibrate"));
+    calibrate_->setToolTip(
+        tr("Click four or more floor points of known position on the camera image"));
+    portLabel_->setText(tr("Transmitter port:"));
+    port_->setToolTip(tr("A serial port found on this computer, or type a device path"));
+    protocolLabel_->setText(tr("Protocol:"));
+    connect_->setText(tr("Connect"));
+    disconnect_->setText(tr("Disconnect"));
+}
+
+}  // namespace prisca::app

@@ -1,0 +1,99 @@
+#pragma once
+
+#include "devices/CameraWorker.h"
+#include "devices/FloorCalibration.h"
+#include "devices/TransmitterLink.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace prisca::app {
+
+class CameraView;
+class LabSession;
+class VirtualCar;
+
+/// The real rig (or the virtual one): the camera (a V4L2 device, a video file, or the virtual
+/// rig's synthetic camera over a simulated car driven through the link) with the tracked pose,
+/// the lot and the desired path drawn over the live image; the floor calibration (load, save,
+/// or click four or more floor points of known position); the transmitter link (port chooser
+/// listing real ports plus a typed path, protocol, connect, status with rate and errors).
+/// The camera and the link each run on their own thread.
+class RigPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit RigPanel(LabSession& session, QWidget* parent = nullptr);
+    ~RigPanel() override;
+
+    /// Camera sources offered.
+    enum class Source { Virtual, Device, Video };
+    void startCamera();
+    void stopCamera();
+    void connectLink();
+    void disconnectLink();
+    /// Loads a calibration file; a bad one gets a message box and changes nothing.
+    bool loadCalibration(const QString& path);
+    bool saveCalibration(const QString& path);
+    /// Adds a calibration point (image px, floor m); fits once there are four or more.
+    void addCalibrationPoint(const QPointF& image, const QPointF& floor);
+
+    const devices::FloorCalibration& calibration() const { return calibration_; }
+    std::optional<devices::PlanarPose> lastPose() const;
+    long long framesSeen() const { return camera_.framesDelivered(); }
+    const devices::LinkStatus& linkStatus() const { return linkStatus_; }
+    /// The virtual car's port (empty unless the virtual rig runs).
+    QString virtualPort() const;
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void retranslateUi();
+    void refreshPorts();
+    void showFrame(const devices::CameraFrame& frame);
+    void showLinkStatus(const devices::LinkStatus& status);
+    void showTask();
+
+    LabSession& session_;
+    devices::Camera camera_;
+    devices::TransmitterLink link_;
+    std::shared_ptr<VirtualCar> car_;
+    devices::FloorCalibration calibration_;
+    std::vector<devices::CalibrationPoint> clicked_;
+    devices::LinkStatus linkStatus_;
+    /// Shared with the camera thread: the calibration it tracks with and the pose it found.
+    struct Shared {
+        std::mutex mutex;
+        devices::FloorCalibration calibration;
+        std::optional<devices::PlanarPose> pose;
+    };
+    std::shared_ptr<Shared> shared_;
+
+    CameraView* view_;
+    QLabel* sourceLabel_;
+    QComboBox* source_;
+    QLineEdit* sourcePath_;
+    QPushButton* startCamera_;
+    QPushButton* stopCamera_;
+    QLabel* calibrationInfo_;
+    QPushButton* loadCalibration_;
+    QPushButton* saveCalibration_;
+    QPushButton* calibrate_;
+    QLabel* portLabel_;
+    QComboBox* port_;
+    QLabel* protocolLabel_;
+    QComboBox* protocol_;
+    QPushButton* connect_;
+    QPushButton* disconnect_;
+    QLabel* linkInfo_;
+};
+
+}  // namespace prisca::app
