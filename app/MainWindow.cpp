@@ -150,6 +150,9 @@ void MainWindow::createPanels() {
     // E-STOP ends a recording too (the operator may be driving when it is pressed).
     connect(runPanel_, &RunPanel::emergencyStopRequested, recordPanel_,
             &RecordPanel::emergencyStop);
+    // ... and on the rig the transmitter goes to failsafe, latched until E-STOP is reset.
+    connect(runPanel_, &RunPanel::emergencyStopRequested, rigPanel_, &RigPanel::emergencyStop);
+    connect(runPanel_, &RunPanel::emergencyStopReset, rigPanel_, &RigPanel::resetEmergencyStop);
     connect(run_, &RunController::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
 }
 
@@ -206,6 +209,7 @@ void MainWindow::createMenus() {
     connect(emergencyAction_, &QAction::triggered, this, [this] {
         run_->emergencyStop();
         recordPanel_->emergencyStop();
+        rigPanel_->emergencyStop();
     });
 
     viewMenu_ = menuBar()->addMenu(QString());

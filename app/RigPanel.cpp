@@ -5,6 +5,7 @@
 #include "app/VirtualCar.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
+#include "sim/ControllerFactory.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -19,6 +20,8 @@
 #include <QSerialPortInfo>
 #include <QSettings>
 #include <QVBoxLayout>
+
+#include <cmath>
 
 namespace prisca::app {
 
@@ -58,7 +61,10 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       protocol_(new QComboBox(this)),
       connect_(new QPushButton(this)),
       disconnect_(new QPushButton(this)),
-      linkInfo_(new QLabel(this)) {
+      linkInfo_(new QLabel(this)),
+      runTrial_(new QPushButton(this)),
+      stopTrial_(new QPushButton(this)),
+      trialInfo_(new QLabel(this)) {
     setObjectName(QStringLiteral("rigPanel"));
     source_->setObjectName(QStringLiteral("cameraSource"));
     sourcePath_->setObjectName(QStringLiteral("cameraPath"));
@@ -81,6 +87,10 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         protocol_->addItem(devices::protocolName(p).toUpper(), static_cast<int>(p));
     }
     linkInfo_->setWordWrap(true);
+    runTrial_->setObjectName(QStringLiteral("runOnRig"));
+    stopTrial_->setObjectName(QStringLiteral("stopOnRig"));
+    trialInfo_->setObjectName(QStringLiteral("rigTrialInfo"));
+    trialInfo_->setWordWrap(true);
     calibrationInfo_->setWordWrap(true);
 
     QSettings settings;
@@ -112,22 +122,34 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     controls->addLayout(linkForm);
     controls->addLayout(linkButtons);
     controls->addWidget(linkInfo_);
+    auto* trialButtons = new QHBoxLayout;
+    trialButtons->addWidget(runTrial_);
+    trialButtons->addWidget(stopTrial_);
+    controls->addLayout(trialButtons);
+    controls->addWidget(trialInfo_);
     controls->addStretch(1);
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(view_, 3);
     layout->addLayout(controls, 2);
 
     // The camera thread tracks every frame; the screen gets a thinned copy with the pose.
-    camera_.setConsumer([shared = shared_, tracker = std::make_shared<devices::LedTracker>()](
+    camera_.setConsumer([this, shared = shared_, tracker = std::make_shared<devices::LedTracker>()](
                             const devices::CameraFrame& frame) {
-        devices::FloorCalibration calibration;
-        {
-            std::lock_guard<std::mutex> lock(shared->mutex);
-            calibration = shared->calibration;
-        }
-        const devices::TrackResult r = tracker->track(frame.image, calibration);
         std::lock_guard<std::mutex> lock(shared->mutex);
-        shared->pose = r.pose;
+        if (shared->running && shared->loop) {
+            // The closed loop: pose -> controller -> link, on this thread, no queue between.
+            const devices::RigStep step = shared->loop->onFrame(frame);
+            shared->pose = step.pose;
+            if (step.pose) {
+                shared->lastTrackedPose = step.pose;
+            }
+            if (--shared->framesLeft <= 0 || step.fault) {
+                shared->running = false;
+                QMetaObject::invokeMethod(this, &RigPanel::finishTrial, Qt::QueuedConnection);
+            }
+            return;
+        }
+        shared->pose = tracker->track(frame.image, shared->calibration).pose;
     });
     connect(&camera_, &devices::Camera::frameReady, this, &RigPanel::showFrame);
     connect(&camera_, &devices::Camera::failed, this,
@@ -179,6 +201,8 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         addCalibrationPoint(image, QPointF(x, y));
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
+    connect(runTrial_, &QPushButton::clicked, this, &RigPanel::runTrial);
+    connect(stopTrial_, &QPushButton::clicked, this, &RigPanel::stopTrial);
 
     // Until the operator calibrates, the synthetic camera's own calibration.
     calibration_ = devices::syntheticCeilingCamera();
@@ -191,8 +215,115 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
 }
 
 RigPanel::~RigPanel() {
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->running = false;
+    }
     camera_.stop();
     disconnectLink();
+}
+
+bool RigPanel::runTrial() {
+    if (isRunning()) {
+        return false;
+    }
+    QString missing;
+    if (!camera_.isRunning()) {
+        missing = tr("Start the camera first.");
+    } else if (!linkStatus_.connected) {
+        missing = tr("Connect the transmitter link first.");
+    } else if (!session_.profile().info.pose) {
+        missing = tr("The rig drives a car: choose the slide-car as the target.");
+    } else if (session_.method() == QLatin1String("pd-selected") ||
+               session_.method() == QLatin1String("pegasus")) {
+        missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
+                      .arg(session_.method());
+    }
+    if (!missing.isEmpty()) {
+        trialInfo_->setText(missing);
+        return false;
+    }
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    // One loop per method: learners keep what they learnt from trial to trial (warm start).
+    if (!shared_->loop || loopMethod_ != session_.method()) {
+        auto controller = sim::ControllerFactory::create(
+            session_.method(), session_.profile(), session_.demonstration(), session_.fit().b);
+        shared_->loop = std::make_unique<devices::RigLoop>(calibration_, devices::TrackerSettings{},
+                                                           std::move(controller),
+                                                           devices::ChannelMap::car(), link_);
+        loopMethod_ = session_.method();
+        trials_ = 0;
+    }
+    shared_->loop->startTrial(trials_ == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart);
+    if (car_) {
+        car_->requestReset(static_cast<std::uint64_t>(trials_ + 1));  // the car back at the start
+    }
+    const auto demo = session_.demonstration();
+    const double seconds = demo->length() * demo->dt + session_.profile().settleTime;
+    shared_->framesLeft = static_cast<int>(std::lround(seconds * 40.0));
+    shared_->lastTrackedPose.reset();
+    shared_->running = true;
+    ++trials_;
+    trialInfo_->setText(tr("Trial %1 running...").arg(trials_));
+    runTrial_->setEnabled(false);
+    return true;
+}
+
+void RigPanel::stopTrial() {
+    bool was = false;
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        was = shared_->running;
+        shared_->running = false;
+    }
+    if (was) {
+        finishTrial();
+    }
+}
+
+void RigPanel::emergencyStop() {
+    link_.emergencyStop();  // failsafe from the link's next frame, latched
+    stopTrial();
+    trialInfo_->setText(tr("E-STOP: the transmitter sends failsafe until E-STOP is reset."));
+}
+
+void RigPanel::resetEmergencyStop() {
+    link_.resetEmergencyStop();
+}
+
+bool RigPanel::isRunning() const {
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    return shared_->running;
+}
+
+QString RigPanel::lastResult() const {
+    return lastResult_;
+}
+
+void RigPanel::finishTrial() {
+    std::optional<devices::PlanarPose> last;
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        last = shared_->lastTrackedPose;
+    }
+    const auto demo = session_.demonstration();
+    const auto& pose = session_.profile().info.pose;
+    if (last && demo && pose) {
+        const int end = demo->length() - 1;
+        const double miss =
+            std::hypot(last->x - demo->states(end, pose->x), last->y - demo->states(end, pose->y));
+        const double heading =
+            std::abs(std::remainder(last->heading - demo->states(end, pose->heading), 2 * M_PI));
+        lastResult_ = tr("Trial %1: parked %2 cm from the lot, heading off by %3°")
+                          .arg(trials_)
+                          .arg(miss * 100.0, 0, 'f', 1)
+                          .arg(heading * 180.0 / M_PI, 0, 'f', 1);
+    } else {
+        lastResult_ = tr("Trial %1 ended without a pose").arg(trials_);
+    }
+    trialInfo_->setText(lastResult_);
+    runTrial_->setEnabled(true);
+    emit trialFinished(lastResult_);
 }
 
 void RigPanel::refreshPorts() {
@@ -259,6 +390,7 @@ void RigPanel::connectLink() {
     }
     settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
     settings.failsafe = devices::ChannelMap::car().failsafe();
+    settings.sendOnCommand = true;  // a camera frame's command goes out at once
     QSettings().setValue("rig/port", settings.port);
     QSettings().setValue("rig/protocol", protocol_->currentIndex());
     link_.start(settings);
@@ -388,6 +520,11 @@ void RigPanel::retranslateUi() {
     protocolLabel_->setText(tr("Protocol:"));
     connect_->setText(tr("Connect"));
     disconnect_->setText(tr("Disconnect"));
+    runTrial_->setText(tr("Run a trial on the rig"));
+    runTrial_->setToolTip(
+        tr("The session's method drives the car through the link, with the "
+           "camera's pose as its state"));
+    stopTrial_->setText(tr("Stop the trial"));
 }
 
 }  // namespace prisca::app

@@ -2,6 +2,7 @@
 
 #include "devices/CameraWorker.h"
 #include "devices/FloorCalibration.h"
+#include "devices/RigLoop.h"
 #include "devices/TransmitterLink.h"
 
 #include <QWidget>
@@ -52,6 +53,23 @@ class RigPanel : public QWidget {
     /// The virtual car's port (empty unless the virtual rig runs).
     QString virtualPort() const;
 
+    /// One trial of the session's method on the rig: camera pose -> controller -> link, for the
+    /// demonstration's length plus the settling time. Needs the camera running and the link
+    /// connected (a message says which is missing). Learners keep learning from trial to trial.
+    bool runTrial();
+    /// Ends the trial; the link falls to failsafe once commands stop.
+    void stopTrial();
+    /// E-STOP on the rig: the trial ends and the link sends failsafe, latched until
+    /// resetEmergencyStop().
+    void emergencyStop();
+    void resetEmergencyStop();
+    bool isRunning() const;
+    /// The result line of the last trial ("parked ... cm from the lot").
+    QString lastResult() const;
+
+  signals:
+    void trialFinished(const QString& result);
+
   protected:
     void changeEvent(QEvent* event) override;
 
@@ -61,6 +79,7 @@ class RigPanel : public QWidget {
     void showFrame(const devices::CameraFrame& frame);
     void showLinkStatus(const devices::LinkStatus& status);
     void showTask();
+    void finishTrial();
 
     LabSession& session_;
     devices::Camera camera_;
@@ -74,6 +93,10 @@ class RigPanel : public QWidget {
         std::mutex mutex;
         devices::FloorCalibration calibration;
         std::optional<devices::PlanarPose> pose;
+        std::unique_ptr<devices::RigLoop> loop;  ///< the closed loop while a trial runs
+        bool running = false;
+        int framesLeft = 0;
+        std::optional<devices::PlanarPose> lastTrackedPose;  ///< the last pose seen in the trial
     };
     std::shared_ptr<Shared> shared_;
 
@@ -94,6 +117,12 @@ class RigPanel : public QWidget {
     QPushButton* connect_;
     QPushButton* disconnect_;
     QLabel* linkInfo_;
+    QPushButton* runTrial_;
+    QPushButton* stopTrial_;
+    QLabel* trialInfo_;
+    int trials_ = 0;
+    QString loopMethod_;  ///< the method the kept loop was built for
+    QString lastResult_;
 };
 
 }  // namespace prisca::app

@@ -137,8 +137,10 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         emit emergencyStopRequested();
     };
     connect(emergencyButton_, &QPushButton::pressed, this, emergency);
-    connect(resetEmergencyButton_, &QPushButton::clicked, &run_,
-            &RunController::resetEmergencyStop);
+    connect(resetEmergencyButton_, &QPushButton::clicked, this, [this] {
+        run_.resetEmergencyStop();
+        emit emergencyStopReset();
+    });
     connect(speed_, &QComboBox::currentIndexChanged, this, [this] {
         run_.setSpeed(speed_->currentData().toDouble());
         QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());

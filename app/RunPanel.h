@@ -34,6 +34,8 @@ class RunPanel : public QWidget {
     void runStarting();
     /// The operator pressed E-STOP (button, Space or Esc); sent at once, before the run reacts.
     void emergencyStopRequested();
+    /// The operator reset E-STOP.
+    void emergencyStopReset();
 
   protected:
     void changeEvent(QEvent* event) override;

@@ -69,6 +69,10 @@ void VirtualCar::readCommands() {
 }
 
 devices::PlanarPose VirtualCar::poseAt(double t) {
+    if (resetRequested_.exchange(false)) {
+        reset(resetSeed_.load());
+        time_ = t;  // the new trial starts now
+    }
     readCommands();
     const double dt = car_->timing().controlPeriod;
     while (time_ + dt <= t + 1e-9) {

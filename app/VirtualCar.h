@@ -7,6 +7,7 @@
 
 #include <QString>
 
+#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -33,8 +34,14 @@ class VirtualCar {
     devices::PlanarPose poseAt(double t);
     /// Frames decoded from the link so far.
     long long framesDecoded() const { return decoded_; }
-    /// Puts the car back at its start (a new trial), with a new seed.
+    /// Puts the car back at its start (a new trial), with a new seed. Camera thread only.
     void reset(std::uint64_t seed);
+    /// Any thread: the car goes back to its start at the next poseAt() (a new trial on the
+    /// virtual rig while the camera runs).
+    void requestReset(std::uint64_t seed) {
+        resetSeed_.store(seed);
+        resetRequested_.store(true);
+    }
 
   private:
     void readCommands();
@@ -47,6 +54,8 @@ class VirtualCar {
     Eigen::VectorXd state_;
     Eigen::VectorXd action_;
     double time_ = 0.0;
+    std::atomic<bool> resetRequested_{false};
+    std::atomic<std::uint64_t> resetSeed_{1};
     long long decoded_ = 0;
     int master_ = -1;
     int slave_ = -1;

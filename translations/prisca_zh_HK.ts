@@ -37,17 +37,17 @@
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="104" />
+        <location filename="../app/CameraView.cpp" line="105" />
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="108" />
+        <location filename="../app/CameraView.cpp" line="109" />
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="112" />
+        <location filename="../app/CameraView.cpp" line="113" />
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -624,34 +624,34 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="97" />
-        <location filename="../app/MainWindow.cpp" line="299" />
+        <location filename="../app/MainWindow.cpp" line="303" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="171" />
-        <location filename="../app/MainWindow.cpp" line="232" />
+        <location filename="../app/MainWindow.cpp" line="174" />
+        <location filename="../app/MainWindow.cpp" line="236" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="172" />
+        <location filename="../app/MainWindow.cpp" line="175" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="183" />
-        <location filename="../app/MainWindow.cpp" line="245" />
+        <location filename="../app/MainWindow.cpp" line="186" />
+        <location filename="../app/MainWindow.cpp" line="249" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="184" />
+        <location filename="../app/MainWindow.cpp" line="187" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="233" />
+        <location filename="../app/MainWindow.cpp" line="237" />
         <source>The session could not be opened.
 
 %1</source>
@@ -660,137 +660,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="238" />
+        <location filename="../app/MainWindow.cpp" line="242" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="250" />
+        <location filename="../app/MainWindow.cpp" line="254" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="286" />
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="287" />
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="288" />
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="289" />
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="294" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291" />
+        <location filename="../app/MainWindow.cpp" line="295" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292" />
+        <location filename="../app/MainWindow.cpp" line="296" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293" />
+        <location filename="../app/MainWindow.cpp" line="297" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294" />
+        <location filename="../app/MainWindow.cpp" line="298" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="295" />
+        <location filename="../app/MainWindow.cpp" line="299" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296" />
+        <location filename="../app/MainWindow.cpp" line="300" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="297" />
+        <location filename="../app/MainWindow.cpp" line="301" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298" />
+        <location filename="../app/MainWindow.cpp" line="302" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300" />
+        <location filename="../app/MainWindow.cpp" line="304" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="301" />
+        <location filename="../app/MainWindow.cpp" line="305" />
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302" />
+        <location filename="../app/MainWindow.cpp" line="306" />
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="303" />
+        <location filename="../app/MainWindow.cpp" line="307" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="304" />
+        <location filename="../app/MainWindow.cpp" line="308" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305" />
+        <location filename="../app/MainWindow.cpp" line="309" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="307" />
+        <location filename="../app/MainWindow.cpp" line="311" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="322" />
+        <location filename="../app/MainWindow.cpp" line="326" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="334" />
+        <location filename="../app/MainWindow.cpp" line="338" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="336" />
+        <location filename="../app/MainWindow.cpp" line="340" />
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="340" />
+        <location filename="../app/MainWindow.cpp" line="344" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="343" />
+        <location filename="../app/MainWindow.cpp" line="347" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1025,55 +1025,95 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="143" />
+        <location filename="../app/RigPanel.cpp" line="164" />
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="144" />
-        <location filename="../app/RigPanel.cpp" line="151" />
+        <location filename="../app/RigPanel.cpp" line="165" />
+        <location filename="../app/RigPanel.cpp" line="172" />
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="150" />
+        <location filename="../app/RigPanel.cpp" line="171" />
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="165" />
-        <location filename="../app/RigPanel.cpp" line="176" />
+        <location filename="../app/RigPanel.cpp" line="186" />
+        <location filename="../app/RigPanel.cpp" line="197" />
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="166" />
+        <location filename="../app/RigPanel.cpp" line="187" />
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="177" />
+        <location filename="../app/RigPanel.cpp" line="198" />
         <source>'%1' is not two numbers "x, y" in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="229" />
+        <location filename="../app/RigPanel.cpp" line="232" />
+        <source>Start the camera first.</source>
+        <translation>請先啟動攝影機。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="234" />
+        <source>Connect the transmitter link first.</source>
+        <translation>請先連接發射器。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="236" />
+        <source>The rig drives a car: choose the slide-car as the target.</source>
+        <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="239" />
+        <source>%1 trains offline in simulation; run it there, or choose another method.</source>
+        <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="268" />
+        <source>Trial %1 running...</source>
+        <translation>第 %1 次試驗進行中...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="288" />
+        <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
+        <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="314" />
+        <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
+        <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="319" />
+        <source>Trial %1 ended without a pose</source>
+        <translation>第 %1 次試驗結束時沒有位姿</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="356" />
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="256" />
+        <location filename="../app/RigPanel.cpp" line="385" />
         <source>Choose or type the transmitter's port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="272" />
-        <location filename="../app/RigPanel.cpp" line="289" />
+        <location filename="../app/RigPanel.cpp" line="404" />
+        <location filename="../app/RigPanel.cpp" line="421" />
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="273" />
+        <location filename="../app/RigPanel.cpp" line="405" />
         <source>The calibration could not be read.
 
 %1</source>
@@ -1082,277 +1122,292 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="299" />
+        <location filename="../app/RigPanel.cpp" line="431" />
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="328" />
+        <location filename="../app/RigPanel.cpp" line="460" />
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="331" />
+        <location filename="../app/RigPanel.cpp" line="463" />
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="333" />
+        <location filename="../app/RigPanel.cpp" line="465" />
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="365" />
+        <location filename="../app/RigPanel.cpp" line="497" />
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="366" />
+        <location filename="../app/RigPanel.cpp" line="498" />
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367" />
+        <location filename="../app/RigPanel.cpp" line="499" />
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="368" />
+        <location filename="../app/RigPanel.cpp" line="500" />
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="371" />
+        <location filename="../app/RigPanel.cpp" line="503" />
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="372" />
+        <location filename="../app/RigPanel.cpp" line="504" />
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="373" />
+        <location filename="../app/RigPanel.cpp" line="505" />
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374" />
+        <location filename="../app/RigPanel.cpp" line="506" />
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="375" />
+        <location filename="../app/RigPanel.cpp" line="507" />
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="378" />
+        <location filename="../app/RigPanel.cpp" line="510" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="379" />
+        <location filename="../app/RigPanel.cpp" line="511" />
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="380" />
+        <location filename="../app/RigPanel.cpp" line="512" />
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="382" />
+        <location filename="../app/RigPanel.cpp" line="514" />
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="383" />
+        <location filename="../app/RigPanel.cpp" line="515" />
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="384" />
+        <location filename="../app/RigPanel.cpp" line="516" />
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="385" />
+        <location filename="../app/RigPanel.cpp" line="517" />
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="386" />
+        <location filename="../app/RigPanel.cpp" line="518" />
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="387" />
+        <location filename="../app/RigPanel.cpp" line="519" />
         <source>Disconnect</source>
         <translation>中斷連接</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="520" />
+        <source>Run a trial on the rig</source>
+        <translation>在實機上運行一次試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="521" />
+        <source>The session's method drives the car through the link, with the camera's pose as its state</source>
+        <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="523" />
+        <source>Stop the trial</source>
+        <translation>停止試驗</translation>
     </message>
 </context>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="195" />
-        <location filename="../app/RunPanel.cpp" line="248" />
+        <location filename="../app/RunPanel.cpp" line="197" />
+        <location filename="../app/RunPanel.cpp" line="250" />
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="195" />
-        <location filename="../app/RunPanel.cpp" line="248" />
+        <location filename="../app/RunPanel.cpp" line="197" />
+        <location filename="../app/RunPanel.cpp" line="250" />
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197" />
+        <location filename="../app/RunPanel.cpp" line="199" />
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="199" />
+        <location filename="../app/RunPanel.cpp" line="201" />
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="229" />
+        <location filename="../app/RunPanel.cpp" line="231" />
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="230" />
+        <location filename="../app/RunPanel.cpp" line="232" />
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="231" />
+        <location filename="../app/RunPanel.cpp" line="233" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233" />
+        <location filename="../app/RunPanel.cpp" line="235" />
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235" />
+        <location filename="../app/RunPanel.cpp" line="237" />
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="237" />
+        <location filename="../app/RunPanel.cpp" line="239" />
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="241" />
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241" />
+        <location filename="../app/RunPanel.cpp" line="243" />
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243" />
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="244" />
+        <location filename="../app/RunPanel.cpp" line="246" />
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245" />
+        <location filename="../app/RunPanel.cpp" line="247" />
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246" />
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="247" />
+        <location filename="../app/RunPanel.cpp" line="249" />
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249" />
+        <location filename="../app/RunPanel.cpp" line="251" />
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="250" />
+        <location filename="../app/RunPanel.cpp" line="252" />
         <source>Reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251" />
+        <location filename="../app/RunPanel.cpp" line="253" />
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="252" />
+        <location filename="../app/RunPanel.cpp" line="254" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="254" />
+        <location filename="../app/RunPanel.cpp" line="256" />
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="255" />
+        <location filename="../app/RunPanel.cpp" line="257" />
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="258" />
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="258" />
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="258" />
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="259" />
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="259" />
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261" />
+        <location filename="../app/RunPanel.cpp" line="263" />
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261" />
+        <location filename="../app/RunPanel.cpp" line="263" />
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="262" />
+        <location filename="../app/RunPanel.cpp" line="264" />
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="262" />
+        <location filename="../app/RunPanel.cpp" line="264" />
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>

@@ -480,6 +480,41 @@ class TestGuiRun : public QObject {
         QTRY_VERIFY(!rig->linkStatus().connected);
     }
 
+    void rig_priscaParksTheVirtualCarThroughTheLinkAndEstopLatchesFailsafe() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        // Not before camera and link are up: said plainly.
+        QVERIFY(!rig->runTrial());
+        QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains("camera"));
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);
+        rig->startCamera();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->lastPose().has_value(), 10000);
+        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
+        rig->connectLink();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected, 5000);
+        QSignalSpy finished(rig, &RigPanel::trialFinished);
+        QVERIFY(rig->runTrial());
+        QVERIFY(finished.wait(20000));
+        const QString result = finished.last().at(0).toString();
+        const QRegularExpression cm(QStringLiteral("parked ([0-9.]+) cm"));
+        const QRegularExpressionMatch m = cm.match(result);
+        QVERIFY2(m.hasMatch(), qPrintable(result));
+        qInfo("virtual rig from the window: %s", qPrintable(result));
+        QVERIFY2(m.captured(1).toDouble() < 50.0, qPrintable(result));
+        // A second trial, stopped by E-STOP (Space): failsafe latched on the link.
+        QVERIFY(rig->runTrial());
+        QTest::qWait(500);
+        QTest::keyClick(&w.window, Qt::Key_Space);
+        QTRY_VERIFY(!rig->isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(rig->linkStatus().failsafe,
+                                  prisca::devices::FailsafeReason::EmergencyStop, 3000);
+        QVERIFY(rig->linkStatus().emergencyLatched);
+        w.find<QAbstractButton>("resetEmergencyButton")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!rig->linkStatus().emergencyLatched, 3000);
+        rig->stopCamera();
+        rig->disconnectLink();
+    }
+
     void rig_calibrationByClicksSavedAndBadFilesRefused() {
         QTemporaryDir dir;
         Window w;
