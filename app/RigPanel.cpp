@@ -12,6 +12,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -19,6 +20,8 @@
 #include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSettings>
+#include <QSpinBox>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -62,6 +65,10 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       connect_(new QPushButton(this)),
       disconnect_(new QPushButton(this)),
       linkInfo_(new QLabel(this)),
+      baudLabel_(new QLabel(this)),
+      baud_(new QSpinBox(this)),
+      channelTable_(new QTableWidget(this)),
+      channelProblem_(new QLabel(this)),
       runTrial_(new QPushButton(this)),
       stopTrial_(new QPushButton(this)),
       trialInfo_(new QLabel(this)) {
@@ -87,6 +94,17 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         protocol_->addItem(devices::protocolName(p).toUpper(), static_cast<int>(p));
     }
     linkInfo_->setWordWrap(true);
+    baud_->setObjectName(QStringLiteral("linkBaud"));
+    baud_->setRange(0, 4000000);
+    baud_->setSingleStep(100000);
+    channelTable_->setObjectName(QStringLiteral("channelMap"));
+    channelTable_->setColumnCount(5);
+    channelTable_->setRowCount(2);
+    channelTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    channelTable_->setMaximumHeight(90);
+    channelProblem_->setObjectName(QStringLiteral("channelProblem"));
+    channelProblem_->setStyleSheet(QStringLiteral("color: #b00020"));
+    channelProblem_->setWordWrap(true);
     runTrial_->setObjectName(QStringLiteral("runOnRig"));
     stopTrial_->setObjectName(QStringLiteral("stopOnRig"));
     trialInfo_->setObjectName(QStringLiteral("rigTrialInfo"));
@@ -97,6 +115,21 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     source_->setCurrentIndex(settings.value("rig/source", 0).toInt());
     sourcePath_->setText(settings.value("rig/path", QStringLiteral("/dev/video0")).toString());
     protocol_->setCurrentIndex(settings.value("rig/protocol", 0).toInt());
+    baud_->setValue(settings.value("rig/baud", 0).toInt());
+    // The channel map as the operator left it: "channel:trim:min:max:reversed" per control.
+    const QStringList saved = settings.value("rig/channels").toStringList();
+    for (int i = 0; i < saved.size() && i < static_cast<int>(channels_.controls.size()); ++i) {
+        const QStringList f = saved[i].split(QLatin1Char(':'));
+        if (f.size() == 5) {
+            devices::ChannelSetting s{f[0].toInt(), f[1].toDouble(), f[2].toDouble(),
+                                      f[3].toDouble(), f[4] == QLatin1String("1")};
+            devices::ChannelMap trial = channels_;
+            trial.controls[i] = s;
+            if (trial.validate().isEmpty()) {
+                channels_ = trial;
+            }
+        }
+    }
 
     auto* form = new QFormLayout;
     form->addRow(sourceLabel_, source_);
@@ -111,6 +144,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     auto* linkForm = new QFormLayout;
     linkForm->addRow(portLabel_, port_);
     linkForm->addRow(protocolLabel_, protocol_);
+    linkForm->addRow(baudLabel_, baud_);
     auto* linkButtons = new QHBoxLayout;
     linkButtons->addWidget(connect_);
     linkButtons->addWidget(disconnect_);
@@ -120,6 +154,8 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     controls->addWidget(calibrationInfo_);
     controls->addLayout(calibrationButtons);
     controls->addLayout(linkForm);
+    controls->addWidget(channelTable_);
+    controls->addWidget(channelProblem_);
     controls->addLayout(linkButtons);
     controls->addWidget(linkInfo_);
     auto* trialButtons = new QHBoxLayout;
@@ -202,6 +238,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
     connect(runTrial_, &QPushButton::clicked, this, &RigPanel::runTrial);
+    connect(channelTable_, &QTableWidget::itemChanged, this, &RigPanel::applyChannels);
     connect(stopTrial_, &QPushButton::clicked, this, &RigPanel::stopTrial);
 
     // Until the operator calibrates, the synthetic camera's own calibration.
@@ -210,6 +247,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     view_->setCalibration(calibration_);
     refreshPorts();
     retranslateUi();
+    showChannels();
     showTask();
     showLinkStatus(linkStatus_);
 }
@@ -249,8 +287,7 @@ bool RigPanel::runTrial() {
         auto controller = sim::ControllerFactory::create(
             session_.method(), session_.profile(), session_.demonstration(), session_.fit().b);
         shared_->loop = std::make_unique<devices::RigLoop>(calibration_, devices::TrackerSettings{},
-                                                           std::move(controller),
-                                                           devices::ChannelMap::car(), link_);
+                                                           std::move(controller), channels_, link_);
         loopMethod_ = session_.method();
         trials_ = 0;
     }
@@ -389,7 +426,9 @@ void RigPanel::connectLink() {
         return;
     }
     settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
-    settings.failsafe = devices::ChannelMap::car().failsafe();
+    settings.failsafe = channels_.failsafe();
+    settings.baud = baud_->value();
+    QSettings().setValue("rig/baud", baud_->value());
     settings.sendOnCommand = true;  // a camera frame's command goes out at once
     QSettings().setValue("rig/port", settings.port);
     QSettings().setValue("rig/protocol", protocol_->currentIndex());
@@ -489,6 +528,74 @@ void RigPanel::showTask() {
                    demo->states(last, pose->heading));
 }
 
+void RigPanel::showChannels() {
+    updatingChannels_ = true;
+    const QStringList names = session_.profile().info.actionNames;
+    channelTable_->setVerticalHeaderLabels({names.value(0), names.value(1)});
+    for (int row = 0; row < 2 && row < static_cast<int>(channels_.controls.size()); ++row) {
+        const devices::ChannelSetting& s = channels_.controls[row];
+        const QStringList cells = {QString::number(s.channel + 1), QString::number(s.trim),
+                                   QString::number(s.minimum), QString::number(s.maximum)};
+        for (int col = 0; col < 4; ++col) {
+            channelTable_->setItem(row, col, new QTableWidgetItem(cells[col]));
+        }
+        auto* reversed = new QTableWidgetItem;
+        reversed->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
+        reversed->setCheckState(s.reversed ? Qt::Checked : Qt::Unchecked);
+        channelTable_->setItem(row, 4, reversed);
+    }
+    updatingChannels_ = false;
+}
+
+void RigPanel::applyChannels() {
+    if (updatingChannels_) {
+        return;
+    }
+    devices::ChannelMap edited = channels_;
+    QString problem;
+    for (int row = 0; row < 2 && row < static_cast<int>(edited.controls.size()); ++row) {
+        double values[4] = {};
+        for (int col = 0; col < 4; ++col) {
+            bool ok = false;
+            const QTableWidgetItem* item = channelTable_->item(row, col);
+            values[col] = item ? item->text().toDouble(&ok) : 0.0;
+            if (!ok) {
+                problem = tr("'%1' is not a number").arg(item ? item->text() : QString());
+            }
+        }
+        devices::ChannelSetting& s = edited.controls[row];
+        s.channel = static_cast<int>(values[0]) - 1;
+        s.trim = values[1];
+        s.minimum = values[2];
+        s.maximum = values[3];
+        s.reversed =
+            channelTable_->item(row, 4) && channelTable_->item(row, 4)->checkState() == Qt::Checked;
+    }
+    if (problem.isEmpty()) {
+        problem = edited.validate();
+    }
+    channelProblem_->setText(problem);
+    if (!problem.isEmpty()) {
+        return;  // nothing half-applied
+    }
+    channels_ = edited;
+    QStringList saved;
+    for (const devices::ChannelSetting& s : channels_.controls) {
+        saved << QStringLiteral("%1:%2:%3:%4:%5")
+                     .arg(s.channel)
+                     .arg(s.trim)
+                     .arg(s.minimum)
+                     .arg(s.maximum)
+                     .arg(s.reversed ? 1 : 0);
+    }
+    QSettings().setValue("rig/channels", saved);
+    // A new map takes effect on the next trial (the loop is rebuilt with it).
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    if (!shared_->running) {
+        shared_->loop.reset();
+    }
+}
+
 void RigPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
@@ -520,6 +627,14 @@ void RigPanel::retranslateUi() {
     protocolLabel_->setText(tr("Protocol:"));
     connect_->setText(tr("Connect"));
     disconnect_->setText(tr("Disconnect"));
+    baudLabel_->setText(tr("Baud rate:"));
+    baud_->setSpecialValueText(tr("protocol default"));
+    baud_->setToolTip(tr("0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)"));
+    channelTable_->setHorizontalHeaderLabels(
+        {tr("CH"), tr("trim [µs]"), tr("min [µs]"), tr("max [µs]"), tr("reversed")});
+    channelTable_->setToolTip(
+        tr("Which transmitter channel each control drives, its trim, its "
+           "travel limits and its direction"));
     runTrial_->setText(tr("Run a trial on the rig"));
     runTrial_->setToolTip(
         tr("The session's method drives the car through the link, with the "

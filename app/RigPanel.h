@@ -15,6 +15,8 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QSpinBox;
+class QTableWidget;
 
 namespace prisca::app {
 
@@ -50,6 +52,8 @@ class RigPanel : public QWidget {
     std::optional<devices::PlanarPose> lastPose() const;
     long long framesSeen() const { return camera_.framesDelivered(); }
     const devices::LinkStatus& linkStatus() const { return linkStatus_; }
+    /// The channel mapping as edited (throttle, steering); invalid edits are named and refused.
+    const devices::ChannelMap& channels() const { return channels_; }
     /// The virtual car's port (empty unless the virtual rig runs).
     QString virtualPort() const;
 
@@ -80,6 +84,8 @@ class RigPanel : public QWidget {
     void showLinkStatus(const devices::LinkStatus& status);
     void showTask();
     void finishTrial();
+    void showChannels();
+    void applyChannels();
 
     LabSession& session_;
     devices::Camera camera_;
@@ -117,6 +123,12 @@ class RigPanel : public QWidget {
     QPushButton* connect_;
     QPushButton* disconnect_;
     QLabel* linkInfo_;
+    QLabel* baudLabel_;
+    QSpinBox* baud_;
+    QTableWidget* channelTable_;
+    QLabel* channelProblem_;
+    devices::ChannelMap channels_ = devices::ChannelMap::car();
+    bool updatingChannels_ = false;
     QPushButton* runTrial_;
     QPushButton* stopTrial_;
     QLabel* trialInfo_;

@@ -1025,95 +1025,95 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="164" />
+        <location filename="../app/RigPanel.cpp" line="200" />
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="165" />
-        <location filename="../app/RigPanel.cpp" line="172" />
+        <location filename="../app/RigPanel.cpp" line="201" />
+        <location filename="../app/RigPanel.cpp" line="208" />
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="171" />
+        <location filename="../app/RigPanel.cpp" line="207" />
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="186" />
-        <location filename="../app/RigPanel.cpp" line="197" />
+        <location filename="../app/RigPanel.cpp" line="222" />
+        <location filename="../app/RigPanel.cpp" line="233" />
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="187" />
+        <location filename="../app/RigPanel.cpp" line="223" />
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="198" />
+        <location filename="../app/RigPanel.cpp" line="234" />
         <source>'%1' is not two numbers "x, y" in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="232" />
+        <location filename="../app/RigPanel.cpp" line="270" />
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="234" />
+        <location filename="../app/RigPanel.cpp" line="272" />
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="236" />
+        <location filename="../app/RigPanel.cpp" line="274" />
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="239" />
+        <location filename="../app/RigPanel.cpp" line="277" />
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="268" />
+        <location filename="../app/RigPanel.cpp" line="305" />
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="288" />
+        <location filename="../app/RigPanel.cpp" line="325" />
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="314" />
+        <location filename="../app/RigPanel.cpp" line="355" />
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="319" />
+        <location filename="../app/RigPanel.cpp" line="360" />
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="356" />
+        <location filename="../app/RigPanel.cpp" line="397" />
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="385" />
+        <location filename="../app/RigPanel.cpp" line="426" />
         <source>Choose or type the transmitter's port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="404" />
-        <location filename="../app/RigPanel.cpp" line="421" />
+        <location filename="../app/RigPanel.cpp" line="447" />
+        <location filename="../app/RigPanel.cpp" line="464" />
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="405" />
+        <location filename="../app/RigPanel.cpp" line="448" />
         <source>The calibration could not be read.
 
 %1</source>
@@ -1122,127 +1122,177 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="431" />
+        <location filename="../app/RigPanel.cpp" line="474" />
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="460" />
+        <location filename="../app/RigPanel.cpp" line="503" />
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="463" />
+        <location filename="../app/RigPanel.cpp" line="506" />
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="465" />
+        <location filename="../app/RigPanel.cpp" line="508" />
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="497" />
+        <location filename="../app/RigPanel.cpp" line="564" />
+        <source>'%1' is not a number</source>
+        <translation>「%1」不是數字</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="608" />
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="498" />
+        <location filename="../app/RigPanel.cpp" line="609" />
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="499" />
+        <location filename="../app/RigPanel.cpp" line="610" />
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="500" />
+        <location filename="../app/RigPanel.cpp" line="611" />
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="503" />
+        <location filename="../app/RigPanel.cpp" line="614" />
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="504" />
+        <location filename="../app/RigPanel.cpp" line="615" />
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="505" />
+        <location filename="../app/RigPanel.cpp" line="616" />
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="506" />
+        <location filename="../app/RigPanel.cpp" line="617" />
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="507" />
+        <location filename="../app/RigPanel.cpp" line="618" />
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="510" />
+        <location filename="../app/RigPanel.cpp" line="621" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="511" />
+        <location filename="../app/RigPanel.cpp" line="622" />
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="512" />
+        <location filename="../app/RigPanel.cpp" line="623" />
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="514" />
+        <location filename="../app/RigPanel.cpp" line="625" />
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="515" />
+        <location filename="../app/RigPanel.cpp" line="626" />
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="516" />
+        <location filename="../app/RigPanel.cpp" line="627" />
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="517" />
+        <location filename="../app/RigPanel.cpp" line="628" />
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="518" />
+        <location filename="../app/RigPanel.cpp" line="629" />
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="519" />
+        <location filename="../app/RigPanel.cpp" line="630" />
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="520" />
+        <location filename="../app/RigPanel.cpp" line="631" />
+        <source>Baud rate:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="632" />
+        <source>protocol default</source>
+        <translation>協定預設</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="633" />
+        <source>0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
+        <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="635" />
+        <source>CH</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="635" />
+        <source>trim [µs]</source>
+        <translation>微調 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="635" />
+        <source>min [µs]</source>
+        <translation>最小 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="635" />
+        <source>max [µs]</source>
+        <translation>最大 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="635" />
+        <source>reversed</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="636" />
+        <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
+        <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="638" />
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="521" />
+        <location filename="../app/RigPanel.cpp" line="640" />
         <source>The session's method drives the car through the link, with the camera's pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="523" />
+        <location filename="../app/RigPanel.cpp" line="642" />
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>

@@ -515,6 +515,34 @@ class TestGuiRun : public QObject {
         rig->disconnectLink();
     }
 
+    void rig_channelMapIsCheckedAppliedAndRemembered() {
+        {
+            Window w;
+            auto* rig = w.find<RigPanel>("rigPanel");
+            auto* table = w.find<QTableWidget>("channelMap");
+            auto* problem = w.find<QLabel>("channelProblem");
+            QCOMPARE(table->item(0, 0)->text(), QStringLiteral("3"));  // throttle on CH3
+            QCOMPARE(table->item(1, 0)->text(), QStringLiteral("1"));  // steering on CH1
+            table->item(1, 0)->setText(QStringLiteral("3"));
+            QVERIFY2(problem->text().contains("twice"), qPrintable(problem->text()));
+            QCOMPARE(rig->channels().controls[1].channel, 0);  // refused, unchanged
+            table->item(1, 0)->setText(QStringLiteral("2"));
+            table->item(1, 1)->setText(QStringLiteral("20"));
+            table->item(1, 4)->setCheckState(Qt::Checked);
+            QVERIFY(problem->text().isEmpty());
+            QCOMPARE(rig->channels().controls[1].channel, 1);
+            QCOMPARE(rig->channels().controls[1].trim, 20.0);
+            QVERIFY(rig->channels().controls[1].reversed);
+            // Failsafe centres steering with its trim: 1520 us on CH2.
+            QCOMPARE(rig->channels().failsafe()[1], 1520.0);
+        }
+        Window again;
+        auto* rig = again.find<RigPanel>("rigPanel");
+        QCOMPARE(rig->channels().controls[1].channel, 1);
+        QCOMPARE(rig->channels().controls[1].trim, 20.0);
+        QVERIFY(rig->channels().controls[1].reversed);
+    }
+
     void rig_calibrationByClicksSavedAndBadFilesRefused() {
         QTemporaryDir dir;
         Window w;
