@@ -1,6 +1,6 @@
 #include "app/RecordPanel.h"
 
-#include "app/GamepadInput.h"
+#include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
 
@@ -27,37 +27,15 @@
 namespace prisca::app {
 
 namespace {
-constexpr int kTickMs = 25;        // keyboard ramp and countdown resolution [ms]
-constexpr double kRampUp = 2.0;    // input units per second while a key is held
-constexpr double kRampDown = 3.0;  // back to neutral per second once released
+constexpr int kTickMs = 25;  // keyboard ramp and countdown resolution [ms]
 constexpr unsigned long kShutdownWaitMs = 3000;
-
-// Which key means what: index 0 up, 1 down, 2 left, 3 right; -1 not a driving key.
-int drivingKey(int key) {
-    switch (key) {
-        case Qt::Key_Up:
-        case Qt::Key_W:
-            return 0;
-        case Qt::Key_Down:
-        case Qt::Key_S:
-            return 1;
-        case Qt::Key_Left:
-        case Qt::Key_A:
-            return 2;
-        case Qt::Key_Right:
-        case Qt::Key_D:
-            return 3;
-        default:
-            return -1;
-    }
-}
 }  // namespace
 
 RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
     : QWidget(parent),
       session_(session),
       worker_(new RecordingWorker),
-      gamepad_(std::make_unique<GamepadInput>()),
+      driving_(new DrivingInput(this)),
       keys_(new QLabel(this)),
       gamepadLabel_(new QLabel(this)),
       countdownLabel_(new QLabel(this)),
@@ -135,6 +113,10 @@ RecordPanel::~RecordPanel() {
     thread_.wait(kShutdownWaitMs);
 }
 
+const Eigen::VectorXd& RecordPanel::input() const {
+    return driving_->input();
+}
+
 QString RecordPanel::recordingsFolder() {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
            QStringLiteral("/recordings");
@@ -144,10 +126,8 @@ void RecordPanel::startCountdown() {
     if (recording_ || countdownLeft_ > 0 || session_.plant().isEmpty()) {
         return;
     }
-    input_ = Eigen::VectorXd::Zero(session_.profile().info.actionDimension());
-    std::fill(std::begin(keysHeld_), std::end(keysHeld_), false);
-    // Driving keys reach this panel wherever the focus is, for as long as the recording lasts.
-    qApp->installEventFilter(this);
+    // Driving keys reach the input wherever the focus is, for as long as the recording lasts.
+    driving_->start(session_.profile().info.actionDimension());
     countdownLeft_ = countdown_->value() * 1000 / kTickMs;
     timer_->start();
     if (countdownLeft_ == 0) {
@@ -187,63 +167,26 @@ void RecordPanel::tick() {
         timer_->stop();
         return;
     }
-    // Proportional ramp per channel: channel 0 on up/down, channel 1 on left/right.
-    const double dt = kTickMs / 1000.0;
-    for (int channel = 0; channel < std::min<int>(2, static_cast<int>(input_.size())); ++channel) {
-        const bool plus = keysHeld_[channel == 0 ? 0 : 2];
-        const bool minus = keysHeld_[channel == 0 ? 1 : 3];
-        double& u = input_[channel];
-        if (plus != minus) {
-            u = std::clamp(u + (plus ? 1.0 : -1.0) * kRampUp * dt, -1.0, 1.0);
-        } else if (u > 0.0) {
-            u = std::max(0.0, u - kRampDown * dt);
-        } else {
-            u = std::min(0.0, u + kRampDown * dt);
-        }
-    }
-    // A gamepad's sticks, where pushed, drive their channel directly (proportional).
-    if (const std::optional<Eigen::Vector2d> pad = gamepad_->poll()) {
-        for (int channel = 0; channel < std::min<int>(2, static_cast<int>(input_.size()));
-             ++channel) {
-            if ((*pad)[channel] != 0.0) {
-                input_[channel] = (*pad)[channel];
-            }
-        }
-    }
-    if (gamepad_->available() != padShown_) {
+    const Eigen::VectorXd& input = driving_->advance(kTickMs / 1000.0);
+    if (driving_->gamepadAvailable() != padShown_) {
         retranslateUi();  // plugged in or pulled out mid-recording
     }
     // Inputs are in [-1, 1] per channel; the plant's own limits scale them.
     const sim::PlantInfo& info = session_.profile().info;
-    Eigen::VectorXd scaled(input_.size());
-    for (Eigen::Index l = 0; l < input_.size(); ++l) {
+    Eigen::VectorXd scaled(input.size());
+    for (Eigen::Index l = 0; l < input.size(); ++l) {
         scaled[l] =
-            input_[l] >= 0.0 ? input_[l] * info.actionUpper[l] : -input_[l] * info.actionLower[l];
+            input[l] >= 0.0 ? input[l] * info.actionUpper[l] : -input[l] * info.actionLower[l];
     }
     QMetaObject::invokeMethod(
         worker_, [w = worker_, scaled] { w->setInput(scaled); }, Qt::QueuedConnection);
-}
-
-bool RecordPanel::eventFilter(QObject* watched, QEvent* event) {
-    if ((event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease) &&
-        (recording_ || countdownLeft_ > 0)) {
-        auto* key = static_cast<QKeyEvent*>(event);
-        const int index = drivingKey(key->key());
-        if (index >= 0) {
-            if (!key->isAutoRepeat()) {
-                keysHeld_[index] = event->type() == QEvent::KeyPress;
-            }
-            return true;  // driving keys never move spin boxes or focus while recording
-        }
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 void RecordPanel::stopRecording() {
     if (countdownLeft_ > 0) {
         countdownLeft_ = 0;
         timer_->stop();
-        qApp->removeEventFilter(this);
+        driving_->stop();
         status_->setText(tr("Recording cancelled."));
         updateButtons();
         return;
@@ -256,12 +199,12 @@ void RecordPanel::stopRecording() {
 void RecordPanel::emergencyStop() {
     if (countdownLeft_ > 0 || recording_) {
         // Neutral at once, and no key held any more can ramp it up again.
-        std::fill(std::begin(keysHeld_), std::end(keysHeld_), false);
-        input_.setZero();
+        driving_->neutral();
         timer_->stop();
         worker_->requestStop();
         QMetaObject::invokeMethod(
-            worker_, [w = worker_, n = input_.size()] { w->setInput(Eigen::VectorXd::Zero(n)); },
+            worker_,
+            [w = worker_, n = driving_->input().size()] { w->setInput(Eigen::VectorXd::Zero(n)); },
             Qt::QueuedConnection);
         stopRecording();
     }
@@ -270,7 +213,7 @@ void RecordPanel::emergencyStop() {
 void RecordPanel::finished(const core::Demonstration& demonstration, const QString& streamPath) {
     recording_ = false;
     timer_->stop();
-    qApp->removeEventFilter(this);
+    driving_->stop();
     if (demonstration.length() < 2) {
         QFile::remove(streamPath);
         status_->setText(tr("Nothing recorded."));
@@ -339,11 +282,11 @@ void RecordPanel::retranslateUi() {
     keys_->setText(tr("Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is "
                       "E-STOP.")
                        .arg(names.value(0), names.value(1)));
-    padShown_ = gamepad_->available();
-    gamepadLabel_->setText(
-        gamepad_->available()
-            ? tr("Gamepad: %1 (left stick forward, right stick sideways)").arg(gamepad_->name())
-            : tr("No gamepad found: the keyboard drives."));
+    padShown_ = driving_->gamepadAvailable();
+    gamepadLabel_->setText(driving_->gamepadAvailable()
+                               ? tr("Gamepad: %1 (left stick forward, right stick sideways)")
+                                     .arg(driving_->gamepadName())
+                               : tr("No gamepad found: the keyboard drives."));
     countdownLabel_->setText(tr("Countdown:"));
     countdown_->setSuffix(tr(" s"));
     record_->setText(tr("Record"));

@@ -14,7 +14,7 @@ class QSpinBox;
 class QTimer;
 
 namespace prisca::app {
-class GamepadInput;
+class DrivingInput;
 }
 
 namespace prisca::app {
@@ -37,7 +37,7 @@ class RecordPanel : public QWidget {
     /// Where recordings stream to (the application's data folder, "recordings").
     static QString recordingsFolder();
     /// The input the keyboard is asking for now (tests).
-    const Eigen::VectorXd& input() const { return input_; }
+    const Eigen::VectorXd& input() const;
     bool isRecording() const { return recording_; }
 
   public slots:
@@ -53,7 +53,6 @@ class RecordPanel : public QWidget {
     void recordingStarted();
 
   protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
     void changeEvent(QEvent* event) override;
 
   private:
@@ -68,7 +67,7 @@ class RecordPanel : public QWidget {
     LabSession& session_;
     QThread thread_;
     RecordingWorker* worker_;
-    std::unique_ptr<GamepadInput> gamepad_;
+    DrivingInput* driving_;
     QLabel* keys_;
     QLabel* gamepadLabel_;
     QLabel* countdownLabel_;
@@ -81,9 +80,7 @@ class RecordPanel : public QWidget {
     QTimer* timer_;
     int countdownLeft_ = 0;  ///< ticks until recording starts; 0 when not counting down
     bool recording_ = false;
-    bool padShown_ = false;                            ///< the label says a pad is there
-    bool keysHeld_[4] = {false, false, false, false};  ///< up, down, left, right
-    Eigen::VectorXd input_;
+    bool padShown_ = false;  ///< the label says a pad is there
     QString streamPath_;
     /// The demonstration before the recording, restored by Discard.
     std::shared_ptr<const core::Demonstration> previous_;
