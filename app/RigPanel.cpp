@@ -1,13 +1,19 @@
 #include "app/RigPanel.h"
 
 #include "app/CameraView.h"
+#include "app/DrivingInput.h"
 #include "app/LabSession.h"
+#include "app/RecordPanel.h"
 #include "app/VirtualCar.h"
+#include "core/DemonstrationCsv.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
 #include "sim/ControllerFactory.h"
+#include "sim/DemonstrationRecorder.h"
 
 #include <QComboBox>
+#include <QDateTime>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
@@ -22,6 +28,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -69,6 +76,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       baud_(new QSpinBox(this)),
       channelTable_(new QTableWidget(this)),
       channelProblem_(new QLabel(this)),
+      drive_(new QPushButton(this)),
       runTrial_(new QPushButton(this)),
       stopTrial_(new QPushButton(this)),
       trialInfo_(new QLabel(this)) {
@@ -105,6 +113,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     channelProblem_->setObjectName(QStringLiteral("channelProblem"));
     channelProblem_->setStyleSheet(QStringLiteral("color: #b00020"));
     channelProblem_->setWordWrap(true);
+    drive_->setObjectName(QStringLiteral("driveOnRig"));
+    driving_ = new DrivingInput(this);
+    driveTimer_ = new QTimer(this);
+    driveTimer_->setInterval(25);
+    connect(driveTimer_, &QTimer::timeout, this, &RigPanel::driveTick);
     runTrial_->setObjectName(QStringLiteral("runOnRig"));
     stopTrial_->setObjectName(QStringLiteral("stopOnRig"));
     trialInfo_->setObjectName(QStringLiteral("rigTrialInfo"));
@@ -159,6 +172,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     controls->addLayout(linkButtons);
     controls->addWidget(linkInfo_);
     auto* trialButtons = new QHBoxLayout;
+    trialButtons->addWidget(drive_);
     trialButtons->addWidget(runTrial_);
     trialButtons->addWidget(stopTrial_);
     controls->addLayout(trialButtons);
@@ -186,6 +200,25 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             return;
         }
         shared->pose = tracker->track(frame.image, shared->calibration).pose;
+        if (shared->recording) {
+            if (!shared->pose) {
+                // No pose, no command: the car must not drive blind.
+                link_.setPoseLost(true);
+                shared->estimator.reset();
+                return;
+            }
+            link_.setPoseLost(false);
+            const Eigen::VectorXd state = shared->estimator.update(*shared->pose, frame.steadyNs);
+            const double t = shared->states.size() / 40.0;
+            shared->states.push_back(state);
+            shared->actions.push_back(shared->driveAction);
+            core::appendDemonstrationCsvRow(shared->pendingRows, t, state, shared->driveAction);
+            if (shared->stream && shared->pendingRows.size() > 4096) {
+                shared->stream->write(shared->pendingRows);
+                shared->stream->flush();
+                shared->pendingRows.clear();
+            }
+        }
     });
     connect(&camera_, &devices::Camera::frameReady, this, &RigPanel::showFrame);
     connect(&camera_, &devices::Camera::failed, this,
@@ -238,6 +271,16 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
     connect(runTrial_, &QPushButton::clicked, this, &RigPanel::runTrial);
+    drive_->setCheckable(true);
+    connect(drive_, &QPushButton::clicked, this, [this](bool on) {
+        if (on) {
+            if (!startDriving()) {
+                drive_->setChecked(false);
+            }
+        } else {
+            stopDriving();
+        }
+    });
     connect(channelTable_, &QTableWidget::itemChanged, this, &RigPanel::applyChannels);
     connect(stopTrial_, &QPushButton::clicked, this, &RigPanel::stopTrial);
 
@@ -253,6 +296,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
 }
 
 RigPanel::~RigPanel() {
+    stopDriving();
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->running = false;
@@ -306,6 +350,119 @@ bool RigPanel::runTrial() {
     return true;
 }
 
+const Eigen::VectorXd& RigPanel::drivingInput() const {
+    return driving_->input();
+}
+
+bool RigPanel::startDriving() {
+    if (drivingActive_ || isRunning()) {
+        return false;
+    }
+    if (!camera_.isRunning() || !linkStatus_.connected) {
+        trialInfo_->setText(!camera_.isRunning() ? tr("Start the camera first.")
+                                                 : tr("Connect the transmitter link first."));
+        return false;
+    }
+    const sim::PlantInfo& info = session_.profile().info;
+    const QString path =
+        RecordPanel::recordingsFolder() +
+        QStringLiteral("/rig-%1.csv")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    QDir().mkpath(RecordPanel::recordingsFolder());
+    auto stream = std::make_unique<QFile>(path);
+    if (!stream->open(QIODevice::WriteOnly)) {
+        trialInfo_->setText(tr("Cannot record to %1: %2").arg(path, stream->errorString()));
+        return false;
+    }
+    // The header of the demonstration format (a one-row demonstration's, without its row).
+    core::Demonstration header;
+    header.plant = info.name;
+    header.dt = 1.0 / 40.0;
+    header.stateNames = info.stateNames;
+    header.stateUnits = info.stateUnits;
+    header.actionNames = info.actionNames;
+    header.actionUnits = info.actionUnits;
+    header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
+    header.time = Eigen::VectorXd::Zero(1);
+    header.states = Eigen::MatrixXd::Zero(1, info.stateDimension());
+    header.actions = Eigen::MatrixXd::Zero(1, info.actionDimension());
+    QByteArray text = core::formatDemonstrationCsv(header);
+    text.truncate(text.lastIndexOf('\n', text.size() - 2) + 1);  // drop the placeholder row
+    stream->write(text);
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->states.clear();
+        shared_->actions.clear();
+        shared_->pendingRows.clear();
+        shared_->estimator.reset();
+        shared_->driveAction = Eigen::VectorXd::Zero(info.actionDimension());
+        shared_->stream = std::move(stream);
+        shared_->recording = true;
+    }
+    if (car_) {
+        car_->requestReset(1);
+    }
+    driving_->start(info.actionDimension());
+    drivingActive_ = true;
+    driveTimer_->start();
+    trialInfo_->setText(
+        tr("Driving and recording: arrows or WASD (or a gamepad); press Drive "
+           "again to stop."));
+    drive_->setChecked(true);
+    return true;
+}
+
+void RigPanel::driveTick() {
+    const Eigen::VectorXd& input = driving_->advance(driveTimer_->interval() / 1000.0);
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->driveAction = input;
+    }
+    link_.setCommand(channels_.command(input));
+}
+
+void RigPanel::stopDriving() {
+    if (!drivingActive_) {
+        return;
+    }
+    driveTimer_->stop();
+    driving_->stop();
+    drivingActive_ = false;
+    drive_->setChecked(false);
+    link_.setCommand(channels_.failsafe());  // neutral now; stale (failsafe) after that
+    std::vector<Eigen::VectorXd> states, actions;
+    QString path;
+    {
+        std::lock_guard<std::mutex> lock(shared_->mutex);
+        shared_->recording = false;
+        if (shared_->stream) {
+            shared_->stream->write(shared_->pendingRows);
+            shared_->pendingRows.clear();
+            path = shared_->stream->fileName();
+            shared_->stream->close();
+            shared_->stream.reset();
+        }
+        states.swap(shared_->states);
+        actions.swap(shared_->actions);
+    }
+    if (states.size() < 2) {
+        QFile::remove(path);
+        trialInfo_->setText(tr("Nothing recorded (no pose seen)."));
+        return;
+    }
+    sim::DemonstrationRecorder recorder(session_.profile().info, 1.0 / 40.0);
+    for (size_t k = 0; k < states.size(); ++k) {
+        recorder.record(states[k], actions[k]);
+    }
+    core::Demonstration demo = recorder.demonstration();
+    demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
+    session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(demo)), path);
+    trialInfo_->setText(tr("Recorded %1 samples on the rig, kept in %2; it is now the "
+                           "demonstration.")
+                            .arg(states.size())
+                            .arg(QDir::toNativeSeparators(path)));
+}
+
 void RigPanel::stopTrial() {
     bool was = false;
     {
@@ -320,6 +477,8 @@ void RigPanel::stopTrial() {
 
 void RigPanel::emergencyStop() {
     link_.emergencyStop();  // failsafe from the link's next frame, latched
+    driving_->neutral();
+    stopDriving();
     stopTrial();
     trialInfo_->setText(tr("E-STOP: the transmitter sends failsafe until E-STOP is reset."));
 }
@@ -635,6 +794,10 @@ void RigPanel::retranslateUi() {
     channelTable_->setToolTip(
         tr("Which transmitter channel each control drives, its trim, its "
            "travel limits and its direction"));
+    drive_->setText(tr("Drive and record"));
+    drive_->setToolTip(
+        tr("Drive the car through the link (arrows or WASD, or a gamepad) and "
+           "record a demonstration from the camera"));
     runTrial_->setText(tr("Run a trial on the rig"));
     runTrial_->setToolTip(
         tr("The session's method drives the car through the link, with the "

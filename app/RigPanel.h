@@ -5,6 +5,7 @@
 #include "devices/RigLoop.h"
 #include "devices/TransmitterLink.h"
 
+#include <QFile>
 #include <QWidget>
 
 #include <memory>
@@ -17,12 +18,15 @@ class QLineEdit;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
+class QTimer;
+class QFile;
 
 namespace prisca::app {
 
 class CameraView;
 class LabSession;
 class VirtualCar;
+class DrivingInput;
 
 /// The real rig (or the virtual one): the camera (a V4L2 device, a video file, or the virtual
 /// rig's synthetic camera over a simulated car driven through the link) with the tracked pose,
@@ -71,6 +75,14 @@ class RigPanel : public QWidget {
     /// The result line of the last trial ("parked ... cm from the lot").
     QString lastResult() const;
 
+    /// Drive the car through the link with the keyboard or a gamepad and record the camera's
+    /// states and the commands as a demonstration (streamed to disk as it goes); stopping makes
+    /// it the session's demonstration. Needs the camera running and the link connected.
+    bool startDriving();
+    void stopDriving();
+    bool isDriving() const { return driving_ != nullptr && drivingActive_; }
+    const Eigen::VectorXd& drivingInput() const;
+
   signals:
     void trialFinished(const QString& result);
 
@@ -84,6 +96,7 @@ class RigPanel : public QWidget {
     void showLinkStatus(const devices::LinkStatus& status);
     void showTask();
     void finishTrial();
+    void driveTick();
     void showChannels();
     void applyChannels();
 
@@ -103,6 +116,13 @@ class RigPanel : public QWidget {
         bool running = false;
         int framesLeft = 0;
         std::optional<devices::PlanarPose> lastTrackedPose;  ///< the last pose seen in the trial
+        // Recording by driving: the command in force, the rows so far, the stream on disk.
+        bool recording = false;
+        Eigen::VectorXd driveAction;
+        devices::PoseStateEstimator estimator;
+        std::vector<Eigen::VectorXd> states, actions;
+        QByteArray pendingRows;
+        std::unique_ptr<QFile> stream;
     };
     std::shared_ptr<Shared> shared_;
 
@@ -129,6 +149,10 @@ class RigPanel : public QWidget {
     QLabel* channelProblem_;
     devices::ChannelMap channels_ = devices::ChannelMap::car();
     bool updatingChannels_ = false;
+    DrivingInput* driving_ = nullptr;
+    bool drivingActive_ = false;
+    QTimer* driveTimer_ = nullptr;
+    QPushButton* drive_;
     QPushButton* runTrial_;
     QPushButton* stopTrial_;
     QLabel* trialInfo_;

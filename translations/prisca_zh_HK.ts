@@ -4,27 +4,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="183"/>
+        <location filename="../app/ArenaView.cpp" line="183" />
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="184"/>
+        <location filename="../app/ArenaView.cpp" line="184" />
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="201"/>
+        <location filename="../app/ArenaView.cpp" line="201" />
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="202"/>
+        <location filename="../app/ArenaView.cpp" line="202" />
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="401"/>
+        <location filename="../app/ArenaView.cpp" line="401" />
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -32,22 +32,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="59"/>
+        <location filename="../app/CameraView.cpp" line="59" />
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="105"/>
+        <location filename="../app/CameraView.cpp" line="105" />
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="109"/>
+        <location filename="../app/CameraView.cpp" line="109" />
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="113"/>
+        <location filename="../app/CameraView.cpp" line="113" />
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -55,153 +55,153 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="146"/>
+        <location filename="../app/ControllerPanel.cpp" line="146" />
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="147"/>
+        <location filename="../app/ControllerPanel.cpp" line="147" />
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="148"/>
+        <location filename="../app/ControllerPanel.cpp" line="148" />
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="150"/>
+        <location filename="../app/ControllerPanel.cpp" line="150" />
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161"/>
+        <location filename="../app/ControllerPanel.cpp" line="161" />
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161"/>
+        <location filename="../app/ControllerPanel.cpp" line="161" />
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="167"/>
+        <location filename="../app/ControllerPanel.cpp" line="167" />
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="206"/>
+        <location filename="../app/ControllerPanel.cpp" line="206" />
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="220"/>
+        <location filename="../app/ControllerPanel.cpp" line="220" />
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="262"/>
+        <location filename="../app/ControllerPanel.cpp" line="262" />
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="263"/>
+        <location filename="../app/ControllerPanel.cpp" line="263" />
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
         <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="265"/>
+        <location filename="../app/ControllerPanel.cpp" line="265" />
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="266"/>
+        <location filename="../app/ControllerPanel.cpp" line="266" />
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="267"/>
+        <location filename="../app/ControllerPanel.cpp" line="267" />
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="268"/>
+        <location filename="../app/ControllerPanel.cpp" line="268" />
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="269"/>
+        <location filename="../app/ControllerPanel.cpp" line="269" />
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="270"/>
+        <location filename="../app/ControllerPanel.cpp" line="270" />
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="271"/>
+        <location filename="../app/ControllerPanel.cpp" line="271" />
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="272"/>
+        <location filename="../app/ControllerPanel.cpp" line="272" />
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="274"/>
+        <location filename="../app/ControllerPanel.cpp" line="274" />
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="275"/>
+        <location filename="../app/ControllerPanel.cpp" line="275" />
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="277"/>
+        <location filename="../app/ControllerPanel.cpp" line="277" />
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="278"/>
+        <location filename="../app/ControllerPanel.cpp" line="278" />
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280"/>
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280"/>
+        <location filename="../app/ControllerPanel.cpp" line="280" />
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="281"/>
-        <source>Restore the plant&apos;s tuned preset</source>
+        <location filename="../app/ControllerPanel.cpp" line="281" />
+        <source>Restore the plant's tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="282"/>
+        <location filename="../app/ControllerPanel.cpp" line="282" />
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="283"/>
+        <location filename="../app/ControllerPanel.cpp" line="283" />
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="284"/>
-        <location filename="../app/ControllerPanel.cpp" line="285"/>
+        <location filename="../app/ControllerPanel.cpp" line="284" />
+        <location filename="../app/ControllerPanel.cpp" line="285" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="286"/>
+        <location filename="../app/ControllerPanel.cpp" line="286" />
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -209,186 +209,186 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="144"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="172"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="144" />
+        <location filename="../app/ExperimentsPanel.cpp" line="172" />
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="173"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="173" />
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="191" />
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="200"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="200" />
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="216" />
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="221"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="221" />
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226" />
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="227" />
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="227" />
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="252"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="252" />
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="258" />
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264" />
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="293"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="293" />
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="294"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="294" />
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="368"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="368" />
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="381"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="381" />
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="390" />
+        <location filename="../app/ExperimentsPanel.cpp" line="402" />
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="391"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="391" />
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="407"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="417"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="407" />
+        <location filename="../app/ExperimentsPanel.cpp" line="417" />
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="408" />
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="429" />
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="430" />
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="432" />
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="432" />
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="433"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="433" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="434" />
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="435" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="436" />
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="438"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="438" />
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="439" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="440"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="440" />
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="441" />
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -396,103 +396,103 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="40"/>
-        <source>&apos;%1&apos; must be a number from %2 to %3</source>
+        <location filename="../app/LabSession.cpp" line="40" />
+        <source>'%1' must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="54"/>
-        <source>&apos;%1&apos; must be a whole number</source>
+        <location filename="../app/LabSession.cpp" line="54" />
+        <source>'%1' must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="68"/>
-        <source>&apos;%1&apos; must be a list of %2 numbers</source>
+        <location filename="../app/LabSession.cpp" line="68" />
+        <source>'%1' must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="74"/>
-        <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
+        <location filename="../app/LabSession.cpp" line="74" />
+        <source>'%1' entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="104"/>
-        <source>&apos;%1&apos; must have %2 lists of scales</source>
+        <location filename="../app/LabSession.cpp" line="104" />
+        <source>'%1' must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="110"/>
-        <source>&apos;%1&apos; list %2 must have %3 scales</source>
+        <location filename="../app/LabSession.cpp" line="110" />
+        <source>'%1' list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="118"/>
-        <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
+        <location filename="../app/LabSession.cpp" line="118" />
+        <source>'%1' list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="156"/>
+        <location filename="../app/LabSession.cpp" line="156" />
         <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="254"/>
-        <location filename="../app/LabSession.cpp" line="262"/>
+        <location filename="../app/LabSession.cpp" line="254" />
+        <location filename="../app/LabSession.cpp" line="262" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="268"/>
+        <location filename="../app/LabSession.cpp" line="268" />
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="274"/>
-        <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
-        <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
+        <location filename="../app/LabSession.cpp" line="274" />
+        <source>not a PRISCA Lab session (no "format": "prisca-session")</source>
+        <translation>不是 PRISCA Lab 工作階段檔（沒有 "format": "prisca-session"）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="277"/>
+        <location filename="../app/LabSession.cpp" line="277" />
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="282"/>
-        <source>&apos;plant&apos; must be one of %1</source>
+        <location filename="../app/LabSession.cpp" line="282" />
+        <source>'plant' must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="289"/>
-        <source>&apos;mapping&apos;: %1</source>
+        <location filename="../app/LabSession.cpp" line="289" />
+        <source>'mapping': %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="293"/>
-        <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
+        <location filename="../app/LabSession.cpp" line="293" />
+        <source>'mapping' must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="303"/>
-        <source>&apos;method&apos; must be one of %1</source>
+        <location filename="../app/LabSession.cpp" line="303" />
+        <source>'method' must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="344"/>
-        <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
+        <location filename="../app/LabSession.cpp" line="344" />
+        <source>'limits.%1' must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="358"/>
-        <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
+        <location filename="../app/LabSession.cpp" line="358" />
+        <source>'limits' of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="382"/>
+        <location filename="../app/LabSession.cpp" line="382" />
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="386"/>
+        <location filename="../app/LabSession.cpp" line="386" />
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
@@ -500,7 +500,7 @@
 <context>
     <name>prisca::app::LanguageMenu</name>
     <message>
-        <location filename="../app/LanguageMenu.cpp" line="40"/>
+        <location filename="../app/LanguageMenu.cpp" line="40" />
         <source>&amp;Language</source>
         <translation>語言(&amp;L)</translation>
     </message>
@@ -508,109 +508,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="351"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="351" />
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="358"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="362"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="358" />
+        <location filename="../app/LiveChartsPanel.cpp" line="362" />
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="359"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="359" />
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="367"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="371"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="367" />
+        <location filename="../app/LiveChartsPanel.cpp" line="371" />
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="368"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="368" />
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="384" />
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="385" />
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="386"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="386" />
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="387"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="387" />
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="388"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="388" />
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="391" />
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="391" />
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="393"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="393" />
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="395" />
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="396"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="396" />
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="397"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="397" />
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="398"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="398" />
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="399" />
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="400"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="400" />
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="401" />
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="402" />
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -618,40 +618,40 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="87"/>
+        <location filename="../app/MainWindow.cpp" line="87" />
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="97"/>
-        <location filename="../app/MainWindow.cpp" line="303"/>
+        <location filename="../app/MainWindow.cpp" line="97" />
+        <location filename="../app/MainWindow.cpp" line="303" />
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="174"/>
-        <location filename="../app/MainWindow.cpp" line="236"/>
+        <location filename="../app/MainWindow.cpp" line="174" />
+        <location filename="../app/MainWindow.cpp" line="236" />
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="175"/>
+        <location filename="../app/MainWindow.cpp" line="175" />
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="186"/>
-        <location filename="../app/MainWindow.cpp" line="249"/>
+        <location filename="../app/MainWindow.cpp" line="186" />
+        <location filename="../app/MainWindow.cpp" line="249" />
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="187"/>
+        <location filename="../app/MainWindow.cpp" line="187" />
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="237"/>
+        <location filename="../app/MainWindow.cpp" line="237" />
         <source>The session could not be opened.
 
 %1</source>
@@ -660,137 +660,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="242"/>
+        <location filename="../app/MainWindow.cpp" line="242" />
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="254"/>
+        <location filename="../app/MainWindow.cpp" line="254" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290"/>
+        <location filename="../app/MainWindow.cpp" line="290" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291"/>
+        <location filename="../app/MainWindow.cpp" line="291" />
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292"/>
+        <location filename="../app/MainWindow.cpp" line="292" />
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293"/>
+        <location filename="../app/MainWindow.cpp" line="293" />
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294"/>
+        <location filename="../app/MainWindow.cpp" line="294" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="295"/>
+        <location filename="../app/MainWindow.cpp" line="295" />
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296"/>
+        <location filename="../app/MainWindow.cpp" line="296" />
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="297"/>
+        <location filename="../app/MainWindow.cpp" line="297" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298"/>
+        <location filename="../app/MainWindow.cpp" line="298" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="299"/>
+        <location filename="../app/MainWindow.cpp" line="299" />
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300"/>
+        <location filename="../app/MainWindow.cpp" line="300" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="301"/>
+        <location filename="../app/MainWindow.cpp" line="301" />
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302"/>
+        <location filename="../app/MainWindow.cpp" line="302" />
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="304"/>
+        <location filename="../app/MainWindow.cpp" line="304" />
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305"/>
+        <location filename="../app/MainWindow.cpp" line="305" />
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="306"/>
+        <location filename="../app/MainWindow.cpp" line="306" />
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="307"/>
+        <location filename="../app/MainWindow.cpp" line="307" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="308"/>
+        <location filename="../app/MainWindow.cpp" line="308" />
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="309"/>
+        <location filename="../app/MainWindow.cpp" line="309" />
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="311"/>
+        <location filename="../app/MainWindow.cpp" line="311" />
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326"/>
+        <location filename="../app/MainWindow.cpp" line="326" />
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="338"/>
+        <location filename="../app/MainWindow.cpp" line="338" />
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="340"/>
-        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
+        <location filename="../app/MainWindow.cpp" line="340" />
+        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="344"/>
+        <location filename="../app/MainWindow.cpp" line="344" />
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="347"/>
+        <location filename="../app/MainWindow.cpp" line="347" />
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -798,108 +798,108 @@
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="114"/>
+        <location filename="../app/MappingPanel.cpp" line="114" />
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>residual RMS</source>
         <translation>殘差 RMS</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="165" />
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="177"/>
+        <location filename="../app/MappingPanel.cpp" line="177" />
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="183"/>
+        <location filename="../app/MappingPanel.cpp" line="183" />
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="185"/>
+        <location filename="../app/MappingPanel.cpp" line="185" />
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="190"/>
+        <location filename="../app/MappingPanel.cpp" line="190" />
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="193"/>
+        <location filename="../app/MappingPanel.cpp" line="193" />
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="207"/>
+        <location filename="../app/MappingPanel.cpp" line="207" />
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="208"/>
+        <location filename="../app/MappingPanel.cpp" line="208" />
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="209"/>
-        <location filename="../app/MappingPanel.cpp" line="214"/>
+        <location filename="../app/MappingPanel.cpp" line="209" />
+        <location filename="../app/MappingPanel.cpp" line="214" />
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211"/>
+        <location filename="../app/MappingPanel.cpp" line="211" />
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="213"/>
+        <location filename="../app/MappingPanel.cpp" line="213" />
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="216"/>
-        <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
+        <location filename="../app/MappingPanel.cpp" line="216" />
+        <source>How many steps of response the fit looks at: 1 is eq. 5's one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="218"/>
+        <location filename="../app/MappingPanel.cpp" line="218" />
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="219"/>
+        <location filename="../app/MappingPanel.cpp" line="219" />
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="220"/>
+        <location filename="../app/MappingPanel.cpp" line="220" />
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="222"/>
+        <location filename="../app/MappingPanel.cpp" line="222" />
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="224"/>
+        <location filename="../app/MappingPanel.cpp" line="224" />
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="225"/>
+        <location filename="../app/MappingPanel.cpp" line="225" />
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -907,104 +907,104 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="88"/>
-        <location filename="../app/RecordPanel.cpp" line="292"/>
+        <location filename="../app/RecordPanel.cpp" line="88" />
+        <location filename="../app/RecordPanel.cpp" line="292" />
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="153"/>
+        <location filename="../app/RecordPanel.cpp" line="153" />
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="160"/>
+        <location filename="../app/RecordPanel.cpp" line="160" />
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="190"/>
+        <location filename="../app/RecordPanel.cpp" line="190" />
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="219"/>
+        <location filename="../app/RecordPanel.cpp" line="219" />
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="226"/>
+        <location filename="../app/RecordPanel.cpp" line="226" />
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="235"/>
-        <location filename="../app/RecordPanel.cpp" line="246"/>
+        <location filename="../app/RecordPanel.cpp" line="235" />
+        <location filename="../app/RecordPanel.cpp" line="246" />
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="237"/>
+        <location filename="../app/RecordPanel.cpp" line="237" />
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="249"/>
+        <location filename="../app/RecordPanel.cpp" line="249" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260"/>
+        <location filename="../app/RecordPanel.cpp" line="260" />
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282"/>
+        <location filename="../app/RecordPanel.cpp" line="282" />
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="287"/>
+        <location filename="../app/RecordPanel.cpp" line="287" />
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="289"/>
+        <location filename="../app/RecordPanel.cpp" line="289" />
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="290"/>
+        <location filename="../app/RecordPanel.cpp" line="290" />
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="291"/>
+        <location filename="../app/RecordPanel.cpp" line="291" />
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293"/>
+        <location filename="../app/RecordPanel.cpp" line="293" />
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="294" />
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="295"/>
+        <location filename="../app/RecordPanel.cpp" line="295" />
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="296"/>
+        <location filename="../app/RecordPanel.cpp" line="296" />
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="297"/>
+        <location filename="../app/RecordPanel.cpp" line="297" />
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1012,12 +1012,12 @@
 <context>
     <name>prisca::app::RecordingWorker</name>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="44"/>
+        <location filename="../app/RecordingWorker.cpp" line="44" />
         <source>Cannot record to %1: %2</source>
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="122"/>
+        <location filename="../app/RecordingWorker.cpp" line="122" />
         <source>Writing the recording to %1 failed: %2</source>
         <translation>把錄製寫入 %1 失敗：%2</translation>
     </message>
@@ -1025,95 +1025,117 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="200"/>
+        <location filename="../app/RigPanel.cpp" line="233" />
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="201"/>
-        <location filename="../app/RigPanel.cpp" line="208"/>
+        <location filename="../app/RigPanel.cpp" line="234" />
+        <location filename="../app/RigPanel.cpp" line="241" />
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="207"/>
+        <location filename="../app/RigPanel.cpp" line="240" />
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="222"/>
-        <location filename="../app/RigPanel.cpp" line="233"/>
+        <location filename="../app/RigPanel.cpp" line="255" />
+        <location filename="../app/RigPanel.cpp" line="266" />
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="223"/>
+        <location filename="../app/RigPanel.cpp" line="256" />
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="234"/>
-        <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
+        <location filename="../app/RigPanel.cpp" line="267" />
+        <source>'%1' is not two numbers "x, y" in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="270"/>
+        <location filename="../app/RigPanel.cpp" line="314" />
+        <location filename="../app/RigPanel.cpp" line="360" />
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="272"/>
+        <location filename="../app/RigPanel.cpp" line="316" />
+        <location filename="../app/RigPanel.cpp" line="361" />
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="274"/>
+        <location filename="../app/RigPanel.cpp" line="318" />
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="277"/>
+        <location filename="../app/RigPanel.cpp" line="321" />
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="304"/>
+        <location filename="../app/RigPanel.cpp" line="348" />
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="324"/>
+        <location filename="../app/RigPanel.cpp" line="372" />
+        <source>Cannot record to %1: %2</source>
+        <translation>無法錄製到 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="406" />
+        <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
+        <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="447" />
+        <source>Nothing recorded (no pose seen).</source>
+        <translation>沒有錄得任何內容（未見位姿）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="457" />
+        <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
+        <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="480" />
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="354"/>
+        <location filename="../app/RigPanel.cpp" line="510" />
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="359"/>
+        <location filename="../app/RigPanel.cpp" line="515" />
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="396"/>
+        <location filename="../app/RigPanel.cpp" line="552" />
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="425"/>
-        <source>Choose or type the transmitter&apos;s port first.</source>
+        <location filename="../app/RigPanel.cpp" line="581" />
+        <source>Choose or type the transmitter's port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="446"/>
-        <location filename="../app/RigPanel.cpp" line="463"/>
+        <location filename="../app/RigPanel.cpp" line="602" />
+        <location filename="../app/RigPanel.cpp" line="619" />
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="447"/>
+        <location filename="../app/RigPanel.cpp" line="603" />
         <source>The calibration could not be read.
 
 %1</source>
@@ -1122,177 +1144,187 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="473"/>
+        <location filename="../app/RigPanel.cpp" line="629" />
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="502"/>
+        <location filename="../app/RigPanel.cpp" line="658" />
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="661" />
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="507"/>
+        <location filename="../app/RigPanel.cpp" line="663" />
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="563"/>
-        <source>&apos;%1&apos; is not a number</source>
+        <location filename="../app/RigPanel.cpp" line="719" />
+        <source>'%1' is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="763" />
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="764" />
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="765" />
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="610"/>
+        <location filename="../app/RigPanel.cpp" line="766" />
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="769" />
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="770" />
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="771" />
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="772" />
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="773" />
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="776" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="777" />
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="622"/>
+        <location filename="../app/RigPanel.cpp" line="778" />
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="780" />
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="625"/>
+        <location filename="../app/RigPanel.cpp" line="781" />
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="782" />
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="783" />
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="628"/>
+        <location filename="../app/RigPanel.cpp" line="784" />
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629"/>
+        <location filename="../app/RigPanel.cpp" line="785" />
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="630"/>
+        <location filename="../app/RigPanel.cpp" line="786" />
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="631"/>
+        <location filename="../app/RigPanel.cpp" line="787" />
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
-        <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
+        <location filename="../app/RigPanel.cpp" line="788" />
+        <source>0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="790" />
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="790" />
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="790" />
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="790" />
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="790" />
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="636"/>
+        <location filename="../app/RigPanel.cpp" line="792" />
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="638"/>
+        <location filename="../app/RigPanel.cpp" line="794" />
+        <source>Drive and record</source>
+        <translation>駕駛並錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="795" />
+        <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
+        <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="797" />
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="640"/>
-        <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
+        <location filename="../app/RigPanel.cpp" line="799" />
+        <source>The session's method drives the car through the link, with the camera's pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="801" />
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1300,164 +1332,164 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="250"/>
+        <location filename="../app/RunPanel.cpp" line="197" />
+        <location filename="../app/RunPanel.cpp" line="250" />
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="250"/>
+        <location filename="../app/RunPanel.cpp" line="197" />
+        <location filename="../app/RunPanel.cpp" line="250" />
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="199"/>
+        <location filename="../app/RunPanel.cpp" line="199" />
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="201"/>
+        <location filename="../app/RunPanel.cpp" line="201" />
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="231"/>
+        <location filename="../app/RunPanel.cpp" line="231" />
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="232"/>
+        <location filename="../app/RunPanel.cpp" line="232" />
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233"/>
+        <location filename="../app/RunPanel.cpp" line="233" />
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235"/>
+        <location filename="../app/RunPanel.cpp" line="235" />
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="237"/>
+        <location filename="../app/RunPanel.cpp" line="237" />
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239"/>
+        <location filename="../app/RunPanel.cpp" line="239" />
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241"/>
+        <location filename="../app/RunPanel.cpp" line="241" />
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243"/>
+        <location filename="../app/RunPanel.cpp" line="243" />
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245"/>
+        <location filename="../app/RunPanel.cpp" line="245" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246"/>
+        <location filename="../app/RunPanel.cpp" line="246" />
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="247"/>
+        <location filename="../app/RunPanel.cpp" line="247" />
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="248"/>
+        <location filename="../app/RunPanel.cpp" line="248" />
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249"/>
+        <location filename="../app/RunPanel.cpp" line="249" />
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251"/>
+        <location filename="../app/RunPanel.cpp" line="251" />
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="252"/>
+        <location filename="../app/RunPanel.cpp" line="252" />
         <source>Reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253"/>
+        <location filename="../app/RunPanel.cpp" line="253" />
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="254"/>
+        <location filename="../app/RunPanel.cpp" line="254" />
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="256"/>
+        <location filename="../app/RunPanel.cpp" line="256" />
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="257"/>
+        <location filename="../app/RunPanel.cpp" line="257" />
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="260" />
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261"/>
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261"/>
+        <location filename="../app/RunPanel.cpp" line="261" />
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263"/>
+        <location filename="../app/RunPanel.cpp" line="263" />
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263"/>
+        <location filename="../app/RunPanel.cpp" line="263" />
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264"/>
+        <location filename="../app/RunPanel.cpp" line="264" />
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264"/>
+        <location filename="../app/RunPanel.cpp" line="264" />
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1465,32 +1497,32 @@
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="39"/>
+        <location filename="../app/RunWorker.cpp" line="39" />
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="101"/>
+        <location filename="../app/RunWorker.cpp" line="101" />
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="116"/>
+        <location filename="../app/RunWorker.cpp" line="116" />
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="191"/>
+        <location filename="../app/RunWorker.cpp" line="191" />
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="231"/>
+        <location filename="../app/RunWorker.cpp" line="231" />
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="241"/>
+        <location filename="../app/RunWorker.cpp" line="241" />
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -1498,14 +1530,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="79"/>
-        <location filename="../app/TaskPanel.cpp" line="86"/>
-        <location filename="../app/TaskPanel.cpp" line="96"/>
+        <location filename="../app/TaskPanel.cpp" line="79" />
+        <location filename="../app/TaskPanel.cpp" line="86" />
+        <location filename="../app/TaskPanel.cpp" line="96" />
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="80"/>
+        <location filename="../app/TaskPanel.cpp" line="80" />
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1514,84 +1546,84 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="87"/>
+        <location filename="../app/TaskPanel.cpp" line="87" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <location filename="../app/TaskPanel.cpp" line="97" />
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="105"/>
-        <location filename="../app/TaskPanel.cpp" line="112"/>
+        <location filename="../app/TaskPanel.cpp" line="105" />
+        <location filename="../app/TaskPanel.cpp" line="112" />
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="106"/>
+        <location filename="../app/TaskPanel.cpp" line="106" />
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="123" />
         <source>the scripted operator</source>
         <translation>預設腳本操作員</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="125" />
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="140"/>
+        <location filename="../app/TaskPanel.cpp" line="140" />
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="143"/>
+        <location filename="../app/TaskPanel.cpp" line="143" />
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="144"/>
+        <location filename="../app/TaskPanel.cpp" line="144" />
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="145"/>
+        <location filename="../app/TaskPanel.cpp" line="145" />
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="147"/>
+        <location filename="../app/TaskPanel.cpp" line="147" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="148"/>
+        <location filename="../app/TaskPanel.cpp" line="148" />
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="149"/>
+        <location filename="../app/TaskPanel.cpp" line="149" />
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="150"/>
+        <location filename="../app/TaskPanel.cpp" line="150" />
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="151"/>
+        <location filename="../app/TaskPanel.cpp" line="151" />
         <source>Scripted</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="152"/>
-        <source>Use the scripted operator&apos;s demonstration for this target</source>
+        <location filename="../app/TaskPanel.cpp" line="152" />
+        <source>Use the scripted operator's demonstration for this target</source>
         <translation>為此對象使用預設腳本操作員的示範</translation>
     </message>
 </context>

@@ -515,6 +515,41 @@ class TestGuiRun : public QObject {
         rig->disconnectLink();
     }
 
+    void rig_drivingThroughTheLinkRecordsADemonstration() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);
+        rig->startCamera();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->lastPose().has_value(), 10000);
+        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
+        rig->connectLink();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected, 5000);
+        const auto before = w.window.session().demonstration();
+        QVERIFY(rig->startDriving());
+        QTest::keyPress(&w.window, Qt::Key_Up);
+        QTRY_VERIFY(rig->drivingInput()[0] > 0.99);
+        QTest::qWait(700);
+        QTest::keyRelease(&w.window, Qt::Key_Up);
+        QTest::qWait(300);
+        rig->stopDriving();
+        const auto demo = w.window.session().demonstration();
+        QVERIFY(demo != before);
+        QVERIFY2(demo->length() >= 30, qPrintable(QString::number(demo->length())));
+        QVERIFY(demo->actions.col(0).maxCoeff() > 0.99);
+        // The car, driven through the link, moved forward; the camera saw it do so.
+        const double moved = demo->states(demo->length() - 1, 0) - demo->states(0, 0);
+        QVERIFY2(moved > 0.3, qPrintable(QString::number(moved)));
+        QVERIFY(demo->states.col(3).maxCoeff() > 0.5);  // and measured its speed
+        // The stream on disk reads back as the same demonstration.
+        prisca::core::FileError error;
+        const auto onDisk =
+            prisca::core::readDemonstrationCsv(w.window.session().demonstrationSource(), &error);
+        QVERIFY2(onDisk, qPrintable(error.toString()));
+        QCOMPARE(onDisk->length(), demo->length());
+        rig->stopCamera();
+        rig->disconnectLink();
+    }
+
     void rig_channelMapIsCheckedAppliedAndRemembered() {
         {
             Window w;
