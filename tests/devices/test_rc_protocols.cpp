@@ -51,6 +51,30 @@ class TestRcProtocols : public QObject {
         }
     }
 
+    void crsf_matchesAPublishedFrameByteForByte() {
+        // Source: github.com/rtlopez/esp-fc, test/test_input_crsf/test_input_crsf.cpp,
+        // test_crsf_encode_rc: every channel 992 (centre) except CH3 = 172 (throttle low),
+        // encoded to this frame (CRC 0xDB).
+        const std::uint8_t published[26] = {0xC8, 0x18, 0x16, 0xE0, 0x03, 0x1F, 0x2B, 0xC0, 0x07,
+                                            0x3E, 0xF0, 0x81, 0x0F, 0x7C, 0xE0, 0x03, 0x1F, 0xF8,
+                                            0xC0, 0x07, 0x3E, 0xF0, 0x81, 0x0F, 0x7C, 0xDB};
+        ChannelValues v;
+        v.fill(992);
+        v[2] = 172;
+        const QByteArray frame = encodeCrsf(v);
+        QCOMPARE(frame, QByteArray(reinterpret_cast<const char*>(published), 26));
+        // And from pulse widths, as the link sends them: 1500 us centre, 988 us low.
+        ChannelValues fromPulses;
+        for (int c = 0; c < 16; ++c) {
+            fromPulses[c] = pulseToValue(RcProtocol::Crsf, c == 2 ? 988.0 : 1500.0);
+        }
+        QCOMPARE(encodeCrsf(fromPulses), frame);
+        RcFrameDecoder decoder(RcProtocol::Crsf);
+        const auto decoded = decoder.push(frame);
+        QCOMPARE(decoded.size(), size_t(1));
+        QCOMPARE(decoded[0], v);
+    }
+
     void frames_haveTheProtocolsShape() {
         ChannelValues v;
         v.fill(992);
