@@ -115,13 +115,15 @@ QByteArray encodeCrsf(const ChannelValues& values) {
     return frame;
 }
 
-QByteArray encodeSbus(const ChannelValues& values, bool failsafe) {
+QByteArray encodeSbus(const ChannelValues& values, bool failsafe, bool channel17, bool channel18) {
     QByteArray frame(kSbusFrameSize, '\0');
     auto* b = reinterpret_cast<std::uint8_t*>(frame.data());
     b[0] = kSbusHeader;
     const auto packed = packChannels(values);
     std::copy(packed.begin(), packed.end(), b + 1);
-    b[23] = failsafe ? 0x0C : 0x00;  // frame lost and failsafe together, as receivers send it
+    // Frame lost and failsafe together, as receivers send it.
+    b[23] = static_cast<std::uint8_t>((failsafe ? 0x0C : 0x00) | (channel17 ? 0x01 : 0x00) |
+                                      (channel18 ? 0x02 : 0x00));
     b[24] = 0x00;
     return frame;
 }

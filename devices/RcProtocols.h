@@ -51,8 +51,10 @@ ChannelValues unpackChannels(const std::uint8_t* packed);
 /// CRSF RC_CHANNELS_PACKED: 0xC8 (address of the flight controller / module), length 24,
 /// type 0x16, 22 bytes of channels, CRC-8/DVB-S2 over type and payload. 26 bytes.
 QByteArray encodeCrsf(const ChannelValues& values);
-/// SBUS: 0x0F, 22 bytes of channels, flags (bit 2 frame lost, bit 3 failsafe), 0x00. 25 bytes.
-QByteArray encodeSbus(const ChannelValues& values, bool failsafe = false);
+/// SBUS: 0x0F, 22 bytes of channels, flags (bit 0 digital channel 17, bit 1 digital channel 18,
+/// bit 2 frame lost, bit 3 failsafe), 0x00. 25 bytes.
+QByteArray encodeSbus(const ChannelValues& values, bool failsafe = false, bool channel17 = false,
+                      bool channel18 = false);
 /// Multiprotocol serial, 26 bytes: header 0x55 (sub-protocol 0..31) or 0x54 (32..63), then
 /// sub-protocol | bind 0x80 | autobind 0x40 | range check 0x20, then rx number | type << 4 |
 /// low power 0x80, then the option byte, then 22 bytes of channels.

@@ -13,7 +13,8 @@ class TestRcProtocols : public QObject {
     Q_OBJECT
   private slots:
     void crc8_dvbS2CheckValue() {
-        // The catalogue check value of CRC-8/DVB-S2 over ASCII "123456789".
+        // The catalogue check value of CRC-8/DVB-S2 over ASCII "123456789" (the CRC catalogue:
+        // width=8 poly=0xd5 init=0x00 refin=false refout=false xorout=0x00 check=0xbc).
         const char* check = "123456789";
         QCOMPARE(crc8DvbS2(reinterpret_cast<const std::uint8_t*>(check), 9), std::uint8_t(0xBC));
     }
@@ -73,6 +74,85 @@ class TestRcProtocols : public QObject {
         const auto decoded = decoder.push(frame);
         QCOMPARE(decoded.size(), size_t(1));
         QCOMPARE(decoded[0], v);
+    }
+
+    void crsf_matchesCapturedFramesByteForByte() {
+        // Source: github.com/betaflight/betaflight, src/test/unit/rx_crsf_unittest.cc,
+        // CrossFireTest.TestCapturedData: two captured RC frames (address 0x00, broadcast);
+        // the test asserts CH1-4 = 189, 993, 978, 983 (then 981) and the CRC. The other
+        // channels are these bytes decoded. The CRC does not cover the address, so only byte
+        // 0 differs from our 0xC8.
+        const std::uint8_t captured[2][26] = {
+            {0x00, 0x18, 0x16, 0xBD, 0x08, 0x9F, 0xF4, 0xAE, 0xF7, 0xBD, 0xEF, 0x7D, 0xEF,
+             0xFB, 0xAD, 0xFD, 0x45, 0x2B, 0x5A, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x6C},
+            {0x00, 0x18, 0x16, 0xBD, 0x08, 0x9F, 0xF4, 0xAA, 0xF7, 0xBD, 0xEF, 0x7D, 0xEF,
+             0xFB, 0xAD, 0xFD, 0x45, 0x2B, 0x5A, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x94}};
+        const int fourth[2] = {983, 981};
+        for (int f = 0; f < 2; ++f) {
+            const ChannelValues v = unpackChannels(captured[f] + 3);
+            QCOMPARE(v[0], std::uint16_t(189));
+            QCOMPARE(v[1], std::uint16_t(993));
+            QCOMPARE(v[2], std::uint16_t(978));
+            QCOMPARE(v[3], std::uint16_t(fourth[f]));
+            const QByteArray frame = encodeCrsf(v);
+            QCOMPARE(frame.mid(1), QByteArray(reinterpret_cast<const char*>(captured[f]) + 1, 25));
+        }
+    }
+
+    void sbus_matchesPublishedFramesByteForByte() {
+        // Source: github.com/zklapow/sbus, tests/parse_tester.rs, test_sbus_parse_basic: this
+        // frame is channels 992, 992, 352, 992, 352 x 6, 992, 992, 0 x 4 with both digital
+        // channels (17, 18) on, neither failsafe nor frame lost.
+        const std::uint8_t basic[25] = {0x0F, 0xE0, 0x03, 0x1F, 0x58, 0xC0, 0x07, 0x16, 0xB0,
+                                        0x80, 0x05, 0x2C, 0x60, 0x01, 0x0B, 0xF8, 0xC0, 0x07,
+                                        0x00, 0x00, 0x00, 0x00, 0x00, 0x03, 0x00};
+        const ChannelValues channels = {992, 992, 352, 992, 352, 352, 352, 352,
+                                        352, 352, 992, 992, 0,   0,   0,   0};
+        QCOMPARE(encodeSbus(channels, false, true, true),
+                 QByteArray(reinterpret_cast<const char*>(basic), 25));
+        // Source: github.com/ArduPilot/ardupilot,
+        // libraries/AP_RCProtocol/examples/RCProtocolTest/RCProtocolTest.cpp: this frame is
+        // expected to read as 1562, 1496, 1000, 1531, 1806, 2006, 1495, 1495, 875 ... us with
+        // ArduPilot's scale (raw x 0.625 + 875, truncated). Decoded raw values, re-encoded:
+        const std::uint8_t ardupilot[25] = {0x0F, 0x4C, 0x1C, 0x5F, 0x32, 0x34, 0x38, 0xDD, 0x89,
+                                            0x83, 0x0F, 0x7C, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                            0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};
+        const int microseconds[9] = {1562, 1496, 1000, 1531, 1806, 2006, 1495, 1495, 875};
+        const ChannelValues raw = unpackChannels(ardupilot + 1);
+        for (int c = 0; c < 9; ++c) {
+            QCOMPARE(static_cast<int>(raw[c] * 0.625 + 875), microseconds[c]);
+        }
+        QCOMPARE(encodeSbus(raw), QByteArray(reinterpret_cast<const char*>(ardupilot), 25));
+    }
+
+    void multiprotocol_followsThePublishedLayout() {
+        // No complete published frame exists; the layout is the module's own
+        // (github.com/pascallanger/DIY-Multiprotocol-TX-Module, Multiprotocol/Multiprotocol.h,
+        // "Serial: 100000 Baud 8e2 ... Total of 26 bytes"): channels packed "like in SBUS",
+        // so bytes 4..25 are SBUS's bytes 1..22 for the same values.
+        const ChannelValues channels = {992, 992, 352, 992, 352, 352, 352, 352,
+                                        352, 352, 992, 992, 0,   0,   0,   0};
+        const QByteArray multi = encodeMultiprotocol(channels, {});
+        QCOMPARE(multi.mid(4, 22), encodeSbus(channels).mid(1, 22));
+        // The one literal fragment published (Multiprotocol/Multiprotocol.ino, under SAMSON):
+        // header 0x55, protocol FRSKYD (3) in byte 1, byte 2 = 0x7F (sub-type 7, receiver 15),
+        // and CH15 = CH16 = 1622 (73 %) giving bytes 24, 25 = 217, 202.
+        MultiprotocolHeader h;
+        h.protocol = 3;
+        h.subType = 7;
+        h.receiverNumber = 15;
+        ChannelValues v;
+        v.fill(1024);
+        v[14] = v[15] = 1622;
+        const QByteArray frame = encodeMultiprotocol(v, h);
+        QCOMPARE(std::uint8_t(frame[0]), std::uint8_t(0x55));
+        QCOMPARE(std::uint8_t(frame[1]) & 0x1F, 3);
+        QCOMPARE(std::uint8_t(frame[2]), std::uint8_t(0x7F));
+        QCOMPARE(std::uint8_t(frame[24]), std::uint8_t(217));
+        QCOMPARE(std::uint8_t(frame[25]), std::uint8_t(202));
+        // The documented scale: -100 % = 204, 0 % = 1024, +100 % = 1843.
+        QCOMPARE(pulseToValue(RcProtocol::Multiprotocol, 988.0), std::uint16_t(204));
+        QCOMPARE(pulseToValue(RcProtocol::Multiprotocol, 2012.0), std::uint16_t(1843));
     }
 
     void frames_haveTheProtocolsShape() {
