@@ -59,6 +59,12 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       sourceLabel_(new QLabel(this)),
       source_(new QComboBox(this)),
       sourcePath_(new QLineEdit(this)),
+      cameraSettingsLabel_(new QLabel(this)),
+      width_(new QSpinBox(this)),
+      height_(new QSpinBox(this)),
+      fps_(new QSpinBox(this)),
+      exposure_(new QSpinBox(this)),
+      gain_(new QSpinBox(this)),
       startCamera_(new QPushButton(this)),
       stopCamera_(new QPushButton(this)),
       calibrationInfo_(new QLabel(this)),
@@ -83,6 +89,16 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     setObjectName(QStringLiteral("rigPanel"));
     source_->setObjectName(QStringLiteral("cameraSource"));
     sourcePath_->setObjectName(QStringLiteral("cameraPath"));
+    width_->setObjectName(QStringLiteral("cameraWidth"));
+    height_->setObjectName(QStringLiteral("cameraHeight"));
+    fps_->setObjectName(QStringLiteral("cameraFps"));
+    exposure_->setObjectName(QStringLiteral("cameraExposure"));
+    gain_->setObjectName(QStringLiteral("cameraGain"));
+    width_->setRange(160, 4096);
+    height_->setRange(120, 4096);
+    fps_->setRange(1, 500);
+    exposure_->setRange(-1, 100000);
+    gain_->setRange(-1, 10000);
     startCamera_->setObjectName(QStringLiteral("startCamera"));
     stopCamera_->setObjectName(QStringLiteral("stopCamera"));
     calibrate_->setObjectName(QStringLiteral("calibrate"));
@@ -127,6 +143,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     QSettings settings;
     source_->setCurrentIndex(settings.value("rig/source", 0).toInt());
     sourcePath_->setText(settings.value("rig/path", QStringLiteral("/dev/video0")).toString());
+    width_->setValue(settings.value("rig/width", 640).toInt());
+    height_->setValue(settings.value("rig/height", 480).toInt());
+    fps_->setValue(settings.value("rig/fps", 60).toInt());
+    exposure_->setValue(settings.value("rig/exposure", -1).toInt());
+    gain_->setValue(settings.value("rig/gain", -1).toInt());
     protocol_->setCurrentIndex(settings.value("rig/protocol", 0).toInt());
     baud_->setValue(settings.value("rig/baud", 0).toInt());
     // The channel map as the operator left it: "channel:trim:min:max:reversed" per control.
@@ -147,6 +168,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(sourceLabel_, source_);
     form->addRow(QString(), sourcePath_);
+    auto* cameraSettings = new QHBoxLayout;
+    for (QSpinBox* box : {width_, height_, fps_, exposure_, gain_}) {
+        cameraSettings->addWidget(box);
+    }
+    form->addRow(cameraSettingsLabel_, cameraSettings);
     auto* cameraButtons = new QHBoxLayout;
     cameraButtons->addWidget(startCamera_);
     cameraButtons->addWidget(stopCamera_);
@@ -566,6 +592,17 @@ void RigPanel::startCamera() {
     } else if (source == Source::Device) {
         devices::V4l2Settings settings;
         settings.device = sourcePath_->text();
+        settings.width = width_->value();
+        settings.height = height_->value();
+        settings.fps = fps_->value();
+        settings.exposure = exposure_->value();
+        settings.gain = gain_->value();
+        QSettings s;
+        s.setValue("rig/width", settings.width);
+        s.setValue("rig/height", settings.height);
+        s.setValue("rig/fps", fps_->value());
+        s.setValue("rig/exposure", exposure_->value());
+        s.setValue("rig/gain", gain_->value());
         camera = devices::makeV4l2Source(settings);
     } else {
         camera = devices::makeVideoFileSource(sourcePath_->text(), true);
@@ -769,6 +806,20 @@ void RigPanel::retranslateUi() {
     source_->setItemText(2, tr("Video file"));
     const auto source = static_cast<Source>(source_->currentData().toInt());
     sourcePath_->setEnabled(source != Source::Virtual);
+    for (QSpinBox* box : {width_, height_, fps_, exposure_, gain_}) {
+        box->setEnabled(source == Source::Device);
+    }
+    cameraSettingsLabel_->setText(tr("Device:"));
+    width_->setToolTip(tr("Width [px] asked of the camera"));
+    height_->setToolTip(tr("Height [px] asked of the camera"));
+    fps_->setSuffix(tr(" fps"));
+    fps_->setToolTip(tr("Frame rate asked of the camera"));
+    exposure_->setSpecialValueText(tr("auto exposure"));
+    exposure_->setToolTip(
+        tr("Exposure in the driver's units; lowest: the driver's automatic "
+           "exposure. IR LEDs track best with a short exposure."));
+    gain_->setSpecialValueText(tr("auto gain"));
+    gain_->setToolTip(tr("Gain in the driver's units; lowest: leave the driver's"));
     sourcePath_->setPlaceholderText(source == Source::Device ? tr("/dev/video0")
                                                              : tr("path of a video file"));
     startCamera_->setText(tr("Start camera"));

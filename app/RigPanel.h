@@ -130,6 +130,12 @@ class RigPanel : public QWidget {
     QLabel* sourceLabel_;
     QComboBox* source_;
     QLineEdit* sourcePath_;
+    QLabel* cameraSettingsLabel_;
+    QSpinBox* width_;
+    QSpinBox* height_;
+    QSpinBox* fps_;
+    QSpinBox* exposure_;
+    QSpinBox* gain_;
     QPushButton* startCamera_;
     QPushButton* stopCamera_;
     QLabel* calibrationInfo_;

@@ -1025,117 +1025,117 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="233" />
+        <location filename="../app/RigPanel.cpp" line="259" />
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="234" />
-        <location filename="../app/RigPanel.cpp" line="241" />
+        <location filename="../app/RigPanel.cpp" line="260" />
+        <location filename="../app/RigPanel.cpp" line="267" />
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="240" />
+        <location filename="../app/RigPanel.cpp" line="266" />
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="255" />
-        <location filename="../app/RigPanel.cpp" line="266" />
+        <location filename="../app/RigPanel.cpp" line="281" />
+        <location filename="../app/RigPanel.cpp" line="292" />
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="256" />
+        <location filename="../app/RigPanel.cpp" line="282" />
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="267" />
+        <location filename="../app/RigPanel.cpp" line="293" />
         <source>'%1' is not two numbers "x, y" in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="314" />
-        <location filename="../app/RigPanel.cpp" line="360" />
+        <location filename="../app/RigPanel.cpp" line="340" />
+        <location filename="../app/RigPanel.cpp" line="388" />
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="316" />
-        <location filename="../app/RigPanel.cpp" line="361" />
+        <location filename="../app/RigPanel.cpp" line="342" />
+        <location filename="../app/RigPanel.cpp" line="389" />
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="318" />
+        <location filename="../app/RigPanel.cpp" line="344" />
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="321" />
+        <location filename="../app/RigPanel.cpp" line="347" />
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="348" />
+        <location filename="../app/RigPanel.cpp" line="374" />
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="372" />
+        <location filename="../app/RigPanel.cpp" line="400" />
         <source>Cannot record to %1: %2</source>
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="406" />
+        <location filename="../app/RigPanel.cpp" line="435" />
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="447" />
+        <location filename="../app/RigPanel.cpp" line="476" />
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="457" />
+        <location filename="../app/RigPanel.cpp" line="486" />
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="480" />
+        <location filename="../app/RigPanel.cpp" line="509" />
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="510" />
+        <location filename="../app/RigPanel.cpp" line="539" />
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="515" />
+        <location filename="../app/RigPanel.cpp" line="544" />
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="552" />
+        <location filename="../app/RigPanel.cpp" line="581" />
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="581" />
+        <location filename="../app/RigPanel.cpp" line="621" />
         <source>Choose or type the transmitter's port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="602" />
-        <location filename="../app/RigPanel.cpp" line="619" />
+        <location filename="../app/RigPanel.cpp" line="642" />
+        <location filename="../app/RigPanel.cpp" line="659" />
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="603" />
+        <location filename="../app/RigPanel.cpp" line="643" />
         <source>The calibration could not be read.
 
 %1</source>
@@ -1144,187 +1144,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629" />
+        <location filename="../app/RigPanel.cpp" line="669" />
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="658" />
+        <location filename="../app/RigPanel.cpp" line="698" />
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="661" />
+        <location filename="../app/RigPanel.cpp" line="701" />
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="663" />
+        <location filename="../app/RigPanel.cpp" line="703" />
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="719" />
+        <location filename="../app/RigPanel.cpp" line="759" />
         <source>'%1' is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="763" />
+        <location filename="../app/RigPanel.cpp" line="803" />
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="764" />
+        <location filename="../app/RigPanel.cpp" line="804" />
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="765" />
+        <location filename="../app/RigPanel.cpp" line="805" />
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="766" />
+        <location filename="../app/RigPanel.cpp" line="806" />
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="769" />
+        <location filename="../app/RigPanel.cpp" line="812" />
+        <source>Device:</source>
+        <translation>裝置：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="813" />
+        <source>Width [px] asked of the camera</source>
+        <translation>要求攝影機的寬度 [px]</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="814" />
+        <source>Height [px] asked of the camera</source>
+        <translation>要求攝影機的高度 [px]</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="815" />
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="816" />
+        <source>Frame rate asked of the camera</source>
+        <translation>要求攝影機的幀率</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="817" />
+        <source>auto exposure</source>
+        <translation>自動曝光</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="818" />
+        <source>Exposure in the driver's units; lowest: the driver's automatic exposure. IR LEDs track best with a short exposure.</source>
+        <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="820" />
+        <source>auto gain</source>
+        <translation>自動增益</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="821" />
+        <source>Gain in the driver's units; lowest: leave the driver's</source>
+        <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="822" />
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="770" />
+        <location filename="../app/RigPanel.cpp" line="823" />
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="771" />
+        <location filename="../app/RigPanel.cpp" line="824" />
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="772" />
+        <location filename="../app/RigPanel.cpp" line="825" />
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="773" />
+        <location filename="../app/RigPanel.cpp" line="826" />
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="776" />
+        <location filename="../app/RigPanel.cpp" line="829" />
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="777" />
+        <location filename="../app/RigPanel.cpp" line="830" />
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="778" />
+        <location filename="../app/RigPanel.cpp" line="831" />
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="780" />
+        <location filename="../app/RigPanel.cpp" line="833" />
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="781" />
+        <location filename="../app/RigPanel.cpp" line="834" />
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="782" />
+        <location filename="../app/RigPanel.cpp" line="835" />
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="783" />
+        <location filename="../app/RigPanel.cpp" line="836" />
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="784" />
+        <location filename="../app/RigPanel.cpp" line="837" />
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="785" />
+        <location filename="../app/RigPanel.cpp" line="838" />
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="786" />
+        <location filename="../app/RigPanel.cpp" line="839" />
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="787" />
+        <location filename="../app/RigPanel.cpp" line="840" />
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="788" />
+        <location filename="../app/RigPanel.cpp" line="841" />
         <source>0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790" />
+        <location filename="../app/RigPanel.cpp" line="843" />
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790" />
+        <location filename="../app/RigPanel.cpp" line="843" />
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790" />
+        <location filename="../app/RigPanel.cpp" line="843" />
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790" />
+        <location filename="../app/RigPanel.cpp" line="843" />
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790" />
+        <location filename="../app/RigPanel.cpp" line="843" />
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="792" />
+        <location filename="../app/RigPanel.cpp" line="845" />
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="794" />
+        <location filename="../app/RigPanel.cpp" line="847" />
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="795" />
+        <location filename="../app/RigPanel.cpp" line="849" />
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="797" />
+        <location filename="../app/RigPanel.cpp" line="851" />
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="799" />
+        <location filename="../app/RigPanel.cpp" line="853" />
         <source>The session's method drives the car through the link, with the camera's pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="801" />
+        <location filename="../app/RigPanel.cpp" line="855" />
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
