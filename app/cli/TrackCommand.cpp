@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QJsonObject>
 
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/videoio.hpp>
 
 #include <cmath>
@@ -23,12 +24,38 @@ int trackCommand(const QStringList& arguments) {
     line.addValue("calibration", "Floor calibration JSON (image px -> floor m).", "file");
     line.addValue("out", "CSV: frame, t, x, y, psi, found, misfit_m, blobs.", "file");
     line.addValue("threshold", "Grey level above which a pixel is lit.", "0..255", "180");
+    line.addValue("leds",
+                  "LED positions in the car frame [m], front first: \"x,y;x,y;x,y\" (x forward, "
+                  "y left; default the DESIGN geometry 0.12,0;-0.08,0.06;-0.08,-0.06).",
+                  "x,y;x,y;x,y");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
     }
     const QString videoPath = line.required("video");
     const QString out = line.required("out");
+    devices::TrackerSettings settings;
+    settings.threshold = static_cast<int>(line.integer("threshold", 0, 255));
+    if (line.isSet("leds")) {
+        const QStringList leds = line.value("leds").split(QLatin1Char(';'));
+        if (leds.size() != 3) {
+            throw UsageError(QStringLiteral("--leds: three positions \"x,y;x,y;x,y\" are needed, "
+                                            "%1 given")
+                                 .arg(leds.size()));
+        }
+        for (int i = 0; i < 3; ++i) {
+            const QStringList xy = leds[i].split(QLatin1Char(','));
+            bool okX = false, okY = false;
+            const double x = xy.value(0).trimmed().toDouble(&okX);
+            const double y = xy.value(1).trimmed().toDouble(&okY);
+            if (xy.size() != 2 || !okX || !okY || !std::isfinite(x) || !std::isfinite(y)) {
+                throw UsageError(QStringLiteral("--leds: LED %1 '%2' is not \"x,y\" in metres")
+                                     .arg(i + 1)
+                                     .arg(leds[i]));
+            }
+            settings.geometry.leds[i] = cv::Point2d(x, y);
+        }
+    }
     QString error;
     const auto calibration = devices::FloorCalibration::load(line.required("calibration"), &error);
     if (!calibration) {
@@ -37,6 +64,8 @@ int trackCommand(const QStringList& arguments) {
     if (!QFileInfo::exists(videoPath)) {
         throw UsageError(QStringLiteral("%1: no such file").arg(videoPath));
     }
+    // OpenCV's own log lines (backends it tries and drops) would break the one-line error rule.
+    cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
     cv::VideoCapture video(videoPath.toStdString());
     if (!video.isOpened()) {
         throw UsageError(QStringLiteral("%1: not a video this build can read").arg(videoPath));
@@ -45,8 +74,6 @@ int trackCommand(const QStringList& arguments) {
     if (!(fps > 0.0 && std::isfinite(fps))) {
         fps = 40.0;
     }
-    devices::TrackerSettings settings;
-    settings.threshold = static_cast<int>(line.integer("threshold", 0, 255));
     devices::LedTracker tracker(settings);
     installInterruptHandler();
     QByteArray csv = "# prisca-poses 1\n# video: " + videoPath.toUtf8() +

@@ -129,6 +129,42 @@ class TestCliTrack : public QObject {
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("junk.avi"), qPrintable(r.err));
         QVERIFY(!QFile::exists(dir.filePath("p.csv")));
+        r = cli({"track", "--video", "junk.avi", "--calibration", "cal.json", "--out", "p.csv",
+                 "--leds", "0.1,0;0,0.05"},
+                dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("three positions"), qPrintable(r.err));
+    }
+
+    void track_usesTheLedGeometryGiven() {
+        // A car with a wider LED triangle: found with --leds, refused (no pose) without.
+        QTemporaryDir dir;
+        const FloorCalibration camera = syntheticCeilingCamera();
+        QString error;
+        QVERIFY(camera.save(dir.filePath("cal.json"), &error));
+        LedGeometry wide;
+        wide.leds = {cv::Point2d(0.20, 0.0), cv::Point2d(-0.10, 0.10), cv::Point2d(-0.10, -0.10)};
+        cv::VideoWriter writer(dir.filePath("wide.avi").toStdString(), cv::CAP_OPENCV_MJPEG,
+                               cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 40.0,
+                               cv::Size(640, 480), true);
+        QVERIFY(writer.isOpened());
+        for (int k = 0; k < 10; ++k) {
+            cv::Mat bgr;
+            cv::cvtColor(renderLeds({1.0 + 0.02 * k, 0.3, 0.4}, camera, {}, wide, k + 1), bgr,
+                         cv::COLOR_GRAY2BGR);
+            writer.write(bgr);
+        }
+        writer.release();
+        Result r = cli({"track", "--video", "wide.avi", "--calibration", "cal.json", "--out",
+                        "a.csv", "--format", "json"},
+                       dir.path());
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("\"withPose\": 0"), qPrintable(r.out));
+        r = cli({"track", "--video", "wide.avi", "--calibration", "cal.json", "--out", "b.csv",
+                 "--leds", "0.20,0;-0.10,0.10;-0.10,-0.10", "--format", "json"},
+                dir.path());
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("\"withPose\": 10"), qPrintable(r.out));
     }
 };
 
