@@ -70,6 +70,18 @@ struct Window {
     QTableWidget* results() { return find<QTableWidget>("trialResults"); }
 };
 
+// The virtual rig's camera running with a pose, and the link connected to its car.
+bool startVirtualRig(Window& w, RigPanel* rig) {
+    w.find<QComboBox>("cameraSource")->setCurrentIndex(0);
+    rig->startCamera();
+    if (!QTest::qWaitFor([&] { return rig->lastPose().has_value(); }, 10000)) {
+        return false;
+    }
+    w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
+    rig->connectLink();
+    return QTest::qWaitFor([&] { return rig->linkStatus().connected; }, 5000);
+}
+
 }  // namespace
 
 class TestGuiRun : public QObject {
@@ -486,12 +498,7 @@ class TestGuiRun : public QObject {
         // Not before camera and link are up: said plainly.
         QVERIFY(!rig->runTrial());
         QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains("camera"));
-        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);
-        rig->startCamera();
-        QTRY_VERIFY_WITH_TIMEOUT(rig->lastPose().has_value(), 10000);
-        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
-        rig->connectLink();
-        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected, 5000);
+        QVERIFY(startVirtualRig(w, rig));
         QSignalSpy finished(rig, &RigPanel::trialFinished);
         QVERIFY(rig->runTrial());
         QVERIFY(finished.wait(20000));
@@ -518,12 +525,7 @@ class TestGuiRun : public QObject {
     void rig_drivingThroughTheLinkRecordsADemonstration() {
         Window w;
         auto* rig = w.find<RigPanel>("rigPanel");
-        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);
-        rig->startCamera();
-        QTRY_VERIFY_WITH_TIMEOUT(rig->lastPose().has_value(), 10000);
-        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
-        rig->connectLink();
-        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected, 5000);
+        QVERIFY(startVirtualRig(w, rig));
         const auto before = w.window.session().demonstration();
         QVERIFY(rig->startDriving());
         QTest::keyPress(&w.window, Qt::Key_Up);
