@@ -322,10 +322,18 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
 }
 
 RigPanel::~RigPanel() {
-    stopDriving();
+    // The session may already be gone (the window deletes it first): a recording in progress is
+    // kept on disk, not handed to the session.
+    driveTimer_->stop();
+    driving_->stop();
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->running = false;
+        shared_->recording = false;
+        if (shared_->stream) {
+            shared_->stream->write(shared_->pendingRows);
+            shared_->stream->close();
+        }
     }
     camera_.stop();
     disconnectLink();

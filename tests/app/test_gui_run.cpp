@@ -20,6 +20,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QFile>
 #include <QFormLayout>
 #include <QLabel>
@@ -550,6 +551,28 @@ class TestGuiRun : public QObject {
         QCOMPARE(onDisk->length(), demo->length());
         rig->stopCamera();
         rig->disconnectLink();
+    }
+
+    void rig_closingTheWindowWhileDrivingKeepsTheRecordingOnDisk() {
+        QString stream;
+        {
+            Window w;
+            auto* rig = w.find<RigPanel>("rigPanel");
+            QVERIFY(startVirtualRig(w, rig));
+            QVERIFY(rig->startDriving());
+            QTest::qWait(400);
+            QVERIFY(rig->isDriving());
+            QVERIFY(w.window.close());
+        }  // the window, its session and the panel go while the recording runs: no crash
+        const QDir folder(RecordPanel::recordingsFolder());
+        const QStringList files =
+            folder.entryList({QStringLiteral("rig-*.csv")}, QDir::Files, QDir::Time);
+        QVERIFY(!files.isEmpty());
+        prisca::core::FileError error;
+        const auto kept =
+            prisca::core::readDemonstrationCsv(folder.filePath(files.first()), &error);
+        QVERIFY2(kept, qPrintable(error.toString()));
+        QVERIFY(kept->length() > 5);
     }
 
     void rig_channelMapIsCheckedAppliedAndRemembered() {
