@@ -44,21 +44,8 @@ void RunWorker::start(const RunRequest& request) {
     request_ = request;
     try {
         plant_ = sim::PlantCatalog::create(request_.plant);
-        const core::Demonstration& demo = *request_.demonstration;
-        const double demoDuration = demo.length() * demo.dt;
-        const double level = request_.perturbation;
-        episode_ = sim::EpisodeSettings{};
-        episode_.perturbation = {level, level, level};
-        episode_.measurement = request_.profile.measurement;
-        if (episode_.measurement.noise.size() > 0) {
-            episode_.measurement.noise *= request_.sensor;
-        }
-        if (request_.sensor == 0.0) {
-            episode_.measurement.latencySteps = 0;
-            episode_.measurement.dropProbability = 0.0;
-        }
-        episode_.duration = demoDuration + request_.profile.settleTime;
-        episode_.stopAtRestAfter = request_.profile.info.pose ? demoDuration : -1.0;
+        episode_ = request_.profile.episode(*request_.demonstration, request_.perturbation,
+                                            request_.sensor);
 
         sim::PlantProfile profile = request_.profile;
         Eigen::MatrixXd pegasusTheta;

@@ -172,6 +172,24 @@ PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
         QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
 }
 
+EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration,
+                                      double perturbation, double sensor) const {
+    EpisodeSettings episode;
+    episode.perturbation = {perturbation, perturbation, perturbation};
+    episode.measurement = measurement;
+    if (episode.measurement.noise.size() > 0) {
+        episode.measurement.noise *= sensor;
+    }
+    if (sensor == 0.0) {
+        episode.measurement.latencySteps = 0;
+        episode.measurement.dropProbability = 0.0;
+    }
+    const double demoDuration = demonstration.length() * demonstration.dt;
+    episode.duration = demoDuration + settleTime;
+    episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;
+    return episode;
+}
+
 core::TrackingProblem PlantProfile::trackingProblem(
     std::shared_ptr<const core::Demonstration> demonstration,
     core::MatchingParameters::Mode mode) const {

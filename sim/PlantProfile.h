@@ -1,5 +1,6 @@
 #pragma once
 
+#include "EpisodeRunner.h"
 #include "MeasurementModel.h"
 #include "Plant.h"
 #include "core/ActionMapping.h"
@@ -51,6 +52,13 @@ struct PlantProfile {
     /// The profile of a plant by its info (name "slidecar", "acrobot" or "aircraft").
     /// Throws std::invalid_argument for an unknown plant.
     static PlantProfile forPlant(const PlantInfo& info);
+    /// How a trial of this plant repeating `demonstration` runs: the perturbation and the
+    /// sensor scaled by their levels (0 nominal / perfect, 1 realistic; a perfect sensor also has
+    /// no latency and no drops), the demonstration's length plus settleTime, and (vehicles) an
+    /// early end once at rest after the demonstration's length. The seed and reset mode are the
+    /// caller's.
+    EpisodeSettings episode(const core::Demonstration& demonstration, double perturbation,
+                            double sensor) const;
     /// The tracking problem for a demonstration of this plant (deviation, matching, weights,
     /// limits); mode chooses least-state-deviation or time-driven matching.
     core::TrackingProblem trackingProblem(std::shared_ptr<const core::Demonstration> demonstration,

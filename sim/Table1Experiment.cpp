@@ -23,25 +23,6 @@ bool learnsOnline(const QString& method) {
 
 }  // namespace
 
-EpisodeSettings table1Episode(const Table1Settings& settings,
-                              const core::Demonstration& demonstration,
-                              const PlantProfile& profile) {
-    EpisodeSettings episode;
-    episode.perturbation = {settings.perturbation, settings.perturbation, settings.perturbation};
-    episode.measurement = profile.measurement;
-    if (episode.measurement.noise.size() > 0) {
-        episode.measurement.noise *= settings.sensor;
-    }
-    if (settings.sensor == 0.0) {
-        episode.measurement.latencySteps = 0;
-        episode.measurement.dropProbability = 0.0;
-    }
-    const double demoDuration = demonstration.length() * demonstration.dt;
-    episode.duration = demoDuration + profile.settleTime;
-    episode.stopAtRestAfter = demoDuration;
-    return episode;
-}
-
 Table1Result runTable1(const Table1Settings& settings,
                        std::shared_ptr<const core::Demonstration> demonstration,
                        const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
@@ -59,7 +40,8 @@ Table1Result runTable1(const Table1Settings& settings,
             settings.progress(text);
         }
     };
-    const EpisodeSettings base = table1Episode(settings, *demonstration, profile);
+    const EpisodeSettings base =
+        profile.episode(*demonstration, settings.perturbation, settings.sensor);
     std::vector<std::uint64_t> trainingSeeds;
     for (int i = 0; i < settings.trainingTrials; ++i) {
         trainingSeeds.push_back(mixSeed(settings.seed ^ kTrainingStream, i));

@@ -58,11 +58,6 @@ Table1Result runTable1(const Table1Settings& settings,
                        std::shared_ptr<const core::Demonstration> demonstration,
                        const PlantProfile& profile, const Eigen::MatrixXd& fittedB);
 
-/// The episode settings of an evaluation or training trial of this experiment.
-EpisodeSettings table1Episode(const Table1Settings& settings,
-                              const core::Demonstration& demonstration,
-                              const PlantProfile& profile);
-
 /// Table I's rows from a result: per method, the position [cm] and orientation [deg] error
 /// summaries over the trials that finished. *finished (if given) receives their number.
 std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finished = nullptr);

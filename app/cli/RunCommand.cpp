@@ -127,19 +127,7 @@ int runCommand(const QStringList& arguments) {
     const int trainingTrials = static_cast<int>(line.integer("training-trials", 1, 10000));
 
     const core::Demonstration& demo = *task.demonstration;
-    const double demoDuration = demo.length() * demo.dt;
-    sim::EpisodeSettings episode;
-    episode.perturbation = {perturbationLevel, perturbationLevel, perturbationLevel};
-    episode.measurement = profile.measurement;
-    if (episode.measurement.noise.size() > 0) {
-        episode.measurement.noise *= sensorLevel;
-    }
-    if (sensorLevel == 0.0) {
-        episode.measurement.latencySteps = 0;
-        episode.measurement.dropProbability = 0.0;
-    }
-    episode.duration = demoDuration + profile.settleTime;
-    episode.stopAtRestAfter = profile.info.pose ? demoDuration : -1.0;
+    sim::EpisodeSettings episode = profile.episode(demo, perturbationLevel, sensorLevel);
 
     // Offline-tuned methods train first, on their own seeds.
     const auto build = [&](const QString& name) {
