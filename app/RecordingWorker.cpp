@@ -45,10 +45,14 @@ void RecordingWorker::start(const QString& plant, const QString& streamPath) {
         return;
     }
     state_ = plant_->reset(1, sim::Perturbation::none());
+    // The demonstration format's own header; rows follow as they are driven.
+    core::Demonstration header =
+        sim::DemonstrationRecorder(plant_->info(), plant_->timing().controlPeriod).demonstration();
+    header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
     input_ = Eigen::VectorXd::Zero(plant_->info().actionDimension());
     states_.clear();
     actions_.clear();
-    pending_.clear();
+    pending_ = core::formatDemonstrationCsvHeader(header);
     samples_.clear();
     stopRequested_.store(false);
     active_ = true;
@@ -79,16 +83,7 @@ void RecordingWorker::tick() {
     for (int i = 0; i < due && i < 40; ++i) {
         const int k = static_cast<int>(states_.size());
         const double t = k * dt;
-        if (k == 0) {
-            // The header is the demonstration format's own, from a one-row demonstration.
-            sim::DemonstrationRecorder first(plant_->info(), dt);
-            first.record(state_, input_);
-            core::Demonstration demo = first.demonstration();
-            demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
-            pending_ += core::formatDemonstrationCsv(demo);
-        } else {
-            core::appendDemonstrationCsvRow(pending_, t, state_, input_);
-        }
+        core::appendDemonstrationCsvRow(pending_, t, state_, input_);
         states_.push_back(state_);
         actions_.push_back(input_);
         LiveSample sample;

@@ -408,21 +408,10 @@ bool RigPanel::startDriving() {
         trialInfo_->setText(tr("Cannot record to %1: %2").arg(path, stream->errorString()));
         return false;
     }
-    // The header of the demonstration format (a one-row demonstration's, without its row).
-    core::Demonstration header;
-    header.plant = info.name;
-    header.dt = 1.0 / 40.0;
-    header.stateNames = info.stateNames;
-    header.stateUnits = info.stateUnits;
-    header.actionNames = info.actionNames;
-    header.actionUnits = info.actionUnits;
+    // The header of the demonstration format; rows follow as they are recorded.
+    core::Demonstration header = sim::DemonstrationRecorder(info, 1.0 / 40.0).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-    header.time = Eigen::VectorXd::Zero(1);
-    header.states = Eigen::MatrixXd::Zero(1, info.stateDimension());
-    header.actions = Eigen::MatrixXd::Zero(1, info.actionDimension());
-    QByteArray text = core::formatDemonstrationCsv(header);
-    text.truncate(text.lastIndexOf('\n', text.size() - 2) + 1);  // drop the placeholder row
-    stream->write(text);
+    stream->write(core::formatDemonstrationCsvHeader(header));
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->states.clear();

@@ -827,6 +827,33 @@ void appendDemonstrationCsvRow(QByteArray& out, double time, const Eigen::Vector
     out += '\n';
 }
 
+QByteArray formatDemonstrationCsvHeader(const Demonstration& demo) {
+    QByteArray out;
+    out += kMagicLine;
+    out += '\n';
+    if (!demo.plant.isEmpty()) {
+        out += "# plant: " + demo.plant.toUtf8() + '\n';
+    }
+    out += "# dt: ";
+    appendNumber(out, demo.dt);
+    out += '\n';
+    appendList(out, "states", demo.stateNames, demo.stateUnits);
+    appendList(out, "actions", demo.actionNames, demo.actionUnits);
+    for (auto it = demo.metadata.cbegin(); it != demo.metadata.cend(); ++it) {
+        out += "# " + it.key().toUtf8() + ':';
+        if (!it.value().isEmpty()) {
+            out += ' ' + it.value().toUtf8();
+        }
+        out += '\n';
+    }
+    out += 't';
+    for (const QString& name : demo.stateNames + demo.actionNames) {
+        out += ',' + name.toUtf8();
+    }
+    out += '\n';
+    return out;
+}
+
 QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem) {
     try {
         const QString why = checkDemonstrationForCsv(demo);
@@ -842,28 +869,7 @@ QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem) {
         QByteArray out;
         // About 12 characters per number; one allocation for the usual case.
         out.reserve(qsizetype(rows) * (1 + n + m) * 12 + 1024);
-        out += kMagicLine;
-        out += '\n';
-        if (!demo.plant.isEmpty()) {
-            out += "# plant: " + demo.plant.toUtf8() + '\n';
-        }
-        out += "# dt: ";
-        appendNumber(out, demo.dt);
-        out += '\n';
-        appendList(out, "states", demo.stateNames, demo.stateUnits);
-        appendList(out, "actions", demo.actionNames, demo.actionUnits);
-        for (auto it = demo.metadata.cbegin(); it != demo.metadata.cend(); ++it) {
-            out += "# " + it.key().toUtf8() + ':';
-            if (!it.value().isEmpty()) {
-                out += ' ' + it.value().toUtf8();
-            }
-            out += '\n';
-        }
-        out += 't';
-        for (const QString& name : demo.stateNames + demo.actionNames) {
-            out += ',' + name.toUtf8();
-        }
-        out += '\n';
+        out += formatDemonstrationCsvHeader(demo);
         for (int k = 0; k < rows; ++k) {
             appendDemonstrationCsvRow(out, demo.time[k], demo.states.row(k).transpose(),
                                       demo.actions.row(k).transpose());

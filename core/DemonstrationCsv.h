@@ -67,6 +67,12 @@ QString checkDemonstrationForCsv(const Demonstration& demo);
 /// @return the text, or an empty array when checkDemonstrationForCsv() reports a problem
 QByteArray formatDemonstrationCsv(const Demonstration& demo, QString* problem = nullptr);
 
+/// The header of formatDemonstrationCsv() alone (magic line, plant, dt, names and units,
+/// metadata, column row), from the demonstration's descriptive fields; its samples are not
+/// used. A recording streamed to disk starts with this, then appendDemonstrationCsvRow() per
+/// sample. The names must be writable (see checkDemonstrationForCsv()).
+QByteArray formatDemonstrationCsvHeader(const Demonstration& demo);
+
 /// Appends one data row (t, states..., actions...) in the format of formatDemonstrationCsv(), so
 /// a recording can be streamed to disk row by row after a header written by that function.
 void appendDemonstrationCsvRow(QByteArray& out, double time, const Eigen::VectorXd& state,

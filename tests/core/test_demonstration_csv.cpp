@@ -162,6 +162,20 @@ class TestDemonstrationCsv : public QObject {
         QVERIFY(sameDemonstration(demo, *back));
     }
 
+    void streamed_headerThenRowsIsTheWholeFile() {
+        // A recording streamed to disk (header, then a row per sample) is the same bytes as the
+        // demonstration written at once.
+        Demonstration demo = makeDemonstration(50);
+        demo.metadata.insert(QStringLiteral("source"), QStringLiteral("streamed"));
+        QByteArray streamed = prisca::core::formatDemonstrationCsvHeader(demo);
+        for (int k = 0; k < demo.length(); ++k) {
+            prisca::core::appendDemonstrationCsvRow(streamed, demo.time[k],
+                                                    demo.states.row(k).transpose(),
+                                                    demo.actions.row(k).transpose());
+        }
+        QCOMPARE(streamed, prisca::core::formatDemonstrationCsv(demo));
+    }
+
     void roundTrip_awkwardDoublesKeepEveryBit() {
         const double awkward[] = {0.1,
                                   1e-300,
