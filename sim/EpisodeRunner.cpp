@@ -58,13 +58,10 @@ EpisodeResult EpisodeStepper::result() const {
 }
 
 EpisodeResult EpisodeStepper::takeResult() {
-    EpisodeResult result;
-    result.steps = std::move(steps_);
+    std::vector<StepRecord> steps = std::move(steps_);
     steps_.clear();
-    result.finalState = state_;
-    result.stepCount = k_;
-    result.duration = k_ * plant_.timing().controlPeriod;
-    result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
+    EpisodeResult result = this->result();  // the summary, with no steps left to copy
+    result.steps = std::move(steps);
     return result;
 }
 
