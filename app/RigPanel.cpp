@@ -10,6 +10,7 @@
 #include "devices/SyntheticCamera.h"
 #include "sim/ControllerFactory.h"
 #include "sim/DemonstrationRecorder.h"
+#include "sim/MethodTraining.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -350,8 +351,7 @@ bool RigPanel::runTrial() {
         missing = tr("Connect the transmitter link first.");
     } else if (!session_.profile().info.pose) {
         missing = tr("The rig drives a car: choose the slide-car as the target.");
-    } else if (session_.method() == QLatin1String("pd-selected") ||
-               session_.method() == QLatin1String("pegasus")) {
+    } else if (sim::trainsOffline(session_.method())) {
         missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
                       .arg(session_.method());
     }

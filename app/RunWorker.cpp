@@ -47,42 +47,30 @@ void RunWorker::start(const RunRequest& request) {
         episode_ = request_.profile.episode(*request_.demonstration, request_.perturbation,
                                             request_.sensor);
 
-        sim::PlantProfile profile = request_.profile;
-        Eigen::MatrixXd pegasusTheta;
-        if (request_.method == QLatin1String("pd-selected") ||
-            request_.method == QLatin1String("pegasus")) {
-            // Offline methods train first, on seeds the run never uses.
+        // Offline methods train first, on seeds the run never uses.
+        sim::TrainingSetup training;
+        training.plant = request_.plant;
+        training.profile = request_.profile;
+        training.demonstration = request_.demonstration;
+        training.fittedB = request_.fittedB;
+        training.episode = episode_;
+        training.seeds = sim::trainingSeeds(request_.seed, request_.trainingTrials);
+        training.threads = 1;
+        training.cancelled = [this] { return cancelTraining_.load() || emergency_.load(); };
+        training.progress = [this](const QString& text) { emit progress(text); };
+        if (sim::trainsOffline(request_.method)) {
             setPhase(RunPhase::Training);
-            sim::TrainingSetup training;
-            training.plant = request_.plant;
-            training.profile = profile;
-            training.demonstration = request_.demonstration;
-            training.fittedB = request_.fittedB;
-            training.episode = episode_;
-            training.episode.recordSteps = false;
-            for (int i = 0; i < request_.trainingTrials; ++i) {
-                training.seeds.push_back(sim::mixSeed(request_.seed ^ 0x7261696eULL, i));
-            }
-            training.threads = 1;
-            training.cancelled = [this] { return cancelTraining_.load() || emergency_.load(); };
-            training.progress = [this](const QString& text) { emit progress(text); };
-            if (request_.method == QLatin1String("pegasus")) {
-                pegasusTheta = sim::trainPegasus(training, profile.pegasusIterations).theta;
-            } else {
-                profile.pd = sim::selectPdGains(training);
-            }
+        }
+        controller_ =
+            sim::createTrained(request_.method, training, request_.profile.pegasusIterations);
+        if (!controller_) {  // training cancelled
             if (emergency_.load()) {
                 enterEmergencyStop();
-                return;
-            }
-            if (cancelTraining_.load()) {
+            } else {
                 setPhase(RunPhase::Idle);
-                return;
             }
+            return;
         }
-        controller_ = sim::ControllerFactory::create(request_.method, profile,
-                                                     request_.demonstration, request_.fittedB,
-                                                     pegasusTheta.size() ? &pegasusTheta : nullptr);
     } catch (const std::exception& e) {
         setPhase(RunPhase::Idle);
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));

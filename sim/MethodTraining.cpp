@@ -110,4 +110,37 @@ PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations) {
     return training;
 }
 
+std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count) {
+    constexpr std::uint64_t kTrainingStream = 0x7EA1;
+    std::vector<std::uint64_t> seeds;
+    for (int i = 0; i < count; ++i) {
+        seeds.push_back(mixSeed(seed ^ kTrainingStream, i));
+    }
+    return seeds;
+}
+
+bool trainsOffline(const QString& method) {
+    return method == QLatin1String("pd-selected") || method == QLatin1String("pegasus");
+}
+
+std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
+                                                int pegasusIterations) {
+    PlantProfile profile = setup.profile;
+    Eigen::MatrixXd pegasusTheta;
+    if (trainsOffline(method)) {
+        TrainingSetup training = setup;
+        training.episode.recordSteps = false;
+        if (method == QLatin1String("pegasus")) {
+            pegasusTheta = trainPegasus(training, pegasusIterations).theta;
+        } else {
+            profile.pd = selectPdGains(training);
+        }
+        if (setup.cancelled && setup.cancelled()) {
+            return nullptr;
+        }
+    }
+    return ControllerFactory::create(method, profile, setup.demonstration, setup.fittedB,
+                                     pegasusTheta.size() ? &pegasusTheta : nullptr);
+}
+
 }  // namespace prisca::sim

@@ -2,6 +2,7 @@
 
 #include "EpisodeRunner.h"
 #include "PlantProfile.h"
+#include "core/Controller.h"
 #include "core/Demonstration.h"
 
 #include <Eigen/Core>
@@ -44,5 +45,19 @@ struct PegasusTraining {
 /// PEGASUS on fixed scenarios (the training seeds: each fixes the start, the perturbation and
 /// every noise stream) with the frozen linear policy of the "pegasus" method.
 PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations);
+
+/// The training seeds of a run or experiment with seed `seed`: their own stream, never its
+/// evaluation seeds (mixSeed(seed, i)).
+std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count);
+
+/// Whether `method` trains offline before it runs (PD (selected), PEGASUS).
+bool trainsOffline(const QString& method);
+
+/// `method`'s controller for setup.profile, trained first on setup's seeds if it trains offline
+/// (PD (selected) selects its gains, PEGASUS takes `pegasusIterations` gradient steps). Returns
+/// null if setup.cancelled stopped the training. Throws std::invalid_argument as
+/// ControllerFactory::create does.
+std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
+                                                int pegasusIterations);
 
 }  // namespace prisca::sim

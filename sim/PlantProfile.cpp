@@ -172,8 +172,8 @@ PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
         QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
 }
 
-EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration,
-                                      double perturbation, double sensor) const {
+EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, double perturbation,
+                                      double sensor) const {
     EpisodeSettings episode;
     episode.perturbation = {perturbation, perturbation, perturbation};
     episode.measurement = measurement;

@@ -15,7 +15,6 @@ namespace prisca::sim {
 namespace {
 
 // Training seeds come from their own stream, so they never coincide with evaluation seeds.
-constexpr std::uint64_t kTrainingStream = 0x7EA1;
 
 bool learnsOnline(const QString& method) {
     return method == QLatin1String("prisca") || method == QLatin1String("pgsd");
@@ -42,10 +41,8 @@ Table1Result runTable1(const Table1Settings& settings,
     };
     const EpisodeSettings base =
         profile.episode(*demonstration, settings.perturbation, settings.sensor);
-    std::vector<std::uint64_t> trainingSeeds;
-    for (int i = 0; i < settings.trainingTrials; ++i) {
-        trainingSeeds.push_back(mixSeed(settings.seed ^ kTrainingStream, i));
-    }
+    const std::vector<std::uint64_t> trainingSeeds =
+        sim::trainingSeeds(settings.seed, settings.trainingTrials);
 
     Table1Result result;
     const int T = demonstration->length();

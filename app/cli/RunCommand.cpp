@@ -21,7 +21,6 @@ using namespace figures;
 namespace {
 
 // The training trials of PEGASUS and PD (selected) never share a seed with evaluation trials.
-constexpr std::uint64_t kTrainingStream = 0x7EA1;
 
 QJsonValue finiteOrNull(double value) {
     return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
@@ -131,33 +130,23 @@ int runCommand(const QStringList& arguments) {
 
     // Offline-tuned methods train first, on their own seeds.
     const auto build = [&](const QString& name) {
-        Eigen::MatrixXd pegasusTheta;
-        sim::PlantProfile tuned = profile;
-        if (name == QLatin1String("pegasus") || name == QLatin1String("pd-selected")) {
-            sim::TrainingSetup training;
-            training.plant = task.plant;
-            training.profile = profile;
-            training.demonstration = task.demonstration;
-            training.fittedB = task.fit.b;
-            training.episode = episode;
-            training.episode.recordSteps = false;
-            for (int i = 0; i < trainingTrials; ++i) {
-                training.seeds.push_back(sim::mixSeed(seed ^ kTrainingStream, i));
-            }
-            training.threads = jobs;
-            training.progress = [](const QString& text) { printProgress(text); };
-            if (name == QLatin1String("pegasus")) {
-                const int iterations = line.isSet("iterations")
-                                           ? static_cast<int>(line.integer("iterations", 0, 100000))
-                                           : profile.pegasusIterations;
-                pegasusTheta = sim::trainPegasus(training, iterations).theta;
-            } else {
-                tuned.pd = sim::selectPdGains(training);
-            }
+        sim::TrainingSetup training;
+        training.plant = task.plant;
+        training.profile = profile;
+        training.demonstration = task.demonstration;
+        training.fittedB = task.fit.b;
+        training.episode = episode;
+        training.seeds = sim::trainingSeeds(seed, trainingTrials);
+        training.threads = jobs;
+        training.progress = [](const QString& text) { printProgress(text); };
+        const int iterations = line.isSet("iterations")
+                                   ? static_cast<int>(line.integer("iterations", 0, 100000))
+                                   : profile.pegasusIterations;
+        auto controller = sim::createTrained(name, training, iterations);
+        if (sim::trainsOffline(name)) {
             printProgress(QString());
         }
-        return sim::ControllerFactory::create(name, tuned, task.demonstration, task.fit.b,
-                                              pegasusTheta.size() ? &pegasusTheta : nullptr);
+        return controller;
     };
 
     auto plant = sim::PlantCatalog::create(task.plant, task.timing);
