@@ -13,6 +13,8 @@ namespace {
 // Candidates are scored in blocks of this many samples: large enough to vectorise, small
 // enough that the scratch stays in L1 cache.
 constexpr int kChunk = 256;
+// Distances this close (relative) are a tie: equal samples up to rounding.
+constexpr double kTieTolerance = 1e-12;
 }  // namespace
 
 LeastStateDeviationMatcher::LeastStateDeviationMatcher(const Eigen::MatrixXd& demonstrationStates,
@@ -73,7 +75,11 @@ int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& s
     for (int c : angleRows_) {
         wrappedState_[c] = wrapAngle(state[c]);
     }
-    int best = first;
+    // Where the demonstration's own clock would be: ties go to the sample nearest it, so a
+    // robot standing exactly where the demonstration stood still (identical samples) moves on
+    // with the demonstration's time instead of staying on the first of them forever.
+    const int expected = std::min(last_ + 1, end);
+    int best = -1;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (int start = first; start <= end; start += kChunk) {
         const int count = std::min(kChunk, end - start + 1);
@@ -89,13 +95,19 @@ int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& s
             dist += weights_[c] * diff;
         }
         for (int t = 0; t < count; ++t) {
-            if (dist[t] < bestDistance) {  // strict: ties keep the earlier sample
+            const int j = start + t;
+            const double tolerance = kTieTolerance * std::max(1.0, bestDistance);
+            if (best < 0 || dist[t] < bestDistance - tolerance) {
                 bestDistance = dist[t];
-                best = start + t;
+                best = j;
+            } else if (dist[t] <= bestDistance + tolerance &&
+                       std::abs(j - expected) < std::abs(best - expected)) {
+                bestDistance = std::min(bestDistance, static_cast<double>(dist[t]));
+                best = j;
             }
         }
     }
-    last_ = best;
+    last_ = best >= 0 ? best : first;  // a non-finite observation keeps the reference
     ++step_;
     return last_;
 }

@@ -23,8 +23,9 @@ struct MatchingParameters {
 };
 
 /// Least-state-deviation reference matching (eq. 12): j_k minimises the weighted L1 distance
-/// sum_c w_c |s_k,c - s*_j,c| over a forward window after the previous match; ties go to the
-/// earlier sample. In TimeDriven mode j_k = min(k, T - 1).
+/// sum_c w_c |s_k,c - s*_j,c| over a forward window after the previous match; ties (equal
+/// samples, e.g. a demonstration standing still) go to the sample nearest j_{k-1} + 1, the
+/// demonstration's own clock. In TimeDriven mode j_k = min(k, T - 1).
 /// One instance per controller; not thread-safe. match() does not allocate.
 class LeastStateDeviationMatcher {
   public:

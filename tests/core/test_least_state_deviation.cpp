@@ -59,15 +59,24 @@ class TestLeastStateDeviation : public QObject {
         }
     }
 
-    void match_tiesGoToEarlierSampleSoAStandingRobotWaits() {
+    void match_tiesFollowTheDemonstrationClockThroughItsStandstillThenWait() {
         Eigen::MatrixXd demo = Eigen::MatrixXd::Zero(50, 2);  // demonstration starts at rest
         for (int j = 10; j < 50; ++j)
             demo(j, 0) = 0.1 * (j - 9);
         MatchingParameters parameters;
         parameters.window = 30;
         LeastStateDeviationMatcher matcher(demo, parameters);
+        // Samples 0..9 are equal: a robot standing there goes through them one per step, as the
+        // demonstration did (the first sample forever would never ask it to move off).
+        for (int k = 0; k < 10; ++k)
+            QCOMPARE(matcher.match(Eigen::Vector2d(0, 0)), k);
+        // Where the demonstration moved on, a robot still standing waits at its last rest sample.
         for (int k = 0; k < 5; ++k)
-            QCOMPARE(matcher.match(Eigen::Vector2d(0, 0)), 0);
+            QCOMPARE(matcher.match(Eigen::Vector2d(0, 0)), 9);
+        // Equal distance at a lateral offset: still the tie rule, not the earliest sample.
+        matcher.reset();
+        QCOMPARE(matcher.match(Eigen::Vector2d(0, 0.03)), 0);
+        QCOMPARE(matcher.match(Eigen::Vector2d(0, 0.03)), 1);
         QCOMPARE(matcher.match(Eigen::Vector2d(1.0, 0)), 19);
         matcher.reset();
         QCOMPARE(matcher.lastIndex(), -1);
