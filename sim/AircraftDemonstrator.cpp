@@ -33,7 +33,7 @@ class HandTremor {
     double value_ = 0.0;
 };
 
-enum class Phase { FirstStraight, LeftTurn, MiddleStraight, RightTurn, FinalStraight };
+enum class Phase { Straight, Turn, FinalStraight };
 
 }  // namespace
 
@@ -45,12 +45,24 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
     const double j = script.jitter;
     const double dt = timing.controlPeriod;
     // Per-flight variation: when the pilot starts each move and how hard they push.
-    const double firstStraight = std::max(0.5, script.firstStraight + 0.3 * j * normal(draw));
-    const double middleStraight = std::max(0.5, script.middleStraight + 0.3 * j * normal(draw));
+    // The draws keep the order of the original two-turn script (first, middle, final straight,
+    // left and right rudder, roll-out lead), so an S-turn of a seed is the same flight as before.
+    const int turns = static_cast<int>(script.turns.size());
+    std::vector<double> straights(std::max(turns, 1));  // before each turn, then the final one
+    std::vector<double> rudders(std::max(turns, 2));
+    straights[0] = std::max(0.5, script.firstStraight + 0.3 * j * normal(draw));
+    const double middle = std::max(0.5, script.middleStraight + 0.3 * j * normal(draw));
     const double finalStraight = std::max(0.5, script.finalStraight + 0.3 * j * normal(draw));
-    const double leftRudder = std::clamp(script.turnRudder + 0.04 * j * normal(draw), 0.05, 1.0);
-    const double rightRudder = std::clamp(script.turnRudder + 0.04 * j * normal(draw), 0.05, 1.0);
+    rudders[0] = std::clamp(script.turnRudder + 0.04 * j * normal(draw), 0.05, 1.0);
+    rudders[1] = std::clamp(script.turnRudder + 0.04 * j * normal(draw), 0.05, 1.0);
     const double rollOutLead = std::max(0.0, script.rollOutLead + 0.04 * j * normal(draw));
+    for (int i = 1; i < turns; ++i) {
+        straights[i] =
+            i == 1 ? middle : std::max(0.5, script.middleStraight + 0.3 * j * normal(draw));
+    }
+    for (int i = 2; i < turns; ++i) {
+        rudders[i] = std::clamp(script.turnRudder + 0.04 * j * normal(draw), 0.05, 1.0);
+    }
     HandTremor rudderTremor(0.02 * j, 0.5, dt, mixSeed(seed, 101));
     HandTremor throttleTremor(0.015 * j, 1.0, dt, mixSeed(seed, 102));
 
@@ -61,9 +73,11 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
     const double trim = PlanarAircraft::trimThrottle(parameters, script.cruiseSpeed);
     const double startHeading = state[2];
     const double hand = 1.0 - std::exp(-dt / script.handLag);
-    Phase phase = Phase::FirstStraight;
+    Phase phase = turns > 0 ? Phase::Straight : Phase::FinalStraight;
+    int turn = 0;  // the turn flown or next to fly
     double phaseStart = 0.0;
     double targetHeading = startHeading;
+    double turnSign = 1.0;
     double rudder = 0.0;
     double throttle = trim;
     double speedIntegral = 0.0;
@@ -79,29 +93,18 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
 
         // What the pilot looks at: time on the straights, heading still to go in the turns.
         switch (phase) {
-            case Phase::FirstStraight:
-                if (t - phaseStart >= firstStraight) {
-                    phase = Phase::LeftTurn;
+            case Phase::Straight:
+                if (t - phaseStart >= straights[turn]) {
+                    phase = Phase::Turn;
                     phaseStart = t;
-                    targetHeading = startHeading + script.turnAngle;
+                    turnSign = script.turns[turn] >= 0.0 ? 1.0 : -1.0;
+                    targetHeading += script.turns[turn];
                 }
                 break;
-            case Phase::LeftTurn:
-                if (targetHeading - psi <= rollOutLead) {
-                    phase = Phase::MiddleStraight;
-                    phaseStart = t;
-                }
-                break;
-            case Phase::MiddleStraight:
-                if (t - phaseStart >= middleStraight) {
-                    phase = Phase::RightTurn;
-                    phaseStart = t;
-                    targetHeading = startHeading;
-                }
-                break;
-            case Phase::RightTurn:
-                if (psi - targetHeading <= rollOutLead) {
-                    phase = Phase::FinalStraight;
+            case Phase::Turn:
+                if (turnSign * (targetHeading - psi) <= rollOutLead) {
+                    ++turn;
+                    phase = turn < turns ? Phase::Straight : Phase::FinalStraight;
                     phaseStart = t;
                 }
                 break;
@@ -113,10 +116,8 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
         }
 
         double wantedRudder = 0.0;
-        if (phase == Phase::LeftTurn) {
-            wantedRudder = leftRudder * smoothStep(t, phaseStart, script.rudderRamp);
-        } else if (phase == Phase::RightTurn) {
-            wantedRudder = -rightRudder * smoothStep(t, phaseStart, script.rudderRamp);
+        if (phase == Phase::Turn) {
+            wantedRudder = turnSign * rudders[turn] * smoothStep(t, phaseStart, script.rudderRamp);
         } else {
             // Holding a heading: small, bounded corrections, as a pilot on a straight makes.
             wantedRudder = std::clamp(

@@ -5,6 +5,7 @@
 #include "core/Demonstration.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace prisca::sim {
 
@@ -21,10 +22,13 @@ class AircraftDemonstrator {
     /// Tuning of the scripted pilot. Plain data.
     struct Script {
         double cruiseSpeed = 17.0;    ///< speed the pilot holds [m/s]
-        double firstStraight = 3.0;   ///< straight before the left turn [s]
-        double middleStraight = 3.0;  ///< straight between the turns, from the roll-out [s]
-        double finalStraight = 3.0;   ///< straight after the right turn, from the roll-out [s]
-        double turnAngle = 3.14159265358979323846;  ///< heading change of each turn [rad]
+        double firstStraight = 3.0;   ///< straight before the first turn [s]
+        double middleStraight = 3.0;  ///< straight between two turns, from the roll-out [s]
+        double finalStraight = 3.0;   ///< straight after the last turn, from the roll-out [s]
+        /// The turns flown in order: heading change of each, positive to the left [rad]. The
+        /// S-turn is a left and a right half circle; a circle is one full left turn; a figure
+        /// eight a full left and a full right turn.
+        std::vector<double> turns = {3.14159265358979323846, -3.14159265358979323846};
         double turnRudder = 0.7;          ///< rudder held through the turns, in (0, 1] [1]
         double rudderRamp = 0.6;          ///< time to move the rudder into the turn [s]
         double rollOutLead = 0.35;        ///< heading still to go when easing out of a turn [rad]

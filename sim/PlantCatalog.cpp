@@ -1,11 +1,9 @@
 #include "PlantCatalog.h"
 
 #include "Acrobot.h"
-#include "AcrobotDemonstrator.h"
-#include "AircraftDemonstrator.h"
+#include "DemonstrationStyles.h"
 #include "PlanarAircraft.h"
 #include "SlideCar.h"
-#include "SlideCarDemonstrator.h"
 
 #include <stdexcept>
 
@@ -53,16 +51,10 @@ PlantInfo PlantCatalog::describe(const QString& name) {
 
 core::Demonstration PlantCatalog::demonstrate(const QString& name, std::uint64_t seed,
                                               const SimulationTiming& timing) {
-    if (name == QLatin1String("slidecar")) {
-        return SlideCarDemonstrator::record(seed, timing);
+    if (!contains(name)) {
+        unknown(name);
     }
-    if (name == QLatin1String("acrobot")) {
-        return AcrobotDemonstrator::record(seed, timing);
-    }
-    if (name == QLatin1String("aircraft")) {
-        return AircraftDemonstrator::record(seed, timing);
-    }
-    unknown(name);
+    return DemonstrationStyles::record(name, DemonstrationStyles::classic(name), seed, timing);
 }
 
 }  // namespace prisca::sim

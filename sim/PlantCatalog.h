@@ -22,7 +22,8 @@ class PlantCatalog {
     static std::unique_ptr<Plant> create(const QString& name, const SimulationTiming& timing = {});
     /// The plant's description without building it.
     static PlantInfo describe(const QString& name);
-    /// The scripted, human-like demonstration of the plant for this seed.
+    /// The scripted, human-like demonstration of the plant for this seed, in its classic style
+    /// (DemonstrationStyles has the others).
     static core::Demonstration demonstrate(const QString& name, std::uint64_t seed,
                                            const SimulationTiming& timing = {});
 };

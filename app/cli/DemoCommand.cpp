@@ -1,15 +1,21 @@
-// prisca-cli demo: the plant's scripted, human-like demonstration.
+// prisca-cli demo: a scripted, human-like demonstration of a plant, in one of its styles.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+
+#include <QJsonArray>
 
 namespace prisca::app::cli {
 
 int demoCommand(const QStringList& arguments) {
     CommandLine line(QStringLiteral("demo"),
-                     QStringLiteral("Record the scripted demonstration of a simulated plant."));
+                     QStringLiteral("Record a scripted demonstration of a simulated plant, in one "
+                                    "of the operator styles of that plant (--list-styles)."));
     line.addValue("plant", "Plant: " + sim::PlantCatalog::names().join(", ") + ".", "name");
+    line.addValue("style", "Operator style (default: the plant's classic one).", "name");
+    line.addFlag("list-styles", "Print the plant's styles, one name a line, and exit.");
     line.addValue("seed", "Seed of the operator's hand variation.", "N", "1");
     line.addValue("out", "Output demonstration CSV.", "file");
     line.addFormat({"text", "json"});
@@ -17,12 +23,38 @@ int demoCommand(const QStringList& arguments) {
         return 0;
     }
     const QString plantName = checkedPlant(line.required("plant"));
+    if (line.isSet("list-styles")) {
+        const std::vector<sim::DemonstrationStyle> styles = sim::DemonstrationStyles::of(plantName);
+        if (line.format() == QLatin1String("json")) {
+            QJsonArray list;
+            for (const sim::DemonstrationStyle& style : styles) {
+                list.append(QJsonObject{{"name", style.name}, {"description", style.description}});
+            }
+            printJson({{"plant", plantName}, {"styles", list}});
+        } else {
+            QString text;
+            for (const sim::DemonstrationStyle& style : styles) {
+                text += style.name + QLatin1Char('\n');
+            }
+            printText(text);
+        }
+        return 0;
+    }
+    const QString style = line.isSet("style") ? line.value("style")
+                                              : sim::DemonstrationStyles::classic(plantName);
+    if (!sim::DemonstrationStyles::contains(plantName, style)) {
+        throw UsageError(QStringLiteral("--style: unknown %1 style '%2' (one of: %3)")
+                             .arg(plantName, style,
+                                  sim::DemonstrationStyles::names(plantName).join(QLatin1Char(' '))));
+    }
     const QString out = line.required("out");
     const auto seed =
         static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));
-    core::Demonstration demonstration = sim::PlantCatalog::demonstrate(plantName, seed);
+    core::Demonstration demonstration = sim::DemonstrationStyles::record(plantName, style, seed);
     demonstration.metadata.insert(QStringLiteral("source"),
-                                  QStringLiteral("prisca-cli demo, seed %1").arg(seed));
+                                  QStringLiteral("prisca-cli demo, style %1, seed %2")
+                                      .arg(style)
+                                      .arg(seed));
     writeDemonstration(demonstration, out);
     const int T = demonstration.length();
     if (line.format() == QLatin1String("json")) {
@@ -31,6 +63,7 @@ int demoCommand(const QStringList& arguments) {
             end.insert(demonstration.stateNames[i], demonstration.states(T - 1, i));
         }
         printJson({{"plant", plantName},
+                   {"style", style},
                    {"seed", static_cast<double>(seed)},
                    {"samples", T},
                    {"duration", T * demonstration.dt},
@@ -38,8 +71,8 @@ int demoCommand(const QStringList& arguments) {
                    {"final", end},
                    {"out", out}});
     } else {
-        printText(QStringLiteral("%1 demonstration (seed %2): %3 samples, %4 s; wrote %5\n")
-                      .arg(plantName)
+        printText(QStringLiteral("%1 demonstration (%2, seed %3): %4 samples, %5 s; wrote %6\n")
+                      .arg(plantName, style)
                       .arg(seed)
                       .arg(T)
                       .arg(T * demonstration.dt)

@@ -54,7 +54,14 @@ int main(int argc, char* argv[]) {
         ::mkdir(runtime.constData(), 0700);
         qputenv("XDG_RUNTIME_DIR", runtime);
     }
-    QGuiApplication application(argc, argv);
+    // The GUI application takes options such as --style and --platform out of argv for itself;
+    // every argument here is the command's (demo --style), so it sees only the program name.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i) {
+        arguments << QString::fromLocal8Bit(argv[i]);
+    }
+    int applicationArgc = 1;
+    QGuiApplication application(applicationArgc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));
     QCoreApplication::setApplicationName(QStringLiteral("prisca-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PRISCA_VERSION));
@@ -70,7 +77,7 @@ int main(int argc, char* argv[]) {
     parser.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
 
     // parse() rather than process(): process() exits with 1 on bad input, we promise 2.
-    if (!parser.parse(QCoreApplication::arguments())) {
+    if (!parser.parse(arguments)) {
         return fail(parser.errorText());
     }
     if (parser.isSet(versionOption)) {

@@ -1,0 +1,244 @@
+#include "DemonstrationStyles.h"
+
+#include "AcrobotDemonstrator.h"
+#include "AircraftDemonstrator.h"
+#include "SlideCarDemonstrator.h"
+
+#include <functional>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+using CarScript = SlideCarDemonstrator::Script;
+using ArmScript = AcrobotDemonstrator::Script;
+using PilotScript = AircraftDemonstrator::Script;
+
+struct CarStyle {
+    const char* name;
+    const char* description;
+    std::function<void(CarScript&)> adjust;
+};
+
+// Slide-car operators. Rotation is set by when the wheel is centred (and a counter-steer to
+// catch a 90-degree slide); the approach by throttle and how long the straight is.
+const std::vector<CarStyle>& carStyles() {
+    static const std::vector<CarStyle> styles = {
+        {"stick-180-left", "analogue stick, 180 deg slide to the left (the classic)",
+         [](CarScript&) {}},
+        {"keyboard-180-right", "keyboard keys with the window's ramp, 180 deg slide to the right",
+         [](CarScript& s) {
+             s.keyboard = true;
+             s.direction = -1.0;
+             s.releaseHeading = 1.0;
+         }},
+        {"standstill-180-left", "a wait at standstill first, then a 180 deg slide to the left",
+         [](CarScript& s) { s.standstill = 1.0; }},
+        {"stick-90-left", "analogue stick, a moderate approach and about 90 deg to the left",
+         [](CarScript& s) {
+             s.launchThrottle = 0.6;
+             s.turnTime = 1.0;
+             s.releaseHeading = 1.2;
+         }},
+        {"keyboard-90-right", "keyboard keys tapped for part throttle, about 90 deg to the right",
+         [](CarScript& s) {
+             s.keyboard = true;
+             s.direction = -1.0;
+             s.launchThrottle = 0.6;
+             s.turnTime = 1.0;
+             s.releaseHeading = 1.2;
+         }},
+        {"fast-180-right", "a long, fast approach on full throttle, 180 deg to the right",
+         [](CarScript& s) {
+             s.direction = -1.0;
+             s.launchThrottle = 1.0;
+             s.turnTime = 1.8;
+             s.releaseHeading = 1.2;
+         }},
+        {"slow-90-left", "a long, slow approach, about 90 deg to the left",
+         [](CarScript& s) {
+             s.launchThrottle = 0.5;
+             s.turnTime = 1.8;
+             s.releaseHeading = 1.0;
+         }},
+        {"blip-180-left", "a throttle blip in the slide, 180 deg to the left",
+         [](CarScript& s) {
+             s.blipThrottle = 0.5;
+             s.blipDelay = 0.25;
+             s.blipDuration = 0.15;
+         }},
+        {"jitter-180-right", "a shaking hand on both sticks, 180 deg to the right",
+         [](CarScript& s) {
+             s.direction = -1.0;
+             s.stickJitter = 0.06;
+         }},
+        {"coast-90-right", "throttle off early, coasting into a 90 deg slide to the right",
+         [](CarScript& s) {
+             s.direction = -1.0;
+             s.turnTime = 1.0;
+             s.coastTime = 0.4;
+             s.releaseHeading = 1.2;
+         }},
+    };
+    return styles;
+}
+
+struct ArmStyle {
+    const char* name;
+    const char* description;
+    std::function<void(ArmScript&)> adjust;
+};
+
+const std::vector<ArmStyle>& armStyles() {
+    static const std::vector<ArmStyle> styles = {
+        {"swing-medium", "a swing growing to about 50 deg at the shoulder (the classic)",
+         [](ArmScript&) {}},
+        {"swing-small", "a gentle swing of about 25 deg",
+         [](ArmScript& s) {
+             s.shoulderAmplitude = 0.45;
+             s.elbowAmplitude = 0.3;
+         }},
+        {"swing-large", "a large swing of about 75 deg, grown quickly",
+         [](ArmScript& s) {
+             s.shoulderAmplitude = 1.35;
+             s.elbowAmplitude = 0.9;
+             s.growTime = 4.0;
+         }},
+        {"swing-fast", "a faster swing (2.4 s period) with a stiffer hand",
+         [](ArmScript& s) {
+             s.period = 2.4;
+             s.shoulderStiffness = 30.0;
+             s.elbowStiffness = 15.0;
+         }},
+    };
+    return styles;
+}
+
+struct PilotStyle {
+    const char* name;
+    const char* description;
+    std::function<void(PilotScript&)> adjust;
+};
+
+const std::vector<PilotStyle>& pilotStyles() {
+    static const std::vector<PilotStyle> styles = {
+        {"s-turn", "a left and a right half circle (the classic)", [](PilotScript&) {}},
+        {"circle", "one full circle to the left",
+         [](PilotScript& s) {
+             s.turns = {2.0 * kPi};
+             s.finalStraight = 4.0;
+         }},
+        {"figure-eight", "a full circle to the left, then one to the right (climb-free)",
+         [](PilotScript& s) {
+             s.turns = {2.0 * kPi, -2.0 * kPi};
+             s.middleStraight = 1.0;
+             s.maxDuration = 60.0;
+         }},
+        {"s-turn-wide", "a gentle S-turn with less rudder and longer straights",
+         [](PilotScript& s) {
+             s.turnRudder = 0.45;
+             s.firstStraight = 4.0;
+             s.middleStraight = 4.0;
+             s.maxDuration = 60.0;
+         }},
+    };
+    return styles;
+}
+
+template <class Style>
+std::vector<DemonstrationStyle> describe(const std::vector<Style>& styles) {
+    std::vector<DemonstrationStyle> out;
+    for (const Style& s : styles) {
+        out.push_back({QString::fromLatin1(s.name), QString::fromLatin1(s.description)});
+    }
+    return out;
+}
+
+template <class Style>
+const Style* find(const std::vector<Style>& styles, const QString& name) {
+    for (const Style& s : styles) {
+        if (name == QLatin1String(s.name)) {
+            return &s;
+        }
+    }
+    return nullptr;
+}
+
+[[noreturn]] void unknownStyle(const QString& plant, const QString& style) {
+    const QStringList known = DemonstrationStyles::names(plant);
+    if (known.isEmpty()) {
+        throw std::invalid_argument(
+            QStringLiteral("no demonstration styles for plant '%1'").arg(plant).toStdString());
+    }
+    throw std::invalid_argument(QStringLiteral("unknown %1 style '%2' (one of: %3)")
+                                    .arg(plant, style, known.join(QLatin1Char(' ')))
+                                    .toStdString());
+}
+
+}  // namespace
+
+std::vector<DemonstrationStyle> DemonstrationStyles::of(const QString& plant) {
+    if (plant == QLatin1String("slidecar")) {
+        return describe(carStyles());
+    }
+    if (plant == QLatin1String("acrobot")) {
+        return describe(armStyles());
+    }
+    if (plant == QLatin1String("aircraft")) {
+        return describe(pilotStyles());
+    }
+    return {};
+}
+
+QStringList DemonstrationStyles::names(const QString& plant) {
+    QStringList names;
+    for (const DemonstrationStyle& s : of(plant)) {
+        names << s.name;
+    }
+    return names;
+}
+
+QString DemonstrationStyles::classic(const QString& plant) {
+    const QStringList all = names(plant);
+    return all.isEmpty() ? QString() : all.front();
+}
+
+core::Demonstration DemonstrationStyles::record(const QString& plant, const QString& style,
+                                                std::uint64_t seed,
+                                                const SimulationTiming& timing) {
+    core::Demonstration demonstration;
+    if (plant == QLatin1String("slidecar")) {
+        const CarStyle* s = find(carStyles(), style);
+        if (!s) {
+            unknownStyle(plant, style);
+        }
+        CarScript script;
+        s->adjust(script);
+        demonstration = SlideCarDemonstrator::record(seed, script, timing);
+    } else if (plant == QLatin1String("acrobot")) {
+        const ArmStyle* s = find(armStyles(), style);
+        if (!s) {
+            unknownStyle(plant, style);
+        }
+        ArmScript script;
+        s->adjust(script);
+        demonstration = AcrobotDemonstrator::record(seed, script, timing);
+    } else if (plant == QLatin1String("aircraft")) {
+        const PilotStyle* s = find(pilotStyles(), style);
+        if (!s) {
+            unknownStyle(plant, style);
+        }
+        PilotScript script;
+        s->adjust(script);
+        demonstration = AircraftDemonstrator::record(seed, script, timing);
+    } else {
+        unknownStyle(plant, style);
+    }
+    demonstration.metadata.insert(QStringLiteral("style"), style);
+    return demonstration;
+}
+
+}  // namespace prisca::sim
