@@ -1,5 +1,7 @@
 #include "Acrobot.h"
 
+#include "Box2dConversions.h"
+
 #include <box2d/box2d.h>
 
 #include <algorithm>
@@ -181,6 +183,22 @@ Eigen::VectorXd Acrobot::resetTo(const Eigen::VectorXd& s) {
     actuatorNoise_ = 0.0;
     build(Eigen::Vector4d(wrapAngle(s[0]), wrapAngle(s[1]), s[2], s[3]));
     return state();
+}
+
+std::unique_ptr<Plant> Acrobot::clone(bool actuatorNoise) const {
+    auto copy = std::make_unique<Acrobot>(parameters_, timing_);
+    copy->trialEquations_ = trialEquations_;
+    copy->trialJointDamping_ = trialJointDamping_;
+    copy->build(Eigen::Vector4d(state()));
+    // The links exactly where they are (joint gaps included); only the joints' warm-start
+    // impulses start afresh, a difference of the solver's tolerance.
+    copyMotion(*link1_, *copy->link1_);
+    copyMotion(*link2_, *copy->link2_);
+    copy->steps_ = steps_;
+    copy->appliedTorque_ = appliedTorque_;
+    copy->actuatorNoise_ = actuatorNoise ? actuatorNoise_ : 0.0;
+    copy->noise_ = noise_;
+    return copy;
 }
 
 Eigen::VectorXd Acrobot::state() const {

@@ -172,6 +172,21 @@ Eigen::VectorXd PlanarAircraft::resetTo(const Eigen::VectorXd& s) {
     return state();
 }
 
+std::unique_ptr<Plant> PlanarAircraft::clone(bool actuatorNoise) const {
+    auto copy = std::make_unique<PlanarAircraft>(parameters_, timing_);
+    copyMotion(*body_, *copy->body_);
+    copy->origin_ = origin_;
+    copy->headingOrigin_ = headingOrigin_;
+    copy->time_ = time_;
+    copy->wind_ = wind_;  // the trial's own wind, gusts to come included
+    copy->thrustScale_ = thrustScale_;
+    copy->dragScale_ = dragScale_;
+    copy->throttleNoise_ = actuatorNoise ? throttleNoise_ : 0.0;
+    copy->rudderNoise_ = actuatorNoise ? rudderNoise_ : 0.0;
+    copy->noise_ = noise_;
+    return copy;
+}
+
 void PlanarAircraft::setWind(const GustyWindParameters& wind, std::uint64_t seed) {
     wind_ = GustyWind(wind, seed);
 }

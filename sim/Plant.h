@@ -8,6 +8,7 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -72,6 +73,12 @@ class Plant {
     /// Applies the action (size m; clamped to the limits, then perturbed as the trial says) for
     /// one control period. Returns the new state. Throws std::invalid_argument on a wrong size.
     virtual Eigen::VectorXd step(const Eigen::VectorXd& action) = 0;
+
+    /// An independent copy of this trial's plant as it is now: the same perturbed parameters,
+    /// wind, commands in flight and state, for a planner that simulates ahead (the oracle).
+    /// With actuatorNoise false the copy applies its actions exactly (the future noise of the
+    /// trial is not something a planner can know); true keeps the noise and its stream.
+    virtual std::unique_ptr<Plant> clone(bool actuatorNoise = false) const = 0;
 
     /// The current state (size n).
     virtual Eigen::VectorXd state() const = 0;

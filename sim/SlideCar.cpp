@@ -121,6 +121,24 @@ Eigen::VectorXd SlideCar::resetTo(const Eigen::VectorXd& s) {
     return state();
 }
 
+std::unique_ptr<Plant> SlideCar::clone(bool actuatorNoise) const {
+    auto copy = std::make_unique<SlideCar>(parameters_, timing_);
+    // One body and no contacts: its pose and velocities are all Box2D keeps between steps.
+    copyMotion(*body_, *copy->body_);
+    copy->time_ = time_;
+    copy->steeringAngle_ = steeringAngle_;
+    copy->longitudinalAcceleration_ = longitudinalAcceleration_;
+    copy->sliding_ = sliding_;
+    copy->throttleQueue_ = throttleQueue_;
+    copy->steeringQueue_ = steeringQueue_;
+    copy->frictionScale_ = frictionScale_;
+    copy->throttleGain_ = throttleGain_;
+    copy->steeringTrim_ = steeringTrim_;
+    copy->actuatorNoise_ = actuatorNoise ? actuatorNoise_ : 0.0;
+    copy->noise_ = noise_;
+    return copy;
+}
+
 Eigen::VectorXd SlideCar::state() const {
     const double psi = body_->GetAngle();
     const Eigen::Vector2d v = toEigen(body_->GetLinearVelocity());

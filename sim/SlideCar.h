@@ -69,6 +69,7 @@ class SlideCar : public Plant {
     Eigen::VectorXd reset(std::uint64_t seed, const Perturbation& perturbation) override;
     Eigen::VectorXd resetTo(const Eigen::VectorXd& state) override;
     Eigen::VectorXd step(const Eigen::VectorXd& action) override;
+    std::unique_ptr<Plant> clone(bool actuatorNoise = false) const override;
     Eigen::VectorXd state() const override;
     double time() const override { return time_; }
     bool atRest() const override;
