@@ -1,5 +1,6 @@
 #include "ControllerFactory.h"
 
+#include "OracleController.h"
 #include "core/ActionPlayback.h"
 #include "core/PdController.h"
 #include "core/PgsdController.h"
@@ -12,8 +13,8 @@ namespace prisca::sim {
 using Mode = core::MatchingParameters::Mode;
 
 QStringList ControllerFactory::methods() {
-    return {"prisca", "pgsd",   "pegasus",  "pd",      "pd-selected",
-            "pd-h",   "pd-lsd", "pd-h-lsd", "playback"};
+    return {"prisca", "pgsd",   "pegasus",  "pd",       "pd-selected",
+            "pd-h",   "pd-lsd", "pd-h-lsd", "playback", "oracle"};
 }
 
 bool ControllerFactory::isMethod(const QString& method) {
@@ -54,6 +55,20 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
             policy->setInitialTheta(*theta);
         }
         return policy;
+    }
+    if (method == QLatin1String("oracle")) {
+        OracleParameters parameters = profile.oracle;
+        const EpisodeSettings trial = profile.episode(*demonstration, 1.0, 1.0);
+        const double dt = demonstration->dt;
+        parameters.trialSteps = static_cast<int>(trial.duration / dt + 0.5);
+        parameters.restAfterStep =
+            trial.stopAtRestAfter >= 0.0 ? static_cast<int>(trial.stopAtRestAfter / dt + 0.5) : -1;
+        if (profile.oracleFeedback) {
+            // The proportional part of the profile's PD (u = u* - Kp C e), planned through.
+            parameters.feedback = -(profile.pd.kp.asDiagonal() * profile.pd.errorCombination);
+        }
+        return std::make_unique<OracleController>(
+            profile.trackingProblem(demonstration, Mode::TimeDriven), parameters);
     }
     if (method == QLatin1String("playback")) {
         return std::make_unique<core::ActionPlayback>(

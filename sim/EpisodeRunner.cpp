@@ -1,5 +1,7 @@
 #include "EpisodeRunner.h"
 
+#include "OracleController.h"
+
 namespace prisca::sim {
 
 EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
@@ -11,6 +13,9 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
       sensor_(settings.measurement, mixSeed(settings.seed, 7)) {
     state_ = plant_.reset(settings_.seed, settings_.perturbation);
     sensor_.reset(state_);
+    if (auto* aware = dynamic_cast<PlantAware*>(&controller_)) {
+        aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
+    }
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
 }

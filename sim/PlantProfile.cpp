@@ -66,6 +66,11 @@ PlantProfile slideCar(const PlantInfo& info) {
     p.pegasus.stepSize = 0.5;
     p.pegasus.perturbation = 0.05;
     p.pegasus.maxStepNorm = 0.5;
+    // The oracle aims at what Table I measures: the pose where the car comes to rest.
+    p.oracle.objective = OracleParameters::Objective::FinalPose;
+    p.oracle.replanEvery = 4;
+    p.oracle.samples = 24;
+    p.oracle.maxKnots = 8;
     return p;
 }
 
@@ -104,6 +109,11 @@ PlantProfile acrobot(const PlantInfo& info) {
     p.pegasus.stepSize = 1e5;
     p.pegasus.perturbation = 0.5;
     p.pegasus.maxStepNorm = 50.0;
+    p.oracle.objective = OracleParameters::Objective::Tracking;
+    p.oracle.horizon = 20;
+    p.oracle.knotSpacing = 5;
+    p.oracle.replanEvery = 2;
+    p.oracle.samples = 24;
     return p;
 }
 
@@ -153,6 +163,13 @@ PlantProfile aircraft(const PlantInfo& info) {
     p.pegasus.stepSize = 1e-3;
     p.pegasus.perturbation = 0.01;
     p.pegasus.maxStepNorm = 0.1;
+    // Rudder moves the path only through heading: plan 2 s ahead.
+    p.oracle.objective = OracleParameters::Objective::Tracking;
+    p.oracle.horizon = 80;
+    p.oracle.knotSpacing = 10;
+    p.oracle.maxKnots = 9;
+    p.oracle.replanEvery = 4;
+    p.oracle.samples = 24;
     return p;
 }
 

@@ -2,6 +2,7 @@
 
 #include "EpisodeRunner.h"
 #include "MeasurementModel.h"
+#include "OracleController.h"
 #include "Plant.h"
 #include "core/ActionMapping.h"
 #include "core/FeatureMap.h"
@@ -47,6 +48,11 @@ struct PlantProfile {
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]
     core::PegasusParameters pegasus;  ///< PEGASUS defaults
+    /// The oracle's planner (the limit every accuracy figure is read against); its trial
+    /// length is filled in from the demonstration when it is created.
+    OracleParameters oracle;
+    /// Whether the oracle plans through the proportional part of the PD feedback.
+    bool oracleFeedback = true;
     int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
 
     /// The profile of a plant by its info (name "slidecar", "acrobot" or "aircraft").

@@ -1,0 +1,214 @@
+#include "OracleController.h"
+
+#include "TrialMetrics.h"
+#include "core/DeviationModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+OracleController::OracleController(core::TrackingProblem problem, OracleParameters parameters)
+    : problem_(core::TrackingProblem::validated(std::move(problem))), parameters_(parameters) {
+    if (parameters_.replanEvery < 1 || parameters_.samples < 1 || parameters_.knotSpacing < 1 ||
+        parameters_.maxKnots < 2 || parameters_.horizon < 1) {
+        throw std::invalid_argument(
+            "OracleController: replanEvery, samples, knotSpacing, horizon >= 1 and maxKnots >= 2 "
+            "needed");
+    }
+    if (parameters_.objective == OracleParameters::Objective::FinalPose &&
+        (parameters_.trialSteps < 1 || !problem_.deviation.pose)) {
+        throw std::invalid_argument(
+            "OracleController: the final-pose objective needs a planar vehicle and the trial's "
+            "length");
+    }
+    const int m = problem_.demonstration->actionDimension();
+    const int n = problem_.demonstration->stateDimension();
+    if (parameters_.feedback.size() > 0 &&
+        (parameters_.feedback.rows() != m || parameters_.feedback.cols() != n)) {
+        throw std::invalid_argument("OracleController: the feedback gain must be m x n");
+    }
+    deviation_.setZero(n);
+    halfRange_ = 0.5 * (problem_.limits.upper - problem_.limits.lower);
+    record_.action.setZero(m);
+    record_.referenceAction.setZero(m);
+    record_.deviation.setZero(n);
+    reset();
+}
+
+std::unique_ptr<core::Controller> OracleController::clone() const {
+    return std::make_unique<OracleController>(*this);
+}
+
+void OracleController::reset(core::ResetMode) {
+    // Nothing is learned across trials: every trial plans afresh with the same sampling.
+    random_.seed(parameters_.seed);
+    planKnots_.resize(0, 0);
+    planTimes_.clear();
+    spread_ = parameters_.spread * halfRange_;
+    step_ = 0;
+    simulatedSteps_ = 0;
+}
+
+Eigen::VectorXd OracleController::correctionAt(int t) const {
+    const int m = static_cast<int>(halfRange_.size());
+    if (planTimes_.empty() || t < planTimes_.front()) {
+        return Eigen::VectorXd::Zero(m);
+    }
+    if (t >= planTimes_.back()) {
+        return planKnots_.col(planKnots_.cols() - 1);
+    }
+    const auto upper = std::upper_bound(planTimes_.begin(), planTimes_.end(), t);
+    const int j = static_cast<int>(upper - planTimes_.begin());
+    const double w =
+        static_cast<double>(t - planTimes_[j - 1]) / (planTimes_[j] - planTimes_[j - 1]);
+    return (1.0 - w) * planKnots_.col(j - 1) + w * planKnots_.col(j);
+}
+
+Eigen::VectorXd OracleController::actionAt(int t, const Eigen::VectorXd& correction,
+                                           const Eigen::VectorXd& state) {
+    const core::Demonstration& demo = *problem_.demonstration;
+    const int j = std::min(t, demo.length() - 1);
+    Eigen::VectorXd u = demo.actions.row(j).transpose() + correction;
+    if (parameters_.feedback.size() > 0) {
+        problem_.deviation.deviation(state, demo.states.row(j).transpose(), deviation_);
+        u.noalias() += parameters_.feedback * deviation_;
+    }
+    problem_.limits.saturate(u);
+    return u;
+}
+
+double OracleController::rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times,
+                                 int k) {
+    const core::Demonstration& demo = *problem_.demonstration;
+    std::unique_ptr<Plant> copy = plant_->clone(false);
+    const int J = static_cast<int>(times.size());
+    auto correction = [&](int t) -> Eigen::VectorXd {
+        if (t >= times.back()) {
+            return knots.col(J - 1);
+        }
+        const auto upper = std::upper_bound(times.begin(), times.end(), t);
+        const int j = std::max(1, static_cast<int>(upper - times.begin()));
+        const double w = static_cast<double>(t - times[j - 1]) / (times[j] - times[j - 1]);
+        return (1.0 - w) * knots.col(j - 1) + w * knots.col(j);
+    };
+    const PlantInfo& info = copy->info();
+    if (parameters_.objective == OracleParameters::Objective::FinalPose) {
+        int t = k;
+        while (t < parameters_.trialSteps &&
+               !(parameters_.restAfterStep >= 0 && t >= parameters_.restAfterStep &&
+                 copy->atRest())) {
+            copy->step(actionAt(t, correction(t), copy->state()));
+            ++t;
+        }
+        simulatedSteps_ += t - k;
+        const Eigen::VectorXd s = copy->state();
+        const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+        const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
+        const double dx = s[pose.x] - lot[pose.x];
+        const double dy = s[pose.y] - lot[pose.y];
+        const double dpsi = core::wrapAngle(s[pose.heading] - lot[pose.heading]);
+        return (dx * dx + dy * dy) / (parameters_.positionScale * parameters_.positionScale) +
+               dpsi * dpsi / (parameters_.headingScale * parameters_.headingScale);
+    }
+    double cost = 0.0;
+    for (int i = 0; i < parameters_.horizon; ++i) {
+        const int t = k + i;
+        const Eigen::VectorXd s = copy->step(actionAt(t, correction(t), copy->state()));
+        // The metric the trial is scored by (time-aligned), the state after the step.
+        const double e = trackedError(info, demo, s, t + 1);
+        cost += e * e;
+    }
+    simulatedSteps_ += parameters_.horizon;
+    return cost;
+}
+
+void OracleController::plan(int k) {
+    const int m = static_cast<int>(halfRange_.size());
+    const int end = parameters_.objective == OracleParameters::Objective::FinalPose
+                        ? std::max(parameters_.trialSteps, k + 1)
+                        : k + parameters_.horizon;
+    const int remaining = end - k;
+    const int spacing =
+        std::max(parameters_.knotSpacing,
+                 (remaining + parameters_.maxKnots - 2) / (parameters_.maxKnots - 1));
+    std::vector<int> times;
+    for (int t = k; t < end + spacing && static_cast<int>(times.size()) < parameters_.maxKnots;
+         t += spacing) {
+        times.push_back(t);
+    }
+    if (times.size() < 2) {
+        times.push_back(k + spacing);
+    }
+    const int J = static_cast<int>(times.size());
+    // Warm start: the current plan at the new knots.
+    Eigen::MatrixXd mean(m, J);
+    for (int j = 0; j < J; ++j) {
+        mean.col(j) = correctionAt(times[j]);
+    }
+    std::normal_distribution<double> normal(0.0, 1.0);
+    Eigen::MatrixXd best = mean;
+    double bestCost = rollout(mean, times, k);
+    bool improved = false;
+    // The uncorrected plan is always a candidate, so a plan gone astray can be dropped.
+    if (!mean.isZero()) {
+        const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(m, J);
+        const double cost = rollout(zero, times, k);
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = zero;
+        }
+    }
+    Eigen::MatrixXd candidate(m, J);
+    for (int c = 1; c < parameters_.samples; ++c) {
+        for (int j = 0; j < J; ++j) {
+            for (int l = 0; l < m; ++l) {
+                // Corrections that would push the action past its limits are wasted samples.
+                const double u0 = problem_.demonstration->actions(
+                    std::min(times[j], problem_.demonstration->length() - 1), l);
+                const double value = mean(l, j) + spread_[l] * normal(random_);
+                candidate(l, j) = std::clamp(value, problem_.limits.lower[l] - u0,
+                                             problem_.limits.upper[l] - u0);
+            }
+        }
+        const double cost = rollout(candidate, times, k);
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = candidate;
+            improved = true;
+        }
+    }
+    // Widen while samples find better plans, narrow when none does (a (1+lambda) search).
+    const Eigen::VectorXd floor = parameters_.minimumSpread * halfRange_;
+    const Eigen::VectorXd ceiling = parameters_.spread * halfRange_;
+    spread_ = (improved ? 1.2 * spread_ : 0.7 * spread_).cwiseMax(floor).cwiseMin(ceiling);
+    planKnots_ = best;
+    planTimes_ = times;
+}
+
+const core::ControlStep& OracleController::step(const Eigen::Ref<const Eigen::VectorXd>&) {
+    if (!plant_) {
+        throw std::logic_error("OracleController: no plant attached (the oracle runs only in "
+                               "simulation, through EpisodeStepper)");
+    }
+    const int k = step_;
+    const core::Demonstration& demo = *problem_.demonstration;
+    // The true state, not the sensor's: the oracle knows the plant.
+    const Eigen::VectorXd state = plant_->state();
+    if (k % parameters_.replanEvery == 0) {
+        plan(k);
+    }
+    const int j = std::min(k, demo.length() - 1);
+    problem_.deviation.deviation(state, demo.states.row(j).transpose(), record_.deviation);
+    record_.cost = problem_.cost(record_.deviation);
+    record_.referenceIndex = j;
+    record_.referenceAction = demo.actions.row(j).transpose();
+    record_.action = actionAt(k, correctionAt(k), state);
+    record_.step = k;
+    ++step_;
+    return record_;
+}
+
+}  // namespace prisca::sim

@@ -1,0 +1,94 @@
+#pragma once
+
+#include "Plant.h"
+#include "core/Controller.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace prisca::sim {
+
+/// A controller that is handed the trial's plant itself. EpisodeStepper attaches the plant after
+/// resetting it for a trial and before resetting the controller.
+class PlantAware {
+  public:
+    virtual ~PlantAware() = default;
+    /// The plant of the trial about to start (outlives the trial); nullptr detaches.
+    virtual void attachPlant(const Plant* plant) = 0;
+};
+
+/// Tuning of the oracle's planner. Plain data.
+struct OracleParameters {
+    /// What the plan minimises: the pose at the trial's end (slide parking, where Table I
+    /// measures), or the time-aligned tracking error over a receding horizon (trajectories).
+    enum class Objective { FinalPose, Tracking };
+    Objective objective = Objective::Tracking;
+    int replanEvery = 4;   ///< control steps between two plans (>= 1)
+    int samples = 24;      ///< candidate plans tried at each planning (>= 1; the current one too)
+    int knotSpacing = 10;  ///< control steps between knots of the correction (at least)
+    int maxKnots = 8;      ///< knots per channel (>= 2); they spread out over a long remainder
+    int horizon = 40;      ///< Tracking: control steps simulated ahead
+    /// FinalPose: the trial's longest length [control steps] and the step from which it ends
+    /// once the plant is at rest (EpisodeSettings::duration and stopAtRestAfter).
+    int trialSteps = 0;
+    int restAfterStep = -1;
+    /// Feedback u += K e around the time-aligned demonstration (m x n on the deviation e;
+    /// empty: none). Planned through, so corrections are found for the closed loop, which
+    /// keeps the plant on its plan between two plannings despite the actuator noise.
+    Eigen::MatrixXd feedback;
+    double spread = 0.15;          ///< first search spread per knot, share of the half range [1]
+    double minimumSpread = 0.003;  ///< the spread never shrinks below this share [1]
+    double positionScale = 0.01;   ///< FinalPose: this much position error [m] ...
+    double headingScale = 0.0174533;  ///< ... costs as much as this heading error [rad]
+    std::uint64_t seed = 1;           ///< the planner's sampling (the same every trial)
+};
+
+/// The limit of what a controller could do on this simulation: it is given the trial's own
+/// perturbed plant (a copy it simulates ahead, without the actuator noise still to come) and the
+/// true state, and plans corrections to the demonstration's actions by sampling (random
+/// shooting around the current plan, warm started, with an adaptive spread) on plant copies at
+/// the control rate. It is a ruler, not a competitor: its error is what the perturbations and
+/// the actuator noise leave over when the plant is known. The correction is piecewise linear in
+/// time between knots; the plan is replayed open loop between two plannings.
+/// Single-threaded; one per trial (clone() for parallel trials).
+class OracleController : public core::Controller, public PlantAware {
+  public:
+    /// @param problem  the demonstration (its actions are the plan's starting point), the
+    ///                 deviation model and the limits
+    OracleController(core::TrackingProblem problem, OracleParameters parameters);
+
+    QString name() const override { return QStringLiteral("oracle"); }
+    void reset(core::ResetMode mode = core::ResetMode::Cold) override;
+    const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
+    std::unique_ptr<core::Controller> clone() const override;
+    void attachPlant(const Plant* plant) override { plant_ = plant; }
+
+    const OracleParameters& parameters() const { return parameters_; }
+    /// Plant steps simulated ahead since the last reset (the planner's work).
+    long long simulatedSteps() const { return simulatedSteps_; }
+
+  private:
+    void plan(int k);
+    double rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times, int k);
+    Eigen::VectorXd correctionAt(int t) const;
+    Eigen::VectorXd actionAt(int t, const Eigen::VectorXd& correction,
+                             const Eigen::VectorXd& state);
+
+    core::TrackingProblem problem_;
+    OracleParameters parameters_;
+    const Plant* plant_ = nullptr;
+    std::mt19937_64 random_;
+    Eigen::MatrixXd planKnots_;  // m x J corrections at planTimes_
+    std::vector<int> planTimes_;
+    Eigen::VectorXd spread_;  // m, current search spread [action units]
+    Eigen::VectorXd halfRange_;
+    Eigen::VectorXd deviation_;  // scratch for the feedback
+    core::ControlStep record_;
+    int step_ = 0;
+    long long simulatedSteps_ = 0;
+};
+
+}  // namespace prisca::sim
