@@ -61,6 +61,8 @@ QString table1Label(const QString& method) {
         return QStringLiteral("PD+H+LSD");
     if (method == QLatin1String("playback"))
         return QStringLiteral("ACTION PLAYBACK");
+    if (method == QLatin1String("ilc"))
+        return QStringLiteral("ILC");
     if (method == QLatin1String("oracle"))
         return QStringLiteral("LIMIT (oracle)");
     return method.toUpper();

@@ -2,6 +2,7 @@
 
 #include "OracleController.h"
 #include "core/ActionPlayback.h"
+#include "core/IlcController.h"
 #include "core/PdController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
@@ -13,8 +14,8 @@ namespace prisca::sim {
 using Mode = core::MatchingParameters::Mode;
 
 QStringList ControllerFactory::methods() {
-    return {"prisca", "pgsd",   "pegasus",  "pd",       "pd-selected",
-            "pd-h",   "pd-lsd", "pd-h-lsd", "playback", "oracle"};
+    return {"prisca", "pgsd",   "pegasus",  "pd",       "pd-selected", "pd-h",
+            "pd-lsd", "pd-h-lsd", "playback", "ilc",     "oracle"};
 }
 
 bool ControllerFactory::isMethod(const QString& method) {
@@ -55,6 +56,10 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
             policy->setInitialTheta(*theta);
         }
         return policy;
+    }
+    if (method == QLatin1String("ilc")) {
+        return std::make_unique<core::IlcController>(
+            profile.trackingProblem(demonstration, Mode::TimeDriven), profile.ilcParameters());
     }
     if (method == QLatin1String("oracle")) {
         OracleParameters parameters = profile.oracle;

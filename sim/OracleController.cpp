@@ -3,6 +3,8 @@
 #include "TrialMetrics.h"
 #include "core/DeviationModel.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -80,8 +82,23 @@ Eigen::VectorXd OracleController::actionAt(int t, const Eigen::VectorXd& correct
     return u;
 }
 
-double OracleController::rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times,
-                                 int k) {
+Eigen::MatrixXd OracleController::clampedToLimits(Eigen::MatrixXd knots,
+                                                  const std::vector<int>& times) const {
+    // Corrections that would push the action past its limits change nothing but the search.
+    const core::Demonstration& demo = *problem_.demonstration;
+    for (int j = 0; j < knots.cols(); ++j) {
+        const int t = std::min(times[j], demo.length() - 1);
+        for (int l = 0; l < knots.rows(); ++l) {
+            const double u0 = demo.actions(t, l);
+            knots(l, j) = std::clamp(knots(l, j), problem_.limits.lower[l] - u0,
+                                     problem_.limits.upper[l] - u0);
+        }
+    }
+    return knots;
+}
+
+Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
+                                          const std::vector<int>& times, int k) {
     const core::Demonstration& demo = *problem_.demonstration;
     std::unique_ptr<Plant> copy = plant_->clone(false);
     const int J = static_cast<int>(times.size());
@@ -107,22 +124,32 @@ double OracleController::rollout(const Eigen::MatrixXd& knots, const std::vector
         const Eigen::VectorXd s = copy->state();
         const core::PlanarPoseIndices pose = *problem_.deviation.pose;
         const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
-        const double dx = s[pose.x] - lot[pose.x];
-        const double dy = s[pose.y] - lot[pose.y];
-        const double dpsi = core::wrapAngle(s[pose.heading] - lot[pose.heading]);
-        return (dx * dx + dy * dy) / (parameters_.positionScale * parameters_.positionScale) +
-               dpsi * dpsi / (parameters_.headingScale * parameters_.headingScale);
+        return Eigen::Vector3d(
+            (s[pose.x] - lot[pose.x]) / parameters_.positionScale,
+            (s[pose.y] - lot[pose.y]) / parameters_.positionScale,
+            core::wrapAngle(s[pose.heading] - lot[pose.heading]) / parameters_.headingScale);
     }
-    double cost = 0.0;
+    // The metric the trial is scored by (time-aligned): position for vehicles, joint angles
+    // otherwise, of the state after each step.
+    const int perStep = info.pose ? 2 : static_cast<int>(info.angleIndices.size());
+    Eigen::VectorXd residuals(perStep * parameters_.horizon);
     for (int i = 0; i < parameters_.horizon; ++i) {
         const int t = k + i;
         const Eigen::VectorXd s = copy->step(actionAt(t, correction(t), copy->state()));
-        // The metric the trial is scored by (time-aligned), the state after the step.
-        const double e = trackedError(info, demo, s, t + 1);
-        cost += e * e;
+        const Eigen::VectorXd reference =
+            demo.states.row(std::min(t + 1, demo.length() - 1)).transpose();
+        if (info.pose) {
+            residuals[2 * i] = s[info.pose->x] - reference[info.pose->x];
+            residuals[2 * i + 1] = s[info.pose->y] - reference[info.pose->y];
+        } else {
+            for (int c = 0; c < perStep; ++c) {
+                const int a = info.angleIndices[c];
+                residuals[perStep * i + c] = core::wrapAngle(s[a] - reference[a]);
+            }
+        }
     }
     simulatedSteps_ += parameters_.horizon;
-    return cost;
+    return residuals;
 }
 
 void OracleController::plan(int k) {
@@ -148,37 +175,66 @@ void OracleController::plan(int k) {
     for (int j = 0; j < J; ++j) {
         mean.col(j) = correctionAt(times[j]);
     }
-    std::normal_distribution<double> normal(0.0, 1.0);
     Eigen::MatrixXd best = mean;
-    double bestCost = rollout(mean, times, k);
+    Eigen::VectorXd bestResiduals = rollout(mean, times, k);
+    double bestCost = bestResiduals.squaredNorm();
     bool improved = false;
-    // The uncorrected plan is always a candidate, so a plan gone astray can be dropped.
-    if (!mean.isZero()) {
-        const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(m, J);
-        const double cost = rollout(zero, times, k);
-        if (cost < bestCost) {
-            bestCost = cost;
-            best = zero;
-        }
-    }
-    Eigen::MatrixXd candidate(m, J);
-    for (int c = 1; c < parameters_.samples; ++c) {
-        for (int j = 0; j < J; ++j) {
-            for (int l = 0; l < m; ++l) {
-                // Corrections that would push the action past its limits are wasted samples.
-                const double u0 = problem_.demonstration->actions(
-                    std::min(times[j], problem_.demonstration->length() - 1), l);
-                const double value = mean(l, j) + spread_[l] * normal(random_);
-                candidate(l, j) = std::clamp(value, problem_.limits.lower[l] - u0,
-                                             problem_.limits.upper[l] - u0);
-            }
-        }
-        const double cost = rollout(candidate, times, k);
+    auto consider = [&](const Eigen::MatrixXd& candidate, bool sampled) {
+        Eigen::VectorXd r = rollout(candidate, times, k);
+        const double cost = r.squaredNorm();
         if (cost < bestCost) {
             bestCost = cost;
             best = candidate;
-            improved = true;
+            bestResiduals = std::move(r);
+            improved = improved || sampled;
         }
+    };
+    // The uncorrected plan is always a candidate, so a plan gone astray can be dropped.
+    if (!mean.isZero()) {
+        consider(Eigen::MatrixXd::Zero(m, J), false);
+    }
+    int budget = parameters_.samples - 1;
+    if (parameters_.gaussNewton && budget > m * J) {
+        // Jacobian of the residuals by forward differences, then Levenberg-Marquardt steps of
+        // three dampings from the best plan so far.
+        const Eigen::MatrixXd base = best;
+        const Eigen::VectorXd r0 = bestResiduals;
+        Eigen::MatrixXd jacobian(r0.size(), m * J);
+        for (int j = 0; j < J; ++j) {
+            for (int l = 0; l < m; ++l) {
+                const double h = 0.01 * halfRange_[l];
+                Eigen::MatrixXd probe = base;
+                probe(l, j) += h;
+                jacobian.col(j * m + l) = (rollout(probe, times, k) - r0) / h;
+            }
+        }
+        budget -= m * J;
+        const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+        const Eigen::VectorXd gradient = jacobian.transpose() * r0;
+        const double scale = std::max(normal.diagonal().maxCoeff(), 1e-12);
+        for (double damping : {1e-4, 1e-2, 1.0}) {
+            if (budget <= 0) {
+                break;
+            }
+            Eigen::MatrixXd system = normal;
+            system.diagonal().array() += damping * scale;
+            const Eigen::VectorXd delta = system.ldlt().solve(-gradient);
+            if (delta.allFinite()) {
+                consider(clampedToLimits(base + delta.reshaped(m, J), times), false);
+            }
+            --budget;
+        }
+    }
+    std::normal_distribution<double> normal(0.0, 1.0);
+    Eigen::MatrixXd candidate(m, J);
+    for (int c = 0; c < budget; ++c) {
+        const Eigen::MatrixXd centre = best;
+        for (int j = 0; j < J; ++j) {
+            for (int l = 0; l < m; ++l) {
+                candidate(l, j) = centre(l, j) + spread_[l] * normal(random_);
+            }
+        }
+        consider(clampedToLimits(candidate, times), true);
     }
     // Widen while samples find better plans, narrow when none does (a (1+lambda) search).
     const Eigen::VectorXd floor = parameters_.minimumSpread * halfRange_;

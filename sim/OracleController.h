@@ -39,6 +39,10 @@ struct OracleParameters {
     /// empty: none). Planned through, so corrections are found for the closed loop, which
     /// keeps the plant on its plan between two plannings despite the actuator noise.
     Eigen::MatrixXd feedback;
+    /// Each planning also takes Gauss-Newton steps from finite differences of the residuals
+    /// (one rollout per knot and channel), which find smooth optima fast; the random samples
+    /// keep the search going where the plant is not smooth (stick-slip). false: samples only.
+    bool gaussNewton = true;
     double spread = 0.15;          ///< first search spread per knot, share of the half range [1]
     double minimumSpread = 0.003;  ///< the spread never shrinks below this share [1]
     double positionScale = 0.01;   ///< FinalPose: this much position error [m] ...
@@ -48,9 +52,9 @@ struct OracleParameters {
 
 /// The limit of what a controller could do on this simulation: it is given the trial's own
 /// perturbed plant (a copy it simulates ahead, without the actuator noise still to come) and the
-/// true state, and plans corrections to the demonstration's actions by sampling (random
-/// shooting around the current plan, warm started, with an adaptive spread) on plant copies at
-/// the control rate. It is a ruler, not a competitor: its error is what the perturbations and
+/// true state, and plans corrections to the demonstration's actions on plant copies at the
+/// control rate: Gauss-Newton steps from finite differences and random shooting around the
+/// current plan (warm started, with an adaptive spread), keeping the best plan found. It is a ruler, not a competitor: its error is what the perturbations and
 /// the actuator noise leave over when the plant is known. The correction is piecewise linear in
 /// time between knots; the plan is replayed open loop between two plannings.
 /// Single-threaded; one per trial (clone() for parallel trials).
@@ -72,7 +76,10 @@ class OracleController : public core::Controller, public PlantAware {
 
   private:
     void plan(int k);
-    double rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times, int k);
+    /// The residuals r of a plan (cost = |r|^2): the scaled final pose error, or the tracked
+    /// errors over the horizon.
+    Eigen::VectorXd rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times, int k);
+    Eigen::MatrixXd clampedToLimits(Eigen::MatrixXd knots, const std::vector<int>& times) const;
     Eigen::VectorXd correctionAt(int t) const;
     Eigen::VectorXd actionAt(int t, const Eigen::VectorXd& correction,
                              const Eigen::VectorXd& state);

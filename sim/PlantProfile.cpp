@@ -207,6 +207,19 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
     return episode;
 }
 
+core::IlcParameters PlantProfile::ilcParameters() const {
+    core::IlcParameters parameters;
+    parameters.feedback = pd;
+    parameters.feedback.kp *= ilcFeedbackScale;
+    parameters.feedback.kd *= ilcFeedbackScale;
+    parameters.feedback.horizon = 0;
+    parameters.learningGain =
+        ilcLearningGain.size() > 0 ? ilcLearningGain : Eigen::VectorXd(0.3 * pd.kp);
+    parameters.lead = ilcLead;
+    parameters.cutoff = ilcCutoff;
+    return parameters;
+}
+
 core::TrackingProblem PlantProfile::trackingProblem(
     std::shared_ptr<const core::Demonstration> demonstration,
     core::MatchingParameters::Mode mode) const {

@@ -6,6 +6,7 @@
 #include "Plant.h"
 #include "core/ActionMapping.h"
 #include "core/FeatureMap.h"
+#include "core/IlcController.h"
 #include "core/PdController.h"
 #include "core/Pegasus.h"
 #include "core/PgsdController.h"
@@ -47,6 +48,11 @@ struct PlantProfile {
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]
+    /// ILC's learning (its feedback gains are the PD's, its error combination the PD's).
+    Eigen::VectorXd ilcLearningGain;  ///< Gamma per control (m)
+    int ilcLead = 2;                  ///< [steps]
+    double ilcCutoff = 2.0;           ///< Q filter [Hz]
+    double ilcFeedbackScale = 1.0;    ///< the PD gains in ILC's loop, scaled by this
     core::PegasusParameters pegasus;  ///< PEGASUS defaults
     /// The oracle's planner (the limit every accuracy figure is read against); its trial
     /// length is filled in from the demonstration when it is created.
@@ -67,6 +73,8 @@ struct PlantProfile {
                             double sensor) const;
     /// The tracking problem for a demonstration of this plant (deviation, matching, weights,
     /// limits); mode chooses least-state-deviation or time-driven matching.
+    /// ILC's parameters from the PD gains and the ILC fields above.
+    core::IlcParameters ilcParameters() const;
     core::TrackingProblem trackingProblem(std::shared_ptr<const core::Demonstration> demonstration,
                                           core::MatchingParameters::Mode mode) const;
 };

@@ -1,6 +1,7 @@
 // The comparison methods: PD and its H / LSD variants, action playback, PEGASUS.
 #include "TestDemonstrations.h"
 #include "core/ActionPlayback.h"
+#include "core/IlcController.h"
 #include "core/PdController.h"
 #include "core/Pegasus.h"
 #include "core/PriscaController.h"
@@ -238,6 +239,95 @@ class TestBaselines : public QObject {
         const double after = pegasus.evaluate(pegasus.theta());
         QVERIFY2(after < 0.5 * before, qPrintable(QString("%1 -> %2").arg(before).arg(after)));
         QVERIFY(pegasus.theta()(0, 0) < 0.0);  // negative feedback was found
+    }
+
+    void ilc_convergesOnALinearPlantWhoseGainIsWrong() {
+        // The plant's gain is 1.6 times the demonstration's and every trial starts 0.05 off:
+        // a repeated disturbance that feedback alone leaves, and ILC learns away trial by trial.
+        const Eigen::MatrixXd G = Eigen::MatrixXd::Identity(2, 2);
+        auto demo = integratorDemonstration(G, 200, 0.1);
+        IlcParameters parameters;
+        parameters.feedback.errorCombination = Eigen::MatrixXd::Identity(2, 2);
+        parameters.feedback.kp = Eigen::Vector2d(4.0, 4.0);
+        parameters.feedback.kd = Eigen::Vector2d::Zero();
+        parameters.learningGain = Eigen::Vector2d(2.0, 2.0);
+        parameters.lead = 1;  // u_k shows in s_{k+1}
+        parameters.cutoff = 0.0;
+        IlcController ilc(problemFor(demo, MatchingParameters::Mode::TimeDriven), parameters);
+        QCOMPARE(ilc.name(), QStringLiteral("ilc"));
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven),
+                        parameters.feedback, "pd");
+        const double feedbackOnly = closedLoopCost(pd, *demo, G, 1.6);
+        std::vector<double> costs;
+        for (int trial = 0; trial < 30; ++trial) {
+            costs.push_back(closedLoopCost(ilc, *demo, G, 1.6,
+                                           trial == 0 ? ResetMode::Cold : ResetMode::WarmStart));
+        }
+        QCOMPARE(ilc.iterations(), 29);
+        QVERIFY(std::abs(costs.front() - feedbackOnly) <= 1e-12);  // trial 1 is plain PD
+        for (size_t i = 1; i < costs.size(); ++i)
+            QVERIFY2(costs[i] < costs[i - 1], qPrintable(QString::number(i)));
+        // What is left is the start error every trial begins with (e_0 cannot be learned away).
+        QVERIFY2(costs.back() < 1e-2 * costs.front(),
+                 qPrintable(QStringLiteral("%1 -> %2").arg(costs.front()).arg(costs.back())));
+        // A cold reset forgets: back to plain PD.
+        QVERIFY(std::abs(closedLoopCost(ilc, *demo, G, 1.6) - feedbackOnly) <= 1e-12);
+        QVERIFY(ilc.feedforward().isZero());
+    }
+
+    void ilc_learnsNothingFromAPerfectTrialAndFiltersWithZeroPhase() {
+        const Eigen::MatrixXd G = Eigen::MatrixXd::Identity(1, 1);
+        auto demo = integratorDemonstration(G, 100, 0.05);
+        IlcParameters parameters;
+        parameters.feedback.errorCombination = Eigen::MatrixXd::Ones(1, 1);
+        parameters.feedback.kp = Eigen::VectorXd::Constant(1, 1.0);
+        parameters.feedback.kd = Eigen::VectorXd::Zero(1);
+        parameters.learningGain = Eigen::VectorXd::Constant(1, 1.0);
+        parameters.lead = 0;
+        parameters.cutoff = 1.0;
+        IlcController ilc(problemFor(demo, MatchingParameters::Mode::TimeDriven), parameters);
+        // On the demonstration exactly: no error, nothing learned, the demonstration's actions.
+        ilc.reset(ResetMode::Cold);
+        for (int k = 0; k < demo->length(); ++k) {
+            const ControlStep& out = ilc.step(demo->states.row(k).transpose());
+            QVERIFY(std::abs(out.action[0] - demo->actions(k, 0)) <= 1e-15);
+        }
+        ilc.reset(ResetMode::WarmStart);
+        QVERIFY(ilc.feedforward().isZero());
+        // One unit error at the middle sample only: the update is -1 there, then the forward and
+        // backward pass of the low-pass spread it symmetrically (zero phase) and keep its sum.
+        for (int k = 0; k < demo->length(); ++k) {
+            Eigen::VectorXd s = demo->states.row(k).transpose();
+            if (k == 50)
+                s[0] += 1.0;
+            ilc.step(s);
+        }
+        ilc.reset(ResetMode::WarmStart);
+        const Eigen::RowVectorXd f = ilc.feedforward().row(0);
+        Eigen::Index peak = 0;
+        f.minCoeff(&peak);
+        QCOMPARE(peak, Eigen::Index(50));
+        // Symmetric up to the ends of a finite record (a^49 = 2e-7 of the response is cut off).
+        for (int d = 1; d < 20; ++d)
+            QVERIFY2(std::abs(f[50 - d] - f[50 + d]) <= 1e-6, qPrintable(QString::number(d)));
+        QVERIFY(std::abs(f.sum() + 1.0) <= 1e-6);
+        QVERIFY(f[50] > -0.5);  // filtered: not the raw -1
+    }
+
+    void ilc_rejectsInconsistentParameters() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(2, 2), 20, 0.1);
+        IlcParameters bad;
+        bad.feedback.errorCombination = Eigen::MatrixXd::Identity(2, 2);
+        bad.feedback.kp = Eigen::Vector2d::Ones();
+        bad.feedback.kd = Eigen::Vector2d::Zero();
+        bad.learningGain = Eigen::Vector2d(1.0, -1.0);
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            IlcController(problemFor(demo, MatchingParameters::Mode::TimeDriven), bad));
+        bad.learningGain = Eigen::VectorXd::Ones(3);
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            IlcController(problemFor(demo, MatchingParameters::Mode::TimeDriven), bad));
     }
 };
 

@@ -1,0 +1,175 @@
+// The oracle plans on copies of the trial's plant. On a plant whose optimum is known (a planar
+// point whose actuator gains differ from the demonstration's: scaling the actions by the gain
+// ratio repeats the demonstration exactly) it must find that optimum without being told.
+#include "sim/EpisodeRunner.h"
+#include "sim/OracleController.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantProfile.h"
+#include "sim/ControllerFactory.h"
+#include "sim/TrialMetrics.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+// x += dt gx ux, y += dt gy uy, heading fixed at 0. Actions in [-2, 2].
+class GainPoint : public Plant {
+  public:
+    explicit GainPoint(Eigen::Vector2d gain) : gain_(gain) {
+        info_.name = QStringLiteral("gainpoint");
+        info_.stateNames = {"x", "y", "psi"};
+        info_.stateUnits = {"m", "m", "rad"};
+        info_.actionNames = {"ux", "uy"};
+        info_.actionUnits = {"m/s", "m/s"};
+        info_.actionLower = Eigen::Vector2d(-2.0, -2.0);
+        info_.actionUpper = Eigen::Vector2d(2.0, 2.0);
+        info_.angleIndices = {2};
+        info_.pose = core::PlanarPoseIndices{0, 1, 2};
+    }
+    const PlantInfo& info() const override { return info_; }
+    const SimulationTiming& timing() const override { return timing_; }
+    Eigen::VectorXd reset(std::uint64_t, const Perturbation&) override {
+        s_.setZero(3);
+        t_ = 0.0;
+        return s_;
+    }
+    Eigen::VectorXd resetTo(const Eigen::VectorXd& s) override {
+        s_ = s;
+        return s_;
+    }
+    Eigen::VectorXd step(const Eigen::VectorXd& u) override {
+        const Eigen::Vector2d a = u.cwiseMax(info_.actionLower).cwiseMin(info_.actionUpper);
+        s_.head<2>() += timing_.controlPeriod * gain_.cwiseProduct(a);
+        t_ += timing_.controlPeriod;
+        return s_;
+    }
+    std::unique_ptr<Plant> clone(bool) const override {
+        return std::make_unique<GainPoint>(*this);
+    }
+    Eigen::VectorXd state() const override { return s_; }
+    double time() const override { return t_; }
+
+  private:
+    Eigen::Vector2d gain_;
+    PlantInfo info_;
+    SimulationTiming timing_;
+    Eigen::VectorXd s_ = Eigen::VectorXd::Zero(3);
+    double t_ = 0.0;
+};
+
+// The demonstration on the nominal point (gains 1): a smooth curve to (1.5, 0.8).
+std::shared_ptr<core::Demonstration> demonstration(int T) {
+    GainPoint nominal(Eigen::Vector2d(1.0, 1.0));
+    auto demo = std::make_shared<core::Demonstration>();
+    demo->plant = QStringLiteral("gainpoint");
+    demo->dt = 0.025;
+    demo->stateNames = nominal.info().stateNames;
+    demo->stateUnits = nominal.info().stateUnits;
+    demo->actionNames = nominal.info().actionNames;
+    demo->actionUnits = nominal.info().actionUnits;
+    demo->time.resize(T);
+    demo->states.resize(T, 3);
+    demo->actions.resize(T, 2);
+    Eigen::VectorXd s = nominal.reset(0, Perturbation::none());
+    for (int k = 0; k < T; ++k) {
+        const double phase = M_PI * k / (T - 1);
+        const Eigen::Vector2d u(0.6 * std::sin(phase) * 1.5 * M_PI / 2,
+                                0.8 * std::sin(2 * phase) + 0.4 * std::sin(phase));
+        demo->time[k] = k * demo->dt;
+        demo->states.row(k) = s.transpose();
+        demo->actions.row(k) = k == T - 1 ? Eigen::RowVector2d(Eigen::RowVector2d::Zero())
+                                          : Eigen::RowVector2d(u.transpose());
+        s = nominal.step(demo->actions.row(k).transpose());
+    }
+    return demo;
+}
+
+core::TrackingProblem problemFor(std::shared_ptr<const core::Demonstration> demo,
+                                 const PlantInfo& info) {
+    core::TrackingProblem problem;
+    problem.demonstration = demo;
+    problem.deviation = info.deviationModel();
+    problem.matching.mode = core::MatchingParameters::Mode::TimeDriven;
+    problem.limits = core::ActionLimits{info.actionLower, info.actionUpper};
+    return problem;
+}
+
+}  // namespace
+
+class TestOracle : public QObject {
+    Q_OBJECT
+  private slots:
+    void finalPose_findsTheKnownOptimumOfAPlantWithWrongGains() {
+        auto demo = demonstration(120);
+        GainPoint plant(Eigen::Vector2d(1.3, 0.75));
+        OracleParameters parameters;
+        parameters.objective = OracleParameters::Objective::FinalPose;
+        parameters.trialSteps = demo->length();
+        parameters.samples = 32;
+        OracleController oracle(problemFor(demo, plant.info()), parameters);
+        EpisodeSettings episode;
+        episode.duration = demo->length() * demo->dt;
+        const EpisodeResult result = runEpisode(plant, oracle, episode);
+        const Eigen::Vector2d lot = demo->states.row(demo->length() - 1).head<2>().transpose();
+        const double miss = (result.finalState.head<2>() - lot).norm();
+        // Playing the demonstration back misses by metres' worth of gain error ...
+        GainPoint open(Eigen::Vector2d(1.3, 0.75));
+        open.reset(0, Perturbation::none());
+        for (int k = 0; k < demo->length(); ++k)
+            open.step(demo->actions.row(k).transpose());
+        const double playbackMiss = (open.state().head<2>() - lot).norm();
+        QVERIFY2(playbackMiss > 0.2, qPrintable(QString::number(playbackMiss)));
+        // ... the oracle parks within a millimetre, having found the compensation itself.
+        QVERIFY2(miss < 1e-3, qPrintable(QString::number(miss)));
+        QVERIFY(oracle.simulatedSteps() > demo->length());
+    }
+
+    void tracking_followsTheTimedPathOfAPlantWithWrongGains() {
+        auto demo = demonstration(160);
+        GainPoint plant(Eigen::Vector2d(0.8, 1.25));
+        OracleParameters parameters;
+        parameters.objective = OracleParameters::Objective::Tracking;
+        parameters.horizon = 20;
+        parameters.knotSpacing = 5;
+        parameters.replanEvery = 2;
+        parameters.samples = 32;
+        OracleController oracle(problemFor(demo, plant.info()), parameters);
+        EpisodeSettings episode;
+        episode.duration = demo->length() * demo->dt;
+        const EpisodeResult result = runEpisode(plant, oracle, episode);
+        const TrialSummary summary = summarizeTrial(plant.info(), *demo, result);
+        // Open loop, the point drifts off by tens of centimetres; the optimum tracks exactly.
+        QVERIFY2(summary.trackingRms < 0.01, qPrintable(QString::number(summary.trackingRms)));
+    }
+
+    void slideCar_nominalTrialIsTheDemonstrationExactly() {
+        // No perturbation and no noise: the demonstration's own actions are optimal, and the
+        // oracle must not move away from them.
+        auto demo = std::make_shared<core::Demonstration>(
+            PlantCatalog::demonstrate(QStringLiteral("slidecar"), 3));
+        const PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
+        auto oracle = ControllerFactory::create(QStringLiteral("oracle"), profile, demo,
+                                                Eigen::MatrixXd::Zero(2, 6));
+        auto plant = PlantCatalog::create(QStringLiteral("slidecar"));
+        EpisodeSettings episode = profile.episode(*demo, 0.0, 0.0);
+        const EpisodeResult result = runEpisode(*plant, *oracle, episode);
+        const TrialSummary summary = summarizeTrial(plant->info(), *demo, result);
+        QVERIFY2(summary.finalPositionError < 1e-3,
+                 qPrintable(QString::number(summary.finalPositionError)));
+    }
+
+    void step_withoutAPlantIsRefused() {
+        auto demo = demonstration(20);
+        GainPoint plant(Eigen::Vector2d(1.0, 1.0));
+        OracleController oracle(problemFor(demo, plant.info()), OracleParameters{});
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, oracle.step(Eigen::VectorXd::Zero(3)));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestOracle)
+#include "test_oracle.moc"
