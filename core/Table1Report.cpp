@@ -34,6 +34,14 @@ QJsonObject summaryJson(const ErrorSummary& s) {
 
 }  // namespace
 
+QString formatCpuMicroseconds(double microseconds) {
+    if (!std::isfinite(microseconds)) {
+        return QStringLiteral("n/a");
+    }
+    return microseconds >= 100.0 ? QString::number(microseconds, 'f', 0)
+                                 : QString::number(microseconds, 'g', 3);
+}
+
 std::optional<TableFormat> parseTableFormat(const QString& text) {
     if (text == QLatin1String("md"))
         return TableFormat::Markdown;
@@ -76,31 +84,34 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             out += caption + QStringLiteral("\n\n");
             out += QStringLiteral(
                 "| method | trials | position MAE ± std [cm] | position variance [cm²] "
-                "| orientation MAE ± std [deg] | orientation variance [deg²] |\n");
-            out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: |\n");
+                "| orientation MAE ± std [deg] | orientation variance [deg²] "
+                "| CPU [µs/step] |\n");
+            out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
             for (const Table1Row& r : rows) {
                 out +=
-                    QStringLiteral("| %1 | %2 | %3 ± %4 | %5 | %6 ± %7 | %8 |\n")
+                    QStringLiteral("| %1 | %2 | %3 ± %4 | %5 | %6 ± %7 | %8 | %9 |\n")
                         .arg(table1Label(r.method))
                         .arg(r.position.count)
                         .arg(fixed(r.position.meanAbsoluteError),
                              fixed(r.position.standardDeviation), fixed(r.position.variance),
                              fixed(r.orientation.meanAbsoluteError),
-                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance));
+                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance),
+                             formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
             break;
         case TableFormat::Csv:
             out += QStringLiteral(
                 "method,label,trials,position_mae_cm,position_std_cm,position_var_cm2,"
-                "orientation_mae_deg,orientation_std_deg,orientation_var_deg2\n");
+                "orientation_mae_deg,orientation_std_deg,orientation_var_deg2,cpu_us_per_step\n");
             for (const Table1Row& r : rows) {
                 out +=
-                    QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9\n")
+                    QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
                         .arg(r.method, table1Label(r.method))
                         .arg(r.position.count)
                         .arg(full(r.position.meanAbsoluteError), full(r.position.standardDeviation),
                              full(r.position.variance), full(r.orientation.meanAbsoluteError),
-                             full(r.orientation.standardDeviation), full(r.orientation.variance));
+                             full(r.orientation.standardDeviation), full(r.orientation.variance),
+                             full(r.cpuMicrosecondsPerStep));
             }
             break;
         case TableFormat::Latex: {
@@ -109,21 +120,24 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                 .replace(QLatin1Char('_'), QStringLiteral("\\_"));
             out += QStringLiteral("\\begin{table}[t]\n\\centering\n\\caption{%1}\n")
                        .arg(escapedCaption);
-            out += QStringLiteral("\\begin{tabular}{lrrrrr}\n\\hline\n");
+            out += QStringLiteral("\\begin{tabular}{lrrrrrr}\n\\hline\n");
             out += QStringLiteral(
-                " & & \\multicolumn{2}{c}{Position} & \\multicolumn{2}{c}{Orientation} \\\\\n");
+                " & & \\multicolumn{2}{c}{Position} & \\multicolumn{2}{c}{Orientation} & "
+                "\\\\\n");
             out += QStringLiteral(
                 "Method & $N$ & MAE [cm] & Var. [cm$^2$] & MAE [$^\\circ$] & Var. [$^{\\circ 2}$] "
-                "\\\\\n\\hline\n");
+                "& CPU [$\\mu$s/step] \\\\\n\\hline\n");
             for (const Table1Row& r : rows) {
-                out +=
-                    QStringLiteral("%1 & %2 & $%3 \\pm %4$ & %5 & $%6 \\pm %7$ & %8 \\\\\n")
-                        .arg(table1Label(r.method))
-                        .arg(r.position.count)
-                        .arg(fixed(r.position.meanAbsoluteError),
-                             fixed(r.position.standardDeviation), fixed(r.position.variance),
-                             fixed(r.orientation.meanAbsoluteError),
-                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance));
+                out += QStringLiteral(
+                           "%1 & %2 & $%3 \\pm %4$ & %5 & $%6 \\pm %7$ & %8 & %9 \\\\\n")
+                           .arg(table1Label(r.method))
+                           .arg(r.position.count)
+                           .arg(fixed(r.position.meanAbsoluteError),
+                                fixed(r.position.standardDeviation), fixed(r.position.variance),
+                                fixed(r.orientation.meanAbsoluteError),
+                                fixed(r.orientation.standardDeviation),
+                                fixed(r.orientation.variance),
+                                formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
             out += QStringLiteral("\\hline\n\\end{tabular}\n\\end{table}\n");
             break;
@@ -134,7 +148,9 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                 array.append(QJsonObject{{"method", r.method},
                                          {"label", table1Label(r.method)},
                                          {"positionCm", summaryJson(r.position)},
-                                         {"orientationDeg", summaryJson(r.orientation)}});
+                                         {"orientationDeg", summaryJson(r.orientation)},
+                                         {"cpuMicrosecondsPerStep",
+                                          jsonNumber(r.cpuMicrosecondsPerStep)}});
             }
             out =
                 QString::fromUtf8(QJsonDocument(QJsonObject{{"caption", caption}, {"rows", array}})

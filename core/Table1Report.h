@@ -4,6 +4,7 @@
 
 #include <QString>
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -15,6 +16,8 @@ struct Table1Row {
     QString method;            ///< command-line name, e.g. "pd-h"
     ErrorSummary position;     ///< |p_end - p_lot| [cm]
     ErrorSummary orientation;  ///< |wrap(psi_end - psi_lot)| [deg]
+    /// The controller's mean CPU time per control step [us]; NaN when not measured.
+    double cpuMicrosecondsPerStep = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Output formats of Table I.
@@ -23,12 +26,15 @@ enum class TableFormat { Markdown, Csv, Latex, Json };
 /// "md", "csv", "latex" or "json".
 std::optional<TableFormat> parseTableFormat(const QString& text);
 /// The paper's row label: "OURS (PRISCA)", "PD", "PD (SELECTED)", "PD+H", "PD+LSD",
-/// "PD+H+LSD", "ACTION PLAYBACK", "PGSD"; the method name upper-cased otherwise.
+/// "PD+H+LSD", "ACTION PLAYBACK"; "ILC", "LIMIT (oracle)"; the method name upper-cased
+/// otherwise.
 QString table1Label(const QString& method);
 /// The table as text. Markdown and LaTeX show "MAE +- std" and the variance for position (cm,
-/// cm^2) and orientation (deg, deg^2) with two decimals and the trial count; CSV and JSON carry
-/// full precision. `caption` describes the experiment (seed, trials, perturbation).
+/// cm^2) and orientation (deg, deg^2) with two decimals, the trial count and the CPU time per
+/// control step; CSV and JSON carry full precision. `caption` describes the experiment (seed, trials, perturbation).
 QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                      const QString& caption);
+/// A CPU time per step for a table: three significant digits, "n/a" when not measured.
+QString formatCpuMicroseconds(double microseconds);
 
 }  // namespace prisca::core

@@ -2,7 +2,20 @@
 
 #include "OracleController.h"
 
+#include <ctime>
+
 namespace prisca::sim {
+
+namespace {
+
+// The calling thread's CPU time [s]: what a controller costs, whatever else the machine does.
+double threadCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+}  // namespace
 
 EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
                                const EpisodeSettings& settings)
@@ -31,7 +44,9 @@ bool EpisodeStepper::finished() const {
 const StepRecord& EpisodeStepper::step() {
     const double t = k_ * plant_.timing().controlPeriod;
     Eigen::VectorXd observation = sensor_.observe(state_);
+    const double before = threadCpuSeconds();
     const core::ControlStep& control = controller_.step(observation);
+    controllerSeconds_ += threadCpuSeconds() - before;
     costSum_ += control.cost;
     last_.time = t;
     last_.state = state_;
@@ -58,6 +73,7 @@ EpisodeResult EpisodeStepper::result() const {
     result.stepCount = k_;
     result.duration = k_ * plant_.timing().controlPeriod;
     result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
+    result.controllerSeconds = controllerSeconds_;
     result.steps = steps_;
     return result;
 }

@@ -44,6 +44,9 @@ struct EpisodeResult {
     double duration = 0.0;          ///< simulated time [s]
     int stepCount = 0;              ///< control steps taken
     double meanCost = 0.0;          ///< mean of C_k over the steps
+    /// CPU time the controller took over the trial [s] (its thread's clock, for reports only:
+    /// nothing in the trial depends on it).
+    double controllerSeconds = 0.0;
     bool cancelled = false;         ///< stopped by the cancel predicate
 };
 
@@ -80,6 +83,7 @@ class EpisodeStepper {
     StepRecord last_;
     std::vector<StepRecord> steps_;
     double costSum_ = 0.0;
+    double controllerSeconds_ = 0.0;
     int k_ = 0;
     int maxSteps_ = 0;
 };

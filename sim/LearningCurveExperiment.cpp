@@ -31,6 +31,16 @@ double meanSquaredTracking(const PlantInfo& info, const core::Demonstration& dem
 
 }  // namespace
 
+QStringList curveMethods() {
+    QStringList methods = ControllerFactory::methods();
+    methods.removeAll(QStringLiteral("pd-selected"));  // selects its gains offline
+    return methods;
+}
+
+bool isCurveMethod(const QString& method) {
+    return curveMethods().contains(method);
+}
+
 std::vector<double> resampleCurve(const std::vector<CurvePoint>& run,
                                   const std::vector<long long>& grid) {
     std::vector<double> values(grid.size(), std::numeric_limits<double>::quiet_NaN());
@@ -50,21 +60,17 @@ std::vector<MethodCurves> runLearningCurves(
     const LearningCurveSettings& settings, std::shared_ptr<const core::Demonstration> demonstration,
     const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
     for (const QString& method : settings.methods) {
-        if (method != QLatin1String("prisca") && method != QLatin1String("pgsd") &&
-            method != QLatin1String("pegasus")) {
+        if (!isCurveMethod(method)) {
             throw std::invalid_argument(
-                QStringLiteral("learning curves are for learners (prisca, pgsd, pegasus), not '%1'")
-                    .arg(method)
+                QStringLiteral("'%1' has no learning curve (one of: %2)")
+                    .arg(method, curveMethods().join(QLatin1Char(' ')))
                     .toStdString());
         }
     }
-    EpisodeSettings base;
-    base.perturbation = {settings.perturbation, settings.perturbation, settings.perturbation};
-    base.measurement = profile.measurement;
-    if (base.measurement.noise.size() > 0) {
-        base.measurement.noise *= settings.sensor;
-    }
-    base.duration = demonstration->length() * demonstration->dt;
+    // The same trial as everywhere else (perturbation, sensor with its latency and drops,
+    // length), from the profile.
+    const EpisodeSettings base =
+        profile.episode(*demonstration, settings.perturbation, settings.sensor);
 
     const int runs = settings.runs;
     const std::function<std::vector<CurvePoint>(int)> job = [&](int index) {
@@ -109,6 +115,8 @@ std::vector<MethodCurves> runLearningCurves(
                 curve.push_back({consumed, mean});
             }
         } else {
+            // Online learners carry what they learned into the next trial; the others start
+            // every trial afresh (a flat curve to read the learners against).
             auto controller = ControllerFactory::create(method, profile, demonstration, fittedB);
             for (int trial = 0; consumed < settings.budgetSteps; ++trial) {
                 if (settings.cancelled && settings.cancelled()) {

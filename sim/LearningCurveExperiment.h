@@ -17,7 +17,7 @@ namespace prisca::sim {
 /// Learning curves at an equal budget of simulated experience (paper Fig. 3b). Plain data.
 struct LearningCurveSettings {
     QString plant = QStringLiteral("acrobot");
-    QStringList methods = {"prisca", "pgsd", "pegasus"};  ///< learners only
+    QStringList methods = {"prisca", "pgsd", "pegasus"};  ///< curveMethods()
     int runs = 20;  ///< independent runs per method (run r: seeds from mixSeed(seed, r))
     std::uint64_t seed = 1;
     long long budgetSteps = 64000;  ///< simulated control steps each run may consume
@@ -27,6 +27,11 @@ struct LearningCurveSettings {
     std::function<bool()> cancelled;
     std::function<void(const QString&)> progress;
 };
+
+/// The methods a learning curve can show: the learners (PRISCA, PGSD, ILC online, PEGASUS
+/// offline) and, as flat lines to read them against, the fixed controllers and the oracle.
+QStringList curveMethods();
+bool isCurveMethod(const QString& method);
 
 /// One run's curve: tracking error after each unit of experience.
 struct CurvePoint {

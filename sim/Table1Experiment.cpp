@@ -165,16 +165,17 @@ std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finishe
     std::vector<core::Table1Row> rows;
     int count = 0;
     for (const MethodTrials& method : result.methods) {
-        std::vector<double> position, orientation;
+        std::vector<double> position, orientation, cpu;
         for (size_t t = 0; t < method.trials.size(); ++t) {
             if (method.completed[t]) {
                 position.push_back(method.trials[t].finalPositionError * 100.0);
                 orientation.push_back(method.trials[t].finalHeadingError * 180.0 / M_PI);
+                cpu.push_back(method.trials[t].controllerMicrosecondsPerStep);
                 ++count;
             }
         }
-        rows.push_back(
-            {method.method, core::summarizeErrors(position), core::summarizeErrors(orientation)});
+        rows.push_back({method.method, core::summarizeErrors(position),
+                        core::summarizeErrors(orientation), core::mean(cpu)});
     }
     if (finished) {
         *finished = count;

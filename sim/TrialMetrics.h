@@ -18,6 +18,8 @@ struct TrialSummary {
     double pathRms = 0.0;
     double meanCost = 0.0;  ///< mean C_k the controller saw
     double duration = 0.0;  ///< simulated time [s]
+    /// The controller's CPU time per control step [us] (reports only).
+    double controllerMicrosecondsPerStep = 0.0;
 };
 
 /// The error that "tracking error" means for a plant at step k, against the demonstration

@@ -1,31 +1,63 @@
-// prisca-cli curve: learning curves at an equal budget of simulated experience (paper Fig. 3b).
+// prisca-cli curve: learning curves at an equal budget of simulated experience (paper Fig. 3b),
+// on one demonstration or on every (style, seed set) cell.
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Statistics.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/LearningCurveExperiment.h"
+#include "sim/Table1Protocol.h"
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 
 namespace prisca::app::cli {
 
 using namespace figures;
 
+namespace {
+
+// The last grid point every run reached (NaN if none).
+double finalMean(const core::ConfidenceBand& band) {
+    for (size_t g = band.count.size(); g-- > 0;) {
+        if (band.count[g] > 0) {
+            return band.mean[g];
+        }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+struct Cell {
+    QString style;  // empty: a single demonstration
+    Task task;
+    std::uint64_t seed = 1;
+};
+
+}  // namespace
+
 int curveCommand(const QStringList& arguments) {
     CommandLine line(
         QStringLiteral("curve"),
-        QStringLiteral("Learning curves: tracking error against simulated experience for "
-                       "PRISCA, PGSD and PEGASUS, mean and 95% band over runs."));
+        QStringLiteral("Learning curves: tracking error against simulated experience, mean and "
+                       "95% band over runs (learners learn trial after trial; fixed controllers "
+                       "and the oracle give flat lines to read them against)."));
     line.addValue("plant", "Plant (default acrobot).", "name", "acrobot");
     line.addValue("demo", "Demonstration CSV (default: the scripted one, see --demo-seed).",
                   "file");
     line.addValue("demo-seed", "Seed of the scripted demonstration.", "N", "1");
-    line.addValue("methods", "Comma-separated learners.", "list", "prisca,pgsd,pegasus");
-    line.addValue("runs", "Independent runs per method.", "N", "20");
+    line.addValue("styles",
+                  "Run on these demonstration styles (comma-separated, or 'all') x seed sets; "
+                  "the bands pool the runs of every cell, and the final errors are broken down "
+                  "per style.",
+                  "list");
+    line.addValue("seed-sets", "With --styles: how many seed sets, --seed, --seed + 1, ...", "N",
+                  "1");
+    line.addValue("methods", "Comma-separated methods.", "list", "prisca,pgsd,pegasus");
+    line.addValue("runs", "Independent runs per method (and cell).", "N", "20");
     line.addValue("budget", "Simulated control steps each run may consume.", "steps", "64000");
     line.addValue("seed", "Seed of the runs.", "N", "1");
     line.addValue("jobs", "Worker threads.", "N", "2");
@@ -39,37 +71,109 @@ int curveCommand(const QStringList& arguments) {
         return 0;
     }
     const QString out = line.required("out");
-    Task task =
-        loadOrDemonstrate(line.value("plant"), line.value("demo"),
-                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
     sim::LearningCurveSettings settings;
-    settings.plant = task.plant;
     settings.methods = line.value("methods").split(QLatin1Char(','), Qt::SkipEmptyParts);
     for (const QString& method : settings.methods) {
-        if (method != QLatin1String("prisca") && method != QLatin1String("pgsd") &&
-            method != QLatin1String("pegasus")) {
-            throw UsageError(
-                QStringLiteral("--methods: '%1' is not a learner (prisca, pgsd, pegasus)")
-                    .arg(method));
+        if (!sim::isCurveMethod(method)) {
+            throw UsageError(QStringLiteral("--methods: '%1' has no learning curve (one of: %2)")
+                                 .arg(method, sim::curveMethods().join(QLatin1Char(' '))));
         }
+    }
+    if (settings.methods.isEmpty()) {
+        throw UsageError(QStringLiteral("--methods: no method given"));
     }
     settings.runs = static_cast<int>(line.integer("runs", 1, 100000));
     settings.budgetSteps = line.integer("budget", 1, 1LL << 40);
-    settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
+    const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
+
+    std::vector<Cell> cells;
+    QStringList styles;
+    if (line.isSet("styles")) {
+        if (line.isSet("demo") || line.isSet("demo-seed")) {
+            throw UsageError(QStringLiteral("--styles records its own demonstrations; it does not "
+                                            "take --demo or --demo-seed"));
+        }
+        const QString plant = checkedPlant(line.value("plant"));
+        styles = line.value("styles") == QLatin1String("all")
+                     ? sim::DemonstrationStyles::names(plant)
+                     : line.value("styles").split(QLatin1Char(','), Qt::SkipEmptyParts);
+        if (styles.isEmpty()) {
+            throw UsageError(QStringLiteral("--styles: no style given"));
+        }
+        const auto sets =
+            sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
+        for (const QString& style : styles) {
+            for (std::uint64_t set : sets) {
+                cells.push_back({style, scriptedTask(plant, style, set), set});
+            }
+        }
+    } else {
+        if (line.isSet("seed-sets")) {
+            throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
+        }
+        cells.push_back(
+            {QString(),
+             loadOrDemonstrate(line.value("plant"), line.value("demo"),
+                               static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62))),
+             seed});
+    }
+    settings.plant = cells.front().task.plant;
     installInterruptHandler();
     settings.cancelled = [] { return interrupted(); };
-    settings.progress = [](const QString& text) { printProgress(text); };
-    const auto curves =
-        sim::runLearningCurves(settings, task.demonstration, task.profile, task.fit.b);
+
+    // Every cell's runs, pooled per method; and per style for the breakdown.
+    std::vector<sim::MethodCurves> pooled;
+    std::vector<std::vector<sim::MethodCurves>> perStyle(styles.size());
+    long long unit = std::numeric_limits<long long>::max();
+    double dt = cells.front().task.demonstration->dt;
+    for (size_t c = 0; c < cells.size(); ++c) {
+        const Cell& cell = cells[c];
+        sim::LearningCurveSettings cellSettings = settings;
+        cellSettings.seed = cell.seed;
+        cellSettings.progress = [&](const QString& text) {
+            printProgress(cells.size() > 1
+                              ? QStringLiteral("cell %1/%2 (%3, seed set %4): %5")
+                                    .arg(c + 1)
+                                    .arg(cells.size())
+                                    .arg(cell.style)
+                                    .arg(cell.seed)
+                                    .arg(text)
+                              : text);
+        };
+        const auto curves = sim::runLearningCurves(cellSettings, cell.task.demonstration,
+                                                   cell.task.profile, cell.task.fit.b);
+        unit = std::min<long long>(unit, cell.task.demonstration->length());
+        if (pooled.empty()) {
+            pooled = curves;
+        } else {
+            for (size_t m = 0; m < curves.size(); ++m) {
+                pooled[m].runs.insert(pooled[m].runs.end(), curves[m].runs.begin(),
+                                      curves[m].runs.end());
+            }
+        }
+        if (!cell.style.isEmpty()) {
+            auto& mine = perStyle[styles.indexOf(cell.style)];
+            if (mine.empty()) {
+                mine = curves;
+            } else {
+                for (size_t m = 0; m < curves.size(); ++m) {
+                    mine[m].runs.insert(mine[m].runs.end(), curves[m].runs.begin(),
+                                        curves[m].runs.end());
+                }
+            }
+        }
+        if (interrupted()) {
+            break;
+        }
+    }
     printProgress(QString());
 
-    // A common grid: one point per demonstration length of experience.
-    const double dt = task.demonstration->dt;
+    // A common grid: one point per (shortest) demonstration length of experience.
     const std::vector<sim::CurveSummary> summaries =
-        sim::summarizeCurves(curves, task.demonstration->length(), settings.budgetSteps, dt);
+        sim::summarizeCurves(pooled, unit, settings.budgetSteps, dt);
     QByteArray csv("method,steps,time_s,mean,lower,upper,runs\n");
     QJsonArray summary;
     QString text;
@@ -77,7 +181,7 @@ int curveCommand(const QStringList& arguments) {
     std::vector<std::vector<double>> plottedSeconds;
     std::vector<core::ConfidenceBand> plottedBands;
     for (size_t i = 0; i < summaries.size(); ++i) {
-        const sim::MethodCurves& method = curves[i];
+        const sim::MethodCurves& method = pooled[i];
         const std::vector<long long>& grid = summaries[i].steps;
         const core::ConfidenceBand& band = summaries[i].band;
         plotted.push_back(method.method);
@@ -97,38 +201,49 @@ int curveCommand(const QStringList& arguments) {
                        .arg(band.count[g])
                        .toUtf8();
         }
-        // The last grid point every run reached.
-        double final = std::numeric_limits<double>::quiet_NaN();
-        for (size_t g = grid.size(); g-- > 0;) {
-            if (band.count[g] > 0) {
-                final = band.mean[g];
-                break;
-            }
-        }
-        summary.append(
-            QJsonObject{{"method", method.method},
-                        {"finalMean", std::isfinite(final) ? QJsonValue(final) : QJsonValue()},
-                        {"runs", static_cast<int>(method.runs.size())}});
+        const double final = finalMean(band);
+        QJsonObject entry{{"method", method.method},
+                          {"finalMean", std::isfinite(final) ? QJsonValue(final) : QJsonValue()},
+                          {"runs", static_cast<int>(method.runs.size())}};
         text += QStringLiteral("%1: tracking error after %2 steps: %3 (mean of %4 runs)\n")
                     .arg(method.method, -8)
                     .arg(settings.budgetSteps)
                     .arg(final, 0, 'g', 4)
                     .arg(method.runs.size());
+        if (!styles.isEmpty()) {
+            QJsonArray byStyle;
+            for (int s = 0; s < styles.size(); ++s) {
+                if (perStyle[s].empty()) {
+                    continue;
+                }
+                const auto styleSummary = sim::summarizeCurves(
+                    {perStyle[s][i]}, unit, settings.budgetSteps, dt);
+                const double styleFinal = finalMean(styleSummary.front().band);
+                byStyle.append(QJsonObject{
+                    {"style", styles[s]},
+                    {"finalMean", std::isfinite(styleFinal) ? QJsonValue(styleFinal)
+                                                            : QJsonValue()}});
+                text += QStringLiteral("    %1: %2\n").arg(styles[s], -22).arg(styleFinal, 0, 'g', 4);
+            }
+            entry.insert(QStringLiteral("styles"), byStyle);
+        }
+        summary.append(entry);
     }
     core::FileError error;
     if (!core::writeFileAtomically(out, csv, &error)) {
         throw UsageError(error.toString());
     }
     if (line.isSet("plot")) {
-        const QString yLabel = task.profile.info.pose
+        const QString yLabel = cells.front().task.profile.info.pose
                                    ? QStringLiteral("mean squared position error [m\u00b2]")
                                    : QStringLiteral("mean squared joint-angle error [rad\u00b2]");
         saveFigureOrThrow(learningCurveFigure(plotted, plottedSeconds, plottedBands, yLabel),
                           line.value("plot"));
     }
     if (line.format() == QLatin1String("json")) {
-        printJson({{"plant", task.plant},
+        printJson({{"plant", settings.plant},
                    {"budgetSteps", static_cast<double>(settings.budgetSteps)},
+                   {"cells", static_cast<int>(cells.size())},
                    {"methods", summary},
                    {"out", out}});
     } else {

@@ -7,7 +7,9 @@
 #include "core/Table1Report.h"
 #include "sim/ControllerFactory.h"
 #include "sim/PlantCatalog.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/Table1Experiment.h"
+#include "sim/Table1Protocol.h"
 
 #include <QDir>
 
@@ -16,6 +18,117 @@
 namespace prisca::app::cli {
 
 using namespace figures;
+
+namespace {
+
+QStringList checkedMethods(const CommandLine& line, const QStringList& defaults) {
+    if (!line.isSet("methods")) {
+        return defaults;
+    }
+    const QStringList methods = line.value("methods").split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (methods.isEmpty()) {
+        throw UsageError(QStringLiteral("--methods: no method given"));
+    }
+    for (const QString& method : methods) {
+        if (!sim::ControllerFactory::isMethod(method) || method == QLatin1String("pegasus")) {
+            throw UsageError(QStringLiteral("--methods: '%1' is not a Table I method").arg(method));
+        }
+    }
+    return methods;
+}
+
+// table1 --styles: every method on every (style, seed set) cell.
+int table1ProtocolCommand(const CommandLine& line) {
+    if (line.isSet("demo") || line.isSet("demo-seed")) {
+        throw UsageError(QStringLiteral(
+            "--styles records its own demonstrations; it does not take --demo or --demo-seed"));
+    }
+    if (line.isSet("plot")) {
+        throw UsageError(QStringLiteral("--plot draws one demonstration's trials; not with "
+                                        "--styles"));
+    }
+    const QString plant = checkedPlant(line.value("plant"));
+    sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    if (!profile.info.pose) {
+        throw UsageError(
+            QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));
+    }
+    sim::Table1ProtocolSettings settings;
+    settings.table.plant = plant;
+    const QString styles = line.value("styles");
+    settings.styles = styles == QLatin1String("all")
+                          ? sim::DemonstrationStyles::names(plant)
+                          : styles.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (settings.styles.isEmpty()) {
+        throw UsageError(QStringLiteral("--styles: no style given"));
+    }
+    for (const QString& style : settings.styles) {
+        if (!sim::DemonstrationStyles::contains(plant, style)) {
+            throw UsageError(QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
+                                 .arg(plant, style,
+                                      sim::DemonstrationStyles::names(plant).join(' ')));
+        }
+    }
+    settings.table.methods = checkedMethods(line, settings.table.methods);
+    const int seedSets = static_cast<int>(line.integer("seed-sets", 1, 10000));
+    const auto first = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
+    settings.seedSets = sim::consecutiveSeedSets(first, seedSets);
+    settings.table.trials = static_cast<int>(line.integer("trials", 1, 100000));
+    settings.table.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
+    settings.table.threads = static_cast<int>(line.integer("jobs", 1, 256));
+    settings.table.perturbation = line.number("perturbation", 0.0, 10.0);
+    settings.table.sensor = line.number("sensor", 0.0, 10.0);
+    if (line.isSet("H")) {
+        profile.prisca.horizon = static_cast<int>(line.integer("H", 1, 1000));
+    }
+    if (line.isSet("gamma")) {
+        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
+    }
+    if (line.isSet("beta")) {
+        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
+    }
+    const auto format = core::parseTableFormat(line.format());
+    installInterruptHandler();
+    settings.table.cancelled = [] { return interrupted(); };
+    settings.table.progress = [](const QString& text) { printProgress(text); };
+    const sim::Table1ProtocolResult result = sim::runTable1Protocol(settings, profile);
+    printProgress(QString());
+
+    QString caption =
+        QStringLiteral("Slide parking in simulation (%1) on %2 styles x %3 seed sets (%4..%5): "
+                       "%6 trials per method and cell, %7 training trials, perturbation %8, "
+                       "sensor %9; means and 95% intervals over the cells")
+            .arg(plant)
+            .arg(settings.styles.size())
+            .arg(seedSets)
+            .arg(first)
+            .arg(first + seedSets - 1)
+            .arg(settings.table.trials)
+            .arg(settings.table.trainingTrials)
+            .arg(settings.table.perturbation)
+            .arg(settings.table.sensor);
+    if (result.cancelled) {
+        caption += QStringLiteral(" (interrupted: only the cells that finished)");
+    }
+    const QString table = core::formatProtocol(result.summary, *format, caption);
+    if (line.isSet("out")) {
+        core::FileError error;
+        if (!core::writeFileAtomically(line.value("out"), table.toUtf8(), &error)) {
+            throw UsageError(error.toString());
+        }
+    } else {
+        printText(table);
+    }
+    if (result.cancelled) {
+        std::fprintf(stderr,
+                     "prisca-cli: table1: interrupted; kept the cells that finished (%d trials)\n",
+                     result.finishedTrials);
+        return kExitInterrupted;
+    }
+    return 0;
+}
+
+}  // namespace
 
 int table1Command(const QStringList& arguments) {
     CommandLine line(QStringLiteral("table1"),
@@ -26,6 +139,15 @@ int table1Command(const QStringList& arguments) {
                   "file");
     line.addValue("demo-seed", "Seed of the scripted demonstration when --demo is not given.", "N",
                   "1");
+    line.addValue("styles",
+                  "Evaluate on these demonstration styles (comma-separated, or 'all'), each "
+                  "recorded and run on every seed set; reports each method's mean and 95% "
+                  "interval over the cells and a per-style breakdown.",
+                  "list");
+    line.addValue("seed-sets",
+                  "With --styles: how many seed sets, --seed, --seed + 1, ... (each gives the "
+                  "demonstration's hand variation and the trials' perturbations).",
+                  "N", "1");
     line.addValue("trials", "Evaluation trials per method.", "N", "20");
     line.addValue("training-trials", "Training trials for PD (selected), PRISCA and PGSD.", "N",
                   "16");
@@ -34,7 +156,9 @@ int table1Command(const QStringList& arguments) {
     line.addValue("perturbation", "Plant perturbation level (0 nominal, 1 realistic).", "level",
                   "1");
     line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level", "1");
-    line.addValue("methods", "Comma-separated methods (default: the paper's rows and PGSD).",
+    line.addValue("methods",
+                  "Comma-separated methods (default: the paper's rows, PGSD, ILC and the "
+                  "oracle, the limit).",
                   "list");
     line.addValue("H", "PRISCA horizon H [steps].", "steps");
     line.addValue("gamma", "PRISCA gamma in [0, 1].", "gamma");
@@ -47,6 +171,12 @@ int table1Command(const QStringList& arguments) {
     line.addFormat({"md", "csv", "latex", "json"});
     if (!line.parse(arguments)) {
         return 0;
+    }
+    if (line.isSet("styles")) {
+        return table1ProtocolCommand(line);
+    }
+    if (line.isSet("seed-sets")) {
+        throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
     }
     Task task =
         line.isSet("demo") ? loadTask(line.value("plant"), line.value("demo"), QString()) : Task{};
@@ -72,15 +202,7 @@ int table1Command(const QStringList& arguments) {
     }
     sim::Table1Settings settings;
     settings.plant = task.plant;
-    if (line.isSet("methods")) {
-        settings.methods = line.value("methods").split(QLatin1Char(','), Qt::SkipEmptyParts);
-        for (const QString& method : settings.methods) {
-            if (!sim::ControllerFactory::isMethod(method) || method == QLatin1String("pegasus")) {
-                throw UsageError(
-                    QStringLiteral("--methods: '%1' is not a Table I method").arg(method));
-            }
-        }
-    }
+    settings.methods = checkedMethods(line, settings.methods);
     settings.trials = static_cast<int>(line.integer("trials", 1, 100000));
     settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
     settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));

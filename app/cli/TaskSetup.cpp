@@ -1,6 +1,7 @@
 #include "app/cli/TaskSetup.h"
 
 #include "app/cli/CliSupport.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
 #include <QCoreApplication>
@@ -83,10 +84,19 @@ Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
         return loadTask(plant, demonstrationPath, QString());
     }
     checkedPlant(plant);
+    return scriptedTask(plant, sim::DemonstrationStyles::classic(plant), demoSeed);
+}
+
+Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed) {
+    checkedPlant(plant);
+    if (!sim::DemonstrationStyles::contains(plant, style)) {
+        throw UsageError(QStringLiteral("unknown %1 style '%2' (one of: %3)")
+                             .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
+    }
     // Through a scratch file, so a scripted demonstration passes the same checks as a recorded one.
     const QString scratch = QDir::temp().filePath(
         QStringLiteral("prisca-demo-%1-%2.csv").arg(plant).arg(QCoreApplication::applicationPid()));
-    writeDemonstration(sim::PlantCatalog::demonstrate(plant, demoSeed), scratch);
+    writeDemonstration(sim::DemonstrationStyles::record(plant, style, seed), scratch);
     Task task = loadTask(plant, scratch, QString());
     QFile::remove(scratch);
     return task;

@@ -31,4 +31,8 @@ QString checkedPlant(const QString& name);
 Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
                        std::uint64_t demoSeed);
 
+/// The task of a scripted demonstration in a style with a seed's hand variation (checked as a
+/// file would be); UsageError for an unknown plant or style.
+Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
+
 }  // namespace prisca::app::cli

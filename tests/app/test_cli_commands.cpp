@@ -408,8 +408,9 @@ class TestCliCommands : public QObject {
             << QStringList{"table1", "--plant", "acrobot"} << "planar vehicles";
         QTest::newRow("table1: bad format")
             << QStringList{"table1", "--format", "xlsx"} << "--format must be one of";
-        QTest::newRow("curve: not a learner")
-            << (QStringList{"curve", "--methods", "prisca,pd"} + out) << "'pd' is not a learner";
+        QTest::newRow("curve: no curve for the method")
+            << (QStringList{"curve", "--methods", "prisca,pd-selected"} + out)
+            << "'pd-selected' has no learning curve";
         QTest::newRow("curve: no out") << QStringList{"curve"} << "--out is required";
         QTest::newRow("run: trials not a number")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
@@ -436,15 +437,15 @@ class TestCliCommands : public QObject {
                                   "2",      "--seed",   "4"};
         const CliResult md = cli(base);
         QCOMPARE(md.exitCode, 0);
-        for (const char* label :
-             {"OURS (PRISCA)", "PD (SELECTED)", "PD+H+LSD", "ACTION PLAYBACK", "PGSD"}) {
+        for (const char* label : {"OURS (PRISCA)", "PD (SELECTED)", "PD+H+LSD", "ACTION PLAYBACK",
+                                  "PGSD", "ILC", "LIMIT (oracle)"}) {
             QVERIFY2(md.out.contains(QStringLiteral("| %1 | 3 |").arg(label)), qPrintable(md.out));
         }
         QVERIFY(md.err.contains("table1:"));  // progress on stderr, the table on stdout
         const CliResult json = cli(base + QStringList{"--format", "json"});
         QCOMPARE(json.exitCode, 0);
         const QJsonArray rows = parseJson(json.out).value("rows").toArray();
-        QCOMPARE(rows.size(), 8);
+        QCOMPARE(rows.size(), 10);
         for (const QJsonValue& row : rows) {
             const QJsonObject position = row.toObject().value("positionCm").toObject();
             QCOMPARE(position.value("count").toInt(), 3);
@@ -452,14 +453,29 @@ class TestCliCommands : public QObject {
             QVERIFY(std::abs(position.value("variance").toDouble() -
                              std::pow(position.value("standardDeviation").toDouble(), 2)) < 1e-9);
         }
-        // The same seed gives the same table; --out writes it to a file instead.
-        QCOMPARE(cli(base + QStringList{"--format", "json"}).out, json.out);
+        // The same seed gives the same table (all but the measured CPU times); --out writes it
+        // to a file instead.
+        int measured = 0;
+        const auto withoutCpu = [&measured](const QString& text) -> QJsonObject {
+            QJsonObject root = parseJson(text);
+            QJsonArray rows = root.value("rows").toArray();
+            for (int i = 0; i < rows.size(); ++i) {
+                QJsonObject row = rows[i].toObject();
+                measured += row.value("cpuMicrosecondsPerStep").toDouble() > 0.0;
+                row.remove("cpuMicrosecondsPerStep");
+                rows[i] = row;
+            }
+            root.insert("rows", rows);
+            return root;
+        };
+        QCOMPARE(withoutCpu(cli(base + QStringList{"--format", "json"}).out), withoutCpu(json.out));
+        QCOMPARE(measured, 20);
         const CliResult csv = cli(base + QStringList{"--format", "csv", "--out", "table.csv"});
         QCOMPARE(csv.exitCode, 0);
         QCOMPARE(csv.out, QString());
         QFile file(path("table.csv"));
         QVERIFY(file.open(QIODevice::ReadOnly));
-        QCOMPARE(file.readAll().trimmed().split('\n').size(), 9);
+        QCOMPARE(file.readAll().trimmed().split('\n').size(), 11);
         const CliResult tex =
             cli(base + QStringList{"--format", "latex", "--methods", "prisca,pd"});
         QCOMPARE(tex.exitCode, 0);

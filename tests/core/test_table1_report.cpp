@@ -14,17 +14,18 @@ class TestTable1Report : public QObject {
     // Position errors {3, 5, 7} cm: MAE 5, sample std 2, variance 4.
     // Orientation errors {-10, 20, 30} deg: |e| = {10, 20, 30}: MAE 20, std 10, variance 100.
     static std::vector<Table1Row> rows() {
-        return {{"prisca", summarizeErrors({3, 5, 7}), summarizeErrors({-10, 20, 30})},
-                {"pd-h-lsd", summarizeErrors({1, 1}), summarizeErrors({4, 4})}};
+        return {{"prisca", summarizeErrors({3, 5, 7}), summarizeErrors({-10, 20, 30}), 0.6815},
+                {"pd-h-lsd", summarizeErrors({1, 1}), summarizeErrors({4, 4}), 2512.4}};
     }
 
   private slots:
     void markdown_showsMaeStdAndVarianceWithTheirUnits() {
         const QString md = formatTable1(rows(), TableFormat::Markdown, "caption here");
         QVERIFY(md.startsWith("caption here\n"));
-        QVERIFY2(md.contains("| OURS (PRISCA) | 3 | 5.00 ± 2.00 | 4.00 | 20.00 ± 10.00 | 100.00 |"),
+        QVERIFY2(md.contains(
+                     "| OURS (PRISCA) | 3 | 5.00 ± 2.00 | 4.00 | 20.00 ± 10.00 | 100.00 | 0.681 |"),
                  qPrintable(md));
-        QVERIFY(md.contains("| PD+H+LSD | 2 | 1.00 ± 0.00 | 0.00 | 4.00 ± 0.00 | 0.00 |"));
+        QVERIFY(md.contains("| PD+H+LSD | 2 | 1.00 ± 0.00 | 0.00 | 4.00 ± 0.00 | 0.00 | 2512 |"));
         QVERIFY(md.contains("[cm²]") && md.contains("[deg]"));
     }
 
@@ -32,7 +33,7 @@ class TestTable1Report : public QObject {
         const QString csv = formatTable1(rows(), TableFormat::Csv, "c");
         const QStringList lines = csv.trimmed().split('\n');
         QCOMPARE(lines.size(), 3);
-        QCOMPARE(lines[1], QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100"));
+        QCOMPARE(lines[1], QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100,0.68149999999999999"));
         QCOMPARE(lines[0].split(',').size(), lines[1].split(',').size());
     }
 
@@ -42,7 +43,8 @@ class TestTable1Report : public QObject {
         QVERIFY(tex.contains("50\\% of trials\\_x"));
         QVERIFY2(
             tex.contains(
-                "OURS (PRISCA) & 3 & $5.00 \\pm 2.00$ & 4.00 & $20.00 \\pm 10.00$ & 100.00 \\\\"),
+                "OURS (PRISCA) & 3 & $5.00 \\pm 2.00$ & 4.00 & $20.00 \\pm 10.00$ & 100.00 & "
+                "0.681 \\\\"),
             qPrintable(tex));
     }
 
@@ -59,12 +61,14 @@ class TestTable1Report : public QObject {
             array[0].toObject().value("orientationDeg").toObject().value("variance").toDouble(),
             100.0);
         QCOMPARE(array[1].toObject().value("label").toString(), QStringLiteral("PD+H+LSD"));
+        QCOMPARE(array[1].toObject().value("cpuMicrosecondsPerStep").toDouble(), 2512.4);
     }
 
     void emptyRow_showsNotAvailableRatherThanNan() {
         const std::vector<Table1Row> none = {{"pd", summarizeErrors({}), summarizeErrors({})}};
         const QString md = formatTable1(none, TableFormat::Markdown, "c");
         QVERIFY(md.contains("| PD | 0 | n/a ± n/a |"));
+        QVERIFY(md.trimmed().endsWith("| n/a |"));  // CPU time not measured
         QVERIFY(!md.contains("nan"));
         QVERIFY(QJsonDocument::fromJson(formatTable1(none, TableFormat::Json, "c").toUtf8())
                     .isObject());

@@ -1,0 +1,287 @@
+#include "ProtocolReport.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::core {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+QString fixed(double value) {
+    return std::isfinite(value) ? QString::number(value, 'f', 2) : QStringLiteral("n/a");
+}
+
+QString full(double value) {
+    return std::isfinite(value) ? QString::number(value, 'g', 17) : QString();
+}
+
+QJsonValue jsonNumber(double value) {
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+}
+
+// "4.21 [3.80, 4.62]", or the mean alone for a single cell.
+QString withInterval(const MeanInterval& m) {
+    if (m.count == 0) {
+        return QStringLiteral("n/a");
+    }
+    if (m.count == 1) {
+        return fixed(m.mean);
+    }
+    return QStringLiteral("%1 [%2, %3]").arg(fixed(m.mean), fixed(m.lower), fixed(m.upper));
+}
+
+QString ratio(double value, double limit) {
+    if (!std::isfinite(value) || !std::isfinite(limit) || limit <= 0.0) {
+        return QStringLiteral("n/a");
+    }
+    return QStringLiteral("%1x").arg(QString::number(value / limit, 'f', 1));
+}
+
+QJsonObject intervalJson(const MeanInterval& m) {
+    return {{"meanAbsoluteError", jsonNumber(m.mean)},
+            {"lower", jsonNumber(m.lower)},
+            {"upper", jsonNumber(m.upper)},
+            {"cells", m.count}};
+}
+
+QString escapeLatex(QString text) {
+    return text.replace(QLatin1Char('%'), QStringLiteral("\\%"))
+        .replace(QLatin1Char('_'), QStringLiteral("\\_"));
+}
+
+}  // namespace
+
+MeanInterval meanInterval(const std::vector<double>& values, double level) {
+    if (!(level > 0.0 && level < 1.0)) {
+        throw std::invalid_argument("meanInterval: level must be in (0, 1)");
+    }
+    MeanInterval out;
+    std::vector<double> finite;
+    for (double v : values) {
+        if (std::isfinite(v)) {
+            finite.push_back(v);
+        }
+    }
+    out.count = static_cast<int>(finite.size());
+    if (finite.empty()) {
+        out.mean = out.lower = out.upper = kNaN;
+        return out;
+    }
+    out.mean = mean(finite);
+    if (finite.size() == 1) {
+        out.lower = out.upper = out.mean;
+        return out;
+    }
+    const double halfWidth = studentTQuantile(0.5 + 0.5 * level, out.count - 1) *
+                             std::sqrt(sampleVariance(finite) / out.count);
+    out.lower = out.mean - halfWidth;
+    out.upper = out.mean + halfWidth;
+    return out;
+}
+
+int ProtocolSummary::oracleRow() const {
+    for (size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].method == QLatin1String("oracle")) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList& styles,
+                                  const std::vector<std::uint64_t>& seedSets,
+                                  const std::vector<std::vector<ProtocolCell>>& cells) {
+    if (cells.size() != static_cast<size_t>(methods.size())) {
+        throw std::invalid_argument("summarizeProtocol: one list of cells per method");
+    }
+    ProtocolSummary summary;
+    summary.styles = styles;
+    summary.seedSets = seedSets;
+    for (int m = 0; m < methods.size(); ++m) {
+        ProtocolRow row;
+        row.method = methods[m];
+        std::vector<double> position, orientation, cpu;
+        std::vector<std::vector<double>> stylePosition(styles.size()),
+            styleOrientation(styles.size());
+        for (const ProtocolCell& cell : cells[m]) {
+            position.push_back(cell.row.position.meanAbsoluteError);
+            orientation.push_back(cell.row.orientation.meanAbsoluteError);
+            cpu.push_back(cell.row.cpuMicrosecondsPerStep);
+            row.trials += cell.row.position.count;
+            const int s = static_cast<int>(styles.indexOf(cell.style));
+            if (s < 0) {
+                throw std::invalid_argument(
+                    QStringLiteral("summarizeProtocol: cell of unknown style '%1'")
+                        .arg(cell.style)
+                        .toStdString());
+            }
+            stylePosition[s].push_back(cell.row.position.meanAbsoluteError);
+            styleOrientation[s].push_back(cell.row.orientation.meanAbsoluteError);
+        }
+        row.position = meanInterval(position);
+        row.orientation = meanInterval(orientation);
+        row.cpuMicrosecondsPerStep = mean(cpu);
+        for (int s = 0; s < styles.size(); ++s) {
+            row.stylePosition.push_back(meanInterval(stylePosition[s]));
+            row.styleOrientation.push_back(meanInterval(styleOrientation[s]));
+        }
+        summary.rows.push_back(std::move(row));
+    }
+    return summary;
+}
+
+QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
+                       const QString& caption) {
+    const int oracle = summary.oracleRow();
+    const double limitPosition =
+        oracle >= 0 ? summary.rows[oracle].position.mean : kNaN;
+    const double limitOrientation =
+        oracle >= 0 ? summary.rows[oracle].orientation.mean : kNaN;
+    QString out;
+    switch (format) {
+        case TableFormat::Markdown: {
+            out += caption + QStringLiteral("\n\n");
+            out += QStringLiteral(
+                "| method | cells | trials | position MAE [cm] (95% interval) | x limit "
+                "| orientation MAE [deg] (95% interval) | x limit | CPU [µs/step] |\n");
+            out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+            for (const ProtocolRow& r : summary.rows) {
+                out += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 | %8 |\n")
+                           .arg(table1Label(r.method))
+                           .arg(r.position.count)
+                           .arg(r.trials)
+                           .arg(withInterval(r.position), ratio(r.position.mean, limitPosition),
+                                withInterval(r.orientation),
+                                ratio(r.orientation.mean, limitOrientation),
+                                formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
+            }
+            out += QStringLiteral("\nPer style, position MAE [cm] / orientation MAE [deg] "
+                                  "(mean over seed sets):\n\n| method |");
+            QString rule = QStringLiteral("| --- |");
+            for (const QString& style : summary.styles) {
+                out += QStringLiteral(" %1 |").arg(style);
+                rule += QStringLiteral(" ---: |");
+            }
+            out += QLatin1Char('\n') + rule + QLatin1Char('\n');
+            for (const ProtocolRow& r : summary.rows) {
+                out += QStringLiteral("| %1 |").arg(table1Label(r.method));
+                for (int s = 0; s < summary.styles.size(); ++s) {
+                    out += QStringLiteral(" %1 / %2 |")
+                               .arg(fixed(r.stylePosition[s].mean),
+                                    fixed(r.styleOrientation[s].mean));
+                }
+                out += QLatin1Char('\n');
+            }
+            break;
+        }
+        case TableFormat::Csv: {
+            out += QStringLiteral(
+                "scope,method,label,cells,position_mae_cm,position_lower_cm,position_upper_cm,"
+                "orientation_mae_deg,orientation_lower_deg,orientation_upper_deg,trials,"
+                "cpu_us_per_step\n");
+            auto line = [&](const QString& scope, const ProtocolRow& r, const MeanInterval& p,
+                            const MeanInterval& o, const QString& trials, const QString& cpu) {
+                out += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12\n")
+                           .arg(scope, r.method, table1Label(r.method))
+                           .arg(p.count)
+                           .arg(full(p.mean), full(p.lower), full(p.upper), full(o.mean),
+                                full(o.lower), full(o.upper), trials, cpu);
+            };
+            for (const ProtocolRow& r : summary.rows) {
+                line(QStringLiteral("all"), r, r.position, r.orientation,
+                     QString::number(r.trials), full(r.cpuMicrosecondsPerStep));
+            }
+            for (int s = 0; s < summary.styles.size(); ++s) {
+                for (const ProtocolRow& r : summary.rows) {
+                    line(summary.styles[s], r, r.stylePosition[s], r.styleOrientation[s],
+                         QString(), QString());
+                }
+            }
+            break;
+        }
+        case TableFormat::Latex: {
+            out += QStringLiteral("\\begin{table}[t]\n\\centering\n\\caption{%1}\n")
+                       .arg(escapeLatex(caption));
+            out += QStringLiteral("\\begin{tabular}{lrrrrrr}\n\\hline\n");
+            out += QStringLiteral(
+                "Method & Cells & Position MAE [cm] & $\\times$ limit & Orientation MAE "
+                "[$^\\circ$] & $\\times$ limit & CPU [$\\mu$s/step] \\\\\n\\hline\n");
+            for (const ProtocolRow& r : summary.rows) {
+                out += QStringLiteral("%1 & %2 & %3 & %4 & %5 & %6 & %7 \\\\\n")
+                           .arg(table1Label(r.method))
+                           .arg(r.position.count)
+                           .arg(withInterval(r.position), ratio(r.position.mean, limitPosition),
+                                withInterval(r.orientation),
+                                ratio(r.orientation.mean, limitOrientation),
+                                formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
+            }
+            out += QStringLiteral("\\hline\n\\end{tabular}\n\n");
+            out += QStringLiteral("\\begin{tabular}{l%1}\n\\hline\nMethod")
+                       .arg(QString(summary.styles.size(), QLatin1Char('r')));
+            for (const QString& style : summary.styles) {
+                out += QStringLiteral(" & %1").arg(escapeLatex(style));
+            }
+            out += QStringLiteral(" \\\\\n\\hline\n");
+            for (const ProtocolRow& r : summary.rows) {
+                out += table1Label(r.method);
+                for (int s = 0; s < summary.styles.size(); ++s) {
+                    out += QStringLiteral(" & %1 / %2")
+                               .arg(fixed(r.stylePosition[s].mean),
+                                    fixed(r.styleOrientation[s].mean));
+                }
+                out += QStringLiteral(" \\\\\n");
+            }
+            out += QStringLiteral("\\hline\n\\end{tabular}\n\\end{table}\n");
+            break;
+        }
+        case TableFormat::Json: {
+            QJsonArray rows;
+            for (const ProtocolRow& r : summary.rows) {
+                QJsonArray styles;
+                for (int s = 0; s < summary.styles.size(); ++s) {
+                    styles.append(QJsonObject{{"style", summary.styles[s]},
+                                              {"positionCm", intervalJson(r.stylePosition[s])},
+                                              {"orientationDeg",
+                                               intervalJson(r.styleOrientation[s])}});
+                }
+                rows.append(QJsonObject{
+                    {"method", r.method},
+                    {"label", table1Label(r.method)},
+                    {"trials", r.trials},
+                    {"positionCm", intervalJson(r.position)},
+                    {"orientationDeg", intervalJson(r.orientation)},
+                    {"positionTimesLimit", jsonNumber(limitPosition > 0.0
+                                                          ? r.position.mean / limitPosition
+                                                          : kNaN)},
+                    {"orientationTimesLimit",
+                     jsonNumber(limitOrientation > 0.0 ? r.orientation.mean / limitOrientation
+                                                       : kNaN)},
+                    {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)},
+                    {"styles", styles}});
+            }
+            QJsonArray styles, seedSets;
+            for (const QString& style : summary.styles) {
+                styles.append(style);
+            }
+            for (std::uint64_t set : summary.seedSets) {
+                seedSets.append(static_cast<double>(set));
+            }
+            out = QString::fromUtf8(QJsonDocument(QJsonObject{{"caption", caption},
+                                                              {"styles", styles},
+                                                              {"seedSets", seedSets},
+                                                              {"rows", rows}})
+                                        .toJson(QJsonDocument::Indented));
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace prisca::core
