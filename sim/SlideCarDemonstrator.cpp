@@ -26,6 +26,9 @@ double keyRamp(double current, int key, double dt) {
 // the wanted direction while short of it, none once past (it returns to neutral by itself).
 int keyFor(double wanted, double current) {
     constexpr double kDeadband = 0.05;
+    if (std::abs(wanted) >= 1.0 - kDeadband) {
+        return wanted > 0.0 ? 1 : -1;  // full: the key is simply held down
+    }
     if (wanted > kDeadband) {
         return current < wanted - kDeadband ? 1 : 0;
     }
@@ -124,6 +127,11 @@ core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Scrip
         }
         shake[0] = shakeDecay * shake[0] + shakeKick * normal(shakeDraw);
         shake[1] = shakeDecay * shake[1] + shakeKick * normal(shakeDraw);
+        if (restSince >= 0.0 && script.stickJitter > 0.0) {
+            // Parked: the shaking hand lets go of the sticks.
+            throttle = 0.0;
+            steering = 0.0;
+        }
         action << std::clamp(throttle, -1.0, 1.0), std::clamp(steering, -1.0, 1.0);
         recorder.record(state, action);
         state = car.step(action);

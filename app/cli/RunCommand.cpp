@@ -260,21 +260,25 @@ int runCommand(const QStringList& arguments) {
             {"finalHeadingErrorDeg", finiteOrNull(summary.finalHeadingError * 180.0 / M_PI)},
             {"trackingRms", summary.trackingRms},
             {"pathRms", finiteOrNull(summary.pathRms)},
-            {"meanCost", summary.meanCost}});
+            {"meanCost", summary.meanCost},
+            {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep}});
         if (info.pose) {
             text += QStringLiteral(
                         "trial %1: final position error %2 cm, heading error %3 deg, "
-                        "tracking RMS %4 m, path RMS %5 m\n")
+                        "tracking RMS %4 m, path RMS %5 m, controller %6 us/step\n")
                         .arg(trial)
                         .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
                         .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
                         .arg(summary.trackingRms, 0, 'f', 3)
-                        .arg(summary.pathRms, 0, 'f', 3);
+                        .arg(summary.pathRms, 0, 'f', 3)
+                        .arg(core::formatCpuMicroseconds(summary.controllerMicrosecondsPerStep));
         } else {
-            text += QStringLiteral("trial %1: tracking RMS %2 rad, mean cost %3\n")
+            text += QStringLiteral(
+                        "trial %1: tracking RMS %2 rad, mean cost %3, controller %4 us/step\n")
                         .arg(trial)
                         .arg(summary.trackingRms, 0, 'f', 4)
-                        .arg(summary.meanCost, 0, 'g', 4);
+                        .arg(summary.meanCost, 0, 'g', 4)
+                        .arg(core::formatCpuMicroseconds(summary.controllerMicrosecondsPerStep));
         }
         if (trials > 1) {
             printProgress(QStringLiteral("run: trial %1/%2").arg(trial + 1).arg(trials));

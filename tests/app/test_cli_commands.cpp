@@ -107,6 +107,85 @@ class TestCliCommands : public QObject {
         QCOMPARE(parseJson(fit.out).value("plant").toString(), plant);
     }
 
+    void demo_listsStylesAndRecordsEach() {
+        const CliResult list = cli({"demo", "--plant", "slidecar", "--list-styles"});
+        QCOMPARE(list.exitCode, 0);
+        const QStringList styles = list.out.trimmed().split('\n');
+        QVERIFY(styles.size() >= 6);
+        QCOMPARE(styles.front(), QStringLiteral("stick-180-left"));
+        const CliResult json =
+            cli({"demo", "--plant", "aircraft", "--list-styles", "--format", "json"});
+        QCOMPARE(parseJson(json.out).value("styles").toArray().size(), 4);
+        // --style is the command's own (not the GUI toolkit's): the file says which it is.
+        const CliResult r = cli({"demo", "--plant", "slidecar", "--style", styles.last(), "--seed",
+                                 "3", "--out", "styled.csv", "--format", "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(parseJson(r.out).value("style").toString(), styles.last());
+        QFile file(path("styled.csv"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.readAll().contains("# style: " + styles.last().toUtf8()));
+        const CliResult bad =
+            cli({"demo", "--plant", "slidecar", "--style", "moonwalk", "--out", "never.csv"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY(bad.err.contains("moonwalk") && bad.err.contains("stick-180-left"));
+    }
+
+    void table1_stylesAndSeedSetsGiveMeansIntervalsAndABreakdown() {
+        const CliResult r = cli({"table1", "--styles", "stick-90-left,fast-180-right",
+                                 "--seed-sets", "2", "--seed", "40", "--trials", "2",
+                                 "--training-trials", "1", "--methods", "pd-h-lsd,ilc",
+                                 "--format", "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject root = parseJson(r.out);
+        QCOMPARE(root.value("seedSets").toArray().size(), 2);
+        const QJsonArray rows = root.value("rows").toArray();
+        QCOMPARE(rows.size(), 2);
+        for (const QJsonValue& value : rows) {
+            const QJsonObject row = value.toObject();
+            const QJsonObject position = row.value("positionCm").toObject();
+            QCOMPARE(position.value("cells").toInt(), 4);
+            QCOMPARE(row.value("trials").toInt(), 8);
+            const double mean = position.value("meanAbsoluteError").toDouble();
+            QVERIFY(position.value("lower").toDouble() <= mean &&
+                    mean <= position.value("upper").toDouble());
+            QVERIFY(row.value("orientationDeg").toObject().contains("meanAbsoluteError"));
+            // Per style: the mean over its two seed sets; the cells average to the whole.
+            const QJsonArray styles = row.value("styles").toArray();
+            QCOMPARE(styles.size(), 2);
+            double sum = 0.0;
+            for (const QJsonValue& style : styles) {
+                sum += style.toObject().value("positionCm").toObject().value("meanAbsoluteError")
+                           .toDouble();
+            }
+            QVERIFY(std::abs(sum / 2.0 - mean) < 1e-9);
+        }
+        const CliResult md = cli({"table1", "--styles", "stick-90-left", "--trials", "1",
+                                  "--training-trials", "1", "--methods", "pd,oracle"});
+        QVERIFY2(md.exitCode == 0, qPrintable(md.err));
+        QVERIFY2(md.out.contains("| LIMIT (oracle) | 1 | 1 |") && md.out.contains("| 1.0x |"),
+                 qPrintable(md.out));
+        QVERIFY(md.out.contains("| method | stick-90-left |"));
+        const CliResult bad = cli({"table1", "--styles", "stick-90-left,nope", "--out", "x.md"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY(bad.err.contains("'nope'"));
+        QVERIFY(!QFile::exists(path("x.md")));
+        QCOMPARE(cli({"table1", "--seed-sets", "2"}).exitCode, 2);
+    }
+
+    void curve_stylesPoolTheRunsAndBreakDownTheFinalError() {
+        const CliResult r = cli({"curve", "--plant", "acrobot", "--styles",
+                                 "swing-small,swing-large", "--methods", "ilc,pd", "--runs", "2",
+                                 "--budget", "960", "--out", "styles-curve.csv", "--format",
+                                 "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject root = parseJson(r.out);
+        QCOMPARE(root.value("cells").toInt(), 2);
+        const QJsonArray methods = root.value("methods").toArray();
+        QCOMPARE(methods.size(), 2);
+        QCOMPARE(methods[0].toObject().value("runs").toInt(), 4);  // 2 runs x 2 cells
+        QCOMPARE(methods[0].toObject().value("styles").toArray().size(), 2);
+    }
+
     void fit_reportsTheMappingAndDiagnosticsAsJson() {
         const CliResult r = cli({"fit", "--demo", "car.csv", "--format", "json"});
         QCOMPARE(r.exitCode, 0);
@@ -172,7 +251,7 @@ class TestCliCommands : public QObject {
         QTest::addColumn<QString>("method");
         for (const char* plant : {"slidecar", "acrobot", "aircraft"}) {
             for (const char* method : {"prisca", "pgsd", "pegasus", "pd", "pd-selected", "pd-h",
-                                       "pd-lsd", "pd-h-lsd", "playback"}) {
+                                       "pd-lsd", "pd-h-lsd", "playback", "ilc", "oracle"}) {
                 QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(plant, method)))
                     << plant << method;
             }
@@ -192,6 +271,7 @@ class TestCliCommands : public QObject {
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
         QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
+        QVERIFY(trial.value("cpuMicrosecondsPerStep").toDouble(-1) > 0.0);
         QVERIFY(QFile::exists(path(plant + "-" + method + ".csv")));
     }
 

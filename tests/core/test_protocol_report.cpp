@@ -1,0 +1,151 @@
+// The evaluation protocol's aggregation over (style x seed set) cells, against numbers worked
+// out by hand, and its formats.
+#include "core/ProtocolReport.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca::core;
+
+namespace {
+
+constexpr double kT975dof1 = 12.706204736174707;  // Student t quantiles, 97.5%
+constexpr double kT975dof3 = 3.182446305284263;
+
+Table1Row row(const char* method, double position, double orientation, double cpu) {
+    return {method, summarizeErrors({position}), summarizeErrors({orientation}), cpu};
+}
+
+// PRISCA's cells: position 2, 4 (style A, sets 1, 2) and 6, 8 (style B); orientation ten times.
+// The oracle's: position 1 and orientation 2 everywhere.
+ProtocolSummary example() {
+    std::vector<std::vector<ProtocolCell>> cells(2);
+    const double p[] = {2, 4, 6, 8};
+    int i = 0;
+    for (const char* style : {"A", "B"}) {
+        for (std::uint64_t set : {1, 2}) {
+            cells[0].push_back({style, set, row("prisca", p[i], 10 * p[i], 1.0 + i)});
+            cells[1].push_back({style, set, row("oracle", 1.0, 2.0, 5000.0)});
+            ++i;
+        }
+    }
+    return summarizeProtocol({"prisca", "oracle"}, {"A", "B"}, {1, 2}, cells);
+}
+
+bool near(double a, double b) {
+    return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
+}
+
+}  // namespace
+
+class TestProtocolReport : public QObject {
+    Q_OBJECT
+  private slots:
+    void meanInterval_isStudentTOverTheUnits() {
+        // {2, 4, 6, 8}: mean 5, s^2 = 20/3, half width t(3) s / 2.
+        const MeanInterval m = meanInterval({2, 4, 6, 8});
+        const double half = kT975dof3 * std::sqrt(20.0 / 3.0) / 2.0;
+        QCOMPARE(m.count, 4);
+        QVERIFY(near(m.mean, 5.0));
+        QVERIFY(near(m.lower, 5.0 - half));
+        QVERIFY(near(m.upper, 5.0 + half));
+        // One unit: no spread to estimate, the interval is the mean. None: NaN. NaN skipped.
+        const MeanInterval one = meanInterval({3.0, std::nan("")});
+        QCOMPARE(one.count, 1);
+        QCOMPARE(one.lower, 3.0);
+        QCOMPARE(one.upper, 3.0);
+        QVERIFY(std::isnan(meanInterval({}).mean));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, meanInterval({1, 2}, 1.0));
+    }
+
+    void summarize_averagesCellsAndBreaksDownPerStyle() {
+        const ProtocolSummary s = example();
+        QCOMPARE(s.oracleRow(), 1);
+        const ProtocolRow& prisca = s.rows[0];
+        QCOMPARE(prisca.method, QStringLiteral("prisca"));
+        QCOMPARE(prisca.trials, 4);
+        QVERIFY(near(prisca.position.mean, 5.0));
+        QVERIFY(near(prisca.orientation.mean, 50.0));
+        QVERIFY(near(prisca.position.upper - prisca.position.mean,
+                     kT975dof3 * std::sqrt(20.0 / 3.0) / 2.0));
+        QVERIFY(near(prisca.cpuMicrosecondsPerStep, 2.5));  // mean of 1, 2, 3, 4
+        // Style A: {2, 4}: mean 3, s = sqrt 2, half width t(1) sqrt(2) / sqrt(2).
+        QVERIFY(near(prisca.stylePosition[0].mean, 3.0));
+        QVERIFY(near(prisca.stylePosition[0].upper, 3.0 + kT975dof1));
+        QVERIFY(near(prisca.stylePosition[1].mean, 7.0));
+        QVERIFY(near(prisca.styleOrientation[1].mean, 70.0));
+        QCOMPARE(s.rows[1].position.lower, 1.0);  // no spread
+    }
+
+    void markdown_showsIntervalsTheGapToTheLimitAndEveryStyle() {
+        const QString md = formatProtocol(example(), TableFormat::Markdown, "caption");
+        QVERIFY(md.startsWith("caption\n"));
+        const double half = kT975dof3 * std::sqrt(20.0 / 3.0) / 2.0;
+        const QString expected =
+            QStringLiteral("| OURS (PRISCA) | 4 | 4 | 5.00 [%1, %2] | 5.0x | ")
+                .arg(5.0 - half, 0, 'f', 2)
+                .arg(5.0 + half, 0, 'f', 2);
+        QVERIFY2(md.contains(expected), qPrintable(md));
+        QVERIFY2(md.contains("| 25.0x | 2.5 |"), qPrintable(md));  // 50 deg / 2 deg; CPU
+        QVERIFY(md.contains("| LIMIT (oracle) | 4 | 4 | 1.00 [1.00, 1.00] | 1.0x |"));
+        QVERIFY(md.contains("| method | A | B |"));
+        QVERIFY2(md.contains("| OURS (PRISCA) | 3.00 / 30.00 | 7.00 / 70.00 |"), qPrintable(md));
+    }
+
+    void csv_hasOneLinePerMethodAndScope() {
+        const QStringList lines =
+            formatProtocol(example(), TableFormat::Csv, "c").trimmed().split('\n');
+        QCOMPARE(lines.size(), 1 + 2 * 3);  // header, (all, A, B) x 2 methods
+        QVERIFY(lines[0].startsWith("scope,method,label,cells,position_mae_cm"));
+        QVERIFY2(lines[1].startsWith("all,prisca,OURS (PRISCA),4,5,"), qPrintable(lines[1]));
+        QVERIFY2(lines[3].startsWith("A,prisca,OURS (PRISCA),2,3,"), qPrintable(lines[3]));
+        for (const QString& line : lines)
+            QCOMPARE(line.count(','), lines[0].count(','));
+    }
+
+    void json_keepsTheTableIKeys() {
+        const QJsonObject root =
+            QJsonDocument::fromJson(formatProtocol(example(), TableFormat::Json, "c").toUtf8())
+                .object();
+        const QJsonArray rows = root.value("rows").toArray();
+        QCOMPARE(rows.size(), 2);
+        const QJsonObject prisca = rows[0].toObject();
+        QCOMPARE(prisca.value("method").toString(), QStringLiteral("prisca"));
+        QCOMPARE(prisca.value("positionCm").toObject().value("meanAbsoluteError").toDouble(), 5.0);
+        QCOMPARE(prisca.value("orientationDeg").toObject().value("meanAbsoluteError").toDouble(),
+                 50.0);
+        QCOMPARE(prisca.value("positionTimesLimit").toDouble(), 5.0);
+        const QJsonArray styles = prisca.value("styles").toArray();
+        QCOMPARE(styles.size(), 2);
+        QCOMPARE(styles[1].toObject().value("style").toString(), QStringLiteral("B"));
+        QCOMPARE(
+            styles[1].toObject().value("positionCm").toObject().value("meanAbsoluteError").toDouble(),
+            7.0);
+        QCOMPARE(root.value("seedSets").toArray().size(), 2);
+    }
+
+    void latex_escapesAndListsEveryStyle() {
+        const QString tex = formatProtocol(example(), TableFormat::Latex, "95% of cell_x");
+        QVERIFY(tex.contains("95\\% of cell\\_x"));
+        QVERIFY(tex.contains("Method & A & B"));
+        QVERIFY2(tex.contains("OURS (PRISCA) & 3.00 / 30.00 & 7.00 / 70.00 \\\\"), qPrintable(tex));
+    }
+
+    void withoutOracle_theGapIsNotAvailable() {
+        std::vector<std::vector<ProtocolCell>> cells(1);
+        cells[0].push_back({"A", 1, row("pd", 3.0, 4.0, 1.0)});
+        const ProtocolSummary s = summarizeProtocol({"pd"}, {"A"}, {1}, cells);
+        QCOMPARE(s.oracleRow(), -1);
+        const QString md = formatProtocol(s, TableFormat::Markdown, "c");
+        QVERIFY(md.contains("| PD | 1 | 1 | 3.00 | n/a | 4.00 | n/a |"));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 summarizeProtocol({"pd", "ilc"}, {"A"}, {1}, cells));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestProtocolReport)
+#include "test_protocol_report.moc"
