@@ -32,6 +32,9 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       thetaBound_(new QDoubleSpinBox(this)),
       window_(new QSpinBox(this)),
       pgsdStep_(new QDoubleSpinBox(this)),
+      ilcLearning_(new QDoubleSpinBox(this)),
+      ilcLead_(new QSpinBox(this)),
+      ilcCutoff_(new QDoubleSpinBox(this)),
       featuresLabel_(new QLabel(this)),
       features_(new QTableWidget(this)),
       limitsLabel_(new QLabel(this)),
@@ -67,6 +70,17 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     pgsdStep_->setObjectName(QStringLiteral("pgsdStep"));
     pgsdStep_->setRange(0.0, 1e6);
     pgsdStep_->setDecimals(5);
+    ilcLearning_->setObjectName(QStringLiteral("ilcLearning"));
+    ilcLearning_->setRange(0.0, 100.0);
+    ilcLearning_->setDecimals(3);
+    ilcLearning_->setSingleStep(0.05);
+    ilcLead_->setObjectName(QStringLiteral("ilcLead"));
+    ilcLead_->setRange(0, 200);
+    ilcLead_->setSuffix(QStringLiteral(" steps"));
+    ilcCutoff_->setObjectName(QStringLiteral("ilcCutoff"));
+    ilcCutoff_->setRange(0.0, 20.0);
+    ilcCutoff_->setDecimals(2);
+    ilcCutoff_->setSuffix(QStringLiteral(" Hz"));
     preset_->setObjectName(QStringLiteral("controllerPreset"));
     features_->setObjectName(QStringLiteral("featureScales"));
     limits_->setObjectName(QStringLiteral("actionLimits"));
@@ -82,7 +96,8 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
 
     // Each field gets its own label object (retranslateUi() fills in the text).
     for (QWidget* field : std::initializer_list<QWidget*>{
-             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, window_, pgsdStep_}) {
+             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, window_, pgsdStep_,
+             ilcLearning_, ilcLead_, ilcCutoff_}) {
         form_->addRow(new QLabel(this), field);
     }
     auto* layout = new QVBoxLayout(this);
@@ -96,10 +111,11 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     layout->addStretch(1);
 
     connect(method_, &QComboBox::activated, this, &ControllerPanel::apply);
-    for (QSpinBox* box : {horizon_, window_}) {
+    for (QSpinBox* box : {horizon_, window_, ilcLead_}) {
         connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
-    for (QDoubleSpinBox* box : {gamma_, beta_, stepScale_, thetaBound_, pgsdStep_}) {
+    for (QDoubleSpinBox* box :
+         {gamma_, beta_, stepScale_, thetaBound_, pgsdStep_, ilcLearning_, ilcCutoff_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
     connect(features_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
@@ -125,6 +141,9 @@ void ControllerPanel::showSession() {
     thetaBound_->setValue(p.prisca.thetaBound);
     window_->setValue(p.matchingWindow);
     pgsdStep_->setValue(p.pgsd.stepSize);
+    ilcLearning_->setValue(p.ilcLearningScale);
+    ilcLead_->setValue(p.ilcLead);
+    ilcCutoff_->setValue(p.ilcCutoff);
 
     const core::FeatureMap& features = editedFeatures();
     const int m = p.info.actionDimension();
@@ -191,6 +210,9 @@ void ControllerPanel::apply() {
     p.prisca.thetaBound = thetaBound_->value();
     p.matchingWindow = window_->value();
     p.pgsd.stepSize = pgsdStep_->value();
+    p.ilcLearningScale = ilcLearning_->value();
+    p.ilcLead = ilcLead_->value();
+    p.ilcCutoff = ilcCutoff_->value();
 
     // Feature scales and limits: every cell must be a finite number; limits within the plant's.
     QString problem;
@@ -261,7 +283,8 @@ void ControllerPanel::retranslateUi() {
     };
     label(method_, tr("Method:"),
           tr("PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, "
-             "PEGASUS)."));
+             "PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated "
+             "plant itself (simulation only)."));
     label(horizon_, tr("Horizon H:"),
           tr("Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13)."));
     label(gamma_, tr("Depreciation γ:"),
@@ -278,6 +301,16 @@ void ControllerPanel::retranslateUi() {
           tr("How far ahead the least-state-deviation reference may search (eq. 12); 0 searches "
              "the whole demonstration."));
     label(pgsdStep_, tr("PGSD step α:"), tr("The fixed step size of PGSD (no decay)."));
+    label(ilcLearning_, tr("ILC learning Γ/Kp:"),
+          tr("ILC's learning gain per control, as a share of the PD's Kp: how much of a trial's "
+             "error goes into the next trial's feedforward."));
+    label(ilcLead_, tr("ILC lead:"),
+          tr("The error this many steps later corrects the action now (covers the plant's "
+             "delay)."));
+    label(ilcCutoff_, tr("ILC Q cutoff:"),
+          tr("Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it "
+             "unfiltered."));
+    ilcLead_->setSuffix(tr(" steps"));
     preset_->setText(tr("Restore the plant's tuned preset"));
     featuresLabel_->setText(tr("Feature scales φ (per control; the policy is u = u* + θᵀφ):"));
     limitsLabel_->setText(tr("Action limits:"));

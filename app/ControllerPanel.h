@@ -47,6 +47,9 @@ class ControllerPanel : public QWidget {
     QDoubleSpinBox* thetaBound_;
     QSpinBox* window_;
     QDoubleSpinBox* pgsdStep_;
+    QDoubleSpinBox* ilcLearning_;
+    QSpinBox* ilcLead_;
+    QDoubleSpinBox* ilcCutoff_;
     QLabel* featuresLabel_;
     QTableWidget* features_;
     QLabel* limitsLabel_;

@@ -3,6 +3,7 @@
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
 #include "sim/ControllerFactory.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
 #include <QFile>
@@ -138,8 +139,10 @@ void LabSession::setPlant(const QString& plant) {
     }
     plant_ = plant;
     profile_ = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
-    demonstration_ =
-        std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plant, 1));
+    scriptedStyle_ = sim::DemonstrationStyles::classic(plant);
+    scriptedSeed_ = 1;
+    demonstration_ = std::make_shared<core::Demonstration>(
+        sim::DemonstrationStyles::record(plant, scriptedStyle_, scriptedSeed_));
     demonstrationSource_.clear();
     refit();
     emit plantChanged(plant_);
@@ -161,6 +164,22 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     }
     demonstration_ = std::move(demonstration);
     demonstrationSource_ = source;
+    refit();
+    emit demonstrationChanged();
+    emit fitChanged();
+}
+
+void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t seed) {
+    if (!sim::DemonstrationStyles::contains(plant_, style)) {
+        throw std::invalid_argument(tr("the %1 has no demonstration style '%2'")
+                                        .arg(plant_, style)
+                                        .toStdString());
+    }
+    demonstration_ = std::make_shared<core::Demonstration>(
+        sim::DemonstrationStyles::record(plant_, style, seed));
+    demonstrationSource_.clear();
+    scriptedStyle_ = style;
+    scriptedSeed_ = seed;
     refit();
     emit demonstrationChanged();
     emit fitChanged();
@@ -223,12 +242,18 @@ QByteArray LabSession::toJson() const {
                      {"version", kSessionVersion},
                      {"plant", plant_},
                      {"demonstration", demonstrationSource_},
+                     {"scriptedStyle", scriptedStyle_},
+                     {"scriptedSeed", static_cast<double>(scriptedSeed_)},
                      {"mapping", profile_.mapping.toString()},
                      {"fit", fit},
                      {"method", method_},
                      {"matchingWindow", profile_.matchingWindow},
                      {"prisca", prisca},
                      {"pgsd", pgsd},
+                     {"ilc", QJsonObject{{"learningScale", profile_.ilcLearningScale},
+                                         {"lead", profile_.ilcLead},
+                                         {"cutoff", profile_.ilcCutoff},
+                                         {"feedbackScale", profile_.ilcFeedbackScale}}},
                      {"pd", pd},
                      {"featureScales", scalesToJson(profile_.features)},
                      {"limits", QJsonObject{{"lower", vectorToJson(profile_.info.actionLower)},
@@ -307,6 +332,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     const QJsonObject prisca = root.value("prisca").toObject();
     const QJsonObject pgsd = root.value("pgsd").toObject();
     const QJsonObject pd = root.value("pd").toObject();
+    const QJsonObject ilc = root.value("ilc").toObject();
     core::PriscaParameters& p = profile.prisca;
     const bool ok =
         readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
@@ -322,7 +348,11 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
         readNumber(pgsd, "thetaBound", 0.0, 1e12, &profile.pgsd.thetaBound, &what) &&
         readVector(pd, "kp", profile.pd.kp.size(), &profile.pd.kp, &what) &&
         readVector(pd, "kd", profile.pd.kd.size(), &profile.pd.kd, &what) &&
-        readInteger(pd, "horizon", 1, 1000, &profile.pdHorizon, &what);
+        readInteger(pd, "horizon", 1, 1000, &profile.pdHorizon, &what) &&
+        readNumber(ilc, "learningScale", 0.0, 1e6, &profile.ilcLearningScale, &what) &&
+        readInteger(ilc, "lead", 0, 1000, &profile.ilcLead, &what) &&
+        readNumber(ilc, "cutoff", 0.0, 1e3, &profile.ilcCutoff, &what) &&
+        readNumber(ilc, "feedbackScale", 0.0, 1e6, &profile.ilcFeedbackScale, &what);
     if (!ok) {
         return fail(what);
     }
@@ -374,6 +404,8 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
 
     // The demonstration: the file the session names, else the plant's scripted one.
     std::shared_ptr<const core::Demonstration> demonstration;
+    QString scriptedStyle = sim::DemonstrationStyles::classic(plant);
+    std::uint64_t scriptedSeed = 1;
     const QString source = root.value("demonstration").toString();
     if (!source.isEmpty()) {
         core::FileError fileError;
@@ -387,8 +419,19 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
         }
         demonstration = std::make_shared<core::Demonstration>(std::move(*loaded));
     } else {
-        demonstration =
-            std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plant, 1));
+        // The scripted operator the session names (the classic one by default).
+        scriptedStyle = root.value("scriptedStyle").toString(scriptedStyle);
+        if (!sim::DemonstrationStyles::contains(plant, scriptedStyle)) {
+            return fail(tr("'scriptedStyle' must be one of %1")
+                            .arg(sim::DemonstrationStyles::names(plant).join(", ")));
+        }
+        const double seed = root.value("scriptedSeed").toDouble(1.0);
+        if (!(seed >= 0.0 && seed <= 9e15) || seed != std::floor(seed)) {
+            return fail(tr("'scriptedSeed' must be a whole number from 0 to 9e15"));
+        }
+        scriptedSeed = static_cast<std::uint64_t>(seed);
+        demonstration = std::make_shared<core::Demonstration>(
+            sim::DemonstrationStyles::record(plant, scriptedStyle, scriptedSeed));
     }
 
     // Everything checked: only now does the session change.
@@ -398,6 +441,8 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     fitOptions_ = fitOptions;
     demonstration_ = std::move(demonstration);
     demonstrationSource_ = source;
+    scriptedStyle_ = scriptedStyle;
+    scriptedSeed_ = scriptedSeed;
     refit();
     emit plantChanged(plant_);
     emit demonstrationChanged();

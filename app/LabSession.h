@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -31,6 +32,13 @@ class LabSession : public QObject {
     std::shared_ptr<const core::Demonstration> demonstration() const { return demonstration_; }
     /// Where the demonstration came from: a file path, or empty for the scripted one.
     const QString& demonstrationSource() const { return demonstrationSource_; }
+    /// The scripted operator's style and seed (meaningful while demonstrationSource() is empty).
+    const QString& scriptedStyle() const { return scriptedStyle_; }
+    std::uint64_t scriptedSeed() const { return scriptedSeed_; }
+    /// Replaces the demonstration with the scripted operator's in this style (sim's
+    /// DemonstrationStyles of the plant) and seed, and refits B_v. Throws std::invalid_argument
+    /// for a style the plant does not have (the session is then unchanged).
+    void setScriptedDemonstration(const QString& style, std::uint64_t seed);
     /// Replaces the demonstration and refits B_v. Throws std::invalid_argument if its state or
     /// action dimension does not match the plant.
     void setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
@@ -78,6 +86,8 @@ class LabSession : public QObject {
     QString method_ = QStringLiteral("prisca");
     std::shared_ptr<const core::Demonstration> demonstration_;
     QString demonstrationSource_;
+    QString scriptedStyle_;
+    std::uint64_t scriptedSeed_ = 1;
     sim::PlantProfile profile_;
     core::ActionMappingFitOptions fitOptions_;
     core::ActionMappingFit fit_;

@@ -351,6 +351,9 @@ bool RigPanel::runTrial() {
         missing = tr("Connect the transmitter link first.");
     } else if (!session_.profile().info.pose) {
         missing = tr("The rig drives a car: choose the slide-car as the target.");
+    } else if (session_.method() == QLatin1String("oracle")) {
+        missing = tr("The oracle plans on copies of a simulated plant; a real car has none. "
+                     "Run it in simulation, or choose another method.");
     } else if (sim::trainsOffline(session_.method())) {
         missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
                       .arg(session_.method());

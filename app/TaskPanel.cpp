@@ -2,6 +2,7 @@
 
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
 #include <QComboBox>
@@ -14,6 +15,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace prisca::app {
@@ -26,6 +28,9 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
       demonstration_(new QLabel(this)),
       open_(new QPushButton(this)),
       save_(new QPushButton(this)),
+      styleLabel_(new QLabel(this)),
+      style_(new QComboBox(this)),
+      seed_(new QSpinBox(this)),
       scripted_(new QPushButton(this)) {
     setObjectName(QStringLiteral("taskPanel"));
     target_->setObjectName(QStringLiteral("target"));
@@ -37,9 +42,17 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     open_->setObjectName(QStringLiteral("openDemonstration"));
     save_->setObjectName(QStringLiteral("saveDemonstration"));
     scripted_->setObjectName(QStringLiteral("scriptedDemonstration"));
+    style_->setObjectName(QStringLiteral("demonstrationStyle"));
+    seed_->setObjectName(QStringLiteral("demonstrationSeed"));
+    seed_->setRange(0, 999999);
+    seed_->setValue(1);
 
     auto* form = new QFormLayout;
     form->addRow(targetLabel_, target_);
+    auto* scripted = new QHBoxLayout;
+    scripted->addWidget(style_, 1);
+    scripted->addWidget(seed_);
+    form->addRow(styleLabel_, scripted);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(open_);
     buttons->addWidget(save_);
@@ -59,15 +72,36 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     });
     connect(open_, &QPushButton::clicked, this, &TaskPanel::askOpen);
     connect(save_, &QPushButton::clicked, this, &TaskPanel::askSave);
-    connect(scripted_, &QPushButton::clicked, this,
-            [this] { session_.setPlant(session_.plant()); });
-    connect(&session_, &LabSession::plantChanged, this,
-            [this](const QString& plant) { target_->setCurrentIndex(target_->findData(plant)); });
+    connect(scripted_, &QPushButton::clicked, this, &TaskPanel::useScripted);
+    connect(&session_, &LabSession::plantChanged, this, [this](const QString& plant) {
+        target_->setCurrentIndex(target_->findData(plant));
+        fillStyles();
+    });
     connect(&session_, &LabSession::demonstrationChanged, this, &TaskPanel::showDemonstration);
     retranslateUi();
     if (!session_.plant().isEmpty()) {
         target_->setCurrentIndex(target_->findData(session_.plant()));
+        fillStyles();
         showDemonstration();
+    }
+}
+
+void TaskPanel::fillStyles() {
+    style_->clear();
+    for (const sim::DemonstrationStyle& style : sim::DemonstrationStyles::of(session_.plant())) {
+        style_->addItem(style.name, style.name);
+        style_->setItemData(style_->count() - 1, style.description, Qt::ToolTipRole);
+    }
+    style_->setCurrentIndex(std::max(0, style_->findData(session_.scriptedStyle())));
+    seed_->setValue(static_cast<int>(session_.scriptedSeed()));
+}
+
+void TaskPanel::useScripted() {
+    const QString style = style_->currentData().toString();
+    try {
+        session_.setScriptedDemonstration(style, static_cast<std::uint64_t>(seed_->value()));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Scripted demonstration"), QString::fromStdString(e.what()));
     }
 }
 
@@ -119,9 +153,12 @@ void TaskPanel::showDemonstration() {
         demonstration_->clear();
         return;
     }
-    const QString source = session_.demonstrationSource().isEmpty()
-                               ? tr("the scripted operator")
-                               : QFileInfo(session_.demonstrationSource()).fileName();
+    const QString source =
+        session_.demonstrationSource().isEmpty()
+            ? tr("the scripted operator (%1, seed %2)")
+                  .arg(session_.scriptedStyle())
+                  .arg(session_.scriptedSeed())
+            : QFileInfo(session_.demonstrationSource()).fileName();
     demonstration_->setText(tr("Demonstration: %1 samples, %2 s at %3 Hz, from %4.")
                                 .arg(demo->length())
                                 .arg(demo->length() * demo->dt, 0, 'f', 1)
@@ -148,8 +185,14 @@ void TaskPanel::retranslateUi() {
     open_->setToolTip(tr("Open a demonstration CSV recorded earlier"));
     save_->setText(tr("Save as..."));
     save_->setToolTip(tr("Save the demonstration as CSV"));
-    scripted_->setText(tr("Scripted"));
-    scripted_->setToolTip(tr("Use the scripted operator's demonstration for this target"));
+    styleLabel_->setText(tr("Scripted operator:"));
+    style_->setToolTip(tr("How the scripted operator demonstrates: keys or stick, left or right, "
+                          "how far and how fast (hover over a style for its description)"));
+    seed_->setToolTip(tr("Seed of the operator's hand variation"));
+    seed_->setPrefix(tr("seed "));
+    scripted_->setText(tr("Use scripted"));
+    scripted_->setToolTip(
+        tr("Use the scripted operator's demonstration in the chosen style and seed"));
     showDemonstration();
 }
 

@@ -5,13 +5,15 @@
 class QComboBox;
 class QLabel;
 class QPushButton;
+class QSpinBox;
 
 namespace prisca::app {
 
 class LabSession;
 
 /// The target (simulated slide-car, acrobot or aircraft) and the demonstration to repeat:
-/// which one is loaded, open one from a CSV file, save it, or go back to the scripted one.
+/// which one is loaded, open one from a CSV file, save it, or take the scripted operator's in
+/// one of the plant's styles (keyboard or stick, left or right, ...) with a seed.
 /// A file that cannot be used gets a message box naming the file and the problem.
 class TaskPanel : public QWidget {
     Q_OBJECT
@@ -30,6 +32,8 @@ class TaskPanel : public QWidget {
     void showDemonstration();
     void askOpen();
     void askSave();
+    void fillStyles();
+    void useScripted();
 
     LabSession& session_;
     QLabel* targetLabel_;
@@ -37,6 +41,9 @@ class TaskPanel : public QWidget {
     QLabel* demonstration_;
     QPushButton* open_;
     QPushButton* save_;
+    QLabel* styleLabel_;
+    QComboBox* style_;
+    QSpinBox* seed_;
     QPushButton* scripted_;
 };
 

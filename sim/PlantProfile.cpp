@@ -213,8 +213,7 @@ core::IlcParameters PlantProfile::ilcParameters() const {
     parameters.feedback.kp *= ilcFeedbackScale;
     parameters.feedback.kd *= ilcFeedbackScale;
     parameters.feedback.horizon = 0;
-    parameters.learningGain =
-        ilcLearningGain.size() > 0 ? ilcLearningGain : Eigen::VectorXd(0.3 * pd.kp);
+    parameters.learningGain = ilcLearningScale * pd.kp;
     parameters.lead = ilcLead;
     parameters.cutoff = ilcCutoff;
     return parameters;

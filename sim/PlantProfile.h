@@ -48,11 +48,11 @@ struct PlantProfile {
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]
-    /// ILC's learning (its feedback gains are the PD's, its error combination the PD's).
-    Eigen::VectorXd ilcLearningGain;  ///< Gamma per control (m)
-    int ilcLead = 2;                  ///< [steps]
-    double ilcCutoff = 2.0;           ///< Q filter [Hz]
-    double ilcFeedbackScale = 1.0;    ///< the PD gains in ILC's loop, scaled by this
+    /// ILC's learning (its error combination is the PD's, its feedback the PD's gains scaled).
+    double ilcLearningScale = 0.3;  ///< learning gain Gamma = this x the PD's Kp, per control
+    int ilcLead = 2;                ///< the error this many steps later corrects u_k [steps]
+    double ilcCutoff = 2.0;         ///< Q filter, zero-phase low-pass cutoff [Hz]
+    double ilcFeedbackScale = 1.0;  ///< the PD gains in ILC's loop, scaled by this
     core::PegasusParameters pegasus;  ///< PEGASUS defaults
     /// The oracle's planner (the limit every accuracy figure is read against); its trial
     /// length is filled in from the demonstration when it is created.

@@ -4,27 +4,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="183" />
+        <location filename="../app/ArenaView.cpp" line="183"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="184" />
+        <location filename="../app/ArenaView.cpp" line="184"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="201" />
+        <location filename="../app/ArenaView.cpp" line="201"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="202" />
+        <location filename="../app/ArenaView.cpp" line="202"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="401" />
+        <location filename="../app/ArenaView.cpp" line="401"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -32,22 +32,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="59" />
+        <location filename="../app/CameraView.cpp" line="59"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="105" />
+        <location filename="../app/CameraView.cpp" line="105"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="109" />
+        <location filename="../app/CameraView.cpp" line="109"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="113" />
+        <location filename="../app/CameraView.cpp" line="113"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -55,153 +55,184 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="146" />
+        <location filename="../app/ControllerPanel.cpp" line="165"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="147" />
+        <location filename="../app/ControllerPanel.cpp" line="166"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="148" />
+        <location filename="../app/ControllerPanel.cpp" line="167"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="150" />
+        <location filename="../app/ControllerPanel.cpp" line="169"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <location filename="../app/ControllerPanel.cpp" line="180"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="161" />
+        <location filename="../app/ControllerPanel.cpp" line="180"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="167" />
+        <location filename="../app/ControllerPanel.cpp" line="186"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="206" />
+        <location filename="../app/ControllerPanel.cpp" line="228"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="220" />
+        <location filename="../app/ControllerPanel.cpp" line="242"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="262" />
+        <location filename="../app/ControllerPanel.cpp" line="284"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="263" />
-        <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS).</source>
-        <translation>PRISCA，或表 I 中的比較方法（PD 系列、動作回放、PGSD、PEGASUS）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="265" />
+        <location filename="../app/ControllerPanel.cpp" line="288"/>
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="266" />
+        <location filename="../app/ControllerPanel.cpp" line="289"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="267" />
+        <location filename="../app/ControllerPanel.cpp" line="290"/>
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="268" />
+        <location filename="../app/ControllerPanel.cpp" line="291"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="269" />
+        <location filename="../app/ControllerPanel.cpp" line="292"/>
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="270" />
+        <location filename="../app/ControllerPanel.cpp" line="293"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="271" />
+        <location filename="../app/ControllerPanel.cpp" line="294"/>
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="272" />
+        <location filename="../app/ControllerPanel.cpp" line="295"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="274" />
+        <location filename="../app/ControllerPanel.cpp" line="297"/>
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="275" />
+        <location filename="../app/ControllerPanel.cpp" line="298"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="277" />
+        <location filename="../app/ControllerPanel.cpp" line="300"/>
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="278" />
+        <location filename="../app/ControllerPanel.cpp" line="301"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280" />
+        <location filename="../app/ControllerPanel.cpp" line="303"/>
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="280" />
+        <location filename="../app/ControllerPanel.cpp" line="303"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="281" />
-        <source>Restore the plant's tuned preset</source>
+        <location filename="../app/ControllerPanel.cpp" line="304"/>
+        <source>ILC learning Γ/Kp:</source>
+        <translation>ILC 學習 Γ/Kp：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="305"/>
+        <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
+        <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="307"/>
+        <source>ILC lead:</source>
+        <translation>ILC 超前：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="308"/>
+        <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
+        <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="310"/>
+        <source>ILC Q cutoff:</source>
+        <translation>ILC Q 截止頻率：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="311"/>
+        <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
+        <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="314"/>
+        <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="282" />
+        <location filename="../app/ControllerPanel.cpp" line="315"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="283" />
+        <location filename="../app/ControllerPanel.cpp" line="316"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="284" />
-        <location filename="../app/ControllerPanel.cpp" line="285" />
+        <location filename="../app/ControllerPanel.cpp" line="313"/>
+        <location filename="../app/ControllerPanel.cpp" line="317"/>
+        <location filename="../app/ControllerPanel.cpp" line="318"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="286" />
+        <location filename="../app/ControllerPanel.cpp" line="285"/>
+        <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
+        <translation>PRISCA，或表 I 的比較方法（PD 系列、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="319"/>
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -209,186 +240,186 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="144" />
-        <location filename="../app/ExperimentsPanel.cpp" line="172" />
+        <location filename="../app/ExperimentsPanel.cpp" line="144"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="172"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="173" />
+        <location filename="../app/ExperimentsPanel.cpp" line="173"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="191" />
+        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="200" />
+        <location filename="../app/ExperimentsPanel.cpp" line="200"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="216" />
+        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="221" />
+        <location filename="../app/ExperimentsPanel.cpp" line="221"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226" />
-        <location filename="../app/ExperimentsPanel.cpp" line="264" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226" />
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227" />
+        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227" />
+        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="252" />
+        <location filename="../app/ExperimentsPanel.cpp" line="252"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="258" />
+        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264" />
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="293" />
+        <location filename="../app/ExperimentsPanel.cpp" line="293"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="294" />
+        <location filename="../app/ExperimentsPanel.cpp" line="294"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="368" />
+        <location filename="../app/ExperimentsPanel.cpp" line="368"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="381" />
+        <location filename="../app/ExperimentsPanel.cpp" line="381"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="390" />
-        <location filename="../app/ExperimentsPanel.cpp" line="402" />
+        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="391" />
+        <location filename="../app/ExperimentsPanel.cpp" line="391"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="407" />
-        <location filename="../app/ExperimentsPanel.cpp" line="417" />
+        <location filename="../app/ExperimentsPanel.cpp" line="407"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="417"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="408" />
+        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429" />
+        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430" />
+        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432" />
+        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432" />
+        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="433" />
+        <location filename="../app/ExperimentsPanel.cpp" line="433"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="434" />
+        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="435" />
+        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436" />
+        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="438" />
+        <location filename="../app/ExperimentsPanel.cpp" line="438"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="439" />
+        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="440" />
+        <location filename="../app/ExperimentsPanel.cpp" line="440"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="441" />
+        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -396,111 +427,126 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="40" />
-        <source>'%1' must be a number from %2 to %3</source>
+        <location filename="../app/LabSession.cpp" line="41"/>
+        <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="54" />
-        <source>'%1' must be a whole number</source>
+        <location filename="../app/LabSession.cpp" line="55"/>
+        <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="68" />
-        <source>'%1' must be a list of %2 numbers</source>
+        <location filename="../app/LabSession.cpp" line="69"/>
+        <source>&apos;%1&apos; must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="74" />
-        <source>'%1' entry %2 must be a number &gt;= 0</source>
+        <location filename="../app/LabSession.cpp" line="75"/>
+        <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="104" />
-        <source>'%1' must have %2 lists of scales</source>
+        <location filename="../app/LabSession.cpp" line="105"/>
+        <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="110" />
-        <source>'%1' list %2 must have %3 scales</source>
+        <location filename="../app/LabSession.cpp" line="111"/>
+        <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="118" />
-        <source>'%1' list %2 entry %3 must be a number</source>
+        <location filename="../app/LabSession.cpp" line="119"/>
+        <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="156" />
+        <location filename="../app/LabSession.cpp" line="159"/>
         <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="254" />
-        <location filename="../app/LabSession.cpp" line="262" />
+        <location filename="../app/LabSession.cpp" line="174"/>
+        <source>the %1 has no demonstration style &apos;%2&apos;</source>
+        <translation>%1 沒有示範風格「%2」</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="279"/>
+        <location filename="../app/LabSession.cpp" line="287"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="268" />
+        <location filename="../app/LabSession.cpp" line="293"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="274" />
-        <source>not a PRISCA Lab session (no "format": "prisca-session")</source>
-        <translation>不是 PRISCA Lab 工作階段檔（沒有 "format": "prisca-session"）</translation>
+        <location filename="../app/LabSession.cpp" line="299"/>
+        <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
+        <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="277" />
+        <location filename="../app/LabSession.cpp" line="302"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="282" />
-        <source>'plant' must be one of %1</source>
+        <location filename="../app/LabSession.cpp" line="307"/>
+        <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="289" />
-        <source>'mapping': %1</source>
+        <location filename="../app/LabSession.cpp" line="314"/>
+        <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="293" />
-        <source>'mapping' must have %1 rows of %2 signs for the %3</source>
+        <location filename="../app/LabSession.cpp" line="318"/>
+        <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="303" />
-        <source>'method' must be one of %1</source>
+        <location filename="../app/LabSession.cpp" line="328"/>
+        <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="344" />
-        <source>'limits.%1' must be a list of %2 numbers</source>
+        <location filename="../app/LabSession.cpp" line="374"/>
+        <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="358" />
-        <source>'limits' of %1 must have lower &lt; upper within [%2, %3]</source>
+        <location filename="../app/LabSession.cpp" line="388"/>
+        <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="382" />
+        <location filename="../app/LabSession.cpp" line="414"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="386" />
+        <location filename="../app/LabSession.cpp" line="418"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="425"/>
+        <source>&apos;scriptedStyle&apos; must be one of %1</source>
+        <translation>「scriptedStyle」必須是 %1 之一</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="430"/>
+        <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
+        <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
 </context>
 <context>
     <name>prisca::app::LanguageMenu</name>
     <message>
-        <location filename="../app/LanguageMenu.cpp" line="40" />
+        <location filename="../app/LanguageMenu.cpp" line="40"/>
         <source>&amp;Language</source>
         <translation>語言(&amp;L)</translation>
     </message>
@@ -508,109 +554,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="351" />
+        <location filename="../app/LiveChartsPanel.cpp" line="351"/>
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="358" />
-        <location filename="../app/LiveChartsPanel.cpp" line="362" />
+        <location filename="../app/LiveChartsPanel.cpp" line="358"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="362"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="359" />
+        <location filename="../app/LiveChartsPanel.cpp" line="359"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="367" />
-        <location filename="../app/LiveChartsPanel.cpp" line="371" />
+        <location filename="../app/LiveChartsPanel.cpp" line="367"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="371"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="368" />
+        <location filename="../app/LiveChartsPanel.cpp" line="368"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="384" />
+        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="385" />
+        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="386" />
+        <location filename="../app/LiveChartsPanel.cpp" line="386"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="387" />
+        <location filename="../app/LiveChartsPanel.cpp" line="387"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="388" />
+        <location filename="../app/LiveChartsPanel.cpp" line="388"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391" />
+        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391" />
+        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="393" />
+        <location filename="../app/LiveChartsPanel.cpp" line="393"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395" />
+        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="396" />
+        <location filename="../app/LiveChartsPanel.cpp" line="396"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="397" />
+        <location filename="../app/LiveChartsPanel.cpp" line="397"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="398" />
+        <location filename="../app/LiveChartsPanel.cpp" line="398"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="399" />
+        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="400" />
+        <location filename="../app/LiveChartsPanel.cpp" line="400"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="401" />
+        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="402" />
+        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -618,40 +664,40 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="87" />
+        <location filename="../app/MainWindow.cpp" line="87"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="97" />
-        <location filename="../app/MainWindow.cpp" line="303" />
+        <location filename="../app/MainWindow.cpp" line="97"/>
+        <location filename="../app/MainWindow.cpp" line="303"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="174" />
-        <location filename="../app/MainWindow.cpp" line="236" />
+        <location filename="../app/MainWindow.cpp" line="174"/>
+        <location filename="../app/MainWindow.cpp" line="236"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="175" />
+        <location filename="../app/MainWindow.cpp" line="175"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="186" />
-        <location filename="../app/MainWindow.cpp" line="249" />
+        <location filename="../app/MainWindow.cpp" line="186"/>
+        <location filename="../app/MainWindow.cpp" line="249"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="187" />
+        <location filename="../app/MainWindow.cpp" line="187"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="237" />
+        <location filename="../app/MainWindow.cpp" line="237"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -660,137 +706,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="242" />
+        <location filename="../app/MainWindow.cpp" line="242"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="254" />
+        <location filename="../app/MainWindow.cpp" line="254"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290" />
+        <location filename="../app/MainWindow.cpp" line="290"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291" />
+        <location filename="../app/MainWindow.cpp" line="291"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292" />
+        <location filename="../app/MainWindow.cpp" line="292"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293" />
+        <location filename="../app/MainWindow.cpp" line="293"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294" />
+        <location filename="../app/MainWindow.cpp" line="294"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="295" />
+        <location filename="../app/MainWindow.cpp" line="295"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296" />
+        <location filename="../app/MainWindow.cpp" line="296"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="297" />
+        <location filename="../app/MainWindow.cpp" line="297"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298" />
+        <location filename="../app/MainWindow.cpp" line="298"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="299" />
+        <location filename="../app/MainWindow.cpp" line="299"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300" />
+        <location filename="../app/MainWindow.cpp" line="300"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="301" />
+        <location filename="../app/MainWindow.cpp" line="301"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302" />
+        <location filename="../app/MainWindow.cpp" line="302"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="304" />
+        <location filename="../app/MainWindow.cpp" line="304"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305" />
+        <location filename="../app/MainWindow.cpp" line="305"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="306" />
+        <location filename="../app/MainWindow.cpp" line="306"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="307" />
+        <location filename="../app/MainWindow.cpp" line="307"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="308" />
+        <location filename="../app/MainWindow.cpp" line="308"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="309" />
+        <location filename="../app/MainWindow.cpp" line="309"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="311" />
+        <location filename="../app/MainWindow.cpp" line="311"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326" />
+        <location filename="../app/MainWindow.cpp" line="326"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="338" />
+        <location filename="../app/MainWindow.cpp" line="338"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="340" />
-        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as "steer left to turn left".</source>
+        <location filename="../app/MainWindow.cpp" line="340"/>
+        <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="344" />
+        <location filename="../app/MainWindow.cpp" line="344"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="347" />
+        <location filename="../app/MainWindow.cpp" line="347"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -798,108 +844,108 @@
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="114" />
+        <location filename="../app/MappingPanel.cpp" line="114"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165" />
+        <location filename="../app/MappingPanel.cpp" line="165"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165" />
+        <location filename="../app/MappingPanel.cpp" line="165"/>
         <source>residual RMS</source>
         <translation>殘差 RMS</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165" />
+        <location filename="../app/MappingPanel.cpp" line="165"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="177" />
+        <location filename="../app/MappingPanel.cpp" line="177"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="183" />
+        <location filename="../app/MappingPanel.cpp" line="183"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="185" />
+        <location filename="../app/MappingPanel.cpp" line="185"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="190" />
+        <location filename="../app/MappingPanel.cpp" line="190"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="193" />
+        <location filename="../app/MappingPanel.cpp" line="193"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="207" />
+        <location filename="../app/MappingPanel.cpp" line="207"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="208" />
+        <location filename="../app/MappingPanel.cpp" line="208"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="209" />
-        <location filename="../app/MappingPanel.cpp" line="214" />
+        <location filename="../app/MappingPanel.cpp" line="209"/>
+        <location filename="../app/MappingPanel.cpp" line="214"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211" />
+        <location filename="../app/MappingPanel.cpp" line="211"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="213" />
+        <location filename="../app/MappingPanel.cpp" line="213"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="216" />
-        <source>How many steps of response the fit looks at: 1 is eq. 5's one-step model; more sees effects that build up (yaw rate into heading).</source>
+        <location filename="../app/MappingPanel.cpp" line="216"/>
+        <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="218" />
+        <location filename="../app/MappingPanel.cpp" line="218"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="219" />
+        <location filename="../app/MappingPanel.cpp" line="219"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="220" />
+        <location filename="../app/MappingPanel.cpp" line="220"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="222" />
+        <location filename="../app/MappingPanel.cpp" line="222"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="224" />
+        <location filename="../app/MappingPanel.cpp" line="224"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="225" />
+        <location filename="../app/MappingPanel.cpp" line="225"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -907,104 +953,104 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="88" />
-        <location filename="../app/RecordPanel.cpp" line="292" />
+        <location filename="../app/RecordPanel.cpp" line="88"/>
+        <location filename="../app/RecordPanel.cpp" line="292"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="153" />
+        <location filename="../app/RecordPanel.cpp" line="153"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="160" />
+        <location filename="../app/RecordPanel.cpp" line="160"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="190" />
+        <location filename="../app/RecordPanel.cpp" line="190"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="219" />
+        <location filename="../app/RecordPanel.cpp" line="219"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="226" />
+        <location filename="../app/RecordPanel.cpp" line="226"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="235" />
-        <location filename="../app/RecordPanel.cpp" line="246" />
+        <location filename="../app/RecordPanel.cpp" line="235"/>
+        <location filename="../app/RecordPanel.cpp" line="246"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="237" />
+        <location filename="../app/RecordPanel.cpp" line="237"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="249" />
+        <location filename="../app/RecordPanel.cpp" line="249"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260" />
+        <location filename="../app/RecordPanel.cpp" line="260"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282" />
+        <location filename="../app/RecordPanel.cpp" line="282"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="287" />
+        <location filename="../app/RecordPanel.cpp" line="287"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="289" />
+        <location filename="../app/RecordPanel.cpp" line="289"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="290" />
+        <location filename="../app/RecordPanel.cpp" line="290"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="291" />
+        <location filename="../app/RecordPanel.cpp" line="291"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293" />
+        <location filename="../app/RecordPanel.cpp" line="293"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294" />
+        <location filename="../app/RecordPanel.cpp" line="294"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="295" />
+        <location filename="../app/RecordPanel.cpp" line="295"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="296" />
+        <location filename="../app/RecordPanel.cpp" line="296"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="297" />
+        <location filename="../app/RecordPanel.cpp" line="297"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1012,12 +1058,12 @@
 <context>
     <name>prisca::app::RecordingWorker</name>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="44" />
+        <location filename="../app/RecordingWorker.cpp" line="44"/>
         <source>Cannot record to %1: %2</source>
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="122" />
+        <location filename="../app/RecordingWorker.cpp" line="117"/>
         <source>Writing the recording to %1 failed: %2</source>
         <translation>把錄製寫入 %1 失敗：%2</translation>
     </message>
@@ -1025,117 +1071,122 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="259" />
+        <location filename="../app/RigPanel.cpp" line="260"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="260" />
-        <location filename="../app/RigPanel.cpp" line="267" />
+        <location filename="../app/RigPanel.cpp" line="261"/>
+        <location filename="../app/RigPanel.cpp" line="268"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="266" />
+        <location filename="../app/RigPanel.cpp" line="267"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="281" />
-        <location filename="../app/RigPanel.cpp" line="292" />
+        <location filename="../app/RigPanel.cpp" line="282"/>
+        <location filename="../app/RigPanel.cpp" line="293"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="282" />
+        <location filename="../app/RigPanel.cpp" line="283"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="293" />
-        <source>'%1' is not two numbers "x, y" in metres.</source>
+        <location filename="../app/RigPanel.cpp" line="294"/>
+        <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="340" />
-        <location filename="../app/RigPanel.cpp" line="388" />
+        <location filename="../app/RigPanel.cpp" line="349"/>
+        <location filename="../app/RigPanel.cpp" line="399"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="342" />
-        <location filename="../app/RigPanel.cpp" line="389" />
+        <location filename="../app/RigPanel.cpp" line="351"/>
+        <location filename="../app/RigPanel.cpp" line="400"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="344" />
+        <location filename="../app/RigPanel.cpp" line="353"/>
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="347" />
+        <location filename="../app/RigPanel.cpp" line="355"/>
+        <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
+        <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="358"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374" />
+        <location filename="../app/RigPanel.cpp" line="385"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="400" />
+        <location filename="../app/RigPanel.cpp" line="411"/>
         <source>Cannot record to %1: %2</source>
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="435" />
+        <location filename="../app/RigPanel.cpp" line="435"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="476" />
+        <location filename="../app/RigPanel.cpp" line="476"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="486" />
+        <location filename="../app/RigPanel.cpp" line="486"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="509" />
+        <location filename="../app/RigPanel.cpp" line="509"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="539" />
+        <location filename="../app/RigPanel.cpp" line="539"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="544" />
+        <location filename="../app/RigPanel.cpp" line="544"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="581" />
+        <location filename="../app/RigPanel.cpp" line="581"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621" />
-        <source>Choose or type the transmitter's port first.</source>
+        <location filename="../app/RigPanel.cpp" line="621"/>
+        <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642" />
-        <location filename="../app/RigPanel.cpp" line="659" />
+        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="659"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643" />
+        <location filename="../app/RigPanel.cpp" line="643"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1144,232 +1195,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="669" />
+        <location filename="../app/RigPanel.cpp" line="669"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="698" />
+        <location filename="../app/RigPanel.cpp" line="698"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="701" />
+        <location filename="../app/RigPanel.cpp" line="701"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="703" />
+        <location filename="../app/RigPanel.cpp" line="703"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="759" />
-        <source>'%1' is not a number</source>
+        <location filename="../app/RigPanel.cpp" line="759"/>
+        <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="803" />
+        <location filename="../app/RigPanel.cpp" line="803"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="804" />
+        <location filename="../app/RigPanel.cpp" line="804"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="805" />
+        <location filename="../app/RigPanel.cpp" line="805"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="806" />
+        <location filename="../app/RigPanel.cpp" line="806"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="812" />
+        <location filename="../app/RigPanel.cpp" line="812"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813" />
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="814" />
+        <location filename="../app/RigPanel.cpp" line="814"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="815" />
+        <location filename="../app/RigPanel.cpp" line="815"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="816" />
+        <location filename="../app/RigPanel.cpp" line="816"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817" />
+        <location filename="../app/RigPanel.cpp" line="817"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="818" />
-        <source>Exposure in the driver's units; lowest: the driver's automatic exposure. IR LEDs track best with a short exposure.</source>
+        <location filename="../app/RigPanel.cpp" line="819"/>
+        <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="820" />
+        <location filename="../app/RigPanel.cpp" line="821"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="821" />
-        <source>Gain in the driver's units; lowest: leave the driver's</source>
+        <location filename="../app/RigPanel.cpp" line="822"/>
+        <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822" />
+        <location filename="../app/RigPanel.cpp" line="823"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823" />
+        <location filename="../app/RigPanel.cpp" line="824"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="824" />
+        <location filename="../app/RigPanel.cpp" line="825"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="825" />
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826" />
+        <location filename="../app/RigPanel.cpp" line="827"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="829" />
+        <location filename="../app/RigPanel.cpp" line="830"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="830" />
+        <location filename="../app/RigPanel.cpp" line="831"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="831" />
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="833" />
+        <location filename="../app/RigPanel.cpp" line="834"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="834" />
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835" />
+        <location filename="../app/RigPanel.cpp" line="836"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="836" />
+        <location filename="../app/RigPanel.cpp" line="837"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="837" />
+        <location filename="../app/RigPanel.cpp" line="838"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="838" />
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839" />
+        <location filename="../app/RigPanel.cpp" line="840"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="840" />
+        <location filename="../app/RigPanel.cpp" line="841"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="841" />
-        <source>0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
+        <location filename="../app/RigPanel.cpp" line="842"/>
+        <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843" />
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843" />
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843" />
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843" />
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843" />
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845" />
+        <location filename="../app/RigPanel.cpp" line="846"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="847" />
+        <location filename="../app/RigPanel.cpp" line="848"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="849" />
+        <location filename="../app/RigPanel.cpp" line="850"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="851" />
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853" />
-        <source>The session's method drives the car through the link, with the camera's pose as its state</source>
+        <location filename="../app/RigPanel.cpp" line="854"/>
+        <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855" />
+        <location filename="../app/RigPanel.cpp" line="856"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1377,164 +1428,164 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197" />
-        <location filename="../app/RunPanel.cpp" line="250" />
+        <location filename="../app/RunPanel.cpp" line="197"/>
+        <location filename="../app/RunPanel.cpp" line="250"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197" />
-        <location filename="../app/RunPanel.cpp" line="250" />
+        <location filename="../app/RunPanel.cpp" line="197"/>
+        <location filename="../app/RunPanel.cpp" line="250"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="199" />
+        <location filename="../app/RunPanel.cpp" line="199"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="201" />
+        <location filename="../app/RunPanel.cpp" line="201"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="231" />
+        <location filename="../app/RunPanel.cpp" line="231"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="232" />
+        <location filename="../app/RunPanel.cpp" line="232"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233" />
+        <location filename="../app/RunPanel.cpp" line="233"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235" />
+        <location filename="../app/RunPanel.cpp" line="235"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="237" />
+        <location filename="../app/RunPanel.cpp" line="237"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239" />
+        <location filename="../app/RunPanel.cpp" line="239"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241" />
+        <location filename="../app/RunPanel.cpp" line="241"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243" />
+        <location filename="../app/RunPanel.cpp" line="243"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245" />
+        <location filename="../app/RunPanel.cpp" line="245"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246" />
+        <location filename="../app/RunPanel.cpp" line="246"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="247" />
+        <location filename="../app/RunPanel.cpp" line="247"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="248" />
+        <location filename="../app/RunPanel.cpp" line="248"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249" />
+        <location filename="../app/RunPanel.cpp" line="249"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251" />
+        <location filename="../app/RunPanel.cpp" line="251"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="252" />
+        <location filename="../app/RunPanel.cpp" line="252"/>
         <source>Reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253" />
+        <location filename="../app/RunPanel.cpp" line="253"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="254" />
+        <location filename="../app/RunPanel.cpp" line="254"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="256" />
+        <location filename="../app/RunPanel.cpp" line="256"/>
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="257" />
+        <location filename="../app/RunPanel.cpp" line="257"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260" />
+        <location filename="../app/RunPanel.cpp" line="260"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260" />
+        <location filename="../app/RunPanel.cpp" line="260"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260" />
+        <location filename="../app/RunPanel.cpp" line="260"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261" />
+        <location filename="../app/RunPanel.cpp" line="261"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261" />
+        <location filename="../app/RunPanel.cpp" line="261"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263" />
+        <location filename="../app/RunPanel.cpp" line="263"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263" />
+        <location filename="../app/RunPanel.cpp" line="263"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264" />
+        <location filename="../app/RunPanel.cpp" line="264"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264" />
+        <location filename="../app/RunPanel.cpp" line="264"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1542,32 +1593,32 @@
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="39" />
+        <location filename="../app/RunWorker.cpp" line="39"/>
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="101" />
+        <location filename="../app/RunWorker.cpp" line="76"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="116" />
+        <location filename="../app/RunWorker.cpp" line="91"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="191" />
+        <location filename="../app/RunWorker.cpp" line="166"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="231" />
+        <location filename="../app/RunWorker.cpp" line="206"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="241" />
+        <location filename="../app/RunWorker.cpp" line="216"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -1575,14 +1626,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="79" />
-        <location filename="../app/TaskPanel.cpp" line="86" />
-        <location filename="../app/TaskPanel.cpp" line="96" />
+        <location filename="../app/TaskPanel.cpp" line="113"/>
+        <location filename="../app/TaskPanel.cpp" line="120"/>
+        <location filename="../app/TaskPanel.cpp" line="130"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="80" />
+        <location filename="../app/TaskPanel.cpp" line="114"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1591,85 +1642,110 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="87" />
+        <location filename="../app/TaskPanel.cpp" line="121"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97" />
+        <location filename="../app/TaskPanel.cpp" line="131"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="105" />
-        <location filename="../app/TaskPanel.cpp" line="112" />
+        <location filename="../app/TaskPanel.cpp" line="139"/>
+        <location filename="../app/TaskPanel.cpp" line="146"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="106" />
+        <location filename="../app/TaskPanel.cpp" line="140"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123" />
-        <source>the scripted operator</source>
-        <translation>預設腳本操作員</translation>
+        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <source>Scripted demonstration</source>
+        <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125" />
+        <location filename="../app/TaskPanel.cpp" line="158"/>
+        <source>the scripted operator (%1, seed %2)</source>
+        <translation>腳本操作員（%1，種子 %2）</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="162"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="140" />
+        <location filename="../app/TaskPanel.cpp" line="177"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="143" />
+        <location filename="../app/TaskPanel.cpp" line="180"/>
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="144" />
+        <location filename="../app/TaskPanel.cpp" line="181"/>
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="145" />
+        <location filename="../app/TaskPanel.cpp" line="182"/>
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="147" />
+        <location filename="../app/TaskPanel.cpp" line="184"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="148" />
+        <location filename="../app/TaskPanel.cpp" line="185"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="149" />
+        <location filename="../app/TaskPanel.cpp" line="186"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="150" />
+        <location filename="../app/TaskPanel.cpp" line="187"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="151" />
-        <source>Scripted</source>
-        <translation>腳本示範</translation>
+        <location filename="../app/TaskPanel.cpp" line="188"/>
+        <source>Scripted operator:</source>
+        <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="152" />
-        <source>Use the scripted operator's demonstration for this target</source>
-        <translation>為此對象使用預設腳本操作員的示範</translation>
+        <location filename="../app/TaskPanel.cpp" line="189"/>
+        <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
+        <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="191"/>
+        <source>Seed of the operator&apos;s hand variation</source>
+        <translation>操作員手部變化的種子</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <source>seed </source>
+        <translation>種子 </translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="193"/>
+        <source>Use scripted</source>
+        <translation>使用腳本</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="195"/>
+        <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
+        <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>
 </context>
 </TS>

@@ -15,6 +15,7 @@
 #include "app/TaskPanel.h"
 #include "core/DemonstrationCsv.h"
 #include "devices/SyntheticCamera.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
 #include <QAbstractButton>
@@ -26,12 +27,15 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include "sim/DemonstrationStyles.h"
+
 #include <QtTest>
 
 using namespace prisca::app;
@@ -411,6 +415,52 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.window.session().profile().prisca.horizon, 17);
         QCOMPARE(w.find<QSpinBox>("horizon")->value(), 17);
         QCOMPARE(w.find<QComboBox>("target")->currentData().toString(), QStringLiteral("aircraft"));
+    }
+
+    void task_scriptedStyleAndSeedAreUsedShownAndSaved() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("styled.json");
+        {
+            Window w;
+            auto* style = w.find<QComboBox>("demonstrationStyle");
+            QCOMPARE(style->count(), static_cast<int>(
+                                         prisca::sim::DemonstrationStyles::of(QStringLiteral("slidecar")).size()));
+            QCOMPARE(style->currentData().toString(), QStringLiteral("stick-180-left"));
+            style->setCurrentIndex(style->findData(QStringLiteral("keyboard-90-right")));
+            w.find<QSpinBox>("demonstrationSeed")->setValue(5);
+            QTest::mouseClick(w.find<QPushButton>("scriptedDemonstration"), Qt::LeftButton);
+            QCOMPARE(w.window.session().scriptedStyle(), QStringLiteral("keyboard-90-right"));
+            QCOMPARE(w.window.session().scriptedSeed(), std::uint64_t(5));
+            const auto expected = prisca::sim::DemonstrationStyles::record(
+                QStringLiteral("slidecar"), QStringLiteral("keyboard-90-right"), 5);
+            QCOMPARE(w.window.session().demonstration()->actions, expected.actions);
+            QVERIFY2(w.find<QLabel>("demonstrationInfo")->text().contains("keyboard-90-right, seed 5"),
+                     qPrintable(w.find<QLabel>("demonstrationInfo")->text()));
+            // The ILC fields apply to the session like every other parameter.
+            w.find<QSpinBox>("ilcLead")->setValue(4);
+            QCOMPARE(w.window.session().profile().ilcLead, 4);
+            QVERIFY(w.window.saveSession(path));
+        }
+        Window w;
+        w.find<QComboBox>("target")->setCurrentIndex(1);
+        emit w.find<QComboBox>("target")->activated(1);
+        QVERIFY(w.window.openSession(path));
+        QCOMPARE(w.window.session().scriptedStyle(), QStringLiteral("keyboard-90-right"));
+        QCOMPARE(w.window.session().scriptedSeed(), std::uint64_t(5));
+        QCOMPARE(w.find<QComboBox>("demonstrationStyle")->currentData().toString(),
+                 QStringLiteral("keyboard-90-right"));
+        QCOMPARE(w.find<QSpinBox>("demonstrationSeed")->value(), 5);
+        QCOMPARE(w.window.session().profile().ilcLead, 4);
+        // A session naming a style the plant does not have is refused, naming the choices.
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QByteArray json = file.readAll();
+        file.close();
+        json.replace("keyboard-90-right", "moonwalk");
+        QString error;
+        QVERIFY(!w.window.session().fromJson(json, QStringLiteral("bad.json"), &error));
+        QVERIFY2(error.contains("scriptedStyle") && error.contains("stick-180-left"),
+                 qPrintable(error));
     }
 
     void controller_featureScalesAndLimitsAreCheckedAppliedAndSaved() {
