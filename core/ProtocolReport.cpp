@@ -37,8 +37,11 @@ QString withInterval(const MeanInterval& m) {
     return QStringLiteral("%1 [%2, %3]").arg(fixed(m.mean), fixed(m.lower), fixed(m.upper));
 }
 
+// Below half the tables' last digit (0.01 cm, 0.01 deg) the limit is 0 as far as a ratio goes.
+constexpr double kResolvableLimit = 0.005;
+
 QString ratio(double value, double limit) {
-    if (!std::isfinite(value) || !std::isfinite(limit) || limit <= 0.0) {
+    if (!std::isfinite(value) || !std::isfinite(limit) || limit < kResolvableLimit) {
         return QStringLiteral("n/a");
     }
     return QStringLiteral("%1x").arg(QString::number(value / limit, 'f', 1));
@@ -257,12 +260,14 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                     {"trials", r.trials},
                     {"positionCm", intervalJson(r.position)},
                     {"orientationDeg", intervalJson(r.orientation)},
-                    {"positionTimesLimit", jsonNumber(limitPosition > 0.0
-                                                          ? r.position.mean / limitPosition
-                                                          : kNaN)},
+                    {"positionTimesLimit",
+                     jsonNumber(limitPosition >= kResolvableLimit
+                                    ? r.position.mean / limitPosition
+                                    : kNaN)},
                     {"orientationTimesLimit",
-                     jsonNumber(limitOrientation > 0.0 ? r.orientation.mean / limitOrientation
-                                                       : kNaN)},
+                     jsonNumber(limitOrientation >= kResolvableLimit
+                                    ? r.orientation.mean / limitOrientation
+                                    : kNaN)},
                     {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)},
                     {"styles", styles}});
             }

@@ -57,7 +57,7 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
                                   const std::vector<std::vector<ProtocolCell>>& cells);
 
 /// The summary as text: the methods' means with 95% intervals, how many times the oracle's
-/// position error each is, the CPU time per step, and a per-style breakdown. Markdown and LaTeX
+/// error each is (n/a where the oracle's is below 0.005, too small for a ratio), the CPU time per step, and a per-style breakdown. Markdown and LaTeX
 /// round for reading; CSV (long format: one line per method and scope, "all" or a style) and
 /// JSON carry full precision. JSON rows keep Table I's keys (`method`,
 /// `positionCm.meanAbsoluteError`, `orientationDeg.meanAbsoluteError`).

@@ -21,14 +21,16 @@ using namespace figures;
 
 namespace {
 
-// The last grid point every run reached (NaN if none).
-double finalMean(const core::ConfidenceBand& band) {
-    for (size_t g = band.count.size(); g-- > 0;) {
-        if (band.count[g] > 0) {
-            return band.mean[g];
+// Where the runs ended: the mean over runs of each run's last trial (NaN if none ran), whatever
+// the lengths of the cells' demonstrations.
+double finalMean(const sim::MethodCurves& method) {
+    std::vector<double> last;
+    for (const auto& run : method.runs) {
+        if (!run.empty()) {
+            last.push_back(run.back().trackingError);
         }
     }
-    return std::numeric_limits<double>::quiet_NaN();
+    return core::mean(last);
 }
 
 struct Cell {
@@ -201,11 +203,12 @@ int curveCommand(const QStringList& arguments) {
                        .arg(band.count[g])
                        .toUtf8();
         }
-        const double final = finalMean(band);
+        const double final = finalMean(method);
         QJsonObject entry{{"method", method.method},
                           {"finalMean", std::isfinite(final) ? QJsonValue(final) : QJsonValue()},
                           {"runs", static_cast<int>(method.runs.size())}};
-        text += QStringLiteral("%1: tracking error after %2 steps: %3 (mean of %4 runs)\n")
+        text += QStringLiteral("%1: tracking error of the last trial within %2 steps: %3 (mean "
+                               "of %4 runs)\n")
                     .arg(method.method, -8)
                     .arg(settings.budgetSteps)
                     .arg(final, 0, 'g', 4)
@@ -216,9 +219,7 @@ int curveCommand(const QStringList& arguments) {
                 if (perStyle[s].empty()) {
                     continue;
                 }
-                const auto styleSummary = sim::summarizeCurves(
-                    {perStyle[s][i]}, unit, settings.budgetSteps, dt);
-                const double styleFinal = finalMean(styleSummary.front().band);
+                const double styleFinal = finalMean(perStyle[s][i]);
                 byStyle.append(QJsonObject{
                     {"style", styles[s]},
                     {"finalMean", std::isfinite(styleFinal) ? QJsonValue(styleFinal)

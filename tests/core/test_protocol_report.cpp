@@ -135,6 +135,18 @@ class TestProtocolReport : public QObject {
         QVERIFY2(tex.contains("OURS (PRISCA) & 3.00 / 30.00 & 7.00 / 70.00 \\\\"), qPrintable(tex));
     }
 
+    void aZeroLimit_givesNoRatio() {
+        std::vector<std::vector<ProtocolCell>> cells(2);
+        cells[0].push_back({"A", 1, row("pd", 3.0, 4.0, 1.0)});
+        cells[1].push_back({"A", 1, row("oracle", 0.001, 0.0, 1.0)});
+        const ProtocolSummary s = summarizeProtocol({"pd", "oracle"}, {"A"}, {1}, cells);
+        QVERIFY(formatProtocol(s, TableFormat::Markdown, "c")
+                    .contains("| PD | 1 | 1 | 3.00 | n/a | 4.00 | n/a |"));
+        const QJsonObject root =
+            QJsonDocument::fromJson(formatProtocol(s, TableFormat::Json, "c").toUtf8()).object();
+        QVERIFY(root.value("rows").toArray()[0].toObject().value("positionTimesLimit").isNull());
+    }
+
     void withoutOracle_theGapIsNotAvailable() {
         std::vector<std::vector<ProtocolCell>> cells(1);
         cells[0].push_back({"A", 1, row("pd", 3.0, 4.0, 1.0)});
