@@ -24,8 +24,8 @@ LeastStateDeviationMatcher::LeastStateDeviationMatcher(const Eigen::MatrixXd& de
     if (states_.rows() < 1 || n < 1) {
         throw std::invalid_argument("LeastStateDeviationMatcher: empty demonstration");
     }
-    if (parameters_.window < 0) {
-        throw std::invalid_argument("LeastStateDeviationMatcher: window must be >= 0");
+    if (parameters_.window < 0 || parameters_.maxLag < 0) {
+        throw std::invalid_argument("LeastStateDeviationMatcher: window and maxLag must be >= 0");
     }
     weights_ = parameters_.weights.size() == 0 ? Eigen::VectorXd::Ones(n) : parameters_.weights;
     if (weights_.size() != n) {
@@ -68,7 +68,10 @@ int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& s
         ++step_;
         return last_;
     }
-    const int first = std::max(last_, 0);
+    int first = std::max(last_, 0);
+    if (parameters_.maxLag > 0) {
+        first = std::max(first, std::min(step_ - parameters_.maxLag, T - 1));
+    }
     const int end = std::min(T - 1, first + parameters_.window);
     constexpr double kTwoPi = 2.0 * M_PI;
     wrappedState_ = state;
@@ -78,7 +81,7 @@ int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& s
     // Where the demonstration's own clock would be: ties go to the sample nearest it, so a
     // robot standing exactly where the demonstration stood still (identical samples) moves on
     // with the demonstration's time instead of staying on the first of them forever.
-    const int expected = std::min(last_ + 1, end);
+    const int expected = std::clamp(last_ + 1, first, end);
     int best = -1;
     double bestDistance = std::numeric_limits<double>::infinity();
     for (int start = first; start <= end; start += kChunk) {

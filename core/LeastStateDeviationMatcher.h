@@ -16,6 +16,11 @@ struct MatchingParameters {
     /// Forward search window [samples]: candidates are j_{k-1} .. j_{k-1} + window, so progress
     /// along the demonstration is monotone. The first step searches 0 .. window.
     int window = 40;
+    /// The reference never falls more than this many samples behind the demonstration's own
+    /// clock (j_k >= k - maxLag); 0 means it may lag without bound. A robot standing just ahead
+    /// of where the demonstration stood still is nearer to the last resting sample than to any
+    /// moving one, so an unbounded reference waits there for a robot that waits for it.
+    int maxLag = 0;
     /// Per-component weights of the L1 distance (size n); empty means all ones.
     Eigen::VectorXd weights;
     /// State components that are angles: their differences wrap to (-pi, pi].
@@ -23,7 +28,8 @@ struct MatchingParameters {
 };
 
 /// Least-state-deviation reference matching (eq. 12): j_k minimises the weighted L1 distance
-/// sum_c w_c |s_k,c - s*_j,c| over a forward window after the previous match; ties (equal
+/// sum_c w_c |s_k,c - s*_j,c| over a forward window after the previous match (and no further
+/// than maxLag behind the clock k); ties (equal
 /// samples, e.g. a demonstration standing still) go to the sample nearest j_{k-1} + 1, the
 /// demonstration's own clock. In TimeDriven mode j_k = min(k, T - 1).
 /// One instance per controller; not thread-safe. match() does not allocate.

@@ -242,6 +242,7 @@ core::TrackingProblem PlantProfile::trackingProblem(
     problem.deviation = info.deviationModel();
     problem.matching.mode = mode;
     problem.matching.window = matchingWindow;
+    problem.matching.maxLag = matchingMaxLag;
     problem.matching.weights = matchingWeights;
     problem.matching.angleIndices = info.angleIndices;
     problem.costWeights = costWeights;

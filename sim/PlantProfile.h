@@ -28,6 +28,11 @@ struct PlantProfile {
     core::FeatureMap features;          ///< phi_l per channel
     Eigen::VectorXd matchingWeights;    ///< L1 weights of the least-state-deviation match (n)
     int matchingWindow = 40;            ///< forward search window [samples]
+    /// The least-state-deviation reference falls at most this far behind the demonstration's
+    /// clock [samples] (2 s at 40 Hz): a car standing just ahead of the start would otherwise
+    /// wait for a reference that waits for it. Long enough never to touch a moving car's timing
+    /// (10, 20, 40 samples cost the PD family accuracy on development cells; 80 did not).
+    int matchingMaxLag = 80;
     Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]

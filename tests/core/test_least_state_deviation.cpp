@@ -83,6 +83,34 @@ class TestLeastStateDeviation : public QObject {
         QCOMPARE(matcher.match(Eigen::Vector2d(10.0, 0)), 30);  // first step searches 0..window
     }
 
+    void maxLag_keepsTheReferenceWithinReachOfTheClock() {
+        // The demonstration rests for 10 samples, then moves (state: position, speed). A robot
+        // at rest a little ahead of the start is nearer the last resting sample than any moving
+        // one: unbounded, the reference waits there for ever (and a controller told "you are
+        // ahead" waits too).
+        Eigen::MatrixXd demo = Eigen::MatrixXd::Zero(60, 2);
+        for (int j = 10; j < 60; ++j) {
+            demo(j, 0) = 0.02 * (j - 9) * (j - 9);
+            demo(j, 1) = 1.0;
+        }
+        const Eigen::Vector2d ahead(0.05, 0.0);
+        MatchingParameters unbounded;
+        unbounded.window = 30;
+        LeastStateDeviationMatcher waiting(demo, unbounded);
+        for (int k = 0; k < 40; ++k)
+            QVERIFY(waiting.match(ahead) <= 9);
+        MatchingParameters bounded = unbounded;
+        bounded.maxLag = 5;
+        LeastStateDeviationMatcher matcher(demo, bounded);
+        for (int k = 0; k < 40; ++k) {
+            const int j = matcher.match(ahead);
+            QVERIFY2(j >= k - 5, qPrintable(QStringLiteral("k %1 j %2").arg(k).arg(j)));
+        }
+        // Within the lag, the state decides as before.
+        matcher.reset();
+        QCOMPARE(matcher.match(Eigen::Vector2d(demo(3, 0), demo(3, 1))), 0);
+    }
+
     void timeDriven_returnsStepClampedToEnd() {
         Eigen::MatrixXd demo = Eigen::MatrixXd::Random(5, 3);
         MatchingParameters parameters;
