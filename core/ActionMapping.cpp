@@ -101,6 +101,11 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     if (R < 1) {
         throw std::invalid_argument("fitActionMapping: the response horizon must be >= 1");
     }
+    if (options.drift && (!rateChange || R != 1)) {
+        throw std::invalid_argument(
+            "fitActionMapping: the drift regressors (eq. 5 in full) need the rate-change target "
+            "with response horizon 1");
+    }
     const int first = 1;
     const int last = T - 1 - R - d;
     const int K = last - first + 1;
@@ -114,6 +119,7 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     const double dt = demonstration.dt;
     Eigen::MatrixXd ds(K, n);  // row t: change of state, in the frame of the earlier sample
     Eigen::MatrixXd du(K, m);  // row t: change of action
+    Eigen::MatrixXd drift(K, n);  // row t: the previous one-step change ds_k (eq. 5's A term)
     Eigen::VectorXd change(n);
     Eigen::VectorXd previousChange(n);
     for (int t = 0; t < K; ++t) {
@@ -126,6 +132,7 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
             deviation.deviation(demonstration.states.row(k + d - 1).transpose(),
                                 demonstration.states.row(k + d).transpose(), previousChange);
             change += R * previousChange;
+            drift.row(t) = -previousChange.transpose();  // s_{k+d} - s_{k+d-1} in its frame
         } else {
             deviation.deviation(demonstration.states.row(k + 1 + d).transpose(),
                                 demonstration.states.row(k + d).transpose(), change);
@@ -138,6 +145,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     ActionMappingFit fit;
     fit.samples = K;
     fit.bv.setZero(m, n);
+    fit.a.setZero(n, n);
+    fit.unconstrainedBv.setZero(m, n);
     fit.residualRms.setZero(n);
     fit.rSquared.setConstant(n, std::numeric_limits<double>::quiet_NaN());
     fit.outlierShare.setZero(n);
@@ -165,11 +174,17 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
         const Eigen::VectorXd y = ds.col(c);
         Eigen::VectorXd prediction = Eigen::VectorXd::Zero(K);
         double residualRms = 0.0;
-        if (!controls.empty()) {
-            // Column j of X is B~[l, c] dt du_l, so the unknowns are the B_v entries themselves.
-            Eigen::MatrixXd X(K, static_cast<int>(controls.size()));
-            for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
+        if (!controls.empty() || options.drift) {
+            // Column j of X is B~[l, c] dt du_l, so the unknowns are the B_v entries themselves;
+            // with the drift, n more columns dt ds_k whose unknowns are row c of A (no sign).
+            const int q = static_cast<int>(controls.size());
+            const int driftColumns = options.drift ? n : 0;
+            Eigen::MatrixXd X(K, q + driftColumns);
+            for (int j = 0; j < q; ++j) {
                 X.col(j) = mapping.signs(controls[j], c) * dt * du.col(controls[j]);
+            }
+            for (int i = 0; i < driftColumns; ++i) {
+                X.col(q + i) = dt * drift.col(i);
             }
             // One weighted fit (with the sign constraint) for given per-sample weights.
             const auto solve = [&](const Eigen::VectorXd& weights, bool report) {
@@ -187,7 +202,12 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                                "shares cannot be told apart (minimum-norm fit)")
                                .arg(demonstration.stateNames.value(c, QString::number(c)));
                 }
-                for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
+                if (report) {
+                    for (int j = 0; j < q; ++j) {
+                        fit.unconstrainedBv(controls[j], c) = beta[j];
+                    }
+                }
+                for (int j = 0; j < q; ++j) {
                     if (report && beta[j] < 0.0) {
                         fit.signConflicts.emplace_back(controls[j], c);
                         fit.warnings
@@ -204,13 +224,13 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                                                   "; check the sign or the demonstration"));
                     }
                 }
-                if (options.nonNegative && (beta.array() < 0.0).any()) {
-                    // Few unknowns per column (one per control): try every subset of entries left
-                    // free, the rest at 0, and keep the best feasible one. Exact, and cheap for m
-                    // <= 4.
-                    const int q = static_cast<int>(beta.size());
+                if (options.nonNegative && (beta.head(q).array() < 0.0).any()) {
+                    // Few constrained unknowns per column (one per control): try every subset of
+                    // B_v entries left free, the rest at 0 (A's entries always free), and keep
+                    // the best feasible one. Exact, and cheap for m <= 4.
+                    const int all = static_cast<int>(beta.size());
                     double best = std::numeric_limits<double>::infinity();
-                    Eigen::VectorXd bestBeta = Eigen::VectorXd::Zero(q);
+                    Eigen::VectorXd bestBeta = Eigen::VectorXd::Zero(all);
                     for (int mask = 0; mask < (1 << q); ++mask) {
                         std::vector<int> free;
                         for (int j = 0; j < q; ++j) {
@@ -218,7 +238,10 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                                 free.push_back(j);
                             }
                         }
-                        Eigen::VectorXd candidate = Eigen::VectorXd::Zero(q);
+                        for (int j = q; j < all; ++j) {
+                            free.push_back(j);
+                        }
+                        Eigen::VectorXd candidate = Eigen::VectorXd::Zero(all);
                         if (!free.empty()) {
                             Eigen::MatrixXd sub(K, static_cast<int>(free.size()));
                             for (int f = 0; f < static_cast<int>(free.size()); ++f) {
@@ -226,7 +249,11 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                             }
                             const Eigen::VectorXd part =
                                 sub.completeOrthogonalDecomposition().solve(Wy);
-                            if ((part.array() < 0.0).any()) {
+                            bool feasible = true;
+                            for (int f = 0; f < static_cast<int>(free.size()); ++f) {
+                                feasible = feasible && (free[f] >= q || part[f] >= 0.0);
+                            }
+                            if (!feasible) {
                                 continue;
                             }
                             for (int f = 0; f < static_cast<int>(free.size()); ++f) {
@@ -287,8 +314,11 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                 }
                 fit.outlierShare[c] = static_cast<double>(setAside) / K;
             }
-            for (int j = 0; j < static_cast<int>(controls.size()); ++j) {
+            for (int j = 0; j < q; ++j) {
                 fit.bv(controls[j], c) = beta[j];
+            }
+            for (int i = 0; i < driftColumns; ++i) {
+                fit.a(c, i) = beta[q + i];
             }
             prediction = X * beta;
             const Eigen::VectorXd rw = weights / weights.sum();
@@ -299,7 +329,7 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
             fit.rSquared[c] =
                 total > 0.0 ? 1.0 - residual / total : std::numeric_limits<double>::quiet_NaN();
         }
-        fit.residualRms[c] = controls.empty()
+        fit.residualRms[c] = controls.empty() && !options.drift
                                  ? std::sqrt((w.array() * (y - prediction).array().square()).sum())
                                  : residualRms;
     }

@@ -55,6 +55,12 @@ struct ActionMappingFitOptions {
     /// position) are seen. R = 1 is the change of the one-step change; R about H matches the
     /// window PRISCA's cost covers.
     int responseSteps = 1;
+    /// eq. 5 in full: with the RateChange target and R = 1, regress the change of the one-step
+    /// change on the previous one-step change too, d^2 s_{k+1} = A dt ds_k + B dt du_k, so the
+    /// state's own drift A is identified alongside B instead of being left in the residual
+    /// (where, correlated with du through a closed-loop operator, it biases B). Requires
+    /// responseSteps 1 and the RateChange target.
+    bool drift = false;
     /// Constrain B_v >= 0, so B keeps the signs of B~ (B~ says which way, B_v how much). An
     /// entry the data would make negative is reported as a sign conflict and set to 0.
     bool nonNegative = true;
@@ -70,6 +76,12 @@ struct ActionMappingFitOptions {
 struct ActionMappingFit {
     Eigen::MatrixXd bv;           ///< B_v, m x n (0 where B~ is 0 or the channel was never excited)
     Eigen::MatrixXd b;            ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
+    /// A (n x n) of eq. 5, row c: how the one-step change of state c follows the previous
+    /// one-step change of every state [1/s]; zero unless options.drift.
+    Eigen::MatrixXd a;
+    /// The B_v the data would give without the B_v >= 0 constraint (m x n), for the operator to
+    /// see what a sign conflict's zero replaced.
+    Eigen::MatrixXd unconstrainedBv;
     Eigen::VectorXd residualRms;  ///< per state component: weighted RMS of ds - B^T dt du
     Eigen::VectorXd rSquared;     ///< per state component; NaN where no control acts on it
     Eigen::VectorXd outlierShare;  ///< per state: share of samples the robust fit set aside

@@ -117,6 +117,63 @@ class TestActionMapping : public QObject {
         QVERIFY2(std::abs(literalGain - 2.0) > 0.5, qPrintable(QString::number(literalGain)));
     }
 
+    void fit_driftRegressorsRecoverEq5InFullWhereTheDefaultIsBiased() {
+        // eq. 5's own model with a drift that couples the states, s_{k+1} = s_k + dt (A s_k +
+        // B^T u_k), B = (1, 3): differencing gives d2s_{k+1} = dt A ds_k + dt B^T du_k. The
+        // default target leaves dt A ds_k in the residual; with a smooth input (ds correlated
+        // with du) that biases B. The drift regressors recover A and B.
+        const Eigen::Matrix2d A = (Eigen::Matrix2d() << -0.8, 0.5, -1.5, -2.0).finished();
+        const Eigen::RowVector2d B(1.0, 3.0);
+        const double dt = 0.025;
+        const IntuitiveMapping signs = mapping("1,1");
+        ActionMappingFitOptions plain;
+        plain.robust = false;
+        ActionMappingFitOptions full = plain;
+        full.drift = true;
+        auto demonstrate = [&](bool closedLoop) {
+            Demonstration d = emptyDemo(4000, 2, 1, dt);
+            Eigen::Vector2d s(0.0, 0.0);
+            for (int k = 0; k < d.length(); ++k) {
+                const double t = k * dt;
+                // A smooth operator's input, or an operator closing the loop on the state.
+                double u = std::sin(0.7 * t) + 0.5 * std::sin(1.9 * t + 1.0);
+                if (closedLoop) {
+                    u = 0.6 * std::sin(0.5 * t) - 0.8 * s[0] - 0.3 * s[1];
+                }
+                d.actions(k, 0) = u;
+                d.states.row(k) = s.transpose();
+                s += dt * (A * s + B.transpose() * u);
+            }
+            return d;
+        };
+        for (bool closedLoop : {false, true}) {
+            const Demonstration d = demonstrate(closedLoop);
+            const ActionMappingFit biased =
+                fitActionMapping(d, signs, DeviationModel::euclidean(2), plain);
+            const ActionMappingFit fit =
+                fitActionMapping(d, signs, DeviationModel::euclidean(2), full);
+            const QString what = QStringLiteral("%1: default (%2, %3), full (%4, %5)")
+                                     .arg(closedLoop ? "closed loop" : "open loop")
+                                     .arg(biased.bv(0, 0))
+                                     .arg(biased.bv(0, 1))
+                                     .arg(fit.bv(0, 0))
+                                     .arg(fit.bv(0, 1));
+            QVERIFY2(std::abs(fit.bv(0, 0) - 1.0) < 0.05 && std::abs(fit.bv(0, 1) - 3.0) < 0.15,
+                     qPrintable(what));  // within 5 %
+            QVERIFY2(std::abs(biased.bv(0, 1) - 3.0) > 0.3, qPrintable(what));
+            QVERIFY2((fit.a - A).cwiseAbs().maxCoeff() < 0.1,
+                     qPrintable(QStringLiteral("A off by %1").arg((fit.a - A).cwiseAbs().maxCoeff())));
+            QVERIFY(biased.a.isZero());
+            QVERIFY(fit.rSquared.minCoeff() > 0.99);
+        }
+        // The drift needs the one-step rate-change target.
+        ActionMappingFitOptions bad = full;
+        bad.responseSteps = 3;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 fitActionMapping(demonstrate(false), signs,
+                                                  DeviationModel::euclidean(2), bad));
+    }
+
     void fit_stateChangeTargetRecoversDataOfItsOwnModel() {
         std::mt19937 rng(7);
         std::normal_distribution<double> normal(0.0, 1e-4);
