@@ -40,9 +40,20 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     if (H < 1) {
         throw std::invalid_argument("PriscaController: the horizon H must be >= 1");
     }
+    if (parameters_.modelDelay < 0) {
+        throw std::invalid_argument("PriscaController: the model delay must be >= 0");
+    }
     referenceStates_ = demo.states.transpose();
     referenceActions_ = demo.actions.transpose();
     stateEffect_ = demo.dt * actionMapping;
+    transition_ = Eigen::MatrixXd::Identity(n, n);
+    const int ring = H + 1 + parameters_.modelDelay;
+    errorHistory_.setZero(n, ring);
+    featureHistory_.setZero(p * m, ring);
+    sensitivity_.assign(H + 1, Eigen::MatrixXd::Zero(n, p * m));
+    feedbackGain_.setZero(m, n);
+    drive_.setZero(n, p * m);
+    sample_.setZero(p * m);
     for (int c = 1; c <= H + 1; ++c) {
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
@@ -71,6 +82,58 @@ void PriscaController::setTheta(const Eigen::MatrixXd& theta) {
         throw std::invalid_argument("PriscaController::setTheta: theta must be p x m");
     }
     theta_ = theta;
+}
+
+void PriscaController::setDrift(const Eigen::MatrixXd& a) {
+    const Eigen::Index n = transition_.rows();
+    if (a.rows() != n || a.cols() != n || !a.allFinite()) {
+        throw std::invalid_argument("PriscaController::setDrift: A must be a finite n x n matrix");
+    }
+    transition_ = Eigen::MatrixXd::Identity(n, n) + problem_.demonstration->dt * a;
+}
+
+void PriscaController::closedLoopTerms(int k, int count) {
+    // K = d(theta^T phi)/de: every deviation (or state) feature term adds theta * scale.
+    const int m = static_cast<int>(theta_.cols());
+    const int p = static_cast<int>(theta_.rows());
+    const int ring = static_cast<int>(errorHistory_.cols());
+    const int d = parameters_.modelDelay;
+    feedbackGain_.setZero();
+    for (int l = 0; l < m; ++l) {
+        const auto& terms = featureMap_.terms()[l];
+        for (int i = 0; i < p; ++i) {
+            if (terms[i].source != FeatureTerm::Source::Constant) {
+                feedbackGain_(l, terms[i].index) += theta_(i, l) * terms[i].scale;
+            }
+        }
+    }
+    // S over the window, from 0 at its first sample: what theta changed in the errors since.
+    const int first = k - count + 1;
+    sensitivity_[0].setZero();
+    for (int t = first; t < k; ++t) {
+        const int age = t - d;  // the sample the action at t was computed from
+        drive_.setZero();
+        if (age >= 0 && age > k - ring) {
+            const int slot = age % ring;
+            for (int l = 0; l < m; ++l) {
+                drive_.middleCols(l * p, p).noalias() =
+                    stateEffect_.row(l).transpose() *
+                    featureHistory_.col(slot).segment(l * p, p).transpose();
+            }
+        }
+        if (age >= first) {
+            drive_.noalias() += stateEffect_.transpose() * (feedbackGain_ * sensitivity_[age - first]);
+        }
+        sensitivity_[t + 1 - first].noalias() = transition_ * sensitivity_[t - first];
+        sensitivity_[t + 1 - first] += drive_;
+    }
+    // a_t = 2 S_t^T W e_t, stored where the one-step form keeps its a_t.
+    for (int t = first; t <= k; ++t) {
+        const int slot = t % ring;
+        weightedError_ = problem_.costWeights.cwiseProduct(errorHistory_.col(slot));
+        sample_.noalias() = 2.0 * sensitivity_[t - first].transpose() * weightedError_;
+        historyA_.col(t % (parameters_.horizon + 1)) = sample_;
+    }
 }
 
 void PriscaController::setInitialTheta(const Eigen::MatrixXd& theta) {
@@ -104,18 +167,27 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     const Eigen::VectorXd& e = record_.deviation;
     featureMap_.evaluate(e, observation, phi_);
 
-    // 2. a_k: column l is phi_l scaled by how much control l moves the weighted error.
+    // 2. a_k: column l is phi_l scaled by how much control l moves the weighted error (the
+    // paper's one step), or every a_t of the window through the closed loop.
     weightedError_ = problem_.costWeights.cwiseProduct(e);
-    projected_.noalias() = stateEffect_ * weightedError_;
     const int slot = k % (H + 1);
-    for (int l = 0; l < m; ++l) {
-        historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) = phi_.col(l) * projected_[l];
-    }
     record_.cost = e.dot(weightedError_);
     historyCost_[slot] = record_.cost;
+    const int count = std::min(k, H) + 1;
+    if (parameters_.gradient == PriscaParameters::Gradient::ClosedLoop) {
+        const int ring = static_cast<int>(errorHistory_.cols());
+        errorHistory_.col(k % ring) = e;
+        featureHistory_.col(k % ring) = phi_.reshaped();
+        closedLoopTerms(k, count);
+    } else {
+        projected_.noalias() = stateEffect_ * weightedError_;
+        for (int l = 0; l < m; ++l) {
+            historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) =
+                phi_.col(l) * projected_[l];
+        }
+    }
 
     // 3. Nested-expectation smoothing over the window, with the inverse depreciation.
-    const int count = std::min(k, H) + 1;
     const Eigen::VectorXd& w = windowWeights_[count - 1];
     smoothedA_.setZero();
     smoothedG_.setZero();

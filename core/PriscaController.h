@@ -26,6 +26,23 @@ struct PriscaParameters {
     int baselineWindow = 0;  ///< tau' [steps] for eq. 15; 0 means 2H
     StepSize stepSize;       ///< alpha_k (eq. 3)
     bool learning = true;    ///< false: theta stays as set (policy evaluation)
+    /// How the gradient of the window's cost with respect to theta is formed.
+    enum class Gradient {
+        /// eq. 4 truncated to one step, as the paper prints it (eq. 14):
+        /// a_j = phi_l(s_j) (e_j^T W dS_l). Summed over a window it is a positive form in e, so
+        /// it raises the feedback gains whenever there is error, past the best gain as well.
+        OneStep,
+        /// eq. 4's chain rule carried over the window through the identified closed loop
+        /// e_{t+1} = (I + dt A) e_t + dt B^T (u_{t-d} - u*_{t-d}), u - u* = theta^T phi(e):
+        ///     S_{t+1} = (I + dt A) S_t + dt B^T [ E_l phi_l(e_{t-d})^T + K S_{t-d} ],
+        /// S = de/dtheta_l reset at the window's start, K the policy's own feedback gain, and
+        /// a_t = 2 S_t^T W e_t. Once the gains make the loop ring, the sensitivities change sign
+        /// and the update turns round: learning settles without a bound on theta.
+        ClosedLoop
+    };
+    Gradient gradient = Gradient::OneStep;
+    /// d [steps]: the measurement's age in the closed-loop model (ClosedLoop only), >= 0.
+    int modelDelay = 0;
     /// If > 0, theta is projected onto the box |theta_i| <= thetaBound after each update
     /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
     /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.
@@ -64,6 +81,9 @@ class PriscaController : public Controller {
     void setInitialTheta(const Eigen::MatrixXd& theta);
     /// Turns learning on or off from the next step (theta kept as it is).
     void setLearning(bool learning) { parameters_.learning = learning; }
+    /// The identified drift A (n x n, eq. 5) the closed-loop gradient propagates through; zero
+    /// (no drift, the state moves only as the actions push it) unless set.
+    void setDrift(const Eigen::MatrixXd& a);
     /// g of the last step (p x m).
     const Eigen::MatrixXd& gradient() const { return gradient_; }
     /// b of the last step (p x m); zero when the baseline is off.
@@ -87,6 +107,8 @@ class PriscaController : public Controller {
     int learningSteps() const { return learningStep_; }
 
   private:
+    void closedLoopTerms(int k, int count);
+
     TrackingProblem problem_;
     FeatureMap featureMap_;
     PriscaParameters parameters_;
@@ -98,6 +120,13 @@ class PriscaController : public Controller {
     Eigen::MatrixXd referenceStates_;             // n x T
     Eigen::MatrixXd referenceActions_;            // m x T
     Eigen::MatrixXd stateEffect_;                 // m x n, dt * B
+    Eigen::MatrixXd transition_;                  // n x n, I + dt A
+    Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j
+    Eigen::MatrixXd featureHistory_;              // (p*m) x (H+1+d) ring of Phi_j
+    std::vector<Eigen::MatrixXd> sensitivity_;    // [t]: S_t, n x (p*m), over the window
+    Eigen::MatrixXd feedbackGain_;                // m x n, K = d(theta^T phi)/de
+    Eigen::MatrixXd drive_;                       // n x (p*m) scratch
+    Eigen::VectorXd sample_;                      // (p*m) scratch: a_t
     Eigen::VectorXd costWeights_;                 // n
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 

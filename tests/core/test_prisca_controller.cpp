@@ -342,6 +342,69 @@ class TestPriscaController : public QObject {
                                  controller.setTheta(Eigen::MatrixXd::Zero(2, 1)));
     }
 
+    void closedLoopGradient_settlesAtTheBestGainWhereTheOneStepFormRunsAway() {
+        // A delayed integrator s_{k+1} = s_k + dt b u_{k-1} that every trial starts 1 off its
+        // resting demonstration, and PRISCA's policy u = theta e. The best gain for a trial's
+        // cost sum s_k^2 is found by brute force; no bound on theta anywhere.
+        const double b = 2.0, dt = 0.05;
+        const int T = 60, delay = 1;
+        auto trialCost = [&](double theta) {
+            double s = 1.0, cost = 0.0;
+            std::vector<double> u(delay + 1, 0.0);
+            for (int k = 0; k < T; ++k) {
+                u.push_back(theta * s);
+                s += dt * b * u[u.size() - 1 - delay];
+                cost += s * s;
+            }
+            return cost;
+        };
+        double best = 0.0;
+        for (double theta = -20.0; theta <= 0.0; theta += 0.001)
+            best = trialCost(theta) < trialCost(best) ? theta : best;
+        auto demo = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, 1, 1, dt));
+        demo->states.setZero();
+        demo->actions.setZero();
+        auto learn = [&](PriscaParameters::Gradient gradient, std::vector<double>* thetas) {
+            PriscaParameters parameters;
+            parameters.horizon = 10;
+            parameters.gamma = 0.95;
+            parameters.useBaseline = false;
+            parameters.stepSize.scale = 1.0;
+            parameters.stepSize.beta = 1e9;  // a constant step: nothing but the gradient settles
+            parameters.gradient = gradient;
+            parameters.modelDelay = delay;
+            PriscaController prisca(problemFor(demo, MatchingParameters::Mode::TimeDriven, 1e12),
+                                    FeatureMap::deviationFeatures(1, {0}),
+                                    Eigen::MatrixXd::Constant(1, 1, b), parameters);
+            std::mt19937 rng(3);
+            std::normal_distribution<double> noise(0.0, 0.01);
+            for (int trial = 0; trial < 150; ++trial) {
+                prisca.reset(trial == 0 ? ResetMode::Cold : ResetMode::WarmStart);
+                double s = 1.0;
+                std::vector<double> u(delay + 1, 0.0);
+                for (int k = 0; k < T; ++k) {
+                    u.push_back(prisca.step(Eigen::VectorXd::Constant(1, s)).action[0]);
+                    s += dt * b * u[u.size() - 1 - delay] + noise(rng);
+                }
+                thetas->push_back(prisca.theta()(0, 0));
+            }
+        };
+        std::vector<double> closedLoop, oneStep;
+        learn(PriscaParameters::Gradient::ClosedLoop, &closedLoop);
+        learn(PriscaParameters::Gradient::OneStep, &oneStep);
+        double settled = 0.0;
+        for (size_t t = 100; t < closedLoop.size(); ++t) {
+            settled += closedLoop[t] / 50.0;
+            QVERIFY(std::isfinite(closedLoop[t]));
+        }
+        QVERIFY2(std::abs(settled - best) < 0.05 * std::abs(best),
+                 qPrintable(QStringLiteral("settled %1, best %2").arg(settled).arg(best)));
+        // The paper's one-step form raises the gain whenever there is error, past the best one
+        // and past stability.
+        QVERIFY2(!std::isfinite(oneStep.back()) || std::abs(oneStep.back()) > 10.0 * std::abs(best),
+                 qPrintable(QString::number(oneStep.back())));
+    }
+
     void construction_rejectsInconsistentShapes() {
         std::mt19937 rng(61);
         auto demo = randomDemonstration(10, 2, 1, 0.05, rng);
