@@ -32,6 +32,18 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         if (profile.priscaCostWeights.size() > 0) {
             problem.costWeights = profile.priscaCostWeights;
         }
+        if (profile.priscaModel == PlantProfile::PriscaModel::FittedWithDrift) {
+            // eq. 5 in full, fitted here on the demonstration: PRISCA's own model.
+            core::ActionMappingFitOptions options;
+            options.drift = true;
+            const core::ActionMappingFit fit = core::fitActionMapping(
+                *demonstration, profile.mapping, profile.info.deviationModel(), options);
+            auto prisca = std::make_unique<core::PriscaController>(
+                std::move(problem), profile.priscaFeatures.value_or(profile.features), fit.b,
+                profile.prisca);
+            prisca->setDrift(fit.a);
+            return prisca;
+        }
         const Eigen::MatrixXd model = profile.priscaModel == PlantProfile::PriscaModel::Signs
                                           ? profile.mapping.asDouble()
                                           : fittedB;

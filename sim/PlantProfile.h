@@ -48,7 +48,9 @@ struct PlantProfile {
     Eigen::VectorXd priscaCostWeights;
     /// PRISCA's model B (m x n): the fit B_v (.) B~, or the signs B~ alone where the fit is not
     /// to be trusted (a demonstration flown in closed loop confounds eq. 8; see README).
-    enum class PriscaModel { Fitted, Signs };
+    /// FittedWithDrift fits eq. 5 in full on the demonstration (A with B, so the closed-loop
+    /// gradient propagates through the state's own drift too).
+    enum class PriscaModel { Fitted, Signs, FittedWithDrift };
     PriscaModel priscaModel = PriscaModel::Fitted;
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
