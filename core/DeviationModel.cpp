@@ -28,6 +28,26 @@ void DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,
     }
 }
 
+void DeviationModel::kinematics(const Eigen::Ref<const Eigen::VectorXd>& reference,
+                                Eigen::Ref<Eigen::MatrixXd> out) const {
+    out.setZero();
+    if (!pose || !bodyVelocity) {
+        return;
+    }
+    const PlanarPoseIndices& p = *pose;
+    const BodyVelocityIndices& v = *bodyVelocity;
+    const double forward = reference[v.forward];
+    const double lateral = reference[v.lateral];
+    const double yawRate = reference[v.yawRate];
+    out(p.x, v.forward) = 1.0;
+    out(p.x, p.heading) = -lateral;
+    out(p.x, p.y) = yawRate;
+    out(p.y, v.lateral) = 1.0;
+    out(p.y, p.heading) = forward;
+    out(p.y, p.x) = -yawRate;
+    out(p.heading, v.yawRate) = 1.0;
+}
+
 Eigen::VectorXd DeviationModel::deviation(
     const Eigen::Ref<const Eigen::VectorXd>& state,
     const Eigen::Ref<const Eigen::VectorXd>& reference) const {
@@ -58,6 +78,11 @@ QString DeviationModel::validate() const {
         if (bad(i)) {
             return QStringLiteral("angle index %1 is outside 0..%2").arg(i).arg(dimension - 1);
         }
+    }
+    if (bodyVelocity && (!pose || bad(bodyVelocity->forward) || bad(bodyVelocity->lateral) ||
+                         bad(bodyVelocity->yawRate))) {
+        return QStringLiteral("body velocities need a pose and indices within 0..%1")
+            .arg(dimension - 1);
     }
     if (pose && (bad(pose->x) || bad(pose->y) || bad(pose->heading) || pose->x == pose->y ||
                  pose->x == pose->heading || pose->y == pose->heading)) {

@@ -2,6 +2,8 @@
 
 #include "NestedExpectation.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -49,15 +51,32 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     transition_ = Eigen::MatrixXd::Identity(n, n);
     const int ring = H + 1 + parameters_.modelDelay;
     errorHistory_.setZero(n, ring);
+    referenceHistory_.assign(ring, 0);
+    stepTransition_.setZero(n, n);
     featureHistory_.setZero(p * m, ring);
     sensitivity_.assign(H + 1, Eigen::MatrixXd::Zero(n, p * m));
     feedbackGain_.setZero(m, n);
     drive_.setZero(n, p * m);
     sample_.setZero(p * m);
+    actionSensitivity_.setZero(m, p * m);
+    effort_.setZero(m);
+    curvature_.setZero(p * m, p * m);
+    historyCurvature_.setZero(p * m * p * m, H + 1);
+    direction_.setZero(p * m);
+    if (parameters_.step == PriscaParameters::Step::GaussNewton &&
+        parameters_.gradient != PriscaParameters::Gradient::ClosedLoop) {
+        throw std::invalid_argument(
+            "PriscaController: the Gauss-Newton step needs the closed-loop gradient");
+    }
+    if (parameters_.effortWeights.size() != 0 &&
+        (parameters_.effortWeights.size() != m || (parameters_.effortWeights.array() < 0.0).any())) {
+        throw std::invalid_argument("PriscaController: effort weights must be m values >= 0");
+    }
     for (int c = 1; c <= H + 1; ++c) {
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
     theta_.setZero(p, m);
+    previousTheta_.setZero(p, m);
     initialTheta_.setZero(p, m);
     phi_.setZero(p, m);
     gradient_.setZero(p, m);
@@ -124,14 +143,42 @@ void PriscaController::closedLoopTerms(int k, int count) {
         if (age >= first) {
             drive_.noalias() += stateEffect_.transpose() * (feedbackGain_ * sensitivity_[age - first]);
         }
-        sensitivity_[t + 1 - first].noalias() = transition_ * sensitivity_[t - first];
+        // I + dt (A + the error's kinematics at this sample's reference).
+        problem_.deviation.kinematics(referenceStates_.col(referenceHistory_[t % ring]),
+                                      stepTransition_);
+        stepTransition_ *= problem_.demonstration->dt;
+        stepTransition_ += transition_;
+        sensitivity_[t + 1 - first].noalias() = stepTransition_ * sensitivity_[t - first];
         sensitivity_[t + 1 - first] += drive_;
     }
-    // a_t = 2 S_t^T W e_t, stored where the one-step form keeps its a_t.
+    // a_t = 2 S_t^T W e_t (+ the effort's 2 (du_t/dtheta)^T R (u_t - u*_t)), stored where the
+    // one-step form keeps its a_t.
+    const bool effort = parameters_.effortWeights.size() != 0;
     for (int t = first; t <= k; ++t) {
         const int slot = t % ring;
         weightedError_ = problem_.costWeights.cwiseProduct(errorHistory_.col(slot));
         sample_.noalias() = 2.0 * sensitivity_[t - first].transpose() * weightedError_;
+        const bool curvature = parameters_.step == PriscaParameters::Step::GaussNewton;
+        auto jtj = historyCurvature_.col(t % (parameters_.horizon + 1)).reshaped(p * m, p * m);
+        if (curvature) {
+            jtj.noalias() = 2.0 * sensitivity_[t - first].transpose() *
+                            problem_.costWeights.asDiagonal() * sensitivity_[t - first];
+        }
+        if (effort) {
+            // u_l - u*_l = theta_l^T phi_l(e_t): its change with theta is phi_l in block l,
+            // plus K S_t through the errors theta moved.
+            actionSensitivity_.noalias() = feedbackGain_ * sensitivity_[t - first];
+            for (int l = 0; l < m; ++l) {
+                const auto phi = featureHistory_.col(slot).segment(l * p, p);
+                actionSensitivity_.row(l).segment(l * p, p) += phi.transpose();
+                effort_[l] = parameters_.effortWeights[l] * theta_.col(l).dot(phi);
+            }
+            sample_.noalias() += 2.0 * actionSensitivity_.transpose() * effort_;
+            if (curvature) {
+                jtj.noalias() += 2.0 * actionSensitivity_.transpose() *
+                                 parameters_.effortWeights.asDiagonal() * actionSensitivity_;
+            }
+        }
         historyA_.col(t % (parameters_.horizon + 1)) = sample_;
     }
 }
@@ -177,6 +224,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     if (parameters_.gradient == PriscaParameters::Gradient::ClosedLoop) {
         const int ring = static_cast<int>(errorHistory_.cols());
         errorHistory_.col(k % ring) = e;
+        referenceHistory_[k % ring] = j;
         featureHistory_.col(k % ring) = phi_.reshaped();
         closedLoopTerms(k, count);
     } else {
@@ -191,6 +239,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     const Eigen::VectorXd& w = windowWeights_[count - 1];
     smoothedA_.setZero();
     smoothedG_.setZero();
+    curvature_.setZero();
     smoothedCost_ = 0.0;
     depreciationOfWindow_.resize(count);  // changes size only while the first window fills
     for (int t = 0; t < count; ++t) {
@@ -201,6 +250,10 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         const auto a = historyA_.col(ring).reshaped(phi_.rows(), m);
         smoothedA_ += w[t] * a;
         smoothedG_ += (w[t] * D) * a;
+        if (parameters_.step == PriscaParameters::Step::GaussNewton) {
+            curvature_ += (w[t] * D) * historyCurvature_.col(ring).reshaped(curvature_.rows(),
+                                                                            curvature_.cols());
+        }
         smoothedCost_ += w[t] * historyCost_[ring];
     }
 
@@ -214,10 +267,26 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
 
     // 5. Parameter update.
     alpha_ = parameters_.stepSize.at(learningStep_);
-    if (parameters_.learning) {
-        theta_ -= alpha_ * gradient_;
+    previousTheta_ = theta_;
+    if (parameters_.learning && gradient_.allFinite()) {
+        if (parameters_.step == PriscaParameters::Step::GaussNewton) {
+            // (J^T J + mu I) d = g: the gradient measured in the cost's own curvature.
+            const double scale = curvature_.diagonal().mean();
+            if (scale > 0.0 && std::isfinite(scale)) {
+                curvature_.diagonal().array() += parameters_.damping * scale;
+                direction_ = curvature_.ldlt().solve(gradient_.reshaped());
+                if (direction_.allFinite()) {
+                    theta_ -= alpha_ * direction_.reshaped(theta_.rows(), theta_.cols());
+                }
+            }
+        } else {
+            theta_ -= alpha_ * gradient_;
+        }
         if (parameters_.thetaBound > 0.0) {
             theta_ = theta_.cwiseMax(-parameters_.thetaBound).cwiseMin(parameters_.thetaBound);
+        }
+        if (!theta_.allFinite()) {
+            theta_ = previousTheta_;  // an update that overflowed is no update
         }
     }
 

@@ -36,13 +36,29 @@ struct PriscaParameters {
         /// e_{t+1} = (I + dt A) e_t + dt B^T (u_{t-d} - u*_{t-d}), u - u* = theta^T phi(e):
         ///     S_{t+1} = (I + dt A) S_t + dt B^T [ E_l phi_l(e_{t-d})^T + K S_{t-d} ],
         /// S = de/dtheta_l reset at the window's start, K the policy's own feedback gain, and
-        /// a_t = 2 S_t^T W e_t. Once the gains make the loop ring, the sensitivities change sign
+        /// a_t = 2 S_t^T W e_t. A is the fitted drift (setDrift) plus the error's own
+        /// kinematics at each sample's reference (DeviationModel::kinematics: for a vehicle,
+        /// heading error turns into lateral error at the reference's speed). Once the gains make the loop ring, the sensitivities change sign
         /// and the update turns round: learning settles without a bound on theta.
         ClosedLoop
     };
     Gradient gradient = Gradient::OneStep;
     /// d [steps]: the measurement's age in the closed-loop model (ClosedLoop only), >= 0.
     int modelDelay = 0;
+    /// How a gradient becomes a step of theta.
+    enum class Step {
+        Gradient,    ///< theta -= alpha_k g (eq. 2, 3); alpha_0 carries the problem's units
+        GaussNewton  ///< theta -= alpha_k (J^T J + mu I)^-1 g over the window (ClosedLoop
+                     ///< only): the cost is a sum of squares, so its curvature is known from
+                     ///< the same sensitivities, and the step needs no units of its own
+    };
+    Step step = Step::Gradient;
+    /// Levenberg-Marquardt damping mu as a share of J^T J's mean diagonal (GaussNewton).
+    double damping = 0.1;
+    /// R per control (m; empty: none): the cost also charges the policy's own effort,
+    /// C = e^T W e + (u - u*)^T R (u - u*), as LQR does (ClosedLoop only). Its gradient pulls
+    /// every gain back in proportion to how hard it pushes, whatever the model says.
+    Eigen::VectorXd effortWeights;
     /// If > 0, theta is projected onto the box |theta_i| <= thetaBound after each update
     /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
     /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.
@@ -120,18 +136,26 @@ class PriscaController : public Controller {
     Eigen::MatrixXd referenceStates_;             // n x T
     Eigen::MatrixXd referenceActions_;            // m x T
     Eigen::MatrixXd stateEffect_;                 // m x n, dt * B
-    Eigen::MatrixXd transition_;                  // n x n, I + dt A
+    Eigen::MatrixXd transition_;                  // n x n, I + dt A (the fitted drift)
+    Eigen::MatrixXd stepTransition_;              // n x n, with the error's own kinematics at t
+    std::vector<int> referenceHistory_;           // ring of j_t, as errorHistory_
     Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j
     Eigen::MatrixXd featureHistory_;              // (p*m) x (H+1+d) ring of Phi_j
     std::vector<Eigen::MatrixXd> sensitivity_;    // [t]: S_t, n x (p*m), over the window
     Eigen::MatrixXd feedbackGain_;                // m x n, K = d(theta^T phi)/de
     Eigen::MatrixXd drive_;                       // n x (p*m) scratch
     Eigen::VectorXd sample_;                      // (p*m) scratch: a_t
+    Eigen::MatrixXd actionSensitivity_;           // m x (p*m) scratch: du_t/dtheta
+    Eigen::VectorXd effort_;                      // m scratch: R (u_t - u*_t)
+    Eigen::MatrixXd curvature_;                   // (p*m)^2: the window's J^T J, smoothed
+    Eigen::MatrixXd historyCurvature_;            // (p*m)^2 x (H+1): J_t^T J_t per sample
+    Eigen::VectorXd direction_;                   // (p*m) scratch
     Eigen::VectorXd costWeights_;                 // n
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
     Eigen::MatrixXd initialTheta_;  // what a cold reset returns to
+    Eigen::MatrixXd previousTheta_;  // before the last update (restored if it overflowed)
     Eigen::MatrixXd phi_;
     Eigen::MatrixXd gradient_;
     Eigen::MatrixXd smoothedA_;

@@ -7,6 +7,7 @@ core::DeviationModel PlantInfo::deviationModel() const {
     model.dimension = stateDimension();
     model.angleIndices = angleIndices;
     model.pose = pose;
+    model.bodyVelocity = bodyVelocity;
     return model;
 }
 

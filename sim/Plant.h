@@ -48,6 +48,7 @@ struct PlantInfo {
     Eigen::VectorXd actionUpper;                  ///< m upper limits
     std::vector<int> angleIndices;                ///< state components that are angles
     std::optional<core::PlanarPoseIndices> pose;  ///< planar vehicles: x, y, heading
+    std::optional<core::BodyVelocityIndices> bodyVelocity;  ///< and their body velocities
 
     int stateDimension() const { return static_cast<int>(stateNames.size()); }
     int actionDimension() const { return static_cast<int>(actionNames.size()); }

@@ -36,6 +36,7 @@ PlantInfo SlideCar::describe() {
     info.actionUpper = Eigen::Vector2d(1.0, 1.0);
     info.angleIndices = {2};
     info.pose = core::PlanarPoseIndices{0, 1, 2};
+    info.bodyVelocity = core::BodyVelocityIndices{3, 4, 5};
     return info;
 }
 

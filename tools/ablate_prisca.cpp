@@ -1,62 +1,128 @@
-// PRISCA variants on development cells (styles x sets 200, 201), 10 trials each after 16 training.
-#include "core/ActionMapping.h"
-#include "core/Statistics.h"
-#include "sim/DemonstrationStyles.h"
-#include "sim/PlantCatalog.h"
-#include "sim/Table1Experiment.h"
-#include "sim/ControllerFactory.h"
-#include "sim/MethodTraining.h"
-#include "sim/TrialMetrics.h"
-#include "core/PriscaController.h"
+// ablate_prisca: PRISCA's variants on DEVELOPMENT cells only (the six tuning styles x seed sets
+// 200 and 201, 10 trials each after the training trials), for the decisions behind the profile;
+// no evaluation set is looked at here.
+//
+//     ablate_prisca METHOD [key value ...]    keys: grad delay scale beta bound H baseline D drift
+//                                             signs wv wpsi R gn mu
+//     TRACE=STYLE ablate_prisca METHOD ...    theta and the final error trial by trial
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include "core/ActionMapping.h"
+#include "core/PriscaController.h"
+#include "core/Statistics.h"
+#include "sim/ControllerFactory.h"
+#include "sim/DemonstrationStyles.h"
+#include "sim/MethodTraining.h"
+#include "sim/PlantCatalog.h"
+#include "sim/Table1Experiment.h"
+#include "sim/TrialMetrics.h"
 using namespace prisca;
 int main(int argc, char** argv) {
-  const char* method = argv[1];
-  sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
-  bool drift = false;
-  for (int i = 2; i + 1 < argc; i += 2) {
-    std::string k = argv[i]; double v = atof(argv[i+1]);
-    if (k=="grad") p.prisca.gradient = v ? core::PriscaParameters::Gradient::ClosedLoop : core::PriscaParameters::Gradient::OneStep;
-    else if (k=="delay") p.prisca.modelDelay = (int)v;
-    else if (k=="scale") p.prisca.stepSize.scale = v;
-    else if (k=="beta") p.prisca.stepSize.beta = v;
-    else if (k=="bound") p.prisca.thetaBound = v;
-    else if (k=="H") p.prisca.horizon = (int)v;
-    else if (k=="baseline") p.prisca.useBaseline = v;
-    else if (k=="D") p.prisca.useInverseDepreciation = v;
-    else if (k=="drift") { drift = v; if (v) p.priscaModel = sim::PlantProfile::PriscaModel::FittedWithDrift; }
-    else if (k=="signs") { if (v) p.priscaModel = sim::PlantProfile::PriscaModel::Signs; }
-    else if (k=="wv") { p.costWeights[3]=v; p.costWeights[4]=v; p.costWeights[5]=v/5; }
-    else if (k=="wpsi") p.costWeights[2]=v;
-  }
-  if (getenv("TRACE")) {
-      auto demo = std::make_shared<core::Demonstration>(sim::DemonstrationStyles::record("slidecar", getenv("TRACE"), 200));
-      core::ActionMappingFitOptions fo; fo.drift = drift;
-      auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fo);
-      std::printf("B:\n"); for (int l=0;l<2;++l){ for(int c=0;c<6;++c) std::printf(" %8.3f", fit.b(l,c)); std::printf("\n"); }
-      if (drift) { std::printf("A:\n"); for (int r=0;r<6;++r){ for(int c=0;c<6;++c) std::printf(" %8.3f", fit.a(r,c)); std::printf("\n"); } }
-      auto ctrl = sim::ControllerFactory::create(method, p, demo, fit.b);
-      auto plant = sim::PlantCatalog::create("slidecar");
-      sim::EpisodeSettings ep = p.episode(*demo, 1.0, 1.0);
-      for (int t = 0; t < 30; ++t) { auto e = ep; e.seed = sim::mixSeed(999, t); e.resetMode = t ? core::ResetMode::WarmStart : core::ResetMode::Cold;
-        auto r = sim::runEpisode(*plant, *ctrl, e); auto sum = sim::summarizeTrial(plant->info(), *demo, r);
-        std::printf("trial %2d: %.1f cm theta", t, 100*sum.finalPositionError); const Eigen::MatrixXd& th = *ctrl->learnedParameters();
-        for (int l=0;l<th.cols();++l) for(int i=0;i<th.rows();++i) std::printf(" %7.3f", th(i,l)); std::printf("\n"); }
-      return 0;
-  }
-  const char* styles[] = {"stick-180-left","keyboard-180-right","stick-90-left","fast-180-right","blip-180-left","coast-90-right"};
-  std::vector<double> cellPos, cellOri; double worst=0;
-  for (const char* style : styles) for (std::uint64_t set : {200, 201}) {
-      auto demo = std::make_shared<core::Demonstration>(sim::DemonstrationStyles::record("slidecar", style, set));
-      core::ActionMappingFitOptions fo; fo.drift = drift;
-      auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fo);
-      sim::Table1Settings s; s.methods = {method}; s.seed = set; s.trials = 10;
-      auto r = sim::runTable1(s, demo, p, fit.b);
-      auto rows = sim::table1Rows(r);
-      cellPos.push_back(rows[0].position.meanAbsoluteError); cellOri.push_back(rows[0].orientation.meanAbsoluteError);
-      worst = std::max(worst, rows[0].position.maximum);
-  }
-  printf("%-10s pos %.2f ori %.2f worst %.1f\n", method, core::mean(cellPos), core::mean(cellOri), worst);
+    const char* method = argv[1];
+    sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    bool drift = false;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        std::string k = argv[i];
+        double v = atof(argv[i + 1]);
+        if (k == "grad")
+            p.prisca.gradient = v ? core::PriscaParameters::Gradient::ClosedLoop
+                                  : core::PriscaParameters::Gradient::OneStep;
+        else if (k == "delay")
+            p.prisca.modelDelay = (int)v;
+        else if (k == "scale")
+            p.prisca.stepSize.scale = v;
+        else if (k == "beta")
+            p.prisca.stepSize.beta = v;
+        else if (k == "bound")
+            p.prisca.thetaBound = v;
+        else if (k == "H")
+            p.prisca.horizon = (int)v;
+        else if (k == "baseline")
+            p.prisca.useBaseline = v;
+        else if (k == "D")
+            p.prisca.useInverseDepreciation = v;
+        else if (k == "drift") {
+            drift = v;
+            if (v)
+                p.priscaModel = sim::PlantProfile::PriscaModel::FittedWithDrift;
+        } else if (k == "signs") {
+            if (v)
+                p.priscaModel = sim::PlantProfile::PriscaModel::Signs;
+        } else if (k == "wv") {
+            p.costWeights[3] = v;
+            p.costWeights[4] = v;
+            p.costWeights[5] = v / 5;
+        } else if (k == "wpsi")
+            p.costWeights[2] = v;
+        else if (k == "R")
+            p.prisca.effortWeights = Eigen::Vector2d(v, v);
+        else if (k == "gn") {
+            if (v)
+                p.prisca.step = core::PriscaParameters::Step::GaussNewton;
+        } else if (k == "mu")
+            p.prisca.damping = v;
+    }
+    if (getenv("TRACE")) {
+        auto demo = std::make_shared<core::Demonstration>(
+            sim::DemonstrationStyles::record("slidecar", getenv("TRACE"), 200));
+        core::ActionMappingFitOptions fo;
+        fo.drift = drift;
+        auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fo);
+        std::printf("B:\n");
+        for (int l = 0; l < 2; ++l) {
+            for (int c = 0; c < 6; ++c)
+                std::printf(" %8.3f", fit.b(l, c));
+            std::printf("\n");
+        }
+        if (drift) {
+            std::printf("A:\n");
+            for (int r = 0; r < 6; ++r) {
+                for (int c = 0; c < 6; ++c)
+                    std::printf(" %8.3f", fit.a(r, c));
+                std::printf("\n");
+            }
+        }
+        auto ctrl = sim::ControllerFactory::create(method, p, demo, fit.b);
+        auto plant = sim::PlantCatalog::create("slidecar");
+        sim::EpisodeSettings ep = p.episode(*demo, 1.0, 1.0);
+        for (int t = 0; t < 30; ++t) {
+            auto e = ep;
+            e.seed = sim::mixSeed(999, t);
+            e.resetMode = t ? core::ResetMode::WarmStart : core::ResetMode::Cold;
+            auto r = sim::runEpisode(*plant, *ctrl, e);
+            auto sum = sim::summarizeTrial(plant->info(), *demo, r);
+            std::printf("trial %2d: %.1f cm theta", t, 100 * sum.finalPositionError);
+            const Eigen::MatrixXd& th = *ctrl->learnedParameters();
+            for (int l = 0; l < th.cols(); ++l)
+                for (int i = 0; i < th.rows(); ++i)
+                    std::printf(" %7.3f", th(i, l));
+            std::printf("\n");
+        }
+        return 0;
+    }
+    const char* styles[] = {"stick-180-left", "keyboard-180-right", "stick-90-left",
+                            "fast-180-right", "blip-180-left",      "coast-90-right"};
+    std::vector<double> cellPos, cellOri;
+    double worst = 0;
+    for (const char* style : styles)
+        for (std::uint64_t set : {200, 201}) {
+            auto demo = std::make_shared<core::Demonstration>(
+                sim::DemonstrationStyles::record("slidecar", style, set));
+            core::ActionMappingFitOptions fo;
+            fo.drift = drift;
+            auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fo);
+            sim::Table1Settings s;
+            s.methods = {method};
+            s.seed = set;
+            s.trials = 10;
+            auto r = sim::runTable1(s, demo, p, fit.b);
+            auto rows = sim::table1Rows(r);
+            cellPos.push_back(rows[0].position.meanAbsoluteError);
+            cellOri.push_back(rows[0].orientation.meanAbsoluteError);
+            worst = std::max(worst, rows[0].position.maximum);
+        }
+    printf("%-10s pos %.2f ori %.2f worst %.1f\n", method, core::mean(cellPos), core::mean(cellOri),
+           worst);
 }
