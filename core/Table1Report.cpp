@@ -57,6 +57,8 @@ std::optional<TableFormat> parseTableFormat(const QString& text) {
 QString table1Label(const QString& method) {
     if (method == QLatin1String("prisca"))
         return QStringLiteral("OURS (PRISCA)");
+    if (method == QLatin1String("prisca-paper"))
+        return QStringLiteral("PRISCA (paper)");
     if (method == QLatin1String("pd"))
         return QStringLiteral("PD");
     if (method == QLatin1String("pd-selected"))

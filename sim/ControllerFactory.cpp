@@ -14,8 +14,8 @@ namespace prisca::sim {
 using Mode = core::MatchingParameters::Mode;
 
 QStringList ControllerFactory::methods() {
-    return {"prisca", "pgsd",   "pegasus",  "pd",       "pd-selected", "pd-h",
-            "pd-lsd", "pd-h-lsd", "playback", "ilc",     "oracle"};
+    return {"prisca",   "prisca-paper", "pgsd",     "pegasus", "pd",    "pd-selected",
+            "pd-h",     "pd-lsd",       "pd-h-lsd", "playback", "ilc",  "oracle"};
 }
 
 bool ControllerFactory::isMethod(const QString& method) {
@@ -50,6 +50,35 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         return std::make_unique<core::PriscaController>(
             std::move(problem), profile.priscaFeatures.value_or(profile.features), model,
             profile.prisca);
+    }
+    if (method == QLatin1String("prisca-paper")) {
+        // Algorithm 1 exactly as printed: eq. 8 literally (the state change against the action
+        // change, no sign constraint, no robust weights), eq. 15 as printed, alpha_0 = 1 and no
+        // bound on theta; the one-step gradient of eq. 14. The profile gives what the paper
+        // leaves open (features, H, gamma, beta, the cost weights, the reference).
+        core::ActionMappingFitOptions literal;
+        literal.target = core::ActionMappingFitOptions::Target::StateChange;
+        literal.nonNegative = false;
+        literal.robust = false;
+        const core::ActionMappingFit fit = core::fitActionMapping(
+            *demonstration, profile.mapping, profile.info.deviationModel(), literal);
+        core::PriscaParameters paper = profile.prisca;
+        paper.baselineMode = core::LocalOptimalBaseline::Mode::PaperEq15;
+        paper.useBaseline = true;
+        paper.useInverseDepreciation = true;
+        paper.stepSize.scale = 1.0;
+        paper.thetaBound = 0.0;
+        paper.gradient = core::PriscaParameters::Gradient::OneStep;
+        paper.step = core::PriscaParameters::Step::Gradient;
+        paper.effortWeights.resize(0);
+        core::TrackingProblem problem =
+            profile.trackingProblem(demonstration, profile.priscaMatching);
+        if (profile.priscaCostWeights.size() > 0) {
+            problem.costWeights = profile.priscaCostWeights;
+        }
+        return std::make_unique<core::PriscaController>(
+            std::move(problem), profile.priscaFeatures.value_or(profile.features), fit.b, paper,
+            QStringLiteral("prisca-paper"));
     }
     if (method == QLatin1String("pgsd")) {
         return std::make_unique<core::PgsdController>(

@@ -17,8 +17,8 @@ namespace {
 // Training seeds come from their own stream, so they never coincide with evaluation seeds.
 
 bool learnsOnline(const QString& method) {
-    return method == QLatin1String("prisca") || method == QLatin1String("pgsd") ||
-           method == QLatin1String("ilc");
+    return method == QLatin1String("prisca") || method == QLatin1String("prisca-paper") ||
+           method == QLatin1String("pgsd") || method == QLatin1String("ilc");
 }
 
 }  // namespace

@@ -19,8 +19,8 @@ namespace prisca::sim {
 struct Table1Settings {
     QString plant = QStringLiteral("slidecar");  ///< a planar vehicle
     /// Methods, as ControllerFactory names them, in table order.
-    QStringList methods = {"prisca",   "pd",       "pd-selected", "pd-h", "pd-lsd",
-                           "pd-h-lsd", "playback", "pgsd",        "ilc",  "oracle"};
+    QStringList methods = {"prisca",   "prisca-paper", "pd",   "pd-selected", "pd-h", "pd-lsd",
+                           "pd-h-lsd", "playback",     "pgsd", "ilc",         "oracle"};
     int trials = 20;         ///< evaluation trials per method
     std::uint64_t seed = 1;  ///< evaluation trial i uses mixSeed(seed, i)
     /// Training trials (their own seeds, never evaluation ones): PD (selected) scores its gain

@@ -289,8 +289,9 @@ class TestCliCommands : public QObject {
         QTest::addColumn<QString>("plant");
         QTest::addColumn<QString>("method");
         for (const char* plant : {"slidecar", "acrobot", "aircraft"}) {
-            for (const char* method : {"prisca", "pgsd", "pegasus", "pd", "pd-selected", "pd-h",
-                                       "pd-lsd", "pd-h-lsd", "playback", "ilc", "oracle"}) {
+            for (const char* method :
+                 {"prisca", "prisca-paper", "pgsd", "pegasus", "pd", "pd-selected", "pd-h",
+                  "pd-lsd", "pd-h-lsd", "playback", "ilc", "oracle"}) {
                 QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(plant, method)))
                     << plant << method;
             }
@@ -556,15 +557,15 @@ class TestCliCommands : public QObject {
                                   "2",      "--seed",   "4"};
         const CliResult md = cli(base);
         QCOMPARE(md.exitCode, 0);
-        for (const char* label : {"OURS (PRISCA)", "PD (SELECTED)", "PD+H+LSD", "ACTION PLAYBACK",
-                                  "PGSD", "ILC", "LIMIT (oracle)"}) {
+        for (const char* label : {"OURS (PRISCA)", "PRISCA (paper)", "PD (SELECTED)", "PD+H+LSD",
+                                  "ACTION PLAYBACK", "PGSD", "ILC", "LIMIT (oracle)"}) {
             QVERIFY2(md.out.contains(QStringLiteral("| %1 | 3 |").arg(label)), qPrintable(md.out));
         }
         QVERIFY(md.err.contains("table1:"));  // progress on stderr, the table on stdout
         const CliResult json = cli(base + QStringList{"--format", "json"});
         QCOMPARE(json.exitCode, 0);
         const QJsonArray rows = parseJson(json.out).value("rows").toArray();
-        QCOMPARE(rows.size(), 10);
+        QCOMPARE(rows.size(), 11);
         for (const QJsonValue& row : rows) {
             const QJsonObject position = row.toObject().value("positionCm").toObject();
             QCOMPARE(position.value("count").toInt(), 3);
@@ -588,13 +589,13 @@ class TestCliCommands : public QObject {
             return root;
         };
         QCOMPARE(withoutCpu(cli(base + QStringList{"--format", "json"}).out), withoutCpu(json.out));
-        QCOMPARE(measured, 20);
+        QCOMPARE(measured, 22);
         const CliResult csv = cli(base + QStringList{"--format", "csv", "--out", "table.csv"});
         QCOMPARE(csv.exitCode, 0);
         QCOMPARE(csv.out, QString());
         QFile file(path("table.csv"));
         QVERIFY(file.open(QIODevice::ReadOnly));
-        QCOMPARE(file.readAll().trimmed().split('\n').size(), 11);
+        QCOMPARE(file.readAll().trimmed().split('\n').size(), 12);
         const CliResult tex =
             cli(base + QStringList{"--format", "latex", "--methods", "prisca,pd"});
         QCOMPARE(tex.exitCode, 0);

@@ -230,7 +230,7 @@ class TestGuiRun : public QObject {
         QVERIFY(finished.wait(kRunTimeoutMs));
         QVERIFY(!panel->isRunning());
         auto* table = w.find<QTableWidget>("experimentTable");
-        QCOMPARE(table->rowCount(), 10);  // every Table I row, PGSD, ILC and the limit included
+        QCOMPARE(table->rowCount(), 11);  // every Table I row: PRISCA's two, PGSD, ILC, the limit
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("OURS (PRISCA)"));
         QVERIFY(table->item(0, 1)->text().contains(QStringLiteral("±")));
         QVERIFY(!w.find<QLabel>("experimentFigure")->pixmap().isNull());

@@ -1,0 +1,89 @@
+// The factory builds each method as the profile and the paper say: PRISCA's paper row is
+// Algorithm 1 as printed, the oracle knows the trial's length, ILC learns around the PD gains.
+#include "core/ActionMapping.h"
+#include "core/IlcController.h"
+#include "core/PriscaController.h"
+#include "sim/ControllerFactory.h"
+#include "sim/OracleController.h"
+#include "sim/PlantCatalog.h"
+
+#include <QtTest>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+class TestControllerFactory : public QObject {
+    Q_OBJECT
+  private:
+    std::shared_ptr<const core::Demonstration> demo_ =
+        std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 2));
+    PlantProfile profile_ = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
+
+  private slots:
+    void priscaPaper_isAlgorithm1AsPrinted() {
+        auto controller = ControllerFactory::create("prisca-paper", profile_, demo_,
+                                                    Eigen::MatrixXd::Zero(2, 6));
+        auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
+        QVERIFY(prisca);
+        QCOMPARE(prisca->name(), QStringLiteral("prisca-paper"));
+        const core::PriscaParameters& p = prisca->parameters();
+        QCOMPARE(p.baselineMode, core::LocalOptimalBaseline::Mode::PaperEq15);
+        QVERIFY(p.useBaseline && p.useInverseDepreciation);
+        QCOMPARE(p.stepSize.scale, 1.0);  // eq. 3 as printed: alpha_k = beta / (k + beta)
+        QCOMPARE(p.thetaBound, 0.0);
+        QCOMPARE(p.gradient, core::PriscaParameters::Gradient::OneStep);
+        // eq. 8 read literally: the state change against the action change, unconstrained.
+        core::ActionMappingFitOptions literal;
+        literal.target = core::ActionMappingFitOptions::Target::StateChange;
+        literal.nonNegative = false;
+        literal.robust = false;
+        const core::ActionMappingFit fit = core::fitActionMapping(
+            *demo_, profile_.mapping, profile_.info.deviationModel(), literal);
+        QVERIFY((prisca->stateEffect() - demo_->dt * fit.b).cwiseAbs().maxCoeff() < 1e-15);
+    }
+
+    void prisca_isTheProfilesVariantWithTheGivenFit() {
+        const Eigen::MatrixXd B = Eigen::MatrixXd::Constant(2, 6, 0.5);
+        auto controller = ControllerFactory::create("prisca", profile_, demo_, B);
+        auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
+        QVERIFY(prisca);
+        QCOMPARE(prisca->parameters().thetaBound, profile_.prisca.thetaBound);
+        QVERIFY((prisca->stateEffect() - demo_->dt * B).cwiseAbs().maxCoeff() < 1e-15);
+    }
+
+    void oracle_knowsTheTrialsLength() {
+        auto controller =
+            ControllerFactory::create("oracle", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+        auto* oracle = dynamic_cast<OracleController*>(controller.get());
+        QVERIFY(oracle);
+        const EpisodeSettings trial = profile_.episode(*demo_, 1.0, 1.0);
+        QCOMPARE(oracle->parameters().trialSteps,
+                 static_cast<int>(trial.duration / demo_->dt + 0.5));
+        QCOMPARE(oracle->parameters().objective, OracleParameters::Objective::FinalPose);
+        QCOMPARE(oracle->parameters().feedback.rows(), 2);
+    }
+
+    void ilc_learnsAroundThePdGains() {
+        auto controller =
+            ControllerFactory::create("ilc", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+        auto* ilc = dynamic_cast<core::IlcController*>(controller.get());
+        QVERIFY(ilc);
+        QCOMPARE(ilc->parameters().feedback.kp, Eigen::VectorXd(profile_.pd.kp *
+                                                               profile_.ilcFeedbackScale));
+        QCOMPARE(ilc->parameters().learningGain,
+                 Eigen::VectorXd(profile_.ilcLearningScale * profile_.pd.kp));
+        QCOMPARE(ilc->parameters().lead, profile_.ilcLead);
+    }
+
+    void unknownMethod_namesTheKnownOnes() {
+        try {
+            ControllerFactory::create("magic", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+            QFAIL("no exception");
+        } catch (const std::invalid_argument& e) {
+            QVERIFY(QString::fromStdString(e.what()).contains("prisca-paper"));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestControllerFactory)
+#include "test_controller_factory.moc"
