@@ -85,7 +85,10 @@ const ControlStep& IlcController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     const PdParameters& pd = parameters_.feedback;
     const int k = step_;
     const int j = std::min(k, demo.length() - 1);
-    problem_.deviation.deviation(observation, demo.states.row(j).transpose(), record_.deviation);
+    // The observation is age_ steps old: its error against the reference of that time.
+    const int seen = std::clamp(k - age_, 0, demo.length() - 1);
+    problem_.deviation.deviation(observation, demo.states.row(seen).transpose(),
+                                 record_.deviation);
     const Eigen::VectorXd eps = pd.errorCombination * record_.deviation;
     const Eigen::VectorXd rate =
         k == 0 ? Eigen::VectorXd::Zero(eps.size()) : Eigen::VectorXd((eps - previousSignal_) / demo.dt);

@@ -42,6 +42,7 @@ class IlcController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
+    void setObservationAge(int steps) override { age_ = steps > 0 ? steps : 0; }
 
     /// The learned feedforward f (m x steps it covers), column k for step k.
     const Eigen::MatrixXd& feedforward() const { return feedforward_; }
@@ -60,6 +61,7 @@ class IlcController : public Controller {
     ControlStep record_;
     int step_ = 0;
     int iterations_ = 0;
+    int age_ = 0;  // observations' age compensated [steps]
 };
 
 }  // namespace prisca::core

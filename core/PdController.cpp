@@ -2,6 +2,7 @@
 
 #include "NestedExpectation.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace prisca::core {
@@ -73,7 +74,8 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
 
     record_.step = step_;
     record_.referenceIndex = j;
-    record_.referenceAction = demo.actions.row(j).transpose();
+    record_.referenceAction =
+        demo.actions.row(std::min(j + std::min(age_, step_), demo.length() - 1)).transpose();
     record_.action = record_.referenceAction - parameters_.kp.cwiseProduct(signal_) -
                      parameters_.kd.cwiseProduct(rate);
     problem_.limits.saturate(record_.action);

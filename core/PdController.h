@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <deque>
 
 namespace prisca::core {
@@ -38,6 +39,10 @@ class PdController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
+    void setObservationAge(int steps) override {
+        age_ = std::max(0, steps);
+        matcher_.setAge(age_);
+    }
 
     const PdParameters& parameters() const { return parameters_; }
     /// The error signal eps (m) of the last step, after smoothing.
@@ -53,6 +58,7 @@ class PdController : public Controller {
     Eigen::VectorXd previousSignal_;
     ControlStep record_;
     int step_ = 0;
+    int age_ = 0;  // observations' age compensated [steps]
 };
 
 }  // namespace prisca::core

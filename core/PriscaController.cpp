@@ -103,6 +103,11 @@ void PriscaController::setTheta(const Eigen::MatrixXd& theta) {
     theta_ = theta;
 }
 
+void PriscaController::setObservationAge(int steps) {
+    age_ = parameters_.compensateAge ? std::max(0, steps) : 0;
+    matcher_.setAge(age_);
+}
+
 void PriscaController::setDrift(const Eigen::MatrixXd& a) {
     const Eigen::Index n = transition_.rows();
     if (a.rows() != n || a.cols() != n || !a.allFinite()) {
@@ -292,7 +297,10 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
 
     // 6. Control input from the updated theta.
     record_.referenceIndex = j;
-    record_.referenceAction = referenceActions_.col(j);
+    // The demonstration's action of now: the observation's sample plus its age (less at the
+    // start, before the observations had any age to show).
+    record_.referenceAction = referenceActions_.col(
+        std::min(j + std::min(age_, k), static_cast<int>(referenceActions_.cols()) - 1));
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     problem_.limits.saturate(record_.action);

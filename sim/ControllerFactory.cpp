@@ -71,6 +71,7 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         paper.gradient = core::PriscaParameters::Gradient::OneStep;
         paper.step = core::PriscaParameters::Step::Gradient;
         paper.effortWeights.resize(0);
+        paper.compensateAge = false;
         core::TrackingProblem problem =
             profile.trackingProblem(demonstration, profile.priscaMatching);
         if (profile.priscaCostWeights.size() > 0) {

@@ -21,6 +21,9 @@ struct EpisodeSettings {
     /// (negative: never end early).
     double stopAtRestAfter = -1.0;
     core::ResetMode resetMode = core::ResetMode::Cold;  ///< how the controller starts the trial
+    /// Tell the controller how old its observations are (the sensor's latency), so that
+    /// trackers compensate it (Controller::setObservationAge). Off: they see age 0.
+    bool compensateObservationAge = false;
     bool recordSteps = true;                            ///< keep a StepRecord per control step
 };
 

@@ -216,6 +216,7 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
         episode.measurement.latencySteps = 0;
         episode.measurement.dropProbability = 0.0;
     }
+    episode.compensateObservationAge = compensateLatency;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;
     episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;

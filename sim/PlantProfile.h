@@ -36,6 +36,10 @@ struct PlantProfile {
     Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
+    /// Whether the trackers compensate the sensor's latency (EpisodeSettings). Off until every
+    /// method has been re-tuned with it: on development cells it took PD+H+LSD from 5.90 to
+    /// 4.78 cm, but one fast-180-right trial ran away (see the note of the session that added it).
+    bool compensateLatency = false;
     core::PriscaParameters prisca;      ///< PRISCA defaults
     /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
     /// wherever the path ends), time-driven where it is a timed trajectory (the acrobot's

@@ -3,7 +3,7 @@
 // no evaluation set is looked at here.
 //
 //     ablate_prisca METHOD [key value ...]    keys: grad delay scale beta bound H baseline D drift
-//                                             signs wv wpsi R gn mu
+//                                             signs wv wpsi R gn mu age
 //     TRACE=STYLE ablate_prisca METHOD ...    theta and the final error trial by trial
 
 #include <cstdio>
@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
                 p.prisca.step = core::PriscaParameters::Step::GaussNewton;
         } else if (k == "mu")
             p.prisca.damping = v;
+        else if (k == "age")
+            p.compensateLatency = v != 0.0;
     }
     if (getenv("TRACE")) {
         auto demo = std::make_shared<core::Demonstration>(
@@ -122,6 +124,11 @@ int main(int argc, char** argv) {
             cellPos.push_back(rows[0].position.meanAbsoluteError);
             cellOri.push_back(rows[0].orientation.meanAbsoluteError);
             worst = std::max(worst, rows[0].position.maximum);
+        if (getenv("CELLS")) {
+            std::printf("  %-20s set %llu: %.2f cm (worst %.1f)\n", style,
+                        static_cast<unsigned long long>(set), rows[0].position.meanAbsoluteError,
+                        rows[0].position.maximum);
+        }
         }
     printf("%-10s pos %.2f ori %.2f worst %.1f\n", method, core::mean(cellPos), core::mean(cellOri),
            worst);

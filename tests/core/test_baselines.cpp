@@ -241,6 +241,47 @@ class TestBaselines : public QObject {
         QVERIFY(pegasus.theta()(0, 0) < 0.0);  // negative feedback was found
     }
 
+    void observationAge_isCompensatedByEveryReferenceTracker() {
+        // Observations two steps old of a robot that repeats the demonstration exactly: with the
+        // age known, every tracker sees no error and applies the demonstration's action of now.
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(2, 2), 40, 0.1);
+        PdParameters gains;
+        gains.errorCombination = Eigen::MatrixXd::Identity(2, 2);
+        gains.kp = Eigen::Vector2d(3.0, 3.0);
+        gains.kd = Eigen::Vector2d(0.5, 0.5);
+        IlcParameters ilcParameters;
+        ilcParameters.feedback = gains;
+        ilcParameters.learningGain = Eigen::Vector2d(0.5, 0.5);
+        std::vector<std::unique_ptr<Controller>> trackers;
+        trackers.push_back(std::make_unique<PdController>(
+            problemFor(demo, MatchingParameters::Mode::TimeDriven), gains, "pd"));
+        trackers.push_back(std::make_unique<PdController>(
+            problemFor(demo, MatchingParameters::Mode::LeastStateDeviation), gains, "pd-lsd"));
+        trackers.push_back(std::make_unique<IlcController>(
+            problemFor(demo, MatchingParameters::Mode::TimeDriven), ilcParameters));
+        const int age = 2;
+        for (auto& tracker : trackers) {
+            for (bool compensate : {false, true}) {
+                tracker->setObservationAge(compensate ? age : 0);
+                tracker->reset(ResetMode::Cold);
+                double worst = 0.0;
+                for (int k = 0; k < demo->length(); ++k) {
+                    const Eigen::VectorXd seen =
+                        demo->states.row(std::max(0, k - age)).transpose();
+                    const ControlStep& out = tracker->step(seen);
+                    worst = std::max(worst, (out.action - demo->actions.row(k).transpose())
+                                                .cwiseAbs()
+                                                .maxCoeff());
+                }
+                if (compensate) {
+                    QVERIFY2(worst < 1e-12, qPrintable(tracker->name()));
+                } else {
+                    QVERIFY2(worst > 0.01, qPrintable(tracker->name()));
+                }
+            }
+        }
+    }
+
     void ilc_convergesOnALinearPlantWhoseGainIsWrong() {
         // The plant's gain is 1.6 times the demonstration's and every trial starts 0.05 off:
         // a repeated disturbance that feedback alone leaves, and ILC learns away trial by trial.
