@@ -15,15 +15,11 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 QString fixed(double value) {
-    return std::isfinite(value) ? QString::number(value, 'f', 2) : QStringLiteral("n/a");
+    return formatFixed(value);
 }
 
 QString full(double value) {
-    return std::isfinite(value) ? QString::number(value, 'g', 17) : QString();
-}
-
-QJsonValue jsonNumber(double value) {
-    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+    return formatFull(value);
 }
 
 // "4.21 [3.80, 4.62]", or the mean alone for a single cell.

@@ -8,18 +8,26 @@
 
 namespace prisca::core {
 
-namespace {
-
-QString fixed(double value) {
+QString formatFixed(double value) {
     return std::isfinite(value) ? QString::number(value, 'f', 2) : QStringLiteral("n/a");
 }
 
-QString full(double value) {
+QString formatFull(double value) {
     return std::isfinite(value) ? QString::number(value, 'g', 17) : QString();
 }
 
 QJsonValue jsonNumber(double value) {
     return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
+}
+
+namespace {
+
+QString fixed(double value) {
+    return formatFixed(value);
+}
+
+QString full(double value) {
+    return formatFull(value);
 }
 
 QJsonObject summaryJson(const ErrorSummary& s) {

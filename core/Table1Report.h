@@ -2,6 +2,7 @@
 
 #include "Statistics.h"
 
+#include <QJsonValue>
 #include <QString>
 
 #include <limits>
@@ -36,5 +37,11 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                      const QString& caption);
 /// A CPU time per step for a table: three significant digits, "n/a" when not measured.
 QString formatCpuMicroseconds(double microseconds);
+/// A number for reading: two decimals, "n/a" when not finite.
+QString formatFixed(double value);
+/// A number for machines: full precision, empty when not finite.
+QString formatFull(double value);
+/// A number for JSON: null when not finite.
+QJsonValue jsonNumber(double value);
 
 }  // namespace prisca::core

@@ -17,11 +17,16 @@ using CarScript = SlideCarDemonstrator::Script;
 using ArmScript = AcrobotDemonstrator::Script;
 using PilotScript = AircraftDemonstrator::Script;
 
-struct CarStyle {
+// A named way of demonstrating: how it changes the plant's default script.
+template <class Script>
+struct Style {
     const char* name;
     const char* description;
-    std::function<void(CarScript&)> adjust;
+    std::function<void(Script&)> adjust;
 };
+using CarStyle = Style<CarScript>;
+using ArmStyle = Style<ArmScript>;
+using PilotStyle = Style<PilotScript>;
 
 // Slide-car operators. Rotation is set by when the wheel is centred (and a counter-steer to
 // catch a 90-degree slide); the approach by throttle and how long the straight is.
@@ -86,12 +91,6 @@ const std::vector<CarStyle>& carStyles() {
     return styles;
 }
 
-struct ArmStyle {
-    const char* name;
-    const char* description;
-    std::function<void(ArmScript&)> adjust;
-};
-
 const std::vector<ArmStyle>& armStyles() {
     static const std::vector<ArmStyle> styles = {
         {"swing-medium", "a swing growing to about 50 deg at the shoulder (the classic)",
@@ -116,12 +115,6 @@ const std::vector<ArmStyle>& armStyles() {
     };
     return styles;
 }
-
-struct PilotStyle {
-    const char* name;
-    const char* description;
-    std::function<void(PilotScript&)> adjust;
-};
 
 const std::vector<PilotStyle>& pilotStyles() {
     static const std::vector<PilotStyle> styles = {
@@ -206,34 +199,36 @@ QString DemonstrationStyles::classic(const QString& plant) {
     return all.isEmpty() ? QString() : all.front();
 }
 
+namespace {
+
+// The script of a style, recorded by its plant's demonstrator.
+template <class Demonstrator, class Script>
+core::Demonstration recordStyle(const std::vector<Style<Script>>& styles, const QString& plant,
+                                const QString& style, std::uint64_t seed,
+                                const SimulationTiming& timing) {
+    const Style<Script>* s = find(styles, style);
+    if (!s) {
+        unknownStyle(plant, style);
+    }
+    Script script;
+    s->adjust(script);
+    return Demonstrator::record(seed, script, timing);
+}
+
+}  // namespace
+
 core::Demonstration DemonstrationStyles::record(const QString& plant, const QString& style,
                                                 std::uint64_t seed,
                                                 const SimulationTiming& timing) {
     core::Demonstration demonstration;
     if (plant == QLatin1String("slidecar")) {
-        const CarStyle* s = find(carStyles(), style);
-        if (!s) {
-            unknownStyle(plant, style);
-        }
-        CarScript script;
-        s->adjust(script);
-        demonstration = SlideCarDemonstrator::record(seed, script, timing);
+        demonstration =
+            recordStyle<SlideCarDemonstrator>(carStyles(), plant, style, seed, timing);
     } else if (plant == QLatin1String("acrobot")) {
-        const ArmStyle* s = find(armStyles(), style);
-        if (!s) {
-            unknownStyle(plant, style);
-        }
-        ArmScript script;
-        s->adjust(script);
-        demonstration = AcrobotDemonstrator::record(seed, script, timing);
+        demonstration = recordStyle<AcrobotDemonstrator>(armStyles(), plant, style, seed, timing);
     } else if (plant == QLatin1String("aircraft")) {
-        const PilotStyle* s = find(pilotStyles(), style);
-        if (!s) {
-            unknownStyle(plant, style);
-        }
-        PilotScript script;
-        s->adjust(script);
-        demonstration = AircraftDemonstrator::record(seed, script, timing);
+        demonstration =
+            recordStyle<AircraftDemonstrator>(pilotStyles(), plant, style, seed, timing);
     } else {
         unknownStyle(plant, style);
     }

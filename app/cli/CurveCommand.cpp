@@ -33,6 +33,17 @@ double finalMean(const sim::MethodCurves& method) {
     return core::mean(last);
 }
 
+// Adds a cell's runs to each method's runs so far.
+void pool(std::vector<sim::MethodCurves>& into, const std::vector<sim::MethodCurves>& cell) {
+    if (into.empty()) {
+        into = cell;
+        return;
+    }
+    for (size_t m = 0; m < cell.size(); ++m) {
+        into[m].runs.insert(into[m].runs.end(), cell[m].runs.begin(), cell[m].runs.end());
+    }
+}
+
 struct Cell {
     QString style;  // empty: a single demonstration
     Task task;
@@ -148,24 +159,9 @@ int curveCommand(const QStringList& arguments) {
         const auto curves = sim::runLearningCurves(cellSettings, cell.task.demonstration,
                                                    cell.task.profile, cell.task.fit.b);
         unit = std::min<long long>(unit, cell.task.demonstration->length());
-        if (pooled.empty()) {
-            pooled = curves;
-        } else {
-            for (size_t m = 0; m < curves.size(); ++m) {
-                pooled[m].runs.insert(pooled[m].runs.end(), curves[m].runs.begin(),
-                                      curves[m].runs.end());
-            }
-        }
+        pool(pooled, curves);
         if (!cell.style.isEmpty()) {
-            auto& mine = perStyle[styles.indexOf(cell.style)];
-            if (mine.empty()) {
-                mine = curves;
-            } else {
-                for (size_t m = 0; m < curves.size(); ++m) {
-                    mine[m].runs.insert(mine[m].runs.end(), curves[m].runs.begin(),
-                                        curves[m].runs.end());
-                }
-            }
+            pool(perStyle[styles.indexOf(cell.style)], curves);
         }
         if (interrupted()) {
             break;

@@ -37,6 +37,31 @@ QStringList checkedMethods(const CommandLine& line, const QStringList& defaults)
     return methods;
 }
 
+// --H, --gamma, --beta: PRISCA's own parameters for this experiment.
+void applyPriscaOptions(const CommandLine& line, sim::PlantProfile& profile) {
+    if (line.isSet("H")) {
+        profile.prisca.horizon = static_cast<int>(line.integer("H", 1, 1000));
+    }
+    if (line.isSet("gamma")) {
+        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
+    }
+    if (line.isSet("beta")) {
+        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
+    }
+}
+
+// The table to --out (atomically) or to standard output.
+void writeTable(const CommandLine& line, const QString& table) {
+    if (line.isSet("out")) {
+        core::FileError error;
+        if (!core::writeFileAtomically(line.value("out"), table.toUtf8(), &error)) {
+            throw UsageError(error.toString());
+        }
+    } else {
+        printText(table);
+    }
+}
+
 // table1 --styles: every method on every (style, seed set) cell.
 int table1ProtocolCommand(const CommandLine& line) {
     if (line.isSet("demo") || line.isSet("demo-seed")) {
@@ -78,15 +103,7 @@ int table1ProtocolCommand(const CommandLine& line) {
     settings.table.threads = static_cast<int>(line.integer("jobs", 1, 256));
     settings.table.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.table.sensor = line.number("sensor", 0.0, 10.0);
-    if (line.isSet("H")) {
-        profile.prisca.horizon = static_cast<int>(line.integer("H", 1, 1000));
-    }
-    if (line.isSet("gamma")) {
-        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
-    }
-    if (line.isSet("beta")) {
-        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
-    }
+    applyPriscaOptions(line, profile);
     const auto format = core::parseTableFormat(line.format());
     installInterruptHandler();
     settings.table.cancelled = [] { return interrupted(); };
@@ -110,15 +127,7 @@ int table1ProtocolCommand(const CommandLine& line) {
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
-    const QString table = core::formatProtocol(result.summary, *format, caption);
-    if (line.isSet("out")) {
-        core::FileError error;
-        if (!core::writeFileAtomically(line.value("out"), table.toUtf8(), &error)) {
-            throw UsageError(error.toString());
-        }
-    } else {
-        printText(table);
-    }
+    writeTable(line, core::formatProtocol(result.summary, *format, caption));
     if (result.cancelled) {
         std::fprintf(stderr,
                      "prisca-cli: table1: interrupted; kept the cells that finished (%d trials)\n",
@@ -209,15 +218,7 @@ int table1Command(const QStringList& arguments) {
     settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
-    if (line.isSet("H")) {
-        task.profile.prisca.horizon = static_cast<int>(line.integer("H", 1, 1000));
-    }
-    if (line.isSet("gamma")) {
-        task.profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
-    }
-    if (line.isSet("beta")) {
-        task.profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
-    }
+    applyPriscaOptions(line, task.profile);
     const auto format = core::parseTableFormat(line.format());
 
     settings.keepPaths = line.isSet("plot");
@@ -244,15 +245,7 @@ int table1Command(const QStringList& arguments) {
                        .arg(finished)
                        .arg(settings.trials * static_cast<int>(settings.methods.size()));
     }
-    const QString table = core::formatTable1(rows, *format, caption);
-    if (line.isSet("out")) {
-        core::FileError error;
-        if (!core::writeFileAtomically(line.value("out"), table.toUtf8(), &error)) {
-            throw UsageError(error.toString());
-        }
-    } else {
-        printText(table);
-    }
+    writeTable(line, core::formatTable1(rows, *format, caption));
     if (line.isSet("plot")) {
         saveFigureOrThrow(parkingFigure(result, 0.40, 0.20), line.value("plot"));
     }
