@@ -6,6 +6,8 @@
 //                                             signs wv wpsi R gn mu age
 //     TRACE=STYLE ablate_prisca METHOD ...    theta and the final error trial by trial
 
+#include <QStringList>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -101,6 +103,37 @@ int main(int argc, char** argv) {
                 for (int i = 0; i < th.rows(); ++i)
                     std::printf(" %7.3f", th(i, l));
             std::printf("\n");
+        }
+        return 0;
+    }
+    if (getenv("DUMP")) {
+        // DUMP=style:set: the worst of the cell's evaluation trials, every 10th step.
+        const QStringList where = QString::fromLatin1(getenv("DUMP")).split(':');
+        auto demo = std::make_shared<core::Demonstration>(
+            sim::DemonstrationStyles::record("slidecar", where[0], where[1].toULongLong()));
+        const auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), {});
+        auto plant = sim::PlantCatalog::create("slidecar");
+        double worst = -1.0;
+        sim::EpisodeResult worstRun;
+        for (int i = 0; i < 10; ++i) {
+            auto controller = sim::ControllerFactory::create(method, p, demo, fit.b);
+            sim::EpisodeSettings e = p.episode(*demo, 1.0, 1.0);
+            e.seed = sim::mixSeed(where[1].toULongLong(), i);
+            auto r = sim::runEpisode(*plant, *controller, e);
+            const double error = sim::summarizeTrial(plant->info(), *demo, r).finalPositionError;
+            if (error > worst) {
+                worst = error;
+                worstRun = r;
+            }
+        }
+        std::printf("worst %.1f cm, demo %d samples\n", 100 * worst, demo->length());
+        for (size_t k = 0; k < worstRun.steps.size(); k += 10) {
+            const sim::StepRecord& r = worstRun.steps[k];
+            std::printf("k %3zu x %6.2f y %6.2f psi %6.2f vx %5.2f | j %3d u %5.2f %5.2f u* %5.2f "
+                        "%5.2f | e %6.2f %6.2f %6.2f\n",
+                        k, r.state[0], r.state[1], r.state[2], r.state[3], r.referenceIndex,
+                        r.action[0], r.action[1], r.referenceAction[0], r.referenceAction[1],
+                        r.deviation[0], r.deviation[1], r.deviation[2]);
         }
         return 0;
     }
