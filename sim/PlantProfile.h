@@ -36,9 +36,11 @@ struct PlantProfile {
     Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
-    /// Whether the trackers compensate the sensor's latency (EpisodeSettings). Off until every
-    /// method has been re-tuned with it: on development cells it took PD+H+LSD from 5.90 to
-    /// 4.78 cm, but one fast-180-right trial ran away (see the note of the session that added it).
+    /// Whether the trackers compensate the sensor's latency (EpisodeSettings). Off: with it,
+    /// every slide-car method re-tuned did better on the tuning cells (PD+H+LSD's score 12.35 ->
+    /// 9.18) but worse on development cells, where trials ran away (PD+H+LSD 5.90 -> 22.25 cm,
+    /// one trial 21 m; PRISCA 10.98 -> 26.20 cm): a least-state-deviation reference that stalls
+    /// on a full-throttle sample once the car leaves every later state needs a guard first.
     bool compensateLatency = false;
     core::PriscaParameters prisca;      ///< PRISCA defaults
     /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
