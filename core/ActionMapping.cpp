@@ -145,6 +145,7 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     ActionMappingFit fit;
     fit.samples = K;
     fit.bv.setZero(m, n);
+    fit.explained.assign(T, true);
     fit.a.setZero(n, n);
     fit.unconstrainedBv.setZero(m, n);
     fit.residualRms.setZero(n);
@@ -310,7 +311,11 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                 beta = solve(weights, true);  // once more, to report conflicts on the final weights
                 int setAside = 0;
                 for (int t = 0; t < K; ++t) {
-                    setAside += weights[t] < 0.01 * w[t];
+                    const bool outlier = weights[t] < 0.01 * w[t];
+                    setAside += outlier;
+                    if (outlier) {
+                        fit.explained[first + t] = false;  // pair t pairs du_k with the state after k
+                    }
                 }
                 fit.outlierShare[c] = static_cast<double>(setAside) / K;
             }

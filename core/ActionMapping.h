@@ -89,6 +89,10 @@ struct ActionMappingFit {
     std::vector<std::pair<int, int>> signConflicts;
     std::vector<int> unexcitedChannels;  ///< controls that never changed
     int samples = 0;                     ///< number of (ds, du) pairs used
+    /// Per demonstration sample (size T): whether the linear model explains it, i.e. the robust
+    /// fit kept it for every modelled state (true everywhere without the robust fit, and at
+    /// the few first and last samples no pair covers).
+    std::vector<bool> explained;
     QStringList warnings;                ///< one line each, in the operator's words
 };
 

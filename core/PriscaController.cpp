@@ -103,6 +103,14 @@ void PriscaController::setTheta(const Eigen::MatrixXd& theta) {
     theta_ = theta;
 }
 
+void PriscaController::setModelValidity(std::vector<bool> valid) {
+    if (!valid.empty() && static_cast<int>(valid.size()) != problem_.demonstration->length()) {
+        throw std::invalid_argument(
+            "PriscaController::setModelValidity: one flag per demonstration sample");
+    }
+    modelValid_ = std::move(valid);
+}
+
 void PriscaController::setObservationAge(int steps) {
     age_ = parameters_.compensateAge ? std::max(0, steps) : 0;
     matcher_.setAge(age_);
@@ -155,6 +163,9 @@ void PriscaController::closedLoopTerms(int k, int count) {
         stepTransition_ += transition_;
         sensitivity_[t + 1 - first].noalias() = stepTransition_ * sensitivity_[t - first];
         sensitivity_[t + 1 - first] += drive_;
+        if (!modelValid_.empty() && !modelValid_[referenceHistory_[(t + 1) % ring]]) {
+            sensitivity_[t + 1 - first].setZero();  // the model does not hold there: start afresh
+        }
     }
     // a_t = 2 S_t^T W e_t (+ the effort's 2 (du_t/dtheta)^T R (u_t - u*_t)), stored where the
     // one-step form keeps its a_t.
@@ -162,6 +173,9 @@ void PriscaController::closedLoopTerms(int k, int count) {
     for (int t = first; t <= k; ++t) {
         const int slot = t % ring;
         weightedError_ = problem_.costWeights.cwiseProduct(errorHistory_.col(slot));
+        if (!modelValid_.empty() && !modelValid_[referenceHistory_[slot]]) {
+            weightedError_.setZero();  // no lesson from where the model does not hold
+        }
         sample_.noalias() = 2.0 * sensitivity_[t - first].transpose() * weightedError_;
         const bool curvature = parameters_.step == PriscaParameters::Step::GaussNewton;
         auto jtj = historyCurvature_.col(t % (parameters_.horizon + 1)).reshaped(p * m, p * m);

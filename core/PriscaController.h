@@ -102,6 +102,11 @@ class PriscaController : public Controller {
     void setInitialTheta(const Eigen::MatrixXd& theta);
     /// Turns learning on or off from the next step (theta kept as it is).
     void setLearning(bool learning) { parameters_.learning = learning; }
+    /// Where along the demonstration the model holds (one flag per sample, e.g. the samples a
+    /// robust fit explained): the closed-loop gradient learns only from errors at references
+    /// the model explains, and its sensitivities start afresh after one it does not (a car
+    /// sliding on saturated tyres answers its controls otherwise). Empty: everywhere.
+    void setModelValidity(std::vector<bool> valid);
     /// The identified drift A (n x n, eq. 5) the closed-loop gradient propagates through; zero
     /// (no drift, the state moves only as the actions push it) unless set.
     void setDrift(const Eigen::MatrixXd& a);
@@ -144,6 +149,7 @@ class PriscaController : public Controller {
     Eigen::MatrixXd transition_;                  // n x n, I + dt A (the fitted drift)
     Eigen::MatrixXd stepTransition_;              // n x n, with the error's own kinematics at t
     std::vector<int> referenceHistory_;           // ring of j_t, as errorHistory_
+    std::vector<bool> modelValid_;                // per demonstration sample (empty: all)
     Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j
     Eigen::MatrixXd featureHistory_;              // (p*m) x (H+1+d) ring of Phi_j
     std::vector<Eigen::MatrixXd> sensitivity_;    // [t]: S_t, n x (p*m), over the window

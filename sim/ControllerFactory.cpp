@@ -47,9 +47,15 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         const Eigen::MatrixXd model = profile.priscaModel == PlantProfile::PriscaModel::Signs
                                           ? profile.mapping.asDouble()
                                           : fittedB;
-        return std::make_unique<core::PriscaController>(
+        auto prisca = std::make_unique<core::PriscaController>(
             std::move(problem), profile.priscaFeatures.value_or(profile.features), model,
             profile.prisca);
+        if (profile.priscaLearnWhereExplained) {
+            prisca->setModelValidity(core::fitActionMapping(*demonstration, profile.mapping,
+                                                            profile.info.deviationModel())
+                                         .explained);
+        }
+        return prisca;
     }
     if (method == QLatin1String("prisca-paper")) {
         // Algorithm 1 exactly as printed: eq. 8 literally (the state change against the action

@@ -58,6 +58,8 @@ struct PlantProfile {
     /// gradient propagates through the state's own drift too).
     enum class PriscaModel { Fitted, Signs, FittedWithDrift };
     PriscaModel priscaModel = PriscaModel::Fitted;
+    /// The closed-loop gradient learns only where a robust fit explains the demonstration.
+    bool priscaLearnWhereExplained = false;
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]

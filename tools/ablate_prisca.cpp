@@ -65,8 +65,28 @@ int main(int argc, char** argv) {
                 p.prisca.step = core::PriscaParameters::Step::GaussNewton;
         } else if (k == "mu")
             p.prisca.damping = v;
+        else if (k == "explained")
+            p.priscaLearnWhereExplained = v != 0.0;
         else if (k == "age")
             p.compensateLatency = v != 0.0;
+    }
+    if (getenv("FEATURES")) {
+        // FEATURES="0:2,3:1,c:0.1|1:4,2:1,c:0": per channel, deviation index:scale or c:scale.
+        std::vector<std::vector<core::FeatureTerm>> channels;
+        for (const QString& channel : QString::fromLatin1(getenv("FEATURES")).split('|')) {
+            std::vector<core::FeatureTerm> terms;
+            for (const QString& term : channel.split(',')) {
+                const QStringList parts = term.split(':');
+                core::FeatureTerm t;
+                t.source = parts[0] == QLatin1String("c") ? core::FeatureTerm::Source::Constant
+                                                           : core::FeatureTerm::Source::Deviation;
+                t.index = parts[0] == QLatin1String("c") ? 0 : parts[0].toInt();
+                t.scale = parts[1].toDouble();
+                terms.push_back(t);
+            }
+            channels.push_back(terms);
+        }
+        p.features = core::FeatureMap(channels);
     }
     if (getenv("TRACE")) {
         auto demo = std::make_shared<core::Demonstration>(

@@ -5,6 +5,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -341,6 +342,16 @@ class TestActionMapping : public QObject {
         QVERIFY(ols.rSquared[0] < 0.5);
         QVERIFY(robust.outlierShare[0] > 0.15 && robust.outlierShare[0] < 0.3);
         QVERIFY(robust.rSquared[0] > 0.9);
+        // The samples set aside are the sliding ones: the model is said not to hold there.
+        QCOMPARE(static_cast<int>(robust.explained.size()), d.length());
+        int outside = 0, inside = 0;
+        for (int k = 0; k < d.length(); ++k) {
+            const bool sliding = k >= 1199 && k <= 1602;  // pairs reach a sample either side
+            outside += !robust.explained[k] && !sliding;
+            inside += !robust.explained[k] && sliding;
+        }
+        QVERIFY2(outside == 0 && inside > 200, qPrintable(QStringLiteral("%1 %2").arg(outside).arg(inside)));
+        QVERIFY(std::all_of(ols.explained.begin(), ols.explained.end(), [](bool b) { return b; }));
     }
 
     void fit_unmodelledStateHasNoRSquared() {
