@@ -369,6 +369,7 @@ bool RigPanel::runTrial() {
             session_.method(), session_.profile(), session_.demonstration(), session_.fit().b);
         shared_->loop = std::make_unique<devices::RigLoop>(calibration_, devices::TrackerSettings{},
                                                            std::move(controller), channels_, link_);
+        shared_->loop->setLostTrackDistance(session_.profile().lostTrackDistance);
         loopMethod_ = session_.method();
         trials_ = 0;
     }

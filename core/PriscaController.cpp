@@ -42,6 +42,9 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     if (H < 1) {
         throw std::invalid_argument("PriscaController: the horizon H must be >= 1");
     }
+    if (parameters_.effectHorizon < 1) {
+        throw std::invalid_argument("PriscaController: the effect horizon N must be >= 1");
+    }
     if (parameters_.modelDelay < 0) {
         throw std::invalid_argument("PriscaController: the model delay must be >= 0");
     }
@@ -53,6 +56,9 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     errorHistory_.setZero(n, ring);
     referenceHistory_.assign(ring, 0);
     stepTransition_.setZero(n, n);
+    effectTerm_.setZero(n, m);
+    effectSum_.setZero(n, m);
+    effectNext_.setZero(n, m);
     featureHistory_.setZero(p * m, ring);
     sensitivity_.assign(H + 1, Eigen::MatrixXd::Zero(n, p * m));
     feedbackGain_.setZero(m, n);
@@ -246,8 +252,24 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         referenceHistory_[k % ring] = j;
         featureHistory_.col(k % ring) = phi_.reshaped();
         closedLoopTerms(k, count);
+    } else if (parameters_.effectHorizon > 1) {
+        // sum_{i<N} (I + dt (A + kinematics at s*_j))^i dt B^T: what holding u_k for N steps
+        // does to the error (eq. 5 before its truncation).
+        problem_.deviation.kinematics(referenceStates_.col(j), stepTransition_);
+        stepTransition_ *= problem_.demonstration->dt;
+        stepTransition_ += transition_;
+        effectTerm_ = stateEffect_.transpose();
+        effectSum_ = effectTerm_;
+        for (int i = 1; i < parameters_.effectHorizon; ++i) {
+            effectNext_.noalias() = stepTransition_ * effectTerm_;
+            effectTerm_ = effectNext_;
+            effectSum_ += effectTerm_;
+        }
+        projected_.noalias() = effectSum_.transpose() * weightedError_;
     } else {
         projected_.noalias() = stateEffect_ * weightedError_;
+    }
+    if (parameters_.gradient != PriscaParameters::Gradient::ClosedLoop) {
         for (int l = 0; l < m; ++l) {
             historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) =
                 phi_.col(l) * projected_[l];

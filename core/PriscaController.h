@@ -43,6 +43,13 @@ struct PriscaParameters {
         ClosedLoop
     };
     Gradient gradient = Gradient::OneStep;
+    /// N [steps] of the one-step form's state effect (OneStep only), >= 1. eq. 5 prints
+    /// ds_{k+N}/du_k as sum_{i<N} (I + dt A)^i dt B before truncating it to dt B (N = 1, the
+    /// paper's form). With N > 1 the sum is kept, A the fitted drift plus the error's own
+    /// kinematics at the reference (DeviationModel::kinematics): a throttle then moves the
+    /// position error it will cause, not only the speed error of the next sample, so a feature
+    /// of the position error learns a gain at all.
+    int effectHorizon = 1;
     /// d [steps]: the measurement's age in the closed-loop model (ClosedLoop only), >= 0.
     int modelDelay = 0;
     /// How a gradient becomes a step of theta.
@@ -148,6 +155,9 @@ class PriscaController : public Controller {
     Eigen::MatrixXd stateEffect_;                 // m x n, dt * B
     Eigen::MatrixXd transition_;                  // n x n, I + dt A (the fitted drift)
     Eigen::MatrixXd stepTransition_;              // n x n, with the error's own kinematics at t
+    Eigen::MatrixXd effectTerm_;                  // n x m scratch: (I + dt A)^i dt B^T
+    Eigen::MatrixXd effectSum_;                   // n x m scratch: their sum over N steps
+    Eigen::MatrixXd effectNext_;                  // n x m scratch
     std::vector<int> referenceHistory_;           // ring of j_t, as errorHistory_
     std::vector<bool> modelValid_;                // per demonstration sample (empty: all)
     Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j

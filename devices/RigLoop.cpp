@@ -46,6 +46,7 @@ RigLoop::RigLoop(FloorCalibration calibration, TrackerSettings tracker,
 
 void RigLoop::startTrial(core::ResetMode mode) {
     controller_->reset(mode);
+    guard_.reset();
     estimator_.reset();
     tracker_.reset();
 }
@@ -61,11 +62,20 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
         return step;
     }
     step.state = estimator_.update(*tracked.pose, frame.steadyNs);
+    if (guard_.tripped()) {  // left the demonstration earlier in this trial: failsafe stays
+        link_.reportControllerFault();
+        step.fault = true;
+        return step;
+    }
     try {
         const core::ControlStep& control = controller_->step(step.state);
         step.action = control.action;
         if (!step.action.allFinite()) {
             throw std::runtime_error("the controller's action is not finite");
+        }
+        if (guard_.check(control.deviation)) {
+            throw std::runtime_error("the car left the demonstration (position deviation over " +
+                                     std::to_string(guard_.distance()) + " m)");
         }
     } catch (const std::exception& e) {
         qCWarning(lcRig) << "controller fault:" << e.what();

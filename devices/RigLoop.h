@@ -5,6 +5,7 @@
 #include "devices/LedTracker.h"
 
 #include "core/Controller.h"
+#include "core/LostTrackGuard.h"
 
 #include <Eigen/Core>
 
@@ -54,6 +55,11 @@ class RigLoop {
     RigStep onFrame(const CameraFrame& frame);
     /// A new trial: the controller resets (warm start keeps what it learnt), the estimator too.
     void startTrial(core::ResetMode mode);
+    /// A car further than this [m] from its matched reference has left the demonstration: the
+    /// link goes to failsafe as on a controller fault (core::LostTrackGuard); 0: never.
+    void setLostTrackDistance(double metres) {
+        guard_ = core::LostTrackGuard(metres, core::PlanarPoseIndices{});
+    }
     core::Controller& controller() { return *controller_; }
 
   private:
@@ -61,6 +67,7 @@ class RigLoop {
     LedTracker tracker_;
     PoseStateEstimator estimator_;
     std::unique_ptr<core::Controller> controller_;
+    core::LostTrackGuard guard_;
     ChannelMap channels_;
     TransmitterLink& link_;
 };

@@ -23,6 +23,7 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
       controller_(controller),
       settings_(settings),
       // The sensor's noise stream is its own, so changing the plant's draws never shifts it.
+      guard_(settings.lostTrackDistance, plant.info().pose),
       sensor_(settings.measurement, mixSeed(settings.seed, 7)) {
     state_ = plant_.reset(settings_.seed, settings_.perturbation);
     sensor_.reset(state_);
@@ -47,25 +48,32 @@ bool EpisodeStepper::finished() const {
 const StepRecord& EpisodeStepper::step() {
     const double t = k_ * plant_.timing().controlPeriod;
     Eigen::VectorXd observation = sensor_.observe(state_);
-    const double before = threadCpuSeconds();
-    const core::ControlStep& control = controller_.step(observation);
-    controllerSeconds_ += threadCpuSeconds() - before;
-    costSum_ += control.cost;
     last_.time = t;
     last_.state = state_;
     last_.observation = std::move(observation);
-    last_.referenceIndex = control.referenceIndex;
-    last_.deviation = control.deviation;
-    last_.action = control.action;
-    last_.referenceAction = control.referenceAction;
-    last_.cost = control.cost;
+    if (!guard_.tripped()) {
+        const double before = threadCpuSeconds();
+        const core::ControlStep& control = controller_.step(last_.observation);
+        controllerSeconds_ += threadCpuSeconds() - before;
+        last_.referenceIndex = control.referenceIndex;
+        last_.deviation = control.deviation;
+        last_.action = control.action;
+        last_.referenceAction = control.referenceAction;
+        last_.cost = control.cost;
+        if (guard_.check(control.deviation)) {
+            last_.action.setZero();  // failsafe from this step on; the controller rests
+        }
+    } else {
+        last_.action.setZero();
+    }
+    costSum_ += last_.cost;
     if (const Eigen::MatrixXd* theta = controller_.learnedParameters()) {
         last_.parameters = theta->reshaped();
     }
     if (settings_.recordSteps) {
         steps_.push_back(last_);
     }
-    state_ = plant_.step(control.action);
+    state_ = plant_.step(last_.action);
     ++k_;
     return last_;
 }
@@ -77,6 +85,7 @@ EpisodeResult EpisodeStepper::result() const {
     result.duration = k_ * plant_.timing().controlPeriod;
     result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
     result.controllerSeconds = controllerSeconds_;
+    result.lostTrack = guard_.tripped();
     result.steps = steps_;
     return result;
 }

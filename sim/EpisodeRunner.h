@@ -3,6 +3,7 @@
 #include "MeasurementModel.h"
 #include "Plant.h"
 #include "core/Controller.h"
+#include "core/LostTrackGuard.h"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,10 @@ struct EpisodeSettings {
     /// Tell the controller how old its observations are (the sensor's latency), so that
     /// trackers compensate it (Controller::setObservationAge). Off: they see age 0.
     bool compensateObservationAge = false;
+    /// Position deviation [m] past which the robot has left the demonstration and the trial
+    /// ends in failsafe: zero action (throttle neutral, steering centred) for the rest of it,
+    /// the controller no longer stepped (core::LostTrackGuard). 0: never.
+    double lostTrackDistance = 0.0;
     bool recordSteps = true;                            ///< keep a StepRecord per control step
 };
 
@@ -51,6 +56,7 @@ struct EpisodeResult {
     /// nothing in the trial depends on it).
     double controllerSeconds = 0.0;
     bool cancelled = false;         ///< stopped by the cancel predicate
+    bool lostTrack = false;         ///< ended in failsafe: the robot left the demonstration
 };
 
 /// One trial taken a control step at a time, for callers that pace it themselves (the
@@ -81,6 +87,7 @@ class EpisodeStepper {
     Plant& plant_;
     core::Controller& controller_;
     EpisodeSettings settings_;
+    core::LostTrackGuard guard_;
     MeasurementModel sensor_;
     Eigen::VectorXd state_;
     StepRecord last_;

@@ -48,6 +48,12 @@ PlantProfile slideCar(const PlantInfo& info) {
     p.measurement.latencySteps = 1;
     p.measurement.dropProbability = 0.02;
     p.settleTime = 2.0;
+    // Two metres off the path in an arena of a few metres: the car has left the demonstration
+    // (a reference stalled on a full-throttle sample, feedback saturated on metres of error)
+    // and goes to failsafe instead of driving into the wall. On development cells it leaves
+    // PD+H+LSD as it was (5.90 cm), PRISCA 10.98 -> 11.13 cm, and stops PGSD's runaways
+    // (35.98 -> 15.48 cm, worst trial 5.8 -> 2.9 m).
+    p.lostTrackDistance = 2.0;
     p.prisca.horizon = 10;
     p.prisca.gamma = 0.95;
     p.prisca.stepSize.scale = 1.0;
@@ -217,6 +223,7 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
         episode.measurement.dropProbability = 0.0;
     }
     episode.compensateObservationAge = compensateLatency;
+    episode.lostTrackDistance = lostTrackDistance;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;
     episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;

@@ -42,6 +42,8 @@ struct PlantProfile {
     /// one trial 21 m; PRISCA 10.98 -> 26.20 cm): a least-state-deviation reference that stalls
     /// on a full-throttle sample once the car leaves every later state needs a guard first.
     bool compensateLatency = false;
+    /// Position deviation [m] past which a trial ends in failsafe (EpisodeSettings); 0: never.
+    double lostTrackDistance = 0.0;
     core::PriscaParameters prisca;      ///< PRISCA defaults
     /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
     /// wherever the path ends), time-driven where it is a timed trajectory (the acrobot's

@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
         if (k == "grad")
             p.prisca.gradient = v ? core::PriscaParameters::Gradient::ClosedLoop
                                   : core::PriscaParameters::Gradient::OneStep;
+        else if (k == "N")
+            p.prisca.effectHorizon = (int)v;
         else if (k == "delay")
             p.prisca.modelDelay = (int)v;
         else if (k == "scale")
@@ -67,9 +69,18 @@ int main(int argc, char** argv) {
             p.prisca.damping = v;
         else if (k == "explained")
             p.priscaLearnWhereExplained = v != 0.0;
+        else if (k == "lost")
+            p.lostTrackDistance = v;
         else if (k == "age")
             p.compensateLatency = v != 0.0;
     }
+    // NOISE / LAT / DROP: the sensor's parts on their own (noise scale, latency, drop chance).
+    if (getenv("NOISE"))
+        p.measurement.noise *= atof(getenv("NOISE"));
+    if (getenv("LAT"))
+        p.measurement.latencySteps = atoi(getenv("LAT"));
+    if (getenv("DROP"))
+        p.measurement.dropProbability = atof(getenv("DROP"));
     if (getenv("FEATURES")) {
         // FEATURES="0:2,3:1,c:0.1|1:4,2:1,c:0": per channel, deviation index:scale or c:scale.
         std::vector<std::vector<core::FeatureTerm>> channels;
@@ -172,6 +183,10 @@ int main(int argc, char** argv) {
             s.methods = {method};
             s.seed = set;
             s.trials = 10;
+            if (getenv("PERT"))
+                s.perturbation = atof(getenv("PERT"));
+            if (getenv("SENSOR"))
+                s.sensor = atof(getenv("SENSOR"));
             auto r = sim::runTable1(s, demo, p, fit.b);
             auto rows = sim::table1Rows(r);
             cellPos.push_back(rows[0].position.meanAbsoluteError);

@@ -38,7 +38,7 @@ constexpr int kTrials = 10;
 struct Setting {
     // PRISCA (and PGSD: stepScale is its fixed step, horizon its H)
     double stepScale = 3, beta = 3000, gamma = 0.9, bound = 1;
-    int horizon = 15, trainingTrials = 16, responseSteps = 1;
+    int horizon = 15, trainingTrials = 16, responseSteps = 1, effectHorizon = 1;
     double lon = 1, vx = 0.3, throttleBias = 0, lat = 2, psi = 0.3, steeringBias = 0.1;
     // shared
     double weightPsi = 0.3, weightVelocity = 0.3;
@@ -113,6 +113,7 @@ sim::PlantProfile profileFor(const Setting& s, const char* method) {
     p.prisca.horizon = s.horizon;
     p.prisca.gamma = s.gamma;
     p.prisca.thetaBound = s.bound;
+    p.prisca.effectHorizon = s.effectHorizon;
     return p;
 }
 
@@ -164,6 +165,7 @@ Setting draw(std::mt19937& g, const char* method) {
         // The matching window and the fit's response horizon are the profile's and the fit's
         // own (shared with PD+LSD and the window), so they are not PRISCA's to choose here.
         s.bound = pick(g, {0.5, 1.0, 2.0, 4.0});
+        s.effectHorizon = pick(g, {1, 3, 5, 7, 10});
     } else if (!std::strcmp(method, "pgsd")) {
         s.stepScale = pick(g, {0.01, 0.03, 0.1, 0.3, 1.0, 3.0});
         s.horizon = pick(g, {5, 10, 15});
@@ -196,6 +198,7 @@ Setting current(const char* method) {
     s.horizon = !std::strcmp(method, "pgsd") ? p.pgsd.horizon : p.prisca.horizon;
     s.gamma = p.prisca.gamma;
     s.bound = !std::strcmp(method, "pgsd") ? p.pgsd.thetaBound : p.prisca.thetaBound;
+    s.effectHorizon = p.prisca.effectHorizon;
     const auto& t = p.features.terms();
     s.lon = t[0][0].scale; s.vx = t[0][1].scale; s.throttleBias = t[0][2].scale;
     s.lat = t[1][0].scale; s.psi = t[1][1].scale; s.steeringBias = t[1][2].scale;
@@ -239,11 +242,11 @@ int main(int argc, char** argv) {
     for (int i = 0; i < std::min(5, count); ++i) {
         const Setting& s = results[i].second;
         std::printf("%d. tuning score %.2f | alpha0/step %g beta %g H %d gamma %g bound %g features (%g %g %g | %g %g %g) "
-                    "W (psi %g, v %g) training %d window %d R %d | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d "
+                    "W (psi %g, v %g) training %d window %d R %d N %d | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d "
                     "| ILC scale %g lead %d cutoff %g feedback %g\n",
                     i + 1, results[i].first, s.stepScale, s.beta, s.horizon, s.gamma, s.bound, s.lon, s.vx,
                     s.throttleBias, s.lat, s.psi, s.steeringBias, s.weightPsi, s.weightVelocity, s.trainingTrials,
-                    s.window, s.responseSteps, s.kpThrottle, s.kpSteering, s.kdThrottle, s.kdSteering, s.comboVx,
+                    s.window, s.responseSteps, s.effectHorizon, s.kpThrottle, s.kpSteering, s.kdThrottle, s.kdSteering, s.comboVx,
                     s.comboPsi, s.comboR, s.pdHorizon, s.ilcScale, s.ilcLead, s.ilcCutoff, s.ilcFeedback);
     }
     return 0;

@@ -405,6 +405,43 @@ class TestPriscaController : public QObject {
                  qPrintable(QString::number(oneStep.back())));
     }
 
+    void effectHorizon_letsAPositionFeatureLearnThroughTheDrift() {
+        // A double integrator: the control moves only the velocity (B = (0, 1)), the position
+        // follows the velocity (A = [0 1; 0 0]). A robot 0.1 ahead of its resting demonstration:
+        // the one-step effect dt B has no position in it, so the position gain learns nothing;
+        // eq. 5's sum over N steps sees the position the push will cause, and the gain turns
+        // negative (push back).
+        const double dt = 0.05;
+        auto demo = std::make_shared<Demonstration>(prisca::test::namedDemonstration(30, 2, 1, dt));
+        demo->states.setZero();
+        demo->actions.setZero();
+        auto firstGain = [&](int effectHorizon) {
+            PriscaParameters parameters;
+            parameters.horizon = 3;
+            parameters.useBaseline = false;
+            parameters.effectHorizon = effectHorizon;
+            PriscaController prisca(problemFor(demo, MatchingParameters::Mode::TimeDriven, 10.0),
+                                    FeatureMap::deviationFeatures(1, {0}),
+                                    (Eigen::MatrixXd(1, 2) << 0.0, 1.0).finished(), parameters);
+            prisca.setDrift((Eigen::MatrixXd(2, 2) << 0.0, 1.0, 0.0, 0.0).finished());
+            prisca.step(Eigen::Vector2d(0.1, 0.0));
+            return prisca.theta()(0, 0);
+        };
+        QCOMPARE(firstGain(1), 0.0);
+        const double three = firstGain(3), ten = firstGain(10);
+        QVERIFY2(three < 0.0 && ten < three, qPrintable(QStringLiteral("%1 %2").arg(three).arg(ten)));
+        // sum_{i<N} (I + dt A)^i dt B = (dt^2 N(N-1)/2, N dt): the position part grows as N^2.
+        QVERIFY2(std::abs(ten / three - 45.0 / 3.0) < 1e-9, qPrintable(QString::number(ten / three)));
+        std::mt19937 rng(61);
+        auto other = randomDemonstration(10, 2, 1, 0.05, rng);
+        PriscaParameters zero;
+        zero.effectHorizon = 0;
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            PriscaController(problemFor(other, MatchingParameters::Mode::TimeDriven, 1.0),
+                             FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2), zero));
+    }
+
     void construction_rejectsInconsistentShapes() {
         std::mt19937 rng(61);
         auto demo = randomDemonstration(10, 2, 1, 0.05, rng);

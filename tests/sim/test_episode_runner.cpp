@@ -42,6 +42,26 @@ struct SlideCarSetup {
     }
 };
 
+// Full throttle, full left, whatever it sees; its deviation is the pose itself (a demonstration
+// that stands at the origin). Counts its steps.
+class Runaway : public core::Controller {
+  public:
+    QString name() const override { return QStringLiteral("runaway"); }
+    void reset(core::ResetMode) override { steps = 0; }
+    const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override {
+        record.step = steps++;
+        record.action = Eigen::Vector2d(1.0, 1.0);
+        record.referenceAction = Eigen::Vector2d::Zero();
+        record.deviation = observation;
+        return record;
+    }
+    std::unique_ptr<core::Controller> clone() const override {
+        return std::make_unique<Runaway>(*this);
+    }
+    core::ControlStep record;
+    int steps = 0;
+};
+
 }  // namespace
 
 class TestEpisodeRunner : public QObject {
@@ -163,6 +183,42 @@ class TestEpisodeRunner : public QObject {
         const EpisodeResult cancelled = runEpisode(car, *playback, s, [&] { return ++polls > 10; });
         QVERIFY(cancelled.cancelled);
         QCOMPARE(cancelled.stepCount, 10);
+    }
+
+    void lostTrack_endsTheTrialInFailsafe() {
+        SlideCarSetup setup;
+        for (const double distance : {0.0, 0.5}) {
+            SlideCar car;
+            Runaway controller;
+            EpisodeSettings settings = setup.settings(4);
+            settings.lostTrackDistance = distance;
+            const EpisodeResult r = runEpisode(car, controller, settings);
+            int tripped = -1;
+            for (int k = 0; k < static_cast<int>(r.steps.size()) && tripped < 0; ++k) {
+                if (r.steps[k].observation.head<2>().norm() > 0.5) {
+                    tripped = k;
+                }
+            }
+            QVERIFY(tripped > 0);  // full throttle leaves half a metre either way
+            QCOMPARE(r.lostTrack, distance > 0.0);
+            if (distance == 0.0) {
+                QCOMPARE(controller.steps, r.stepCount);  // never guarded: driven to the end
+                continue;
+            }
+            // From the step that saw it on: zero action, the controller no longer asked.
+            QCOMPARE(controller.steps, tripped + 1);
+            for (int k = tripped; k < static_cast<int>(r.steps.size()); ++k) {
+                QVERIFY(r.steps[k].action.isZero());
+            }
+            QVERIFY(!r.steps[tripped - 1].action.isZero());
+        }
+        // A deviation that is not a number trips it too.
+        core::LostTrackGuard guard(1.0, core::PlanarPoseIndices{});
+        QVERIFY(!guard.check(Eigen::Vector3d(0.5, 0.5, 3.0)));
+        QVERIFY(guard.check(Eigen::Vector3d(std::nan(""), 0.0, 0.0)));
+        guard.reset();
+        QVERIFY(!guard.tripped());
+        QVERIFY(!core::LostTrackGuard(1.0, std::nullopt).check(Eigen::Vector3d(9.0, 9.0, 0.0)));
     }
 
     void parallelTrials_sameResultsWhateverTheThreadCount() {
