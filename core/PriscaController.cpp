@@ -56,6 +56,22 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     errorHistory_.setZero(n, ring);
     referenceHistory_.assign(ring, 0);
     stepTransition_.setZero(n, n);
+    const PdParameters& prior = parameters_.prior;
+    if (prior.kp.size() != 0) {
+        if (prior.errorCombination.rows() != m || prior.errorCombination.cols() != n ||
+            prior.kp.size() != m || prior.kd.size() != m || prior.horizon < 0) {
+            throw std::invalid_argument(
+                "PriscaController: the prior's error combination must be m x n, its gains of "
+                "size m, its horizon >= 0");
+        }
+        for (int c = 1; c <= prior.horizon + 1; ++c) {
+            priorWeights_.push_back(nestedExpectationWeights(c));
+        }
+        priorSignals_.setZero(m, prior.horizon + 1);
+    }
+    priorSignal_.setZero(m);
+    priorPrevious_.setZero(m);
+    priorAction_.setZero(m);
     effectTerm_.setZero(n, m);
     effectSum_.setZero(n, m);
     effectNext_.setZero(n, m);
@@ -145,6 +161,10 @@ void PriscaController::closedLoopTerms(int k, int count) {
             }
         }
     }
+    if (parameters_.prior.kp.size() != 0) {
+        // The prior's proportional part closes the loop too (its smoothing and rate left out).
+        feedbackGain_.noalias() -= parameters_.prior.kp.asDiagonal() * parameters_.prior.errorCombination;
+    }
     // S over the window, from 0 at its first sample: what theta changed in the errors since.
     const int first = k - count + 1;
     sensitivity_[0].setZero();
@@ -222,6 +242,9 @@ void PriscaController::reset(ResetMode mode) {
     smoothedG_.setZero();
     alpha_ = 0.0;
     smoothedCost_ = 0.0;
+    priorSignals_.setZero();
+    priorSignal_.setZero();
+    priorPrevious_.setZero();
     if (mode == ResetMode::Cold) {
         theta_ = initialTheta_;
         learningStep_ = 0;
@@ -339,6 +362,26 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         std::min(j + std::min(age_, k), static_cast<int>(referenceActions_.cols()) - 1));
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
+    if (parameters_.prior.kp.size() != 0) {
+        // The PD law the policy starts from, as PdController forms it.
+        const PdParameters& prior = parameters_.prior;
+        const int ring = prior.horizon + 1;
+        priorSignals_.col(k % ring).noalias() = prior.errorCombination * e;
+        const int samples = std::min(k, prior.horizon) + 1;
+        const Eigen::VectorXd& weights = priorWeights_[samples - 1];
+        priorSignal_.setZero();
+        for (int t = 0; t < samples; ++t) {
+            priorSignal_ += weights[t] * priorSignals_.col((k - samples + 1 + t) % ring);
+        }
+        if (k > 0) {
+            priorAction_ = (priorSignal_ - priorPrevious_) / problem_.demonstration->dt;
+        } else {
+            priorAction_.setZero();  // the rate: none before a second sample
+        }
+        priorPrevious_ = priorSignal_;
+        record_.action -= prior.kp.cwiseProduct(priorSignal_);
+        record_.action -= prior.kd.cwiseProduct(priorAction_);
+    }
     problem_.limits.saturate(record_.action);
     record_.step = k;
     ++step_;

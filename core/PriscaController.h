@@ -5,6 +5,7 @@
 #include "InverseDepreciation.h"
 #include "LeastStateDeviationMatcher.h"
 #include "LocalOptimalBaseline.h"
+#include "PdController.h"
 #include "StepSize.h"
 
 #include <Eigen/Core>
@@ -74,6 +75,12 @@ struct PriscaParameters {
     /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
     /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.
     double thetaBound = 0.0;
+    /// A feedback the policy starts from (empty gains: none): u = u* + prior + theta^T phi,
+    /// the prior being the PD law of PdController (combined error, its H-step nested
+    /// expectation, proportional and derivative gains). PRISCA then learns a correction to a
+    /// policy that already holds the robot on the path, instead of building the feedback from
+    /// nothing; theta = 0 is that policy.
+    PdParameters prior;
 };
 
 /// PRISCA as an online controller (Algorithm 1, lines 10-19). Each step:
@@ -158,6 +165,11 @@ class PriscaController : public Controller {
     Eigen::MatrixXd effectTerm_;                  // n x m scratch: (I + dt A)^i dt B^T
     Eigen::MatrixXd effectSum_;                   // n x m scratch: their sum over N steps
     Eigen::MatrixXd effectNext_;                  // n x m scratch
+    Eigen::MatrixXd priorSignals_;                // m x (H'+1) ring of the prior's c . e
+    Eigen::VectorXd priorSignal_;                 // m: its nested expectation, this step
+    Eigen::VectorXd priorPrevious_;               // m: the same, last step
+    Eigen::VectorXd priorAction_;                 // m: the rate of priorSignal_
+    std::vector<Eigen::VectorXd> priorWeights_;   // [c - 1]: nested weights of c samples
     std::vector<int> referenceHistory_;           // ring of j_t, as errorHistory_
     std::vector<bool> modelValid_;                // per demonstration sample (empty: all)
     Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j

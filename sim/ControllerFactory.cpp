@@ -27,6 +27,11 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
     std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
     const Eigen::MatrixXd* theta) {
     if (method == QLatin1String("prisca")) {
+        core::PriscaParameters parameters = profile.prisca;
+        if (profile.priscaFromPd) {
+            parameters.prior = profile.pd;
+            parameters.prior.horizon = profile.pdHorizon;
+        }
         core::TrackingProblem problem =
             profile.trackingProblem(demonstration, profile.priscaMatching);
         if (profile.priscaCostWeights.size() > 0) {
@@ -40,7 +45,7 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
                 *demonstration, profile.mapping, profile.info.deviationModel(), options);
             auto prisca = std::make_unique<core::PriscaController>(
                 std::move(problem), profile.priscaFeatures.value_or(profile.features), fit.b,
-                profile.prisca);
+                parameters);
             prisca->setDrift(fit.a);
             return prisca;
         }
@@ -49,7 +54,7 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
                                           : fittedB;
         auto prisca = std::make_unique<core::PriscaController>(
             std::move(problem), profile.priscaFeatures.value_or(profile.features), model,
-            profile.prisca);
+            parameters);
         if (profile.priscaLearnWhereExplained) {
             prisca->setModelValidity(core::fitActionMapping(*demonstration, profile.mapping,
                                                             profile.info.deviationModel())
@@ -78,6 +83,8 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         paper.step = core::PriscaParameters::Step::Gradient;
         paper.effortWeights.resize(0);
         paper.compensateAge = false;
+        paper.effectHorizon = 1;
+        paper.prior = {};
         core::TrackingProblem problem =
             profile.trackingProblem(demonstration, profile.priscaMatching);
         if (profile.priscaCostWeights.size() > 0) {

@@ -1,6 +1,7 @@
 #include "EpisodeRunner.h"
 
 #include "OracleController.h"
+#include "core/MotionPrediction.h"
 
 #include <ctime>
 
@@ -31,8 +32,10 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
         aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
     }
     // The sensor's latency is known to the loop (on the rig: the frames' timestamps).
-    controller_.setObservationAge(
-        settings_.compensateObservationAge ? settings_.measurement.latencySteps : 0);
+    controller_.setObservationAge(settings_.compensateObservationAge && !settings_.predictLatency
+                                      ? settings_.measurement.latencySteps
+                                      : 0);
+    model_ = plant_.info().deviationModel();
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
 }
@@ -51,6 +54,11 @@ const StepRecord& EpisodeStepper::step() {
     last_.time = t;
     last_.state = state_;
     last_.observation = std::move(observation);
+    if (settings_.predictLatency && settings_.measurement.latencySteps > 0) {
+        core::predictPlanarMotion(
+            model_, settings_.measurement.latencySteps * plant_.timing().controlPeriod,
+            last_.observation);
+    }
     if (!guard_.tripped()) {
         const double before = threadCpuSeconds();
         const core::ControlStep& control = controller_.step(last_.observation);

@@ -54,24 +54,41 @@ PlantProfile slideCar(const PlantInfo& info) {
     // PD+H+LSD as it was (5.90 cm), PRISCA 10.98 -> 11.13 cm, and stops PGSD's runaways
     // (35.98 -> 15.48 cm, worst trial 5.8 -> 2.9 m).
     p.lostTrackDistance = 2.0;
+    p.compensateLatency = true;
     p.prisca.horizon = 10;
     p.prisca.gamma = 0.95;
-    p.prisca.stepSize.scale = 1.0;
     p.prisca.stepSize.beta = 300.0;
-    p.prisca.thetaBound = 0.5;
+    // PRISCA starts from the PD+H+LSD law below and learns, through the closed loop, a
+    // correction on the errors that law leaves out: the heading for the steering (its
+    // combination is lateral only) and the longitudinal position for the throttle. The cost
+    // charges the correction's effort (R = 3 per control: a third of a metre of error is worth
+    // a full-lock correction), which is what makes the update turn round: theta settles per
+    // demonstration with no bound (heading gain -0.115 on fast-180-right, -0.042 on
+    // stick-180-left, -0.008 on keyboard-180-right after 100 trials). On development cells:
+    // R = 1 4.09 cm, 3 3.83 cm, 10 a spin; alpha_0 from 0.03 to 1 all within 0.05 cm, 0.01
+    // learns too slowly to stop a spin.
+    p.priscaFromPd = true;
+    p.priscaFeatures = core::FeatureMap({
+        {{Source::Deviation, 0, 1.0}},
+        {{Source::Deviation, 2, 1.0}},
+    });
+    p.prisca.gradient = core::PriscaParameters::Gradient::ClosedLoop;
+    p.prisca.effortWeights = vector({3.0, 3.0});
+    p.prisca.stepSize.scale = 0.1;
+    p.prisca.thetaBound = 0.0;
     p.pgsd.horizon = 5;
     p.pgsd.stepSize = 0.1;
     p.pgsd.thetaBound = 0.5;
     p.pd.errorCombination = (Eigen::MatrixXd(2, 6) << 1.0, 0, 0, 1.0, 0, 0,  //
                              0, 1.0, 0.0, 0, 0, 0.0)
                                 .finished();
-    p.pd.kp = vector({0.5, 1.0});
-    p.pd.kd = vector({0.0, 0.3});
-    p.pdHorizon = 5;
+    p.pd.kp = vector({1.0, 1.2});
+    p.pd.kd = vector({0.05, 0.3});
+    p.pdHorizon = 4;
     p.ilcLearningScale = 0.03;
     p.ilcLead = 10;
-    p.ilcCutoff = 4.0;
-    p.ilcFeedbackScale = 1.0;
+    p.ilcCutoff = 0.5;
+    p.ilcFeedbackScale = 0.5;
     p.pegasus.scenarios = 4;
     p.pegasus.stepSize = 0.5;
     p.pegasus.perturbation = 0.05;
@@ -213,7 +230,9 @@ PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
 EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, double perturbation,
                                       double sensor) const {
     EpisodeSettings episode;
-    episode.perturbation = {perturbation, perturbation, perturbation};
+    episode.perturbation = {perturbation * perturbationShares.initialState,
+                            perturbation * perturbationShares.parameters,
+                            perturbation * perturbationShares.actuatorNoise};
     episode.measurement = measurement;
     if (episode.measurement.noise.size() > 0) {
         episode.measurement.noise *= sensor;
@@ -224,6 +243,7 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
     }
     episode.compensateObservationAge = compensateLatency;
     episode.lostTrackDistance = lostTrackDistance;
+    episode.predictLatency = predictLatency;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;
     episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;

@@ -44,7 +44,16 @@ struct PlantProfile {
     bool compensateLatency = false;
     /// Position deviation [m] past which a trial ends in failsafe (EpisodeSettings); 0: never.
     double lostTrackDistance = 0.0;
+    /// Observations moved forward by the sensor's latency before every controller sees them
+    /// (EpisodeSettings::predictLatency).
+    bool predictLatency = false;
+    /// Each part of a perturbation level (initial state, parameters, actuator noise) as a share
+    /// of the level: all 1 in every table; an ablation sets one part at a time.
+    Perturbation perturbationShares = Perturbation::realistic();
     core::PriscaParameters prisca;      ///< PRISCA defaults
+    /// PRISCA starts from the PD+H+LSD law (pd, pdHorizon) as its prior
+    /// (PriscaParameters::prior) and learns a correction to it.
+    bool priscaFromPd = false;
     /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
     /// wherever the path ends), time-driven where it is a timed trajectory (the acrobot's
     /// "desired joint angles at each time step", paper V.A).

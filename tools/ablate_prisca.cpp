@@ -31,6 +31,12 @@ int main(int argc, char** argv) {
         if (k == "grad")
             p.prisca.gradient = v ? core::PriscaParameters::Gradient::ClosedLoop
                                   : core::PriscaParameters::Gradient::OneStep;
+        else if (k == "predict")
+            p.predictLatency = v != 0.0;
+        else if (k == "pdH")
+            p.pdHorizon = (int)v;
+        else if (k == "prior")
+            p.priscaFromPd = v != 0.0;
         else if (k == "N")
             p.prisca.effectHorizon = (int)v;
         else if (k == "delay")
@@ -81,6 +87,10 @@ int main(int argc, char** argv) {
         p.measurement.latencySteps = atoi(getenv("LAT"));
     if (getenv("DROP"))
         p.measurement.dropProbability = atof(getenv("DROP"));
+    if (getenv("PV")) {  // PV=initial,parameters,actuator: the perturbation's parts' shares
+        const QStringList v = QString::fromLatin1(getenv("PV")).split(',');
+        p.perturbationShares = {v[0].toDouble(), v[1].toDouble(), v[2].toDouble()};
+    }
     if (getenv("FEATURES")) {
         // FEATURES="0:2,3:1,c:0.1|1:4,2:1,c:0": per channel, deviation index:scale or c:scale.
         std::vector<std::vector<core::FeatureTerm>> channels;
@@ -98,6 +108,7 @@ int main(int argc, char** argv) {
             channels.push_back(terms);
         }
         p.features = core::FeatureMap(channels);
+        p.priscaFeatures = p.features;
     }
     if (getenv("TRACE")) {
         auto demo = std::make_shared<core::Demonstration>(
@@ -122,7 +133,8 @@ int main(int argc, char** argv) {
         auto ctrl = sim::ControllerFactory::create(method, p, demo, fit.b);
         auto plant = sim::PlantCatalog::create("slidecar");
         sim::EpisodeSettings ep = p.episode(*demo, 1.0, 1.0);
-        for (int t = 0; t < 30; ++t) {
+        const int traceTrials = getenv("TRIALS") ? atoi(getenv("TRIALS")) : 30;
+        for (int t = 0; t < traceTrials; ++t) {
             auto e = ep;
             e.seed = sim::mixSeed(999, t);
             e.resetMode = t ? core::ResetMode::WarmStart : core::ResetMode::Cold;
@@ -158,7 +170,8 @@ int main(int argc, char** argv) {
             }
         }
         std::printf("worst %.1f cm, demo %d samples\n", 100 * worst, demo->length());
-        for (size_t k = 0; k < worstRun.steps.size(); k += 10) {
+        const size_t every = getenv("EVERY") ? atoi(getenv("EVERY")) : 10;
+        for (size_t k = 0; k < worstRun.steps.size(); k += every) {
             const sim::StepRecord& r = worstRun.steps[k];
             std::printf("k %3zu x %6.2f y %6.2f psi %6.2f vx %5.2f | j %3d u %5.2f %5.2f u* %5.2f "
                         "%5.2f | e %6.2f %6.2f %6.2f\n",

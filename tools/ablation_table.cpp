@@ -49,16 +49,22 @@ int main(int argc, char** argv) {
     using Profile = sim::PlantProfile;
     using Fit = core::ActionMappingFitOptions;
     const Profile base = Profile::forPlant(sim::PlantCatalog::describe("slidecar"));
-    const int defaultN = base.prisca.effectHorizon;
+    using Gradient = core::PriscaParameters::Gradient;
     std::vector<Variant> variants = {
         {"PRISCA (product default)", "prisca", [](Profile&, Fit&) {}},
-        {defaultN > 1 ? "- eq. 5 truncated to one step (N = 1)" : "- eq. 5 over N = 7 steps",
-         "prisca",
-         [defaultN](Profile& p, Fit&) { p.prisca.effectHorizon = defaultN > 1 ? 1 : 7; }},
-        {"- latency compensated (reference and u* for the observation age)", "prisca",
-         [](Profile& p, Fit&) { p.compensateLatency = true; }},
-        {"- closed-loop gradient (eq. 4 over the window)", "prisca",
-         [](Profile& p, Fit&) { p.prisca.gradient = core::PriscaParameters::Gradient::ClosedLoop; }},
+        {"- learning off (its PD+H+LSD start alone)", "prisca",
+         [](Profile& p, Fit&) { p.prisca.learning = false; }},
+        {"- one-step gradient (eq. 14) instead of the closed loop", "prisca",
+         [](Profile& p, Fit&) {
+             p.prisca.gradient = Gradient::OneStep;
+             p.prisca.effortWeights.resize(0);
+         }},
+        {"- no effort cost (R = 0)", "prisca",
+         [](Profile& p, Fit&) { p.prisca.effortWeights.resize(0); }},
+        {"- from theta = 0 (no PD+H+LSD start)", "prisca",
+         [](Profile& p, Fit&) { p.priscaFromPd = false; }},
+        {"- no latency compensation (every method)", "prisca",
+         [](Profile& p, Fit&) { p.compensateLatency = false; }},
         {"- signs B~ only, no fit", "prisca",
          [](Profile& p, Fit&) { p.priscaModel = Profile::PriscaModel::Signs; }},
         {"- eq. 5 fitted in full (drift A)", "prisca",
@@ -66,15 +72,26 @@ int main(int argc, char** argv) {
              p.priscaModel = Profile::PriscaModel::FittedWithDrift;
              f.drift = true;
          }},
-        {"- no bound on theta", "prisca", [](Profile& p, Fit&) { p.prisca.thetaBound = 0.0; }},
-        {"- no baseline (b = 0)", "prisca", [](Profile& p, Fit&) { p.prisca.useBaseline = false; }},
-        {"- no inverse depreciation (D = 1)", "prisca",
-         [](Profile& p, Fit&) { p.prisca.useInverseDepreciation = false; }},
-        {"- no lost-track failsafe", "prisca", [](Profile& p, Fit&) { p.lostTrackDistance = 0.0; }},
+        {"- no lost-track failsafe (every method)", "prisca",
+         [](Profile& p, Fit&) { p.lostTrackDistance = 0.0; }},
+        {"PRISCA of issue 10 (one-step, theta box 0.5, from 0)", "prisca",
+         [](Profile& p, Fit&) {
+             using Source = core::FeatureTerm::Source;
+             p.priscaFromPd = false;
+             p.priscaFeatures.reset();  // the shared features (2, 1, 0 | 2, 1, 0.1)
+             p.prisca.gradient = Gradient::OneStep;
+             p.prisca.effortWeights.resize(0);
+             p.prisca.stepSize.scale = 1.0;
+             p.prisca.thetaBound = 0.5;
+             p.features = core::FeatureMap(
+                 {{{Source::Deviation, 0, 2.0}, {Source::Deviation, 3, 1.0}, {Source::Constant, 0, 0.0}},
+                  {{Source::Deviation, 1, 2.0}, {Source::Deviation, 2, 1.0}, {Source::Constant, 0, 0.1}}});
+         }},
         {"PRISCA (paper): Algorithm 1 as printed", "prisca-paper", [](Profile&, Fit&) {}},
         {"PD+H+LSD (best baseline)", "pd-h-lsd", [](Profile&, Fit&) {}},
-        {"PD+H+LSD, latency compensated", "pd-h-lsd",
-         [](Profile& p, Fit&) { p.compensateLatency = true; }},
+        {"PD+H+LSD, no latency compensation", "pd-h-lsd",
+         [](Profile& p, Fit&) { p.compensateLatency = false; }},
+        {"PD+LSD", "pd-lsd", [](Profile&, Fit&) {}},
     };
     if (oracle) {
         variants.push_back({"LIMIT (oracle)", "oracle", [](Profile&, Fit&) {}});

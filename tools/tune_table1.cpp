@@ -7,6 +7,7 @@
 // printed with their tuning scores only: no evaluation set is ever looked at here.
 //
 //     tune_table1 prisca|pd-h-lsd|pgsd|ilc [settings, default 400]
+//     tune_table1 pd-h-lsd local      one knob at a time around the profile's setting
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <memory>
 #include <random>
@@ -176,14 +178,14 @@ Setting draw(std::mt19937& g, const char* method) {
         s.ilcCutoff = pick(g, {0.0, 0.5, 1.0, 2.0, 4.0});
         s.ilcFeedback = pick(g, {0.25, 0.5, 1.0, 2.0});
     } else {
-        s.pdHorizon = pick(g, {5, 10, 15});
+        s.pdHorizon = pick(g, {0, 2, 5, 10, 15});
         s.window = pick(g, {20, 40});
         s.kpThrottle = pick(g, {0.25, 0.5, 1.0, 2.0, 4.0});
         s.kpSteering = pick(g, {0.5, 1.0, 2.0, 4.0, 8.0});
         s.kdThrottle = pick(g, {0.0, 0.05, 0.2});
         s.kdSteering = pick(g, {0.0, 0.1, 0.3});
         s.comboVx = pick(g, {0.0, 0.3, 1.0});
-        s.comboPsi = pick(g, {0.0, 0.25, 0.5, 1.0});
+        s.comboPsi = pick(g, {0.0, 0.1, 0.25, 0.5, 1.0});
         s.comboR = pick(g, {0.0, 0.1, 0.3});
     }
     return s;
@@ -225,8 +227,55 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: tune_table1 prisca|pgsd|pd-h-lsd|ilc [settings]\n");
         return 2;
     }
-    const int count = argc > 2 ? std::atoi(argv[2]) : 400;
     const std::vector<Cell> cells = tuningCells();
+    if (argc > 2 && !std::strcmp(argv[2], "local") && !std::strcmp(method, "pd-h-lsd")) {
+        // Coordinate descent from the profile's setting, one knob over its grid at a time, until
+        // no knob improves the tuning score: the neighbourhood a random draw rarely lands in.
+        Setting best = current(method);
+        double bestScore = score(best, method, cells);
+        std::printf("profile's current setting: tuning score %.2f\n", bestScore);
+        struct Knob {
+            const char* name;
+            std::vector<double> grid;
+            std::function<void(Setting&, double)> set;
+        };
+        const std::vector<Knob> knobs = {
+            {"H", {0, 1, 2, 3, 4, 5, 7, 10}, [](Setting& s, double v) { s.pdHorizon = static_cast<int>(v); }},
+            {"kp throttle", {0.25, 0.35, 0.5, 0.7, 1, 1.4, 2, 3}, [](Setting& s, double v) { s.kpThrottle = v; }},
+            {"kp steering", {0.5, 0.7, 0.85, 1, 1.2, 1.4}, [](Setting& s, double v) { s.kpSteering = v; }},
+            {"kd throttle", {0, 0.05, 0.1, 0.2}, [](Setting& s, double v) { s.kdThrottle = v; }},
+            {"kd steering", {0.15, 0.2, 0.3, 0.4, 0.5, 0.6}, [](Setting& s, double v) { s.kdSteering = v; }},
+            {"combo vx", {0.3, 0.5, 0.7, 1, 1.4}, [](Setting& s, double v) { s.comboVx = v; }},
+            {"combo psi", {0, 0.05, 0.1, 0.2}, [](Setting& s, double v) { s.comboPsi = v; }},
+            {"combo r", {0, 0.05}, [](Setting& s, double v) { s.comboR = v; }},
+            {"window", {20, 40, 60}, [](Setting& s, double v) { s.window = static_cast<int>(v); }},
+        };
+        for (int round = 0; round < 6; ++round) {
+            bool moved = false;
+            for (const Knob& knob : knobs) {
+                for (double v : knob.grid) {
+                    Setting s = best;
+                    knob.set(s, v);
+                    const double value = score(s, method, cells);
+                    if (value < bestScore - 1e-9) {
+                        bestScore = value;
+                        best = s;
+                        moved = true;
+                        std::printf("round %d: %s %g -> tuning score %.2f\n", round + 1, knob.name, v, value);
+                        std::fflush(stdout);
+                    }
+                }
+            }
+            if (!moved) {
+                break;
+            }
+        }
+        std::printf("best: tuning score %.2f | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d window %d\n",
+                    bestScore, best.kpThrottle, best.kpSteering, best.kdThrottle, best.kdSteering,
+                    best.comboVx, best.comboPsi, best.comboR, best.pdHorizon, best.window);
+        return 0;
+    }
+    const int count = argc > 2 ? std::atoi(argv[2]) : 400;
     std::mt19937 g(12345);
     std::vector<std::pair<double, Setting>> results;
     for (int i = 0; i < count; ++i) {

@@ -481,13 +481,18 @@ class TestGuiRun : public QObject {
             auto* features = w.find<QTableWidget>("featureScales");
             auto* limits = w.find<QTableWidget>("actionLimits");
             auto* problem = w.find<QLabel>("controllerProblem");
-            const double before = w.window.session().profile().features.terms()[1][0].scale;
+            // PRISCA (the method shown) has features of its own: those are the ones edited.
+            auto edited = [&w] {
+                const auto& profile = w.window.session().profile();
+                return profile.priscaFeatures.value_or(profile.features).terms()[1][0].scale;
+            };
+            const double before = edited();
             features->item(1, 0)->setText(QStringLiteral("lots"));
             QVERIFY2(problem->text().contains("steering"), qPrintable(problem->text()));
-            QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, before);
+            QCOMPARE(edited(), before);
             features->item(1, 0)->setText(QStringLiteral("2.5"));
             QVERIFY(problem->text().isEmpty());
-            QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, 2.5);
+            QCOMPARE(edited(), 2.5);
             // Beyond what the car can do: refused with the range named.
             limits->item(1, 1)->setText(QStringLiteral("3"));
             QVERIFY2(problem->text().contains("[-1, 1]"), qPrintable(problem->text()));
@@ -498,7 +503,8 @@ class TestGuiRun : public QObject {
         }
         Window w;
         QVERIFY(w.window.openSession(path));
-        QCOMPARE(w.window.session().profile().features.terms()[1][0].scale, 2.5);
+        const auto& reopened = w.window.session().profile();
+        QCOMPARE(reopened.priscaFeatures.value_or(reopened.features).terms()[1][0].scale, 2.5);
         QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
         QCOMPARE(w.find<QTableWidget>("actionLimits")->item(1, 1)->text(), QStringLiteral("0.6"));
     }

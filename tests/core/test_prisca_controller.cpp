@@ -2,6 +2,8 @@
 // on a linear plant with a wrong gain, and the PGSD special case.
 #include "TestDemonstrations.h"
 #include "core/ActionMapping.h"
+#include "core/MotionPrediction.h"
+#include "core/PdController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
 
@@ -440,6 +442,79 @@ class TestPriscaController : public QObject {
             std::invalid_argument,
             PriscaController(problemFor(other, MatchingParameters::Mode::TimeDriven, 1.0),
                              FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2), zero));
+    }
+
+    void prior_withThetaZeroIsThePdLawExactly() {
+        // PRISCA starting from a PD law: with theta held at 0 it must be that PD, step by step,
+        // bit for bit (smoothing, rate and saturation included), on a least-state-deviation
+        // reference; once it learns, it departs from it.
+        std::mt19937 rng(17);
+        auto demo = randomDemonstration(80, 3, 2, 0.05, rng);
+        PdParameters pd;
+        pd.errorCombination = (Eigen::MatrixXd(2, 3) << 1, 0, 0.5, 0, 1, 0.25).finished();
+        pd.kp = Eigen::Vector2d(0.8, 1.5);
+        pd.kd = Eigen::Vector2d(0.1, 0.05);
+        pd.horizon = 4;
+        const TrackingProblem problem =
+            problemFor(demo, MatchingParameters::Mode::LeastStateDeviation, 0.7);
+        PdController reference(problem, pd, QStringLiteral("pd-h-lsd"));
+        PriscaParameters held;
+        held.prior = pd;
+        held.learning = false;
+        PriscaParameters learning = held;
+        learning.learning = true;
+        const FeatureMap features = FeatureMap::deviationFeatures(2, {0, 2});
+        PriscaController fixed(problem, features, Eigen::MatrixXd::Ones(2, 3), held);
+        PriscaController learner(problem, features, Eigen::MatrixXd::Ones(2, 3), learning);
+        std::normal_distribution<double> noise(0.0, 0.2);
+        bool departed = false;
+        for (int trial = 0; trial < 2; ++trial) {
+            reference.reset();
+            fixed.reset(ResetMode::WarmStart);
+            learner.reset(ResetMode::WarmStart);
+            for (int k = 0; k < 60; ++k) {
+                Eigen::VectorXd s = demo->states.row(k).transpose();
+                for (int c = 0; c < 3; ++c)
+                    s[c] += noise(rng);
+                const ControlStep& pdStep = reference.step(s);
+                const Eigen::VectorXd u = pdStep.action;
+                const int j = pdStep.referenceIndex;
+                const ControlStep& v = fixed.step(s);
+                QVERIFY2(u == v.action, qPrintable(QStringLiteral("trial %1 step %2").arg(trial).arg(k)));
+                QCOMPARE(v.referenceIndex, j);
+                departed = departed || learner.step(s).action != u;
+            }
+        }
+        QVERIFY(departed);
+    }
+
+    void motionPrediction_movesThePoseAtItsBodyVelocities() {
+        const DeviationModel car = DeviationModel::planarVehicle(6);
+        DeviationModel withVelocities = car;
+        withVelocities.bodyVelocity = BodyVelocityIndices{};
+        // Heading north at 2 m/s forward and 0.5 m/s to its left, not turning: 0.1 s later it
+        // is 0.2 m north and 0.05 m west.
+        Eigen::VectorXd s(6);
+        s << 1.0, 2.0, M_PI / 2, 2.0, 0.5, 0.0;
+        Eigen::VectorXd moved = s;
+        predictPlanarMotion(withVelocities, 0.1, moved);
+        QVERIFY((moved - (Eigen::VectorXd(6) << 0.95, 2.2, M_PI / 2, 2.0, 0.5, 0.0).finished())
+                    .cwiseAbs()
+                    .maxCoeff() < 1e-12);
+        // Turning at 1 rad/s: the heading moves by 0.1 rad, the displacement along the mid-point
+        // heading.
+        s << 0.0, 0.0, 0.0, 1.0, 0.0, 1.0;
+        moved = s;
+        predictPlanarMotion(withVelocities, 0.1, moved);
+        QCOMPARE(moved[2], 0.1);
+        QVERIFY(std::abs(moved[0] - 0.1 * std::cos(0.05)) < 1e-12);
+        QVERIFY(std::abs(moved[1] - 0.1 * std::sin(0.05)) < 1e-12);
+        // Without body velocities (or for no time) nothing moves.
+        moved = s;
+        predictPlanarMotion(car, 0.1, moved);
+        QCOMPARE(moved, s);
+        predictPlanarMotion(withVelocities, 0.0, moved);
+        QCOMPARE(moved, s);
     }
 
     void construction_rejectsInconsistentShapes() {

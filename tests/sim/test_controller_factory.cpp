@@ -4,6 +4,9 @@
 #include "core/IlcController.h"
 #include "core/PriscaController.h"
 #include "sim/ControllerFactory.h"
+#include "sim/DemonstrationStyles.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/TrialMetrics.h"
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
 
@@ -32,6 +35,8 @@ class TestControllerFactory : public QObject {
         QCOMPARE(p.stepSize.scale, 1.0);  // eq. 3 as printed: alpha_k = beta / (k + beta)
         QCOMPARE(p.thetaBound, 0.0);
         QCOMPARE(p.gradient, core::PriscaParameters::Gradient::OneStep);
+        QCOMPARE(p.effectHorizon, 1);
+        QCOMPARE(p.prior.kp.size(), 0);  // from theta = 0, no feedback to start from
         // eq. 8 read literally: the state change against the action change, unconstrained.
         core::ActionMappingFitOptions literal;
         literal.target = core::ActionMappingFitOptions::Target::StateChange;
@@ -48,7 +53,47 @@ class TestControllerFactory : public QObject {
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
         QCOMPARE(prisca->parameters().thetaBound, profile_.prisca.thetaBound);
+        // The slide-car's PRISCA starts from the PD+H+LSD law, the profile's gains and horizon.
+        QVERIFY(profile_.priscaFromPd);
+        QCOMPARE(prisca->parameters().prior.kp, profile_.pd.kp);
+        QCOMPARE(prisca->parameters().prior.kd, profile_.pd.kd);
+        QCOMPARE(prisca->parameters().prior.horizon, profile_.pdHorizon);
         QVERIFY((prisca->stateEffect() - demo_->dt * B).cwiseAbs().maxCoeff() < 1e-15);
+    }
+
+    void prisca_learnsWithoutABoundAndSettles() {
+        // The product's slide-car PRISCA has no bound on theta: 100 consecutive trials on the
+        // realistic plant and sensor (a tuning style, a development seed set) must all park
+        // (nothing diverges), and theta must settle: the last 50 trials move it by at most a
+        // fifth of where it ends.
+        QCOMPARE(profile_.prisca.thetaBound, 0.0);
+        auto demo = std::make_shared<const core::Demonstration>(
+            DemonstrationStyles::record("slidecar", "stick-180-left", 300));
+        const Eigen::MatrixXd B =
+            core::fitActionMapping(*demo, profile_.mapping, profile_.info.deviationModel()).b;
+        auto controller = ControllerFactory::create("prisca", profile_, demo, B);
+        auto plant = PlantCatalog::create("slidecar");
+        Eigen::MatrixXd middle;
+        double worst = 0.0;
+        for (int t = 0; t < 100; ++t) {
+            EpisodeSettings e = profile_.episode(*demo, 1.0, 1.0);
+            e.seed = mixSeed(300, t);
+            e.recordSteps = false;
+            e.resetMode = t ? core::ResetMode::WarmStart : core::ResetMode::Cold;
+            const EpisodeResult r = runEpisode(*plant, *controller, e);
+            QVERIFY(!r.lostTrack);
+            worst = std::max(worst, summarizeTrial(plant->info(), *demo, r).finalPositionError);
+            if (t == 49) {
+                middle = *controller->learnedParameters();
+            }
+        }
+        const Eigen::MatrixXd& end = *controller->learnedParameters();
+        QVERIFY(end.allFinite());
+        QVERIFY2(worst < 0.3, qPrintable(QString::number(worst)));
+        QVERIFY2((end - middle).cwiseAbs().maxCoeff() <= 0.2 * end.cwiseAbs().maxCoeff(),
+                 qPrintable(QStringLiteral("theta %1 %2 -> %3 %4")
+                                .arg(middle(0, 0)).arg(middle(0, 1)).arg(end(0, 0)).arg(end(0, 1))));
+        QVERIFY(end.cwiseAbs().maxCoeff() > 0.0);  // it did learn
     }
 
     void oracle_knowsTheTrialsLength() {

@@ -138,7 +138,8 @@ class TestEpisodeRunner : public QObject {
         QVERIFY(identical(a.finalState, b.finalState));
         QVERIFY(!identical(a.finalState, c.finalState));
         // The record carries what the operator plots: theta (p x m flattened) and the reference.
-        QCOMPARE(a.steps.back().parameters.size(), 6);
+        const auto& features = setup.profile.priscaFeatures.value_or(setup.profile.features);
+        QCOMPARE(a.steps.back().parameters.size(), features.featureCount() * 2);
         QVERIFY(a.steps.back().referenceIndex > 0);
     }
 
