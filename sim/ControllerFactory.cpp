@@ -30,7 +30,8 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         core::PriscaParameters parameters = profile.prisca;
         if (profile.priscaFromPd) {
             parameters.prior = profile.pd;
-            parameters.prior.horizon = profile.pdHorizon;
+            parameters.prior.horizon =
+                profile.priscaPriorHorizon >= 0 ? profile.priscaPriorHorizon : profile.pdHorizon;
         }
         core::TrackingProblem problem =
             profile.trackingProblem(demonstration, profile.priscaMatching);

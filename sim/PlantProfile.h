@@ -51,9 +51,12 @@ struct PlantProfile {
     /// of the level: all 1 in every table; an ablation sets one part at a time.
     Perturbation perturbationShares = Perturbation::realistic();
     core::PriscaParameters prisca;      ///< PRISCA defaults
-    /// PRISCA starts from the PD+H+LSD law (pd, pdHorizon) as its prior
+    /// PRISCA starts from the profile's PD law (pd, with priscaPriorHorizon) as its prior
     /// (PriscaParameters::prior) and learns a correction to it.
     bool priscaFromPd = false;
+    /// The smoothing horizon of that law: -1 for pdHorizon (the slide-car's PD+H+LSD), 0 for
+    /// the plain PD (the acrobot's and the aircraft's baseline).
+    int priscaPriorHorizon = -1;
     /// PRISCA's reference: least-state-deviation where the task is a path (the car parks
     /// wherever the path ends), time-driven where it is a timed trajectory (the acrobot's
     /// "desired joint angles at each time step", paper V.A).
