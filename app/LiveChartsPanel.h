@@ -29,6 +29,8 @@ class LiveChartsPanel : public QWidget {
     explicit LiveChartsPanel(QWidget* parent = nullptr);
 
     /// A new plant: series for its actions and parameters; clears the data.
+    /// Entries of theta the chart has a series for.
+    int parameterCount() const { return static_cast<int>(thetaSeries_.size()); }
     void setPlant(const sim::PlantInfo& info, int parameterCount);
     /// Clears the data (a new run).
     void clear();

@@ -140,6 +140,13 @@ void MainWindow::createPanels() {
 
     connect(session_, &LabSession::demonstrationChanged, this, &MainWindow::showScene);
     connect(session_, &LabSession::plantChanged, this, &MainWindow::showScene);
+    // Another method may have another theta: its chart follows (only then, so a parameter
+    // changed between runs does not clear the charts).
+    connect(session_, &LabSession::controllerChanged, this, [this] {
+        if (chartsPanel_->parameterCount() != parameterCount()) {
+            chartsPanel_->setPlant(session_->profile().info, parameterCount());
+        }
+    });
     connect(runPanel_, &RunPanel::runStarting, this, [this] {
         arena_->clearTrails();
         chartsPanel_->clear();
@@ -159,8 +166,17 @@ void MainWindow::createPanels() {
 void MainWindow::showScene() {
     const sim::PlantProfile& profile = session_->profile();
     arena_->setScene(profile.info, session_->demonstration());
-    chartsPanel_->setPlant(profile.info,
-                           profile.features.featureCount() * profile.features.channelCount());
+    chartsPanel_->setPlant(profile.info, parameterCount());
+}
+
+int MainWindow::parameterCount() const {
+    // theta's shape is the method's: PRISCA may have features of its own (PGSD has the shared).
+    const sim::PlantProfile& profile = session_->profile();
+    const core::FeatureMap& features =
+        session_->method() == QLatin1String("prisca") && profile.priscaFeatures
+            ? *profile.priscaFeatures
+            : profile.features;
+    return features.featureCount() * features.channelCount();
 }
 
 void MainWindow::createMenus() {

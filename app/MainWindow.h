@@ -58,6 +58,8 @@ class MainWindow : public QMainWindow {
     void showAbout();
     void announceLanguage(const QString& code);
     void showScene();
+    /// Entries of theta for the session's method (what the theta chart plots).
+    int parameterCount() const;
     void rememberRecent(const QString& path);
     void updateRecentMenu();
 

@@ -309,6 +309,16 @@ class TestGuiRun : public QObject {
         const QString png = dir.filePath("charts.png");
         QVERIFY2(charts->exportPng(png, &error), qPrintable(error));
         QCOMPARE(QImage(png).size(), QSize(900, 900));
+
+        // The theta chart has one series per entry of the method's theta: PRISCA's own features
+        // on the slide-car, the shared ones for PGSD.
+        const prisca::sim::PlantProfile& profile = w.window.session().profile();
+        const auto count = [](const prisca::core::FeatureMap& f) { return f.featureCount() * f.channelCount(); };
+        QCOMPARE(charts->parameterCount(), count(profile.priscaFeatures.value_or(profile.features)));
+        auto* method = w.find<QComboBox>("method");
+        method->setCurrentIndex(method->findData(QStringLiteral("pgsd")));
+        emit method->activated(method->currentIndex());
+        QCOMPARE(charts->parameterCount(), count(profile.features));
     }
 
     void run_aircraftSamplesCarryTheWindTheCarsDoNot() {
