@@ -19,7 +19,10 @@ namespace prisca::app {
 
 namespace {
 
-constexpr int kSessionVersion = 1;
+// 2: the slide-car's PRISCA starts from the PD+H+LSD law and learns through the closed loop;
+// PRISCA's, the PD's and ILC's parameters were re-tuned with it, so those of a version-1 session
+// are not applied (they would make the new form run away: development cells 3.83 -> 6.01 cm).
+constexpr int kSessionVersion = 2;
 
 QJsonArray vectorToJson(const Eigen::VectorXd& v) {
     QJsonArray a;
@@ -329,10 +332,13 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     }
     core::ActionMappingFitOptions fitOptions;
     const QJsonObject fit = root.value("fit").toObject();
-    const QJsonObject prisca = root.value("prisca").toObject();
     const QJsonObject pgsd = root.value("pgsd").toObject();
-    const QJsonObject pd = root.value("pd").toObject();
-    const QJsonObject ilc = root.value("ilc").toObject();
+    // An earlier version's PRISCA, PD and ILC parameters were tuned for an earlier PRISCA: today's
+    // defaults stand in for them (the operator is told), everything else is read as saved.
+    const bool earlier = root.value("version").toInt(kSessionVersion) < 2;
+    const QJsonObject prisca = earlier ? QJsonObject() : root.value("prisca").toObject();
+    const QJsonObject pd = earlier ? QJsonObject() : root.value("pd").toObject();
+    const QJsonObject ilc = earlier ? QJsonObject() : root.value("ilc").toObject();
     core::PriscaParameters& p = profile.prisca;
     const bool ok =
         readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
@@ -359,7 +365,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     if (!readScales(root, "featureScales", &profile.features, &what)) {
         return fail(what);
     }
-    if (profile.priscaFeatures &&
+    if (profile.priscaFeatures && !earlier &&
         !readScales(root, "priscaFeatureScales", &*profile.priscaFeatures, &what)) {
         return fail(what);
     }
@@ -443,6 +449,9 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     demonstrationSource_ = source;
     scriptedStyle_ = scriptedStyle;
     scriptedSeed_ = scriptedSeed;
+    notice_ = earlier ? tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
+                           "tuned for an earlier PRISCA, so today's defaults are used instead.")
+                      : QString();
     refit();
     emit plantChanged(plant_);
     emit demonstrationChanged();

@@ -69,6 +69,10 @@ class LabSession : public QObject {
     /// Restores a session from JSON as open() does; `source` names it in errors.
     bool fromJson(const QByteArray& json, const QString& source, QString* error);
 
+    /// What the operator should know about the last session read (empty: nothing), e.g. that
+    /// parameters of an earlier version were replaced by today's defaults.
+    const QString& notice() const { return notice_; }
+
   signals:
     /// The plant changed (everything else changed with it).
     void plantChanged(const QString& plant);
@@ -87,6 +91,7 @@ class LabSession : public QObject {
     std::shared_ptr<const core::Demonstration> demonstration_;
     QString demonstrationSource_;
     QString scriptedStyle_;
+    QString notice_;
     std::uint64_t scriptedSeed_ = 1;
     sim::PlantProfile profile_;
     core::ActionMappingFitOptions fitOptions_;

@@ -36,6 +36,7 @@ namespace {
 const QString kProductName = QStringLiteral("PRISCA Lab");
 const QSize kDefaultSize(1280, 800);  // px, used until the operator has sized the window
 constexpr int kStatusMessageMs = 4000;
+constexpr int kNoticeMs = 15000;  // what the operator must read, e.g. replaced parameters
 constexpr int kMaxRecent = 8;
 const char* const kRecentKey = "session/recent";
 const char* const kLastSessionKey = "session/last";  // the session as it was at the last close
@@ -96,6 +97,9 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     connect(run_, &RunController::failed, this,
             [this](const QString& text) { QMessageBox::warning(this, tr("Run"), text); });
     retranslateUi();
+    if (!session_->notice().isEmpty()) {
+        statusBar()->showMessage(session_->notice(), kNoticeMs);  // the last session's
+    }
     showScene();
 
     if (!restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
@@ -255,7 +259,11 @@ bool MainWindow::openSession(const QString& path) {
     }
     sessionPath_ = path;
     rememberRecent(path);
-    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), kStatusMessageMs);
+    statusBar()->showMessage(session_->notice().isEmpty()
+                                 ? tr("Opened %1").arg(QFileInfo(path).fileName())
+                                 : tr("Opened %1. %2").arg(QFileInfo(path).fileName(),
+                                                           session_->notice()),
+                             session_->notice().isEmpty() ? kStatusMessageMs : kNoticeMs);
     return true;
 }
 

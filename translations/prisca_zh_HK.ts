@@ -427,120 +427,125 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="41"/>
+        <location filename="../app/LabSession.cpp" line="44"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="55"/>
+        <location filename="../app/LabSession.cpp" line="58"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="69"/>
+        <location filename="../app/LabSession.cpp" line="72"/>
         <source>&apos;%1&apos; must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="75"/>
+        <location filename="../app/LabSession.cpp" line="78"/>
         <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="105"/>
+        <location filename="../app/LabSession.cpp" line="108"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="111"/>
+        <location filename="../app/LabSession.cpp" line="114"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="119"/>
+        <location filename="../app/LabSession.cpp" line="122"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="159"/>
+        <location filename="../app/LabSession.cpp" line="162"/>
         <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
         <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="174"/>
+        <location filename="../app/LabSession.cpp" line="177"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="279"/>
-        <location filename="../app/LabSession.cpp" line="287"/>
+        <location filename="../app/LabSession.cpp" line="282"/>
+        <location filename="../app/LabSession.cpp" line="290"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="293"/>
+        <location filename="../app/LabSession.cpp" line="296"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="299"/>
+        <location filename="../app/LabSession.cpp" line="302"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="302"/>
+        <location filename="../app/LabSession.cpp" line="305"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="307"/>
+        <location filename="../app/LabSession.cpp" line="310"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="314"/>
+        <location filename="../app/LabSession.cpp" line="317"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="318"/>
+        <location filename="../app/LabSession.cpp" line="321"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="328"/>
+        <location filename="../app/LabSession.cpp" line="331"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="374"/>
+        <location filename="../app/LabSession.cpp" line="380"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="388"/>
+        <location filename="../app/LabSession.cpp" line="394"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="414"/>
+        <location filename="../app/LabSession.cpp" line="420"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="418"/>
+        <location filename="../app/LabSession.cpp" line="424"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="425"/>
+        <location filename="../app/LabSession.cpp" line="431"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="430"/>
+        <location filename="../app/LabSession.cpp" line="436"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="452"/>
+        <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
+        <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
 </context>
 <context>
@@ -664,40 +669,40 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="87"/>
+        <location filename="../app/MainWindow.cpp" line="88"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="97"/>
-        <location filename="../app/MainWindow.cpp" line="303"/>
+        <location filename="../app/MainWindow.cpp" line="98"/>
+        <location filename="../app/MainWindow.cpp" line="327"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="174"/>
-        <location filename="../app/MainWindow.cpp" line="236"/>
+        <location filename="../app/MainWindow.cpp" line="194"/>
+        <location filename="../app/MainWindow.cpp" line="256"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="175"/>
+        <location filename="../app/MainWindow.cpp" line="195"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="186"/>
-        <location filename="../app/MainWindow.cpp" line="249"/>
+        <location filename="../app/MainWindow.cpp" line="206"/>
+        <location filename="../app/MainWindow.cpp" line="273"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="187"/>
+        <location filename="../app/MainWindow.cpp" line="207"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="237"/>
+        <location filename="../app/MainWindow.cpp" line="257"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -706,137 +711,142 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="242"/>
+        <location filename="../app/MainWindow.cpp" line="263"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="254"/>
+        <location filename="../app/MainWindow.cpp" line="264"/>
+        <source>Opened %1. %2</source>
+        <translation>已開啟 %1。%2</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="278"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="290"/>
+        <location filename="../app/MainWindow.cpp" line="314"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="291"/>
+        <location filename="../app/MainWindow.cpp" line="315"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="292"/>
+        <location filename="../app/MainWindow.cpp" line="316"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="293"/>
+        <location filename="../app/MainWindow.cpp" line="317"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="294"/>
+        <location filename="../app/MainWindow.cpp" line="318"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="295"/>
+        <location filename="../app/MainWindow.cpp" line="319"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="296"/>
+        <location filename="../app/MainWindow.cpp" line="320"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="297"/>
+        <location filename="../app/MainWindow.cpp" line="321"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="298"/>
+        <location filename="../app/MainWindow.cpp" line="322"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="299"/>
+        <location filename="../app/MainWindow.cpp" line="323"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="300"/>
+        <location filename="../app/MainWindow.cpp" line="324"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="301"/>
+        <location filename="../app/MainWindow.cpp" line="325"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="302"/>
+        <location filename="../app/MainWindow.cpp" line="326"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="304"/>
+        <location filename="../app/MainWindow.cpp" line="328"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305"/>
+        <location filename="../app/MainWindow.cpp" line="329"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="306"/>
+        <location filename="../app/MainWindow.cpp" line="330"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="307"/>
+        <location filename="../app/MainWindow.cpp" line="331"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="308"/>
+        <location filename="../app/MainWindow.cpp" line="332"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="309"/>
+        <location filename="../app/MainWindow.cpp" line="333"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="311"/>
+        <location filename="../app/MainWindow.cpp" line="335"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326"/>
+        <location filename="../app/MainWindow.cpp" line="350"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="338"/>
+        <location filename="../app/MainWindow.cpp" line="362"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="340"/>
+        <location filename="../app/MainWindow.cpp" line="364"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="344"/>
+        <location filename="../app/MainWindow.cpp" line="368"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="347"/>
+        <location filename="../app/MainWindow.cpp" line="371"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1104,13 +1114,13 @@
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="349"/>
-        <location filename="../app/RigPanel.cpp" line="399"/>
+        <location filename="../app/RigPanel.cpp" line="400"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="351"/>
-        <location filename="../app/RigPanel.cpp" line="400"/>
+        <location filename="../app/RigPanel.cpp" line="401"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
@@ -1130,63 +1140,63 @@
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="385"/>
+        <location filename="../app/RigPanel.cpp" line="386"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="411"/>
+        <location filename="../app/RigPanel.cpp" line="412"/>
         <source>Cannot record to %1: %2</source>
         <translation>無法錄製到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="435"/>
+        <location filename="../app/RigPanel.cpp" line="436"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="476"/>
+        <location filename="../app/RigPanel.cpp" line="477"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="486"/>
+        <location filename="../app/RigPanel.cpp" line="487"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="509"/>
+        <location filename="../app/RigPanel.cpp" line="510"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="539"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="544"/>
+        <location filename="../app/RigPanel.cpp" line="545"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="581"/>
+        <location filename="../app/RigPanel.cpp" line="582"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="622"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
-        <location filename="../app/RigPanel.cpp" line="659"/>
+        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="660"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="644"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1195,232 +1205,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="669"/>
+        <location filename="../app/RigPanel.cpp" line="670"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="698"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="701"/>
+        <location filename="../app/RigPanel.cpp" line="702"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="703"/>
+        <location filename="../app/RigPanel.cpp" line="704"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="759"/>
+        <location filename="../app/RigPanel.cpp" line="760"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="803"/>
+        <location filename="../app/RigPanel.cpp" line="804"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="804"/>
+        <location filename="../app/RigPanel.cpp" line="805"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="805"/>
+        <location filename="../app/RigPanel.cpp" line="806"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="806"/>
+        <location filename="../app/RigPanel.cpp" line="807"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="812"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="814"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="814"/>
+        <location filename="../app/RigPanel.cpp" line="815"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="815"/>
+        <location filename="../app/RigPanel.cpp" line="816"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="816"/>
+        <location filename="../app/RigPanel.cpp" line="817"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817"/>
+        <location filename="../app/RigPanel.cpp" line="818"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="819"/>
+        <location filename="../app/RigPanel.cpp" line="820"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="821"/>
+        <location filename="../app/RigPanel.cpp" line="822"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822"/>
+        <location filename="../app/RigPanel.cpp" line="823"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="824"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="824"/>
+        <location filename="../app/RigPanel.cpp" line="825"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="825"/>
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="827"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="827"/>
+        <location filename="../app/RigPanel.cpp" line="828"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="831"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="831"/>
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="832"/>
+        <location filename="../app/RigPanel.cpp" line="833"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="834"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="836"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="836"/>
+        <location filename="../app/RigPanel.cpp" line="837"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="837"/>
+        <location filename="../app/RigPanel.cpp" line="838"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="838"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="840"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="840"/>
+        <location filename="../app/RigPanel.cpp" line="841"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="841"/>
+        <location filename="../app/RigPanel.cpp" line="842"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="842"/>
+        <location filename="../app/RigPanel.cpp" line="843"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="846"/>
+        <location filename="../app/RigPanel.cpp" line="847"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="848"/>
+        <location filename="../app/RigPanel.cpp" line="849"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="850"/>
+        <location filename="../app/RigPanel.cpp" line="851"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="852"/>
+        <location filename="../app/RigPanel.cpp" line="853"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="854"/>
+        <location filename="../app/RigPanel.cpp" line="855"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="856"/>
+        <location filename="../app/RigPanel.cpp" line="857"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>

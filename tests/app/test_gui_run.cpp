@@ -31,6 +31,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -693,6 +694,45 @@ class TestGuiRun : public QObject {
         QVERIFY2(text.contains("bad.json") && text.contains("homography"), qPrintable(text));
         QCOMPARE(rig->calibration().points.size(), size_t(4));  // unchanged
         QVERIFY(rig->loadCalibration(dir.filePath("cal.json")));
+    }
+
+    void session_ofAnEarlierVersionGetsTodaysTuning() {
+        Window w;
+        QTemporaryDir dir;
+        // A session of an earlier version: its PRISCA/PD/ILC parameters were tuned for an
+        // earlier PRISCA, so today's defaults stand in for them and the operator is told; the
+        // rest (here the matching window) is read as saved. The same values in a session of
+        // today's version are applied.
+        for (const int version : {1, 2}) {
+            const QString old = dir.filePath(QStringLiteral("v%1.json").arg(version));
+            QFile v(old);
+            QVERIFY(v.open(QIODevice::WriteOnly));
+            v.write(QStringLiteral("{ \"format\": \"prisca-session\", \"version\": %1, "
+                                   "\"plant\": \"slidecar\", \"matchingWindow\": 33, "
+                                   "\"prisca\": {\"stepScale\": 3, \"thetaBound\": 1}, "
+                                   "\"pd\": {\"kp\": [0.5, 1]} }")
+                        .arg(version)
+                        .toUtf8());
+            v.close();
+            QVERIFY(w.window.openSession(old));
+            const prisca::sim::PlantProfile& opened = w.window.session().profile();
+            const prisca::sim::PlantProfile defaults =
+                prisca::sim::PlantProfile::forPlant(prisca::sim::PlantCatalog::describe("slidecar"));
+            QCOMPARE(opened.matchingWindow, 33);
+            const QString status = w.window.statusBar()->currentMessage();
+            if (version == 1) {
+                QCOMPARE(opened.prisca.stepSize.scale, defaults.prisca.stepSize.scale);
+                QCOMPARE(opened.prisca.thetaBound, defaults.prisca.thetaBound);
+                QCOMPARE(opened.pd.kp, defaults.pd.kp);
+                QVERIFY2(status.contains("earlier"), qPrintable(status));
+            } else {
+                QCOMPARE(opened.prisca.stepSize.scale, 3.0);
+                QCOMPARE(opened.prisca.thetaBound, 1.0);
+                QCOMPARE(opened.pd.kp, Eigen::Vector2d(0.5, 1.0));
+                QVERIFY2(!status.contains("earlier"), qPrintable(status));
+            }
+        }
+
     }
 
     void badFiles_getAClearMessageAndChangeNothing() {
