@@ -16,6 +16,7 @@ VirtualRig::VirtualRig(VirtualRigSettings settings, std::unique_ptr<core::Contro
       link_(std::make_unique<devices::TransmitterLink>()) {
     loop_ = std::make_unique<devices::RigLoop>(calibration_, settings_.tracker,
                                                std::move(controller), settings_.channels, *link_);
+    loop_->setLostTrackDistance(settings_.lostTrackDistance);
 }
 
 VirtualRig::~VirtualRig() {

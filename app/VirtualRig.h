@@ -31,6 +31,7 @@ struct VirtualRigSettings {
     devices::ChannelMap channels = devices::ChannelMap::car();
     devices::TrackerSettings tracker;
     double perturbation = 1.0;  ///< of the simulated car (start offsets, friction, gains, trim)
+    double lostTrackDistance = 0.0;  ///< [m], the loop's lost-track failsafe (0: none)
 };
 
 /// The whole real-rig loop with no hardware: a simulated slide-car is driven by the bytes the

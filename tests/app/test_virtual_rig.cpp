@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 using namespace prisca;
 
@@ -26,6 +27,30 @@ std::unique_ptr<core::Controller> makeController(const QString& method,
         core::fitActionMapping(**demo, profile.mapping, profile.info.deviationModel()).b;
     return sim::ControllerFactory::create(method, profile, *demo, b);
 }
+
+// Full throttle straight ahead whatever it sees; its deviation is the pose's distance from where
+// the trial started (a demonstration standing there).
+class Runaway : public core::Controller {
+  public:
+    QString name() const override { return QStringLiteral("runaway"); }
+    void reset(core::ResetMode) override { start_.reset(); }
+    const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& s) override {
+        if (!start_) {
+            start_ = s;
+        }
+        record_.action = Eigen::Vector2d(1.0, 0.0);
+        record_.referenceAction = Eigen::Vector2d::Zero();
+        record_.deviation = s - *start_;
+        return record_;
+    }
+    std::unique_ptr<core::Controller> clone() const override {
+        return std::make_unique<Runaway>(*this);
+    }
+
+  private:
+    std::optional<Eigen::VectorXd> start_;
+    core::ControlStep record_;
+};
 
 }  // namespace
 
@@ -55,6 +80,29 @@ class TestVirtualRig : public QObject {
             QVERIFY(t.linkFramesDecoded >= t.frames);
             QVERIFY2(miss < 0.5, qPrintable(QString::number(miss)));
         }
+    }
+
+    void virtualRig_carThatLeavesTheDemonstrationGoesToFailsafe() {
+        // Full throttle for 3 s drives the car many metres away; with the lost-track failsafe at
+        // 0.3 m the link goes neutral once the car is 0.3 m out, and the brakeless car coasts
+        // from the speed it had then to a stop far short of the unguarded run.
+        double travelled[2] = {0.0, 0.0};
+        for (const int guarded : {0, 1}) {
+            app::VirtualRigSettings settings;
+            settings.perturbation = 0.0;
+            settings.lostTrackDistance = guarded ? 0.3 : 0.0;
+            app::VirtualRig rig(settings, std::make_unique<Runaway>());
+            QString error;
+            QVERIFY2(rig.open(&error), qPrintable(error));
+            const app::VirtualRig::Trial t = rig.runTrial(3.0, core::ResetMode::Cold, 5);
+            travelled[guarded] =
+                std::hypot(t.path.back().x - t.path.front().x, t.path.back().y - t.path.front().y);
+        }
+        qInfo("full throttle for 3 s: %.2f m unguarded, %.2f m with the failsafe at 0.3 m",
+              travelled[0], travelled[1]);
+        QVERIFY2(travelled[0] > 3.0, qPrintable(QString::number(travelled[0])));
+        QVERIFY2(travelled[1] > 0.3 && travelled[1] < 0.4 * travelled[0],
+                 qPrintable(QString::number(travelled[1])));
     }
 
     void virtualRig_emergencyStopLeavesTheCarNeutral() {
