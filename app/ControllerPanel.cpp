@@ -5,6 +5,7 @@
 #include "sim/ControllerFactory.h"
 #include "sim/PlantCatalog.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -30,6 +31,9 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       beta_(new QDoubleSpinBox(this)),
       stepScale_(new QDoubleSpinBox(this)),
       thetaBound_(new QDoubleSpinBox(this)),
+      fromPd_(new QCheckBox(this)),
+      gradient_(new QComboBox(this)),
+      effort_(new QDoubleSpinBox(this)),
       window_(new QSpinBox(this)),
       pgsdStep_(new QDoubleSpinBox(this)),
       ilcLearning_(new QDoubleSpinBox(this)),
@@ -64,6 +68,13 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     thetaBound_->setObjectName(QStringLiteral("thetaBound"));
     thetaBound_->setRange(0.0, 1e4);
     thetaBound_->setDecimals(2);
+    fromPd_->setObjectName(QStringLiteral("priscaFromPd"));
+    gradient_->setObjectName(QStringLiteral("priscaGradient"));
+    gradient_->addItem(QString(), static_cast<int>(core::PriscaParameters::Gradient::OneStep));
+    gradient_->addItem(QString(), static_cast<int>(core::PriscaParameters::Gradient::ClosedLoop));
+    effort_->setObjectName(QStringLiteral("effortWeight"));
+    effort_->setRange(0.0, 1e4);
+    effort_->setDecimals(3);
     window_->setObjectName(QStringLiteral("matchingWindow"));
     window_->setRange(0, 100000);
     window_->setSuffix(QStringLiteral(" samples"));
@@ -96,7 +107,8 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
 
     // Each field gets its own label object (retranslateUi() fills in the text).
     for (QWidget* field : std::initializer_list<QWidget*>{
-             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, window_, pgsdStep_,
+             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, fromPd_, gradient_,
+             effort_, window_, pgsdStep_,
              ilcLearning_, ilcLead_, ilcCutoff_}) {
         form_->addRow(new QLabel(this), field);
     }
@@ -111,11 +123,13 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     layout->addStretch(1);
 
     connect(method_, &QComboBox::activated, this, &ControllerPanel::apply);
+    connect(gradient_, &QComboBox::activated, this, &ControllerPanel::apply);
+    connect(fromPd_, &QCheckBox::toggled, this, &ControllerPanel::apply);
     for (QSpinBox* box : {horizon_, window_, ilcLead_}) {
         connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
     for (QDoubleSpinBox* box :
-         {gamma_, beta_, stepScale_, thetaBound_, pgsdStep_, ilcLearning_, ilcCutoff_}) {
+         {gamma_, beta_, stepScale_, thetaBound_, effort_, pgsdStep_, ilcLearning_, ilcCutoff_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
     connect(features_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
@@ -139,6 +153,9 @@ void ControllerPanel::showSession() {
     beta_->setValue(p.prisca.stepSize.beta);
     stepScale_->setValue(p.prisca.stepSize.scale);
     thetaBound_->setValue(p.prisca.thetaBound);
+    fromPd_->setChecked(p.priscaFromPd);
+    gradient_->setCurrentIndex(gradient_->findData(static_cast<int>(p.prisca.gradient)));
+    effort_->setValue(p.prisca.effortWeights.size() ? p.prisca.effortWeights.maxCoeff() : 0.0);
     window_->setValue(p.matchingWindow);
     pgsdStep_->setValue(p.pgsd.stepSize);
     ilcLearning_->setValue(p.ilcLearningScale);
@@ -208,6 +225,13 @@ void ControllerPanel::apply() {
     p.prisca.stepSize.beta = beta_->value();
     p.prisca.stepSize.scale = stepScale_->value();
     p.prisca.thetaBound = thetaBound_->value();
+    p.priscaFromPd = fromPd_->isChecked();
+    p.prisca.gradient = static_cast<core::PriscaParameters::Gradient>(gradient_->currentData().toInt());
+    if (effort_->value() > 0.0) {
+        p.prisca.effortWeights = Eigen::VectorXd::Constant(p.info.actionDimension(), effort_->value());
+    } else {
+        p.prisca.effortWeights.resize(0);
+    }
     p.matchingWindow = window_->value();
     p.pgsd.stepSize = pgsdStep_->value();
     p.ilcLearningScale = ilcLearning_->value();
@@ -297,6 +321,21 @@ void ControllerPanel::retranslateUi() {
     label(thetaBound_, tr("θ bound:"),
           tr("If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 "
              "leaves it free."));
+    thetaBound_->setSpecialValueText(tr("none"));
+    label(fromPd_, tr("Start from the PD law:"),
+          tr("PRISCA's policy is u = u* + the PD law + θᵀφ: θ = 0 already holds the robot on the "
+             "path and PRISCA learns a correction (off: θ = 0 is no feedback at all, as in "
+             "Algorithm 1)."));
+    label(gradient_, tr("Gradient:"),
+          tr("One step: eq. 14 as printed (how the next state moves with θ). Closed loop: eq. 4's "
+             "chain rule carried over the window through the fitted model and the policy's own "
+             "feedback."));
+    gradient_->setItemText(0, tr("One step (eq. 14)"));
+    gradient_->setItemText(1, tr("Closed loop (eq. 4 over H)"));
+    label(effort_, tr("Effort weight R:"),
+          tr("The cost also charges the correction's effort, R (θᵀφ)² per control: what makes "
+             "learning settle without a θ bound. 0: none."));
+    effort_->setSpecialValueText(tr("none"));
     label(window_, tr("Matching window:"),
           tr("How far ahead the least-state-deviation reference may search (eq. 12); 0 searches "
              "the whole demonstration."));

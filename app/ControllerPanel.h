@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -45,6 +46,9 @@ class ControllerPanel : public QWidget {
     QDoubleSpinBox* beta_;
     QDoubleSpinBox* stepScale_;
     QDoubleSpinBox* thetaBound_;
+    QCheckBox* fromPd_;          // PRISCA starts from the PD law (PlantProfile::priscaFromPd)
+    QComboBox* gradient_;        // one-step (eq. 14) or closed loop (eq. 4 over the window)
+    QDoubleSpinBox* effort_;     // R of the correction's effort (0: none)
     QSpinBox* window_;
     QDoubleSpinBox* pgsdStep_;
     QDoubleSpinBox* ilcLearning_;

@@ -234,7 +234,13 @@ QByteArray LabSession::toJson() const {
                        {"stepScale", p.stepSize.scale},
                        {"thetaBound", p.thetaBound},
                        {"useBaseline", p.useBaseline},
-                       {"useInverseDepreciation", p.useInverseDepreciation}};
+                       {"useInverseDepreciation", p.useInverseDepreciation},
+                       {"fromPd", profile_.priscaFromPd},
+                       {"gradient", p.gradient == core::PriscaParameters::Gradient::ClosedLoop
+                                        ? "closed-loop"
+                                        : "one-step"},
+                       {"effortWeight",
+                        p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0}};
     QJsonObject pgsd{{"horizon", profile_.pgsd.horizon},
                      {"stepSize", profile_.pgsd.stepSize},
                      {"thetaBound", profile_.pgsd.thetaBound}};
@@ -361,6 +367,32 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
         readNumber(ilc, "feedbackScale", 0.0, 1e6, &profile.ilcFeedbackScale, &what);
     if (!ok) {
         return fail(what);
+    }
+    // PRISCA's form: where it starts, its gradient and the effort it is charged.
+    if (prisca.contains("fromPd")) {
+        if (!prisca.value("fromPd").isBool()) {
+            return fail(tr("'fromPd' must be true or false"));
+        }
+        profile.priscaFromPd = prisca.value("fromPd").toBool();
+    }
+    if (prisca.contains("gradient")) {
+        const QString gradient = prisca.value("gradient").toString();
+        if (gradient == QLatin1String("closed-loop")) {
+            p.gradient = core::PriscaParameters::Gradient::ClosedLoop;
+        } else if (gradient == QLatin1String("one-step")) {
+            p.gradient = core::PriscaParameters::Gradient::OneStep;
+        } else {
+            return fail(tr("'gradient' must be \"one-step\" or \"closed-loop\""));
+        }
+    }
+    double effort = p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0;
+    if (!readNumber(prisca, "effortWeight", 0.0, 1e6, &effort, &what)) {
+        return fail(what);
+    }
+    if (effort > 0.0) {
+        p.effortWeights = Eigen::VectorXd::Constant(profile.info.actionDimension(), effort);
+    } else {
+        p.effortWeights.resize(0);
     }
     if (!readScales(root, "featureScales", &profile.features, &what)) {
         return fail(what);

@@ -55,184 +55,230 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="165"/>
+        <location filename="../app/ControllerPanel.cpp" line="182"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="166"/>
+        <location filename="../app/ControllerPanel.cpp" line="183"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="167"/>
+        <location filename="../app/ControllerPanel.cpp" line="184"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="169"/>
+        <location filename="../app/ControllerPanel.cpp" line="186"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="180"/>
+        <location filename="../app/ControllerPanel.cpp" line="197"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="180"/>
+        <location filename="../app/ControllerPanel.cpp" line="197"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="186"/>
+        <location filename="../app/ControllerPanel.cpp" line="203"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="228"/>
+        <location filename="../app/ControllerPanel.cpp" line="252"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="242"/>
+        <location filename="../app/ControllerPanel.cpp" line="266"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="284"/>
+        <location filename="../app/ControllerPanel.cpp" line="308"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="288"/>
+        <location filename="../app/ControllerPanel.cpp" line="312"/>
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="289"/>
+        <location filename="../app/ControllerPanel.cpp" line="313"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="290"/>
+        <location filename="../app/ControllerPanel.cpp" line="314"/>
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="291"/>
+        <location filename="../app/ControllerPanel.cpp" line="315"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="292"/>
+        <location filename="../app/ControllerPanel.cpp" line="316"/>
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="293"/>
+        <location filename="../app/ControllerPanel.cpp" line="317"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="294"/>
+        <location filename="../app/ControllerPanel.cpp" line="318"/>
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="295"/>
+        <location filename="../app/ControllerPanel.cpp" line="319"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="297"/>
+        <location filename="../app/ControllerPanel.cpp" line="321"/>
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="298"/>
+        <location filename="../app/ControllerPanel.cpp" line="322"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="300"/>
+        <location filename="../app/ControllerPanel.cpp" line="324"/>
+        <location filename="../app/ControllerPanel.cpp" line="338"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="325"/>
+        <source>Start from the PD law:</source>
+        <translation>由 PD 控制律開始：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="326"/>
+        <source>PRISCA&apos;s policy is u = u* + the PD law + θᵀφ: θ = 0 already holds the robot on the path and PRISCA learns a correction (off: θ = 0 is no feedback at all, as in Algorithm 1).</source>
+        <translation>PRISCA 的策略為 u = u* + PD 控制律 + θᵀφ：θ = 0 已能令機械人保持在路徑上，PRISCA 學習其修正（關閉時：θ = 0 即完全沒有回饋，與演算法 1 相同）。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="329"/>
+        <source>Gradient:</source>
+        <translation>梯度：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="330"/>
+        <source>One step: eq. 14 as printed (how the next state moves with θ). Closed loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
+        <translation>單步：按原文的式 14（下一個狀態如何隨 θ 改變）。閉環：把式 4 的連鎖律經擬合模型及策略本身的回饋延伸至整個時窗。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="333"/>
+        <source>One step (eq. 14)</source>
+        <translation>單步（式 14）</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="334"/>
+        <source>Closed loop (eq. 4 over H)</source>
+        <translation>閉環（式 4，跨 H 步）</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="335"/>
+        <source>Effort weight R:</source>
+        <translation>控制量權重 R：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="336"/>
+        <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound. 0: none.</source>
+        <translation>成本亦計入修正的控制量，每個控制為 R (θᵀφ)²：令學習在沒有 θ 界限時亦會收斂。0：無。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="339"/>
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="301"/>
+        <location filename="../app/ControllerPanel.cpp" line="340"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="303"/>
+        <location filename="../app/ControllerPanel.cpp" line="342"/>
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="303"/>
+        <location filename="../app/ControllerPanel.cpp" line="342"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="304"/>
+        <location filename="../app/ControllerPanel.cpp" line="343"/>
         <source>ILC learning Γ/Kp:</source>
         <translation>ILC 學習 Γ/Kp：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="305"/>
+        <location filename="../app/ControllerPanel.cpp" line="344"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="307"/>
+        <location filename="../app/ControllerPanel.cpp" line="346"/>
         <source>ILC lead:</source>
         <translation>ILC 超前：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="308"/>
+        <location filename="../app/ControllerPanel.cpp" line="347"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="310"/>
+        <location filename="../app/ControllerPanel.cpp" line="349"/>
         <source>ILC Q cutoff:</source>
         <translation>ILC Q 截止頻率：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="311"/>
+        <location filename="../app/ControllerPanel.cpp" line="350"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="314"/>
+        <location filename="../app/ControllerPanel.cpp" line="353"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="315"/>
+        <location filename="../app/ControllerPanel.cpp" line="354"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="316"/>
+        <location filename="../app/ControllerPanel.cpp" line="355"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="313"/>
-        <location filename="../app/ControllerPanel.cpp" line="317"/>
-        <location filename="../app/ControllerPanel.cpp" line="318"/>
+        <location filename="../app/ControllerPanel.cpp" line="352"/>
+        <location filename="../app/ControllerPanel.cpp" line="356"/>
+        <location filename="../app/ControllerPanel.cpp" line="357"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="285"/>
+        <location filename="../app/ControllerPanel.cpp" line="309"/>
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="319"/>
+        <location filename="../app/ControllerPanel.cpp" line="358"/>
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -472,78 +518,88 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="282"/>
-        <location filename="../app/LabSession.cpp" line="290"/>
+        <location filename="../app/LabSession.cpp" line="288"/>
+        <location filename="../app/LabSession.cpp" line="296"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="296"/>
+        <location filename="../app/LabSession.cpp" line="302"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="302"/>
+        <location filename="../app/LabSession.cpp" line="308"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="305"/>
+        <location filename="../app/LabSession.cpp" line="311"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="310"/>
+        <location filename="../app/LabSession.cpp" line="316"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="317"/>
+        <location filename="../app/LabSession.cpp" line="323"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="321"/>
+        <location filename="../app/LabSession.cpp" line="327"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="331"/>
+        <location filename="../app/LabSession.cpp" line="337"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="380"/>
+        <location filename="../app/LabSession.cpp" line="374"/>
+        <source>&apos;fromPd&apos; must be true or false</source>
+        <translation>「fromPd」必須為 true 或 false</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="385"/>
+        <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
+        <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="412"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="394"/>
+        <location filename="../app/LabSession.cpp" line="426"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="420"/>
+        <location filename="../app/LabSession.cpp" line="452"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="424"/>
+        <location filename="../app/LabSession.cpp" line="456"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="431"/>
+        <location filename="../app/LabSession.cpp" line="463"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="436"/>
+        <location filename="../app/LabSession.cpp" line="468"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="452"/>
+        <location filename="../app/LabSession.cpp" line="484"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>

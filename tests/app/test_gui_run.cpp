@@ -14,13 +14,16 @@
 #include "app/RunController.h"
 #include "app/TaskPanel.h"
 #include "core/DemonstrationCsv.h"
+#include "core/PriscaController.h"
 #include "devices/SyntheticCamera.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDir>
 #include <QFile>
 #include <QFormLayout>
@@ -483,7 +486,8 @@ class TestGuiRun : public QObject {
             auto* form = w.find<QWidget>("controllerPanel")->findChild<QFormLayout*>();
             QVERIFY(form);
             for (const char* name : {"method", "horizon", "gamma", "beta", "stepScale",
-                                     "thetaBound", "matchingWindow", "pgsdStep"}) {
+                                     "thetaBound", "priscaFromPd", "priscaGradient",
+                                     "effortWeight", "matchingWindow", "pgsdStep"}) {
                 auto* label = qobject_cast<QLabel*>(form->labelForField(w.find<QWidget>(name)));
                 QVERIFY2(label && !label->text().isEmpty(), name);
             }
@@ -510,6 +514,25 @@ class TestGuiRun : public QObject {
             QCOMPARE(w.window.session().profile().info.actionUpper[1], 1.0);
             limits->item(1, 1)->setText(QStringLiteral("0.6"));
             QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
+            // PRISCA's form: the slide-car's starts from the PD law and learns through the
+            // closed loop with an effort cost; the operator can go back to the paper's start
+            // and gradient.
+            auto* fromPd = w.find<QCheckBox>("priscaFromPd");
+            auto* gradient = w.find<QComboBox>("priscaGradient");
+            auto* effort = w.find<QDoubleSpinBox>("effortWeight");
+            QVERIFY(fromPd->isChecked());
+            QCOMPARE(gradient->currentIndex(), 1);
+            QCOMPARE(effort->value(), 3.0);
+            QCOMPARE(w.find<QDoubleSpinBox>("thetaBound")->text(), QStringLiteral("none"));
+            fromPd->setChecked(false);
+            gradient->setCurrentIndex(0);
+            emit gradient->activated(0);
+            effort->setValue(0.0);
+            QVERIFY(!w.window.session().profile().priscaFromPd);
+            QCOMPARE(w.window.session().profile().prisca.gradient,
+                     prisca::core::PriscaParameters::Gradient::OneStep);
+            QCOMPARE(w.window.session().profile().prisca.effortWeights.size(), 0);
+            effort->setValue(1.5);
             QVERIFY(w.window.saveSession(path));
         }
         Window w;
@@ -518,6 +541,13 @@ class TestGuiRun : public QObject {
         QCOMPARE(reopened.priscaFeatures.value_or(reopened.features).terms()[1][0].scale, 2.5);
         QCOMPARE(w.window.session().profile().info.actionUpper[1], 0.6);
         QCOMPARE(w.find<QTableWidget>("actionLimits")->item(1, 1)->text(), QStringLiteral("0.6"));
+        QVERIFY(!w.window.session().profile().priscaFromPd);
+        QCOMPARE(w.window.session().profile().prisca.gradient,
+                 prisca::core::PriscaParameters::Gradient::OneStep);
+        QCOMPARE(w.window.session().profile().prisca.effortWeights,
+                 Eigen::Vector2d(1.5, 1.5).eval());
+        QVERIFY(!w.find<QCheckBox>("priscaFromPd")->isChecked());
+        QCOMPARE(w.find<QDoubleSpinBox>("effortWeight")->value(), 1.5);
     }
 
     void session_isRememberedBetweenRunsOfTheApplication() {
@@ -749,6 +779,13 @@ class TestGuiRun : public QObject {
         f.close();
         QString text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
         QVERIFY2(text.contains("garbage.json") && text.contains("gamma"), qPrintable(text));
+        QFile f2(garbage);
+        QVERIFY(f2.open(QIODevice::WriteOnly));
+        f2.write("{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
+                 "\"prisca\": {\"gradient\": \"sideways\"} }");
+        f2.close();
+        text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
+        QVERIFY2(text.contains("gradient") && text.contains("closed-loop"), qPrintable(text));
 
         const QString notJson = dir.filePath("not.json");
         QFile g(notJson);
