@@ -11,11 +11,9 @@ IlcController::IlcController(TrackingProblem problem, IlcParameters parameters)
       parameters_(std::move(parameters)) {
     const int n = problem_.demonstration->stateDimension();
     const int m = problem_.demonstration->actionDimension();
-    const PdParameters& pd = parameters_.feedback;
-    if (pd.errorCombination.rows() != m || pd.errorCombination.cols() != n || pd.kp.size() != m ||
-        pd.kd.size() != m || parameters_.learningGain.size() != m) {
-        throw std::invalid_argument(
-            "IlcController: error combination must be m x n, gains and learning gain of size m");
+    feedback_ = PdFeedback(parameters_.feedback, n, m, problem_.demonstration->dt);
+    if (parameters_.learningGain.size() != m) {
+        throw std::invalid_argument("IlcController: the learning gain must be of size m");
     }
     if (parameters_.lead < 0 || !(parameters_.cutoff >= 0.0) || !(parameters_.forgetting >= 0.0) ||
         parameters_.forgetting >= 1.0 || !parameters_.learningGain.allFinite() ||
@@ -24,7 +22,6 @@ IlcController::IlcController(TrackingProblem problem, IlcParameters parameters)
             "IlcController: lead >= 0, cutoff >= 0, forgetting in [0, 1), learning gain >= 0");
     }
     feedforward_.setZero(m, problem_.demonstration->length());
-    previousSignal_.setZero(m);
     record_.action.setZero(m);
     record_.referenceAction.setZero(m);
     record_.deviation.setZero(n);
@@ -42,7 +39,7 @@ void IlcController::reset(ResetMode mode) {
         learn();
     }
     signals_.clear();
-    previousSignal_.setZero();
+    feedback_.reset();
     step_ = 0;
 }
 
@@ -82,23 +79,20 @@ void IlcController::learn() {
 
 const ControlStep& IlcController::step(const Eigen::Ref<const Eigen::VectorXd>& observation) {
     const Demonstration& demo = *problem_.demonstration;
-    const PdParameters& pd = parameters_.feedback;
     const int k = step_;
     const int j = std::min(k, demo.length() - 1);
     // The observation is age_ steps old: its error against the reference of that time.
     const int seen = std::clamp(k - age_, 0, demo.length() - 1);
     problem_.deviation.deviation(observation, demo.states.row(seen).transpose(),
                                  record_.deviation);
-    const Eigen::VectorXd eps = pd.errorCombination * record_.deviation;
-    const Eigen::VectorXd rate =
-        k == 0 ? Eigen::VectorXd::Zero(eps.size()) : Eigen::VectorXd((eps - previousSignal_) / demo.dt);
-    previousSignal_ = eps;
-    signals_.push_back(eps);
+    feedback_.update(record_.deviation);
+    signals_.push_back(feedback_.signal());
 
     record_.step = k;
     record_.referenceIndex = j;
     record_.referenceAction = demo.actions.row(j).transpose();
-    record_.action = record_.referenceAction - pd.kp.cwiseProduct(eps) - pd.kd.cwiseProduct(rate);
+    record_.action = record_.referenceAction;
+    feedback_.apply(record_.action);
     if (k < feedforward_.cols()) {
         record_.action += feedforward_.col(k);
     }

@@ -11,8 +11,9 @@ namespace prisca::core {
 
 /// Tuning of iterative learning control. Plain data.
 struct IlcParameters {
-    /// The feedback in the loop: PD on the time-aligned error (its horizon is ignored); gains of
-    /// zero give pure feedforward learning. Its error combination C (m x n) also forms the error
+    /// The feedback in the loop: PD on the time-aligned error, formed as PdFeedback does (the
+    /// profile's horizon is 0: the raw combined error); gains of zero give pure feedforward
+    /// learning. Its error combination C (m x n) also forms the error
     /// each channel learns from.
     PdParameters feedback;
     /// Learning gain per control (m), >= 0: how much of the combined error eps = C e at k + lead
@@ -57,7 +58,7 @@ class IlcController : public Controller {
     IlcParameters parameters_;
     Eigen::MatrixXd feedforward_;           // m x K
     std::vector<Eigen::VectorXd> signals_;  // eps_k of the trial under way
-    Eigen::VectorXd previousSignal_;
+    PdFeedback feedback_;                   // the PD around the demonstration
     ControlStep record_;
     int step_ = 0;
     int iterations_ = 0;

@@ -2,24 +2,13 @@
 
 #include "Controller.h"
 #include "LeastStateDeviationMatcher.h"
+#include "PdFeedback.h"
 
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <deque>
 
 namespace prisca::core {
-
-/// Gains and variant of the PD baselines (DESIGN.md "Baselines").
-struct PdParameters {
-    /// Error combination c_l (m x n): row l weighs the tracking error components for control l;
-    /// normally B~ (or B), so that "left of the path" becomes "steer right".
-    Eigen::MatrixXd errorCombination;
-    Eigen::VectorXd kp;  ///< proportional gain per control (m), >= 0 [action unit / error unit]
-    Eigen::VectorXd kd;  ///< derivative gain per control (m), >= 0 [action unit * s / error unit]
-    /// Smoothing horizon H [steps] for PD+H; 0 means the raw error (plain PD).
-    int horizon = 0;
-};
 
 /// PD around the demonstration, the paper's comparison family (Table I):
 ///     eps_l = c_l . e_k              (or its H-step nested-expectation smoothing for PD+H)
@@ -44,18 +33,15 @@ class PdController : public Controller {
         matcher_.setAge(age_);
     }
 
-    const PdParameters& parameters() const { return parameters_; }
+    const PdParameters& parameters() const { return feedback_.parameters(); }
     /// The error signal eps (m) of the last step, after smoothing.
-    const Eigen::VectorXd& errorSignal() const { return signal_; }
+    const Eigen::VectorXd& errorSignal() const { return feedback_.signal(); }
 
   private:
     TrackingProblem problem_;
-    PdParameters parameters_;
     QString name_;
     LeastStateDeviationMatcher matcher_;
-    std::deque<Eigen::VectorXd> rawSignals_;  // the last H + 1 values of c . e, oldest first
-    Eigen::VectorXd signal_;
-    Eigen::VectorXd previousSignal_;
+    PdFeedback feedback_;
     ControlStep record_;
     int step_ = 0;
     int age_ = 0;  // observations' age compensated [steps]

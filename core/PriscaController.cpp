@@ -56,22 +56,9 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     errorHistory_.setZero(n, ring);
     referenceHistory_.assign(ring, 0);
     stepTransition_.setZero(n, n);
-    const PdParameters& prior = parameters_.prior;
-    if (prior.kp.size() != 0) {
-        if (prior.errorCombination.rows() != m || prior.errorCombination.cols() != n ||
-            prior.kp.size() != m || prior.kd.size() != m || prior.horizon < 0) {
-            throw std::invalid_argument(
-                "PriscaController: the prior's error combination must be m x n, its gains of "
-                "size m, its horizon >= 0");
-        }
-        for (int c = 1; c <= prior.horizon + 1; ++c) {
-            priorWeights_.push_back(nestedExpectationWeights(c));
-        }
-        priorSignals_.setZero(m, prior.horizon + 1);
+    if (parameters_.prior.kp.size() != 0) {
+        prior_ = PdFeedback(parameters_.prior, n, m, demo.dt);
     }
-    priorSignal_.setZero(m);
-    priorPrevious_.setZero(m);
-    priorAction_.setZero(m);
     effectTerm_.setZero(n, m);
     effectSum_.setZero(n, m);
     effectNext_.setZero(n, m);
@@ -242,9 +229,7 @@ void PriscaController::reset(ResetMode mode) {
     smoothedG_.setZero();
     alpha_ = 0.0;
     smoothedCost_ = 0.0;
-    priorSignals_.setZero();
-    priorSignal_.setZero();
-    priorPrevious_.setZero();
+    prior_.reset();
     if (mode == ResetMode::Cold) {
         theta_ = initialTheta_;
         learningStep_ = 0;
@@ -363,24 +348,8 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     if (parameters_.prior.kp.size() != 0) {
-        // The PD law the policy starts from, as PdController forms it.
-        const PdParameters& prior = parameters_.prior;
-        const int ring = prior.horizon + 1;
-        priorSignals_.col(k % ring).noalias() = prior.errorCombination * e;
-        const int samples = std::min(k, prior.horizon) + 1;
-        const Eigen::VectorXd& weights = priorWeights_[samples - 1];
-        priorSignal_.setZero();
-        for (int t = 0; t < samples; ++t) {
-            priorSignal_ += weights[t] * priorSignals_.col((k - samples + 1 + t) % ring);
-        }
-        if (k > 0) {
-            priorAction_ = (priorSignal_ - priorPrevious_) / problem_.demonstration->dt;
-        } else {
-            priorAction_.setZero();  // the rate: none before a second sample
-        }
-        priorPrevious_ = priorSignal_;
-        record_.action -= prior.kp.cwiseProduct(priorSignal_);
-        record_.action -= prior.kd.cwiseProduct(priorAction_);
+        prior_.update(e);  // the PD law the policy starts from, as PdController forms it
+        prior_.apply(record_.action);
     }
     problem_.limits.saturate(record_.action);
     record_.step = k;

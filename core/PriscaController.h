@@ -5,7 +5,7 @@
 #include "InverseDepreciation.h"
 #include "LeastStateDeviationMatcher.h"
 #include "LocalOptimalBaseline.h"
-#include "PdController.h"
+#include "PdFeedback.h"
 #include "StepSize.h"
 
 #include <Eigen/Core>
@@ -165,11 +165,7 @@ class PriscaController : public Controller {
     Eigen::MatrixXd effectTerm_;                  // n x m scratch: (I + dt A)^i dt B^T
     Eigen::MatrixXd effectSum_;                   // n x m scratch: their sum over N steps
     Eigen::MatrixXd effectNext_;                  // n x m scratch
-    Eigen::MatrixXd priorSignals_;                // m x (H'+1) ring of the prior's c . e
-    Eigen::VectorXd priorSignal_;                 // m: its nested expectation, this step
-    Eigen::VectorXd priorPrevious_;               // m: the same, last step
-    Eigen::VectorXd priorAction_;                 // m: the rate of priorSignal_
-    std::vector<Eigen::VectorXd> priorWeights_;   // [c - 1]: nested weights of c samples
+    PdFeedback prior_;                            // the PD law the policy starts from
     std::vector<int> referenceHistory_;           // ring of j_t, as errorHistory_
     std::vector<bool> modelValid_;                // per demonstration sample (empty: all)
     Eigen::MatrixXd errorHistory_;                // n x (H+1+d) ring of e_j
