@@ -2,8 +2,6 @@
 
 #include "NestedExpectation.h"
 
-#include <Eigen/Cholesky>
-
 #include <algorithm>
 #include <stdexcept>
 
@@ -69,14 +67,6 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     sample_.setZero(p * m);
     actionSensitivity_.setZero(m, p * m);
     effort_.setZero(m);
-    curvature_.setZero(p * m, p * m);
-    historyCurvature_.setZero(p * m * p * m, H + 1);
-    direction_.setZero(p * m);
-    if (parameters_.step == PriscaParameters::Step::GaussNewton &&
-        parameters_.gradient != PriscaParameters::Gradient::ClosedLoop) {
-        throw std::invalid_argument(
-            "PriscaController: the Gauss-Newton step needs the closed-loop gradient");
-    }
     if (parameters_.effortWeights.size() != 0 &&
         (parameters_.effortWeights.size() != m || (parameters_.effortWeights.array() < 0.0).any())) {
         throw std::invalid_argument("PriscaController: effort weights must be m values >= 0");
@@ -133,6 +123,12 @@ void PriscaController::setDrift(const Eigen::MatrixXd& a) {
     transition_ = Eigen::MatrixXd::Identity(n, n) + problem_.demonstration->dt * a;
 }
 
+void PriscaController::transitionAt(int j) {
+    problem_.deviation.kinematics(referenceStates_.col(j), stepTransition_);
+    stepTransition_ *= problem_.demonstration->dt;
+    stepTransition_ += transition_;
+}
+
 void PriscaController::closedLoopTerms(int k, int count) {
     // K = d(theta^T phi)/de: every deviation (or state) feature term adds theta * scale.
     const int m = static_cast<int>(theta_.cols());
@@ -169,11 +165,7 @@ void PriscaController::closedLoopTerms(int k, int count) {
         if (age >= first) {
             drive_.noalias() += stateEffect_.transpose() * (feedbackGain_ * sensitivity_[age - first]);
         }
-        // I + dt (A + the error's kinematics at this sample's reference).
-        problem_.deviation.kinematics(referenceStates_.col(referenceHistory_[t % ring]),
-                                      stepTransition_);
-        stepTransition_ *= problem_.demonstration->dt;
-        stepTransition_ += transition_;
+        transitionAt(referenceHistory_[t % ring]);
         sensitivity_[t + 1 - first].noalias() = stepTransition_ * sensitivity_[t - first];
         sensitivity_[t + 1 - first] += drive_;
         if (!modelValid_.empty() && !modelValid_[referenceHistory_[(t + 1) % ring]]) {
@@ -190,12 +182,6 @@ void PriscaController::closedLoopTerms(int k, int count) {
             weightedError_.setZero();  // no lesson from where the model does not hold
         }
         sample_.noalias() = 2.0 * sensitivity_[t - first].transpose() * weightedError_;
-        const bool curvature = parameters_.step == PriscaParameters::Step::GaussNewton;
-        auto jtj = historyCurvature_.col(t % (parameters_.horizon + 1)).reshaped(p * m, p * m);
-        if (curvature) {
-            jtj.noalias() = 2.0 * sensitivity_[t - first].transpose() *
-                            problem_.costWeights.asDiagonal() * sensitivity_[t - first];
-        }
         if (effort) {
             // u_l - u*_l = theta_l^T phi_l(e_t): its change with theta is phi_l in block l,
             // plus K S_t through the errors theta moved.
@@ -206,10 +192,6 @@ void PriscaController::closedLoopTerms(int k, int count) {
                 effort_[l] = parameters_.effortWeights[l] * theta_.col(l).dot(phi);
             }
             sample_.noalias() += 2.0 * actionSensitivity_.transpose() * effort_;
-            if (curvature) {
-                jtj.noalias() += 2.0 * actionSensitivity_.transpose() *
-                                 parameters_.effortWeights.asDiagonal() * actionSensitivity_;
-            }
         }
         historyA_.col(t % (parameters_.horizon + 1)) = sample_;
     }
@@ -263,9 +245,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     } else if (parameters_.effectHorizon > 1) {
         // sum_{i<N} (I + dt (A + kinematics at s*_j))^i dt B^T: what holding u_k for N steps
         // does to the error (eq. 5 before its truncation).
-        problem_.deviation.kinematics(referenceStates_.col(j), stepTransition_);
-        stepTransition_ *= problem_.demonstration->dt;
-        stepTransition_ += transition_;
+        transitionAt(j);
         effectTerm_ = stateEffect_.transpose();
         effectSum_ = effectTerm_;
         for (int i = 1; i < parameters_.effectHorizon; ++i) {
@@ -288,7 +268,6 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     const Eigen::VectorXd& w = windowWeights_[count - 1];
     smoothedA_.setZero();
     smoothedG_.setZero();
-    curvature_.setZero();
     smoothedCost_ = 0.0;
     depreciationOfWindow_.resize(count);  // changes size only while the first window fills
     for (int t = 0; t < count; ++t) {
@@ -299,10 +278,6 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         const auto a = historyA_.col(ring).reshaped(phi_.rows(), m);
         smoothedA_ += w[t] * a;
         smoothedG_ += (w[t] * D) * a;
-        if (parameters_.step == PriscaParameters::Step::GaussNewton) {
-            curvature_ += (w[t] * D) * historyCurvature_.col(ring).reshaped(curvature_.rows(),
-                                                                            curvature_.cols());
-        }
         smoothedCost_ += w[t] * historyCost_[ring];
     }
 
@@ -318,19 +293,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     alpha_ = parameters_.stepSize.at(learningStep_);
     previousTheta_ = theta_;
     if (parameters_.learning && gradient_.allFinite()) {
-        if (parameters_.step == PriscaParameters::Step::GaussNewton) {
-            // (J^T J + mu I) d = g: the gradient measured in the cost's own curvature.
-            const double scale = curvature_.diagonal().mean();
-            if (scale > 0.0 && std::isfinite(scale)) {
-                curvature_.diagonal().array() += parameters_.damping * scale;
-                direction_ = curvature_.ldlt().solve(gradient_.reshaped());
-                if (direction_.allFinite()) {
-                    theta_ -= alpha_ * direction_.reshaped(theta_.rows(), theta_.cols());
-                }
-            }
-        } else {
-            theta_ -= alpha_ * gradient_;
-        }
+        theta_ -= alpha_ * gradient_;
         if (parameters_.thetaBound > 0.0) {
             theta_ = theta_.cwiseMax(-parameters_.thetaBound).cwiseMin(parameters_.thetaBound);
         }

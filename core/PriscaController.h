@@ -53,16 +53,6 @@ struct PriscaParameters {
     int effectHorizon = 1;
     /// d [steps]: the measurement's age in the closed-loop model (ClosedLoop only), >= 0.
     int modelDelay = 0;
-    /// How a gradient becomes a step of theta.
-    enum class Step {
-        Gradient,    ///< theta -= alpha_k g (eq. 2, 3); alpha_0 carries the problem's units
-        GaussNewton  ///< theta -= alpha_k (J^T J + mu I)^-1 g over the window (ClosedLoop
-                     ///< only): the cost is a sum of squares, so its curvature is known from
-                     ///< the same sensitivities, and the step needs no units of its own
-    };
-    Step step = Step::Gradient;
-    /// Levenberg-Marquardt damping mu as a share of J^T J's mean diagonal (GaussNewton).
-    double damping = 0.1;
     /// R per control (m; empty: none): the cost also charges the policy's own effort,
     /// C = e^T W e + (u - u*)^T R (u - u*), as LQR does (ClosedLoop only). Its gradient pulls
     /// every gain back in proportion to how hard it pushes, whatever the model says.
@@ -148,6 +138,8 @@ class PriscaController : public Controller {
 
   private:
     void closedLoopTerms(int k, int count);
+    /// stepTransition_ = I + dt (A + the error's own kinematics at demonstration sample j).
+    void transitionAt(int j);
 
     TrackingProblem problem_;
     FeatureMap featureMap_;
@@ -176,9 +168,6 @@ class PriscaController : public Controller {
     Eigen::VectorXd sample_;                      // (p*m) scratch: a_t
     Eigen::MatrixXd actionSensitivity_;           // m x (p*m) scratch: du_t/dtheta
     Eigen::VectorXd effort_;                      // m scratch: R (u_t - u*_t)
-    Eigen::MatrixXd curvature_;                   // (p*m)^2: the window's J^T J, smoothed
-    Eigen::MatrixXd historyCurvature_;            // (p*m)^2 x (H+1): J_t^T J_t per sample
-    Eigen::VectorXd direction_;                   // (p*m) scratch
     Eigen::VectorXd costWeights_;                 // n
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 

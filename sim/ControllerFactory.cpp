@@ -81,7 +81,6 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         paper.stepSize.scale = 1.0;
         paper.thetaBound = 0.0;
         paper.gradient = core::PriscaParameters::Gradient::OneStep;
-        paper.step = core::PriscaParameters::Step::Gradient;
         paper.effortWeights.resize(0);
         paper.compensateAge = false;
         paper.effectHorizon = 1;

@@ -1,7 +1,6 @@
 #include "EpisodeRunner.h"
 
 #include "OracleController.h"
-#include "core/MotionPrediction.h"
 
 #include <ctime>
 
@@ -32,10 +31,8 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
         aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
     }
     // The sensor's latency is known to the loop (on the rig: the frames' timestamps).
-    controller_.setObservationAge(settings_.compensateObservationAge && !settings_.predictLatency
-                                      ? settings_.measurement.latencySteps
-                                      : 0);
-    model_ = plant_.info().deviationModel();
+    controller_.setObservationAge(
+        settings_.compensateObservationAge ? settings_.measurement.latencySteps : 0);
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
 }
@@ -50,15 +47,9 @@ bool EpisodeStepper::finished() const {
 
 const StepRecord& EpisodeStepper::step() {
     const double t = k_ * plant_.timing().controlPeriod;
-    Eigen::VectorXd observation = sensor_.observe(state_);
     last_.time = t;
     last_.state = state_;
-    last_.observation = std::move(observation);
-    if (settings_.predictLatency && settings_.measurement.latencySteps > 0) {
-        core::predictPlanarMotion(
-            model_, settings_.measurement.latencySteps * plant_.timing().controlPeriod,
-            last_.observation);
-    }
+    last_.observation = sensor_.observe(state_);
     if (!guard_.tripped()) {
         const double before = threadCpuSeconds();
         const core::ControlStep& control = controller_.step(last_.observation);
@@ -68,11 +59,10 @@ const StepRecord& EpisodeStepper::step() {
         last_.action = control.action;
         last_.referenceAction = control.referenceAction;
         last_.cost = control.cost;
-        if (guard_.check(control.deviation)) {
-            last_.action.setZero();  // failsafe from this step on; the controller rests
-        }
-    } else {
-        last_.action.setZero();
+        guard_.check(control.deviation);
+    }
+    if (guard_.tripped()) {
+        last_.action.setZero();  // failsafe from the step that saw it on; the controller rests
     }
     costSum_ += last_.cost;
     if (const Eigen::MatrixXd* theta = controller_.learnedParameters()) {

@@ -29,10 +29,6 @@ struct EpisodeSettings {
     /// ends in failsafe: zero action (throttle neutral, steering centred) for the rest of it,
     /// the controller no longer stepped (core::LostTrackGuard). 0: never.
     double lostTrackDistance = 0.0;
-    /// Move each observation forward by the sensor's latency at its own velocities
-    /// (core::predictPlanarMotion) before the controller sees it, which then takes it for an
-    /// observation of now (age 0). For planar vehicles; on the rig, by the frame's age.
-    bool predictLatency = false;
     bool recordSteps = true;                            ///< keep a StepRecord per control step
 };
 
@@ -92,7 +88,6 @@ class EpisodeStepper {
     core::Controller& controller_;
     EpisodeSettings settings_;
     core::LostTrackGuard guard_;
-    core::DeviationModel model_;  // the plant's, for the latency's prediction
     MeasurementModel sensor_;
     Eigen::VectorXd state_;
     StepRecord last_;

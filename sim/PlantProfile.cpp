@@ -255,7 +255,6 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
     }
     episode.compensateObservationAge = compensateLatency;
     episode.lostTrackDistance = lostTrackDistance;
-    episode.predictLatency = predictLatency;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;
     episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;

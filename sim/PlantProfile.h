@@ -44,9 +44,6 @@ struct PlantProfile {
     bool compensateLatency = false;
     /// Position deviation [m] past which a trial ends in failsafe (EpisodeSettings); 0: never.
     double lostTrackDistance = 0.0;
-    /// Observations moved forward by the sensor's latency before every controller sees them
-    /// (EpisodeSettings::predictLatency).
-    bool predictLatency = false;
     /// Each part of a perturbation level (initial state, parameters, actuator noise) as a share
     /// of the level: all 1 in every table; an ablation sets one part at a time.
     Perturbation perturbationShares = Perturbation::realistic();

@@ -3,8 +3,10 @@
 // no evaluation set is looked at here.
 //
 //     ablate_prisca METHOD [key value ...]    keys: grad delay scale beta bound H baseline D drift
-//                                             signs wv wpsi R gn mu age
-//     TRACE=STYLE ablate_prisca METHOD ...    theta and the final error trial by trial
+//                                             signs wv wpsi R explained age lost prior pdH N
+//     TRACE=STYLE [TRIALS=N] ablate_prisca ... theta and the final error trial by trial
+//     DUMP=STYLE:SET [EVERY=K] ...            the worst trial of a cell, every K-th step
+//     CELLS=1, FEATURES=..., PV=a,b,c, NOISE= LAT= DROP=, PERT= SENSOR=: see below
 
 #include <QStringList>
 
@@ -31,8 +33,6 @@ int main(int argc, char** argv) {
         if (k == "grad")
             p.prisca.gradient = v ? core::PriscaParameters::Gradient::ClosedLoop
                                   : core::PriscaParameters::Gradient::OneStep;
-        else if (k == "predict")
-            p.predictLatency = v != 0.0;
         else if (k == "pdH")
             p.pdHorizon = (int)v;
         else if (k == "prior")
@@ -68,11 +68,6 @@ int main(int argc, char** argv) {
             p.costWeights[2] = v;
         else if (k == "R")
             p.prisca.effortWeights = Eigen::Vector2d(v, v);
-        else if (k == "gn") {
-            if (v)
-                p.prisca.step = core::PriscaParameters::Step::GaussNewton;
-        } else if (k == "mu")
-            p.prisca.damping = v;
         else if (k == "explained")
             p.priscaLearnWhereExplained = v != 0.0;
         else if (k == "lost")

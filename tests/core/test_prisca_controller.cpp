@@ -2,7 +2,6 @@
 // on a linear plant with a wrong gain, and the PGSD special case.
 #include "TestDemonstrations.h"
 #include "core/ActionMapping.h"
-#include "core/MotionPrediction.h"
 #include "core/PdController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
@@ -486,35 +485,6 @@ class TestPriscaController : public QObject {
             }
         }
         QVERIFY(departed);
-    }
-
-    void motionPrediction_movesThePoseAtItsBodyVelocities() {
-        const DeviationModel car = DeviationModel::planarVehicle(6);
-        DeviationModel withVelocities = car;
-        withVelocities.bodyVelocity = BodyVelocityIndices{};
-        // Heading north at 2 m/s forward and 0.5 m/s to its left, not turning: 0.1 s later it
-        // is 0.2 m north and 0.05 m west.
-        Eigen::VectorXd s(6);
-        s << 1.0, 2.0, M_PI / 2, 2.0, 0.5, 0.0;
-        Eigen::VectorXd moved = s;
-        predictPlanarMotion(withVelocities, 0.1, moved);
-        QVERIFY((moved - (Eigen::VectorXd(6) << 0.95, 2.2, M_PI / 2, 2.0, 0.5, 0.0).finished())
-                    .cwiseAbs()
-                    .maxCoeff() < 1e-12);
-        // Turning at 1 rad/s: the heading moves by 0.1 rad, the displacement along the mid-point
-        // heading.
-        s << 0.0, 0.0, 0.0, 1.0, 0.0, 1.0;
-        moved = s;
-        predictPlanarMotion(withVelocities, 0.1, moved);
-        QCOMPARE(moved[2], 0.1);
-        QVERIFY(std::abs(moved[0] - 0.1 * std::cos(0.05)) < 1e-12);
-        QVERIFY(std::abs(moved[1] - 0.1 * std::sin(0.05)) < 1e-12);
-        // Without body velocities (or for no time) nothing moves.
-        moved = s;
-        predictPlanarMotion(car, 0.1, moved);
-        QCOMPARE(moved, s);
-        predictPlanarMotion(withVelocities, 0.0, moved);
-        QCOMPARE(moved, s);
     }
 
     void construction_rejectsInconsistentShapes() {
