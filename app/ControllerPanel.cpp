@@ -210,9 +210,7 @@ void ControllerPanel::showSession() {
 }
 
 const core::FeatureMap& ControllerPanel::editedFeatures() const {
-    const sim::PlantProfile& p = session_.profile();
-    return session_.method() == QLatin1String("prisca") && p.priscaFeatures ? *p.priscaFeatures
-                                                                            : p.features;
+    return session_.profile().featuresOf(session_.method());
 }
 
 void ControllerPanel::apply() {
@@ -276,7 +274,7 @@ void ControllerPanel::apply() {
     if (!problem.isEmpty()) {
         return;  // nothing half-applied; the cell stays for the operator to correct
     }
-    if (session_.method() == QLatin1String("prisca") && p.priscaFeatures) {
+    if (&p.featuresOf(session_.method()) != &p.features) {  // the method has its own
         p.priscaFeatures = core::FeatureMap(terms);
     } else {
         p.features = core::FeatureMap(terms);

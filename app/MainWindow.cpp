@@ -175,11 +175,7 @@ void MainWindow::showScene() {
 
 int MainWindow::parameterCount() const {
     // theta's shape is the method's: PRISCA may have features of its own (PGSD has the shared).
-    const sim::PlantProfile& profile = session_->profile();
-    const core::FeatureMap& features =
-        session_->method() == QLatin1String("prisca") && profile.priscaFeatures
-            ? *profile.priscaFeatures
-            : profile.features;
+    const core::FeatureMap& features = session_->profile().featuresOf(session_->method());
     return features.featureCount() * features.channelCount();
 }
 
@@ -259,11 +255,13 @@ bool MainWindow::openSession(const QString& path) {
     }
     sessionPath_ = path;
     rememberRecent(path);
-    statusBar()->showMessage(session_->notice().isEmpty()
-                                 ? tr("Opened %1").arg(QFileInfo(path).fileName())
-                                 : tr("Opened %1. %2").arg(QFileInfo(path).fileName(),
-                                                           session_->notice()),
-                             session_->notice().isEmpty() ? kStatusMessageMs : kNoticeMs);
+    const QString file = QFileInfo(path).fileName();
+    const QString& notice = session_->notice();
+    if (notice.isEmpty()) {
+        statusBar()->showMessage(tr("Opened %1").arg(file), kStatusMessageMs);
+    } else {
+        statusBar()->showMessage(tr("Opened %1. %2").arg(file, notice), kNoticeMs);
+    }
     return true;
 }
 

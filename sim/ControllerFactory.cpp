@@ -9,6 +9,8 @@
 
 #include <stdexcept>
 
+#include <optional>
+
 namespace prisca::sim {
 
 using Mode = core::MatchingParameters::Mode;
@@ -33,29 +35,24 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
             parameters.prior.horizon =
                 profile.priscaPriorHorizon >= 0 ? profile.priscaPriorHorizon : profile.pdHorizon;
         }
-        core::TrackingProblem problem =
-            profile.trackingProblem(demonstration, profile.priscaMatching);
-        if (profile.priscaCostWeights.size() > 0) {
-            problem.costWeights = profile.priscaCostWeights;
-        }
-        if (profile.priscaModel == PlantProfile::PriscaModel::FittedWithDrift) {
+        Eigen::MatrixXd model = fittedB;
+        std::optional<Eigen::MatrixXd> drift;
+        if (profile.priscaModel == PlantProfile::PriscaModel::Signs) {
+            model = profile.mapping.asDouble();
+        } else if (profile.priscaModel == PlantProfile::PriscaModel::FittedWithDrift) {
             // eq. 5 in full, fitted here on the demonstration: PRISCA's own model.
             core::ActionMappingFitOptions options;
             options.drift = true;
             const core::ActionMappingFit fit = core::fitActionMapping(
                 *demonstration, profile.mapping, profile.info.deviationModel(), options);
-            auto prisca = std::make_unique<core::PriscaController>(
-                std::move(problem), profile.priscaFeatures.value_or(profile.features), fit.b,
-                parameters);
-            prisca->setDrift(fit.a);
-            return prisca;
+            model = fit.b;
+            drift = fit.a;
         }
-        const Eigen::MatrixXd model = profile.priscaModel == PlantProfile::PriscaModel::Signs
-                                          ? profile.mapping.asDouble()
-                                          : fittedB;
         auto prisca = std::make_unique<core::PriscaController>(
-            std::move(problem), profile.priscaFeatures.value_or(profile.features), model,
-            parameters);
+            profile.priscaProblem(demonstration), profile.featuresOf(method), model, parameters);
+        if (drift) {
+            prisca->setDrift(*drift);
+        }
         if (profile.priscaLearnWhereExplained) {
             prisca->setModelValidity(core::fitActionMapping(*demonstration, profile.mapping,
                                                             profile.info.deviationModel())
@@ -66,8 +63,8 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
     if (method == QLatin1String("prisca-paper")) {
         // Algorithm 1 exactly as printed: eq. 8 literally (the state change against the action
         // change, no sign constraint, no robust weights), eq. 15 as printed, alpha_0 = 1 and no
-        // bound on theta; the one-step gradient of eq. 14. The profile gives what the paper
-        // leaves open (features, H, gamma, beta, the cost weights, the reference).
+        // bound on theta; the one-step gradient of eq. 14 from theta = 0. The profile gives what
+        // the paper leaves open (features, H, gamma, beta, the cost weights, the reference).
         core::ActionMappingFitOptions literal;
         literal.target = core::ActionMappingFitOptions::Target::StateChange;
         literal.nonNegative = false;
@@ -85,14 +82,9 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
         paper.compensateAge = false;
         paper.effectHorizon = 1;
         paper.prior = {};
-        core::TrackingProblem problem =
-            profile.trackingProblem(demonstration, profile.priscaMatching);
-        if (profile.priscaCostWeights.size() > 0) {
-            problem.costWeights = profile.priscaCostWeights;
-        }
-        return std::make_unique<core::PriscaController>(
-            std::move(problem), profile.priscaFeatures.value_or(profile.features), fit.b, paper,
-            QStringLiteral("prisca-paper"));
+        return std::make_unique<core::PriscaController>(profile.priscaProblem(demonstration),
+                                                        profile.featuresOf(method), fit.b, paper,
+                                                        QStringLiteral("prisca-paper"));
     }
     if (method == QLatin1String("pgsd")) {
         return std::make_unique<core::PgsdController>(

@@ -273,6 +273,21 @@ core::IlcParameters PlantProfile::ilcParameters() const {
     return parameters;
 }
 
+core::TrackingProblem PlantProfile::priscaProblem(
+    std::shared_ptr<const core::Demonstration> demonstration) const {
+    core::TrackingProblem problem = trackingProblem(std::move(demonstration), priscaMatching);
+    if (priscaCostWeights.size() > 0) {
+        problem.costWeights = priscaCostWeights;
+    }
+    return problem;
+}
+
+const core::FeatureMap& PlantProfile::featuresOf(const QString& method) const {
+    const bool prisca =
+        method == QLatin1String("prisca") || method == QLatin1String("prisca-paper");
+    return prisca && priscaFeatures ? *priscaFeatures : features;
+}
+
 core::TrackingProblem PlantProfile::trackingProblem(
     std::shared_ptr<const core::Demonstration> demonstration,
     core::MatchingParameters::Mode mode) const {

@@ -36,11 +36,10 @@ struct PlantProfile {
     Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
-    /// Whether the trackers compensate the sensor's latency (EpisodeSettings). Off: with it,
-    /// every slide-car method re-tuned did better on the tuning cells (PD+H+LSD's score 12.35 ->
-    /// 9.18) but worse on development cells, where trials ran away (PD+H+LSD 5.90 -> 22.25 cm,
-    /// one trial 21 m; PRISCA 10.98 -> 26.20 cm): a least-state-deviation reference that stalls
-    /// on a full-throttle sample once the car leaves every later state needs a guard first.
+    /// Whether the trackers compensate the sensor's latency (EpisodeSettings): the reference is
+    /// matched for the time the observation was taken. The slide-car's are (with every method
+    /// re-tuned and the lost-track failsafe below); the acrobot's sensor has no latency, the
+    /// aircraft's methods were tuned without.
     bool compensateLatency = false;
     /// Position deviation [m] past which a trial ends in failsafe (EpisodeSettings); 0: never.
     double lostTrackDistance = 0.0;
@@ -97,12 +96,18 @@ struct PlantProfile {
     /// caller's.
     EpisodeSettings episode(const core::Demonstration& demonstration, double perturbation,
                             double sensor) const;
-    /// The tracking problem for a demonstration of this plant (deviation, matching, weights,
-    /// limits); mode chooses least-state-deviation or time-driven matching.
     /// ILC's parameters from the PD gains and the ILC fields above.
     core::IlcParameters ilcParameters() const;
+    /// The tracking problem for a demonstration of this plant (deviation, matching, weights,
+    /// limits); mode chooses least-state-deviation or time-driven matching.
     core::TrackingProblem trackingProblem(std::shared_ptr<const core::Demonstration> demonstration,
                                           core::MatchingParameters::Mode mode) const;
+    /// PRISCA's tracking problem: its own reference mode and cost weights where it has them.
+    core::TrackingProblem priscaProblem(
+        std::shared_ptr<const core::Demonstration> demonstration) const;
+    /// The features a method's theta is over: PRISCA's own (both PRISCA rows) where set, the
+    /// shared ones otherwise.
+    const core::FeatureMap& featuresOf(const QString& method) const;
 };
 
 }  // namespace prisca::sim

@@ -323,6 +323,9 @@ class TestGuiRun : public QObject {
         method->setCurrentIndex(method->findData(QStringLiteral("pgsd")));
         emit method->activated(method->currentIndex());
         QCOMPARE(charts->parameterCount(), count(profile.features));
+        method->setCurrentIndex(method->findData(QStringLiteral("prisca-paper")));
+        emit method->activated(method->currentIndex());
+        QCOMPARE(charts->parameterCount(), count(profile.priscaFeatures.value_or(profile.features)));
     }
 
     void run_aircraftSamplesCarryTheWindTheCarsDoNot() {
