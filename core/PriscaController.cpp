@@ -3,6 +3,7 @@
 #include "NestedExpectation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace prisca::core {
@@ -195,6 +196,30 @@ void PriscaController::closedLoopTerms(int k, int count) {
         }
         historyA_.col(t % (parameters_.horizon + 1)) = sample_;
     }
+    if (parameters_.stepSize.normalised) {
+        // tr(S_k^T W S_k) (+ tr(J_k^T R J_k)): the cost's curvature in theta at this step.
+        const Eigen::MatrixXd& S = sensitivity_[k - first];
+        double curvature = (S.array().square().colwise() * problem_.costWeights.array()).sum();
+        if (effort) {
+            const int slot = k % ring;
+            actionSensitivity_.noalias() = feedbackGain_ * S;
+            for (int l = 0; l < m; ++l) {
+                actionSensitivity_.row(l).segment(l * p, p) +=
+                    featureHistory_.col(slot).segment(l * p, p).transpose();
+            }
+            curvature += (actionSensitivity_.array().square().colwise() *
+                          parameters_.effortWeights.array())
+                             .sum();
+        }
+        addCurvature(curvature);
+    }
+}
+
+void PriscaController::addCurvature(double curvature) {
+    if (std::isfinite(curvature)) {
+        curvatureSum_ += curvature / static_cast<double>(theta_.size());
+        curvatureSteps_ += 1.0;
+    }
 }
 
 void PriscaController::setInitialTheta(const Eigen::MatrixXd& theta) {
@@ -215,6 +240,8 @@ void PriscaController::reset(ResetMode mode) {
     if (mode == ResetMode::Cold) {
         theta_ = initialTheta_;
         learningStep_ = 0;
+        curvatureSum_ = 0.0;
+        curvatureSteps_ = 0.0;
     }
 }
 
@@ -262,6 +289,26 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
             historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) =
                 phi_.col(l) * projected_[l];
         }
+        if (parameters_.stepSize.normalised) {
+            // sum_l |phi_l|^2 (E_l^T W E_l), E_l what holding control l for the window's H
+            // steps does to the error, as the closed-loop form's S carries it: the one-step
+            // effect dt B alone would scale the step to a dead-beat gain.
+            transitionAt(j);
+            effectTerm_ = stateEffect_.transpose();
+            effectSum_ = effectTerm_;
+            for (int i = 1; i < std::max(H, 1); ++i) {
+                effectNext_.noalias() = stepTransition_ * effectTerm_;
+                effectTerm_ = effectNext_;
+                effectSum_ += effectTerm_;
+            }
+            double curvature = 0.0;
+            for (int l = 0; l < m; ++l) {
+                curvature +=
+                    phi_.col(l).squaredNorm() *
+                    (effectSum_.col(l).array().square() * problem_.costWeights.array()).sum();
+            }
+            addCurvature(curvature);
+        }
     }
 
     // 3. Nested-expectation smoothing over the window, with the inverse depreciation.
@@ -291,6 +338,9 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
 
     // 5. Parameter update.
     alpha_ = parameters_.stepSize.at(learningStep_);
+    if (parameters_.stepSize.normalised) {
+        alpha_ = curvatureSum_ > 0.0 ? alpha_ * curvatureSteps_ / curvatureSum_ : 0.0;
+    }
     previousTheta_ = theta_;
     if (parameters_.learning && gradient_.allFinite()) {
         theta_ -= alpha_ * gradient_;

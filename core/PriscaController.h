@@ -138,6 +138,7 @@ class PriscaController : public Controller {
 
   private:
     void closedLoopTerms(int k, int count);
+    void addCurvature(double curvature);
     /// stepTransition_ = I + dt (A + the error's own kinematics at demonstration sample j).
     void transitionAt(int j);
 
@@ -185,6 +186,8 @@ class PriscaController : public Controller {
     Eigen::VectorXd depreciationOfWindow_;
     ControlStep record_;
     double alpha_ = 0.0;
+    double curvatureSum_ = 0.0;  // sum of the steps' curvatures (StepSize::normalised)
+    double curvatureSteps_ = 0.0;
     double smoothedCost_ = 0.0;
     int step_ = 0;          // k within the trial
     int learningStep_ = 0;  // k of alpha_k, kept across warm starts

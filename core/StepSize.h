@@ -15,6 +15,11 @@ struct StepSize {
     /// on the units of e, phi and B, so a fixed alpha_0 = 1 is a choice of units, not a law.
     double scale = 1.0;
     double fixed = 1e-3;  ///< alpha in Fixed mode (>= 0)
+    /// Decaying mode, PRISCA: divide alpha_k by the mean Gauss-Newton curvature of the cost in
+    /// theta seen so far (the mean over steps of tr(dE/dtheta^T W dE/dtheta) per theta entry), so
+    /// that scale is unit-free: the fraction of a scalar Newton step taken per control step,
+    /// whatever the units of e, phi and B (PlantProfile::automatic).
+    bool normalised = false;
 
     /// alpha_k for step k >= 0.
     double at(int step) const {

@@ -48,8 +48,19 @@ std::unique_ptr<core::Controller> ControllerFactory::create(
             model = fit.b;
             drift = fit.a;
         }
+        if (profile.priscaAutomatic) {
+            parameters.stepSize.normalised = true;
+            parameters.stepSize.scale = PlantProfile::automaticStep;
+        }
+        core::TrackingProblem problem = profile.priscaProblem(demonstration);
+        if (profile.priscaAutomatic) {
+            problem.matching.window = PlantProfile::automaticWindow(*demonstration);
+        }
         auto prisca = std::make_unique<core::PriscaController>(
-            profile.priscaProblem(demonstration), profile.featuresOf(method), model, parameters);
+            std::move(problem),
+            profile.priscaAutomatic ? profile.automaticFeatures(method, *demonstration)
+                                    : profile.featuresOf(method),
+            model, parameters);
         if (drift) {
             prisca->setDrift(*drift);
         }

@@ -68,6 +68,18 @@ struct PlantProfile {
     /// gradient propagates through the state's own drift too).
     enum class PriscaModel { Fitted, Signs, FittedWithDrift };
     PriscaModel priscaModel = PriscaModel::Fitted;
+    /// PRISCA's automatic defaults, for a demonstration no one tuned on: its feature scales,
+    /// alpha_0 and matching window derived from the demonstration and the fit instead of the
+    /// preset numbers (automaticFeatures, automaticStep, automaticWindowSeconds). The preset's
+    /// structure stays: which deviations feed which control, the model, gradient and R.
+    bool priscaAutomatic = false;
+    /// alpha_0 of the automatic defaults, one number for every plant: the fraction of a scalar
+    /// Newton step taken per control step (StepSize::normalised). From sweeps on development
+    /// cells (0.0001 .. 1): the slide-car holds 3.82-3.86 cm from 0.0003 to 0.03 and spins at
+    /// 0.1; the acrobot diverges within 32,000 steps at 0.001; the aircraft worsens from 0.003.
+    static constexpr double automaticStep = 0.0003;
+    /// The automatic matching window: this much of the demonstration's time [s].
+    static constexpr double automaticWindowSeconds = 1.0;
     /// The closed-loop gradient learns only where a robust fit explains the demonstration.
     bool priscaLearnWhereExplained = false;
     core::PgsdParameters pgsd;        ///< PGSD defaults
@@ -108,6 +120,14 @@ struct PlantProfile {
     /// The features a method's theta is over: PRISCA's own (both PRISCA rows) where set, the
     /// shared ones otherwise.
     const core::FeatureMap& featuresOf(const QString& method) const;
+    /// The method's features with every deviation term's scale set to 1 / sigma_i, sigma_i the
+    /// RMS of deviation i between the demonstration's states one matching window apart (how far
+    /// that error component moves in a second of the manoeuvre), so that every feature is of
+    /// order one whatever its unit. Other terms are kept.
+    core::FeatureMap automaticFeatures(const QString& method,
+                                       const core::Demonstration& demonstration) const;
+    /// The automatic matching window for a demonstration: automaticWindowSeconds of samples.
+    static int automaticWindow(const core::Demonstration& demonstration);
 };
 
 }  // namespace prisca::sim

@@ -406,6 +406,57 @@ class TestPriscaController : public QObject {
                  qPrintable(QString::number(oneStep.back())));
     }
 
+    void normalisedStep_isFreeOfTheActionsAndTheCostsUnits() {
+        // The same delayed integrator and policy, once as is and once with the action measured
+        // in units ten times smaller (u' = 10 u, so B' = B / 10, theta' = 10 theta) and the cost
+        // in units a thousand times larger. The curvature-normalised step learns the same policy
+        // (theta' = 10 theta trial by trial); eq. 3's fixed alpha_0 does not.
+        const double b = 2.0, dt = 0.05, c = 10.0, costUnit = 1000.0;
+        const int T = 60;
+        auto demo = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, 1, 1, dt));
+        demo->states.setZero();
+        demo->actions.setZero();
+        auto learn = [&](PriscaParameters::Gradient gradient, bool normalised, double actionUnit,
+                         double weight) {
+            PriscaParameters parameters;
+            parameters.horizon = 10;
+            parameters.useBaseline = false;
+            parameters.gradient = gradient;
+            parameters.stepSize.normalised = normalised;
+            parameters.stepSize.scale = normalised ? 0.01 : 1.0;
+            parameters.stepSize.beta = 1e9;
+            TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::TimeDriven, 1e12);
+            problem.costWeights = Eigen::VectorXd::Constant(1, weight);
+            PriscaController prisca(problem, FeatureMap::deviationFeatures(1, {0}),
+                                    Eigen::MatrixXd::Constant(1, 1, b / actionUnit), parameters);
+            std::vector<double> thetas;
+            for (int trial = 0; trial < 5; ++trial) {
+                prisca.reset(trial == 0 ? ResetMode::Cold : ResetMode::WarmStart);
+                double s = 1.0, u = 0.0;
+                for (int k = 0; k < T; ++k) {
+                    s += dt * b * u;
+                    u = prisca.step(Eigen::VectorXd::Constant(1, s)).action[0] / actionUnit;
+                }
+                thetas.push_back(prisca.theta()(0, 0) / actionUnit);
+            }
+            return thetas;
+        };
+        for (auto gradient : {PriscaParameters::Gradient::ClosedLoop,
+                              PriscaParameters::Gradient::OneStep}) {
+            const std::vector<double> base = learn(gradient, true, 1.0, 1.0);
+            const std::vector<double> scaled = learn(gradient, true, c, costUnit);
+            QVERIFY(std::abs(base.back()) > 1e-3);  // it learned something
+            for (size_t t = 0; t < base.size(); ++t) {
+                QVERIFY2(std::abs(scaled[t] - base[t]) <= 1e-9 * std::abs(base[t]),
+                         qPrintable(QStringLiteral("trial %1: %2 vs %3")
+                                        .arg(t).arg(scaled[t]).arg(base[t])));
+            }
+            const std::vector<double> plain = learn(gradient, false, 1.0, 1.0);
+            const std::vector<double> plainScaled = learn(gradient, false, c, costUnit);
+            QVERIFY(std::abs(plainScaled.front() - plain.front()) > 0.1 * std::abs(plain.front()));
+        }
+    }
+
     void effectHorizon_letsAPositionFeatureLearnThroughTheDrift() {
         // A double integrator: the control moves only the velocity (B = (0, 1)), the position
         // follows the velocity (A = [0 1; 0 0]). A robot 0.1 ahead of its resting demonstration:

@@ -96,6 +96,53 @@ class TestControllerFactory : public QObject {
         QVERIFY(end.cwiseAbs().maxCoeff() > 0.0);  // it did learn
     }
 
+    void automaticDefaults_comeFromTheDemonstration() {
+        // A car driving straight along x at 2 m/s: over the automatic window (1 s, 40 samples at
+        // 40 Hz) its longitudinal deviation is 2 m and its heading's 0. The longitudinal feature
+        // is scaled to 1 / 2 m; the heading's, with nothing to measure it by, keeps its preset.
+        core::Demonstration demo = *demo_;
+        const int T = 200;
+        demo.dt = 0.025;
+        demo.time = Eigen::VectorXd::LinSpaced(T, 0.0, (T - 1) * demo.dt);
+        demo.states.setZero(T, 6);
+        demo.actions.setZero(T, 2);
+        for (int k = 0; k < T; ++k) {
+            demo.states(k, 0) = 2.0 * k * demo.dt;
+            demo.states(k, 3) = 2.0;
+        }
+        QCOMPARE(PlantProfile::automaticWindow(demo), 40);
+        const core::FeatureMap preset = profile_.featuresOf("prisca");
+        const core::FeatureMap automatic = profile_.automaticFeatures("prisca", demo);
+        QCOMPARE(automatic.terms().size(), preset.terms().size());
+        for (size_t l = 0; l < preset.terms().size(); ++l) {
+            for (size_t i = 0; i < preset.terms()[l].size(); ++i) {
+                const core::FeatureTerm& term = automatic.terms()[l][i];
+                QCOMPARE(term.index, preset.terms()[l][i].index);
+                const double expected = term.index == 0 ? 0.5 : preset.terms()[l][i].scale;
+                QVERIFY2(std::abs(term.scale - expected) < 1e-9,
+                         qPrintable(QStringLiteral("term %1: %2").arg(term.index).arg(term.scale)));
+            }
+        }
+        demo.dt = 0.05;
+        QCOMPARE(PlantProfile::automaticWindow(demo), 20);
+        // The factory's PRISCA takes them when the profile asks, and the normalised step.
+        QVERIFY(profile_.priscaAutomatic);
+        auto shared = std::make_shared<const core::Demonstration>(*demo_);
+        auto controller = ControllerFactory::create("prisca", profile_, shared,
+                                                    Eigen::MatrixXd::Constant(2, 6, 0.5));
+        auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
+        QVERIFY(prisca);
+        QVERIFY(prisca->parameters().stepSize.normalised);
+        QCOMPARE(prisca->parameters().stepSize.scale, PlantProfile::automaticStep);
+        PlantProfile preset2 = profile_;
+        preset2.priscaAutomatic = false;
+        controller = ControllerFactory::create("prisca", preset2, shared,
+                                               Eigen::MatrixXd::Constant(2, 6, 0.5));
+        prisca = dynamic_cast<core::PriscaController*>(controller.get());
+        QVERIFY(!prisca->parameters().stepSize.normalised);
+        QCOMPARE(prisca->parameters().stepSize.scale, profile_.prisca.stepSize.scale);
+    }
+
     void oracle_knowsTheTrialsLength() {
         auto controller =
             ControllerFactory::create("oracle", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
