@@ -29,6 +29,7 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       horizon_(new QSpinBox(this)),
       gamma_(new QDoubleSpinBox(this)),
       beta_(new QDoubleSpinBox(this)),
+      automatic_(new QCheckBox(this)),
       stepScale_(new QDoubleSpinBox(this)),
       thetaBound_(new QDoubleSpinBox(this)),
       fromPd_(new QCheckBox(this)),
@@ -62,6 +63,7 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     beta_->setDecimals(0);
     beta_->setSingleStep(100);
     beta_->setSuffix(QStringLiteral(" steps"));
+    automatic_->setObjectName(QStringLiteral("priscaAutomatic"));
     stepScale_->setObjectName(QStringLiteral("stepScale"));
     stepScale_->setRange(0.0, 1e4);
     stepScale_->setDecimals(4);
@@ -107,7 +109,8 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
 
     // Each field gets its own label object (retranslateUi() fills in the text).
     for (QWidget* field : std::initializer_list<QWidget*>{
-             method_, horizon_, gamma_, beta_, stepScale_, thetaBound_, fromPd_, gradient_,
+             method_, horizon_, gamma_, beta_, automatic_, stepScale_, thetaBound_, fromPd_,
+             gradient_,
              effort_, window_, pgsdStep_,
              ilcLearning_, ilcLead_, ilcCutoff_}) {
         form_->addRow(new QLabel(this), field);
@@ -125,6 +128,7 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     connect(method_, &QComboBox::activated, this, &ControllerPanel::apply);
     connect(gradient_, &QComboBox::activated, this, &ControllerPanel::apply);
     connect(fromPd_, &QCheckBox::toggled, this, &ControllerPanel::apply);
+    connect(automatic_, &QCheckBox::toggled, this, &ControllerPanel::apply);
     for (QSpinBox* box : {horizon_, window_, ilcLead_}) {
         connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
     }
@@ -151,6 +155,7 @@ void ControllerPanel::showSession() {
     horizon_->setValue(p.prisca.horizon);
     gamma_->setValue(p.prisca.gamma);
     beta_->setValue(p.prisca.stepSize.beta);
+    automatic_->setChecked(p.priscaAutomatic);
     stepScale_->setValue(p.prisca.stepSize.scale);
     thetaBound_->setValue(p.prisca.thetaBound);
     fromPd_->setChecked(p.priscaFromPd);
@@ -206,7 +211,15 @@ void ControllerPanel::showSession() {
         }
     }
     problem_->clear();
+    enableScales();
     updating_ = false;
+}
+
+void ControllerPanel::enableScales() {
+    const bool derived =
+        session_.profile().priscaAutomatic && session_.method() == QLatin1String("prisca");
+    stepScale_->setEnabled(!derived);
+    features_->setEnabled(!derived);
 }
 
 const core::FeatureMap& ControllerPanel::editedFeatures() const {
@@ -222,6 +235,7 @@ void ControllerPanel::apply() {
     p.prisca.gamma = gamma_->value();
     p.prisca.stepSize.beta = beta_->value();
     p.prisca.stepSize.scale = stepScale_->value();
+    p.priscaAutomatic = automatic_->isChecked();
     p.prisca.thetaBound = thetaBound_->value();
     p.priscaFromPd = fromPd_->isChecked();
     p.prisca.gradient = static_cast<core::PriscaParameters::Gradient>(gradient_->currentData().toInt());
@@ -286,6 +300,7 @@ void ControllerPanel::apply() {
         session_.setMethod(method);
     }
     updating_ = false;
+    enableScales();
 }
 
 void ControllerPanel::changeEvent(QEvent* event) {
@@ -313,6 +328,11 @@ void ControllerPanel::retranslateUi() {
           tr("Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10."));
     label(beta_, tr("Step rate β:"),
           tr("Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3)."));
+    label(automatic_, tr("Automatic scales:"),
+          tr("PRISCA derives its feature scales, α_0 and matching window from the demonstration "
+             "and the fit when it starts (each feature of order one over a second of the "
+             "manoeuvre; the step a fixed share of a Newton step; a one-second window). Off: the "
+             "step scale and feature scales below, the plant's tuned preset."));
     label(stepScale_, tr("Step scale α_0:"),
           tr("α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and "
              "B)."));

@@ -34,6 +34,8 @@ class ControllerPanel : public QWidget {
     void retranslateUi();
     void showSession();
     void apply();
+    /// alpha_0 and the feature scales are PRISCA's own to set only with automatic defaults off.
+    void enableScales();
     /// The feature set the chosen method uses (PRISCA's own where the plant has one).
     const core::FeatureMap& editedFeatures() const;
 
@@ -44,6 +46,7 @@ class ControllerPanel : public QWidget {
     QSpinBox* horizon_;
     QDoubleSpinBox* gamma_;
     QDoubleSpinBox* beta_;
+    QCheckBox* automatic_;       // PRISCA's automatic defaults (PlantProfile::priscaAutomatic)
     QDoubleSpinBox* stepScale_;
     QDoubleSpinBox* thetaBound_;
     QCheckBox* fromPd_;          // PRISCA starts from the PD law (PlantProfile::priscaFromPd)

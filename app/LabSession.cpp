@@ -236,6 +236,7 @@ QByteArray LabSession::toJson() const {
                        {"useBaseline", p.useBaseline},
                        {"useInverseDepreciation", p.useInverseDepreciation},
                        {"fromPd", profile_.priscaFromPd},
+                       {"automatic", profile_.priscaAutomatic},
                        {"gradient", p.gradient == core::PriscaParameters::Gradient::ClosedLoop
                                         ? "closed-loop"
                                         : "one-step"},
@@ -374,6 +375,12 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
             return fail(tr("'fromPd' must be true or false"));
         }
         profile.priscaFromPd = prisca.value("fromPd").toBool();
+    }
+    if (prisca.contains("automatic")) {
+        if (!prisca.value("automatic").isBool()) {
+            return fail(tr("'automatic' must be true or false"));
+        }
+        profile.priscaAutomatic = prisca.value("automatic").toBool();
     }
     if (prisca.contains("gradient")) {
         const QString gradient = prisca.value("gradient").toString();

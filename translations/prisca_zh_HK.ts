@@ -55,230 +55,240 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="182"/>
+        <location filename="../app/ControllerPanel.cpp" line="187"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="183"/>
+        <location filename="../app/ControllerPanel.cpp" line="188"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="184"/>
+        <location filename="../app/ControllerPanel.cpp" line="189"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="186"/>
+        <location filename="../app/ControllerPanel.cpp" line="191"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="197"/>
+        <location filename="../app/ControllerPanel.cpp" line="202"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="197"/>
+        <location filename="../app/ControllerPanel.cpp" line="202"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="203"/>
+        <location filename="../app/ControllerPanel.cpp" line="208"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="252"/>
+        <location filename="../app/ControllerPanel.cpp" line="264"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="266"/>
+        <location filename="../app/ControllerPanel.cpp" line="278"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="308"/>
+        <location filename="../app/ControllerPanel.cpp" line="321"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="312"/>
+        <location filename="../app/ControllerPanel.cpp" line="325"/>
         <source>Horizon H:</source>
         <translation>時域 H：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="313"/>
+        <location filename="../app/ControllerPanel.cpp" line="326"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="314"/>
+        <location filename="../app/ControllerPanel.cpp" line="327"/>
         <source>Depreciation γ:</source>
         <translation>折舊率 γ：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="315"/>
+        <location filename="../app/ControllerPanel.cpp" line="328"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="316"/>
+        <location filename="../app/ControllerPanel.cpp" line="329"/>
         <source>Step rate β:</source>
         <translation>步長速率 β：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="317"/>
+        <location filename="../app/ControllerPanel.cpp" line="330"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="318"/>
+        <location filename="../app/ControllerPanel.cpp" line="331"/>
+        <source>Automatic scales:</source>
+        <translation>自動尺度：</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="332"/>
+        <source>PRISCA derives its feature scales, α_0 and matching window from the demonstration and the fit when it starts (each feature of order one over a second of the manoeuvre; the step a fixed share of a Newton step; a one-second window). Off: the step scale and feature scales below, the plant&apos;s tuned preset.</source>
+        <translation>PRISCA 開始時由示範及擬合推導其特徵尺度、α_0 及匹配窗口（每個特徵在操作的一秒內約為一；步長為牛頓步的固定比例；一秒的窗口）。關閉：使用下方的步長尺度及特徵尺度，即該設備調校好的預設值。</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="336"/>
         <source>Step scale α_0:</source>
         <translation>步長比例 α_0：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="319"/>
+        <location filename="../app/ControllerPanel.cpp" line="337"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
         <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="321"/>
+        <location filename="../app/ControllerPanel.cpp" line="339"/>
         <source>θ bound:</source>
         <translation>θ 界限：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="322"/>
+        <location filename="../app/ControllerPanel.cpp" line="340"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
         <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="324"/>
-        <location filename="../app/ControllerPanel.cpp" line="338"/>
+        <location filename="../app/ControllerPanel.cpp" line="342"/>
+        <location filename="../app/ControllerPanel.cpp" line="356"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="325"/>
+        <location filename="../app/ControllerPanel.cpp" line="343"/>
         <source>Start from the PD law:</source>
         <translation>由 PD 控制律開始：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="326"/>
+        <location filename="../app/ControllerPanel.cpp" line="344"/>
         <source>PRISCA&apos;s policy is u = u* + the PD law + θᵀφ: θ = 0 already holds the robot on the path and PRISCA learns a correction (off: θ = 0 is no feedback at all, as in Algorithm 1).</source>
         <translation>PRISCA 的策略為 u = u* + PD 控制律 + θᵀφ：θ = 0 已能令機械人保持在路徑上，PRISCA 學習其修正（關閉時：θ = 0 即完全沒有回饋，與演算法 1 相同）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="329"/>
+        <location filename="../app/ControllerPanel.cpp" line="347"/>
         <source>Gradient:</source>
         <translation>梯度：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="330"/>
+        <location filename="../app/ControllerPanel.cpp" line="348"/>
         <source>One step: eq. 14 as printed (how the next state moves with θ). Closed loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
         <translation>單步：按原文的式 14（下一個狀態如何隨 θ 改變）。閉環：把式 4 的連鎖律經擬合模型及策略本身的回饋延伸至整個時窗。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="333"/>
+        <location filename="../app/ControllerPanel.cpp" line="351"/>
         <source>One step (eq. 14)</source>
         <translation>單步（式 14）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="334"/>
+        <location filename="../app/ControllerPanel.cpp" line="352"/>
         <source>Closed loop (eq. 4 over H)</source>
         <translation>閉環（式 4，跨 H 步）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="335"/>
+        <location filename="../app/ControllerPanel.cpp" line="353"/>
         <source>Effort weight R:</source>
         <translation>控制量權重 R：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="336"/>
+        <location filename="../app/ControllerPanel.cpp" line="354"/>
         <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound. 0: none.</source>
         <translation>成本亦計入修正的控制量，每個控制為 R (θᵀφ)²：令學習在沒有 θ 界限時亦會收斂。0：無。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="339"/>
+        <location filename="../app/ControllerPanel.cpp" line="357"/>
         <source>Matching window:</source>
         <translation>匹配窗口：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="340"/>
+        <location filename="../app/ControllerPanel.cpp" line="358"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="342"/>
+        <location filename="../app/ControllerPanel.cpp" line="360"/>
         <source>PGSD step α:</source>
         <translation>PGSD 步長 α：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="342"/>
+        <location filename="../app/ControllerPanel.cpp" line="360"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="343"/>
+        <location filename="../app/ControllerPanel.cpp" line="361"/>
         <source>ILC learning Γ/Kp:</source>
         <translation>ILC 學習 Γ/Kp：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="344"/>
+        <location filename="../app/ControllerPanel.cpp" line="362"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="346"/>
+        <location filename="../app/ControllerPanel.cpp" line="364"/>
         <source>ILC lead:</source>
         <translation>ILC 超前：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="347"/>
+        <location filename="../app/ControllerPanel.cpp" line="365"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="349"/>
+        <location filename="../app/ControllerPanel.cpp" line="367"/>
         <source>ILC Q cutoff:</source>
         <translation>ILC Q 截止頻率：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="350"/>
+        <location filename="../app/ControllerPanel.cpp" line="368"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="353"/>
+        <location filename="../app/ControllerPanel.cpp" line="371"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="354"/>
+        <location filename="../app/ControllerPanel.cpp" line="372"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="355"/>
+        <location filename="../app/ControllerPanel.cpp" line="373"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="352"/>
-        <location filename="../app/ControllerPanel.cpp" line="356"/>
-        <location filename="../app/ControllerPanel.cpp" line="357"/>
+        <location filename="../app/ControllerPanel.cpp" line="370"/>
+        <location filename="../app/ControllerPanel.cpp" line="374"/>
+        <location filename="../app/ControllerPanel.cpp" line="375"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="309"/>
+        <location filename="../app/ControllerPanel.cpp" line="322"/>
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="358"/>
+        <location filename="../app/ControllerPanel.cpp" line="376"/>
         <source> samples</source>
         <translation> 個樣本</translation>
     </message>
@@ -518,88 +528,93 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="288"/>
-        <location filename="../app/LabSession.cpp" line="296"/>
+        <location filename="../app/LabSession.cpp" line="289"/>
+        <location filename="../app/LabSession.cpp" line="297"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="302"/>
+        <location filename="../app/LabSession.cpp" line="303"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="308"/>
+        <location filename="../app/LabSession.cpp" line="309"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="311"/>
+        <location filename="../app/LabSession.cpp" line="312"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="316"/>
+        <location filename="../app/LabSession.cpp" line="317"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="323"/>
+        <location filename="../app/LabSession.cpp" line="324"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="327"/>
+        <location filename="../app/LabSession.cpp" line="328"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="337"/>
+        <location filename="../app/LabSession.cpp" line="338"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="374"/>
+        <location filename="../app/LabSession.cpp" line="375"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="385"/>
+        <location filename="../app/LabSession.cpp" line="381"/>
+        <source>&apos;automatic&apos; must be true or false</source>
+        <translation>「automatic」必須為 true 或 false</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="392"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="412"/>
+        <location filename="../app/LabSession.cpp" line="419"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="426"/>
+        <location filename="../app/LabSession.cpp" line="433"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="452"/>
+        <location filename="../app/LabSession.cpp" line="459"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="456"/>
+        <location filename="../app/LabSession.cpp" line="463"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="463"/>
+        <location filename="../app/LabSession.cpp" line="470"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="468"/>
+        <location filename="../app/LabSession.cpp" line="475"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="484"/>
+        <location filename="../app/LabSession.cpp" line="491"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -731,34 +746,34 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="98"/>
-        <location filename="../app/MainWindow.cpp" line="327"/>
+        <location filename="../app/MainWindow.cpp" line="325"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="194"/>
-        <location filename="../app/MainWindow.cpp" line="256"/>
+        <location filename="../app/MainWindow.cpp" line="190"/>
+        <location filename="../app/MainWindow.cpp" line="252"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="195"/>
+        <location filename="../app/MainWindow.cpp" line="191"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="206"/>
-        <location filename="../app/MainWindow.cpp" line="273"/>
+        <location filename="../app/MainWindow.cpp" line="202"/>
+        <location filename="../app/MainWindow.cpp" line="271"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="207"/>
+        <location filename="../app/MainWindow.cpp" line="203"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="257"/>
+        <location filename="../app/MainWindow.cpp" line="253"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -767,142 +782,142 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="263"/>
+        <location filename="../app/MainWindow.cpp" line="261"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="264"/>
+        <location filename="../app/MainWindow.cpp" line="263"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="278"/>
+        <location filename="../app/MainWindow.cpp" line="276"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="314"/>
+        <location filename="../app/MainWindow.cpp" line="312"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="315"/>
+        <location filename="../app/MainWindow.cpp" line="313"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="316"/>
+        <location filename="../app/MainWindow.cpp" line="314"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="317"/>
+        <location filename="../app/MainWindow.cpp" line="315"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="318"/>
+        <location filename="../app/MainWindow.cpp" line="316"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="319"/>
+        <location filename="../app/MainWindow.cpp" line="317"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="320"/>
+        <location filename="../app/MainWindow.cpp" line="318"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="321"/>
+        <location filename="../app/MainWindow.cpp" line="319"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="322"/>
+        <location filename="../app/MainWindow.cpp" line="320"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="323"/>
+        <location filename="../app/MainWindow.cpp" line="321"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="324"/>
+        <location filename="../app/MainWindow.cpp" line="322"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="325"/>
+        <location filename="../app/MainWindow.cpp" line="323"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326"/>
+        <location filename="../app/MainWindow.cpp" line="324"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="328"/>
+        <location filename="../app/MainWindow.cpp" line="326"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="329"/>
+        <location filename="../app/MainWindow.cpp" line="327"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="330"/>
+        <location filename="../app/MainWindow.cpp" line="328"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="331"/>
+        <location filename="../app/MainWindow.cpp" line="329"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="332"/>
+        <location filename="../app/MainWindow.cpp" line="330"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="333"/>
+        <location filename="../app/MainWindow.cpp" line="331"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="335"/>
+        <location filename="../app/MainWindow.cpp" line="333"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="350"/>
+        <location filename="../app/MainWindow.cpp" line="348"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="362"/>
+        <location filename="../app/MainWindow.cpp" line="360"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="364"/>
+        <location filename="../app/MainWindow.cpp" line="362"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="368"/>
+        <location filename="../app/MainWindow.cpp" line="366"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="371"/>
+        <location filename="../app/MainWindow.cpp" line="369"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>

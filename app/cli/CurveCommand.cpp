@@ -79,6 +79,7 @@ int curveCommand(const QStringList& arguments) {
     line.addValue("out", "CSV of the curves: method, steps, time, mean, lower, upper, runs.",
                   "file");
     line.addValue("plot", "Also draw the curves (Fig. 3b) to this .png or .svg file.", "file");
+    addPriscaDefaultsOption(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -132,6 +133,9 @@ int curveCommand(const QStringList& arguments) {
              loadOrDemonstrate(line.value("plant"), line.value("demo"),
                                static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62))),
              seed});
+    }
+    for (Cell& cell : cells) {
+        applyPriscaDefaults(line, cell.task.profile);
     }
     settings.plant = cells.front().task.plant;
     installInterruptHandler();

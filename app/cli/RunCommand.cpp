@@ -77,7 +77,11 @@ int runCommand(const QStringList& arguments) {
     line.addValue("gamma", "PRISCA inverse-depreciation rate in [0, 1] (eq. 10).", "gamma");
     line.addValue("beta", "PRISCA step-size rate beta > 0 (eq. 3).", "beta");
     line.addValue("alpha", "PGSD fixed step size.", "alpha");
-    line.addValue("window", "Least-state-deviation search window [samples] (eq. 12).", "samples");
+    line.addValue("window",
+                  "Least-state-deviation search window [samples] (eq. 12); PRISCA with automatic "
+                  "defaults takes one second of the demonstration instead.",
+                  "samples");
+    addPriscaDefaultsOption(line);
     line.addValue("iterations", "PEGASUS gradient steps before evaluation.", "N");
     line.addValue("training-trials", "Training trials for PEGASUS and PD (selected).", "N", "4");
     line.addValue("jobs", "Worker threads for training.", "N", "2");
@@ -117,6 +121,7 @@ int runCommand(const QStringList& arguments) {
     if (line.isSet("window")) {
         profile.matchingWindow = static_cast<int>(line.integer("window", 0, 1000000));
     }
+    applyPriscaDefaults(line, profile);
     const int trials = static_cast<int>(line.integer("trials", 1, 100000));
     const auto seed =
         static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));

@@ -48,6 +48,7 @@ void applyPriscaOptions(const CommandLine& line, sim::PlantProfile& profile) {
     if (line.isSet("beta")) {
         profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
     }
+    applyPriscaDefaults(line, profile);
 }
 
 // The table to --out (atomically) or to standard output.
@@ -172,6 +173,7 @@ int table1Command(const QStringList& arguments) {
     line.addValue("H", "PRISCA horizon H [steps].", "steps");
     line.addValue("gamma", "PRISCA gamma in [0, 1].", "gamma");
     line.addValue("beta", "PRISCA beta > 0.", "beta");
+    addPriscaDefaultsOption(line);
     line.addValue("out", "Write the table here instead of standard output.", "file");
     line.addValue("plot",
                   "Also draw Fig. 7 (paths and end postures of playback, PD and PRISCA) "

@@ -102,4 +102,27 @@ Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed
     return task;
 }
 
+void addPriscaDefaultsOption(CommandLine& line) {
+    line.addValue("prisca-defaults",
+                  "PRISCA's feature scales, alpha_0 and matching window: 'automatic' (from each "
+                  "demonstration and its fit) or 'preset' (the plant's tuned numbers). Default: "
+                  "the plant's choice (automatic for the slide-car, preset otherwise).",
+                  "choice");
+}
+
+void applyPriscaDefaults(const CommandLine& line, sim::PlantProfile& profile) {
+    if (!line.isSet("prisca-defaults")) {
+        return;
+    }
+    const QString choice = line.value("prisca-defaults");
+    if (choice == QLatin1String("automatic")) {
+        profile.priscaAutomatic = true;
+    } else if (choice == QLatin1String("preset")) {
+        profile.priscaAutomatic = false;
+    } else {
+        throw UsageError(
+            QStringLiteral("--prisca-defaults: '%1' is not one of: automatic preset").arg(choice));
+    }
+}
+
 }  // namespace prisca::app::cli

@@ -9,6 +9,8 @@
 
 namespace prisca::app::cli {
 
+class CommandLine;
+
 /// A demonstration checked against its plant, with the plant's profile and the fitted B.
 struct Task {
     QString plant;                 ///< plant name
@@ -34,5 +36,11 @@ Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
 /// The task of a scripted demonstration in a style with a seed's hand variation (checked as a
 /// file would be); UsageError for an unknown plant or style.
 Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
+
+/// Adds --prisca-defaults automatic|preset (PlantProfile::priscaAutomatic).
+void addPriscaDefaultsOption(CommandLine& line);
+/// Applies --prisca-defaults if given (the plant's own choice otherwise); UsageError naming the
+/// choices for anything else.
+void applyPriscaDefaults(const CommandLine& line, sim::PlantProfile& profile);
 
 }  // namespace prisca::app::cli

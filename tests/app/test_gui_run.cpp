@@ -488,8 +488,8 @@ class TestGuiRun : public QObject {
             // Every parameter is labelled (with the paper's symbol).
             auto* form = w.find<QWidget>("controllerPanel")->findChild<QFormLayout*>();
             QVERIFY(form);
-            for (const char* name : {"method", "horizon", "gamma", "beta", "stepScale",
-                                     "thetaBound", "priscaFromPd", "priscaGradient",
+            for (const char* name : {"method", "horizon", "gamma", "beta", "priscaAutomatic",
+                                     "stepScale", "thetaBound", "priscaFromPd", "priscaGradient",
                                      "effortWeight", "matchingWindow", "pgsdStep"}) {
                 auto* label = qobject_cast<QLabel*>(form->labelForField(w.find<QWidget>(name)));
                 QVERIFY2(label && !label->text().isEmpty(), name);
@@ -499,6 +499,16 @@ class TestGuiRun : public QObject {
             auto* features = w.find<QTableWidget>("featureScales");
             auto* limits = w.find<QTableWidget>("actionLimits");
             auto* problem = w.find<QLabel>("controllerProblem");
+            // The slide-car's PRISCA derives alpha_0 and its feature scales from the
+            // demonstration: those fields are not the operator's until automatic is off.
+            auto* automatic = w.find<QCheckBox>("priscaAutomatic");
+            QVERIFY(automatic->isChecked());
+            QVERIFY(!features->isEnabled());
+            QVERIFY(!w.find<QDoubleSpinBox>("stepScale")->isEnabled());
+            automatic->setChecked(false);
+            QVERIFY(!w.window.session().profile().priscaAutomatic);
+            QVERIFY(features->isEnabled());
+            QVERIFY(w.find<QDoubleSpinBox>("stepScale")->isEnabled());
             // PRISCA (the method shown) has features of its own: those are the ones edited.
             auto edited = [&w] {
                 const auto& profile = w.window.session().profile();
@@ -551,6 +561,9 @@ class TestGuiRun : public QObject {
                  Eigen::Vector2d(1.5, 1.5).eval());
         QVERIFY(!w.find<QCheckBox>("priscaFromPd")->isChecked());
         QCOMPARE(w.find<QDoubleSpinBox>("effortWeight")->value(), 1.5);
+        QVERIFY(!w.window.session().profile().priscaAutomatic);
+        QVERIFY(!w.find<QCheckBox>("priscaAutomatic")->isChecked());
+        QVERIFY(w.find<QTableWidget>("featureScales")->isEnabled());
     }
 
     void session_isRememberedBetweenRunsOfTheApplication() {
@@ -789,6 +802,13 @@ class TestGuiRun : public QObject {
         f2.close();
         text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
         QVERIFY2(text.contains("gradient") && text.contains("closed-loop"), qPrintable(text));
+        QFile f3(garbage);
+        QVERIFY(f3.open(QIODevice::WriteOnly));
+        f3.write("{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
+                 "\"prisca\": {\"automatic\": \"yes\"} }");
+        f3.close();
+        text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
+        QVERIFY2(text.contains("'automatic'"), qPrintable(text));
 
         const QString notJson = dir.filePath("not.json");
         QFile g(notJson);
