@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
     using Gradient = core::PriscaParameters::Gradient;
     std::vector<Variant> variants = {
         {"PRISCA (product default)", "prisca", [](Profile&, Fit&) {}},
+        {"- preset feature scales, alpha_0 and window (not automatic)", "prisca",
+         [](Profile& p, Fit&) { p.priscaAutomatic = false; }},
         {"- learning off (its PD+H+LSD start alone)", "prisca",
          [](Profile& p, Fit&) { p.prisca.learning = false; }},
         {"- one-step gradient (eq. 14) instead of the closed loop", "prisca",
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
          [](Profile& p, Fit&) {
              using Source = core::FeatureTerm::Source;
              p.priscaFromPd = false;
+             p.priscaAutomatic = false;
              p.priscaFeatures.reset();  // the shared features (2, 1, 0 | 2, 1, 0.1)
              p.prisca.gradient = Gradient::OneStep;
              p.prisca.effortWeights.resize(0);
