@@ -2,7 +2,7 @@
 
 #include "app/LabSession.h"
 #include "core/Table1Report.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
 #include <QCheckBox>
@@ -48,8 +48,8 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       preset_(new QPushButton(this)) {
     setObjectName(QStringLiteral("controllerPanel"));
     method_->setObjectName(QStringLiteral("method"));
-    for (const QString& method : sim::ControllerFactory::methods()) {
-        method_->addItem(core::table1Label(method), method);
+    for (const sim::MethodSpec& spec : sim::MethodCatalog::all()) {
+        method_->addItem(spec.label, spec.id);
     }
     horizon_->setObjectName(QStringLiteral("horizon"));
     horizon_->setRange(1, 200);

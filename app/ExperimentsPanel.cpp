@@ -3,6 +3,7 @@
 #include "app/LabSession.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
+#include "sim/MethodCatalog.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -227,7 +228,7 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
                                        tr("Orientation [deg]"), tr("Var. [deg²]")});
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
-        const QStringList cells = {core::table1Label(row.method), plusMinus(row.position),
+        const QStringList cells = {row.shownLabel(), plusMinus(row.position),
                                    QString::number(row.position.variance, 'f', 2),
                                    plusMinus(row.orientation),
                                    QString::number(row.orientation.variance, 'f', 2)};
@@ -283,7 +284,7 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
         while (last > 0 && c.band.count[last - 1] == 0) {
             --last;
         }
-        const QStringList cells = {core::table1Label(c.method), at(0), at(c.band.mean.size() / 2),
+        const QStringList cells = {sim::MethodCatalog::get(c.method).label, at(0), at(c.band.mean.size() / 2),
                                    last > 0 ? at(last - 1) : QStringLiteral("—")};
         for (int col = 0; col < cells.size(); ++col) {
             table_->setItem(r, col, new QTableWidgetItem(cells[col]));

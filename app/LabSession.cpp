@@ -2,7 +2,7 @@
 
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
@@ -205,9 +205,11 @@ void LabSession::setFitOptions(const core::ActionMappingFitOptions& options) {
 }
 
 void LabSession::setMethod(const QString& method) {
-    if (!sim::ControllerFactory::isMethod(method)) {
+    if (!sim::MethodCatalog::contains(method)) {
         throw std::invalid_argument(
-            QStringLiteral("unknown method '%1'").arg(method).toStdString());
+            QStringLiteral("unknown method '%1' (one of: %2)")
+                .arg(method, sim::MethodCatalog::ids().join(QLatin1Char(' ')))
+                .toStdString());
     }
     method_ = method;
     emit controllerChanged();
@@ -333,9 +335,9 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
         profile.mapping = *mapping;
     }
     const QString method = root.value("method").toString(QStringLiteral("prisca"));
-    if (!sim::ControllerFactory::isMethod(method)) {
+    if (!sim::MethodCatalog::contains(method)) {
         return fail(
-            tr("'method' must be one of %1").arg(sim::ControllerFactory::methods().join(", ")));
+            tr("'method' must be one of %1").arg(sim::MethodCatalog::ids().join(", ")));
     }
     core::ActionMappingFitOptions fitOptions;
     const QJsonObject fit = root.value("fit").toObject();

@@ -54,7 +54,7 @@ class LabSession : public QObject {
     void setFitOptions(const core::ActionMappingFitOptions& options);
     const core::ActionMappingFit& fit() const { return fit_; }
 
-    /// The method a run uses (sim::ControllerFactory names).
+    /// The method a run uses (sim::MethodCatalog ids).
     const QString& method() const { return method_; }
     void setMethod(const QString& method);
 

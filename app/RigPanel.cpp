@@ -8,7 +8,7 @@
 #include "core/DemonstrationCsv.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationRecorder.h"
 #include "sim/MethodTraining.h"
 
@@ -351,7 +351,7 @@ bool RigPanel::runTrial() {
         missing = tr("Connect the transmitter link first.");
     } else if (!session_.profile().info.pose) {
         missing = tr("The rig drives a car: choose the slide-car as the target.");
-    } else if (session_.method() == QLatin1String("oracle")) {
+    } else if (sim::MethodCatalog::get(session_.method()).simulationOnly) {
         missing = tr("The oracle plans on copies of a simulated plant; a real car has none. "
                      "Run it in simulation, or choose another method.");
     } else if (sim::trainsOffline(session_.method())) {
@@ -365,7 +365,7 @@ bool RigPanel::runTrial() {
     std::lock_guard<std::mutex> lock(shared_->mutex);
     // One loop per method: learners keep what they learnt from trial to trial (warm start).
     if (!shared_->loop || loopMethod_ != session_.method()) {
-        auto controller = sim::ControllerFactory::create(
+        auto controller = sim::MethodCatalog::create(
             session_.method(), session_.profile(), session_.demonstration(), session_.fit().b);
         shared_->loop = std::make_unique<devices::RigLoop>(calibration_, devices::TrackerSettings{},
                                                            std::move(controller), channels_, link_);

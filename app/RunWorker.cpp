@@ -1,7 +1,7 @@
 #include "app/RunWorker.h"
 
 #include "core/Controller.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 

@@ -30,7 +30,7 @@ namespace prisca::app {
 /// demonstration is shared read-only).
 struct RunRequest {
     QString plant;   ///< sim::PlantCatalog name
-    QString method;  ///< sim::ControllerFactory name
+    QString method;  ///< sim::MethodCatalog id
     sim::PlantProfile profile;
     std::shared_ptr<const core::Demonstration> demonstration;
     Eigen::MatrixXd fittedB;    ///< B = B_v (.) B~ (m x n)

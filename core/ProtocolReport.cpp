@@ -87,7 +87,7 @@ MeanInterval meanInterval(const std::vector<double>& values, double level) {
 
 int ProtocolSummary::oracleRow() const {
     for (size_t i = 0; i < rows.size(); ++i) {
-        if (rows[i].method == QLatin1String("oracle")) {
+        if (rows[i].limit) {
             return static_cast<int>(i);
         }
     }
@@ -110,6 +110,8 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
         std::vector<std::vector<double>> stylePosition(styles.size()),
             styleOrientation(styles.size());
         for (const ProtocolCell& cell : cells[m]) {
+            row.label = cell.row.label;
+            row.limit = cell.row.limit;
             position.push_back(cell.row.position.meanAbsoluteError);
             orientation.push_back(cell.row.orientation.meanAbsoluteError);
             cpu.push_back(cell.row.cpuMicrosecondsPerStep);
@@ -153,7 +155,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
             for (const ProtocolRow& r : summary.rows) {
                 out += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 | %8 |\n")
-                           .arg(table1Label(r.method))
+                           .arg(r.shownLabel())
                            .arg(r.position.count)
                            .arg(r.trials)
                            .arg(withInterval(r.position), ratio(r.position.mean, limitPosition),
@@ -170,7 +172,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             }
             out += QLatin1Char('\n') + rule + QLatin1Char('\n');
             for (const ProtocolRow& r : summary.rows) {
-                out += QStringLiteral("| %1 |").arg(table1Label(r.method));
+                out += QStringLiteral("| %1 |").arg(r.shownLabel());
                 for (int s = 0; s < summary.styles.size(); ++s) {
                     out += QStringLiteral(" %1 / %2 |")
                                .arg(fixed(r.stylePosition[s].mean),
@@ -188,7 +190,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             auto line = [&](const QString& scope, const ProtocolRow& r, const MeanInterval& p,
                             const MeanInterval& o, const QString& trials, const QString& cpu) {
                 out += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12\n")
-                           .arg(scope, r.method, table1Label(r.method))
+                           .arg(scope, r.method, r.shownLabel())
                            .arg(p.count)
                            .arg(full(p.mean), full(p.lower), full(p.upper), full(o.mean),
                                 full(o.lower), full(o.upper), trials, cpu);
@@ -214,7 +216,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                 "[$^\\circ$] & $\\times$ limit & CPU [$\\mu$s/step] \\\\\n\\hline\n");
             for (const ProtocolRow& r : summary.rows) {
                 out += QStringLiteral("%1 & %2 & %3 & %4 & %5 & %6 & %7 \\\\\n")
-                           .arg(table1Label(r.method))
+                           .arg(r.shownLabel())
                            .arg(r.position.count)
                            .arg(withInterval(r.position), ratio(r.position.mean, limitPosition),
                                 withInterval(r.orientation),
@@ -229,7 +231,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             }
             out += QStringLiteral(" \\\\\n\\hline\n");
             for (const ProtocolRow& r : summary.rows) {
-                out += table1Label(r.method);
+                out += r.shownLabel();
                 for (int s = 0; s < summary.styles.size(); ++s) {
                     out += QStringLiteral(" & %1 / %2")
                                .arg(fixed(r.stylePosition[s].mean),
@@ -252,7 +254,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                 }
                 rows.append(QJsonObject{
                     {"method", r.method},
-                    {"label", table1Label(r.method)},
+                    {"label", r.shownLabel()},
                     {"trials", r.trials},
                     {"positionCm", intervalJson(r.position)},
                     {"orientationDeg", intervalJson(r.orientation)},

@@ -33,6 +33,9 @@ struct ProtocolCell {
 /// the cells, and per style the same over that style's seed sets.
 struct ProtocolRow {
     QString method;
+    QString label;       ///< as tables show it (the id where empty)
+    bool limit = false;  ///< the ruler (the oracle)
+    const QString& shownLabel() const { return label.isEmpty() ? method : label; }
     MeanInterval position;     ///< over the cells' position MAE [cm]
     MeanInterval orientation;  ///< over the cells' orientation MAE [deg]
     int trials = 0;            ///< trials that finished, over all cells

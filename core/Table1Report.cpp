@@ -62,30 +62,6 @@ std::optional<TableFormat> parseTableFormat(const QString& text) {
     return std::nullopt;
 }
 
-QString table1Label(const QString& method) {
-    if (method == QLatin1String("prisca"))
-        return QStringLiteral("OURS (PRISCA)");
-    if (method == QLatin1String("prisca-paper"))
-        return QStringLiteral("PRISCA (paper)");
-    if (method == QLatin1String("pd"))
-        return QStringLiteral("PD");
-    if (method == QLatin1String("pd-selected"))
-        return QStringLiteral("PD (SELECTED)");
-    if (method == QLatin1String("pd-h"))
-        return QStringLiteral("PD+H");
-    if (method == QLatin1String("pd-lsd"))
-        return QStringLiteral("PD+LSD");
-    if (method == QLatin1String("pd-h-lsd"))
-        return QStringLiteral("PD+H+LSD");
-    if (method == QLatin1String("playback"))
-        return QStringLiteral("ACTION PLAYBACK");
-    if (method == QLatin1String("ilc"))
-        return QStringLiteral("ILC");
-    if (method == QLatin1String("oracle"))
-        return QStringLiteral("LIMIT (oracle)");
-    return method.toUpper();
-}
-
 QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                      const QString& caption) {
     QString out;
@@ -100,7 +76,7 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             for (const Table1Row& r : rows) {
                 out +=
                     QStringLiteral("| %1 | %2 | %3 ± %4 | %5 | %6 ± %7 | %8 | %9 |\n")
-                        .arg(table1Label(r.method))
+                        .arg(r.shownLabel())
                         .arg(r.position.count)
                         .arg(fixed(r.position.meanAbsoluteError),
                              fixed(r.position.standardDeviation), fixed(r.position.variance),
@@ -116,7 +92,7 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             for (const Table1Row& r : rows) {
                 out +=
                     QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
-                        .arg(r.method, table1Label(r.method))
+                        .arg(r.method, r.shownLabel())
                         .arg(r.position.count)
                         .arg(full(r.position.meanAbsoluteError), full(r.position.standardDeviation),
                              full(r.position.variance), full(r.orientation.meanAbsoluteError),
@@ -140,7 +116,7 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             for (const Table1Row& r : rows) {
                 out += QStringLiteral(
                            "%1 & %2 & $%3 \\pm %4$ & %5 & $%6 \\pm %7$ & %8 & %9 \\\\\n")
-                           .arg(table1Label(r.method))
+                           .arg(r.shownLabel())
                            .arg(r.position.count)
                            .arg(fixed(r.position.meanAbsoluteError),
                                 fixed(r.position.standardDeviation), fixed(r.position.variance),
@@ -156,7 +132,7 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             QJsonArray array;
             for (const Table1Row& r : rows) {
                 array.append(QJsonObject{{"method", r.method},
-                                         {"label", table1Label(r.method)},
+                                         {"label", r.shownLabel()},
                                          {"positionCm", summaryJson(r.position)},
                                          {"orientationDeg", summaryJson(r.orientation)},
                                          {"cpuMicrosecondsPerStep",

@@ -19,6 +19,10 @@ struct Table1Row {
     ErrorSummary orientation;  ///< |wrap(psi_end - psi_lot)| [deg]
     /// The controller's mean CPU time per control step [us]; NaN when not measured.
     double cpuMicrosecondsPerStep = std::numeric_limits<double>::quiet_NaN();
+    QString label;       ///< as tables show it, e.g. "PD+H" (the method's id where empty)
+    bool limit = false;  ///< the ruler every row is read against (the oracle)
+    /// label, or the id where there is none.
+    const QString& shownLabel() const { return label.isEmpty() ? method : label; }
 };
 
 /// Output formats of Table I.
@@ -26,10 +30,6 @@ enum class TableFormat { Markdown, Csv, Latex, Json };
 
 /// "md", "csv", "latex" or "json".
 std::optional<TableFormat> parseTableFormat(const QString& text);
-/// The paper's row label: "OURS (PRISCA)", "PD", "PD (SELECTED)", "PD+H", "PD+LSD",
-/// "PD+H+LSD", "ACTION PLAYBACK"; "ILC", "LIMIT (oracle)"; the method name upper-cased
-/// otherwise.
-QString table1Label(const QString& method);
 /// The table as text. Markdown and LaTeX show "MAE +- std" and the variance for position (cm,
 /// cm^2) and orientation (deg, deg^2) with two decimals, the trial count and the CPU time per
 /// control step; CSV and JSON carry full precision. `caption` describes the experiment (seed, trials, perturbation).

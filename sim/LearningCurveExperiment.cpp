@@ -1,6 +1,6 @@
 #include "LearningCurveExperiment.h"
 
-#include "ControllerFactory.h"
+#include "MethodCatalog.h"
 #include "ParallelTrials.h"
 #include "PlantCatalog.h"
 #include "TrialMetrics.h"
@@ -32,9 +32,7 @@ double meanSquaredTracking(const PlantInfo& info, const core::Demonstration& dem
 }  // namespace
 
 QStringList curveMethods() {
-    QStringList methods = ControllerFactory::methods();
-    methods.removeAll(QStringLiteral("pd-selected"));  // selects its gains offline
-    return methods;
+    return MethodCatalog::curveIds();
 }
 
 bool isCurveMethod(const QString& method) {
@@ -80,11 +78,11 @@ std::vector<MethodCurves> runLearningCurves(
         const PlantInfo info = plant->info();
         std::vector<CurvePoint> curve;
         long long consumed = 0;
-        if (method == QLatin1String("pegasus")) {
+        if (MethodCatalog::get(method).training == MethodSpec::Training::Pegasus) {
             // Fixed scenarios for this run; every rollout is charged to the budget.
             auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
-                auto policy = ControllerFactory::create(QStringLiteral("pegasus"), profile,
-                                                        demonstration, fittedB, &theta);
+                auto policy = MethodCatalog::create(method, profile, demonstration, fittedB,
+                                                    &theta);
                 EpisodeSettings episode = base;
                 episode.seed = mixSeed(runSeed, 1000 + scenario);
                 const EpisodeResult result =
@@ -104,7 +102,7 @@ std::vector<MethodCurves> runLearningCurves(
                 }
                 // Scored like the online learners: on a fresh trial it never trained on (an
                 // evaluation, so not charged to its budget).
-                auto policy = ControllerFactory::create(QStringLiteral("pegasus"), profile,
+                auto policy = MethodCatalog::create(QStringLiteral("pegasus"), profile,
                                                         demonstration, fittedB, &pegasus.theta());
                 EpisodeSettings episode = base;
                 episode.seed = mixSeed(runSeed, 5000 + static_cast<std::uint64_t>(curve.size()));
@@ -117,7 +115,7 @@ std::vector<MethodCurves> runLearningCurves(
         } else {
             // Online learners carry what they learned into the next trial; the others start
             // every trial afresh (a flat curve to read the learners against).
-            auto controller = ControllerFactory::create(method, profile, demonstration, fittedB);
+            auto controller = MethodCatalog::create(method, profile, demonstration, fittedB);
             for (int trial = 0; consumed < settings.budgetSteps; ++trial) {
                 if (settings.cancelled && settings.cancelled()) {
                     break;

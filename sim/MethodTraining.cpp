@@ -1,6 +1,6 @@
 #include "MethodTraining.h"
 
-#include "ControllerFactory.h"
+#include "MethodCatalog.h"
 #include "ParallelTrials.h"
 #include "PlantCatalog.h"
 #include "TrialMetrics.h"
@@ -31,7 +31,7 @@ core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<d
         profile.pd.kp *= c.kp;
         profile.pd.kd *= c.kd;
         auto plant = PlantCatalog::create(setup.plant);
-        auto controller = ControllerFactory::create(QStringLiteral("pd"), profile,
+        auto controller = MethodCatalog::create(QStringLiteral("pd"), profile,
                                                     setup.demonstration, setup.fittedB);
         EpisodeSettings episode = setup.episode;
         episode.seed = setup.seeds[index % seeds];
@@ -78,7 +78,7 @@ PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations) {
     const int scenarios = static_cast<int>(setup.seeds.size());
     auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
         auto plant = PlantCatalog::create(setup.plant);
-        auto policy = ControllerFactory::create(QStringLiteral("pegasus"), setup.profile,
+        auto policy = MethodCatalog::create(QStringLiteral("pegasus"), setup.profile,
                                                 setup.demonstration, setup.fittedB, &theta);
         EpisodeSettings episode = setup.episode;
         episode.seed = setup.seeds[scenario];
@@ -120,7 +120,7 @@ std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count) {
 }
 
 bool trainsOffline(const QString& method) {
-    return method == QLatin1String("pd-selected") || method == QLatin1String("pegasus");
+    return MethodCatalog::get(method).trainsOffline();
 }
 
 std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
@@ -130,16 +130,21 @@ std::unique_ptr<core::Controller> createTrained(const QString& method, const Tra
     if (trainsOffline(method)) {
         TrainingSetup training = setup;
         training.episode.recordSteps = false;
-        if (method == QLatin1String("pegasus")) {
-            pegasusTheta = trainPegasus(training, pegasusIterations).theta;
-        } else {
-            profile.pd = selectPdGains(training);
+        switch (MethodCatalog::get(method).training) {
+            case MethodSpec::Training::Pegasus:
+                pegasusTheta = trainPegasus(training, pegasusIterations).theta;
+                break;
+            case MethodSpec::Training::SelectPdGains:
+                profile.pd = selectPdGains(training);
+                break;
+            case MethodSpec::Training::None:
+                break;
         }
         if (setup.cancelled && setup.cancelled()) {
             return nullptr;
         }
     }
-    return ControllerFactory::create(method, profile, setup.demonstration, setup.fittedB,
+    return MethodCatalog::create(method, profile, setup.demonstration, setup.fittedB,
                                      pegasusTheta.size() ? &pegasusTheta : nullptr);
 }
 

@@ -56,7 +56,7 @@ bool trainsOffline(const QString& method);
 /// `method`'s controller for setup.profile, trained first on setup's seeds if it trains offline
 /// (PD (selected) selects its gains, PEGASUS takes `pegasusIterations` gradient steps). Returns
 /// null if setup.cancelled stopped the training. Throws std::invalid_argument as
-/// ControllerFactory::create does.
+/// MethodCatalog::create does.
 std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
                                                 int pegasusIterations);
 

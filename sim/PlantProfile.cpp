@@ -1,5 +1,7 @@
 #include "PlantProfile.h"
 
+#include "MethodCatalog.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -290,9 +292,8 @@ core::TrackingProblem PlantProfile::priscaProblem(
 }
 
 const core::FeatureMap& PlantProfile::featuresOf(const QString& method) const {
-    const bool prisca =
-        method == QLatin1String("prisca") || method == QLatin1String("prisca-paper");
-    return prisca && priscaFeatures ? *priscaFeatures : features;
+    const MethodSpec* spec = MethodCatalog::find(method);
+    return spec && spec->ownFeatures && priscaFeatures ? *priscaFeatures : features;
 }
 
 int PlantProfile::automaticWindow(const core::Demonstration& demonstration) {

@@ -2,26 +2,17 @@
 
 #include <cmath>
 
-#include "ControllerFactory.h"
+#include "MethodCatalog.h"
 #include "MethodTraining.h"
 #include "ParallelTrials.h"
 #include "PlantCatalog.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
 namespace prisca::sim {
 
-namespace {
-
-// Training seeds come from their own stream, so they never coincide with evaluation seeds.
-
-bool learnsOnline(const QString& method) {
-    return method == QLatin1String("prisca") || method == QLatin1String("prisca-paper") ||
-           method == QLatin1String("pgsd") || method == QLatin1String("ilc");
-}
-
-}  // namespace
 
 Table1Result runTable1(const Table1Settings& settings,
                        std::shared_ptr<const core::Demonstration> demonstration,
@@ -30,7 +21,8 @@ Table1Result runTable1(const Table1Settings& settings,
         throw std::invalid_argument("Table I needs a planar vehicle (final position and heading)");
     }
     for (const QString& method : settings.methods) {
-        if (!ControllerFactory::isMethod(method) || method == QLatin1String("pegasus")) {
+        const MethodSpec* spec = MethodCatalog::find(method);
+        if (!spec || !spec->inTable1) {
             throw std::invalid_argument(
                 QStringLiteral("Table I has no row for method '%1'").arg(method).toStdString());
         }
@@ -53,7 +45,12 @@ Table1Result runTable1(const Table1Settings& settings,
     // a sequential chain of trials, the chains side by side on the pool).
     std::map<QString, std::shared_ptr<const core::Controller>> trained;
     PlantProfile selectedProfile = profile;
-    if (settings.methods.contains(QStringLiteral("pd-selected")) && !trainingSeeds.empty()) {
+    const bool selects = std::any_of(settings.methods.begin(), settings.methods.end(),
+                                     [](const QString& method) {
+                                         return MethodCatalog::get(method).training ==
+                                                MethodSpec::Training::SelectPdGains;
+                                     });
+    if (selects && !trainingSeeds.empty()) {
         TrainingSetup training;
         training.plant = settings.plant;
         training.profile = profile;
@@ -69,14 +66,14 @@ Table1Result runTable1(const Table1Settings& settings,
     }
     QStringList learners;
     for (const QString& method : settings.methods) {
-        if (learnsOnline(method)) {
+        if (MethodCatalog::get(method).learnsOnline) {
             learners << method;
         }
     }
     const std::function<std::shared_ptr<const core::Controller>(int)> warmUp = [&](int i) {
         auto plant = PlantCatalog::create(settings.plant);
         std::shared_ptr<core::Controller> controller =
-            ControllerFactory::create(learners[i], profile, demonstration, fittedB);
+            MethodCatalog::create(learners[i], profile, demonstration, fittedB);
         for (size_t t = 0; t < trainingSeeds.size(); ++t) {
             EpisodeSettings episode = base;
             episode.seed = trainingSeeds[t];
@@ -116,8 +113,11 @@ Table1Result runTable1(const Table1Settings& settings,
             controller = learned->second->clone();
             episode.resetMode = core::ResetMode::WarmStart;
         } else {
-            controller = ControllerFactory::create(
-                method, method == QLatin1String("pd-selected") ? selectedProfile : profile,
+            controller = MethodCatalog::create(
+                method,
+                MethodCatalog::get(method).training == MethodSpec::Training::SelectPdGains
+                    ? selectedProfile
+                    : profile,
                 demonstration, fittedB);
         }
         // Summaries need only the final state; the path is kept for Fig. 7 when asked.
@@ -174,8 +174,10 @@ std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finishe
                 ++count;
             }
         }
+        const MethodSpec& spec = MethodCatalog::get(method.method);
         rows.push_back({method.method, core::summarizeErrors(position),
-                        core::summarizeErrors(orientation), core::mean(cpu)});
+                        core::summarizeErrors(orientation), core::mean(cpu), spec.label,
+                        spec.limit});
     }
     if (finished) {
         *finished = count;

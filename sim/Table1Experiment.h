@@ -3,6 +3,7 @@
 #include "core/Table1Report.h"
 
 #include "EpisodeRunner.h"
+#include "MethodCatalog.h"
 #include "PlantProfile.h"
 #include "TrialMetrics.h"
 #include "core/Demonstration.h"
@@ -18,9 +19,8 @@ namespace prisca::sim {
 /// How Table I is produced (paper Table I, DESIGN.md "Metrics"). Plain data.
 struct Table1Settings {
     QString plant = QStringLiteral("slidecar");  ///< a planar vehicle
-    /// Methods, as ControllerFactory names them, in table order.
-    QStringList methods = {"prisca",   "prisca-paper", "pd",   "pd-selected", "pd-h", "pd-lsd",
-                           "pd-h-lsd", "playback",     "pgsd", "ilc",         "oracle"};
+    /// Methods, as MethodCatalog names them, in table order (default: every Table I method).
+    QStringList methods = MethodCatalog::table1Ids();
     int trials = 20;         ///< evaluation trials per method
     std::uint64_t seed = 1;  ///< evaluation trial i uses mixSeed(seed, i)
     /// Training trials (their own seeds, never evaluation ones): PD (selected) scores its gain

@@ -16,7 +16,7 @@
 #include "core/ActionMapping.h"
 #include "core/PriscaController.h"
 #include "core/Statistics.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
                 std::printf("\n");
             }
         }
-        auto ctrl = sim::ControllerFactory::create(method, p, demo, fit.b);
+        auto ctrl = sim::MethodCatalog::create(method, p, demo, fit.b);
         auto plant = sim::PlantCatalog::create("slidecar");
         sim::EpisodeSettings ep = p.episode(*demo, 1.0, 1.0);
         const int traceTrials = getenv("TRIALS") ? atoi(getenv("TRIALS")) : 30;
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
         double worst = -1.0;
         sim::EpisodeResult worstRun;
         for (int i = 0; i < 10; ++i) {
-            auto controller = sim::ControllerFactory::create(method, p, demo, fit.b);
+            auto controller = sim::MethodCatalog::create(method, p, demo, fit.b);
             sim::EpisodeSettings e = p.episode(*demo, 1.0, 1.0);
             e.seed = sim::mixSeed(where[1].toULongLong(), i);
             auto r = sim::runEpisode(*plant, *controller, e);

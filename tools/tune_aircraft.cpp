@@ -10,7 +10,7 @@
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
@@ -86,7 +86,7 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
 
     const auto runs = sim::runParallel<std::pair<double, double>>(kRuns, 2, [&](int run) {
         auto plant = sim::PlantCatalog::create(plantName, sim::SimulationTiming{});
-        auto controller = sim::ControllerFactory::create(method, p, demo, B);
+        auto controller = sim::MethodCatalog::create(method, p, demo, B);
         sim::EpisodeSettings episode;
         episode.perturbation = sim::Perturbation::realistic();
         episode.measurement = p.measurement;

@@ -8,7 +8,7 @@
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
@@ -55,7 +55,7 @@ double score(const QString& plant, const QStringList& styles, const Setting& s) 
                 core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), {}).b;
             const auto runs = sim::runParallel<double>(kRuns, 2, [&](int run) {
                 auto plantObject = sim::PlantCatalog::create(plant);
-                auto controller = sim::ControllerFactory::create("ilc", p, demo, B);
+                auto controller = sim::MethodCatalog::create("ilc", p, demo, B);
                 sim::EpisodeSettings episode = p.episode(*demo, 1.0, 1.0);
                 episode.recordSteps = true;
                 double rms = 0.0;

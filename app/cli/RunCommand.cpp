@@ -4,7 +4,7 @@
 #include "app/cli/TaskSetup.h"
 #include "app/figures/PaperFigures.h"
 #include "core/RunLogCsv.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
@@ -64,7 +64,7 @@ int runCommand(const QStringList& arguments) {
                                     "control step."));
     line.addValue("plant", "Plant: " + sim::PlantCatalog::names().join(", ") + ".", "name");
     line.addValue("demo", "Demonstration CSV to repeat.", "file");
-    line.addValue("method", "Method: " + sim::ControllerFactory::methods().join(", ") + ".",
+    line.addValue("method", "Method: " + sim::MethodCatalog::ids().join(", ") + ".",
                   "name");
     line.addValue("trials", "Trials in a row (warm start: PRISCA and PGSD keep learning).", "N",
                   "1");
@@ -98,9 +98,9 @@ int runCommand(const QStringList& arguments) {
     }
     const QString plantName = line.required("plant");
     const QString method = line.required("method");
-    if (!sim::ControllerFactory::isMethod(method)) {
+    if (!sim::MethodCatalog::contains(method)) {
         throw UsageError(QStringLiteral("unknown method '%1' (one of: %2)")
-                             .arg(method, sim::ControllerFactory::methods().join(' ')));
+                             .arg(method, sim::MethodCatalog::ids().join(' ')));
     }
     const QString out = line.required("out");
     Task task = loadTask(plantName, line.required("demo"), line.value("mask"));
@@ -157,8 +157,9 @@ int runCommand(const QStringList& arguments) {
     auto plant = sim::PlantCatalog::create(task.plant, task.timing);
     auto controller = build(method);
     const QString compareMethod = line.value("compare");
-    if (!compareMethod.isEmpty() && !sim::ControllerFactory::isMethod(compareMethod)) {
-        throw UsageError(QStringLiteral("--compare: unknown method '%1'").arg(compareMethod));
+    if (!compareMethod.isEmpty() && !sim::MethodCatalog::contains(compareMethod)) {
+        throw UsageError(QStringLiteral("--compare: unknown method '%1' (one of: %2)")
+                             .arg(compareMethod, sim::MethodCatalog::ids().join(' ')));
     }
     auto comparison = compareMethod.isEmpty() ? nullptr : build(compareMethod);
     const sim::PlantInfo& info = plant->info();

@@ -5,7 +5,7 @@
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Table1Report.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/Table1Experiment.h"
@@ -30,8 +30,10 @@ QStringList checkedMethods(const CommandLine& line, const QStringList& defaults)
         throw UsageError(QStringLiteral("--methods: no method given"));
     }
     for (const QString& method : methods) {
-        if (!sim::ControllerFactory::isMethod(method) || method == QLatin1String("pegasus")) {
-            throw UsageError(QStringLiteral("--methods: '%1' is not a Table I method").arg(method));
+        const sim::MethodSpec* spec = sim::MethodCatalog::find(method);
+        if (!spec || !spec->inTable1) {
+            throw UsageError(QStringLiteral("--methods: '%1' is not a Table I method (one of: %2)")
+                                 .arg(method, sim::MethodCatalog::table1Ids().join(' ')));
         }
     }
     return methods;

@@ -1,6 +1,7 @@
 #include "app/figures/PaperFigures.h"
 
 #include "core/Table1Report.h"
+#include "sim/MethodCatalog.h"
 
 #include <cmath>
 
@@ -46,8 +47,8 @@ plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, do
         if (!trials)
             continue;
         plot::Axes whole, close;
-        whole.title = core::table1Label(shown[i]);
-        close.title = core::table1Label(shown[i]) + QStringLiteral(": close-up of the lot");
+        whole.title = sim::MethodCatalog::get(shown[i]).label;
+        close.title = sim::MethodCatalog::get(shown[i]).label + QStringLiteral(": close-up of the lot");
         for (plot::Axes* axes : {&whole, &close}) {
             axes->xLabel = QStringLiteral("x [cm]");
             axes->yLabel = QStringLiteral("y [cm]");
@@ -99,7 +100,7 @@ plot::Figure learningCurveFigure(const std::vector<QString>& methods,
     axes.logY = true;
     for (size_t m = 0; m < methods.size(); ++m) {
         plot::Line line;
-        line.label = methods[m].toUpper();
+        line.label = sim::MethodCatalog::get(methods[m]).label;
         line.width = 2.0;
         plot::Band band;
         band.label = line.label;
@@ -156,7 +157,7 @@ plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
             return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
         };
         axes.title = QStringLiteral("%1: RMS %2 m in time, %3 m to the path (mean of %4)")
-                         .arg(core::table1Label(panel.method))
+                         .arg(sim::MethodCatalog::get(panel.method).label)
                          .arg(mean(panel.rms), 0, 'f', 2)
                          .arg(mean(panel.pathRms), 0, 'f', 2)
                          .arg(panel.rms.size());

@@ -8,6 +8,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "sim/MethodCatalog.h"
+#include "sim/PlantCatalog.h"
+
 #include <fcntl.h>
 #include <pty.h>
 #include <termios.h>
@@ -288,10 +291,9 @@ class TestCliCommands : public QObject {
     void run_everyMethodOnEveryPlant_data() {
         QTest::addColumn<QString>("plant");
         QTest::addColumn<QString>("method");
-        for (const char* plant : {"slidecar", "acrobot", "aircraft"}) {
-            for (const char* method :
-                 {"prisca", "prisca-paper", "pgsd", "pegasus", "pd", "pd-selected", "pd-h",
-                  "pd-lsd", "pd-h-lsd", "playback", "ilc", "oracle"}) {
+        // Every catalog method on every catalog plant: a new entry is tested without a word here.
+        for (const QString& plant : prisca::sim::PlantCatalog::names()) {
+            for (const QString& method : prisca::sim::MethodCatalog::ids()) {
                 QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(plant, method)))
                     << plant << method;
             }

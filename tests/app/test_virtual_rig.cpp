@@ -3,7 +3,7 @@
 // link close the loop. The car parks; E-STOP leaves it neutral.
 #include "app/VirtualRig.h"
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantProfile.h"
 
@@ -25,7 +25,7 @@ std::unique_ptr<core::Controller> makeController(const QString& method,
         sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(**demo, profile.mapping, profile.info.deviationModel()).b;
-    return sim::ControllerFactory::create(method, profile, *demo, b);
+    return sim::MethodCatalog::create(method, profile, *demo, b);
 }
 
 // Full throttle straight ahead whatever it sees; its deviation is the pose's distance from where

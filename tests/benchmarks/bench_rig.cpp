@@ -3,7 +3,7 @@
 // real time.
 #include "app/VirtualRig.h"
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
 #include <QCoreApplication>
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
         sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
-    app::VirtualRig rig({}, sim::ControllerFactory::create("prisca", profile, demo, b));
+    app::VirtualRig rig({}, sim::MethodCatalog::create("prisca", profile, demo, b));
     QString error;
     if (!rig.open(&error)) {
         std::printf("bench_rig: %s\n", qPrintable(error));

@@ -1,7 +1,7 @@
 // Simulation benchmarks (make bench): slide-car speed against real time, and a 20-trial batch
 // of closed-loop PRISCA trials on 1 and 2 threads.
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
@@ -63,7 +63,7 @@ int main() {
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
     const std::function<double(int)> trial = [&](int i) {
         auto plant = sim::PlantCatalog::create("slidecar");
-        auto controller = sim::ControllerFactory::create("prisca", profile, demo, B);
+        auto controller = sim::MethodCatalog::create("prisca", profile, demo, B);
         sim::EpisodeSettings s;
         s.seed = sim::mixSeed(7, i);
         s.perturbation = sim::Perturbation::realistic();

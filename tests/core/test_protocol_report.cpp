@@ -16,8 +16,14 @@ namespace {
 constexpr double kT975dof1 = 12.706204736174707;  // Student t quantiles, 97.5%
 constexpr double kT975dof3 = 3.182446305284263;
 
+// A cell's row as the experiment labels it: PRISCA's Table I label, the oracle as the limit.
 Table1Row row(const char* method, double position, double orientation, double cpu) {
-    return {method, summarizeErrors({position}), summarizeErrors({orientation}), cpu};
+    const QString id = QString::fromLatin1(method);
+    const bool limit = id == QLatin1String("oracle");
+    const QString label = id == QLatin1String("prisca") ? QStringLiteral("OURS (PRISCA)")
+                          : limit                       ? QStringLiteral("LIMIT (oracle)")
+                                                        : id.toUpper();
+    return {id, summarizeErrors({position}), summarizeErrors({orientation}), cpu, label, limit};
 }
 
 // PRISCA's cells: position 2, 4 (style A, sets 1, 2) and 6, 8 (style B); orientation ten times.

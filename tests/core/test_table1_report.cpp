@@ -6,6 +6,8 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include <limits>
+
 using namespace prisca::core;
 
 class TestTable1Report : public QObject {
@@ -14,8 +16,9 @@ class TestTable1Report : public QObject {
     // Position errors {3, 5, 7} cm: MAE 5, sample std 2, variance 4.
     // Orientation errors {-10, 20, 30} deg: |e| = {10, 20, 30}: MAE 20, std 10, variance 100.
     static std::vector<Table1Row> rows() {
-        return {{"prisca", summarizeErrors({3, 5, 7}), summarizeErrors({-10, 20, 30}), 0.6815},
-                {"pd-h-lsd", summarizeErrors({1, 1}), summarizeErrors({4, 4}), 2512.4}};
+        return {{"prisca", summarizeErrors({3, 5, 7}), summarizeErrors({-10, 20, 30}), 0.6815,
+                 "OURS (PRISCA)"},
+                {"pd-h-lsd", summarizeErrors({1, 1}), summarizeErrors({4, 4}), 2512.4, "PD+H+LSD"}};
     }
 
   private slots:
@@ -65,7 +68,9 @@ class TestTable1Report : public QObject {
     }
 
     void emptyRow_showsNotAvailableRatherThanNan() {
-        const std::vector<Table1Row> none = {{"pd", summarizeErrors({}), summarizeErrors({})}};
+        const std::vector<Table1Row> none = {
+            {"pd", summarizeErrors({}), summarizeErrors({}),
+             std::numeric_limits<double>::quiet_NaN(), "PD"}};
         const QString md = formatTable1(none, TableFormat::Markdown, "c");
         QVERIFY(md.contains("| PD | 0 | n/a ± n/a |"));
         QVERIFY(md.trimmed().endsWith("| n/a |"));  // CPU time not measured

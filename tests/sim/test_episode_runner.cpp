@@ -1,6 +1,6 @@
 // The closed loop: measurement model, episode runner, parallel trials, the controller factory.
 #include "core/ActionMapping.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MeasurementModel.h"
 #include "sim/ParallelTrials.h"
@@ -123,7 +123,7 @@ class TestEpisodeRunner : public QObject {
         auto run = [&](std::uint64_t seed) {
             SlideCar car;
             auto controller =
-                ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+                MethodCatalog::create("prisca", setup.profile, setup.demo, setup.fittedB);
             return runEpisode(car, *controller, setup.settings(seed));
         };
         const EpisodeResult a = run(7), b = run(7), c = run(8);
@@ -147,7 +147,7 @@ class TestEpisodeRunner : public QObject {
         const SlideCarSetup setup;
         SlideCar car;
         auto controller =
-            ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+            MethodCatalog::create("prisca", setup.profile, setup.demo, setup.fittedB);
         const EpisodeResult whole = runEpisode(car, *controller, setup.settings(5));
         EpisodeSettings settings = setup.settings(5);
         settings.recordSteps = false;  // the live view keeps its own copy of each step
@@ -173,7 +173,7 @@ class TestEpisodeRunner : public QObject {
         const SlideCarSetup setup;
         SlideCar car;
         auto playback =
-            ControllerFactory::create("playback", setup.profile, setup.demo, setup.fittedB);
+            MethodCatalog::create("playback", setup.profile, setup.demo, setup.fittedB);
         EpisodeSettings s = setup.settings(3);
         s.duration = 60.0;
         const EpisodeResult rested = runEpisode(car, *playback, s);
@@ -227,7 +227,7 @@ class TestEpisodeRunner : public QObject {
         auto trial = [&](int i) {
             SlideCar car;
             auto controller =
-                ControllerFactory::create("prisca", setup.profile, setup.demo, setup.fittedB);
+                MethodCatalog::create("prisca", setup.profile, setup.demo, setup.fittedB);
             EpisodeSettings s = setup.settings(mixSeed(99, i));
             s.recordSteps = false;
             return runEpisode(car, *controller, s).finalState;
@@ -297,10 +297,10 @@ class TestEpisodeRunner : public QObject {
 
     void factory_buildsEveryMethodForTheSlideCar() {
         const SlideCarSetup setup;
-        for (const QString& method : ControllerFactory::methods()) {
+        for (const QString& method : MethodCatalog::ids()) {
             SlideCar car;
             auto controller =
-                ControllerFactory::create(method, setup.profile, setup.demo, setup.fittedB);
+                MethodCatalog::create(method, setup.profile, setup.demo, setup.fittedB);
             QCOMPARE(controller->name(), method);
             EpisodeSettings s = setup.settings(1);
             s.duration = 1.0;
@@ -310,7 +310,7 @@ class TestEpisodeRunner : public QObject {
         }
         QVERIFY_THROWS_EXCEPTION(
             std::invalid_argument,
-            ControllerFactory::create("bogus", setup.profile, setup.demo, setup.fittedB));
+            MethodCatalog::create("bogus", setup.profile, setup.demo, setup.fittedB));
     }
 };
 

@@ -1,7 +1,7 @@
 // The nominal case: with no perturbation and a perfect sensor the plant is the one the
 // demonstration was recorded on, so every closed-loop method must repeat it (park within 1 cm on
 // every slide-car style) and action playback must repeat it.
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 #include "sim/Table1Protocol.h"
@@ -17,7 +17,7 @@ class TestNominalCase : public QObject {
     void everyMethod_parksOnEveryStyle_data() {
         QTest::addColumn<QString>("method");
         QTest::addColumn<double>("toleranceCm");
-        for (const QString& method : ControllerFactory::methods()) {
+        for (const QString& method : MethodCatalog::ids()) {
             if (method == QLatin1String("pegasus")) {
                 continue;  // no Table I row: it trains offline on its own scenarios
             }

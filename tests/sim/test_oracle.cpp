@@ -5,7 +5,7 @@
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantProfile.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/TrialMetrics.h"
 
 #include <QtTest>
@@ -153,7 +153,7 @@ class TestOracle : public QObject {
         auto demo = std::make_shared<core::Demonstration>(
             PlantCatalog::demonstrate(QStringLiteral("slidecar"), 3));
         const PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
-        auto oracle = ControllerFactory::create(QStringLiteral("oracle"), profile, demo,
+        auto oracle = MethodCatalog::create(QStringLiteral("oracle"), profile, demo,
                                                 Eigen::MatrixXd::Zero(2, 6));
         auto plant = PlantCatalog::create(QStringLiteral("slidecar"));
         EpisodeSettings episode = profile.episode(*demo, 0.0, 0.0);

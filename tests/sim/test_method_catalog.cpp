@@ -3,19 +3,20 @@
 #include "core/ActionMapping.h"
 #include "core/IlcController.h"
 #include "core/PriscaController.h"
-#include "sim/ControllerFactory.h"
+#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/TrialMetrics.h"
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
 
+#include <QSet>
 #include <QtTest>
 
 using namespace prisca;
 using namespace prisca::sim;
 
-class TestControllerFactory : public QObject {
+class TestMethodCatalog : public QObject {
     Q_OBJECT
   private:
     std::shared_ptr<const core::Demonstration> demo_ =
@@ -24,7 +25,7 @@ class TestControllerFactory : public QObject {
 
   private slots:
     void priscaPaper_isAlgorithm1AsPrinted() {
-        auto controller = ControllerFactory::create("prisca-paper", profile_, demo_,
+        auto controller = MethodCatalog::create("prisca-paper", profile_, demo_,
                                                     Eigen::MatrixXd::Zero(2, 6));
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
@@ -49,7 +50,7 @@ class TestControllerFactory : public QObject {
 
     void prisca_isTheProfilesVariantWithTheGivenFit() {
         const Eigen::MatrixXd B = Eigen::MatrixXd::Constant(2, 6, 0.5);
-        auto controller = ControllerFactory::create("prisca", profile_, demo_, B);
+        auto controller = MethodCatalog::create("prisca", profile_, demo_, B);
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
         QCOMPARE(prisca->parameters().thetaBound, profile_.prisca.thetaBound);
@@ -71,7 +72,7 @@ class TestControllerFactory : public QObject {
             DemonstrationStyles::record("slidecar", "stick-180-left", 300));
         const Eigen::MatrixXd B =
             core::fitActionMapping(*demo, profile_.mapping, profile_.info.deviationModel()).b;
-        auto controller = ControllerFactory::create("prisca", profile_, demo, B);
+        auto controller = MethodCatalog::create("prisca", profile_, demo, B);
         auto plant = PlantCatalog::create("slidecar");
         Eigen::MatrixXd middle;
         double worst = 0.0;
@@ -128,7 +129,7 @@ class TestControllerFactory : public QObject {
         // The factory's PRISCA takes them when the profile asks, and the normalised step.
         QVERIFY(profile_.priscaAutomatic);
         auto shared = std::make_shared<const core::Demonstration>(*demo_);
-        auto controller = ControllerFactory::create("prisca", profile_, shared,
+        auto controller = MethodCatalog::create("prisca", profile_, shared,
                                                     Eigen::MatrixXd::Constant(2, 6, 0.5));
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
@@ -136,7 +137,7 @@ class TestControllerFactory : public QObject {
         QCOMPARE(prisca->parameters().stepSize.scale, PlantProfile::automaticStep);
         PlantProfile preset2 = profile_;
         preset2.priscaAutomatic = false;
-        controller = ControllerFactory::create("prisca", preset2, shared,
+        controller = MethodCatalog::create("prisca", preset2, shared,
                                                Eigen::MatrixXd::Constant(2, 6, 0.5));
         prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(!prisca->parameters().stepSize.normalised);
@@ -145,7 +146,7 @@ class TestControllerFactory : public QObject {
 
     void oracle_knowsTheTrialsLength() {
         auto controller =
-            ControllerFactory::create("oracle", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+            MethodCatalog::create("oracle", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
         auto* oracle = dynamic_cast<OracleController*>(controller.get());
         QVERIFY(oracle);
         const EpisodeSettings trial = profile_.episode(*demo_, 1.0, 1.0);
@@ -157,7 +158,7 @@ class TestControllerFactory : public QObject {
 
     void ilc_learnsAroundThePdGains() {
         auto controller =
-            ControllerFactory::create("ilc", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+            MethodCatalog::create("ilc", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
         auto* ilc = dynamic_cast<core::IlcController*>(controller.get());
         QVERIFY(ilc);
         QCOMPARE(ilc->parameters().feedback.kp, Eigen::VectorXd(profile_.pd.kp *
@@ -167,9 +168,45 @@ class TestControllerFactory : public QObject {
         QCOMPARE(ilc->parameters().lead, profile_.ilcLead);
     }
 
+    void catalog_isOneTableEveryListComesFrom() {
+        // Ids unique and labelled; every entry builds a controller that calls itself by its id.
+        QSet<QString> seen, labels;
+        const Eigen::MatrixXd B = Eigen::MatrixXd::Constant(2, 6, 0.5);
+        for (const MethodSpec& spec : MethodCatalog::all()) {
+            QVERIFY2(!seen.contains(spec.id), qPrintable(spec.id));
+            seen.insert(spec.id);
+            QVERIFY2(!spec.label.isEmpty() && !labels.contains(spec.label), qPrintable(spec.id));
+            labels.insert(spec.label);
+            QVERIFY(spec.create);
+            auto controller = MethodCatalog::create(spec.id, profile_, demo_, B);
+            QVERIFY(controller);
+            QCOMPARE(controller->name(), spec.id);
+            QCOMPARE(&MethodCatalog::get(spec.id), &spec);
+        }
+        // The traits the experiments read, as the paper's protocol has them.
+        QCOMPARE(MethodCatalog::table1Ids(),
+                 QStringList({"prisca", "prisca-paper", "pd", "pd-selected", "pd-h", "pd-lsd",
+                              "pd-h-lsd", "playback", "pgsd", "ilc", "oracle"}));
+        QVERIFY(!MethodCatalog::curveIds().contains("pd-selected"));
+        QVERIFY(MethodCatalog::curveIds().contains("pegasus"));
+        QStringList online, limits, own;
+        for (const MethodSpec& spec : MethodCatalog::all()) {
+            if (spec.learnsOnline) online << spec.id;
+            if (spec.limit) limits << spec.id;
+            if (spec.ownFeatures) own << spec.id;
+        }
+        QCOMPARE(online, QStringList({"prisca", "prisca-paper", "pgsd", "ilc"}));
+        QCOMPARE(limits, QStringList({"oracle"}));
+        QCOMPARE(own, QStringList({"prisca", "prisca-paper"}));
+        QVERIFY(MethodCatalog::get("oracle").simulationOnly);
+        QCOMPARE(MethodCatalog::get("pegasus").training, MethodSpec::Training::Pegasus);
+        QCOMPARE(MethodCatalog::get("pd-selected").training, MethodSpec::Training::SelectPdGains);
+        QCOMPARE(MethodCatalog::find("magic"), nullptr);
+    }
+
     void unknownMethod_namesTheKnownOnes() {
         try {
-            ControllerFactory::create("magic", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
+            MethodCatalog::create("magic", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
             QFAIL("no exception");
         } catch (const std::invalid_argument& e) {
             QVERIFY(QString::fromStdString(e.what()).contains("prisca-paper"));
@@ -177,5 +214,5 @@ class TestControllerFactory : public QObject {
     }
 };
 
-QTEST_APPLESS_MAIN(TestControllerFactory)
-#include "test_controller_factory.moc"
+QTEST_APPLESS_MAIN(TestMethodCatalog)
+#include "test_method_catalog.moc"

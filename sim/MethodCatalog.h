@@ -1,0 +1,69 @@
+#pragma once
+
+#include "PlantProfile.h"
+#include "core/Controller.h"
+
+#include <QStringList>
+
+#include <memory>
+#include <vector>
+
+namespace prisca::sim {
+
+/// What a method's controller is made from: the plant's profile (features, limits, matching,
+/// gains), the demonstration, the fitted B = B_v (.) B~ (m x n) and, for a method trained
+/// offline into a policy, that policy's theta (p x m; null for none).
+struct MethodInput {
+    const PlantProfile& profile;
+    std::shared_ptr<const core::Demonstration> demonstration;
+    const Eigen::MatrixXd& fittedB;
+    const Eigen::MatrixXd* theta = nullptr;
+};
+
+/// One method: everything the window, the CLI, Table I and the learning curves need to know of
+/// it. Adding a method is one entry in MethodCatalog.cpp plus the method's own files.
+struct MethodSpec {
+    using Create = std::unique_ptr<core::Controller> (*)(const MethodSpec&, const MethodInput&);
+    /// How a method is trained before it is evaluated (MethodTraining).
+    enum class Training {
+        None,           ///< evaluated as it is (online learners learn trial after trial)
+        SelectPdGains,  ///< grid-searches the PD gains on the training trials
+        Pegasus         ///< searches a linear policy on fixed scenarios
+    };
+    QString id;            ///< as the command line and session files spell it, e.g. "pd-h-lsd"
+    QString label;         ///< in tables, lists and figures, e.g. "PD+H+LSD"
+    const char* summary = "";  ///< one line for --help
+    bool learnsOnline = false;  ///< learns trial after trial (warm-started in training)
+    Training training = Training::None;
+    bool inTable1 = true;        ///< has a row in Table I
+    bool inCurves = true;        ///< can be drawn as a learning curve
+    bool ownFeatures = false;    ///< theta over the profile's PRISCA features (priscaFeatures)
+    bool limit = false;          ///< the ruler every accuracy figure is read against
+    bool simulationOnly = false; ///< needs the simulated plant itself (not on the rig)
+    Create create = nullptr;     ///< builds the controller
+
+    bool trainsOffline() const { return training != Training::None; }
+};
+
+/// The methods, in the order every list shows them.
+class MethodCatalog {
+  public:
+    static const std::vector<MethodSpec>& all();
+    /// Every id; the ids with a Table I row; the ids a learning curve can show.
+    static QStringList ids();
+    static QStringList table1Ids();
+    static QStringList curveIds();
+    /// The spec of an id, or null.
+    static const MethodSpec* find(const QString& id);
+    static bool contains(const QString& id) { return find(id) != nullptr; }
+    /// The spec of an id; std::invalid_argument naming the known ids if there is none.
+    static const MethodSpec& get(const QString& id);
+    /// The controller of `method` (std::invalid_argument for an unknown one or inconsistent
+    /// shapes). "pd-selected" uses profile.pd: pass a profile whose gains were selected.
+    static std::unique_ptr<core::Controller> create(
+        const QString& method, const PlantProfile& profile,
+        std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
+        const Eigen::MatrixXd* theta = nullptr);
+};
+
+}  // namespace prisca::sim
