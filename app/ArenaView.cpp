@@ -48,6 +48,8 @@ ArenaView::ArenaView(QWidget* parent) : QWidget(parent) {
 void ArenaView::setScene(const sim::PlantInfo& info,
                          std::shared_ptr<const core::Demonstration> demonstration) {
     info_ = info;
+    const sim::PlantEntry* entry = sim::PlantCatalog::find(info.name);
+    drawing_ = entry ? entry->drawing : sim::PlantEntry::Drawing::Vehicle;
     demonstration_ = std::move(demonstration);
     desired_.clear();
     if (demonstration_) {
@@ -88,7 +90,7 @@ void ArenaView::addSamples(const QVector<LiveSample>& samples) {
         const Eigen::VectorXd& s = sample.state;
         if (info_.pose) {
             trail_.push_back({s[info_.pose->x], s[info_.pose->y]});
-            if (info_.name == QLatin1String("slidecar") && s.size() >= 5 &&
+            if (drawing_ == sim::PlantEntry::Drawing::Car && s.size() >= 5 &&
                 std::abs(s[4]) > kSkidSpeed) {
                 const double psi = s[info_.pose->heading];
                 skidMarks_.push_back(
@@ -166,10 +168,10 @@ void ArenaView::paintEvent(QPaintEvent*) {
     painter.setRenderHint(QPainter::Antialiasing);
     painter.fillRect(rect(), QColor(0xfa, 0xfa, 0xf7));
     drawGrid(painter);
-    if (info_.pose) {
-        drawPlanar(painter);
-    } else if (!info_.name.isEmpty()) {
+    if (drawing_ == sim::PlantEntry::Drawing::Arm) {
         drawAcrobot(painter);
+    } else if (info_.pose) {
+        drawPlanar(painter);
     }
     if (wind_) {
         drawWind(painter);
@@ -229,7 +231,7 @@ void ArenaView::drawPlanar(QPainter& painter) const {
         }
         painter.drawPolyline(screen);
     };
-    const bool car = info_.name == QLatin1String("slidecar");
+    const bool car = drawing_ == sim::PlantEntry::Drawing::Car;
     // The parking lot: the demonstration's final pose.
     if (car && demonstration_ && demonstration_->length() > 0) {
         const Eigen::VectorXd lot = demonstration_->states.row(demonstration_->length() - 1);
@@ -268,10 +270,25 @@ void ArenaView::drawPlanar(QPainter& painter) const {
         if (car) {
             const double steering = action_.size() >= 2 ? action_[1] : 0.0;
             drawCar(painter, state_, steering);
-        } else {
+        } else if (drawing_ == sim::PlantEntry::Drawing::Aircraft) {
             drawAircraft(painter, state_);
+        } else {
+            drawMarker(painter, state_);
         }
     }
+}
+
+void ArenaView::drawMarker(QPainter& painter, const Eigen::VectorXd& s) const {
+    // Any other planar vehicle: an arrow at its pose, a fixed size on screen.
+    painter.save();
+    painter.translate(toScreen({s[info_.pose->x], s[info_.pose->y]}));
+    painter.rotate(-s[info_.pose->heading] * 180.0 / M_PI);
+    QPolygonF arrow;
+    arrow << QPointF(12, 0) << QPointF(-8, 7) << QPointF(-4, 0) << QPointF(-8, -7);
+    painter.setPen(cosmetic(QColor(0x20, 0x20, 0x20), 1));
+    painter.setBrush(QColor(0x2c, 0xa0, 0x2c));
+    painter.drawPolygon(arrow);
+    painter.restore();
 }
 
 void ArenaView::drawCar(QPainter& painter, const Eigen::VectorXd& s, double steering) const {

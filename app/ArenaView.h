@@ -2,6 +2,7 @@
 
 #include "app/RunWorker.h"
 #include "sim/Plant.h"
+#include "sim/PlantCatalog.h"
 
 #include <QPointF>
 #include <QVector>
@@ -57,11 +58,13 @@ class ArenaView : public QWidget {
     void drawPlanar(QPainter& painter) const;
     void drawCar(QPainter& painter, const Eigen::VectorXd& state, double steering) const;
     void drawAircraft(QPainter& painter, const Eigen::VectorXd& state) const;
+    void drawMarker(QPainter& painter, const Eigen::VectorXd& state) const;
     void drawAcrobot(QPainter& painter) const;
     void drawWind(QPainter& painter) const;
     QPointF acrobotTip(double theta1, double theta2, QPointF* elbow) const;
 
     sim::PlantInfo info_;
+    sim::PlantEntry::Drawing drawing_ = sim::PlantEntry::Drawing::Vehicle;  // from the catalog
     std::shared_ptr<const core::Demonstration> demonstration_;
     QVector<QPointF> desired_;    ///< demonstration path (world) or acrobot tip path
     QVector<QPointF> trail_;      ///< this trial

@@ -22,7 +22,7 @@ class LabSession : public QObject {
   public:
     explicit LabSession(QObject* parent = nullptr);
 
-    /// The target: "slidecar", "acrobot" or "aircraft" (sim::PlantCatalog names).
+    /// The target: a sim::PlantCatalog name ("slidecar", "acrobot", ...).
     const QString& plant() const { return plant_; }
     /// Chooses a target: loads its profile (mapping, features, method defaults) and its scripted
     /// demonstration, and fits B_v. Throws std::invalid_argument for an unknown plant.

@@ -6,6 +6,7 @@
 #include "sim/PlantCatalog.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -177,9 +178,9 @@ void TaskPanel::retranslateUi() {
     targetLabel_->setText(tr("Target:"));
     for (int i = 0; i < target_->count(); ++i) {
         const QString name = target_->itemData(i).toString();
-        target_->setItemText(i, name == QLatin1String("slidecar")  ? tr("Simulated slide-car")
-                                : name == QLatin1String("acrobot") ? tr("Simulated acrobot")
-                                                                   : tr("Simulated aircraft"));
+        const sim::PlantEntry* entry = sim::PlantCatalog::find(name);
+        target_->setItemText(
+            i, entry ? QCoreApplication::translate("PlantCatalog", entry->displayName) : name);
     }
     open_->setText(tr("Open..."));
     open_->setToolTip(tr("Open a demonstration CSV recorded earlier"));

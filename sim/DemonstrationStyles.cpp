@@ -1,5 +1,7 @@
 #include "DemonstrationStyles.h"
 
+#include "PlantCatalog.h"
+
 #include "AcrobotDemonstrator.h"
 #include "AircraftDemonstrator.h"
 #include "SlideCarDemonstrator.h"
@@ -174,16 +176,8 @@ const Style* find(const std::vector<Style>& styles, const QString& name) {
 }  // namespace
 
 std::vector<DemonstrationStyle> DemonstrationStyles::of(const QString& plant) {
-    if (plant == QLatin1String("slidecar")) {
-        return describe(carStyles());
-    }
-    if (plant == QLatin1String("acrobot")) {
-        return describe(armStyles());
-    }
-    if (plant == QLatin1String("aircraft")) {
-        return describe(pilotStyles());
-    }
-    return {};
+    const PlantEntry* entry = PlantCatalog::find(plant);
+    return entry && entry->styles.list ? entry->styles.list() : std::vector<DemonstrationStyle>{};
 }
 
 QStringList DemonstrationStyles::names(const QString& plant) {
@@ -217,21 +211,38 @@ core::Demonstration recordStyle(const std::vector<Style<Script>>& styles, const 
 
 }  // namespace
 
+StyleSet slideCarStyles() {
+    return {[] { return describe(carStyles()); },
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+                return recordStyle<SlideCarDemonstrator>(carStyles(), QStringLiteral("slidecar"),
+                                                         style, seed, timing);
+            }};
+}
+
+StyleSet acrobotStyles() {
+    return {[] { return describe(armStyles()); },
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+                return recordStyle<AcrobotDemonstrator>(armStyles(), QStringLiteral("acrobot"),
+                                                        style, seed, timing);
+            }};
+}
+
+StyleSet aircraftStyles() {
+    return {[] { return describe(pilotStyles()); },
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+                return recordStyle<AircraftDemonstrator>(pilotStyles(), QStringLiteral("aircraft"),
+                                                         style, seed, timing);
+            }};
+}
+
 core::Demonstration DemonstrationStyles::record(const QString& plant, const QString& style,
                                                 std::uint64_t seed,
                                                 const SimulationTiming& timing) {
-    core::Demonstration demonstration;
-    if (plant == QLatin1String("slidecar")) {
-        demonstration =
-            recordStyle<SlideCarDemonstrator>(carStyles(), plant, style, seed, timing);
-    } else if (plant == QLatin1String("acrobot")) {
-        demonstration = recordStyle<AcrobotDemonstrator>(armStyles(), plant, style, seed, timing);
-    } else if (plant == QLatin1String("aircraft")) {
-        demonstration =
-            recordStyle<AircraftDemonstrator>(pilotStyles(), plant, style, seed, timing);
-    } else {
+    const PlantEntry* entry = PlantCatalog::find(plant);
+    if (!entry || !entry->styles.record) {
         unknownStyle(plant, style);
     }
+    core::Demonstration demonstration = entry->styles.record(style, seed, timing);
     demonstration.metadata.insert(QStringLiteral("style"), style);
     return demonstration;
 }

@@ -17,6 +17,18 @@ struct DemonstrationStyle {
     QString description;  ///< one line for the operator
 };
 
+/// One plant's styles: their list and how one is recorded (PlantCatalog holds one per plant).
+struct StyleSet {
+    std::vector<DemonstrationStyle> (*list)() = nullptr;
+    core::Demonstration (*record)(const QString& style, std::uint64_t seed,
+                                  const SimulationTiming& timing) = nullptr;
+};
+
+/// The slide-car's, the acrobot's and the aircraft's styles (their scripted operators).
+StyleSet slideCarStyles();
+StyleSet acrobotStyles();
+StyleSet aircraftStyles();
+
 /// The family of scripted demonstrations per plant: operators differ (keyboard or stick, left or
 /// right, how far and how fast), and a method is only as good as it is on demonstrations it was
 /// not tuned on. Each style is a scripted operator whose hand varies with the seed. The first

@@ -38,7 +38,7 @@ struct Perturbation {
 /// What a plant is: names and units of its state and action, limits, and how its tracking
 /// error is formed. Plain data.
 struct PlantInfo {
-    QString name;                                 ///< "slidecar", "acrobot" or "aircraft"
+    QString name;                                 ///< its PlantCatalog name, e.g. "slidecar"
     QString description;                          ///< one line for the operator
     QStringList stateNames;                       ///< n names
     QStringList stateUnits;                       ///< n units

@@ -1,9 +1,11 @@
 #include "PlantCatalog.h"
 
 #include "Acrobot.h"
-#include "DemonstrationStyles.h"
 #include "PlanarAircraft.h"
+#include "PlantProfile.h"
 #include "SlideCar.h"
+
+#include <QtGlobal>
 
 #include <stdexcept>
 
@@ -11,49 +13,89 @@ namespace prisca::sim {
 
 namespace {
 
-[[noreturn]] void unknown(const QString& name) {
-    throw std::invalid_argument(QStringLiteral("unknown plant '%1' (one of: %2)")
-                                    .arg(name, PlantCatalog::names().join(QLatin1Char(' ')))
-                                    .toStdString());
+template <class P, class Parameters>
+std::unique_ptr<Plant> make(const SimulationTiming& timing) {
+    return std::make_unique<P>(Parameters{}, timing);
+}
+
+std::vector<PlantEntry> makeCatalog() {
+    std::vector<PlantEntry> all;
+    PlantEntry e;
+    e.name = QStringLiteral("slidecar");
+    e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated slide-car");
+    e.drawing = PlantEntry::Drawing::Car;
+    e.create = &make<SlideCar, SlideCarParameters>;
+    e.describe = &SlideCar::describe;
+    e.profile = &slideCarProfile;
+    e.styles = slideCarStyles();
+    all.push_back(e);
+
+    e = PlantEntry{};
+    e.name = QStringLiteral("acrobot");
+    e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated acrobot");
+    e.drawing = PlantEntry::Drawing::Arm;
+    e.create = &make<Acrobot, AcrobotParameters>;
+    e.describe = [] { return Acrobot::describe(); };
+    e.profile = &acrobotProfile;
+    e.styles = acrobotStyles();
+    all.push_back(e);
+
+    e = PlantEntry{};
+    e.name = QStringLiteral("aircraft");
+    e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated aircraft");
+    e.drawing = PlantEntry::Drawing::Aircraft;
+    e.create = &make<PlanarAircraft, PlanarAircraftParameters>;
+    e.describe = &PlanarAircraft::describe;
+    e.profile = &aircraftProfile;
+    e.styles = aircraftStyles();
+    all.push_back(e);
+    return all;
 }
 
 }  // namespace
 
+const std::vector<PlantEntry>& PlantCatalog::all() {
+    static const std::vector<PlantEntry> catalog = makeCatalog();
+    return catalog;
+}
+
+const PlantEntry* PlantCatalog::find(const QString& name) {
+    for (const PlantEntry& e : all()) {
+        if (e.name == name) {
+            return &e;
+        }
+    }
+    return nullptr;
+}
+
+const PlantEntry& PlantCatalog::get(const QString& name) {
+    if (const PlantEntry* e = find(name)) {
+        return *e;
+    }
+    throw std::invalid_argument(QStringLiteral("unknown plant '%1' (one of: %2)")
+                                    .arg(name, names().join(QLatin1Char(' ')))
+                                    .toStdString());
+}
+
 QStringList PlantCatalog::names() {
-    return {QStringLiteral("slidecar"), QStringLiteral("acrobot"), QStringLiteral("aircraft")};
+    QStringList names;
+    for (const PlantEntry& e : all()) {
+        names << e.name;
+    }
+    return names;
 }
 
 std::unique_ptr<Plant> PlantCatalog::create(const QString& name, const SimulationTiming& timing) {
-    if (name == QLatin1String("slidecar")) {
-        return std::make_unique<SlideCar>(SlideCarParameters{}, timing);
-    }
-    if (name == QLatin1String("acrobot")) {
-        return std::make_unique<Acrobot>(AcrobotParameters{}, timing);
-    }
-    if (name == QLatin1String("aircraft")) {
-        return std::make_unique<PlanarAircraft>(PlanarAircraftParameters{}, timing);
-    }
-    unknown(name);
+    return get(name).create(timing);
 }
 
 PlantInfo PlantCatalog::describe(const QString& name) {
-    if (name == QLatin1String("slidecar")) {
-        return SlideCar::describe();
-    }
-    if (name == QLatin1String("acrobot")) {
-        return Acrobot::describe();
-    }
-    if (name == QLatin1String("aircraft")) {
-        return PlanarAircraft::describe();
-    }
-    unknown(name);
+    return get(name).describe();
 }
 
 core::Demonstration PlantCatalog::demonstrate(const QString& name, std::uint64_t seed,
                                               const SimulationTiming& timing) {
-    if (!contains(name)) {
-        unknown(name);
-    }
+    get(name);  // an unknown plant is named with the known ones
     return DemonstrationStyles::record(name, DemonstrationStyles::classic(name), seed, timing);
 }
 

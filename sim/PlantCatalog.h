@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DemonstrationStyles.h"
 #include "Plant.h"
 #include "core/Demonstration.h"
 
@@ -7,16 +8,45 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace prisca::sim {
 
-/// The simulated plants by name, with their scripted demonstrators: the one place that knows
-/// which plants exist, for the app, the CLI and the experiments.
+struct PlantProfile;
+
+/// One plant: everything the window, the CLI and the experiments need to know of it. Adding a
+/// plant is one entry in PlantCatalog.cpp plus the plant's own files (its model, demonstrator,
+/// styles and profile).
+struct PlantEntry {
+    /// How the arena draws the plant.
+    enum class Drawing {
+        Car,       ///< a car from above, the parking lot at the demonstration's end
+        Arm,       ///< a two-link arm from the side (joint angles 0 and 1)
+        Aircraft,  ///< an aircraft from above, its path
+        Vehicle    ///< any other planar vehicle: an oriented marker on its path
+    };
+    QString name;                 ///< as the command line and files spell it, e.g. "slidecar"
+    const char* displayName = "";  ///< for the window (translated there), e.g. "Simulated slide-car"
+    Drawing drawing = Drawing::Vehicle;
+    std::unique_ptr<Plant> (*create)(const SimulationTiming& timing) = nullptr;
+    PlantInfo (*describe)() = nullptr;
+    PlantProfile (*profile)(const PlantInfo& info) = nullptr;  ///< its tuned methods' settings
+    StyleSet styles;  ///< its demonstration styles; the first is its classic one
+};
+
+/// The simulated plants: the one place that knows which plants exist, for the app, the CLI and
+/// the experiments.
 class PlantCatalog {
   public:
-    /// "slidecar", "acrobot", "aircraft".
+    /// Every entry, in the order every list shows them.
+    static const std::vector<PlantEntry>& all();
+    /// The entry of a name, or null.
+    static const PlantEntry* find(const QString& name);
+    /// The entry of a name; std::invalid_argument naming the known plants if there is none.
+    static const PlantEntry& get(const QString& name);
+    /// "slidecar", "acrobot", "aircraft", ...
     static QStringList names();
-    static bool contains(const QString& name) { return names().contains(name); }
+    static bool contains(const QString& name) { return find(name) != nullptr; }
     /// A new plant with default physical parameters; throws std::invalid_argument for an
     /// unknown name (the message lists the known ones).
     static std::unique_ptr<Plant> create(const QString& name, const SimulationTiming& timing = {});

@@ -1,6 +1,7 @@
 #include "PlantProfile.h"
 
 #include "MethodCatalog.h"
+#include "PlantCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +34,9 @@ Eigen::VectorXd vector(std::initializer_list<double> values) {
 
 // Slide-car: e = (longitudinal, lateral, heading, vx, vy, r) in the desired pose's frame.
 // "More throttle, more speed and further along"; "steer left, move and turn left".
-PlantProfile slideCar(const PlantInfo& info) {
+}  // namespace
+
+PlantProfile slideCarProfile(const PlantInfo& info) {
     PlantProfile p;
     p.info = info;
     p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
@@ -110,7 +113,7 @@ PlantProfile slideCar(const PlantInfo& info) {
 }
 
 // Acrobot: e = joint angle and rate errors; each torque drives its own joint (paper V.A).
-PlantProfile acrobot(const PlantInfo& info) {
+PlantProfile acrobotProfile(const PlantInfo& info) {
     PlantProfile p;
     p.info = info;
     p.mapping = signs("1,0,1,0;0,1,0,1");
@@ -168,7 +171,7 @@ PlantProfile acrobot(const PlantInfo& info) {
 // Planar aircraft: rudder left turns left; throttle speeds up (paper V.B, Fig. 4, 5).
 // The tuned values come from `tune_aircraft prisca|pgsd|pd 600` (README "Results", Fig. 4):
 // equal budgets of random settings scored on tuning seed sets 100 and 101.
-PlantProfile aircraft(const PlantInfo& info) {
+PlantProfile aircraftProfile(const PlantInfo& info) {
     PlantProfile p;
     p.info = info;
     p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
@@ -231,20 +234,14 @@ PlantProfile aircraft(const PlantInfo& info) {
     return p;
 }
 
-}  // namespace
 
 PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
-    if (info.name == QLatin1String("slidecar")) {
-        return slideCar(info);
+    const PlantEntry* entry = PlantCatalog::find(info.name);
+    if (!entry || !entry->profile) {
+        throw std::invalid_argument(
+            QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
     }
-    if (info.name == QLatin1String("acrobot")) {
-        return acrobot(info);
-    }
-    if (info.name == QLatin1String("aircraft")) {
-        return aircraft(info);
-    }
-    throw std::invalid_argument(
-        QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
+    return entry->profile(info);
 }
 
 EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, double perturbation,

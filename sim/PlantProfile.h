@@ -98,8 +98,8 @@ struct PlantProfile {
     bool oracleFeedback = true;
     int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
 
-    /// The profile of a plant by its info (name "slidecar", "acrobot" or "aircraft").
-    /// Throws std::invalid_argument for an unknown plant.
+    /// The profile of a plant by its info (its PlantCatalog entry's). Throws
+    /// std::invalid_argument for an unknown plant.
     static PlantProfile forPlant(const PlantInfo& info);
     /// How a trial of this plant repeating `demonstration` runs: the perturbation and the
     /// sensor scaled by their levels (0 nominal / perfect, 1 realistic; a perfect sensor also has
@@ -129,5 +129,10 @@ struct PlantProfile {
     /// The automatic matching window for a demonstration: automaticWindowSeconds of samples.
     static int automaticWindow(const core::Demonstration& demonstration);
 };
+
+/// The catalog plants' tuned profiles (PlantCatalog's entries point here).
+PlantProfile slideCarProfile(const PlantInfo& info);
+PlantProfile acrobotProfile(const PlantInfo& info);
+PlantProfile aircraftProfile(const PlantInfo& info);
 
 }  // namespace prisca::sim

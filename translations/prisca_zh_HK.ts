@@ -2,29 +2,47 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_HK">
 <context>
+    <name>PlantCatalog</name>
+    <message>
+        <location filename="../sim/PlantCatalog.cpp" line="25"/>
+        <source>Simulated slide-car</source>
+        <translation>模擬漂移車</translation>
+    </message>
+    <message>
+        <location filename="../sim/PlantCatalog.cpp" line="35"/>
+        <source>Simulated acrobot</source>
+        <translation>模擬雙擺機械臂</translation>
+    </message>
+    <message>
+        <location filename="../sim/PlantCatalog.cpp" line="45"/>
+        <source>Simulated aircraft</source>
+        <translation>模擬飛機</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="183"/>
+        <location filename="../app/ArenaView.cpp" line="185"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="184"/>
+        <location filename="../app/ArenaView.cpp" line="186"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="201"/>
+        <location filename="../app/ArenaView.cpp" line="203"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="202"/>
+        <location filename="../app/ArenaView.cpp" line="204"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="401"/>
+        <location filename="../app/ArenaView.cpp" line="418"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -296,186 +314,186 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="144"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="172"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="145"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="173"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="173"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="174"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="192"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="200"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="201"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="217"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="221"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="222"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="265"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="228"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="227"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="228"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="252"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="253"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="265"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="265"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="265"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="293"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="294"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="294"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="295"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="368"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="369"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="381"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="382"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="391"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="391"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="392"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="407"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="417"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="418"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="409"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="431"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="433"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="433"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="433"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="437"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="438"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="440"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="440"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="442"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -528,93 +546,93 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="289"/>
-        <location filename="../app/LabSession.cpp" line="297"/>
+        <location filename="../app/LabSession.cpp" line="291"/>
+        <location filename="../app/LabSession.cpp" line="299"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="303"/>
+        <location filename="../app/LabSession.cpp" line="305"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="309"/>
+        <location filename="../app/LabSession.cpp" line="311"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="312"/>
+        <location filename="../app/LabSession.cpp" line="314"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="317"/>
+        <location filename="../app/LabSession.cpp" line="319"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="324"/>
+        <location filename="../app/LabSession.cpp" line="326"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="328"/>
+        <location filename="../app/LabSession.cpp" line="330"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="338"/>
+        <location filename="../app/LabSession.cpp" line="340"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="375"/>
+        <location filename="../app/LabSession.cpp" line="377"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="381"/>
+        <location filename="../app/LabSession.cpp" line="383"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="392"/>
+        <location filename="../app/LabSession.cpp" line="394"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="419"/>
+        <location filename="../app/LabSession.cpp" line="421"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="433"/>
+        <location filename="../app/LabSession.cpp" line="435"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="459"/>
+        <location filename="../app/LabSession.cpp" line="461"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="463"/>
+        <location filename="../app/LabSession.cpp" line="465"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="470"/>
+        <location filename="../app/LabSession.cpp" line="472"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="475"/>
+        <location filename="../app/LabSession.cpp" line="477"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="491"/>
+        <location filename="../app/LabSession.cpp" line="493"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1707,14 +1725,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="113"/>
-        <location filename="../app/TaskPanel.cpp" line="120"/>
-        <location filename="../app/TaskPanel.cpp" line="130"/>
+        <location filename="../app/TaskPanel.cpp" line="114"/>
+        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/TaskPanel.cpp" line="131"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="114"/>
+        <location filename="../app/TaskPanel.cpp" line="115"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1723,108 +1741,93 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="131"/>
+        <location filename="../app/TaskPanel.cpp" line="132"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="139"/>
-        <location filename="../app/TaskPanel.cpp" line="146"/>
+        <location filename="../app/TaskPanel.cpp" line="140"/>
+        <location filename="../app/TaskPanel.cpp" line="147"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="140"/>
+        <location filename="../app/TaskPanel.cpp" line="141"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <location filename="../app/TaskPanel.cpp" line="105"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="158"/>
+        <location filename="../app/TaskPanel.cpp" line="159"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="162"/>
+        <location filename="../app/TaskPanel.cpp" line="163"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="177"/>
+        <location filename="../app/TaskPanel.cpp" line="178"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="180"/>
-        <source>Simulated slide-car</source>
-        <translation>模擬漂移車</translation>
-    </message>
-    <message>
-        <location filename="../app/TaskPanel.cpp" line="181"/>
-        <source>Simulated acrobot</source>
-        <translation>模擬雙擺機械臂</translation>
-    </message>
-    <message>
-        <location filename="../app/TaskPanel.cpp" line="182"/>
-        <source>Simulated aircraft</source>
-        <translation>模擬飛機</translation>
-    </message>
-    <message>
-        <location filename="../app/TaskPanel.cpp" line="184"/>
+        <location filename="../app/TaskPanel.cpp" line="185"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="185"/>
+        <location filename="../app/TaskPanel.cpp" line="186"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="186"/>
+        <location filename="../app/TaskPanel.cpp" line="187"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="187"/>
+        <location filename="../app/TaskPanel.cpp" line="188"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="188"/>
+        <location filename="../app/TaskPanel.cpp" line="189"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="189"/>
+        <location filename="../app/TaskPanel.cpp" line="190"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="191"/>
+        <location filename="../app/TaskPanel.cpp" line="192"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <location filename="../app/TaskPanel.cpp" line="193"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="193"/>
+        <location filename="../app/TaskPanel.cpp" line="194"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="195"/>
+        <location filename="../app/TaskPanel.cpp" line="196"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>

@@ -157,6 +157,7 @@ QStringList appSources() {
         sources << it.next();
     }
     sources.sort();
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/PlantCatalog.cpp");  // the plants' names
     return sources;
 }
 

@@ -1,0 +1,71 @@
+// The plant catalog: one entry per plant, everything the front ends need from it consistent.
+#include "sim/DemonstrationStyles.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantProfile.h"
+
+#include <QSet>
+#include <cstring>
+#include <QtTest>
+
+using namespace prisca::sim;
+
+class TestPlantCatalog : public QObject {
+    Q_OBJECT
+  private slots:
+    void everyEntry_isConsistentWithItsPlantProfileAndStyles() {
+        QSet<QString> names;
+        QVERIFY(PlantCatalog::all().size() >= 3);
+        for (const PlantEntry& entry : PlantCatalog::all()) {
+            QVERIFY2(!names.contains(entry.name), qPrintable(entry.name));
+            names.insert(entry.name);
+            QVERIFY(std::strlen(entry.displayName) > 0);
+            QVERIFY(entry.create && entry.describe && entry.profile);
+            const PlantInfo info = entry.describe();
+            QCOMPARE(info.name, entry.name);
+            auto plant = PlantCatalog::create(entry.name);
+            QCOMPARE(plant->info().name, entry.name);
+            QCOMPARE(plant->info().stateDimension(), info.stateDimension());
+            QCOMPARE(plant->info().actionDimension(), info.actionDimension());
+            // Its profile's sign model is m x n for this plant.
+            const PlantProfile profile = PlantProfile::forPlant(info);
+            QCOMPARE(profile.mapping.controls(), info.actionDimension());
+            QCOMPARE(profile.mapping.states(), info.stateDimension());
+            // Its styles record demonstrations of it; the first is the classic one.
+            const QStringList styles = DemonstrationStyles::names(entry.name);
+            QVERIFY2(!styles.isEmpty(), qPrintable(entry.name));
+            QCOMPARE(DemonstrationStyles::classic(entry.name), styles.front());
+            const prisca::core::Demonstration demo = PlantCatalog::demonstrate(entry.name, 3);
+            QCOMPARE(demo.plant, entry.name);
+            QCOMPARE(static_cast<int>(demo.states.cols()), info.stateDimension());
+            QCOMPARE(static_cast<int>(demo.actions.cols()), info.actionDimension());
+            QCOMPARE(demo.metadata.value("style"), styles.front());
+            // Planar vehicles have a pose; the arm is drawn as one and has none.
+            QCOMPARE(entry.drawing == PlantEntry::Drawing::Arm, !info.pose.has_value());
+        }
+        QCOMPARE(PlantCatalog::names().size(), names.size());
+    }
+
+    void unknownPlant_namesTheKnownOnes() {
+        QCOMPARE(PlantCatalog::find("hovercraft"), nullptr);
+        QVERIFY(DemonstrationStyles::of("hovercraft").empty());
+        for (auto call : {+[] { PlantCatalog::create("hovercraft"); },
+                          +[] { PlantCatalog::describe("hovercraft"); },
+                          +[] { DemonstrationStyles::record("hovercraft", "any", 1); }}) {
+            try {
+                call();
+                QFAIL("no exception");
+            } catch (const std::invalid_argument& e) {
+                QVERIFY2(QString::fromStdString(e.what()).contains("hovercraft"), e.what());
+            }
+        }
+        try {
+            PlantCatalog::create("hovercraft");
+        } catch (const std::invalid_argument& e) {
+            QVERIFY2(QString::fromStdString(e.what()).contains("slidecar acrobot aircraft"),
+                     e.what());
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPlantCatalog)
+#include "test_plant_catalog.moc"
