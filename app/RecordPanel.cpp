@@ -3,6 +3,7 @@
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
+#include "sim/PlantCatalog.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -167,12 +168,17 @@ void RecordPanel::tick() {
         timer_->stop();
         return;
     }
-    const Eigen::VectorXd& input = driving_->advance(kTickMs / 1000.0);
+    const sim::PlantInfo& info = session_.profile().info;
+    Eigen::VectorXd input = driving_->advance(kTickMs / 1000.0);
     if (driving_->gamepadAvailable() != padShown_) {
         retranslateUi();  // plugged in or pulled out mid-recording
     }
+    // The plant may mix the two stick axes into its actions (a differential drive's wheels).
+    if (const sim::PlantEntry* entry = sim::PlantCatalog::find(session_.plant());
+        entry && entry->fromStick && input.size() == 2) {
+        input = entry->fromStick(input);
+    }
     // Inputs are in [-1, 1] per channel; the plant's own limits scale them.
-    const sim::PlantInfo& info = session_.profile().info;
     Eigen::VectorXd scaled(input.size());
     for (Eigen::Index l = 0; l < input.size(); ++l) {
         scaled[l] =

@@ -1,12 +1,16 @@
 #include "PlantCatalog.h"
 
 #include "Acrobot.h"
+#include "DiffDrive.h"
+#include "DiffDriveDemonstrator.h"
+#include "DiffDriveProfile.h"
 #include "PlanarAircraft.h"
 #include "PlantProfile.h"
 #include "SlideCar.h"
 
 #include <QtGlobal>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace prisca::sim {
@@ -48,6 +52,22 @@ std::vector<PlantEntry> makeCatalog() {
     e.describe = &PlanarAircraft::describe;
     e.profile = &aircraftProfile;
     e.styles = aircraftStyles();
+    all.push_back(e);
+
+    e = PlantEntry{};
+    e.name = QStringLiteral("diffdrive");
+    e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated differential-drive robot");
+    e.drawing = PlantEntry::Drawing::Vehicle;
+    e.create = &make<DiffDrive, DiffDriveParameters>;
+    e.describe = &DiffDrive::describe;
+    e.profile = &diffDriveProfile;
+    e.styles = diffDriveStyles();
+    e.fromStick = [](const Eigen::VectorXd& stick) {  // the robot mixes a stick into its wheels
+        Eigen::VectorXd wheels(2);
+        wheels << std::clamp(stick[0] - stick[1], -1.0, 1.0),
+            std::clamp(stick[0] + stick[1], -1.0, 1.0);
+        return wheels;
+    };
     all.push_back(e);
     return all;
 }

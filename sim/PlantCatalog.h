@@ -32,6 +32,9 @@ struct PlantEntry {
     PlantInfo (*describe)() = nullptr;
     PlantProfile (*profile)(const PlantInfo& info) = nullptr;  ///< its tuned methods' settings
     StyleSet styles;  ///< its demonstration styles; the first is its classic one
+    /// How an operator's two stick axes (forward, left; each in [-1, 1]) become its actions when
+    /// recording in the window; null: one axis per action, in order.
+    Eigen::VectorXd (*fromStick)(const Eigen::VectorXd& stick) = nullptr;
 };
 
 /// The simulated plants: the one place that knows which plants exist, for the app, the CLI and

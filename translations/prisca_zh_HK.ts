@@ -4,19 +4,24 @@
 <context>
     <name>PlantCatalog</name>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="25"/>
+        <location filename="../sim/PlantCatalog.cpp" line="29"/>
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="35"/>
+        <location filename="../sim/PlantCatalog.cpp" line="39"/>
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="45"/>
+        <location filename="../sim/PlantCatalog.cpp" line="49"/>
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
+    </message>
+    <message>
+        <location filename="../sim/PlantCatalog.cpp" line="59"/>
+        <source>Simulated differential-drive robot</source>
+        <translation>模擬差速驅動機械人</translation>
     </message>
 </context>
 <context>
@@ -1052,104 +1057,104 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="88"/>
-        <location filename="../app/RecordPanel.cpp" line="292"/>
+        <location filename="../app/RecordPanel.cpp" line="89"/>
+        <location filename="../app/RecordPanel.cpp" line="298"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="153"/>
+        <location filename="../app/RecordPanel.cpp" line="154"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="160"/>
+        <location filename="../app/RecordPanel.cpp" line="161"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="190"/>
+        <location filename="../app/RecordPanel.cpp" line="196"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="219"/>
+        <location filename="../app/RecordPanel.cpp" line="225"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="226"/>
+        <location filename="../app/RecordPanel.cpp" line="232"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="235"/>
-        <location filename="../app/RecordPanel.cpp" line="246"/>
+        <location filename="../app/RecordPanel.cpp" line="241"/>
+        <location filename="../app/RecordPanel.cpp" line="252"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="237"/>
+        <location filename="../app/RecordPanel.cpp" line="243"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="249"/>
+        <location filename="../app/RecordPanel.cpp" line="255"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260"/>
+        <location filename="../app/RecordPanel.cpp" line="266"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282"/>
+        <location filename="../app/RecordPanel.cpp" line="288"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="287"/>
+        <location filename="../app/RecordPanel.cpp" line="293"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="289"/>
+        <location filename="../app/RecordPanel.cpp" line="295"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="290"/>
+        <location filename="../app/RecordPanel.cpp" line="296"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="291"/>
+        <location filename="../app/RecordPanel.cpp" line="297"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293"/>
+        <location filename="../app/RecordPanel.cpp" line="299"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="300"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="295"/>
+        <location filename="../app/RecordPanel.cpp" line="301"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="296"/>
+        <location filename="../app/RecordPanel.cpp" line="302"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="297"/>
+        <location filename="../app/RecordPanel.cpp" line="303"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
