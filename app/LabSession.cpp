@@ -5,6 +5,7 @@
 #include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+#include "sim/TaskCheck.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -156,18 +157,23 @@ void LabSession::setPlant(const QString& plant) {
 
 void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
                                   const QString& source) {
-    if (!demonstration || demonstration->stateDimension() != profile_.info.stateDimension() ||
-        demonstration->actionDimension() != profile_.info.actionDimension()) {
-        throw std::invalid_argument(
-            tr("the demonstration does not fit the %1: it needs %2 state and %3 action columns")
-                .arg(plant_)
-                .arg(profile_.info.stateDimension())
-                .arg(profile_.info.actionDimension())
-                .toStdString());
+    if (!demonstration) {
+        throw std::invalid_argument(tr("no demonstration").toStdString());
     }
+    // Checked and fitted before anything changes: a demonstration that is refused leaves the
+    // session as it was (the previous demonstration with its fit).
+    try {
+        sim::checkDemonstrationFor(*demonstration, profile_.info);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(tr("the demonstration does not fit the %1: %2")
+                                        .arg(plant_, QString::fromStdString(e.what()))
+                                        .toStdString());
+    }
+    core::ActionMappingFit fit = core::fitActionMapping(
+        *demonstration, profile_.mapping, profile_.info.deviationModel(), fitOptions_);
     demonstration_ = std::move(demonstration);
     demonstrationSource_ = source;
-    refit();
+    fit_ = std::move(fit);
     emit demonstrationChanged();
     emit fitChanged();
 }

@@ -4,6 +4,7 @@
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
 #include "sim/PlantCatalog.h"
+#include "sim/TaskCheck.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -220,15 +221,32 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     recording_ = false;
     timer_->stop();
     driving_->stop();
-    if (demonstration.length() < 2) {
+    if (demonstration.length() < sim::kMinimumDemonstrationSamples) {
         QFile::remove(streamPath);
-        status_->setText(tr("Nothing recorded."));
+        status_->setText(demonstration.length() == 0
+                             ? tr("Nothing recorded.")
+                             : tr("Too short to use (%1 samples, at least %2 are needed); the "
+                                  "demonstration is unchanged.")
+                                   .arg(demonstration.length())
+                                   .arg(sim::kMinimumDemonstrationSamples));
         updateButtons();
         return;
     }
-    previous_ = session_.demonstration();
-    previousSource_ = session_.demonstrationSource();
-    session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration), streamPath);
+    auto previous = session_.demonstration();
+    const QString previousSource = session_.demonstrationSource();
+    try {
+        session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration),
+                                  streamPath);
+    } catch (const std::exception& e) {
+        // Refused (the session keeps its demonstration); the stream file stays for the record.
+        status_->setText(tr("The recording could not be used: %1. It is kept in %2.")
+                             .arg(QString::fromStdString(e.what()),
+                                  QDir::toNativeSeparators(streamPath)));
+        updateButtons();
+        return;
+    }
+    previous_ = previous;
+    previousSource_ = previousSource;
     status_->setText(tr("Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; "
                         "save it or discard it.")
                          .arg(demonstration.length())

@@ -483,7 +483,14 @@ void RigPanel::stopDriving() {
     }
     core::Demonstration demo = recorder.demonstration();
     demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-    session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(demo)), path);
+    try {
+        session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(demo)), path);
+    } catch (const std::exception& e) {
+        trialInfo_->setText(tr("The rig recording could not be used: %1. It is kept in %2.")
+                                .arg(QString::fromStdString(e.what()),
+                                     QDir::toNativeSeparators(path)));
+        return;
+    }
     trialInfo_->setText(tr("Recorded %1 samples on the rig, kept in %2; it is now the "
                            "demonstration.")
                             .arg(states.size())

@@ -506,138 +506,143 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="44"/>
+        <location filename="../app/LabSession.cpp" line="45"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="58"/>
+        <location filename="../app/LabSession.cpp" line="59"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="72"/>
+        <location filename="../app/LabSession.cpp" line="73"/>
         <source>&apos;%1&apos; must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="78"/>
+        <location filename="../app/LabSession.cpp" line="79"/>
         <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="108"/>
+        <location filename="../app/LabSession.cpp" line="109"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="114"/>
+        <location filename="../app/LabSession.cpp" line="115"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="122"/>
+        <location filename="../app/LabSession.cpp" line="123"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="162"/>
-        <source>the demonstration does not fit the %1: it needs %2 state and %3 action columns</source>
-        <translation>示範不適用於 %1：需要 %2 個狀態欄和 %3 個動作欄</translation>
+        <location filename="../app/LabSession.cpp" line="161"/>
+        <source>no demonstration</source>
+        <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="177"/>
+        <location filename="../app/LabSession.cpp" line="168"/>
+        <source>the demonstration does not fit the %1: %2</source>
+        <translation>示範不適用於 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="183"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="291"/>
-        <location filename="../app/LabSession.cpp" line="299"/>
+        <location filename="../app/LabSession.cpp" line="297"/>
+        <location filename="../app/LabSession.cpp" line="305"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="305"/>
+        <location filename="../app/LabSession.cpp" line="311"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="311"/>
+        <location filename="../app/LabSession.cpp" line="317"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="314"/>
+        <location filename="../app/LabSession.cpp" line="320"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="319"/>
+        <location filename="../app/LabSession.cpp" line="325"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="326"/>
+        <location filename="../app/LabSession.cpp" line="332"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="330"/>
+        <location filename="../app/LabSession.cpp" line="336"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="340"/>
+        <location filename="../app/LabSession.cpp" line="346"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="377"/>
+        <location filename="../app/LabSession.cpp" line="383"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="383"/>
+        <location filename="../app/LabSession.cpp" line="389"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="394"/>
+        <location filename="../app/LabSession.cpp" line="400"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="421"/>
+        <location filename="../app/LabSession.cpp" line="427"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="435"/>
+        <location filename="../app/LabSession.cpp" line="441"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="461"/>
+        <location filename="../app/LabSession.cpp" line="467"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="465"/>
+        <location filename="../app/LabSession.cpp" line="471"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="472"/>
+        <location filename="../app/LabSession.cpp" line="478"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="477"/>
+        <location filename="../app/LabSession.cpp" line="483"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="493"/>
+        <location filename="../app/LabSession.cpp" line="499"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1057,104 +1062,114 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="89"/>
-        <location filename="../app/RecordPanel.cpp" line="298"/>
+        <location filename="../app/RecordPanel.cpp" line="90"/>
+        <location filename="../app/RecordPanel.cpp" line="316"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="154"/>
+        <location filename="../app/RecordPanel.cpp" line="155"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="161"/>
+        <location filename="../app/RecordPanel.cpp" line="162"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="196"/>
+        <location filename="../app/RecordPanel.cpp" line="197"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="225"/>
+        <location filename="../app/RecordPanel.cpp" line="227"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="232"/>
+        <location filename="../app/RecordPanel.cpp" line="228"/>
+        <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
+        <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="242"/>
+        <source>The recording could not be used: %1. It is kept in %2.</source>
+        <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="241"/>
-        <location filename="../app/RecordPanel.cpp" line="252"/>
+        <location filename="../app/RecordPanel.cpp" line="259"/>
+        <location filename="../app/RecordPanel.cpp" line="270"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="243"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="255"/>
+        <location filename="../app/RecordPanel.cpp" line="273"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="266"/>
+        <location filename="../app/RecordPanel.cpp" line="284"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="288"/>
+        <location filename="../app/RecordPanel.cpp" line="306"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293"/>
+        <location filename="../app/RecordPanel.cpp" line="311"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="295"/>
+        <location filename="../app/RecordPanel.cpp" line="313"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="296"/>
+        <location filename="../app/RecordPanel.cpp" line="314"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="297"/>
+        <location filename="../app/RecordPanel.cpp" line="315"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="299"/>
+        <location filename="../app/RecordPanel.cpp" line="317"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="300"/>
+        <location filename="../app/RecordPanel.cpp" line="318"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="301"/>
+        <location filename="../app/RecordPanel.cpp" line="319"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="302"/>
+        <location filename="../app/RecordPanel.cpp" line="320"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="303"/>
+        <location filename="../app/RecordPanel.cpp" line="321"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1254,43 +1269,48 @@
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="487"/>
+        <location filename="../app/RigPanel.cpp" line="489"/>
+        <source>The rig recording could not be used: %1. It is kept in %2.</source>
+        <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="494"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="510"/>
+        <location filename="../app/RigPanel.cpp" line="517"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="547"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="545"/>
+        <location filename="../app/RigPanel.cpp" line="552"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="582"/>
+        <location filename="../app/RigPanel.cpp" line="589"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="622"/>
+        <location filename="../app/RigPanel.cpp" line="629"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
-        <location filename="../app/RigPanel.cpp" line="660"/>
+        <location filename="../app/RigPanel.cpp" line="650"/>
+        <location filename="../app/RigPanel.cpp" line="667"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="644"/>
+        <location filename="../app/RigPanel.cpp" line="651"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1299,232 +1319,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="670"/>
+        <location filename="../app/RigPanel.cpp" line="677"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
+        <location filename="../app/RigPanel.cpp" line="706"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="702"/>
+        <location filename="../app/RigPanel.cpp" line="709"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="704"/>
+        <location filename="../app/RigPanel.cpp" line="711"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="760"/>
+        <location filename="../app/RigPanel.cpp" line="767"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="804"/>
+        <location filename="../app/RigPanel.cpp" line="811"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="805"/>
+        <location filename="../app/RigPanel.cpp" line="812"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="806"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="807"/>
+        <location filename="../app/RigPanel.cpp" line="814"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="820"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="814"/>
+        <location filename="../app/RigPanel.cpp" line="821"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="815"/>
+        <location filename="../app/RigPanel.cpp" line="822"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="816"/>
+        <location filename="../app/RigPanel.cpp" line="823"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817"/>
+        <location filename="../app/RigPanel.cpp" line="824"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="818"/>
+        <location filename="../app/RigPanel.cpp" line="825"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="820"/>
+        <location filename="../app/RigPanel.cpp" line="827"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822"/>
+        <location filename="../app/RigPanel.cpp" line="829"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="824"/>
+        <location filename="../app/RigPanel.cpp" line="831"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="825"/>
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="833"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="827"/>
+        <location filename="../app/RigPanel.cpp" line="834"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="828"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="831"/>
+        <location filename="../app/RigPanel.cpp" line="838"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="832"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="833"/>
+        <location filename="../app/RigPanel.cpp" line="840"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="842"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="836"/>
+        <location filename="../app/RigPanel.cpp" line="843"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="837"/>
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="838"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="846"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="840"/>
+        <location filename="../app/RigPanel.cpp" line="847"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="841"/>
+        <location filename="../app/RigPanel.cpp" line="848"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="842"/>
+        <location filename="../app/RigPanel.cpp" line="849"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843"/>
+        <location filename="../app/RigPanel.cpp" line="850"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="847"/>
+        <location filename="../app/RigPanel.cpp" line="854"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="849"/>
+        <location filename="../app/RigPanel.cpp" line="856"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="851"/>
+        <location filename="../app/RigPanel.cpp" line="858"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="860"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="862"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="857"/>
+        <location filename="../app/RigPanel.cpp" line="864"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>

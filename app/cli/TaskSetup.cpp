@@ -3,6 +3,7 @@
 #include "app/cli/CliSupport.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+#include "sim/TaskCheck.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -20,23 +21,12 @@ Task loadTask(const QString& plant, const QString& demonstrationPath, const QStr
             QStringLiteral("%1: unknown plant '%2' (one of: %3; or give --plant)")
                 .arg(demonstrationPath, task.plant, sim::PlantCatalog::names().join(' ')));
     }
-    if (!demonstration.plant.isEmpty() && demonstration.plant != task.plant) {
-        throw UsageError(QStringLiteral("%1 was recorded on '%2', not '%3'")
-                             .arg(demonstrationPath, demonstration.plant, task.plant));
-    }
     const sim::PlantInfo info = sim::PlantCatalog::describe(task.plant);
-    if (demonstration.stateNames != info.stateNames ||
-        demonstration.actionNames != info.actionNames) {
+    try {
+        sim::checkDemonstrationFor(demonstration, info);  // the window's check too
+    } catch (const std::invalid_argument& e) {
         throw UsageError(
-            QStringLiteral("%1 has states (%2) and actions (%3); the %4 has (%5) and (%6)")
-                .arg(demonstrationPath, demonstration.stateNames.join(", "),
-                     demonstration.actionNames.join(", "), task.plant, info.stateNames.join(", "),
-                     info.actionNames.join(", ")));
-    }
-    if (demonstration.length() < 4) {
-        throw UsageError(QStringLiteral("%1 has %2 samples; at least 4 are needed")
-                             .arg(demonstrationPath)
-                             .arg(demonstration.length()));
+            QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
     }
     task.timing.controlPeriod = demonstration.dt;
     task.profile = sim::PlantProfile::forPlant(info);

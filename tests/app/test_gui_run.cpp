@@ -781,6 +781,36 @@ class TestGuiRun : public QObject {
 
     }
 
+    void demonstrationOfAnotherPlantOrTooShort_isRefusedAndTheSessionKeepsItsOwn() {
+        QTemporaryDir dir;
+        Window w;
+        w.window.session().setPlant("aircraft");
+        const auto before = w.window.session().demonstration();
+        const Eigen::MatrixXd fitBefore = w.window.session().fit().b;
+        // A slide-car's demonstration in an aircraft session: same column count, another plant.
+        const QString car = dir.filePath("car.csv");
+        prisca::core::FileError error;
+        QVERIFY(prisca::core::writeDemonstrationCsv(
+            prisca::sim::PlantCatalog::demonstrate("slidecar", 2), car, &error));
+        QString text = answerMessageBox(
+            this, [&] { QVERIFY(!w.find<prisca::app::TaskPanel>("taskPanel")->openDemonstration(car)); });
+        QVERIFY2(text.contains("car.csv") && text.contains("slidecar"), qPrintable(text));
+        QCOMPARE(w.window.session().demonstration(), before);
+        QCOMPARE(w.window.session().fit().b, fitBefore);
+        // An aircraft demonstration of three samples: refused, and nothing half-changed.
+        prisca::core::Demonstration shortDemo = prisca::sim::PlantCatalog::demonstrate("aircraft", 2);
+        shortDemo.states.conservativeResize(3, Eigen::NoChange);
+        shortDemo.actions.conservativeResize(3, Eigen::NoChange);
+        shortDemo.time.conservativeResize(3);
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            w.window.session().setDemonstration(
+                std::make_shared<prisca::core::Demonstration>(shortDemo), "short.csv"));
+        QCOMPARE(w.window.session().demonstration(), before);
+        QCOMPARE(w.window.session().fit().b, fitBefore);
+        QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));
+    }
+
     void badFiles_getAClearMessageAndChangeNothing() {
         QTemporaryDir dir;
         Window w;

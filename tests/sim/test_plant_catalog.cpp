@@ -2,6 +2,7 @@
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantProfile.h"
+#include "sim/TaskCheck.h"
 
 #include <QSet>
 #include <cstring>
@@ -43,6 +44,29 @@ class TestPlantCatalog : public QObject {
             QCOMPARE(entry.drawing == PlantEntry::Drawing::Arm, !info.pose.has_value());
         }
         QCOMPARE(PlantCatalog::names().size(), names.size());
+    }
+
+    void demonstrationCheck_namesWhatDoesNotFit() {
+        const PlantInfo aircraft = PlantCatalog::describe("aircraft");
+        const auto refused = [&](const prisca::core::Demonstration& d, const char* words) {
+            try {
+                checkDemonstrationFor(d, aircraft);
+            } catch (const std::invalid_argument& e) {
+                return QString::fromStdString(e.what()).contains(QString::fromLatin1(words));
+            }
+            return false;
+        };
+        prisca::core::Demonstration good = PlantCatalog::demonstrate("aircraft", 4);
+        checkDemonstrationFor(good, aircraft);  // no throw
+        QVERIFY(refused(PlantCatalog::demonstrate("slidecar", 4), "recorded on 'slidecar'"));
+        prisca::core::Demonstration untagged = PlantCatalog::demonstrate("slidecar", 4);
+        untagged.plant.clear();  // same column count, other names
+        QVERIFY(refused(untagged, "throttle"));
+        prisca::core::Demonstration tooShort = good;
+        tooShort.states.conservativeResize(3, Eigen::NoChange);
+        tooShort.actions.conservativeResize(3, Eigen::NoChange);
+        tooShort.time.conservativeResize(3);
+        QVERIFY(refused(tooShort, "3 samples; at least 4"));
     }
 
     void unknownPlant_namesTheKnownOnes() {
