@@ -8,8 +8,9 @@
 #include "core/DemonstrationCsv.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationRecorder.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
 
 #include <QComboBox>
@@ -373,7 +374,7 @@ bool RigPanel::runTrial() {
         loopMethod_ = session_.method();
         trials_ = 0;
     }
-    shared_->loop->startTrial(trials_ == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart);
+    shared_->loop->startTrial(sim::resetForTrial(trials_));
     if (car_) {
         car_->requestReset(static_cast<std::uint64_t>(trials_ + 1));  // the car back at the start
     }

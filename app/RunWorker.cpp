@@ -85,8 +85,7 @@ void RunWorker::start(const RunRequest& request) {
 }
 
 void RunWorker::beginTrial() {
-    episode_.seed = sim::mixSeed(request_.seed, static_cast<std::uint64_t>(trial_));
-    episode_.resetMode = trial_ == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+    sim::setTrial(episode_, request_.seed, trial_);
     stepper_ = std::make_unique<sim::EpisodeStepper>(*plant_, *controller_, episode_);
     emit progress(tr("Trial %1 of %2").arg(trial_ + 1).arg(request_.trials));
     repace();

@@ -98,6 +98,20 @@ class EpisodeStepper {
     int maxSteps_ = 0;
 };
 
+/// The reset of trial `trial` (0-based) in a row of trials: a cold start for the first (the
+/// learner starts from its initial policy), warm starts after (learning carries on).
+inline core::ResetMode resetForTrial(int trial) {
+    return trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+}
+
+/// Trial `trial` of a row of trials whose run is seeded `runSeed`: its seed is
+/// mixSeed(runSeed, trial) and its reset resetForTrial(trial). Every front end and experiment
+/// numbers its trials this way, so the same run seed gives the same trials everywhere.
+inline void setTrial(EpisodeSettings& episode, std::uint64_t runSeed, int trial) {
+    episode.seed = mixSeed(runSeed, static_cast<std::uint64_t>(trial));
+    episode.resetMode = resetForTrial(trial);
+}
+
 /// Runs one trial: reset plant (seed, perturbation) and controller, then at every control step
 /// measure -> control -> step the plant, until the duration (or rest) is reached. The result is a
 /// pure function of the arguments: the same seed gives the same trial bit for bit.

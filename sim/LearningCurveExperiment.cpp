@@ -121,8 +121,7 @@ std::vector<MethodCurves> runLearningCurves(
                     break;
                 }
                 EpisodeSettings episode = base;
-                episode.seed = mixSeed(runSeed, trial);
-                episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+                setTrial(episode, runSeed, trial);
                 const EpisodeResult result =
                     runEpisode(*plant, *controller, episode, settings.cancelled);
                 if (result.cancelled) {

@@ -78,7 +78,7 @@ Table1Result runTable1(const Table1Settings& settings,
             EpisodeSettings episode = base;
             episode.seed = trainingSeeds[t];
             episode.recordSteps = false;
-            episode.resetMode = t == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+            episode.resetMode = resetForTrial(static_cast<int>(t));
             runEpisode(*plant, *controller, episode, settings.cancelled);
         }
         say(QStringLiteral("table1: %1 learned on %2 training trials")

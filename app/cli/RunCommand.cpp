@@ -229,8 +229,7 @@ int runCommand(const QStringList& arguments) {
         return path;
     };
     for (int trial = 0; trial < trials; ++trial) {
-        episode.seed = sim::mixSeed(seed, trial);
-        episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
+        sim::setTrial(episode, seed, trial);
         if (comparison) {
             // The same trial (seed, perturbation, sensor noise) for the other method.
             const sim::EpisodeResult other = sim::runEpisode(*plant, *comparison, episode);
