@@ -1,5 +1,7 @@
 #include "app/ArenaView.h"
 
+#include "sim/SlideCar.h"
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -13,11 +15,12 @@ namespace prisca::app {
 
 namespace {
 
-// Slide-car geometry for drawing [m] (sim::SlideCarParameters' defaults).
-constexpr double kCarLength = 0.40;
-constexpr double kCarWidth = 0.20;
-constexpr double kHalfWheelbase = 0.13;
-constexpr double kMaxSteeringAngle = 0.5236;  // rad at full steering
+// The simulated car's own dimensions for drawing [m] (one definition: SlideCarParameters).
+constexpr sim::SlideCarParameters kCar{};
+constexpr double kCarLength = kCar.length;
+constexpr double kCarWidth = kCar.width;
+constexpr double kHalfWheelbase = kCar.wheelbase / 2;
+constexpr double kMaxSteeringAngle = kCar.maxSteeringAngle;  // rad at full steering
 constexpr double kSkidSpeed = 0.15;           // lateral speed above which a skid mark is left [m/s]
 // The parking lot drawn around the demonstration's final pose [m].
 constexpr double kLotLength = 0.55;

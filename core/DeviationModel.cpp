@@ -5,9 +5,9 @@
 namespace prisca::core {
 
 double wrapAngle(double angle) {
-    constexpr double kTwoPi = 2.0 * M_PI;
+    constexpr double kTwoPi = 2.0 * kPi;
     // ceil keeps +pi and maps -pi to +pi, giving the half-open interval (-pi, pi].
-    return angle - kTwoPi * std::ceil((angle - M_PI) / kTwoPi);
+    return angle - kTwoPi * std::ceil((angle - kPi) / kTwoPi);
 }
 
 void DeviationModel::deviation(const Eigen::Ref<const Eigen::VectorXd>& state,

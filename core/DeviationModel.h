@@ -9,7 +9,10 @@
 
 namespace prisca::core {
 
-/// Wraps an angle to (-pi, pi] [rad].
+/// pi, the one definition every layer uses.
+inline constexpr double kPi = 3.14159265358979323846;
+
+/// Wraps an angle to (-pi, pi] [rad]: the one angle wrap of the project.
 double wrapAngle(double angle);
 
 /// Indices of a planar pose (x, y, heading) in a state vector.

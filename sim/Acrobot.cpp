@@ -1,5 +1,7 @@
 #include "Acrobot.h"
 
+#include "core/DeviationModel.h"
+
 #include "Box2dConversions.h"
 
 #include <box2d/box2d.h>
@@ -12,7 +14,7 @@ namespace prisca::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 // Realistic-lab perturbation levels (documented in Acrobot.h).
 constexpr double kInitialAngleStd = 0.05;        // [rad] per joint
@@ -20,14 +22,7 @@ constexpr double kLink2MassStd = 0.05;           // relative
 constexpr double kJointFrictionScale = 0.05;     // [N m s/rad], half-normal
 constexpr double kActuatorNoiseFraction = 0.02;  // of the torque limit
 
-// Wraps to (-pi, pi].
-double wrapAngle(double a) {
-    double w = std::remainder(a, 2.0 * kPi);
-    if (w <= -kPi) {
-        w += 2.0 * kPi;
-    }
-    return w;
-}
+using core::wrapAngle;
 
 b2Vec2 toBox2d(const Eigen::Vector2d& v) {
     return {static_cast<float>(v.x()), static_cast<float>(v.y())};

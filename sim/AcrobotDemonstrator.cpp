@@ -1,5 +1,7 @@
 #include "AcrobotDemonstrator.h"
 
+#include "core/DeviationModel.h"
+
 #include "DemonstrationRecorder.h"
 
 #include <algorithm>
@@ -10,15 +12,9 @@ namespace prisca::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
-double wrapAngle(double a) {
-    double w = std::remainder(a, 2.0 * kPi);
-    if (w <= -kPi) {
-        w += 2.0 * kPi;
-    }
-    return w;
-}
+using core::wrapAngle;
 
 // The swing the person has in mind: angle and rate of a sine whose amplitude grows along a
 // smoothstep envelope (zero slope at both ends, so the arm starts and settles in gently).

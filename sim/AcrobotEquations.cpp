@@ -1,5 +1,7 @@
 #include "AcrobotEquations.h"
 
+#include "core/DeviationModel.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -7,7 +9,7 @@ namespace prisca::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 // A point at distance r along a link whose absolute angle from the downward vertical is a.
 Eigen::Vector2d along(double r, double a) {

@@ -1,5 +1,7 @@
 #include "DemonstrationStyles.h"
 
+#include "core/DeviationModel.h"
+
 #include "PlantCatalog.h"
 
 #include "AcrobotDemonstrator.h"
@@ -13,7 +15,7 @@ namespace prisca::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 using CarScript = SlideCarDemonstrator::Script;
 using ArmScript = AcrobotDemonstrator::Script;

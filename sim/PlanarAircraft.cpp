@@ -1,5 +1,7 @@
 #include "PlanarAircraft.h"
 
+#include "core/DeviationModel.h"
+
 #include "Box2dConversions.h"
 
 #include <box2d/box2d.h>
@@ -13,7 +15,7 @@ namespace prisca::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 // Level-1 perturbation (documented on the class).
 constexpr double kInitialPositionSigma = 2.0;               // [m]

@@ -6,8 +6,9 @@
 #include "core/FileIo.h"
 #include "core/Table1Report.h"
 #include "sim/MethodCatalog.h"
-#include "sim/PlantCatalog.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/PlantCatalog.h"
+#include "sim/SlideCar.h"
 #include "sim/Table1Experiment.h"
 #include "sim/Table1Protocol.h"
 
@@ -251,7 +252,8 @@ int table1Command(const QStringList& arguments) {
     }
     writeTable(line, core::formatTable1(rows, *format, caption));
     if (line.isSet("plot")) {
-        saveFigureOrThrow(parkingFigure(result, 0.40, 0.20), line.value("plot"));
+        const sim::SlideCarParameters car;  // the car's own outline
+        saveFigureOrThrow(parkingFigure(result, car.length, car.width), line.value("plot"));
     }
     if (result.cancelled) {
         std::fprintf(stderr, "prisca-cli: table1: interrupted; kept the %d trials that finished\n",
