@@ -38,6 +38,11 @@
 namespace prisca::app {
 
 namespace {
+// The virtual rig's synthetic ceiling camera runs at the control rate of the simulations.
+constexpr double kVirtualCameraFps = 40.0;
+}  // namespace
+
+namespace {
 
 QImage toImage(const cv::Mat& m) {
     if (m.type() == CV_8UC1) {
@@ -221,7 +226,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             if (step.pose) {
                 shared->lastTrackedPose = step.pose;
             }
-            if (--shared->framesLeft <= 0 || step.fault) {
+            if (shared->trialStartNs < 0) {
+                shared->trialStartNs = frame.steadyNs;
+            }
+            const double elapsed = (frame.steadyNs - shared->trialStartNs) * 1e-9;
+            if (elapsed >= shared->trialSeconds || step.fault) {
                 shared->running = false;
                 QMetaObject::invokeMethod(this, &RigPanel::finishTrial, Qt::QueuedConnection);
             }
@@ -237,7 +246,15 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             }
             link_.setPoseLost(false);
             const Eigen::VectorXd state = shared->estimator.update(*shared->pose, frame.steadyNs);
-            const double t = shared->states.size() / 40.0;
+            if (shared->firstFrameNs < 0) {
+                shared->firstFrameNs = frame.steadyNs;
+            }
+            // The frame's own time: frames come at the camera's rate, and some are dropped.
+            const double t = (frame.steadyNs - shared->firstFrameNs) * 1e-9;
+            if (!shared->times.empty() && t <= shared->times.back()) {
+                return;  // a frame out of order or repeated: no new sample
+            }
+            shared->times.push_back(t);
             shared->states.push_back(state);
             shared->actions.push_back(shared->driveAction);
             core::appendDemonstrationCsvRow(shared->pendingRows, t, state, shared->driveAction);
@@ -380,7 +397,8 @@ bool RigPanel::runTrial() {
     }
     const auto demo = session_.demonstration();
     const double seconds = demo->length() * demo->dt + session_.profile().settleTime;
-    shared_->framesLeft = static_cast<int>(std::lround(seconds * 40.0));
+    shared_->trialSeconds = seconds;
+    shared_->trialStartNs = -1;
     shared_->lastTrackedPose.reset();
     shared_->running = true;
     ++trials_;
@@ -414,13 +432,18 @@ bool RigPanel::startDriving() {
         return false;
     }
     // The header of the demonstration format; rows follow as they are recorded.
-    core::Demonstration header = sim::DemonstrationRecorder(info, 1.0 / 40.0).demonstration();
+    // dt in the streamed header is the camera's nominal frame period; the finished recording is
+    // resampled onto the measured one.
+    core::Demonstration header =
+        sim::DemonstrationRecorder(info, nominalFramePeriod_).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
     stream->write(core::formatDemonstrationCsvHeader(header));
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->states.clear();
         shared_->actions.clear();
+        shared_->times.clear();
+        shared_->firstFrameNs = -1;
         shared_->pendingRows.clear();
         shared_->estimator.reset();
         shared_->driveAction = Eigen::VectorXd::Zero(info.actionDimension());
@@ -459,6 +482,7 @@ void RigPanel::stopDriving() {
     drive_->setChecked(false);
     link_.setCommand(channels_.failsafe());  // neutral now; stale (failsafe) after that
     std::vector<Eigen::VectorXd> states, actions;
+    std::vector<double> times;
     QString path;
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
@@ -472,18 +496,23 @@ void RigPanel::stopDriving() {
         }
         states.swap(shared_->states);
         actions.swap(shared_->actions);
+        times.swap(shared_->times);
     }
     if (states.size() < 2) {
         QFile::remove(path);
         trialInfo_->setText(tr("Nothing recorded (no pose seen)."));
         return;
     }
-    sim::DemonstrationRecorder recorder(session_.profile().info, 1.0 / 40.0);
-    for (size_t k = 0; k < states.size(); ++k) {
-        recorder.record(states[k], actions[k]);
-    }
-    core::Demonstration demo = recorder.demonstration();
+    // The frames' own times onto one uniform step (the camera's median frame interval).
+    core::Demonstration demo = sim::DemonstrationRecorder::fromTimedSamples(
+        session_.profile().info, times, states, actions);
     demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
+    // The streamed file (frame times as they came, kept for a crash) becomes the uniform one.
+    core::FileError writeError;
+    if (!core::writeDemonstrationCsv(demo, path, &writeError)) {
+        trialInfo_->setText(tr("The rig recording could not be saved: %1").arg(writeError.toString()));
+        return;
+    }
     try {
         session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(demo)), path);
     } catch (const std::exception& e) {
@@ -597,13 +626,15 @@ void RigPanel::startCamera() {
         car_->reset(1);
         camera = devices::makeSyntheticSource(
             [car = car_](double t) { return std::optional<devices::PlanarPose>(car->poseAt(t)); },
-            devices::syntheticCeilingCamera(), {}, 40.0);
+            devices::syntheticCeilingCamera(), {}, kVirtualCameraFps);
+        nominalFramePeriod_ = 1.0 / kVirtualCameraFps;
     } else if (source == Source::Device) {
         devices::V4l2Settings settings;
         settings.device = sourcePath_->text();
         settings.width = width_->value();
         settings.height = height_->value();
         settings.fps = fps_->value();
+        nominalFramePeriod_ = 1.0 / settings.fps;
         settings.exposure = exposure_->value();
         settings.gain = gain_->value();
         QSettings s;

@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -114,17 +115,22 @@ class RigPanel : public QWidget {
         std::optional<devices::PlanarPose> pose;
         std::unique_ptr<devices::RigLoop> loop;  ///< the closed loop while a trial runs
         bool running = false;
-        int framesLeft = 0;
+        // A trial lasts this long by the camera's own frame clock (whatever its frame rate).
+        double trialSeconds = 0.0;
+        std::int64_t trialStartNs = -1;  ///< the trial's first frame; -1 before it
         std::optional<devices::PlanarPose> lastTrackedPose;  ///< the last pose seen in the trial
         // Recording by driving: the command in force, the rows so far, the stream on disk.
         bool recording = false;
         Eigen::VectorXd driveAction;
         devices::PoseStateEstimator estimator;
         std::vector<Eigen::VectorXd> states, actions;
+        std::vector<double> times;       ///< each row's frame time since the first [s]
+        std::int64_t firstFrameNs = -1;  ///< the recording's first frame with a pose
         QByteArray pendingRows;
         std::unique_ptr<QFile> stream;
     };
     std::shared_ptr<Shared> shared_;
+    double nominalFramePeriod_ = 1.0 / 40.0;  ///< the camera's asked-for frame period [s]
 
     CameraView* view_;
     QLabel* sourceLabel_;
