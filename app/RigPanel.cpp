@@ -4,10 +4,10 @@
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
-#include "app/VirtualCar.h"
 #include "core/DemonstrationCsv.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
+#include "rigsim/VirtualCar.h"
 #include "sim/DemonstrationRecorder.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
@@ -612,7 +612,7 @@ void RigPanel::startCamera() {
     std::unique_ptr<devices::CameraSource> camera;
     if (source == Source::Virtual) {
         if (!car_) {
-            auto car = std::make_shared<VirtualCar>(devices::RcProtocol::Crsf,
+            auto car = std::make_shared<rigsim::VirtualCar>(devices::RcProtocol::Crsf,
                                                     devices::ChannelMap::car(), 1, 1.0);
             QString error;
             if (!car->open(&error)) {

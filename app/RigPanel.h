@@ -22,11 +22,14 @@ class QTableWidget;
 class QTimer;
 class QFile;
 
+namespace prisca::rigsim {
+class VirtualCar;
+}
+
 namespace prisca::app {
 
 class CameraView;
 class LabSession;
-class VirtualCar;
 class DrivingInput;
 
 /// The real rig (or the virtual one): the camera (a V4L2 device, a video file, or the virtual
@@ -104,7 +107,7 @@ class RigPanel : public QWidget {
     LabSession& session_;
     devices::Camera camera_;
     devices::TransmitterLink link_;
-    std::shared_ptr<VirtualCar> car_;
+    std::shared_ptr<rigsim::VirtualCar> car_;
     devices::FloorCalibration calibration_;
     std::vector<devices::CalibrationPoint> clicked_;
     devices::LinkStatus linkStatus_;

@@ -18,6 +18,8 @@ const std::vector<CliCommand>& commandTable() {
         {"lemma41", "The H-gamma grid of Lemma 4.1 (Fig. 2)", lemma41Command},
         {"track", "Track the car's IR LEDs in a video and write its poses", trackCommand},
         {"link", "Send channel values to a transmitter over a serial link", linkCommand},
+        {"rig", "Trials on the virtual rig: camera, tracker, controller, link and car, headless",
+         rigCommand},
     };
     return table;
 }

@@ -14,5 +14,6 @@ int curveCommand(const QStringList& arguments);
 int lemma41Command(const QStringList& arguments);
 int linkCommand(const QStringList& arguments);
 int trackCommand(const QStringList& arguments);
+int rigCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

@@ -288,6 +288,28 @@ class TestCliCommands : public QObject {
         QVERIFY(file.readAll() == again.readAll());
     }
 
+    void rig_virtualRunsTheWholeChainHeadless() {
+        // Camera -> tracker -> estimator -> PRISCA -> link -> pseudo-terminal -> car, in real
+        // time: one trial of the scripted demonstration (about 6 s).
+        const CliResult r = cli({"rig", "--virtual", "--trials", "1", "--format", "json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject root = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(root.value("method").toString(), QStringLiteral("prisca"));
+        const QJsonArray trials = root.value("trials").toArray();
+        QCOMPARE(trials.size(), 1);
+        const QJsonObject t = trials[0].toObject();
+        QVERIFY(t.value("frames").toInt() > 100);
+        QVERIFY(t.value("framesWithPose").toInt() >= t.value("frames").toInt() - 2);
+        QVERIFY(t.value("linkFramesDecoded").toDouble() >= t.value("frames").toInt());
+        const double miss = t.value("finalPositionErrorCm").toDouble(-1.0);
+        QVERIFY2(miss >= 0.0 && miss < 50.0, qPrintable(QString::number(miss)));
+        // What a rig cannot run, and the real rig, are refused with the reason.
+        CliResult bad = cli({"rig", "--virtual", "--method", "oracle"});
+        QVERIFY(bad.exitCode != 0 && bad.err.contains("simulator"));
+        bad = cli({"rig", "--trials", "1"});
+        QVERIFY(bad.exitCode != 0 && bad.err.contains("--virtual"));
+    }
+
     void run_everyMethodOnEveryPlant_data() {
         QTest::addColumn<QString>("plant");
         QTest::addColumn<QString>("method");

@@ -1,7 +1,7 @@
 // The real-rig code end to end with no hardware: the synthetic camera renders a simulated car
 // driven by the bytes the link writes to a pseudo-terminal; tracker, estimator, PRISCA and the
 // link close the loop. The car parks; E-STOP leaves it neutral.
-#include "app/VirtualRig.h"
+#include "rigsim/VirtualRig.h"
 #include "core/ActionMapping.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -59,13 +59,13 @@ class TestVirtualRig : public QObject {
   private slots:
     void virtualRig_parksTheCarThroughCameraTrackerAndLink() {
         std::shared_ptr<const core::Demonstration> demo;
-        app::VirtualRig rig({}, makeController(QStringLiteral("prisca"), &demo));
+        rigsim::VirtualRig rig({}, makeController(QStringLiteral("prisca"), &demo));
         QString error;
         QVERIFY2(rig.open(&error), qPrintable(error));
         const Eigen::VectorXd lot = demo->states.row(demo->length() - 1).transpose();
         const double seconds = demo->length() * demo->dt + 1.5;
         for (int trial = 0; trial < 2; ++trial) {
-            const app::VirtualRig::Trial t = rig.runTrial(
+            const rigsim::VirtualRig::Trial t = rig.runTrial(
                 seconds, trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart,
                 trial + 1);
             const double miss = std::hypot(t.finalPose.x - lot[0], t.finalPose.y - lot[1]);
@@ -88,13 +88,13 @@ class TestVirtualRig : public QObject {
         // from the speed it had then to a stop far short of the unguarded run.
         double travelled[2] = {0.0, 0.0};
         for (const int guarded : {0, 1}) {
-            app::VirtualRigSettings settings;
+            rigsim::VirtualRigSettings settings;
             settings.perturbation = 0.0;
             settings.lostTrackDistance = guarded ? 0.3 : 0.0;
-            app::VirtualRig rig(settings, std::make_unique<Runaway>());
+            rigsim::VirtualRig rig(settings, std::make_unique<Runaway>());
             QString error;
             QVERIFY2(rig.open(&error), qPrintable(error));
-            const app::VirtualRig::Trial t = rig.runTrial(3.0, core::ResetMode::Cold, 5);
+            const rigsim::VirtualRig::Trial t = rig.runTrial(3.0, core::ResetMode::Cold, 5);
             travelled[guarded] =
                 std::hypot(t.path.back().x - t.path.front().x, t.path.back().y - t.path.front().y);
         }
@@ -107,11 +107,11 @@ class TestVirtualRig : public QObject {
 
     void virtualRig_emergencyStopLeavesTheCarNeutral() {
         std::shared_ptr<const core::Demonstration> demo;
-        app::VirtualRig rig({}, makeController(QStringLiteral("playback"), &demo));
+        rigsim::VirtualRig rig({}, makeController(QStringLiteral("playback"), &demo));
         QString error;
         QVERIFY2(rig.open(&error), qPrintable(error));
         rig.link().emergencyStop();
-        const app::VirtualRig::Trial t = rig.runTrial(1.0, core::ResetMode::Cold, 3);
+        const rigsim::VirtualRig::Trial t = rig.runTrial(1.0, core::ResetMode::Cold, 3);
         // Throttle neutral from the start: a brakeless car at rest stays (nearly) where it was.
         const double moved =
             std::hypot(t.path.back().x - t.path.front().x, t.path.back().y - t.path.front().y);

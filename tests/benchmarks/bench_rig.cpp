@@ -1,7 +1,7 @@
 // Virtual-rig benchmark (make bench): camera frame -> serial bytes written, through tracker,
 // state estimator, PRISCA, channel map and the link on a pseudo-terminal; one slide-park in
 // real time.
-#include "app/VirtualRig.h"
+#include "rigsim/VirtualRig.h"
 #include "core/ActionMapping.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
         sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
-    app::VirtualRig rig({}, sim::MethodCatalog::create("prisca", profile, demo, b));
+    rigsim::VirtualRig rig({}, sim::MethodCatalog::create("prisca", profile, demo, b));
     QString error;
     if (!rig.open(&error)) {
         std::printf("bench_rig: %s\n", qPrintable(error));

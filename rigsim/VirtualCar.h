@@ -11,7 +11,7 @@
 #include <memory>
 #include <optional>
 
-namespace prisca::app {
+namespace prisca::rigsim {
 
 /// The far end of a transmitter link with no hardware: a pseudo-terminal whose bytes are
 /// decoded as a car's receiver would, driving a simulated slide-car. The synthetic camera asks
@@ -62,4 +62,4 @@ class VirtualCar {
     QString path_;
 };
 
-}  // namespace prisca::app
+}  // namespace prisca::rigsim

@@ -1,4 +1,4 @@
-#include "app/VirtualCar.h"
+#include "rigsim/VirtualCar.h"
 
 #include "sim/PlantCatalog.h"
 
@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-namespace prisca::app {
+namespace prisca::rigsim {
 
 VirtualCar::VirtualCar(devices::RcProtocol protocol, devices::ChannelMap channels,
                        std::uint64_t seed, double perturbation)
@@ -82,4 +82,4 @@ devices::PlanarPose VirtualCar::poseAt(double t) {
     return {state_[0], state_[1], state_[2]};
 }
 
-}  // namespace prisca::app
+}  // namespace prisca::rigsim

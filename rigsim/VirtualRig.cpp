@@ -1,4 +1,4 @@
-#include "app/VirtualRig.h"
+#include "rigsim/VirtualRig.h"
 
 #include "devices/RigLoop.h"
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <thread>
 
-namespace prisca::app {
+namespace prisca::rigsim {
 
 VirtualRig::VirtualRig(VirtualRigSettings settings, std::unique_ptr<core::Controller> controller)
     : settings_(std::move(settings)),
@@ -86,4 +86,4 @@ VirtualRig::Trial VirtualRig::runTrial(double seconds, core::ResetMode mode, std
     return trial;
 }
 
-}  // namespace prisca::app
+}  // namespace prisca::rigsim

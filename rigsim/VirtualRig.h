@@ -1,6 +1,6 @@
 #pragma once
 
-#include "app/VirtualCar.h"
+#include "rigsim/VirtualCar.h"
 #include "core/Controller.h"
 #include "core/Demonstration.h"
 #include "devices/ChannelMap.h"
@@ -20,7 +20,7 @@ namespace prisca::devices {
 class RigLoop;
 }
 
-namespace prisca::app {
+namespace prisca::rigsim {
 
 /// The virtual rig's settings.
 struct VirtualRigSettings {
@@ -71,4 +71,4 @@ class VirtualRig {
     std::unique_ptr<devices::RigLoop> loop_;
 };
 
-}  // namespace prisca::app
+}  // namespace prisca::rigsim
