@@ -1,0 +1,156 @@
+// The experiments' own modules, with assertions on values: Table I's runner and rows, the
+// training seeds and PD (selected)'s grid, the profile's trial settings, and the run log.
+#include "core/ActionMapping.h"
+#include "core/RunLogCsv.h"
+#include "sim/MethodTraining.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantProfile.h"
+#include "sim/Table1Experiment.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <set>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+struct CarTask {
+    PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
+    std::shared_ptr<const core::Demonstration> demo =
+        std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
+    Eigen::MatrixXd b =
+        core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
+};
+
+double meanPositionCm(const MethodTrials& m) {
+    double sum = 0.0;
+    for (const TrialSummary& t : m.trials) sum += t.finalPositionError * 100.0;
+    return sum / m.trials.size();
+}
+
+}  // namespace
+
+class TestExperiments : public QObject {
+    Q_OBJECT
+  private slots:
+    void table1_nominalPlaybackIsExactAndRowsCarryTheirLabels() {
+        CarTask task;
+        Table1Settings settings;
+        settings.methods = {"playback", "pd-h-lsd"};
+        settings.trials = 2;
+        settings.trainingTrials = 0;
+        settings.perturbation = 0.0;
+        settings.sensor = 0.0;
+        const Table1Result result = runTable1(settings, task.demo, task.profile, task.b);
+        QCOMPARE(result.methods.size(), size_t(2));
+        // With nothing perturbed, the demonstration's own actions put the car on its lot (to
+        // Box2D's single precision: within 0.1 mm).
+        for (const TrialSummary& t : result.methods[0].trials) {
+            QVERIFY2(t.finalPositionError < 1e-4, qPrintable(QString::number(t.finalPositionError)));
+        }
+        QVERIFY(std::abs(result.lot[0] - task.demo->states(task.demo->length() - 1, 0)) < 1e-12);
+        int finished = 0;
+        const std::vector<core::Table1Row> rows = table1Rows(result, &finished);
+        QCOMPARE(finished, 4);
+        QCOMPARE(rows[0].label, QStringLiteral("ACTION PLAYBACK"));
+        QCOMPARE(rows[1].label, QStringLiteral("PD+H+LSD"));
+        QCOMPARE(rows[0].position.count, 2);
+        QVERIFY(!rows[0].limit && !rows[1].limit);
+    }
+
+    void table1_feedbackBeatsPlaybackUnderPerturbationWhateverTheThreads() {
+        CarTask task;
+        Table1Settings settings;
+        settings.methods = {"playback", "pd-h-lsd"};
+        settings.trials = 4;
+        settings.trainingTrials = 0;
+        settings.threads = 1;
+        const Table1Result one = runTable1(settings, task.demo, task.profile, task.b);
+        settings.threads = 2;
+        const Table1Result two = runTable1(settings, task.demo, task.profile, task.b);
+        for (size_t m = 0; m < one.methods.size(); ++m) {
+            for (size_t t = 0; t < one.methods[m].trials.size(); ++t) {
+                QCOMPARE(one.methods[m].trials[t].finalPositionError,
+                         two.methods[m].trials[t].finalPositionError);
+            }
+        }
+        // Open loop drifts with friction, gains and trim; the feedback holds the path.
+        QVERIFY2(meanPositionCm(one.methods[1]) < 0.5 * meanPositionCm(one.methods[0]),
+                 qPrintable(QStringLiteral("%1 vs %2")
+                                .arg(meanPositionCm(one.methods[1]))
+                                .arg(meanPositionCm(one.methods[0]))));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, [&] {
+            Table1Settings bad = settings;
+            bad.methods = {"pegasus"};  // no Table I row
+            runTable1(bad, task.demo, task.profile, task.b);
+        }());
+    }
+
+    void trainingSeeds_areTheirOwnStream() {
+        const std::vector<std::uint64_t> training = trainingSeeds(7, 50);
+        std::set<std::uint64_t> all(training.begin(), training.end());
+        QCOMPARE(all.size(), size_t(50));
+        for (int i = 0; i < 1000; ++i) {
+            QVERIFY(!all.count(mixSeed(7, static_cast<std::uint64_t>(i))));  // never an evaluation seed
+        }
+        QCOMPARE(trainingSeeds(7, 3), std::vector<std::uint64_t>(training.begin(), training.begin() + 3));
+    }
+
+    void selectedPdGains_comeFromTheGrid() {
+        CarTask task;
+        TrainingSetup setup;
+        setup.plant = "slidecar";
+        setup.profile = task.profile;
+        setup.demonstration = task.demo;
+        setup.fittedB = task.b;
+        setup.episode = task.profile.episode(*task.demo, 1.0, 1.0);
+        setup.episode.recordSteps = false;
+        setup.seeds = trainingSeeds(3, 2);
+        const core::PdParameters gains = selectPdGains(setup, {0.5, 2.0}, {0.0, 1.0});
+        const double kpScale = gains.kp[0] / task.profile.pd.kp[0];
+        QVERIFY2(std::abs(kpScale - 0.5) < 1e-12 || std::abs(kpScale - 2.0) < 1e-12,
+                 qPrintable(QString::number(kpScale)));
+        QVERIFY(((gains.kp / kpScale) - task.profile.pd.kp).cwiseAbs().maxCoeff() < 1e-12);
+        QVERIFY(gains.kd.cwiseAbs().maxCoeff() == 0.0 ||
+                ((gains.kd - task.profile.pd.kd).cwiseAbs().maxCoeff() < 1e-12));
+    }
+
+    void profileEpisode_perfectSensorHasNoLatencyAndTheTrialTheDemonstrationsLength() {
+        CarTask task;
+        const EpisodeSettings real = task.profile.episode(*task.demo, 1.0, 1.0);
+        QCOMPARE(real.measurement.latencySteps, task.profile.measurement.latencySteps);
+        QVERIFY(real.measurement.latencySteps > 0);
+        const EpisodeSettings perfect = task.profile.episode(*task.demo, 0.0, 0.0);
+        QCOMPARE(perfect.measurement.latencySteps, 0);
+        QCOMPARE(perfect.measurement.dropProbability, 0.0);
+        QCOMPARE(perfect.perturbation.parameters, 0.0);
+        const double length = task.demo->length() * task.demo->dt;
+        QVERIFY(std::abs(real.duration - (length + task.profile.settleTime)) < 1e-12);
+        QVERIFY(std::abs(real.stopAtRestAfter - length) < 1e-12);
+    }
+
+    void runLog_headerColumnsAndRows() {
+        core::RunLog log;
+        log.plant = "slidecar";
+        log.method = "pd";
+        log.dt = 0.025;
+        log.metadata.insert("seed", "3");
+        log.columns = {"trial", "t"};
+        log.units = {"1", "s"};
+        log.rows = (Eigen::MatrixXd(2, 2) << 0, 0, 0, 0.025).finished();
+        QString problem;
+        const QByteArray text = core::formatRunLogCsv(log, &problem);
+        QCOMPARE(QString::fromUtf8(text),
+                 QStringLiteral("# prisca-run-log 1\n# plant: slidecar\n# method: pd\n# dt: 0.025\n"
+                                "# seed: 3\n# columns: trial[1], t[s]\ntrial,t\n0,0\n0,0.025\n"));
+        log.units = {"1"};
+        QVERIFY(core::formatRunLogCsv(log, &problem).isEmpty());
+        QVERIFY2(problem.contains("2 columns, 1 units"), qPrintable(problem));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestExperiments)
+#include "test_experiments.moc"
