@@ -11,6 +11,7 @@ constexpr unsigned long kShutdownWaitMs = 3000;
 RunController::RunController(QObject* parent) : QObject(parent), worker_(new RunWorker) {
     qRegisterMetaType<RunRequest>();
     qRegisterMetaType<LiveSample>();
+    qRegisterMetaType<std::shared_ptr<const core::RunLog>>();
     qRegisterMetaType<QVector<LiveSample>>();
     qRegisterMetaType<RunPhase>();
     qRegisterMetaType<sim::TrialSummary>();
@@ -25,6 +26,11 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
     connect(worker_, &RunWorker::progress, this, &RunController::progress);
     connect(worker_, &RunWorker::trialFinished, this, &RunController::trialFinished);
     connect(worker_, &RunWorker::runFinished, this, &RunController::runFinished);
+    connect(worker_, &RunWorker::runLogReady, this,
+            [this](std::shared_ptr<const core::RunLog> log) {
+                lastRunLog_ = std::move(log);
+                emit runLogReady(lastRunLog_);
+            });
     connect(worker_, &RunWorker::failed, this, &RunController::failed);
     thread_.start();
 }

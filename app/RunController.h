@@ -27,6 +27,8 @@ class RunController : public QObject {
     void setSpeed(double speed);
 
     RunPhase phase() const { return phase_; }
+    /// The run log of the last run's finished trials (null before any run ended).
+    std::shared_ptr<const core::RunLog> lastRunLog() const { return lastRunLog_; }
     /// The worker, for connecting to its signals (do not call its slots directly).
     const RunWorker* worker() const { return worker_; }
 
@@ -36,12 +38,14 @@ class RunController : public QObject {
     void progress(const QString& text);
     void trialFinished(int trial, const prisca::sim::TrialSummary& summary);
     void runFinished();
+    void runLogReady(std::shared_ptr<const prisca::core::RunLog> log);
     void failed(const QString& message);
 
   private:
     QThread thread_;
     RunWorker* worker_;
     RunPhase phase_ = RunPhase::Idle;
+    std::shared_ptr<const core::RunLog> lastRunLog_;
 };
 
 }  // namespace prisca::app

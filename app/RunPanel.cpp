@@ -2,14 +2,19 @@
 
 #include "app/LabSession.h"
 #include "app/RunController.h"
+#include "core/RunLogCsv.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QShortcut>
@@ -45,6 +50,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
       resetButton_(new QPushButton(this)),
       emergencyButton_(new QPushButton(this)),
       resetEmergencyButton_(new QPushButton(this)),
+      exportLog_(new QPushButton(this)),
       status_(new QLabel(this)),
       results_(new QTableWidget(0, 4, this)) {
     setObjectName(QStringLiteral("runPanel"));
@@ -78,6 +84,8 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         "QPushButton:pressed { background: #8e0000; }"));
     emergencyButton_->setFocusPolicy(Qt::NoFocus);
     resetEmergencyButton_->setObjectName(QStringLiteral("resetEmergencyButton"));
+    exportLog_->setObjectName(QStringLiteral("exportRunLog"));
+    exportLog_->setEnabled(false);
     status_->setObjectName(QStringLiteral("runStatus"));
     status_->setWordWrap(true);
     results_->setObjectName(QStringLiteral("trialResults"));
@@ -104,6 +112,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     layout->addWidget(resetEmergencyButton_);
     layout->addWidget(status_);
     layout->addWidget(results_, 1);
+    layout->addWidget(exportLog_);
 
     QSettings settings;
     settings.beginGroup(QLatin1String(kSettingsGroup));
@@ -125,6 +134,28 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         }
     });
     connect(stopButton_, &QPushButton::clicked, &run_, &RunController::stop);
+    connect(&run_, &RunController::runLogReady, this,
+            [this](std::shared_ptr<const core::RunLog> log) {
+                exportLog_->setEnabled(log && log->rows.rows() > 0);
+            });
+    connect(exportLog_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export run log"), QSettings().value("run/logDirectory").toString(),
+            tr("Run logs (*.csv)"));
+        if (path.isEmpty()) {
+            return;
+        }
+        const QString file = path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)
+                                 ? path
+                                 : path + QStringLiteral(".csv");
+        QString error;
+        if (!exportRunLog(file, &error)) {
+            QMessageBox::warning(this, tr("Export run log"), error);
+            return;
+        }
+        QSettings().setValue("run/logDirectory", QFileInfo(file).absolutePath());
+        status_->setText(tr("Run log written to %1").arg(QDir::toNativeSeparators(file)));
+    });
     // Reset: stop whatever runs and start the views afresh (the next run starts cold anyway).
     connect(resetButton_, &QPushButton::clicked, this, [this] {
         run_.stop();
@@ -181,9 +212,30 @@ void RunPanel::startRun() {
     request.seed = static_cast<std::uint64_t>(seed_->value());
     request.perturbation = perturbation_->value();
     request.sensor = sensor_->value();
+    request.demonstrationSource =
+        session_.demonstrationSource().isEmpty()
+            ? QStringLiteral("scripted %1, seed %2")
+                  .arg(session_.scriptedStyle())
+                  .arg(session_.scriptedSeed())
+            : session_.demonstrationSource();
     results_->setRowCount(0);
+    exportLog_->setEnabled(false);
     emit runStarting();
     run_.start(request);
+}
+
+bool RunPanel::exportRunLog(const QString& path, QString* error) const {
+    const std::shared_ptr<const core::RunLog> log = run_.lastRunLog();
+    if (!log || log->rows.rows() == 0) {
+        *error = tr("No finished trial to write yet: run first.");
+        return false;
+    }
+    core::FileError fileError;
+    if (!core::writeRunLogCsv(*log, path, &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    return true;
 }
 
 void RunPanel::updateButtons(RunPhase phase) {
@@ -250,6 +302,10 @@ void RunPanel::retranslateUi() {
     pauseButton_->setText(phase_ == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
     stopButton_->setText(tr("Stop (Shift+F5)"));
     resetButton_->setText(tr("Reset"));
+    exportLog_->setText(tr("Export run log..."));
+    exportLog_->setToolTip(tr("Every control step of the last run's finished trials, in the format "
+                              "of prisca-cli run --out (state, observation, reference, error, u, "
+                              "u*, cost, θ)"));
     resetButton_->setToolTip(tr("Stop the run and clear the trails, charts and results (Ctrl+R)"));
     emergencyButton_->setText(tr("E-STOP (Space / Esc)"));
     emergencyButton_->setToolTip(

@@ -26,6 +26,9 @@ class RunPanel : public QWidget {
 
     /// Starts a run with the session as it is now (the same as pressing Run).
     void startRun();
+    /// Writes the last run's log (its finished trials, the CLI's `run --out` format). False with
+    /// *error if there is none or it cannot be written.
+    bool exportRunLog(const QString& path, QString* error) const;
     /// Speeds offered, simulated seconds per wall second (0 = as fast as possible).
     static QList<double> speeds() { return {1.0, 10.0, 0.0}; }
 
@@ -64,6 +67,7 @@ class RunPanel : public QWidget {
     QPushButton* resetButton_;
     QPushButton* emergencyButton_;
     QPushButton* resetEmergencyButton_;
+    QPushButton* exportLog_;  // the last run's log to CSV
     QLabel* status_;
     QTableWidget* results_;
 };

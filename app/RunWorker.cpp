@@ -4,6 +4,7 @@
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunLogBuilder.h"
 
 #include <QLoggingCategory>
 #include <QTimer>
@@ -76,6 +77,13 @@ void RunWorker::start(const RunRequest& request) {
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
         return;
     }
+    runLog_ = sim::startRunLog(plant_->info(), request_.method, request_.demonstration->dt,
+                               *controller_);
+    runLog_.metadata.insert(QStringLiteral("seed"), QString::number(request_.seed));
+    runLog_.metadata.insert(QStringLiteral("trials"), QString::number(request_.trials));
+    runLog_.metadata.insert(QStringLiteral("perturbation"), QString::number(request_.perturbation));
+    runLog_.metadata.insert(QStringLiteral("sensor"), QString::number(request_.sensor));
+    runLog_.metadata.insert(QStringLiteral("demonstration"), request_.demonstrationSource);
     trial_ = 0;
     runTimeOffset_ = 0.0;
     stepsTaken_.store(0);
@@ -155,6 +163,7 @@ void RunWorker::endTrial() {
     const sim::EpisodeResult result = stepper_->takeResult();
     const sim::TrialSummary summary =
         sim::summarizeTrial(request_.profile.info, *request_.demonstration, result);
+    sim::appendRunLogTrial(runLog_, trial_, result, request_.demonstration->dt);
     emit trialFinished(trial_, summary);
     runTimeOffset_ += result.duration;
     ++trial_;
@@ -163,6 +172,7 @@ void RunWorker::endTrial() {
         stepper_.reset();
         setPhase(RunPhase::Idle);
         emit progress(tr("Run finished: %1 trials").arg(request_.trials));
+        emitRunLog();
         emit runFinished();
         return;
     }
@@ -202,14 +212,22 @@ void RunWorker::stop() {
                                                            *request_.demonstration, result));
         }
         stepper_.reset();
+        emitRunLog();
         emit progress(tr("Run stopped"));
         setPhase(RunPhase::Idle);
     }
 }
 
+void RunWorker::emitRunLog() {
+    emit runLogReady(std::make_shared<const core::RunLog>(runLog_));
+}
+
 void RunWorker::enterEmergencyStop() {
     timer_->stop();
     flushSamples();
+    if (stepper_) {
+        emitRunLog();  // the finished trials; the one E-STOP cut short is not among them
+    }
     stepper_.reset();
     qCWarning(lcRun) << "E-STOP after" << stepsTaken_.load() << "steps";
     emit progress(tr("E-STOP: run stopped"));

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/Demonstration.h"
+#include "core/RunLogCsv.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/PlantProfile.h"
 #include "sim/TrialMetrics.h"
@@ -39,6 +40,7 @@ struct RunRequest {
     double perturbation = 1.0;  ///< plant perturbation level (0 nominal, 1 realistic)
     double sensor = 1.0;        ///< sensor noise level (0 perfect, 1 realistic)
     int trainingTrials = 8;     ///< for PD (selected) and PEGASUS, trained before the run
+    QString demonstrationSource;  ///< for the run log: the file, or the scripted style and seed
 };
 
 /// One control step as the live views show it.
@@ -109,6 +111,9 @@ class RunWorker : public QObject {
     void trialFinished(int trial, const prisca::sim::TrialSummary& summary);
     /// All trials done (not sent after stop() or E-STOP).
     void runFinished();
+    /// The run log of the trials that finished (the CLI's `run --out` format), when the run
+    /// ends, is stopped or meets E-STOP; a trial cut short is not in it.
+    void runLogReady(std::shared_ptr<const prisca::core::RunLog> log);
     void failed(const QString& message);
 
   private:
@@ -123,6 +128,8 @@ class RunWorker : public QObject {
     RunRequest request_;
     std::unique_ptr<sim::Plant> plant_;
     std::unique_ptr<core::Controller> controller_;
+    core::RunLog runLog_;  // the finished trials of this run
+    void emitRunLog();
     std::unique_ptr<sim::EpisodeStepper> stepper_;
     sim::EpisodeSettings episode_;
     QTimer* timer_;
@@ -145,3 +152,4 @@ Q_DECLARE_METATYPE(prisca::app::RunRequest)
 Q_DECLARE_METATYPE(prisca::app::LiveSample)
 Q_DECLARE_METATYPE(prisca::app::RunPhase)
 Q_DECLARE_METATYPE(prisca::sim::TrialSummary)
+Q_DECLARE_METATYPE(std::shared_ptr<const prisca::core::RunLog>)

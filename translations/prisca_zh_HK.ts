@@ -1557,164 +1557,195 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="250"/>
+        <location filename="../app/RunPanel.cpp" line="143"/>
+        <location filename="../app/RunPanel.cpp" line="153"/>
+        <source>Export run log</source>
+        <translation>匯出運行記錄</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="144"/>
+        <source>Run logs (*.csv)</source>
+        <translation>運行記錄 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="157"/>
+        <source>Run log written to %1</source>
+        <translation>運行記錄已寫入 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="230"/>
+        <source>No finished trial to write yet: run first.</source>
+        <translation>尚未有完成的試驗可寫入：請先運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="249"/>
+        <location filename="../app/RunPanel.cpp" line="302"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="250"/>
+        <location filename="../app/RunPanel.cpp" line="249"/>
+        <location filename="../app/RunPanel.cpp" line="302"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="199"/>
+        <location filename="../app/RunPanel.cpp" line="251"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="201"/>
+        <location filename="../app/RunPanel.cpp" line="253"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="231"/>
+        <location filename="../app/RunPanel.cpp" line="283"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="232"/>
+        <location filename="../app/RunPanel.cpp" line="284"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233"/>
+        <location filename="../app/RunPanel.cpp" line="285"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235"/>
+        <location filename="../app/RunPanel.cpp" line="287"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="237"/>
+        <location filename="../app/RunPanel.cpp" line="289"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="239"/>
+        <location filename="../app/RunPanel.cpp" line="291"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241"/>
+        <location filename="../app/RunPanel.cpp" line="293"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243"/>
+        <location filename="../app/RunPanel.cpp" line="295"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245"/>
+        <location filename="../app/RunPanel.cpp" line="297"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="246"/>
+        <location filename="../app/RunPanel.cpp" line="298"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="247"/>
+        <location filename="../app/RunPanel.cpp" line="299"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="248"/>
+        <location filename="../app/RunPanel.cpp" line="300"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249"/>
+        <location filename="../app/RunPanel.cpp" line="301"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251"/>
+        <location filename="../app/RunPanel.cpp" line="303"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="252"/>
+        <location filename="../app/RunPanel.cpp" line="304"/>
         <source>Reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253"/>
+        <location filename="../app/RunPanel.cpp" line="305"/>
+        <source>Export run log...</source>
+        <translation>匯出運行記錄...</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="306"/>
+        <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
+        <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="309"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="254"/>
+        <location filename="../app/RunPanel.cpp" line="310"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="256"/>
+        <location filename="../app/RunPanel.cpp" line="312"/>
         <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
         <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="257"/>
+        <location filename="../app/RunPanel.cpp" line="313"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="260"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261"/>
+        <location filename="../app/RunPanel.cpp" line="317"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="261"/>
+        <location filename="../app/RunPanel.cpp" line="317"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263"/>
+        <location filename="../app/RunPanel.cpp" line="319"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="263"/>
+        <location filename="../app/RunPanel.cpp" line="319"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264"/>
+        <location filename="../app/RunPanel.cpp" line="320"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="264"/>
+        <location filename="../app/RunPanel.cpp" line="320"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1722,32 +1753,32 @@
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="39"/>
+        <location filename="../app/RunWorker.cpp" line="40"/>
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="76"/>
+        <location filename="../app/RunWorker.cpp" line="77"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="90"/>
+        <location filename="../app/RunWorker.cpp" line="98"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="165"/>
+        <location filename="../app/RunWorker.cpp" line="174"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="205"/>
+        <location filename="../app/RunWorker.cpp" line="216"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="215"/>
+        <location filename="../app/RunWorker.cpp" line="233"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>

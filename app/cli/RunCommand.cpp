@@ -6,6 +6,7 @@
 #include "core/RunLogCsv.h"
 #include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
+#include "sim/RunLogBuilder.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 #include "sim/TrialMetrics.h"
@@ -24,35 +25,6 @@ namespace {
 
 QJsonValue finiteOrNull(double value) {
     return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
-}
-
-// Appends one trial's steps to the run log rows.
-void appendTrial(core::RunLog& log, int trial, const sim::EpisodeResult& result, double dt) {
-    const Eigen::Index first = log.rows.rows();
-    log.rows.conservativeResize(first + static_cast<Eigen::Index>(result.steps.size()),
-                                log.columns.size());
-    for (size_t k = 0; k < result.steps.size(); ++k) {
-        const sim::StepRecord& s = result.steps[k];
-        Eigen::RowVectorXd row(log.columns.size());
-        Eigen::Index c = 0;
-        row[c++] = trial;
-        row[c++] = k * dt;
-        for (const Eigen::VectorXd* v : {&s.state, &s.observation}) {
-            row.segment(c, v->size()) = v->transpose();
-            c += v->size();
-        }
-        row[c++] = s.referenceIndex;
-        for (const Eigen::VectorXd* v : {&s.deviation, &s.action, &s.referenceAction}) {
-            row.segment(c, v->size()) = v->transpose();
-            c += v->size();
-        }
-        row[c++] = s.cost;
-        if (s.parameters.size() > 0) {
-            row.segment(c, s.parameters.size()) = s.parameters.transpose();
-            c += s.parameters.size();
-        }
-        log.rows.row(first + static_cast<Eigen::Index>(k)) = row.head(c);
-    }
 }
 
 }  // namespace
@@ -164,55 +136,12 @@ int runCommand(const QStringList& arguments) {
     auto comparison = compareMethod.isEmpty() ? nullptr : build(compareMethod);
     const sim::PlantInfo& info = plant->info();
 
-    core::RunLog log;
-    log.plant = task.plant;
-    log.method = method;
-    log.dt = demo.dt;
+    core::RunLog log = sim::startRunLog(info, method, demo.dt, *controller);
     log.metadata.insert(QStringLiteral("seed"), QString::number(seed));
     log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
     log.metadata.insert(QStringLiteral("perturbation"), QString::number(perturbationLevel));
     log.metadata.insert(QStringLiteral("sensor"), QString::number(sensorLevel));
     log.metadata.insert(QStringLiteral("demonstration"), line.value("demo"));
-    log.columns << "trial"
-                << "t";
-    log.units << "1"
-              << "s";
-    for (const QString& prefix : {QStringLiteral(""), QStringLiteral("obs_")}) {
-        for (int i = 0; i < info.stateDimension(); ++i) {
-            log.columns << prefix + info.stateNames[i];
-            log.units << info.stateUnits[i];
-        }
-    }
-    log.columns << "ref_index";
-    log.units << "1";
-    for (int i = 0; i < info.stateDimension(); ++i) {
-        // A vehicle's pose error is in the desired pose's frame: say so in the column name.
-        QString name = info.stateNames[i];
-        if (info.pose) {
-            name = i == info.pose->x         ? QStringLiteral("lon")
-                   : i == info.pose->y       ? QStringLiteral("lat")
-                   : i == info.pose->heading ? QStringLiteral("heading")
-                                             : name;
-        }
-        log.columns << "e_" + name;
-        log.units << info.stateUnits[i];
-    }
-    for (const QString& prefix : {QStringLiteral("u_"), QStringLiteral("ustar_")}) {
-        for (int l = 0; l < info.actionDimension(); ++l) {
-            log.columns << prefix + info.actionNames[l];
-            log.units << info.actionUnits[l];
-        }
-    }
-    log.columns << "cost";
-    log.units << "1";
-    if (const Eigen::MatrixXd* theta = controller->learnedParameters()) {
-        for (Eigen::Index l = 0; l < theta->cols(); ++l) {
-            for (Eigen::Index i = 0; i < theta->rows(); ++i) {
-                log.columns << QStringLiteral("theta_%1_%2").arg(i).arg(info.actionNames[l]);
-                log.units << "1";
-            }
-        }
-    }
 
     QJsonArray trialsJson;
     QJsonArray compareJson;
@@ -253,7 +182,7 @@ int runCommand(const QStringList& arguments) {
                                     .arg(otherSummary.trackingRms, 0, 'f', 4);
         }
         const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, episode);
-        appendTrial(log, trial, result, demo.dt);
+        sim::appendRunLogTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
         rms.push_back(summary.trackingRms);
         pathRms.push_back(summary.pathRms);

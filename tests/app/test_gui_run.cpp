@@ -12,6 +12,7 @@
 #include "app/RecordPanel.h"
 #include "app/RigPanel.h"
 #include "app/RunController.h"
+#include "app/RunPanel.h"
 #include "app/TaskPanel.h"
 #include "core/DemonstrationCsv.h"
 #include "core/PriscaController.h"
@@ -31,6 +32,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSet>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -274,6 +276,43 @@ class TestGuiRun : public QObject {
         QVERIFY(!panel->isRunning());
         QVERIFY(panel->tableText(prisca::core::TableFormat::Markdown).contains("cancelled"));
         QCOMPARE(w.find<QTableWidget>("experimentTable")->rowCount(), 3);
+    }
+
+    void runLog_ofTheWindowIsTheClisFormatWithOnlyFinishedTrials() {
+        QTemporaryDir dir;
+        Window w;
+        auto* exportButton = w.find<QAbstractButton>("exportRunLog");
+        QVERIFY(!exportButton->isEnabled());  // nothing run yet
+        w.setSpeedIndex(2);
+        w.find<QSpinBox>("trials")->setValue(2);
+        QSignalSpy finished(&w.window.run(), &RunController::runFinished);
+        w.find<QAbstractButton>("runButton")->click();
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        QTRY_VERIFY(exportButton->isEnabled());
+        const QString path = dir.filePath("run.csv");
+        QString error;
+        QVERIFY2(w.find<RunPanel>("runPanel")->exportRunLog(path, &error), qPrintable(error));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines[0], QStringLiteral("# prisca-run-log 1"));
+        QVERIFY(lines.contains(QStringLiteral("# method: prisca")));
+        QVERIFY(lines.contains(QStringLiteral("# trials: 2")));
+        QVERIFY(lines.contains(QStringLiteral("# demonstration: scripted stick-180-left, seed 1")));
+        // The header `prisca-cli run --out` writes for the slide-car's PRISCA.
+        const QString header =
+            "trial,t,x,y,psi,vx,vy,r,obs_x,obs_y,obs_psi,obs_vx,obs_vy,obs_r,ref_index,e_lon,"
+            "e_lat,e_heading,e_vx,e_vy,e_r,u_throttle,u_steering,ustar_throttle,ustar_steering,"
+            "cost,theta_0_throttle,theta_0_steering";
+        const int at = lines.indexOf(header);
+        QVERIFY2(at > 0, qPrintable(lines.mid(0, 12).join('\n')));
+        // Both trials, each at least the demonstration's 158 steps, numbered 0 and 1.
+        QSet<QString> trials;
+        for (int i = at + 1; i < lines.size(); ++i) {
+            trials.insert(lines[i].section(',', 0, 0));
+        }
+        QCOMPARE(trials, QSet<QString>({"0", "1"}));
+        QVERIFY(lines.size() - at - 1 >= 2 * 158);
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {
