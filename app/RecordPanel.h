@@ -26,8 +26,8 @@ class LabSession;
 /// releasing it returns to neutral at 3 per second), or with a gamepad's sticks when one is
 /// plugged in (left stick forward: first control; right stick sideways: second). A countdown first,
 /// then Stop; the recording becomes the session's demonstration at once and can be saved or
-/// discarded. It streams to a file as it goes (flushed every second), so a crash loses at most a
-/// second of driving.
+/// discarded. It streams to a file as it goes (the header at once, rows every quarter second), so
+/// a crash loses at most a quarter second of driving.
 class RecordPanel : public QWidget {
     Q_OBJECT
   public:

@@ -13,7 +13,6 @@ namespace prisca::app {
 namespace {
 constexpr int kTickMs = 5;
 constexpr int kSampleFlushMs = 40;
-constexpr int kStreamFlushMs = 1000;  // at most this much is lost on a crash
 }  // namespace
 
 RecordingWorker::RecordingWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
@@ -22,11 +21,7 @@ RecordingWorker::RecordingWorker(QObject* parent) : QObject(parent), timer_(new 
     connect(timer_, &QTimer::timeout, this, &RecordingWorker::tick);
 }
 
-RecordingWorker::~RecordingWorker() {
-    if (active_) {
-        flushStream();
-    }
-}
+RecordingWorker::~RecordingWorker() = default;  // the stream flushes and closes itself
 
 void RecordingWorker::start(const QString& plant, const QString& streamPath) {
     if (active_) {
@@ -38,21 +33,19 @@ void RecordingWorker::start(const QString& plant, const QString& streamPath) {
         emit failed(QString::fromStdString(e.what()));
         return;
     }
-    QDir().mkpath(QFileInfo(streamPath).absolutePath());
-    stream_.setFileName(streamPath);
-    if (!stream_.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        emit failed(tr("Cannot record to %1: %2").arg(streamPath, stream_.errorString()));
-        return;
-    }
-    state_ = plant_->reset(1, sim::Perturbation::none());
-    // The demonstration format's own header; rows follow as they are driven.
+    // The demonstration format's own header, on disk at once; rows follow as they are driven.
     core::Demonstration header =
         sim::DemonstrationRecorder(plant_->info(), plant_->timing().controlPeriod).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
+    QString error;
+    if (!stream_.open(streamPath, header, &error)) {
+        emit failed(tr("Cannot record to %1").arg(error));
+        return;
+    }
+    state_ = plant_->reset(1, sim::Perturbation::none());
     input_ = Eigen::VectorXd::Zero(plant_->info().actionDimension());
     states_.clear();
     actions_.clear();
-    pending_ = core::formatDemonstrationCsvHeader(header);
     samples_.clear();
     stopRequested_.store(false);
     active_ = true;
@@ -83,7 +76,10 @@ void RecordingWorker::tick() {
     for (int i = 0; i < due && i < 40; ++i) {
         const int k = static_cast<int>(states_.size());
         const double t = k * dt;
-        core::appendDemonstrationCsvRow(pending_, t, state_, input_);
+        QString error;
+        if (!stream_.append(t, state_, input_, &error)) {
+            emit failed(tr("Writing the recording failed: %1").arg(error));
+        }
         states_.push_back(state_);
         actions_.push_back(input_);
         LiveSample sample;
@@ -100,24 +96,8 @@ void RecordingWorker::tick() {
     if (flushClock_.elapsed() >= kSampleFlushMs && !samples_.isEmpty()) {
         emit samplesReady(samples_);
         samples_.clear();
+        flushClock_.restart();
     }
-    if (flushClock_.elapsed() >= kStreamFlushMs) {
-        flushStream();
-    }
-}
-
-bool RecordingWorker::flushStream() {
-    flushClock_.restart();
-    if (pending_.isEmpty()) {
-        return true;
-    }
-    const bool ok = stream_.write(pending_) == pending_.size() && stream_.flush();
-    pending_.clear();
-    if (!ok) {
-        emit failed(tr("Writing the recording to %1 failed: %2")
-                        .arg(stream_.fileName(), stream_.errorString()));
-    }
-    return ok;
 }
 
 void RecordingWorker::stop() {
@@ -130,15 +110,18 @@ void RecordingWorker::stop() {
         emit samplesReady(samples_);
         samples_.clear();
     }
-    flushStream();
-    stream_.close();
+    const QString streamPath = stream_.fileName();
+    QString error;
+    if (!stream_.close(&error)) {
+        emit failed(tr("Writing the recording failed: %1").arg(error));
+    }
     sim::DemonstrationRecorder recorder(plant_->info(), plant_->timing().controlPeriod);
     for (size_t k = 0; k < states_.size(); ++k) {
         recorder.record(states_[k], actions_[k]);
     }
     core::Demonstration demo = recorder.demonstration();
     demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
-    emit finished(demo, stream_.fileName());
+    emit finished(demo, streamPath);
 }
 
 }  // namespace prisca::app

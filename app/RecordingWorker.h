@@ -2,6 +2,7 @@
 
 #include "app/RunWorker.h"
 #include "core/Demonstration.h"
+#include "core/DemonstrationStream.h"
 
 #include <Eigen/Core>
 #include <QElapsedTimer>
@@ -23,7 +24,8 @@ namespace prisca::app {
 
 /// Records a demonstration by driving a simulated plant in real time: at every control period
 /// it applies the operator's latest input, records (state, action) and streams the row to a CSV
-/// file in the demonstration format, flushed every second, so a crash loses at most a second.
+/// file in the demonstration format (core::DemonstrationStream: the header at once, rows flushed
+/// every quarter second, so a crash loses at most that).
 /// Lives on its own thread; slots are called queued, requestStop() from any thread.
 class RecordingWorker : public QObject {
     Q_OBJECT
@@ -50,14 +52,12 @@ class RecordingWorker : public QObject {
 
   private:
     void tick();
-    bool flushStream();
 
     std::unique_ptr<sim::Plant> plant_;
     QTimer* timer_;
     QElapsedTimer clock_;
-    QElapsedTimer flushClock_;
-    QFile stream_;
-    QByteArray pending_;  ///< rows not yet written
+    QElapsedTimer flushClock_;  ///< paces the live samples to the GUI
+    core::DemonstrationStream stream_;
     QVector<LiveSample> samples_;
     Eigen::VectorXd input_;
     Eigen::VectorXd state_;

@@ -257,11 +257,13 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             shared->times.push_back(t);
             shared->states.push_back(state);
             shared->actions.push_back(shared->driveAction);
-            core::appendDemonstrationCsvRow(shared->pendingRows, t, state, shared->driveAction);
-            if (shared->stream && shared->pendingRows.size() > 4096) {
-                shared->stream->write(shared->pendingRows);
-                shared->stream->flush();
-                shared->pendingRows.clear();
+            if (shared->stream) {
+                // The crash copy keeps the demonstration format's even steps (the nominal frame
+                // period); the finished take is resampled from the frames' own times. A failed
+                // write is retried at the next flush; the take is in memory too.
+                QString ignored;
+                shared->stream->append((shared->times.size() - 1) * shared->streamDt, state,
+                                       shared->driveAction, &ignored);
             }
         }
     });
@@ -350,8 +352,8 @@ RigPanel::~RigPanel() {
         shared_->running = false;
         shared_->recording = false;
         if (shared_->stream) {
-            shared_->stream->write(shared_->pendingRows);
-            shared_->stream->close();
+            QString ignored;
+            shared_->stream->close(&ignored);
         }
     }
     camera_.stop();
@@ -426,28 +428,28 @@ bool RigPanel::startDriving() {
         QStringLiteral("/rig-%1.csv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
     QDir().mkpath(RecordPanel::recordingsFolder());
-    auto stream = std::make_unique<QFile>(path);
-    if (!stream->open(QIODevice::WriteOnly)) {
-        trialInfo_->setText(tr("Cannot record to %1: %2").arg(path, stream->errorString()));
-        return false;
-    }
-    // The header of the demonstration format; rows follow as they are recorded.
-    // dt in the streamed header is the camera's nominal frame period; the finished recording is
-    // resampled onto the measured one.
+    // The header of the demonstration format, on disk at once; rows follow as they are
+    // recorded. dt in the streamed header is the camera's nominal frame period; the finished
+    // recording is resampled onto the measured one.
     core::Demonstration header =
         sim::DemonstrationRecorder(info, nominalFramePeriod_).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-    stream->write(core::formatDemonstrationCsvHeader(header));
+    auto stream = std::make_unique<core::DemonstrationStream>();
+    QString error;
+    if (!stream->open(path, header, &error)) {
+        trialInfo_->setText(tr("Cannot record to %1").arg(error));
+        return false;
+    }
     {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->states.clear();
         shared_->actions.clear();
         shared_->times.clear();
         shared_->firstFrameNs = -1;
-        shared_->pendingRows.clear();
         shared_->estimator.reset();
         shared_->driveAction = Eigen::VectorXd::Zero(info.actionDimension());
         shared_->stream = std::move(stream);
+        shared_->streamDt = nominalFramePeriod_;
         shared_->recording = true;
     }
     if (car_) {
@@ -488,10 +490,9 @@ void RigPanel::stopDriving() {
         std::lock_guard<std::mutex> lock(shared_->mutex);
         shared_->recording = false;
         if (shared_->stream) {
-            shared_->stream->write(shared_->pendingRows);
-            shared_->pendingRows.clear();
             path = shared_->stream->fileName();
-            shared_->stream->close();
+            QString ignored;  // the file is rewritten below from the samples in memory
+            shared_->stream->close(&ignored);
             shared_->stream.reset();
         }
         states.swap(shared_->states);

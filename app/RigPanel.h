@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/DemonstrationStream.h"
 #include "devices/CameraWorker.h"
 #include "devices/FloorCalibration.h"
 #include "devices/RigLoop.h"
@@ -129,8 +130,8 @@ class RigPanel : public QWidget {
         std::vector<Eigen::VectorXd> states, actions;
         std::vector<double> times;       ///< each row's frame time since the first [s]
         std::int64_t firstFrameNs = -1;  ///< the recording's first frame with a pose
-        QByteArray pendingRows;
-        std::unique_ptr<QFile> stream;
+        std::unique_ptr<core::DemonstrationStream> stream;
+        double streamDt = 0.025;  ///< the crash copy's step (the camera's nominal period) [s]
     };
     std::shared_ptr<Shared> shared_;
     double nominalFramePeriod_ = 1.0 / 40.0;  ///< the camera's asked-for frame period [s]

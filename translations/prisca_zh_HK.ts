@@ -1177,145 +1177,146 @@
 <context>
     <name>prisca::app::RecordingWorker</name>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="44"/>
-        <source>Cannot record to %1: %2</source>
-        <translation>無法錄製到 %1：%2</translation>
+        <location filename="../app/RecordingWorker.cpp" line="42"/>
+        <source>Cannot record to %1</source>
+        <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="117"/>
-        <source>Writing the recording to %1 failed: %2</source>
-        <translation>把錄製寫入 %1 失敗：%2</translation>
+        <location filename="../app/RecordingWorker.cpp" line="81"/>
+        <location filename="../app/RecordingWorker.cpp" line="116"/>
+        <source>Writing the recording failed: %1</source>
+        <translation>寫入錄製失敗：%1</translation>
     </message>
 </context>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="278"/>
+        <location filename="../app/RigPanel.cpp" line="276"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="279"/>
-        <location filename="../app/RigPanel.cpp" line="286"/>
+        <location filename="../app/RigPanel.cpp" line="277"/>
+        <location filename="../app/RigPanel.cpp" line="284"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="285"/>
+        <location filename="../app/RigPanel.cpp" line="283"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="300"/>
-        <location filename="../app/RigPanel.cpp" line="311"/>
+        <location filename="../app/RigPanel.cpp" line="298"/>
+        <location filename="../app/RigPanel.cpp" line="309"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="301"/>
+        <location filename="../app/RigPanel.cpp" line="299"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="312"/>
+        <location filename="../app/RigPanel.cpp" line="310"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367"/>
-        <location filename="../app/RigPanel.cpp" line="419"/>
+        <location filename="../app/RigPanel.cpp" line="365"/>
+        <location filename="../app/RigPanel.cpp" line="417"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="369"/>
-        <location filename="../app/RigPanel.cpp" line="420"/>
+        <location filename="../app/RigPanel.cpp" line="367"/>
+        <location filename="../app/RigPanel.cpp" line="418"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="371"/>
+        <location filename="../app/RigPanel.cpp" line="369"/>
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="373"/>
+        <location filename="../app/RigPanel.cpp" line="371"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="376"/>
+        <location filename="../app/RigPanel.cpp" line="374"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="405"/>
+        <location filename="../app/RigPanel.cpp" line="403"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="431"/>
-        <source>Cannot record to %1: %2</source>
-        <translation>無法錄製到 %1：%2</translation>
+        <location filename="../app/RigPanel.cpp" line="436"/>
+        <source>Cannot record to %1</source>
+        <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="460"/>
+        <location filename="../app/RigPanel.cpp" line="457"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="503"/>
+        <location filename="../app/RigPanel.cpp" line="499"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="513"/>
+        <location filename="../app/RigPanel.cpp" line="509"/>
         <source>The rig recording could not be saved: %1</source>
         <translation>實驗台錄製無法儲存：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="519"/>
+        <location filename="../app/RigPanel.cpp" line="515"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="524"/>
+        <location filename="../app/RigPanel.cpp" line="520"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="547"/>
+        <location filename="../app/RigPanel.cpp" line="543"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="577"/>
+        <location filename="../app/RigPanel.cpp" line="573"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="582"/>
+        <location filename="../app/RigPanel.cpp" line="578"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="615"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="661"/>
+        <location filename="../app/RigPanel.cpp" line="657"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="682"/>
-        <location filename="../app/RigPanel.cpp" line="699"/>
+        <location filename="../app/RigPanel.cpp" line="678"/>
+        <location filename="../app/RigPanel.cpp" line="695"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="683"/>
+        <location filename="../app/RigPanel.cpp" line="679"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1324,232 +1325,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="709"/>
+        <location filename="../app/RigPanel.cpp" line="705"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="738"/>
+        <location filename="../app/RigPanel.cpp" line="734"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="741"/>
+        <location filename="../app/RigPanel.cpp" line="737"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="743"/>
+        <location filename="../app/RigPanel.cpp" line="739"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="799"/>
+        <location filename="../app/RigPanel.cpp" line="795"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="840"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="841"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="846"/>
+        <location filename="../app/RigPanel.cpp" line="842"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="852"/>
+        <location filename="../app/RigPanel.cpp" line="848"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="849"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="854"/>
+        <location filename="../app/RigPanel.cpp" line="850"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="851"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="856"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="857"/>
+        <location filename="../app/RigPanel.cpp" line="853"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="859"/>
+        <location filename="../app/RigPanel.cpp" line="855"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="861"/>
+        <location filename="../app/RigPanel.cpp" line="857"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="862"/>
+        <location filename="../app/RigPanel.cpp" line="858"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="863"/>
+        <location filename="../app/RigPanel.cpp" line="859"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="864"/>
+        <location filename="../app/RigPanel.cpp" line="860"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="865"/>
+        <location filename="../app/RigPanel.cpp" line="861"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="866"/>
+        <location filename="../app/RigPanel.cpp" line="862"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="867"/>
+        <location filename="../app/RigPanel.cpp" line="863"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="870"/>
+        <location filename="../app/RigPanel.cpp" line="866"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="871"/>
+        <location filename="../app/RigPanel.cpp" line="867"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="872"/>
+        <location filename="../app/RigPanel.cpp" line="868"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="874"/>
+        <location filename="../app/RigPanel.cpp" line="870"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="875"/>
+        <location filename="../app/RigPanel.cpp" line="871"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="876"/>
+        <location filename="../app/RigPanel.cpp" line="872"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="877"/>
+        <location filename="../app/RigPanel.cpp" line="873"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="878"/>
+        <location filename="../app/RigPanel.cpp" line="874"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="879"/>
+        <location filename="../app/RigPanel.cpp" line="875"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="876"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="881"/>
+        <location filename="../app/RigPanel.cpp" line="877"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="882"/>
+        <location filename="../app/RigPanel.cpp" line="878"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="882"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="888"/>
+        <location filename="../app/RigPanel.cpp" line="884"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="890"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="892"/>
+        <location filename="../app/RigPanel.cpp" line="888"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="894"/>
+        <location filename="../app/RigPanel.cpp" line="890"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="896"/>
+        <location filename="../app/RigPanel.cpp" line="892"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
