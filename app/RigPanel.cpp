@@ -5,6 +5,7 @@
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
 #include "core/DemonstrationCsv.h"
+#include "core/DeviationModel.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
 #include "rigsim/VirtualCar.h"
@@ -12,6 +13,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
+#include "sim/TrialMetrics.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -570,15 +572,12 @@ void RigPanel::finishTrial() {
     const auto demo = session_.demonstration();
     const auto& pose = session_.profile().info.pose;
     if (last && demo && pose) {
-        const int end = demo->length() - 1;
-        const double miss =
-            std::hypot(last->x - demo->states(end, pose->x), last->y - demo->states(end, pose->y));
-        const double heading =
-            std::abs(std::remainder(last->heading - demo->states(end, pose->heading), 2 * M_PI));
+        const sim::ParkingError parked = sim::parkingError(session_.profile().info, *demo,
+                                                           last->x, last->y, last->heading);
         lastResult_ = tr("Trial %1: parked %2 cm from the lot, heading off by %3°")
                           .arg(trials_)
-                          .arg(miss * 100.0, 0, 'f', 1)
-                          .arg(heading * 180.0 / M_PI, 0, 'f', 1);
+                          .arg(parked.position * 100.0, 0, 'f', 1)
+                          .arg(parked.heading * 180.0 / core::kPi, 0, 'f', 1);
     } else {
         lastResult_ = tr("Trial %1 ended without a pose").arg(trials_);
     }

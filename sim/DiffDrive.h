@@ -14,19 +14,19 @@ namespace prisca::sim {
 /// Physical constants of a small differential-drive ground robot (two driven wheels and a
 /// caster, the kind most labs have). Plain data; SI units.
 struct DiffDriveParameters {
-    double mass = 2.0;              ///< [kg]
-    double length = 0.30;           ///< body length [m]
-    double width = 0.25;            ///< body width [m]
-    double track = 0.24;            ///< distance between the two wheels [m]
-    double yawInertia = 0.02;       ///< about the centre [kg m^2]
-    double maxWheelSpeed = 0.6;     ///< wheel rim speed at a command of 1 [m/s]
+    double mass = 2.0;                ///< [kg]
+    double length = 0.30;             ///< body length [m]
+    double width = 0.25;              ///< body width [m]
+    double track = 0.24;              ///< distance between the two wheels [m]
+    double yawInertia = 0.02;         ///< about the centre [kg m^2]
+    double maxWheelSpeed = 0.6;       ///< wheel rim speed at a command of 1 [m/s]
     double motorTimeConstant = 0.12;  ///< first-order lag of each wheel's speed [s]
-    double friction = 0.5;          ///< tyre-floor coefficient mu (wheels slip past mu N)
-    double tractionStiffness = 0.3; ///< share of the slip a wheel removes per physics step [1]
-    double casterDrag = 0.4;        ///< viscous drag of the caster [N s/m]
-    double gravity = 9.81;          ///< [m/s^2]
-    double restSpeed = 0.01;        ///< below this speed ... [m/s]
-    double restYawRate = 0.05;      ///< ... and this yaw rate the robot is at rest [rad/s]
+    double friction = 0.5;            ///< tyre-floor coefficient mu (wheels slip past mu N)
+    double tractionStiffness = 0.3;   ///< share of the slip a wheel removes per physics step [1]
+    double casterDrag = 0.4;          ///< viscous drag of the caster [N s/m]
+    double gravity = 9.81;            ///< [m/s^2]
+    double restSpeed = 0.01;          ///< below this speed ... [m/s]
+    double restYawRate = 0.05;        ///< ... and this yaw rate the robot is at rest [rad/s]
 };
 
 /// A differential-drive robot on a flat floor seen from above, one Box2D body with gravity off

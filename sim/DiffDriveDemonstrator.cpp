@@ -39,8 +39,7 @@ const std::vector<Style>& styles() {
     static const std::vector<Style> all = {
         {"dock-90-left", "a straight, a 90 deg turn to the left and into the dock (the classic)",
          [](Script&) {}},
-        {"dock-90-right", "the same to the right",
-         [](Script& s) { s.direction = -1.0; }},
+        {"dock-90-right", "the same to the right", [](Script& s) { s.direction = -1.0; }},
         {"u-turn-left", "a 180 deg turn to the left and back into a dock beside the start",
          [](Script& s) {
              s.turnHeading = 3.1416;
@@ -168,29 +167,30 @@ core::Demonstration DiffDriveDemonstrator::record(std::uint64_t seed, const Scri
 }
 
 StyleSet diffDriveStyles() {
-    return {[] {
-                std::vector<DemonstrationStyle> out;
-                for (const Style& s : styles()) {
-                    out.push_back({QString::fromLatin1(s.name), QString::fromLatin1(s.description)});
+    return {
+        [] {
+            std::vector<DemonstrationStyle> out;
+            for (const Style& s : styles()) {
+                out.push_back({QString::fromLatin1(s.name), QString::fromLatin1(s.description)});
+            }
+            return out;
+        },
+        [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+            for (const Style& s : styles()) {
+                if (style == QLatin1String(s.name)) {
+                    DiffDriveDemonstrator::Script script;
+                    s.adjust(script);
+                    return DiffDriveDemonstrator::record(seed, script, timing);
                 }
-                return out;
-            },
-            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
-                for (const Style& s : styles()) {
-                    if (style == QLatin1String(s.name)) {
-                        DiffDriveDemonstrator::Script script;
-                        s.adjust(script);
-                        return DiffDriveDemonstrator::record(seed, script, timing);
-                    }
-                }
-                QStringList known;
-                for (const Style& s : styles()) {
-                    known << QString::fromLatin1(s.name);
-                }
-                throw std::invalid_argument(QStringLiteral("unknown diffdrive style '%1' (one of: %2)")
-                                                .arg(style, known.join(QLatin1Char(' ')))
-                                                .toStdString());
-            }};
+            }
+            QStringList known;
+            for (const Style& s : styles()) {
+                known << QString::fromLatin1(s.name);
+            }
+            throw std::invalid_argument(QStringLiteral("unknown diffdrive style '%1' (one of: %2)")
+                                            .arg(style, known.join(QLatin1Char(' ')))
+                                            .toStdString());
+        }};
 }
 
 }  // namespace prisca::sim

@@ -18,12 +18,12 @@ class DiffDriveDemonstrator {
   public:
     /// Tuning of the scripted operator. Plain data.
     struct Script {
-        double standstill = 0.0;    ///< time standing still before the start [s]
-        double speed = 0.8;         ///< stick forward on the first straight [1]
-        double straightTime = 2.0;  ///< first straight [s]
-        double turnSpeed = 0.5;     ///< stick forward while turning (0: on the spot) [1]
-        double turnRate = 0.4;      ///< stick sideways while turning [1]
-        double direction = 1.0;     ///< +1 turns left, -1 right
+        double standstill = 0.0;      ///< time standing still before the start [s]
+        double speed = 0.8;           ///< stick forward on the first straight [1]
+        double straightTime = 2.0;    ///< first straight [s]
+        double turnSpeed = 0.5;       ///< stick forward while turning (0: on the spot) [1]
+        double turnRate = 0.4;        ///< stick sideways while turning [1]
+        double direction = 1.0;       ///< +1 turns left, -1 right
         double turnHeading = 1.5708;  ///< heading turned at which the operator straightens [rad]
         /// An S-bend: after the first turn, the same turn the other way back to this heading.
         bool sBend = false;

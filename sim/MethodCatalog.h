@@ -30,17 +30,17 @@ struct MethodSpec {
         SelectPdGains,  ///< grid-searches the PD gains on the training trials
         Pegasus         ///< searches a linear policy on fixed scenarios
     };
-    QString id;            ///< as the command line and session files spell it, e.g. "pd-h-lsd"
-    QString label;         ///< in tables, lists and figures, e.g. "PD+H+LSD"
-    const char* summary = "";  ///< one line for --help
+    QString id;                 ///< as the command line and session files spell it, e.g. "pd-h-lsd"
+    QString label;              ///< in tables, lists and figures, e.g. "PD+H+LSD"
+    const char* summary = "";   ///< one line for --help
     bool learnsOnline = false;  ///< learns trial after trial (warm-started in training)
     Training training = Training::None;
-    bool inTable1 = true;        ///< has a row in Table I
-    bool inCurves = true;        ///< can be drawn as a learning curve
-    bool ownFeatures = false;    ///< theta over the profile's PRISCA features (priscaFeatures)
-    bool limit = false;          ///< the ruler every accuracy figure is read against
-    bool simulationOnly = false; ///< needs the simulated plant itself (not on the rig)
-    Create create = nullptr;     ///< builds the controller
+    bool inTable1 = true;         ///< has a row in Table I
+    bool inCurves = true;         ///< can be drawn as a learning curve
+    bool ownFeatures = false;     ///< theta over the profile's PRISCA features (priscaFeatures)
+    bool limit = false;           ///< the ruler every accuracy figure is read against
+    bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
+    Create create = nullptr;      ///< builds the controller
 
     bool trainsOffline() const { return training != Training::None; }
 };

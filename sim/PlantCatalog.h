@@ -25,8 +25,9 @@ struct PlantEntry {
         Aircraft,  ///< an aircraft from above, its path
         Vehicle    ///< any other planar vehicle: an oriented marker on its path
     };
-    QString name;                 ///< as the command line and files spell it, e.g. "slidecar"
-    const char* displayName = "";  ///< for the window (translated there), e.g. "Simulated slide-car"
+    QString name;  ///< as the command line and files spell it, e.g. "slidecar"
+    const char* displayName =
+        "";  ///< for the window (translated there), e.g. "Simulated slide-car"
     Drawing drawing = Drawing::Vehicle;
     std::unique_ptr<Plant> (*create)(const SimulationTiming& timing) = nullptr;
     PlantInfo (*describe)() = nullptr;

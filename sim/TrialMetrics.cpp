@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 
 namespace prisca::sim {
@@ -45,6 +46,17 @@ double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstr
     return best;
 }
 
+ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration,
+                          double x, double y, double heading) {
+    if (!info.pose || demonstration.length() == 0) {
+        throw std::invalid_argument("parkingError: a planar vehicle and a demonstration needed");
+    }
+    const auto& p = *info.pose;
+    const int end = demonstration.length() - 1;
+    return {std::hypot(x - demonstration.states(end, p.x), y - demonstration.states(end, p.y)),
+            std::abs(core::wrapAngle(heading - demonstration.states(end, p.heading)))};
+}
+
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
                             const EpisodeResult& result) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -56,10 +68,11 @@ TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& de
     const Eigen::VectorXd lot = demonstration.states.row(demonstration.length() - 1).transpose();
     if (info.pose) {
         const auto& p = *info.pose;
-        summary.finalPositionError =
-            std::hypot(result.finalState[p.x] - lot[p.x], result.finalState[p.y] - lot[p.y]);
-        summary.finalHeadingError =
-            std::abs(core::wrapAngle(result.finalState[p.heading] - lot[p.heading]));
+        const ParkingError parked =
+            parkingError(info, demonstration, result.finalState[p.x], result.finalState[p.y],
+                         result.finalState[p.heading]);
+        summary.finalPositionError = parked.position;
+        summary.finalHeadingError = parked.heading;
     } else {
         summary.finalPositionError = nan;
         summary.finalHeadingError = nan;

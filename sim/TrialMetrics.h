@@ -34,6 +34,16 @@ double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstr
                       double y);
 /// Summary of a trial against the demonstration (the lot is its final pose).
 /// The result must have its steps recorded for trackingRms (else it is NaN).
+/// How far a vehicle's final pose is from the lot (the demonstration's final pose): the
+/// distance [m] and the heading difference's magnitude [rad], Table I's two errors. Wherever a
+/// trial is scored (simulation, the rig, the virtual rig) it is scored by this.
+struct ParkingError {
+    double position = 0.0;  ///< [m]
+    double heading = 0.0;   ///< [rad], in [0, pi]
+};
+ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration,
+                          double x, double y, double heading);
+
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
                             const EpisodeResult& result);
 

@@ -6,6 +6,7 @@
 #include "rigsim/VirtualRig.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
+#include "sim/TrialMetrics.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -18,12 +19,14 @@ namespace prisca::app::cli {
 int rigCommand(const QStringList& arguments) {
     CommandLine line(
         QStringLiteral("rig"),
-        QStringLiteral("Trials on the rig. With --virtual, the real rig's chain with no hardware: a "
-                       "simulated car driven through a pseudo-terminal by the transmitter link, "
-                       "the synthetic ceiling camera, the LED tracker, the state estimator and the "
-                       "controller, in real time."));
+        QStringLiteral(
+            "Trials on the rig. With --virtual, the real rig's chain with no hardware: a "
+            "simulated car driven through a pseudo-terminal by the transmitter link, "
+            "the synthetic ceiling camera, the LED tracker, the state estimator and the "
+            "controller, in real time."));
     line.addFlag("virtual", "The virtual rig (the only rig this command drives).");
-    line.addValue("demo", "Demonstration CSV (default: the scripted one, see --demo-seed).", "file");
+    line.addValue("demo", "Demonstration CSV (default: the scripted one, see --demo-seed).",
+                  "file");
     line.addValue("demo-seed", "Seed of the scripted demonstration.", "N", "1");
     line.addValue("method", "Method: " + sim::MethodCatalog::ids().join(", ") + ".", "name",
                   "prisca");
@@ -48,11 +51,13 @@ int rigCommand(const QStringList& arguments) {
     }
     if (spec->simulationOnly || spec->trainsOffline()) {
         throw UsageError(QStringLiteral("%1 cannot run on a rig (%2)")
-                             .arg(method, spec->simulationOnly ? QStringLiteral("it plans on the simulator itself")
-                                                               : QStringLiteral("it trains offline first")));
+                             .arg(method, spec->simulationOnly
+                                              ? QStringLiteral("it plans on the simulator itself")
+                                              : QStringLiteral("it trains offline first")));
     }
-    Task task = loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
-                                  static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
+    Task task =
+        loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
+                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
     applyPriscaDefaults(line, task.profile);
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
@@ -61,23 +66,27 @@ int rigCommand(const QStringList& arguments) {
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.lostTrackDistance = task.profile.lostTrackDistance;
     settings.cameraFps = 1.0 / task.demonstration->dt;  // one frame per control step
-    rigsim::VirtualRig rig(settings, sim::MethodCatalog::create(method, task.profile,
-                                                                task.demonstration, task.fit.b));
+    rigsim::VirtualRig rig(
+        settings, sim::MethodCatalog::create(method, task.profile, task.demonstration, task.fit.b));
     QString error;
     if (!rig.open(&error)) {
         throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
     }
     installInterruptHandler();
     const core::Demonstration& demo = *task.demonstration;
-    const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
     for (int t = 0; t < trials && !interrupted(); ++t) {
-        printProgress(QStringLiteral("rig: trial %1/%2 (%3 s)").arg(t + 1).arg(trials).arg(seconds, 0, 'f', 1));
-        const rigsim::VirtualRig::Trial trial =
-            rig.runTrial(seconds, sim::resetForTrial(t), sim::mixSeed(seed, t), [] { return interrupted(); });
-        const double miss = std::hypot(trial.finalPose.x - lot[0], trial.finalPose.y - lot[1]);
-        const double heading = std::abs(core::wrapAngle(trial.finalPose.heading - lot[2]));
+        printProgress(QStringLiteral("rig: trial %1/%2 (%3 s)")
+                          .arg(t + 1)
+                          .arg(trials)
+                          .arg(seconds, 0, 'f', 1));
+        const rigsim::VirtualRig::Trial trial = rig.runTrial(
+            seconds, sim::resetForTrial(t), sim::mixSeed(seed, t), [] { return interrupted(); });
+        const sim::ParkingError parked = sim::parkingError(
+            task.profile.info, demo, trial.finalPose.x, trial.finalPose.y, trial.finalPose.heading);
+        const double miss = parked.position;
+        const double heading = parked.heading;
         std::vector<double> latency = trial.latencyMs;
         std::sort(latency.begin(), latency.end());
         const double medianLatency = latency.empty() ? -1.0 : latency[latency.size() / 2];

@@ -42,7 +42,8 @@ class TestDemonstrationStream : public QObject {
         QVERIFY(contents(path).startsWith("# prisca-demonstration 1\n"));
         const int headerSize = contents(path).size();
         for (int k = 0; k < 4; ++k) {
-            QVERIFY(stream.append(k * 0.025, Eigen::Vector2d(0.1 * k, 1.0), Eigen::VectorXd::Constant(1, 0.5), &error));
+            QVERIFY(stream.append(k * 0.025, Eigen::Vector2d(0.1 * k, 1.0),
+                                  Eigen::VectorXd::Constant(1, 0.5), &error));
         }
         QCOMPARE(contents(path).size(), headerSize);  // pending until a flush
         QVERIFY(stream.flush(&error));
@@ -64,7 +65,8 @@ class TestDemonstrationStream : public QObject {
         QVERIFY(stream.open(path, header(), &error));
         int last = contents(path).size();
         for (int k = 0; k < 3; ++k) {
-            QVERIFY(stream.append(k * 0.025, Eigen::Vector2d(k, 0), Eigen::VectorXd::Zero(1), &error));
+            QVERIFY(
+                stream.append(k * 0.025, Eigen::Vector2d(k, 0), Eigen::VectorXd::Zero(1), &error));
             const int now = contents(path).size();
             QVERIFY(now > last);
             last = now;

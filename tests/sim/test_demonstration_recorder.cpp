@@ -1,7 +1,7 @@
 // Samples at their own times (a camera's frames, jittered and some dropped) onto one uniform
 // demonstration step.
-#include "sim/DemonstrationRecorder.h"
 #include "core/DeviationModel.h"
+#include "sim/DemonstrationRecorder.h"
 #include "sim/PlantCatalog.h"
 
 #include <QtTest>
@@ -20,7 +20,8 @@ class TestDemonstrationRecorder : public QObject {
         std::vector<double> times;
         std::vector<Eigen::VectorXd> states, actions;
         for (int f = 0; f < 120; ++f) {
-            if (f == 10 || f == 11) continue;
+            if (f == 10 || f == 11)
+                continue;
             const double t = f / 60.0 + (f % 3 == 1 ? 0.001 : 0.0);
             Eigen::VectorXd s(6);
             s << 2.0 * t, 0.0, prisca::core::wrapAngle(3.0 + 3.0 * t), 2.0, 0.0, 3.0;

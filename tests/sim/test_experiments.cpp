@@ -27,7 +27,8 @@ struct CarTask {
 
 double meanPositionCm(const MethodTrials& m) {
     double sum = 0.0;
-    for (const TrialSummary& t : m.trials) sum += t.finalPositionError * 100.0;
+    for (const TrialSummary& t : m.trials)
+        sum += t.finalPositionError * 100.0;
     return sum / m.trials.size();
 }
 
@@ -49,7 +50,8 @@ class TestExperiments : public QObject {
         // With nothing perturbed, the demonstration's own actions put the car on its lot (to
         // Box2D's single precision: within 0.1 mm).
         for (const TrialSummary& t : result.methods[0].trials) {
-            QVERIFY2(t.finalPositionError < 1e-4, qPrintable(QString::number(t.finalPositionError)));
+            QVERIFY2(t.finalPositionError < 1e-4,
+                     qPrintable(QString::number(t.finalPositionError)));
         }
         QVERIFY(std::abs(result.lot[0] - task.demo->states(task.demo->length() - 1, 0)) < 1e-12);
         int finished = 0;
@@ -94,9 +96,11 @@ class TestExperiments : public QObject {
         std::set<std::uint64_t> all(training.begin(), training.end());
         QCOMPARE(all.size(), size_t(50));
         for (int i = 0; i < 1000; ++i) {
-            QVERIFY(!all.count(mixSeed(7, static_cast<std::uint64_t>(i))));  // never an evaluation seed
+            QVERIFY(
+                !all.count(mixSeed(7, static_cast<std::uint64_t>(i))));  // never an evaluation seed
         }
-        QCOMPARE(trainingSeeds(7, 3), std::vector<std::uint64_t>(training.begin(), training.begin() + 3));
+        QCOMPARE(trainingSeeds(7, 3),
+                 std::vector<std::uint64_t>(training.begin(), training.begin() + 3));
     }
 
     void selectedPdGains_comeFromTheGrid() {

@@ -5,8 +5,8 @@
 #include "sim/TaskCheck.h"
 
 #include <QSet>
-#include <cstring>
 #include <QtTest>
+#include <cstring>
 
 using namespace prisca::sim;
 
