@@ -5,7 +5,7 @@
 #include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/TaskCheck.h"
+#include "sim/Task.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -160,20 +160,19 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     if (!demonstration) {
         throw std::invalid_argument(tr("no demonstration").toStdString());
     }
-    // Checked and fitted before anything changes: a demonstration that is refused leaves the
-    // session as it was (the previous demonstration with its fit).
+    // Checked and fitted before anything changes, as the CLI makes its task (sim::makeTask): a
+    // demonstration that is refused leaves the session as it was (its own with its fit).
+    sim::Task task;
     try {
-        sim::checkDemonstrationFor(*demonstration, profile_.info);
+        task = sim::makeTask(profile_, std::move(demonstration), fitOptions_);
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(tr("the demonstration does not fit the %1: %2")
                                         .arg(plant_, QString::fromStdString(e.what()))
                                         .toStdString());
     }
-    core::ActionMappingFit fit = core::fitActionMapping(
-        *demonstration, profile_.mapping, profile_.info.deviationModel(), fitOptions_);
-    demonstration_ = std::move(demonstration);
+    demonstration_ = std::move(task.demonstration);
     demonstrationSource_ = source;
-    fit_ = std::move(fit);
+    fit_ = std::move(task.fit);
     emit demonstrationChanged();
     emit fitChanged();
 }

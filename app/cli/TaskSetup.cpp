@@ -3,7 +3,6 @@
 #include "app/cli/CliSupport.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/TaskCheck.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -13,23 +12,15 @@ namespace prisca::app::cli {
 
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
               const core::ActionMappingFitOptions& options) {
-    Task task;
     core::Demonstration demonstration = readDemonstration(demonstrationPath);
-    task.plant = plant.isEmpty() ? demonstration.plant : plant;
-    if (!sim::PlantCatalog::contains(task.plant)) {
+    const QString name = plant.isEmpty() ? demonstration.plant : plant;
+    if (!sim::PlantCatalog::contains(name)) {
         throw UsageError(
             QStringLiteral("%1: unknown plant '%2' (one of: %3; or give --plant)")
-                .arg(demonstrationPath, task.plant, sim::PlantCatalog::names().join(' ')));
+                .arg(demonstrationPath, name, sim::PlantCatalog::names().join(' ')));
     }
-    const sim::PlantInfo info = sim::PlantCatalog::describe(task.plant);
-    try {
-        sim::checkDemonstrationFor(demonstration, info);  // the window's check too
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(
-            QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
-    }
-    task.timing.controlPeriod = demonstration.dt;
-    task.profile = sim::PlantProfile::forPlant(info);
+    const sim::PlantInfo info = sim::PlantCatalog::describe(name);
+    sim::PlantProfile profile = sim::PlantProfile::forPlant(info);
     if (!mask.isEmpty()) {
         QString error;
         auto parsed = core::IntuitiveMapping::parse(mask, &error);
@@ -43,21 +34,21 @@ Task loadTask(const QString& plant, const QString& demonstrationPath, const QStr
                                "entries (states)")
                     .arg(parsed->controls())
                     .arg(parsed->states())
-                    .arg(task.plant)
+                    .arg(name)
                     .arg(info.actionDimension())
                     .arg(info.stateDimension()));
         }
-        task.profile.mapping = *parsed;
+        profile.mapping = *parsed;
     }
     try {
-        task.fit = core::fitActionMapping(demonstration, task.profile.mapping,
-                                          info.deviationModel(), options);
+        // Checked and fitted as the window's session is (sim::makeTask).
+        return sim::makeTask(profile,
+                             std::make_shared<const core::Demonstration>(std::move(demonstration)),
+                             options);
     } catch (const std::invalid_argument& e) {
         throw UsageError(
             QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
     }
-    task.demonstration = std::make_shared<const core::Demonstration>(std::move(demonstration));
-    return task;
 }
 
 QString checkedPlant(const QString& name) {

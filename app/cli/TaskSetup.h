@@ -4,6 +4,7 @@
 #include "core/Demonstration.h"
 #include "sim/Plant.h"
 #include "sim/PlantProfile.h"
+#include "sim/Task.h"
 
 #include <memory>
 
@@ -11,14 +12,8 @@ namespace prisca::app::cli {
 
 class CommandLine;
 
-/// A demonstration checked against its plant, with the plant's profile and the fitted B.
-struct Task {
-    QString plant;                 ///< plant name
-    sim::PlantProfile profile;     ///< profile (mapping possibly from --mask)
-    sim::SimulationTiming timing;  ///< control period = the demonstration's dt
-    std::shared_ptr<const core::Demonstration> demonstration;  ///< S*, U*
-    core::ActionMappingFit fit;                                ///< B_v, B and diagnostics
-};
+/// The task the window's session is made the same way from (sim::makeTask).
+using Task = sim::Task;
 
 /// Reads the demonstration, checks that it belongs to the plant (names, dimensions), applies a
 /// mask text "r0c0,...;r1c0,..." if given, and fits B_v. Throws UsageError naming what is wrong.
