@@ -6,7 +6,6 @@
 #include "devices/RigLoop.h"
 #include "devices/TransmitterLink.h"
 
-#include <QFile>
 #include <QWidget>
 
 #include <cstdint>
@@ -21,7 +20,6 @@ class QPushButton;
 class QSpinBox;
 class QTableWidget;
 class QTimer;
-class QFile;
 
 namespace prisca::rigsim {
 class VirtualCar;

@@ -201,17 +201,24 @@ void PriscaController::closedLoopTerms(int k, int count) {
         const Eigen::MatrixXd& S = sensitivity_[k - first];
         double curvature = (S.array().square().colwise() * problem_.costWeights.array()).sum();
         if (effort) {
-            const int slot = k % ring;
-            actionSensitivity_.noalias() = feedbackGain_ * S;
-            for (int l = 0; l < m; ++l) {
-                actionSensitivity_.row(l).segment(l * p, p) +=
-                    featureHistory_.col(slot).segment(l * p, p).transpose();
-            }
+            // actionSensitivity_ still holds du_k/dtheta from the loop's last sample (t = k).
             curvature += (actionSensitivity_.array().square().colwise() *
                           parameters_.effortWeights.array())
                              .sum();
         }
         addCurvature(curvature);
+    }
+}
+
+void PriscaController::heldEffect(int j, int steps) {
+    // sum_{i<steps} (I + dt (A + kinematics at s*_j))^i dt B^T into effectSum_.
+    transitionAt(j);
+    effectTerm_ = stateEffect_.transpose();
+    effectSum_ = effectTerm_;
+    for (int i = 1; i < steps; ++i) {
+        effectNext_.noalias() = stepTransition_ * effectTerm_;
+        effectTerm_ = effectNext_;
+        effectSum_ += effectTerm_;
     }
 }
 
@@ -270,16 +277,8 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         featureHistory_.col(k % ring) = phi_.reshaped();
         closedLoopTerms(k, count);
     } else if (parameters_.effectHorizon > 1) {
-        // sum_{i<N} (I + dt (A + kinematics at s*_j))^i dt B^T: what holding u_k for N steps
-        // does to the error (eq. 5 before its truncation).
-        transitionAt(j);
-        effectTerm_ = stateEffect_.transpose();
-        effectSum_ = effectTerm_;
-        for (int i = 1; i < parameters_.effectHorizon; ++i) {
-            effectNext_.noalias() = stepTransition_ * effectTerm_;
-            effectTerm_ = effectNext_;
-            effectSum_ += effectTerm_;
-        }
+        // What holding u_k for N steps does to the error (eq. 5 before its truncation).
+        heldEffect(j, parameters_.effectHorizon);
         projected_.noalias() = effectSum_.transpose() * weightedError_;
     } else {
         projected_.noalias() = stateEffect_ * weightedError_;
@@ -293,14 +292,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
             // sum_l |phi_l|^2 (E_l^T W E_l), E_l what holding control l for the window's H
             // steps does to the error, as the closed-loop form's S carries it: the one-step
             // effect dt B alone would scale the step to a dead-beat gain.
-            transitionAt(j);
-            effectTerm_ = stateEffect_.transpose();
-            effectSum_ = effectTerm_;
-            for (int i = 1; i < std::max(H, 1); ++i) {
-                effectNext_.noalias() = stepTransition_ * effectTerm_;
-                effectTerm_ = effectNext_;
-                effectSum_ += effectTerm_;
-            }
+            heldEffect(j, std::max(H, 1));
             double curvature = 0.0;
             for (int l = 0; l < m; ++l) {
                 curvature +=

@@ -139,6 +139,8 @@ class PriscaController : public Controller {
   private:
     void closedLoopTerms(int k, int count);
     void addCurvature(double curvature);
+    /// What holding each control for `steps` steps from reference sample j does to the error.
+    void heldEffect(int j, int steps);
     /// stepTransition_ = I + dt (A + the error's own kinematics at demonstration sample j).
     void transitionAt(int j);
 

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 namespace prisca::sim {
 
 inline Eigen::Vector2d toEigen(const b2Vec2& v) {
@@ -23,6 +25,25 @@ inline void copyMotion(const b2Body& from, b2Body& to) {
     to.SetTransform(from.GetPosition(), from.GetAngle());
     to.SetLinearVelocity(from.GetLinearVelocity());
     to.SetAngularVelocity(from.GetAngularVelocity());
+}
+
+/// A planar vehicle's state from its body: x, y, heading psi, body-frame velocities vx (forward),
+/// vy (left) and yaw rate r (the slide-car's and the differential drive's layout).
+inline Eigen::VectorXd planarVehicleState(const b2Body& body) {
+    const double psi = body.GetAngle();
+    const Eigen::Vector2d v = toEigen(body.GetLinearVelocity());
+    const Eigen::Vector2d forward(std::cos(psi), std::sin(psi));
+    const Eigen::Vector2d left(-std::sin(psi), std::cos(psi));
+    Eigen::VectorXd s(6);
+    s << body.GetPosition().x, body.GetPosition().y, psi, v.dot(forward), v.dot(left),
+        body.GetAngularVelocity();
+    return s;
+}
+
+/// Whether a planar body is at rest: speed and yaw rate both below their thresholds.
+inline bool planarBodyAtRest(const b2Body& body, double restSpeed, double restYawRate) {
+    return toEigen(body.GetLinearVelocity()).norm() < restSpeed &&
+           std::abs(body.GetAngularVelocity()) < restYawRate;
 }
 
 }  // namespace prisca::sim

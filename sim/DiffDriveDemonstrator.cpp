@@ -14,20 +14,6 @@ namespace prisca::sim {
 
 namespace {
 
-// Keyboard driving: a held key pushes its axis towards +-1 at 2 per second; released, the axis
-// returns to 0 at 3 per second.
-double keyRamp(double current, double wanted, double dt) {
-    constexpr double kUp = 2.0, kBack = 3.0, kDeadband = 0.05;
-    const int key = wanted > kDeadband && current < wanted    ? 1
-                    : wanted < -kDeadband && current > wanted ? -1
-                                                              : 0;
-    if (key != 0) {
-        return std::clamp(current + key * kUp * dt, -1.0, 1.0);
-    }
-    const double back = kBack * dt;
-    return std::abs(current) <= back ? 0.0 : current - std::copysign(back, current);
-}
-
 struct Style {
     const char* name;
     const char* description;
@@ -146,8 +132,8 @@ core::Demonstration DiffDriveDemonstrator::record(std::uint64_t seed, const Scri
                 break;
         }
         if (script.keyboard) {
-            keyForward = keyRamp(keyForward, forward, dt);
-            keyTurn = keyRamp(keyTurn, turn, dt);
+            keyForward = keyRamp(keyForward, keyFor(forward, keyForward), dt);
+            keyTurn = keyRamp(keyTurn, keyFor(turn, keyTurn), dt);
             forward = keyForward;
             turn = keyTurn;
         }

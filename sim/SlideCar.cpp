@@ -141,19 +141,11 @@ std::unique_ptr<Plant> SlideCar::clone(bool actuatorNoise) const {
 }
 
 Eigen::VectorXd SlideCar::state() const {
-    const double psi = body_->GetAngle();
-    const Eigen::Vector2d v = toEigen(body_->GetLinearVelocity());
-    const Eigen::Vector2d forward(std::cos(psi), std::sin(psi));
-    const Eigen::Vector2d left(-std::sin(psi), std::cos(psi));
-    Eigen::VectorXd s(6);
-    s << body_->GetPosition().x, body_->GetPosition().y, psi, v.dot(forward), v.dot(left),
-        body_->GetAngularVelocity();
-    return s;
+    return planarVehicleState(*body_);
 }
 
 bool SlideCar::atRest() const {
-    return toEigen(body_->GetLinearVelocity()).norm() < parameters_.restSpeed &&
-           std::abs(body_->GetAngularVelocity()) < parameters_.restYawRate;
+    return planarBodyAtRest(*body_, parameters_.restSpeed, parameters_.restYawRate);
 }
 
 Eigen::VectorXd SlideCar::step(const Eigen::VectorXd& action) {

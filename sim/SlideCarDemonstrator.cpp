@@ -9,37 +9,6 @@
 
 namespace prisca::sim {
 
-namespace {
-
-// The window's keyboard driving (DrivingInput): a held key pushes its control towards +-1 at
-// 2 per second; released, the control returns to 0 at 3 per second.
-double keyRamp(double current, int key, double dt) {
-    constexpr double kUp = 2.0, kBack = 3.0;
-    if (key != 0) {
-        return std::clamp(current + key * kUp * dt, -1.0, 1.0);
-    }
-    const double back = kBack * dt;
-    return std::abs(current) <= back ? 0.0 : current - std::copysign(back, current);
-}
-
-// Which key an operator holds to bring a ramped control towards what they want: the one in
-// the wanted direction while short of it, none once past (it returns to neutral by itself).
-int keyFor(double wanted, double current) {
-    constexpr double kDeadband = 0.05;
-    if (std::abs(wanted) >= 1.0 - kDeadband) {
-        return wanted > 0.0 ? 1 : -1;  // full: the key is simply held down
-    }
-    if (wanted > kDeadband) {
-        return current < wanted - kDeadband ? 1 : 0;
-    }
-    if (wanted < -kDeadband) {
-        return current > wanted + kDeadband ? -1 : 0;
-    }
-    return 0;
-}
-
-}  // namespace
-
 core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,
                                                  const SlideCarParameters& parameters) {
