@@ -4,22 +4,15 @@
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
-#include "core/DemonstrationCsv.h"
 #include "core/DeviationModel.h"
-#include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
-#include "rigsim/VirtualCar.h"
-#include "sim/DemonstrationRecorder.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
-#include "sim/TrialMetrics.h"
 
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
 #include <QEvent>
-#include <QFile>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -41,11 +34,6 @@
 namespace prisca::app {
 
 namespace {
-// The virtual rig's synthetic ceiling camera runs at the control rate of the simulations.
-constexpr double kVirtualCameraFps = 40.0;
-}  // namespace
-
-namespace {
 
 QImage toImage(const cv::Mat& m) {
     if (m.type() == CV_8UC1) {
@@ -64,7 +52,6 @@ QImage toImage(const cv::Mat& m) {
 RigPanel::RigPanel(LabSession& session, QWidget* parent)
     : QWidget(parent),
       session_(session),
-      shared_(std::make_shared<Shared>()),
       view_(new CameraView(this)),
       sourceLabel_(new QLabel(this)),
       source_(new QComboBox(this)),
@@ -218,62 +205,12 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     layout->addWidget(view_, 3);
     layout->addLayout(controls, 2);
 
-    // The camera thread tracks every frame; the screen gets a thinned copy with the pose.
-    camera_.setConsumer([this, shared = shared_, tracker = std::make_shared<devices::LedTracker>()](
-                            const devices::CameraFrame& frame) {
-        std::lock_guard<std::mutex> lock(shared->mutex);
-        if (shared->running && shared->loop) {
-            // The closed loop: pose -> controller -> link, on this thread, no queue between.
-            const devices::RigStep step = shared->loop->onFrame(frame);
-            shared->pose = step.pose;
-            if (step.pose) {
-                shared->lastTrackedPose = step.pose;
-            }
-            if (shared->trialStartNs < 0) {
-                shared->trialStartNs = frame.steadyNs;
-            }
-            const double elapsed = (frame.steadyNs - shared->trialStartNs) * 1e-9;
-            if (elapsed >= shared->trialSeconds || step.fault) {
-                shared->running = false;
-                QMetaObject::invokeMethod(this, &RigPanel::finishTrial, Qt::QueuedConnection);
-            }
-            return;
-        }
-        shared->pose = tracker->track(frame.image, shared->calibration).pose;
-        if (shared->recording) {
-            if (!shared->pose) {
-                // No pose, no command: the car must not drive blind.
-                link_.setPoseLost(true);
-                shared->estimator.reset();
-                return;
-            }
-            link_.setPoseLost(false);
-            const Eigen::VectorXd state = shared->estimator.update(*shared->pose, frame.steadyNs);
-            if (shared->firstFrameNs < 0) {
-                shared->firstFrameNs = frame.steadyNs;
-            }
-            // The frame's own time: frames come at the camera's rate, and some are dropped.
-            const double t = (frame.steadyNs - shared->firstFrameNs) * 1e-9;
-            if (!shared->times.empty() && t <= shared->times.back()) {
-                return;  // a frame out of order or repeated: no new sample
-            }
-            shared->times.push_back(t);
-            shared->states.push_back(state);
-            shared->actions.push_back(shared->driveAction);
-            if (shared->stream) {
-                // The crash copy keeps the demonstration format's even steps (the nominal frame
-                // period); the finished take is resampled from the frames' own times. A failed
-                // write is retried at the next flush; the take is in memory too.
-                QString ignored;
-                shared->stream->append((shared->times.size() - 1) * shared->streamDt, state,
-                                       shared->driveAction, &ignored);
-            }
-        }
-    });
-    connect(&camera_, &devices::Camera::frameReady, this, &RigPanel::showFrame);
-    connect(&camera_, &devices::Camera::failed, this,
+    connect(&rig_, &rig::RigSession::frameReady, this, &RigPanel::showFrame);
+    connect(&rig_, &rig::RigSession::cameraFailed, this,
             [this](const QString& message) { linkInfo_->setText(message); });
-    connect(&link_, &devices::TransmitterLink::statusChanged, this, &RigPanel::showLinkStatus);
+    connect(&rig_, &rig::RigSession::linkStatusChanged, this, &RigPanel::showLinkStatus);
+    connect(&rig_, &rig::RigSession::trialFinished, this, &RigPanel::showTrialResult);
+    connect(&rig_, &rig::RigSession::recordingFinished, this, &RigPanel::useRecording);
     connect(startCamera_, &QPushButton::clicked, this, &RigPanel::startCamera);
     connect(stopCamera_, &QPushButton::clicked, this, &RigPanel::stopCamera);
     connect(connect_, &QPushButton::clicked, this, &RigPanel::connectLink);
@@ -334,33 +271,21 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(channelTable_, &QTableWidget::itemChanged, this, &RigPanel::applyChannels);
     connect(stopTrial_, &QPushButton::clicked, this, &RigPanel::stopTrial);
 
-    // Until the operator calibrates, the synthetic camera's own calibration.
-    calibration_ = devices::syntheticCeilingCamera();
-    shared_->calibration = calibration_;
-    view_->setCalibration(calibration_);
+    rig_.setChannels(channels_);
+    view_->setCalibration(rig_.calibration());
     refreshPorts();
     retranslateUi();
     showChannels();
     showTask();
-    showLinkStatus(linkStatus_);
+    showLinkStatus(rig_.linkStatus());
 }
 
 RigPanel::~RigPanel() {
     // The session may already be gone (the window deletes it first): a recording in progress is
-    // kept on disk, not handed to the session.
+    // kept on disk by the rig session, not handed to the session.
     driveTimer_->stop();
     driving_->stop();
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->running = false;
-        shared_->recording = false;
-        if (shared_->stream) {
-            QString ignored;
-            shared_->stream->close(&ignored);
-        }
-    }
-    camera_.stop();
-    disconnectLink();
+    disconnect(&rig_, nullptr, this, nullptr);
 }
 
 bool RigPanel::runTrial() {
@@ -368,15 +293,17 @@ bool RigPanel::runTrial() {
         return false;
     }
     QString missing;
-    if (!camera_.isRunning()) {
+    const sim::PlantProfile& profile = session_.profile();
+    if (!rig_.cameraRunning()) {
         missing = tr("Start the camera first.");
-    } else if (!linkStatus_.connected) {
+    } else if (!rig_.linkStatus().connected) {
         missing = tr("Connect the transmitter link first.");
-    } else if (!session_.profile().info.pose) {
+    } else if (!profile.info.pose) {
         missing = tr("The rig drives a car: choose the slide-car as the target.");
     } else if (sim::MethodCatalog::get(session_.method()).simulationOnly) {
-        missing = tr("The oracle plans on copies of a simulated plant; a real car has none. "
-                     "Run it in simulation, or choose another method.");
+        missing =
+            tr("The oracle plans on copies of a simulated plant; a real car has none. "
+               "Run it in simulation, or choose another method.");
     } else if (sim::trainsOffline(session_.method())) {
         missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
                       .arg(session_.method());
@@ -385,29 +312,22 @@ bool RigPanel::runTrial() {
         trialInfo_->setText(missing);
         return false;
     }
-    std::lock_guard<std::mutex> lock(shared_->mutex);
-    // One loop per method: learners keep what they learnt from trial to trial (warm start).
-    if (!shared_->loop || loopMethod_ != session_.method()) {
-        auto controller = sim::MethodCatalog::create(
-            session_.method(), session_.profile(), session_.demonstration(), session_.fit().b);
-        shared_->loop = std::make_unique<devices::RigLoop>(calibration_, devices::TrackerSettings{},
-                                                           std::move(controller), channels_, link_);
-        shared_->loop->setLostTrackDistance(session_.profile().lostTrackDistance);
-        loopMethod_ = session_.method();
-        trials_ = 0;
+    rig::TrialRequest request;
+    request.method = session_.method();
+    request.createController = [this] {
+        return sim::MethodCatalog::create(session_.method(), session_.profile(),
+                                          session_.demonstration(), session_.fit().b);
+    };
+    request.plant = profile.info;
+    request.demonstration = session_.demonstration();
+    request.settleTime = profile.settleTime;
+    request.lostTrackDistance = profile.lostTrackDistance;
+    QString error;
+    if (!rig_.startTrial(request, &error)) {
+        trialInfo_->setText(error);
+        return false;
     }
-    shared_->loop->startTrial(sim::resetForTrial(trials_));
-    if (car_) {
-        car_->requestReset(static_cast<std::uint64_t>(trials_ + 1));  // the car back at the start
-    }
-    const auto demo = session_.demonstration();
-    const double seconds = demo->length() * demo->dt + session_.profile().settleTime;
-    shared_->trialSeconds = seconds;
-    shared_->trialStartNs = -1;
-    shared_->lastTrackedPose.reset();
-    shared_->running = true;
-    ++trials_;
-    trialInfo_->setText(tr("Trial %1 running...").arg(trials_));
+    trialInfo_->setText(tr("Trial %1 running...").arg(rig_.trialNumber()));
     runTrial_->setEnabled(false);
     return true;
 }
@@ -420,43 +340,16 @@ bool RigPanel::startDriving() {
     if (drivingActive_ || isRunning()) {
         return false;
     }
-    if (!camera_.isRunning() || !linkStatus_.connected) {
-        trialInfo_->setText(!camera_.isRunning() ? tr("Start the camera first.")
-                                                 : tr("Connect the transmitter link first."));
-        return false;
-    }
     const sim::PlantInfo& info = session_.profile().info;
     const QString path =
         RecordPanel::recordingsFolder() +
         QStringLiteral("/rig-%1.csv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
     QDir().mkpath(RecordPanel::recordingsFolder());
-    // The header of the demonstration format, on disk at once; rows follow as they are
-    // recorded. dt in the streamed header is the camera's nominal frame period; the finished
-    // recording is resampled onto the measured one.
-    core::Demonstration header =
-        sim::DemonstrationRecorder(info, nominalFramePeriod_).demonstration();
-    header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-    auto stream = std::make_unique<core::DemonstrationStream>();
     QString error;
-    if (!stream->open(path, header, &error)) {
-        trialInfo_->setText(tr("Cannot record to %1").arg(error));
+    if (!rig_.startRecording(info, path, &error)) {
+        trialInfo_->setText(error);
         return false;
-    }
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->states.clear();
-        shared_->actions.clear();
-        shared_->times.clear();
-        shared_->firstFrameNs = -1;
-        shared_->estimator.reset();
-        shared_->driveAction = Eigen::VectorXd::Zero(info.actionDimension());
-        shared_->stream = std::move(stream);
-        shared_->streamDt = nominalFramePeriod_;
-        shared_->recording = true;
-    }
-    if (car_) {
-        car_->requestReset(1);
     }
     driving_->start(info.actionDimension());
     drivingActive_ = true;
@@ -469,12 +362,7 @@ bool RigPanel::startDriving() {
 }
 
 void RigPanel::driveTick() {
-    const Eigen::VectorXd& input = driving_->advance(driveTimer_->interval() / 1000.0);
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->driveAction = input;
-    }
-    link_.setCommand(channels_.command(input));
+    rig_.setDriveCommand(driving_->advance(driveTimer_->interval() / 1000.0));
 }
 
 void RigPanel::stopDriving() {
@@ -485,102 +373,56 @@ void RigPanel::stopDriving() {
     driving_->stop();
     drivingActive_ = false;
     drive_->setChecked(false);
-    link_.setCommand(channels_.failsafe());  // neutral now; stale (failsafe) after that
-    std::vector<Eigen::VectorXd> states, actions;
-    std::vector<double> times;
-    QString path;
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->recording = false;
-        if (shared_->stream) {
-            path = shared_->stream->fileName();
-            QString ignored;  // the file is rewritten below from the samples in memory
-            shared_->stream->close(&ignored);
-            shared_->stream.reset();
-        }
-        states.swap(shared_->states);
-        actions.swap(shared_->actions);
-        times.swap(shared_->times);
-    }
-    if (states.size() < 2) {
-        QFile::remove(path);
-        trialInfo_->setText(tr("Nothing recorded (no pose seen)."));
-        return;
-    }
-    // The frames' own times onto one uniform step (the camera's median frame interval).
-    core::Demonstration demo = sim::DemonstrationRecorder::fromTimedSamples(
-        session_.profile().info, times, states, actions);
-    demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-    // The streamed file (frame times as they came, kept for a crash) becomes the uniform one.
-    core::FileError writeError;
-    if (!core::writeDemonstrationCsv(demo, path, &writeError)) {
-        trialInfo_->setText(tr("The rig recording could not be saved: %1").arg(writeError.toString()));
-        return;
-    }
-    try {
-        session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(demo)), path);
-    } catch (const std::exception& e) {
-        trialInfo_->setText(tr("The rig recording could not be used: %1. It is kept in %2.")
-                                .arg(QString::fromStdString(e.what()),
-                                     QDir::toNativeSeparators(path)));
-        return;
-    }
-    trialInfo_->setText(tr("Recorded %1 samples on the rig, kept in %2; it is now the "
-                           "demonstration.")
-                            .arg(states.size())
-                            .arg(QDir::toNativeSeparators(path)));
+    rig_.stopRecording();  // useRecording() follows once the take is written
+    trialInfo_->setText(tr("Saving the recording..."));
 }
 
-void RigPanel::stopTrial() {
-    bool was = false;
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        was = shared_->running;
-        shared_->running = false;
+void RigPanel::useRecording(const rig::RigRecording& recording) {
+    QString message;
+    if (!recording.demonstration) {
+        message = recording.error;
+    } else {
+        const int samples = recording.demonstration->length();
+        try {
+            session_.setDemonstration(recording.demonstration, recording.path);
+            message = tr("Recorded %1 samples on the rig, kept in %2; it is now the "
+                         "demonstration.")
+                          .arg(samples)
+                          .arg(QDir::toNativeSeparators(recording.path));
+        } catch (const std::exception& e) {
+            message = tr("The rig recording could not be used: %1. It is kept in %2.")
+                          .arg(QString::fromStdString(e.what()),
+                               QDir::toNativeSeparators(recording.path));
+        }
     }
-    if (was) {
-        finishTrial();
-    }
+    trialInfo_->setText(message);
+    emit demonstrationRecorded(message);
 }
 
 void RigPanel::emergencyStop() {
-    link_.emergencyStop();  // failsafe from the link's next frame, latched
     driving_->neutral();
     stopDriving();
-    stopTrial();
+    rig_.emergencyStop();
     trialInfo_->setText(tr("E-STOP: the transmitter sends failsafe until E-STOP is reset."));
 }
 
 void RigPanel::resetEmergencyStop() {
-    link_.resetEmergencyStop();
+    rig_.resetEmergencyStop();
 }
 
-bool RigPanel::isRunning() const {
-    std::lock_guard<std::mutex> lock(shared_->mutex);
-    return shared_->running;
-}
-
-QString RigPanel::lastResult() const {
-    return lastResult_;
-}
-
-void RigPanel::finishTrial() {
-    std::optional<devices::PlanarPose> last;
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        last = shared_->lastTrackedPose;
-    }
-    const auto demo = session_.demonstration();
-    const auto& pose = session_.profile().info.pose;
-    if (last && demo && pose) {
-        const sim::ParkingError parked = sim::parkingError(session_.profile().info, *demo,
-                                                           last->x, last->y, last->heading);
+void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
+    if (result.parked) {
         lastResult_ = tr("Trial %1: parked %2 cm from the lot, heading off by %3°")
-                          .arg(trials_)
-                          .arg(parked.position * 100.0, 0, 'f', 1)
-                          .arg(parked.heading * 180.0 / core::kPi, 0, 'f', 1);
+                          .arg(result.trial)
+                          .arg(result.parked->position * 100.0, 0, 'f', 1)
+                          .arg(result.parked->heading * 180.0 / core::kPi, 0, 'f', 1);
     } else {
-        lastResult_ = tr("Trial %1 ended without a pose").arg(trials_);
+        lastResult_ = tr("Trial %1 ended without a pose").arg(result.trial);
+    }
+    if (result.stopped) {
+        lastResult_ += tr(" (stopped after %1 s)").arg(result.seconds, 0, 'f', 1);
+    } else if (result.fault) {
+        lastResult_ += tr(" (failsafe after %1 s)").arg(result.seconds, 0, 'f', 1);
     }
     trialInfo_->setText(lastResult_);
     runTrial_->setEnabled(true);
@@ -590,8 +432,8 @@ void RigPanel::finishTrial() {
 void RigPanel::refreshPorts() {
     const QString current = port_->currentText();
     port_->clear();
-    if (car_) {
-        port_->addItem(car_->portPath());
+    if (!rig_.virtualPort().isEmpty()) {
+        port_->addItem(rig_.virtualPort());
     }
     for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
         port_->addItem(info.systemLocation());
@@ -599,60 +441,50 @@ void RigPanel::refreshPorts() {
     port_->setEditText(current.isEmpty() ? QSettings().value("rig/port").toString() : current);
 }
 
-QString RigPanel::virtualPort() const {
-    return car_ ? car_->portPath() : QString();
-}
-
 void RigPanel::startCamera() {
-    if (camera_.isRunning()) {
+    if (rig_.cameraRunning()) {
         return;
     }
     const auto source = static_cast<Source>(source_->currentData().toInt());
-    QSettings().setValue("rig/source", source_->currentIndex());
-    QSettings().setValue("rig/path", sourcePath_->text());
-    std::unique_ptr<devices::CameraSource> camera;
+    QSettings settings;
+    settings.setValue("rig/source", source_->currentIndex());
+    settings.setValue("rig/path", sourcePath_->text());
+    rig::CameraRequest request;
+    request.source = source;
     if (source == Source::Virtual) {
-        if (!car_) {
-            auto car = std::make_shared<rigsim::VirtualCar>(devices::RcProtocol::Crsf,
-                                                    devices::ChannelMap::car(), 1, 1.0);
-            QString error;
-            if (!car->open(&error)) {
-                QMessageBox::warning(this, tr("Camera"), error);
-                return;
-            }
-            car_ = car;
-            refreshPorts();
-            port_->setEditText(car_->portPath());
-        }
-        car_->reset(1);
-        camera = devices::makeSyntheticSource(
-            [car = car_](double t) { return std::optional<devices::PlanarPose>(car->poseAt(t)); },
-            devices::syntheticCeilingCamera(), {}, kVirtualCameraFps);
-        nominalFramePeriod_ = 1.0 / kVirtualCameraFps;
+        // One synthetic frame per control step of the demonstration (or of the simulations).
+        const auto demo = session_.demonstration();
+        const double dt = demo && demo->dt > 0.0 ? demo->dt : sim::SimulationTiming{}.controlPeriod;
+        request.virtualFps = 1.0 / dt;
     } else if (source == Source::Device) {
-        devices::V4l2Settings settings;
-        settings.device = sourcePath_->text();
-        settings.width = width_->value();
-        settings.height = height_->value();
-        settings.fps = fps_->value();
-        nominalFramePeriod_ = 1.0 / settings.fps;
-        settings.exposure = exposure_->value();
-        settings.gain = gain_->value();
-        QSettings s;
-        s.setValue("rig/width", settings.width);
-        s.setValue("rig/height", settings.height);
-        s.setValue("rig/fps", fps_->value());
-        s.setValue("rig/exposure", exposure_->value());
-        s.setValue("rig/gain", gain_->value());
-        camera = devices::makeV4l2Source(settings);
+        request.device.device = sourcePath_->text();
+        request.device.width = width_->value();
+        request.device.height = height_->value();
+        request.device.fps = fps_->value();
+        request.device.exposure = exposure_->value();
+        request.device.gain = gain_->value();
+        settings.setValue("rig/width", width_->value());
+        settings.setValue("rig/height", height_->value());
+        settings.setValue("rig/fps", fps_->value());
+        settings.setValue("rig/exposure", exposure_->value());
+        settings.setValue("rig/gain", gain_->value());
     } else {
-        camera = devices::makeVideoFileSource(sourcePath_->text(), true);
+        request.videoPath = sourcePath_->text();
     }
-    camera_.start(std::shared_ptr<devices::CameraSource>(std::move(camera)));
+    const bool hadVirtualPort = !rig_.virtualPort().isEmpty();
+    QString error;
+    if (!rig_.startCamera(request, &error)) {
+        QMessageBox::warning(this, tr("Camera"), error);
+        return;
+    }
+    if (!hadVirtualPort && !rig_.virtualPort().isEmpty()) {
+        refreshPorts();
+        port_->setEditText(rig_.virtualPort());
+    }
 }
 
 void RigPanel::stopCamera() {
-    camera_.stop();
+    rig_.stopCamera();
 }
 
 void RigPanel::connectLink() {
@@ -665,38 +497,33 @@ void RigPanel::connectLink() {
     settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
     settings.failsafe = channels_.failsafe();
     settings.baud = baud_->value();
-    QSettings().setValue("rig/baud", baud_->value());
     settings.sendOnCommand = true;  // a camera frame's command goes out at once
-    QSettings().setValue("rig/port", settings.port);
-    QSettings().setValue("rig/protocol", protocol_->currentIndex());
-    link_.start(settings);
+    QSettings saved;
+    saved.setValue("rig/baud", baud_->value());
+    saved.setValue("rig/port", settings.port);
+    saved.setValue("rig/protocol", protocol_->currentIndex());
+    rig_.connectLink(settings);
 }
 
 void RigPanel::disconnectLink() {
-    link_.stop();
+    rig_.disconnectLink();
 }
 
 bool RigPanel::loadCalibration(const QString& path) {
     QString error;
-    const auto loaded = devices::FloorCalibration::load(path, &error);
-    if (!loaded) {
+    if (!rig_.loadCalibration(path, &error)) {
         QMessageBox::warning(this, tr("Floor calibration"),
                              tr("The calibration could not be read.\n\n%1").arg(error));
         return false;
     }
-    calibration_ = *loaded;
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->calibration = calibration_;
-    }
-    view_->setCalibration(calibration_);
+    view_->setCalibration(rig_.calibration());
     retranslateUi();
     return true;
 }
 
 bool RigPanel::saveCalibration(const QString& path) {
     QString error;
-    if (!calibration_.save(path, &error)) {
+    if (!rig_.saveCalibration(path, &error)) {
         QMessageBox::warning(this, tr("Floor calibration"), error);
         return false;
     }
@@ -716,26 +543,17 @@ void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
         calibrationInfo_->setText(error);
         return;
     }
-    calibration_ = *fit;
-    {
-        std::lock_guard<std::mutex> lock(shared_->mutex);
-        shared_->calibration = calibration_;
-    }
-    view_->setCalibration(calibration_);
+    rig_.setCalibration(*fit);
+    view_->setCalibration(rig_.calibration());
     retranslateUi();
 }
 
-std::optional<devices::PlanarPose> RigPanel::lastPose() const {
-    std::lock_guard<std::mutex> lock(shared_->mutex);
-    return shared_->pose;
-}
-
-void RigPanel::showFrame(const devices::CameraFrame& frame) {
-    view_->setFrame(toImage(frame.image), lastPose());
+void RigPanel::showFrame(const devices::CameraFrame& frame,
+                         const std::optional<devices::PlanarPose>& pose) {
+    view_->setFrame(toImage(frame.image), pose);
 }
 
 void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
-    linkStatus_ = status;
     QString text = status.connected ? tr("Link: connected, %1 frames/s, %2 sent")
                                           .arg(status.measuredRateHz, 0, 'f', 0)
                                           .arg(status.framesSent)
@@ -826,11 +644,7 @@ void RigPanel::applyChannels() {
                      .arg(s.reversed ? 1 : 0);
     }
     QSettings().setValue("rig/channels", saved);
-    // A new map takes effect on the next trial (the loop is rebuilt with it).
-    std::lock_guard<std::mutex> lock(shared_->mutex);
-    if (!shared_->running) {
-        shared_->loop.reset();
-    }
+    rig_.setChannels(channels_);  // takes effect on the next trial
 }
 
 void RigPanel::changeEvent(QEvent* event) {
@@ -866,8 +680,8 @@ void RigPanel::retranslateUi() {
     startCamera_->setText(tr("Start camera"));
     stopCamera_->setText(tr("Stop camera"));
     calibrationInfo_->setText(tr("Floor calibration: %1 points, reprojection error %2 cm")
-                                  .arg(calibration_.points.size())
-                                  .arg(calibration_.rmsMetres * 100.0, 0, 'f', 2));
+                                  .arg(rig_.calibration().points.size())
+                                  .arg(rig_.calibration().rmsMetres * 100.0, 0, 'f', 2));
     loadCalibration_->setText(tr("Open..."));
     saveCalibration_->setText(tr("Save..."));
     calibrate_->setText(tr("Calibrate"));

@@ -1,16 +1,12 @@
 #pragma once
 
-#include "core/DemonstrationStream.h"
-#include "devices/CameraWorker.h"
+#include "devices/ChannelMap.h"
 #include "devices/FloorCalibration.h"
-#include "devices/RigLoop.h"
 #include "devices/TransmitterLink.h"
+#include "rig/RigSession.h"
 
 #include <QWidget>
 
-#include <cstdint>
-#include <memory>
-#include <mutex>
 #include <optional>
 
 class QComboBox;
@@ -21,22 +17,19 @@ class QSpinBox;
 class QTableWidget;
 class QTimer;
 
-namespace prisca::rigsim {
-class VirtualCar;
-}
-
 namespace prisca::app {
 
 class CameraView;
 class LabSession;
 class DrivingInput;
 
-/// The real rig (or the virtual one): the camera (a V4L2 device, a video file, or the virtual
-/// rig's synthetic camera over a simulated car driven through the link) with the tracked pose,
-/// the lot and the desired path drawn over the live image; the floor calibration (load, save,
-/// or click four or more floor points of known position); the transmitter link (port chooser
-/// listing real ports plus a typed path, protocol, connect, status with rate and errors).
-/// The camera and the link each run on their own thread.
+/// The real rig (or the virtual one), shown and commanded: the camera (a V4L2 device, a video
+/// file, or the virtual rig's synthetic camera over a simulated car driven through the link)
+/// with the tracked pose, the lot and the desired path drawn over the live image; the floor
+/// calibration (load, save, or click four or more floor points of known position); the
+/// transmitter link (port chooser listing real ports plus a typed path, protocol, connect,
+/// status with rate and errors); driving to record, trials. The rig itself (threads, the closed
+/// loop, recording to disk, scoring) is the RigSession this panel owns.
 class RigPanel : public QWidget {
     Q_OBJECT
   public:
@@ -44,7 +37,7 @@ class RigPanel : public QWidget {
     ~RigPanel() override;
 
     /// Camera sources offered.
-    enum class Source { Virtual, Device, Video };
+    using Source = rig::CameraRequest::Source;
     void startCamera();
     void stopCamera();
     void connectLink();
@@ -55,32 +48,33 @@ class RigPanel : public QWidget {
     /// Adds a calibration point (image px, floor m); fits once there are four or more.
     void addCalibrationPoint(const QPointF& image, const QPointF& floor);
 
-    const devices::FloorCalibration& calibration() const { return calibration_; }
-    std::optional<devices::PlanarPose> lastPose() const;
-    long long framesSeen() const { return camera_.framesDelivered(); }
-    const devices::LinkStatus& linkStatus() const { return linkStatus_; }
+    const devices::FloorCalibration& calibration() const { return rig_.calibration(); }
+    std::optional<devices::PlanarPose> lastPose() const { return rig_.lastPose(); }
+    long long framesSeen() const { return rig_.framesSeen(); }
+    const devices::LinkStatus& linkStatus() const { return rig_.linkStatus(); }
     /// The channel mapping as edited (throttle, steering); invalid edits are named and refused.
     const devices::ChannelMap& channels() const { return channels_; }
     /// The virtual car's port (empty unless the virtual rig runs).
-    QString virtualPort() const;
+    QString virtualPort() const { return rig_.virtualPort(); }
 
     /// One trial of the session's method on the rig: camera pose -> controller -> link, for the
     /// demonstration's length plus the settling time. Needs the camera running and the link
     /// connected (a message says which is missing). Learners keep learning from trial to trial.
     bool runTrial();
     /// Ends the trial; the link falls to failsafe once commands stop.
-    void stopTrial();
+    void stopTrial() { rig_.stopTrial(); }
     /// E-STOP on the rig: the trial ends and the link sends failsafe, latched until
     /// resetEmergencyStop().
     void emergencyStop();
     void resetEmergencyStop();
-    bool isRunning() const;
+    bool isRunning() const { return rig_.trialRunning(); }
     /// The result line of the last trial ("parked ... cm from the lot").
-    QString lastResult() const;
+    QString lastResult() const { return lastResult_; }
 
     /// Drive the car through the link with the keyboard or a gamepad and record the camera's
-    /// states and the commands as a demonstration (streamed to disk as it goes); stopping makes
-    /// it the session's demonstration. Needs the camera running and the link connected.
+    /// states and the commands as a demonstration (streamed to disk as it goes); once stopped
+    /// and written, it becomes the session's demonstration (demonstrationRecorded()). Needs the
+    /// camera running and the link connected.
     bool startDriving();
     void stopDriving();
     bool isDriving() const { return driving_ != nullptr && drivingActive_; }
@@ -88,6 +82,9 @@ class RigPanel : public QWidget {
 
   signals:
     void trialFinished(const QString& result);
+    /// A take recorded by driving became the session's demonstration (or could not: the
+    /// message says why).
+    void demonstrationRecorded(const QString& message);
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -95,44 +92,19 @@ class RigPanel : public QWidget {
   private:
     void retranslateUi();
     void refreshPorts();
-    void showFrame(const devices::CameraFrame& frame);
+    void showFrame(const devices::CameraFrame& frame,
+                   const std::optional<devices::PlanarPose>& pose);
     void showLinkStatus(const devices::LinkStatus& status);
     void showTask();
-    void finishTrial();
+    void showTrialResult(const rig::RigTrialResult& result);
+    void useRecording(const rig::RigRecording& recording);
     void driveTick();
     void showChannels();
     void applyChannels();
 
     LabSession& session_;
-    devices::Camera camera_;
-    devices::TransmitterLink link_;
-    std::shared_ptr<rigsim::VirtualCar> car_;
-    devices::FloorCalibration calibration_;
+    rig::RigSession rig_;
     std::vector<devices::CalibrationPoint> clicked_;
-    devices::LinkStatus linkStatus_;
-    /// Shared with the camera thread: the calibration it tracks with and the pose it found.
-    struct Shared {
-        std::mutex mutex;
-        devices::FloorCalibration calibration;
-        std::optional<devices::PlanarPose> pose;
-        std::unique_ptr<devices::RigLoop> loop;  ///< the closed loop while a trial runs
-        bool running = false;
-        // A trial lasts this long by the camera's own frame clock (whatever its frame rate).
-        double trialSeconds = 0.0;
-        std::int64_t trialStartNs = -1;  ///< the trial's first frame; -1 before it
-        std::optional<devices::PlanarPose> lastTrackedPose;  ///< the last pose seen in the trial
-        // Recording by driving: the command in force, the rows so far, the stream on disk.
-        bool recording = false;
-        Eigen::VectorXd driveAction;
-        devices::PoseStateEstimator estimator;
-        std::vector<Eigen::VectorXd> states, actions;
-        std::vector<double> times;       ///< each row's frame time since the first [s]
-        std::int64_t firstFrameNs = -1;  ///< the recording's first frame with a pose
-        std::unique_ptr<core::DemonstrationStream> stream;
-        double streamDt = 0.025;  ///< the crash copy's step (the camera's nominal period) [s]
-    };
-    std::shared_ptr<Shared> shared_;
-    double nominalFramePeriod_ = 1.0 / 40.0;  ///< the camera's asked-for frame period [s]
 
     CameraView* view_;
     QLabel* sourceLabel_;
@@ -170,8 +142,6 @@ class RigPanel : public QWidget {
     QPushButton* runTrial_;
     QPushButton* stopTrial_;
     QLabel* trialInfo_;
-    int trials_ = 0;
-    QString loopMethod_;  ///< the method the kept loop was built for
     QString lastResult_;
 };
 

@@ -45,6 +45,7 @@ void Camera::run(std::shared_ptr<CameraSource> source, double displayHz) {
         emit finished();
         return;
     }
+    fps_.store(source->framesPerSecond());
     const std::int64_t displayPeriodNs =
         displayHz > 0 ? static_cast<std::int64_t>(1e9 / displayHz) : 0;
     std::int64_t lastDisplayNs = 0;

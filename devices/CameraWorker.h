@@ -31,6 +31,9 @@ class Camera : public QObject {
     void stop();
     bool isRunning() const { return running_.load(); }
     long long framesDelivered() const { return frames_.load(); }
+    /// The open source's frame rate [1/s] (the device's or file's own, else the one asked
+    /// for); 0 until a source is open.
+    double framesPerSecond() const { return fps_.load(); }
 
   signals:
     void frameReady(const prisca::devices::CameraFrame& frame);
@@ -46,6 +49,7 @@ class Camera : public QObject {
     std::atomic<bool> stopRequested_{false};
     std::atomic<bool> running_{false};
     std::atomic<long long> frames_{0};
+    std::atomic<double> fps_{0.0};
 };
 
 }  // namespace prisca::devices

@@ -32,8 +32,8 @@ class VirtualCar {
     /// Steps the car to time t [s] (control periods of 25 ms) with the newest decoded command,
     /// and returns its true pose.
     devices::PlanarPose poseAt(double t);
-    /// Frames decoded from the link so far.
-    long long framesDecoded() const { return decoded_; }
+    /// Frames decoded from the link so far. Any thread.
+    long long framesDecoded() const { return decoded_.load(); }
     /// Puts the car back at its start (a new trial), with a new seed. Camera thread only.
     void reset(std::uint64_t seed);
     /// Any thread: the car goes back to its start at the next poseAt() (a new trial on the
@@ -56,7 +56,7 @@ class VirtualCar {
     double time_ = 0.0;
     std::atomic<bool> resetRequested_{false};
     std::atomic<std::uint64_t> resetSeed_{1};
-    long long decoded_ = 0;
+    std::atomic<long long> decoded_{0};
     int master_ = -1;
     int slave_ = -1;
     QString path_;

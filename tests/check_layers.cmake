@@ -1,10 +1,10 @@
 cmake_minimum_required(VERSION 3.24)
 # Fails when a layer's sources include a layer above or beside it: core includes only core/,
 # sim only core/ and sim/, devices only core/ and devices/, rigsim (the rig with no hardware)
-# those and itself (app/ may include them all).
+# those and itself, rig (the rig session) all of those (app/ may include them all).
 # Run by CTest as: cmake -DSOURCE_DIR=... -P check_layers.cmake
-set(rules "core:sim/,devices/,rigsim/,app/" "sim:devices/,rigsim/,app/" "devices:sim/,rigsim/,app/"
-          "rigsim:app/")
+set(rules "core:sim/,devices/,rigsim/,rig/,app/" "sim:devices/,rigsim/,rig/,app/"
+          "devices:sim/,rigsim/,rig/,app/" "rigsim:rig/,app/" "rig:app/")
 set(checked 0)
 foreach(rule IN LISTS rules)
     string(REPLACE ":" ";" parts "${rule}")
@@ -24,4 +24,4 @@ foreach(rule IN LISTS rules)
         endforeach()
     endforeach()
 endforeach()
-message(STATUS "${checked} sources of core, sim, devices and rigsim include only their own layers and below")
+message(STATUS "${checked} sources of core, sim, devices, rigsim and rig include only their own layers and below")

@@ -546,103 +546,103 @@
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="168"/>
+        <location filename="../app/LabSession.cpp" line="169"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="183"/>
+        <location filename="../app/LabSession.cpp" line="182"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="297"/>
-        <location filename="../app/LabSession.cpp" line="305"/>
+        <location filename="../app/LabSession.cpp" line="296"/>
+        <location filename="../app/LabSession.cpp" line="304"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="311"/>
+        <location filename="../app/LabSession.cpp" line="310"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="317"/>
+        <location filename="../app/LabSession.cpp" line="316"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="320"/>
+        <location filename="../app/LabSession.cpp" line="319"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="325"/>
+        <location filename="../app/LabSession.cpp" line="324"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="332"/>
+        <location filename="../app/LabSession.cpp" line="331"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="336"/>
+        <location filename="../app/LabSession.cpp" line="335"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="346"/>
+        <location filename="../app/LabSession.cpp" line="345"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="383"/>
+        <location filename="../app/LabSession.cpp" line="382"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="389"/>
+        <location filename="../app/LabSession.cpp" line="388"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="400"/>
+        <location filename="../app/LabSession.cpp" line="399"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="427"/>
+        <location filename="../app/LabSession.cpp" line="426"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="441"/>
+        <location filename="../app/LabSession.cpp" line="440"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="467"/>
+        <location filename="../app/LabSession.cpp" line="466"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="471"/>
+        <location filename="../app/LabSession.cpp" line="470"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="478"/>
+        <location filename="../app/LabSession.cpp" line="477"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="483"/>
+        <location filename="../app/LabSession.cpp" line="482"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="499"/>
+        <location filename="../app/LabSession.cpp" line="498"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1191,132 +1191,130 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="276"/>
+        <location filename="../app/RigPanel.cpp" line="220"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="277"/>
-        <location filename="../app/RigPanel.cpp" line="284"/>
+        <location filename="../app/RigPanel.cpp" line="221"/>
+        <location filename="../app/RigPanel.cpp" line="228"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="283"/>
+        <location filename="../app/RigPanel.cpp" line="227"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="298"/>
-        <location filename="../app/RigPanel.cpp" line="309"/>
+        <location filename="../app/RigPanel.cpp" line="242"/>
+        <location filename="../app/RigPanel.cpp" line="253"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="299"/>
+        <location filename="../app/RigPanel.cpp" line="243"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="310"/>
+        <location filename="../app/RigPanel.cpp" line="254"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="365"/>
-        <location filename="../app/RigPanel.cpp" line="417"/>
+        <location filename="../app/RigPanel.cpp" line="298"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367"/>
-        <location filename="../app/RigPanel.cpp" line="418"/>
+        <location filename="../app/RigPanel.cpp" line="300"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="369"/>
+        <location filename="../app/RigPanel.cpp" line="302"/>
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="371"/>
+        <location filename="../app/RigPanel.cpp" line="305"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374"/>
+        <location filename="../app/RigPanel.cpp" line="308"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="403"/>
+        <location filename="../app/RigPanel.cpp" line="330"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="436"/>
-        <source>Cannot record to %1</source>
-        <translation>無法錄製到 %1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="457"/>
+        <location filename="../app/RigPanel.cpp" line="358"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="499"/>
-        <source>Nothing recorded (no pose seen).</source>
-        <translation>沒有錄得任何內容（未見位姿）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="509"/>
-        <source>The rig recording could not be saved: %1</source>
-        <translation>實驗台錄製無法儲存：%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="515"/>
+        <location filename="../app/RigPanel.cpp" line="393"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="520"/>
+        <location filename="../app/RigPanel.cpp" line="388"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="543"/>
+        <location filename="../app/RigPanel.cpp" line="377"/>
+        <source>Saving the recording...</source>
+        <translation>正在儲存錄製內容...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="406"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="573"/>
+        <location filename="../app/RigPanel.cpp" line="415"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="578"/>
+        <location filename="../app/RigPanel.cpp" line="420"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="423"/>
+        <source> (stopped after %1 s)</source>
+        <translation>（%1 秒後停止）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="425"/>
+        <source> (failsafe after %1 s)</source>
+        <translation>（%1 秒後進入失效保護）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="477"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="657"/>
+        <location filename="../app/RigPanel.cpp" line="494"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="678"/>
-        <location filename="../app/RigPanel.cpp" line="695"/>
+        <location filename="../app/RigPanel.cpp" line="515"/>
+        <location filename="../app/RigPanel.cpp" line="527"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="679"/>
+        <location filename="../app/RigPanel.cpp" line="516"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1325,232 +1323,232 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="705"/>
+        <location filename="../app/RigPanel.cpp" line="537"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="734"/>
+        <location filename="../app/RigPanel.cpp" line="557"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="737"/>
+        <location filename="../app/RigPanel.cpp" line="560"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="739"/>
+        <location filename="../app/RigPanel.cpp" line="562"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="795"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="658"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="840"/>
+        <location filename="../app/RigPanel.cpp" line="659"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="841"/>
+        <location filename="../app/RigPanel.cpp" line="660"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="842"/>
+        <location filename="../app/RigPanel.cpp" line="661"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="848"/>
+        <location filename="../app/RigPanel.cpp" line="667"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="849"/>
+        <location filename="../app/RigPanel.cpp" line="668"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="850"/>
+        <location filename="../app/RigPanel.cpp" line="669"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="851"/>
+        <location filename="../app/RigPanel.cpp" line="670"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="852"/>
+        <location filename="../app/RigPanel.cpp" line="671"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="672"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="674"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="857"/>
+        <location filename="../app/RigPanel.cpp" line="676"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="858"/>
+        <location filename="../app/RigPanel.cpp" line="677"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="859"/>
+        <location filename="../app/RigPanel.cpp" line="678"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="860"/>
+        <location filename="../app/RigPanel.cpp" line="679"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="861"/>
+        <location filename="../app/RigPanel.cpp" line="680"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="862"/>
+        <location filename="../app/RigPanel.cpp" line="681"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="863"/>
+        <location filename="../app/RigPanel.cpp" line="682"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="866"/>
+        <location filename="../app/RigPanel.cpp" line="685"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="867"/>
+        <location filename="../app/RigPanel.cpp" line="686"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="868"/>
+        <location filename="../app/RigPanel.cpp" line="687"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="870"/>
+        <location filename="../app/RigPanel.cpp" line="689"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="871"/>
+        <location filename="../app/RigPanel.cpp" line="690"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="872"/>
+        <location filename="../app/RigPanel.cpp" line="691"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="873"/>
+        <location filename="../app/RigPanel.cpp" line="692"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="874"/>
+        <location filename="../app/RigPanel.cpp" line="693"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="875"/>
+        <location filename="../app/RigPanel.cpp" line="694"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="876"/>
+        <location filename="../app/RigPanel.cpp" line="695"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="877"/>
+        <location filename="../app/RigPanel.cpp" line="696"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="878"/>
+        <location filename="../app/RigPanel.cpp" line="697"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="882"/>
+        <location filename="../app/RigPanel.cpp" line="701"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="703"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="705"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="888"/>
+        <location filename="../app/RigPanel.cpp" line="707"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="890"/>
+        <location filename="../app/RigPanel.cpp" line="709"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="892"/>
+        <location filename="../app/RigPanel.cpp" line="711"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1892,6 +1890,71 @@
         <location filename="../app/TaskPanel.cpp" line="196"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::rig::RigSession</name>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="138"/>
+        <source>The virtual camera needs a frame rate above zero.</source>
+        <translation>虛擬攝影機的影格率必須大於零。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="229"/>
+        <location filename="../rig/RigSession.cpp" line="389"/>
+        <source>Start the camera first.</source>
+        <translation>請先啟動攝影機。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="232"/>
+        <location filename="../rig/RigSession.cpp" line="392"/>
+        <source>Connect the transmitter link first.</source>
+        <translation>請先連接發射器。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="235"/>
+        <source>The rig needs a demonstration of a planar vehicle.</source>
+        <translation>實驗台需要平面車輛的示範。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="240"/>
+        <source>A trial is already running.</source>
+        <translation>已有一次試驗正在進行。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="243"/>
+        <source>Stop driving first.</source>
+        <translation>請先停止駕駛。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="249"/>
+        <source>%1 could not be set up.</source>
+        <translation>無法設定 %1。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="396"/>
+        <source>The camera has not opened yet; try again in a moment.</source>
+        <translation>攝影機尚未開啟，請稍後再試。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="399"/>
+        <source>A trial or a recording is already running.</source>
+        <translation>已有試驗或錄製正在進行。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="410"/>
+        <source>Cannot record to %1</source>
+        <translation>無法錄製到 %1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="465"/>
+        <source>Nothing recorded (no pose seen).</source>
+        <translation>沒有錄得任何內容（未見位姿）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="477"/>
+        <source>The rig recording could not be saved: %1</source>
+        <translation>實驗台錄製無法儲存：%1</translation>
     </message>
 </context>
 </TS>

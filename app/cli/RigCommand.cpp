@@ -3,13 +3,15 @@
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "core/DeviationModel.h"
-#include "rigsim/VirtualRig.h"
+#include "rig/RigSession.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
 #include "sim/TrialMetrics.h"
 
+#include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
@@ -62,54 +64,117 @@ int rigCommand(const QStringList& arguments) {
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
 
-    rigsim::VirtualRigSettings settings;
-    settings.perturbation = line.number("perturbation", 0.0, 10.0);
-    settings.lostTrackDistance = task.profile.lostTrackDistance;
-    settings.cameraFps = 1.0 / task.demonstration->dt;  // one frame per control step
-    rigsim::VirtualRig rig(
-        settings, sim::MethodCatalog::create(method, task.profile, task.demonstration, task.fit.b));
+    // The window's rig session, headless: the virtual car seen by the synthetic camera at the
+    // demonstration's control rate, the link on the car's pseudo-terminal.
+    const core::Demonstration& demo = *task.demonstration;
+    rig::RigSession rig;
+    rig::CameraRequest camera;
+    camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
+    camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
     QString error;
-    if (!rig.open(&error)) {
+    if (!rig.startCamera(camera, &error)) {
         throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
     }
+    devices::LinkSettings link;
+    link.port = rig.virtualPort();
+    link.failsafe = rig.channels().failsafe();
+    link.sendOnCommand = true;  // a camera frame's command goes out at once
+    rig.connectLink(link);
     installInterruptHandler();
-    const core::Demonstration& demo = *task.demonstration;
+    // Waits until `done` holds, the user interrupts, or the camera fails (its message).
+    QString cameraError;
+    QObject::connect(&rig, &rig::RigSession::cameraFailed,
+                     [&cameraError](const QString& message) { cameraError = message; });
+    auto waitFor = [&](const std::function<bool()>& done, int timeoutMs) {
+        QEventLoop loop;
+        QTimer poll;
+        QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+            if (done() || interrupted() || !cameraError.isEmpty()) {
+                loop.quit();
+            }
+        });
+        poll.start(10);
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        loop.exec();
+        return done();
+    };
+    if (!waitFor([&] { return rig.linkStatus().connected && rig.lastPose().has_value(); }, 10000)) {
+        throw UsageError(QStringLiteral("the virtual rig could not start: %1")
+                             .arg(!cameraError.isEmpty() ? cameraError
+                                  : !rig.linkStatus().connected
+                                      ? QStringLiteral("the link did not connect")
+                                      : QStringLiteral("the camera saw no car")));
+    }
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
+    std::optional<rig::RigTrialResult> last;
+    QObject::connect(&rig, &rig::RigSession::trialFinished,
+                     [&last](const rig::RigTrialResult& result) { last = result; });
     for (int t = 0; t < trials && !interrupted(); ++t) {
         printProgress(QStringLiteral("rig: trial %1/%2 (%3 s)")
                           .arg(t + 1)
                           .arg(trials)
                           .arg(seconds, 0, 'f', 1));
-        const rigsim::VirtualRig::Trial trial = rig.runTrial(
-            seconds, sim::resetForTrial(t), sim::mixSeed(seed, t), [] { return interrupted(); });
-        const sim::ParkingError parked = sim::parkingError(
-            task.profile.info, demo, trial.finalPose.x, trial.finalPose.y, trial.finalPose.heading);
-        const double miss = parked.position;
-        const double heading = parked.heading;
+        rig::TrialRequest request;
+        request.method = method;
+        request.createController = [&] {
+            return sim::MethodCatalog::create(method, task.profile, task.demonstration, task.fit.b);
+        };
+        request.plant = task.profile.info;
+        request.demonstration = task.demonstration;
+        request.settleTime = task.profile.settleTime;
+        request.lostTrackDistance = task.profile.lostTrackDistance;
+        request.virtualSeed = sim::mixSeed(seed, t);
+        last.reset();
+        const long long decodedBefore = rig.virtualFramesDecoded();
+        if (!rig.startTrial(request, &error)) {
+            throw UsageError(QStringLiteral("trial %1 could not start: %2").arg(t + 1).arg(error));
+        }
+        waitFor([&] { return last.has_value(); }, static_cast<int>((seconds + 30.0) * 1000));
+        if (!last) {
+            rig.stopTrial();  // interrupted, the camera failed, or no frames: ends it now
+        }
+        if (!cameraError.isEmpty()) {
+            throw UsageError(QStringLiteral("the camera failed: %1").arg(cameraError));
+        }
+        const rig::RigTrialResult& trial = *last;
         std::vector<double> latency = trial.latencyMs;
         std::sort(latency.begin(), latency.end());
         const double medianLatency = latency.empty() ? -1.0 : latency[latency.size() / 2];
-        rows.append(QJsonObject{{"trial", t + 1},
-                                {"finalPositionErrorCm", miss * 100.0},
-                                {"finalHeadingErrorDeg", heading * 180.0 / core::kPi},
-                                {"frames", trial.frames},
-                                {"framesWithPose", trial.framesWithPose},
-                                {"linkFramesDecoded", static_cast<double>(trial.linkFramesDecoded)},
-                                {"medianFrameToBytesMs", medianLatency}});
+        const long long decoded = rig.virtualFramesDecoded() - decodedBefore;
+        QJsonObject row{{"trial", t + 1},
+                        {"seconds", trial.seconds},
+                        {"stopped", trial.stopped},
+                        {"failsafe", trial.fault},
+                        {"frames", static_cast<double>(trial.frames)},
+                        {"framesWithPose", static_cast<double>(trial.framesWithPose)},
+                        {"linkFramesDecoded", static_cast<double>(decoded)},
+                        {"medianFrameToCommandMs", medianLatency}};
+        if (trial.parked) {
+            row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
+            row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
+        }
+        rows.append(row);
         if (line.format() == QLatin1String("text")) {
-            printText(QStringLiteral("trial %1: parked %2 cm and %3 deg from the lot; %4 of %5 "
-                                     "frames with a pose; %6 link frames decoded; frame -> bytes "
-                                     "median %7 ms\n")
+            const QString where =
+                trial.parked ? QStringLiteral("parked %1 cm and %2 deg from the lot")
+                                   .arg(trial.parked->position * 100.0, 0, 'f', 1)
+                                   .arg(trial.parked->heading * 180.0 / core::kPi, 0, 'f', 1)
+                             : QStringLiteral("no pose seen");
+            printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
+                                     "frames decoded; frame -> command median %7 ms\n")
                           .arg(t + 1)
-                          .arg(miss * 100.0, 0, 'f', 1)
-                          .arg(heading * 180.0 / core::kPi, 0, 'f', 1)
+                          .arg(where, trial.stopped ? QStringLiteral(" (stopped early)")
+                                      : trial.fault ? QStringLiteral(" (failsafe)")
+                                                    : QString())
                           .arg(trial.framesWithPose)
                           .arg(trial.frames)
-                          .arg(trial.linkFramesDecoded)
+                          .arg(decoded)
                           .arg(medianLatency, 0, 'f', 2));
         }
     }
+    rig.stopCamera();
+    rig.disconnectLink();
     if (line.format() == QLatin1String("json")) {
         printJson(QJsonObject{{"plant", QStringLiteral("slidecar")},
                               {"method", method},

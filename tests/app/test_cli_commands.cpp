@@ -299,6 +299,10 @@ class TestCliCommands : public QObject {
         QCOMPARE(trials.size(), 1);
         const QJsonObject t = trials[0].toObject();
         QVERIFY(t.value("frames").toInt() > 100);
+        QVERIFY(!t.value("stopped").toBool() && !t.value("failsafe").toBool());
+        // The trial lasts the demonstration plus its settling by the frames' clock (4 + 2 s).
+        QVERIFY2(t.value("seconds").toDouble() > 5.9 && t.value("seconds").toDouble() < 6.2,
+                 qPrintable(QString::number(t.value("seconds").toDouble())));
         QVERIFY(t.value("framesWithPose").toInt() >= t.value("frames").toInt() - 2);
         QVERIFY(t.value("linkFramesDecoded").toDouble() >= t.value("frames").toInt());
         const double miss = t.value("finalPositionErrorCm").toDouble(-1.0);

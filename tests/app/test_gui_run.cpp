@@ -687,8 +687,9 @@ class TestGuiRun : public QObject {
         QTest::keyRelease(&w.window, Qt::Key_Up);
         QTest::qWait(300);
         rig->stopDriving();
+        // The take is resampled and written on the rig's worker thread, then handed over.
+        QTRY_VERIFY_WITH_TIMEOUT(w.window.session().demonstration() != before, 10000);
         const auto demo = w.window.session().demonstration();
-        QVERIFY(demo != before);
         QVERIFY2(demo->length() >= 30, qPrintable(QString::number(demo->length())));
         QVERIFY(demo->actions.col(0).maxCoeff() > 0.99);
         // The car, driven through the link, moved forward; the camera saw it do so.

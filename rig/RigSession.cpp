@@ -1,0 +1,495 @@
+#include "rig/RigSession.h"
+
+#include "core/DemonstrationCsv.h"
+#include "core/DemonstrationStream.h"
+#include "devices/LedTracker.h"
+#include "devices/RigLoop.h"
+#include "rigsim/VirtualCar.h"
+#include "sim/DemonstrationRecorder.h"
+#include "sim/EpisodeRunner.h"
+
+#include <QFile>
+#include <QMetaObject>
+
+#include <chrono>
+#include <thread>
+#include <utility>
+
+namespace prisca::rig {
+
+namespace {
+constexpr int kShutdownWaitMs = 3000;
+}
+
+/// What the camera thread and the commands share (under mutex_).
+struct RigSession::Loop {
+    devices::FloorCalibration calibration;  ///< the tracker's, outside trials
+    devices::LedTracker tracker;
+    // The closed loop, kept from trial to trial for one method.
+    std::unique_ptr<devices::RigLoop> loop;
+    QString method;
+    bool stale = false;  ///< the calibration or channels changed: rebuild before the next trial
+    int trials = 0;
+    // The trial under way.
+    bool running = false;
+    double trialSeconds = 0.0;
+    std::int64_t trialStartNs = -1;  ///< its first frame; -1 before it
+    std::int64_t lastFrameNs = -1;
+    long long frames = 0;
+    long long framesWithPose = 0;
+    std::vector<double> latencyMs;
+    std::optional<devices::PlanarPose> lastTrackedPose;
+    sim::PlantInfo plant;
+    std::shared_ptr<const core::Demonstration> demonstration;
+    // Recording by driving.
+    bool recording = false;
+    Eigen::VectorXd driveAction;
+    devices::PoseStateEstimator estimator;
+    std::int64_t firstFrameNs = -1;  ///< the recording's first frame with a pose
+    double lastTime = -1.0;          ///< its newest sample's time [s]
+};
+
+/// The take being recorded, on the worker thread only.
+struct RigSession::Recorder {
+    sim::PlantInfo plant;
+    core::DemonstrationStream stream;
+    double streamDt = 0.0;      ///< the crash copy's even step: the camera's frame period [s]
+    std::vector<double> times;  ///< each sample's frame time since the first [s]
+    std::vector<Eigen::VectorXd> states, actions;
+
+    void append(double t, const Eigen::VectorXd& state, const Eigen::VectorXd& action) {
+        times.push_back(t);
+        states.push_back(state);
+        actions.push_back(action);
+        // The crash copy keeps the format's even steps; the finished take is resampled from the
+        // frames' own times. A failed write is retried at the next flush; the take is in memory.
+        QString ignored;
+        stream.append((times.size() - 1) * streamDt, state, action, &ignored);
+    }
+};
+
+RigSession::RigSession(QObject* parent)
+    : QObject(parent), worker_(new QObject), loop_(std::make_unique<Loop>()) {
+    qRegisterMetaType<RigTrialResult>();
+    qRegisterMetaType<RigRecording>();
+    qRegisterMetaType<std::optional<devices::PlanarPose>>();
+    workerThread_.setObjectName(QStringLiteral("prisca-rig"));
+    worker_->moveToThread(&workerThread_);
+    connect(&workerThread_, &QThread::finished, worker_, &QObject::deleteLater);
+    workerThread_.start();
+
+    // Until the operator calibrates, the synthetic camera's own calibration.
+    setCalibration(devices::syntheticCeilingCamera());
+    camera_.setConsumer([this](const devices::CameraFrame& frame) { onFrame(frame); });
+    connect(&camera_, &devices::Camera::frameReady, this,
+            [this](const devices::CameraFrame& frame) { emit frameReady(frame, lastPose()); });
+    connect(&camera_, &devices::Camera::failed, this, &RigSession::cameraFailed);
+    connect(&link_, &devices::TransmitterLink::statusChanged, this,
+            [this](const devices::LinkStatus& status) {
+                linkStatus_ = status;
+                emit linkStatusChanged(status);
+            });
+}
+
+RigSession::~RigSession() {
+    camera_.stop();
+    // The camera thread calls onFrame(): it must be done before anything here goes.
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::milliseconds(kShutdownWaitMs);
+    while (camera_.isRunning() && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        loop_->running = false;
+        loop_->recording = false;
+    }
+    // The samples already handed over are written, then the stream is flushed and closed: a
+    // recording in progress stays on disk (its crash copy), nobody is told.
+    QMetaObject::invokeMethod(
+        worker_,
+        [this] {
+            if (recorder_) {
+                QString ignored;
+                recorder_->stream.close(&ignored);
+                recorder_.reset();
+            }
+        },
+        Qt::BlockingQueuedConnection);
+    workerThread_.quit();
+    workerThread_.wait(kShutdownWaitMs);
+    link_.stop();
+}
+
+template <typename F>
+void RigSession::onWorker(F&& f) {
+    QMetaObject::invokeMethod(worker_, std::forward<F>(f), Qt::QueuedConnection);
+}
+
+bool RigSession::startCamera(const CameraRequest& request, QString* error) {
+    if (camera_.isRunning()) {
+        return true;
+    }
+    std::unique_ptr<devices::CameraSource> source;
+    switch (request.source) {
+        case CameraRequest::Source::Virtual: {
+            if (!(request.virtualFps > 0.0)) {
+                if (error) {
+                    *error = tr("The virtual camera needs a frame rate above zero.");
+                }
+                return false;
+            }
+            if (!car_) {
+                auto car = std::make_shared<rigsim::VirtualCar>(devices::RcProtocol::Crsf,
+                                                                devices::ChannelMap::car(), 1,
+                                                                request.virtualPerturbation);
+                if (!car->open(error)) {
+                    return false;
+                }
+                car_ = car;
+            }
+            car_->reset(1);
+            source = devices::makeSyntheticSource(
+                [car = car_](double t) {
+                    return std::optional<devices::PlanarPose>(car->poseAt(t));
+                },
+                devices::syntheticCeilingCamera(), {}, request.virtualFps);
+            break;
+        }
+        case CameraRequest::Source::Device:
+            source = devices::makeV4l2Source(request.device);
+            break;
+        case CameraRequest::Source::Video:
+            source = devices::makeVideoFileSource(request.videoPath, true);
+            break;
+    }
+    camera_.start(std::shared_ptr<devices::CameraSource>(std::move(source)));
+    return true;
+}
+
+void RigSession::stopCamera() {
+    camera_.stop();
+}
+
+QString RigSession::virtualPort() const {
+    return car_ ? car_->portPath() : QString();
+}
+
+long long RigSession::virtualFramesDecoded() const {
+    return car_ ? car_->framesDecoded() : -1;
+}
+
+std::optional<devices::PlanarPose> RigSession::lastPose() const {
+    std::lock_guard<std::mutex> lock(poseMutex_);
+    return pose_;
+}
+
+void RigSession::setCalibration(const devices::FloorCalibration& calibration) {
+    calibration_ = calibration;
+    std::lock_guard<std::mutex> lock(mutex_);
+    loop_->calibration = calibration;
+    loop_->stale = true;  // the loop tracks with its own copy: rebuilt for the next trial
+}
+
+bool RigSession::loadCalibration(const QString& path, QString* error) {
+    const auto loaded = devices::FloorCalibration::load(path, error);
+    if (!loaded) {
+        return false;
+    }
+    setCalibration(*loaded);
+    return true;
+}
+
+bool RigSession::saveCalibration(const QString& path, QString* error) const {
+    return calibration_.save(path, error);
+}
+
+void RigSession::connectLink(const devices::LinkSettings& settings) {
+    link_.start(settings);
+}
+
+void RigSession::disconnectLink() {
+    link_.stop();
+}
+
+void RigSession::setChannels(const devices::ChannelMap& channels) {
+    channels_ = channels;
+    std::lock_guard<std::mutex> lock(mutex_);
+    loop_->stale = true;
+}
+
+bool RigSession::startTrial(const TrialRequest& request, QString* error) {
+    auto fail = [error](const QString& why) {
+        if (error) {
+            *error = why;
+        }
+        return false;
+    };
+    if (!camera_.isRunning()) {
+        return fail(tr("Start the camera first."));
+    }
+    if (!linkStatus_.connected) {
+        return fail(tr("Connect the transmitter link first."));
+    }
+    if (!request.demonstration || request.demonstration->length() == 0 || !request.plant.pose) {
+        return fail(tr("The rig needs a demonstration of a planar vehicle."));
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    Loop& l = *loop_;
+    if (l.running) {
+        return fail(tr("A trial is already running."));
+    }
+    if (l.recording) {
+        return fail(tr("Stop driving first."));
+    }
+    // One loop per method: learners keep what they learnt from trial to trial (warm start).
+    if (!l.loop || l.stale || l.method != request.method) {
+        std::unique_ptr<core::Controller> controller = request.createController();
+        if (!controller) {
+            return fail(tr("%1 could not be set up.").arg(request.method));
+        }
+        l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
+                                                    std::move(controller), channels_, link_);
+        l.loop->setLostTrackDistance(request.lostTrackDistance);
+        l.method = request.method;
+        l.stale = false;
+        l.trials = 0;
+    }
+    l.loop->startTrial(sim::resetForTrial(l.trials));
+    if (car_) {  // back at the start
+        car_->requestReset(request.virtualSeed != 0 ? request.virtualSeed
+                                                    : static_cast<std::uint64_t>(l.trials + 1));
+    }
+    const core::Demonstration& demo = *request.demonstration;
+    l.trialSeconds = demo.length() * demo.dt + request.settleTime;
+    l.trialStartNs = -1;
+    l.lastFrameNs = -1;
+    l.frames = 0;
+    l.framesWithPose = 0;
+    l.latencyMs.clear();
+    l.lastTrackedPose.reset();
+    l.plant = request.plant;
+    l.demonstration = request.demonstration;
+    l.running = true;
+    ++l.trials;
+    return true;
+}
+
+int RigSession::trialNumber() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->trials;
+}
+
+bool RigSession::trialRunning() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->running;
+}
+
+RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault) {
+    Loop& l = *loop_;
+    l.running = false;
+    RigTrialResult result;
+    result.trial = l.trials;
+    result.stopped = stopped;
+    result.fault = fault;
+    result.seconds = l.trialStartNs >= 0 ? (l.lastFrameNs - l.trialStartNs) * 1e-9 : 0.0;
+    result.frames = l.frames;
+    result.framesWithPose = l.framesWithPose;
+    result.latencyMs = std::move(l.latencyMs);
+    l.latencyMs.clear();
+    if (l.lastTrackedPose && l.demonstration && l.plant.pose) {
+        result.parked = sim::parkingError(l.plant, *l.demonstration, l.lastTrackedPose->x,
+                                          l.lastTrackedPose->y, l.lastTrackedPose->heading);
+    }
+    return result;
+}
+
+void RigSession::stopTrial() {
+    std::optional<RigTrialResult> result;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (loop_->running) {
+            result = finishTrialLocked(true, false);
+        }
+    }
+    if (result) {
+        emit trialFinished(*result);
+    }
+}
+
+void RigSession::onFrame(const devices::CameraFrame& frame) {
+    std::optional<devices::PlanarPose> pose;
+    std::optional<RigTrialResult> finished;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        Loop& l = *loop_;
+        if (l.running && l.loop) {
+            // The closed loop: pose -> controller -> link, on this thread, no queue between.
+            const devices::RigStep step = l.loop->onFrame(frame);
+            pose = step.pose;
+            ++l.frames;
+            if (pose) {
+                ++l.framesWithPose;
+                l.lastTrackedPose = pose;
+                l.latencyMs.push_back((step.commandNs - step.frameNs) * 1e-6);
+            }
+            if (l.trialStartNs < 0) {
+                l.trialStartNs = frame.steadyNs;
+            }
+            l.lastFrameNs = frame.steadyNs;
+            // A trial lasts its length by the camera's own frame clock, whatever the frame rate.
+            const double elapsed = (frame.steadyNs - l.trialStartNs) * 1e-9;
+            if (elapsed >= l.trialSeconds || step.fault) {
+                finished = finishTrialLocked(false, step.fault);
+            }
+        } else {
+            pose = l.tracker.track(frame.image, l.calibration).pose;
+            if (l.recording) {
+                if (!pose) {
+                    // No pose, no command: the car must not drive blind.
+                    link_.setPoseLost(true);
+                    l.estimator.reset();
+                } else {
+                    link_.setPoseLost(false);
+                    const Eigen::VectorXd state = l.estimator.update(*pose, frame.steadyNs);
+                    if (l.firstFrameNs < 0) {
+                        l.firstFrameNs = frame.steadyNs;
+                    }
+                    // The frame's own time: frames come at the camera's rate, some are dropped.
+                    const double t = (frame.steadyNs - l.firstFrameNs) * 1e-9;
+                    if (l.lastTime < 0.0 || t > l.lastTime) {  // else out of order: no sample
+                        l.lastTime = t;
+                        onWorker([this, t, state, action = l.driveAction] {
+                            if (recorder_) {
+                                recorder_->append(t, state, action);
+                            }
+                        });
+                    }
+                }
+            }
+        }
+    }
+    {
+        std::lock_guard<std::mutex> lock(poseMutex_);
+        pose_ = pose;
+    }
+    if (finished) {
+        emit trialFinished(*finished);
+    }
+}
+
+bool RigSession::startRecording(const sim::PlantInfo& plant, const QString& path, QString* error) {
+    auto fail = [error](const QString& why) {
+        if (error) {
+            *error = why;
+        }
+        return false;
+    };
+    if (!camera_.isRunning()) {
+        return fail(tr("Start the camera first."));
+    }
+    if (!linkStatus_.connected) {
+        return fail(tr("Connect the transmitter link first."));
+    }
+    const double fps = camera_.framesPerSecond();
+    if (!(fps > 0.0)) {
+        return fail(tr("The camera has not opened yet; try again in a moment."));
+    }
+    if (trialRunning() || recording()) {
+        return fail(tr("A trial or a recording is already running."));
+    }
+    // The header of the demonstration format, on disk at once; rows follow as they come. Its
+    // dt is the camera's frame period; the finished take is resampled onto the measured one.
+    auto recorder = std::make_unique<Recorder>();
+    recorder->plant = plant;
+    recorder->streamDt = 1.0 / fps;
+    core::Demonstration header = sim::DemonstrationRecorder(plant, 1.0 / fps).demonstration();
+    header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
+    QString openError;
+    if (!recorder->stream.open(path, header, &openError)) {
+        return fail(tr("Cannot record to %1").arg(openError));
+    }
+    onWorker([this, r = recorder.release()] { recorder_.reset(r); });
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        Loop& l = *loop_;
+        l.firstFrameNs = -1;
+        l.lastTime = -1.0;
+        l.estimator.reset();
+        l.driveAction = Eigen::VectorXd::Zero(plant.actionDimension());
+        l.recording = true;
+    }
+    if (car_) {
+        car_->requestReset(1);
+    }
+    return true;
+}
+
+void RigSession::setDriveCommand(const Eigen::VectorXd& action) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!loop_->recording) {
+            return;
+        }
+        loop_->driveAction = action;
+    }
+    link_.setCommand(channels_.command(action));
+}
+
+bool RigSession::recording() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->recording;
+}
+
+void RigSession::stopRecording() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!loop_->recording) {
+            return;
+        }
+        loop_->recording = false;
+    }
+    link_.setCommand(channels_.failsafe());  // neutral now; stale (failsafe) after that
+    link_.setPoseLost(false);
+    onWorker([this] {
+        if (!recorder_) {
+            return;
+        }
+        std::unique_ptr<Recorder> r = std::move(recorder_);
+        RigRecording done;
+        done.path = r->stream.fileName();
+        QString ignored;  // the file is rewritten below from the samples in memory
+        r->stream.close(&ignored);
+        if (r->states.size() < 2) {
+            QFile::remove(done.path);
+            done.error = tr("Nothing recorded (no pose seen).");
+            emit recordingFinished(done);
+            return;
+        }
+        // The frames' own times onto one uniform step (the camera's median frame interval).
+        core::Demonstration demo =
+            sim::DemonstrationRecorder::fromTimedSamples(r->plant, r->times, r->states, r->actions);
+        demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
+        // The streamed file (even steps of the nominal period, kept for a crash) becomes the
+        // resampled one.
+        core::FileError writeError;
+        if (!core::writeDemonstrationCsv(demo, done.path, &writeError)) {
+            done.error = tr("The rig recording could not be saved: %1").arg(writeError.toString());
+        } else {
+            done.demonstration = std::make_shared<core::Demonstration>(std::move(demo));
+        }
+        emit recordingFinished(done);
+    });
+}
+
+void RigSession::emergencyStop() {
+    link_.emergencyStop();  // failsafe from the link's next frame, latched
+    stopRecording();
+    stopTrial();
+}
+
+void RigSession::resetEmergencyStop() {
+    link_.resetEmergencyStop();
+}
+
+}  // namespace prisca::rig

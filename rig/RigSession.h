@@ -1,0 +1,189 @@
+#pragma once
+
+#include "core/Controller.h"
+#include "core/Demonstration.h"
+#include "devices/CameraSource.h"
+#include "devices/CameraWorker.h"
+#include "devices/ChannelMap.h"
+#include "devices/FloorCalibration.h"
+#include "devices/TransmitterLink.h"
+#include "sim/Plant.h"
+#include "sim/TrialMetrics.h"
+
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+#include <QThread>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace prisca::rigsim {
+class VirtualCar;
+}
+
+namespace prisca::devices {
+class RigLoop;
+}
+
+namespace prisca::rig {
+
+/// Where the rig's frames come from.
+struct CameraRequest {
+    enum class Source { Virtual, Device, Video };
+    Source source = Source::Virtual;
+    devices::V4l2Settings device;  ///< Source::Device
+    QString videoPath;             ///< Source::Video (played at its own frame rate)
+    /// Source::Virtual: the synthetic camera's frame rate [1/s] (the demonstration's control
+    /// rate, one frame per control step).
+    double virtualFps = 0.0;
+    double virtualPerturbation = 1.0;  ///< the virtual car's (start offsets, friction, gains)
+};
+
+/// One trial on the rig.
+struct TrialRequest {
+    QString method;  ///< a MethodCatalog id; a new method gets a new loop
+    /// Builds the method's controller (called only when a new loop is needed).
+    std::function<std::unique_ptr<core::Controller>()> createController;
+    sim::PlantInfo plant;                                      ///< the target (a planar vehicle)
+    std::shared_ptr<const core::Demonstration> demonstration;  ///< its length and its lot
+    double settleTime = 0.0;         ///< after the demonstration's length [s]
+    double lostTrackDistance = 0.0;  ///< the loop's lost-track failsafe [m] (0: none)
+    /// The virtual car's seed for this trial (its start, friction, gains); 0: the trial number.
+    std::uint64_t virtualSeed = 0;
+};
+
+/// How a trial on the rig ended.
+struct RigTrialResult {
+    int trial = 0;         ///< 1, 2, ... since the loop was built
+    bool stopped = false;  ///< ended early by Stop or E-STOP
+    bool fault = false;    ///< ended by a controller fault or the lost-track failsafe
+    double seconds = 0.0;  ///< its length by the camera's frame clock [s]
+    long long frames = 0;  ///< frames it saw
+    long long framesWithPose = 0;
+    /// Per frame with a pose: from the frame's arrival to its command handed to the link [ms].
+    std::vector<double> latencyMs;
+    /// Where the car stopped relative to the demonstration's end; empty: no pose was seen.
+    std::optional<sim::ParkingError> parked;
+};
+
+/// A demonstration recorded by driving on the rig.
+struct RigRecording {
+    QString path;  ///< the file on disk (kept even when unusable)
+    /// The take on one uniform step (the frames' median interval); null: nothing usable.
+    std::shared_ptr<core::Demonstration> demonstration;
+    QString error;  ///< why there is none, or why the file could not be rewritten
+};
+
+/// The rig as one object: camera, tracker, closed loop, transmitter link and recorder, with
+/// time taken from the frames' timestamps. The camera and the link each run on their own
+/// thread; the closed loop steps on the camera's thread (no queue between frame and command);
+/// the recorder writes on the session's own worker thread, so no disk write ever happens under a
+/// lock another thread waits on. Commands are called on the owner's (the window's) thread;
+/// results come back as signals. Knows nothing of widgets: the Rig panel shows and commands it.
+class RigSession : public QObject {
+    Q_OBJECT
+  public:
+    explicit RigSession(QObject* parent = nullptr);
+    /// Stops the camera and the link; a recording in progress is flushed and kept on disk.
+    ~RigSession() override;
+
+    // The camera.
+    /// Opens the virtual car (for Source::Virtual) and starts the camera thread. False and
+    /// *error when the virtual car cannot open; a device or file that cannot open is reported
+    /// by cameraFailed().
+    bool startCamera(const CameraRequest& request, QString* error);
+    void stopCamera();
+    bool cameraRunning() const { return camera_.isRunning(); }
+    long long framesSeen() const { return camera_.framesDelivered(); }
+    /// The newest tracked pose (empty: none in the last frame).
+    std::optional<devices::PlanarPose> lastPose() const;
+    /// The virtual car's port (empty until the virtual camera has started once).
+    QString virtualPort() const;
+    /// Link frames the virtual car has decoded so far (-1: no virtual car).
+    long long virtualFramesDecoded() const;
+
+    // The floor calibration the tracker uses.
+    const devices::FloorCalibration& calibration() const { return calibration_; }
+    void setCalibration(const devices::FloorCalibration& calibration);
+    /// Reads a calibration file; a bad one changes nothing (false, *error names it and why).
+    bool loadCalibration(const QString& path, QString* error);
+    bool saveCalibration(const QString& path, QString* error) const;
+
+    // The transmitter link.
+    void connectLink(const devices::LinkSettings& settings);
+    void disconnectLink();
+    const devices::LinkStatus& linkStatus() const { return linkStatus_; }
+    /// The channel mapping for commands; takes effect on the next trial.
+    void setChannels(const devices::ChannelMap& channels);
+    const devices::ChannelMap& channels() const { return channels_; }
+
+    // Trials.
+    /// Starts a trial (the loop is kept for the same method: learners learn from trial to
+    /// trial). False and *error if one already runs, the camera is off or the link is down.
+    bool startTrial(const TrialRequest& request, QString* error);
+    /// Ends the trial under way; trialFinished() follows.
+    void stopTrial();
+    bool trialRunning() const;
+    /// Trials started since the loop was built (the one under way included).
+    int trialNumber() const;
+
+    // Recording by driving.
+    /// Starts recording the tracked states with the commands given by setDriveCommand(),
+    /// streamed to `path` as they come (the header at once). False and *error on failure.
+    bool startRecording(const sim::PlantInfo& plant, const QString& path, QString* error);
+    /// The operator's command in [-1, 1] per action: sent through the link and recorded.
+    void setDriveCommand(const Eigen::VectorXd& action);
+    /// Ends the recording; recordingFinished() follows once the take is resampled and written.
+    void stopRecording();
+    bool recording() const;
+
+    /// E-STOP: failsafe on the link (latched until reset), the trial and recording end.
+    void emergencyStop();
+    void resetEmergencyStop();
+
+  signals:
+    /// A thinned copy of the camera's frames (about 30 per second) with the pose tracked in it.
+    void frameReady(const prisca::devices::CameraFrame& frame,
+                    const std::optional<prisca::devices::PlanarPose>& pose);
+    void cameraFailed(const QString& message);
+    void linkStatusChanged(const prisca::devices::LinkStatus& status);
+    void trialFinished(const prisca::rig::RigTrialResult& result);
+    void recordingFinished(const prisca::rig::RigRecording& recording);
+
+  private:
+    struct Recorder;
+    void onFrame(const devices::CameraFrame& frame);
+    RigTrialResult finishTrialLocked(bool stopped, bool fault);
+    template <typename F>
+    void onWorker(F&& f);
+
+    devices::Camera camera_;
+    devices::TransmitterLink link_;
+    std::shared_ptr<rigsim::VirtualCar> car_;
+    devices::FloorCalibration calibration_;  ///< the owner thread's copy
+    devices::ChannelMap channels_ = devices::ChannelMap::car();
+    devices::LinkStatus linkStatus_;
+    QThread workerThread_;
+    QObject* worker_;  ///< lives on workerThread_: the recorder's disk writes and the scoring
+    std::unique_ptr<Recorder> recorder_;  ///< touched on the worker thread only
+
+    /// Shared by the camera thread and commands; held only for in-memory work, never disk I/O.
+    mutable std::mutex mutex_;
+    struct Loop;
+    std::unique_ptr<Loop> loop_;
+    mutable std::mutex poseMutex_;
+    std::optional<devices::PlanarPose> pose_;
+};
+
+}  // namespace prisca::rig
+
+Q_DECLARE_METATYPE(prisca::rig::RigTrialResult)
+Q_DECLARE_METATYPE(prisca::rig::RigRecording)
+Q_DECLARE_METATYPE(std::optional<prisca::devices::PlanarPose>)

@@ -1,0 +1,236 @@
+// The rig session with no hardware and no window: the virtual car seen by the synthetic camera
+// and driven through the real transmitter link; trials timed and scored by the session,
+// recordings written on its worker thread.
+#include "rig/RigSession.h"
+
+#include "core/ActionMapping.h"
+#include "core/DemonstrationCsv.h"
+#include "sim/MethodCatalog.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantProfile.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca;
+
+namespace {
+
+constexpr double kFps = 40.0;
+
+struct SlideCar {
+    sim::PlantProfile profile =
+        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+    std::shared_ptr<const core::Demonstration> demonstration;
+    Eigen::MatrixXd b;
+
+    /// The scripted demonstration cut to its first `seconds`, so a trial is short.
+    explicit SlideCar(double seconds) {
+        core::Demonstration demo = sim::PlantCatalog::demonstrate(QStringLiteral("slidecar"), 1);
+        const int keep = std::min(demo.length(), static_cast<int>(std::lround(seconds / demo.dt)));
+        demo.states = demo.states.topRows(keep).eval();
+        demo.actions = demo.actions.topRows(keep).eval();
+        demo.time = demo.time.head(keep).eval();
+        demonstration = std::make_shared<core::Demonstration>(std::move(demo));
+        b = core::fitActionMapping(*demonstration, profile.mapping, profile.info.deviationModel())
+                .b;
+    }
+
+    rig::TrialRequest trial(const QString& method, int* built = nullptr) const {
+        rig::TrialRequest request;
+        request.method = method;
+        request.createController = [this, method, built] {
+            if (built) {
+                ++*built;
+            }
+            return sim::MethodCatalog::create(method, profile, demonstration, b);
+        };
+        request.plant = profile.info;
+        request.demonstration = demonstration;
+        request.settleTime = 0.5;
+        return request;
+    }
+};
+
+/// The virtual camera running with the car in view and the link connected to the car.
+bool startVirtual(rig::RigSession& rig) {
+    rig::CameraRequest camera;
+    camera.virtualFps = kFps;
+    QString error;
+    if (!rig.startCamera(camera, &error)) {
+        qWarning("%s", qPrintable(error));
+        return false;
+    }
+    if (!QTest::qWaitFor([&] { return rig.lastPose().has_value(); }, 10000)) {
+        return false;
+    }
+    devices::LinkSettings link;
+    link.port = rig.virtualPort();
+    link.failsafe = rig.channels().failsafe();
+    link.sendOnCommand = true;
+    rig.connectLink(link);
+    return QTest::qWaitFor([&] { return rig.linkStatus().connected; }, 5000);
+}
+
+}  // namespace
+
+class TestRigSession : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { qRegisterMetaType<rig::RigTrialResult>(); }
+
+    void startTrial_refusedWithoutCameraOrLink() {
+        rig::RigSession rig;
+        const SlideCar car(1.0);
+        QString error;
+        QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd")), &error));
+        QVERIFY2(error.contains(QLatin1String("camera")), qPrintable(error));
+        rig::CameraRequest camera;
+        camera.virtualFps = kFps;
+        QVERIFY(rig.startCamera(camera, &error));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.framesSeen() > 0, 10000);
+        QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd")), &error));
+        QVERIFY2(error.contains(QLatin1String("link")), qPrintable(error));
+        QVERIFY(!rig.trialRunning());
+        camera.virtualFps = 0.0;  // a second start while running changes nothing
+        QVERIFY(rig.startCamera(camera, &error));
+    }
+
+    void trial_lastsItsLengthByTheFrameClockAndKeepsTheLoopPerMethod() {
+        rig::RigSession rig;
+        QVERIFY(startVirtual(rig));
+        const SlideCar car(60.0);  // the whole 4 s manoeuvre
+        const double length = car.demonstration->length() * car.demonstration->dt + 0.5;
+        QSignalSpy finished(&rig, &rig::RigSession::trialFinished);
+        int built = 0;
+        QString error;
+        for (int trial = 1; trial <= 2; ++trial) {
+            QVERIFY2(rig.startTrial(car.trial(QStringLiteral("pd"), &built), &error),
+                     qPrintable(error));
+            QVERIFY(rig.trialRunning());
+            QCOMPARE(rig.trialNumber(), trial);
+            QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd"), &built), &error));
+            QTRY_COMPARE_WITH_TIMEOUT(finished.count(), trial, 20000);
+            const auto result = finished.last().at(0).value<rig::RigTrialResult>();
+            QCOMPARE(result.trial, trial);
+            QVERIFY(!result.stopped);
+            QVERIFY(!result.fault);
+            // The demonstration and 0.5 s of settling, by the frames' own timestamps.
+            QVERIFY2(result.seconds >= length && result.seconds < length + 3.0 / kFps,
+                     qPrintable(QString::number(result.seconds)));
+            QVERIFY(result.frames >= 2);
+            QVERIFY(result.framesWithPose >= result.frames - 2);
+            QVERIFY(result.parked.has_value());
+            // PD parks the car near the lot (the demonstration's end).
+            QVERIFY2(result.parked->position < 0.5,
+                     qPrintable(QString::number(result.parked->position)));
+        }
+        QCOMPARE(built, 1);  // one loop for both trials of one method
+        QVERIFY(rig.startTrial(car.trial(QStringLiteral("pd-h-lsd"), &built), &error));
+        QCOMPARE(built, 2);  // a new method, a new loop, counting from 1
+        QCOMPARE(rig.trialNumber(), 1);
+        rig.stopTrial();
+        QCOMPARE(finished.count(), 3);  // said at once, on the caller's thread
+        const auto stopped = finished.last().at(0).value<rig::RigTrialResult>();
+        QVERIFY(stopped.stopped);
+        QVERIFY(stopped.seconds < length);
+        QVERIFY(!rig.trialRunning());
+    }
+
+    void emergencyStop_endsTheTrialAndLatchesFailsafe() {
+        rig::RigSession rig;
+        QVERIFY(startVirtual(rig));
+        const SlideCar car(1.5);
+        QSignalSpy finished(&rig, &rig::RigSession::trialFinished);
+        QString error;
+        QVERIFY(rig.startTrial(car.trial(QStringLiteral("pd")), &error));
+        rig.emergencyStop();
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(finished.last().at(0).value<rig::RigTrialResult>().stopped);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.linkStatus().emergencyLatched, 3000);
+        QCOMPARE(rig.linkStatus().failsafe, devices::FailsafeReason::EmergencyStop);
+        rig.resetEmergencyStop();
+        QTRY_VERIFY_WITH_TIMEOUT(!rig.linkStatus().emergencyLatched, 3000);
+    }
+
+    void recording_resampledOnTheFramesClockAndWrittenToDisk() {
+        QTemporaryDir dir;
+        rig::RigSession rig;
+        QVERIFY(startVirtual(rig));
+        const SlideCar car(1.0);
+        const QString path = dir.filePath(QStringLiteral("take.csv"));
+        QString error;
+        QVERIFY2(rig.startRecording(car.profile.info, path, &error), qPrintable(error));
+        QVERIFY(rig.recording());
+        QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd")), &error));  // not while driving
+        QVERIFY(QFile::exists(path));  // the header is on disk at once
+        qRegisterMetaType<rig::RigRecording>();
+        QSignalSpy done(&rig, &rig::RigSession::recordingFinished);
+        // Full throttle until the camera has seen 30 frames more.
+        const long long start = rig.framesSeen();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                rig.setDriveCommand(Eigen::Vector2d(1.0, 0.0));
+                return rig.framesSeen() > start + 30;
+            },
+            10000));
+        rig.stopRecording();
+        QVERIFY(!rig.recording());
+        QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, 10000);
+        const auto recording = done.last().at(0).value<rig::RigRecording>();
+        QVERIFY2(recording.demonstration, qPrintable(recording.error));
+        const core::Demonstration& demo = *recording.demonstration;
+        QCOMPARE(recording.path, path);
+        QVERIFY(demo.length() >= 20);
+        // The median frame interval of a 40 fps camera.
+        QVERIFY2(std::abs(demo.dt - 1.0 / kFps) < 0.1 / kFps, qPrintable(QString::number(demo.dt)));
+        QVERIFY(demo.actions.col(0).maxCoeff() > 0.99);
+        QVERIFY(demo.states(demo.length() - 1, 0) - demo.states(0, 0) > 0.05);  // it drove off
+        core::FileError readError;
+        const auto onDisk = core::readDemonstrationCsv(path, &readError);
+        QVERIFY2(onDisk, qPrintable(readError.toString()));
+        QCOMPARE(onDisk->length(), demo.length());
+        QCOMPARE(onDisk->dt, demo.dt);
+    }
+
+    void destroyedWhileRecording_keepsTheTakeOnDisk() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("crash.csv"));
+        {
+            rig::RigSession rig;
+            QVERIFY(startVirtual(rig));
+            const SlideCar car(1.0);
+            QString error;
+            QVERIFY(rig.startRecording(car.profile.info, path, &error));
+            const long long start = rig.framesSeen();
+            QVERIFY(QTest::qWaitFor([&] { return rig.framesSeen() > start + 12; }, 10000));
+        }  // no stopRecording(): the session goes while the take runs
+        core::FileError error;
+        const auto kept = core::readDemonstrationCsv(path, &error);
+        QVERIFY2(kept, qPrintable(error.toString()));
+        QVERIFY(kept->length() >= 10);
+    }
+
+    void calibration_badFileRefusedAndNothingChanged() {
+        QTemporaryDir dir;
+        rig::RigSession rig;
+        const cv::Matx33d before = rig.calibration().imageToFloor;
+        QFile bad(dir.filePath(QStringLiteral("bad.json")));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("{\"homography\": [1, 2]}");
+        bad.close();
+        QString error;
+        QVERIFY(!rig.loadCalibration(bad.fileName(), &error));
+        QVERIFY2(error.contains(QLatin1String("bad.json")), qPrintable(error));
+        QVERIFY(rig.calibration().imageToFloor == before);
+        QVERIFY(rig.saveCalibration(dir.filePath(QStringLiteral("good.json")), &error));
+        QVERIFY(rig.loadCalibration(dir.filePath(QStringLiteral("good.json")), &error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRigSession)
+#include "test_rig_session.moc"
