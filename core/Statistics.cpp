@@ -1,5 +1,9 @@
 #include "Statistics.h"
 
+#include "core/DeviationModel.h"
+
+#include <unsupported/Eigen/SpecialFunctions>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -60,141 +64,61 @@ std::vector<double> finiteOnly(const std::vector<double>& values) {
     return out;
 }
 
-// ln Gamma(a + b) - ln Gamma(a) for a >= 20 from the Stirling series, written so that the two
-// huge lgamma values never get subtracted (they would lose ~1e-9 at a = 5e5, i.e. dof = 1e6).
-double logGammaRatio(double a, double b) {
-    auto correction = [](double z) {
-        // Stirling series tail 1/(12z) - 1/(360z^3) + ...; the next term is < 2e-15 at z = 20.
-        const double r = 1.0 / z;
-        const double r2 = r * r;
-        return r * (1.0 / 12.0 - r2 * (1.0 / 360.0 - r2 * (1.0 / 1260.0 - r2 / 1680.0)));
-    };
-    const double c = a + b;
-    return (a - 0.5) * std::log1p(b / a) + b * std::log(c) - b + correction(c) - correction(a);
-}
-
-double logBeta(double a, double b) {
-    const double big = std::max(a, b);
-    const double small = std::min(a, b);
-    if (big >= 20.0) {
-        return std::lgamma(small) - logGammaRatio(big, small);
-    }
-    return std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b);
-}
-
-// Continued fraction of the incomplete beta function (modified Lentz method);
-// converges fast for x < (a + 1) / (a + b + 2), in O(sqrt(max(a, b))) iterations.
-double betaContinuedFraction(double a, double b, double x, double y) {
-    constexpr double tiny = 1e-300;
-    const int maxIterations = 1000 + static_cast<int>(20.0 * std::sqrt(std::max(a, b)));
-    const double qab = a + b;
-    const double qap = a + 1.0;
-    const double qam = a - 1.0;
-    double c = 1.0;
-    // 1 - (a + b) x / (a + 1) written with y = 1 - x: it cancels badly for x near 1 and large a.
-    double d = ((1.0 - b) + qab * y) / qap;
-    if (std::abs(d) < tiny) {
-        d = tiny;
-    }
-    d = 1.0 / d;
-    double h = d;
-    for (int m = 1; m <= maxIterations; ++m) {
-        const double m2 = 2.0 * m;
-        // Even step of the fraction.
-        double aa = m * (b - m) * x / ((qam + m2) * (a + m2));
-        d = 1.0 + aa * d;
-        if (std::abs(d) < tiny) {
-            d = tiny;
-        }
-        c = 1.0 + aa / c;
-        if (std::abs(c) < tiny) {
-            c = tiny;
-        }
-        d = 1.0 / d;
-        h *= d * c;
-        // Odd step.
-        aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
-        d = 1.0 + aa * d;
-        if (std::abs(d) < tiny) {
-            d = tiny;
-        }
-        c = 1.0 + aa / c;
-        if (std::abs(c) < tiny) {
-            c = tiny;
-        }
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) <= kEps) {
-            break;
-        }
-    }
-    return h;
-}
-
-// Arguments of the incomplete beta, each with its logarithm: x and ln x may differ in range
-// (x underflows to 0 for |t| > 1e154 while ln x is still finite and needed).
+// x = k / (k + t^2) and y = t^2 / (k + t^2) = 1 - x for t >= 0, without forming t^2 (it
+// overflows for huge t) and without computing one from the other (y would cancel near x = 1).
 struct BetaArgument {
-    double x = 0.0;
-    double y = 1.0;  // 1 - x, computed without cancelling against 1
-    double lnX = -kInf;
-    double lnY = 0.0;
+    double x = 1.0;
+    double y = 0.0;
 };
 
-// Regularized incomplete beta I_x(a, b) for a, b > 0.
-double regularizedIncompleteBeta(double a, double b, const BetaArgument& arg) {
-    if (arg.lnX == -kInf) {
-        return 0.0;
-    }
-    if (arg.lnY == -kInf) {
-        return 1.0;
-    }
-    const double front = std::exp(a * arg.lnX + b * arg.lnY - logBeta(a, b));
-    if (arg.x < (a + 1.0) / (a + b + 2.0)) {
-        return front * betaContinuedFraction(a, b, arg.x, arg.y) / a;
-    }
-    return 1.0 - front * betaContinuedFraction(b, a, arg.y, arg.x) / b;
-}
-
-// x = k / (k + t^2) and y = t^2 / (k + t^2) without forming t^2 (it overflows for huge t), and
-// their logarithms via log1p so that k/2 * ln x stays accurate when x is near 1 and k is large.
 BetaArgument studentTBetaArgument(double t, double dof) {
-    BetaArgument arg;
     const double root = std::sqrt(dof);
-    const double at = std::abs(t);
-    if (at == 0.0) {
-        arg.x = 1.0;
-        arg.y = 0.0;
-        arg.lnX = 0.0;
-        arg.lnY = -kInf;
-    } else if (at > root) {
-        const double r = root / at;  // < 1, may underflow for t near the double range
-        const double r2 = r * r;
-        arg.x = r2 / (1.0 + r2);
-        arg.y = 1.0 / (1.0 + r2);
-        arg.lnX = 2.0 * (std::log(root) - std::log(at)) - std::log1p(r2);
-        arg.lnY = -std::log1p(r2);
-    } else {
-        const double s = at / root;  // <= 1
-        const double s2 = s * s;
-        arg.x = 1.0 / (1.0 + s2);
-        arg.y = s2 / (1.0 + s2);
-        arg.lnX = -std::log1p(s2);
-        arg.lnY = 2.0 * std::log(s) - std::log1p(s2);
+    if (t > root) {
+        const double r = root / t;  // < 1, may underflow for t near the double range
+        return {r * r / (1.0 + r * r), 1.0 / (1.0 + r * r)};
     }
-    return arg;
+    const double s = t / root;  // <= 1
+    return {1.0 / (1.0 + s * s), s * s / (1.0 + s * s)};
 }
 
-// P(T > t) for t >= 0: 0.5 * I_x(k/2, 1/2). Working on the tail keeps small tail probabilities
-// at full relative precision instead of rounding them against 1.
+// P(T > |t|), kept at full relative precision in the far tail instead of rounding it
+// against 1. One and two degrees of freedom have closed forms (and the Cauchy tail reaches far
+// beyond what x = k / (k + t^2) can hold); otherwise 0.5 I_x(k/2, 1/2) from Eigen's regularized
+// incomplete beta.
 double upperTail(double t, double dof) {
-    return 0.5 * regularizedIncompleteBeta(0.5 * dof, 0.5, studentTBetaArgument(t, dof));
+    t = std::abs(t);  // symmetric
+    if (dof == 1.0) {
+        return t > 1.0 ? std::atan(1.0 / t) / kPi : 0.5 - std::atan(t) / kPi;
+    }
+    if (dof == 2.0) {
+        // 1/2 - t / (2 sqrt(2 + t^2)) = 1 / ((2 + t^2) (1 + t / sqrt(2 + t^2))), without the
+        // cancellation.
+        if (t > 1e150) {
+            return 0.5 / t / t;
+        }
+        const double s = t / std::sqrt(2.0 + t * t);
+        return 1.0 / ((2.0 + t * t) * (1.0 + s));
+    }
+    const BetaArgument arg = studentTBetaArgument(t, dof);
+    const double a = 0.5 * dof;
+    const double direct = Eigen::numext::betainc(a, 0.5, arg.x);
+    // I_x(a, b) sees y only as 1 - x, a relative error of about eps / y; its complement
+    // 1 - I_y(b, a) sees y exactly and loses about eps / I_x. Take the smaller error.
+    if (arg.y < direct) {
+        return 0.5 * (1.0 - Eigen::numext::betainc(0.5, a, arg.y));
+    }
+    return 0.5 * direct;
+}
+
+// ln B(k/2, 1/2) for the density; only Newton's step uses it, never the returned quantile.
+double logBetaHalf(double dof) {
+    return std::lgamma(0.5 * dof) + std::lgamma(0.5) - std::lgamma(0.5 * dof + 0.5);
 }
 
 double studentTDensity(double t, double dof) {
     const double s = std::abs(t) / std::sqrt(dof);
     const double logKernel = s > 1e150 ? 2.0 * std::log(s) : std::log1p(s * s);
-    return std::exp(-0.5 * std::log(dof) - logBeta(0.5 * dof, 0.5) - 0.5 * (dof + 1.0) * logKernel);
+    return std::exp(-0.5 * std::log(dof) - logBetaHalf(dof) - 0.5 * (dof + 1.0) * logKernel);
 }
 
 void requireDegreesOfFreedom(int degreesOfFreedom) {

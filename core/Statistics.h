@@ -46,9 +46,10 @@ double sampleVariance(const std::vector<double>& values);
 /// Cumulative distribution function of Student's t distribution, P(T <= t).
 /// @param t                 any value; +-inf give 1 and 0, NaN gives NaN
 /// @param degreesOfFreedom  >= 1; throws std::invalid_argument otherwise
-/// Computed from the regularized incomplete beta function (continued fraction, modified Lentz).
-/// Accuracy: ~1e-15 absolute and ~1e-13 relative in the tails for dof up to ~1000; the continued
-/// fraction loses digits roughly in proportion to dof beyond that (~1e-10 at 1e6, ~1e-7 at 1e9).
+/// Closed forms for 1 and 2 degrees of freedom; otherwise Eigen's regularized incomplete beta
+/// (unsupported/Eigen/SpecialFunctions) on the tail, so small tail probabilities keep their
+/// relative precision. Accuracy: ~1e-15 absolute; relative in the tails about dof * 1e-16 (the
+/// argument x = k / (k + t^2) is a double), ~1e-10 at dof 1e6.
 double studentTCdf(double t, int degreesOfFreedom);
 
 /// Quantile (inverse CDF) of Student's t distribution: the t with P(T <= t) = probability.
@@ -56,7 +57,7 @@ double studentTCdf(double t, int degreesOfFreedom);
 ///                          outside [0, 1] or NaN throws std::invalid_argument
 /// @param degreesOfFreedom  >= 1; throws std::invalid_argument otherwise
 /// Inverts studentTCdf() by bracketed Newton iteration: ~1e-13 relative for dof up to ~1000,
-/// ~1e-10 at dof 1e6 (see studentTCdf()); probabilities down to 1e-300 work. Symmetric:
+/// ~1e-10 at dof 1e6 (see studentTCdf()); probabilities down to 1e-300 work (1 dof). Symmetric:
 /// studentTQuantile(1 - p, k) == -studentTQuantile(p, k) up to the rounding of 1 - p.
 double studentTQuantile(double probability, int degreesOfFreedom);
 

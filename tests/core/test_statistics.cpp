@@ -255,9 +255,12 @@ void TestStatistics::studentT_decreasesTowardsNormalAsDegreesGrow() {
     }
     const double large = studentTQuantile(0.975, 1000000);
     QVERIFY2(std::abs(large - normal975) <= 1e-5, describe("dof 1e6", large, normal975));
-    // First-order Cornish-Fisher: t = z + (z^3 + z) / (4 dof) + O(dof^-2).
+    // First-order Cornish-Fisher: t = z + (z^3 + z) / (4 dof) + O(dof^-2); the first-order term
+    // is 2.9e-6, the next about 1e-12. Eigen's incomplete beta forms ln Gamma(5e5) (about 6e6)
+    // and so carries about 1e-10 of relative error at this dof, far below what a 95% interval
+    // needs.
     const double expansion = normal975 + (std::pow(normal975, 3) + normal975) / 4e6;
-    QVERIFY2(std::abs(large - expansion) <= 1e-10, describe("dof 1e6 expansion", large, expansion));
+    QVERIFY2(std::abs(large - expansion) <= 1e-9, describe("dof 1e6 expansion", large, expansion));
 }
 
 void TestStatistics::studentT_cdfMatchesClosedFormsAndInvertsQuantile() {
@@ -272,8 +275,11 @@ void TestStatistics::studentT_cdfMatchesClosedFormsAndInvertsQuantile() {
     for (int dof : {1, 3, 8, 25, 99, 4000}) {
         for (double p : {1e-9, 0.01, 0.2, 0.5, 0.7, 0.975, 0.999}) {
             const double back = studentTCdf(studentTQuantile(p, dof), dof);
+            // The CDF is I_x(k/2, 1/2) of a double x = k / (k + t^2): as x moves by one ulp,
+            // x^(k/2) moves by (k/2) eps, so at large k it is a staircase of that relative step.
+            const double resolution = std::max(1e-14, dof * 1.2e-16);
             QVERIFY2(
-                std::abs(back - p) <= 1e-14 * std::max(p, 1e-3),
+                std::abs(back - p) <= resolution * std::max(p, 1e-3),
                 describe(qPrintable(QStringLiteral("cdf(quantile) dof %1").arg(dof)), back, p));
         }
     }
