@@ -2,8 +2,8 @@
 
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/Task.h"
 
@@ -141,15 +141,15 @@ void LabSession::setPlant(const QString& plant) {
     if (!sim::PlantCatalog::names().contains(plant)) {
         throw std::invalid_argument(QStringLiteral("unknown plant '%1'").arg(plant).toStdString());
     }
-    plant_ = plant;
-    profile_ = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
-    scriptedStyle_ = sim::DemonstrationStyles::classic(plant);
+    const QString style = sim::DemonstrationStyles::classic(plant);
+    task_ = sim::makeTask(
+        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant)),
+        std::make_shared<core::Demonstration>(sim::DemonstrationStyles::record(plant, style, 1)),
+        fitOptions_);
+    scriptedStyle_ = style;
     scriptedSeed_ = 1;
-    demonstration_ = std::make_shared<core::Demonstration>(
-        sim::DemonstrationStyles::record(plant, scriptedStyle_, scriptedSeed_));
     demonstrationSource_.clear();
-    refit();
-    emit plantChanged(plant_);
+    emit plantChanged(task_.plant);
     emit demonstrationChanged();
     emit fitChanged();
     emit controllerChanged();
@@ -162,50 +162,51 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     }
     // Checked and fitted before anything changes, as the CLI makes its task (sim::makeTask): a
     // demonstration that is refused leaves the session as it was (its own with its fit).
-    sim::Task task;
     try {
-        task = sim::makeTask(profile_, std::move(demonstration), fitOptions_);
+        task_ = sim::makeTask(task_.profile, std::move(demonstration), fitOptions_);
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(tr("the demonstration does not fit the %1: %2")
-                                        .arg(plant_, QString::fromStdString(e.what()))
+                                        .arg(task_.plant, QString::fromStdString(e.what()))
                                         .toStdString());
     }
-    demonstration_ = std::move(task.demonstration);
     demonstrationSource_ = source;
-    fit_ = std::move(task.fit);
     emit demonstrationChanged();
     emit fitChanged();
 }
 
 void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t seed) {
-    if (!sim::DemonstrationStyles::contains(plant_, style)) {
-        throw std::invalid_argument(tr("the %1 has no demonstration style '%2'")
-                                        .arg(plant_, style)
-                                        .toStdString());
+    if (!sim::DemonstrationStyles::contains(task_.plant, style)) {
+        throw std::invalid_argument(
+            tr("the %1 has no demonstration style '%2'").arg(task_.plant, style).toStdString());
     }
-    demonstration_ = std::make_shared<core::Demonstration>(
-        sim::DemonstrationStyles::record(plant_, style, seed));
+    task_ = sim::makeTask(task_.profile,
+                          std::make_shared<core::Demonstration>(
+                              sim::DemonstrationStyles::record(task_.plant, style, seed)),
+                          fitOptions_);
     demonstrationSource_.clear();
     scriptedStyle_ = style;
     scriptedSeed_ = seed;
-    refit();
     emit demonstrationChanged();
     emit fitChanged();
 }
 
 void LabSession::setProfile(const sim::PlantProfile& profile) {
-    const bool mappingChanged = profile.mapping.signs != profile_.mapping.signs;
-    profile_ = profile;
+    const bool mappingChanged =
+        profile.mapping.signs.rows() != task_.profile.mapping.signs.rows() ||
+        profile.mapping.signs.cols() != task_.profile.mapping.signs.cols() ||
+        profile.mapping.signs != task_.profile.mapping.signs;
     if (mappingChanged) {
-        refit();
+        task_ = sim::makeTask(profile, task_.demonstration, fitOptions_);
         emit fitChanged();
+    } else {
+        task_.profile = profile;
     }
     emit controllerChanged();
 }
 
 void LabSession::setFitOptions(const core::ActionMappingFitOptions& options) {
+    task_ = sim::makeTask(task_.profile, task_.demonstration, options);
     fitOptions_ = options;
-    refit();
     emit fitChanged();
 }
 
@@ -220,11 +221,6 @@ void LabSession::setMethod(const QString& method) {
     emit controllerChanged();
 }
 
-void LabSession::refit() {
-    fit_ = core::fitActionMapping(*demonstration_, profile_.mapping, profile_.info.deviationModel(),
-                                  fitOptions_);
-}
-
 QByteArray LabSession::toJson() const {
     QJsonObject fit{
         {"latency", fitOptions_.latency},
@@ -234,49 +230,49 @@ QByteArray LabSession::toJson() const {
                        : "rate"},
         {"nonNegative", fitOptions_.nonNegative},
         {"robust", fitOptions_.robust}};
-    const core::PriscaParameters& p = profile_.prisca;
-    QJsonObject prisca{{"horizon", p.horizon},
-                       {"gamma", p.gamma},
-                       {"beta", p.stepSize.beta},
-                       {"stepScale", p.stepSize.scale},
-                       {"thetaBound", p.thetaBound},
-                       {"useBaseline", p.useBaseline},
-                       {"useInverseDepreciation", p.useInverseDepreciation},
-                       {"fromPd", profile_.priscaFromPd},
-                       {"automatic", profile_.priscaAutomatic},
-                       {"gradient", p.gradient == core::PriscaParameters::Gradient::ClosedLoop
-                                        ? "closed-loop"
-                                        : "one-step"},
-                       {"effortWeight",
-                        p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0}};
-    QJsonObject pgsd{{"horizon", profile_.pgsd.horizon},
-                     {"stepSize", profile_.pgsd.stepSize},
-                     {"thetaBound", profile_.pgsd.thetaBound}};
-    QJsonObject pd{{"kp", vectorToJson(profile_.pd.kp)},
-                   {"kd", vectorToJson(profile_.pd.kd)},
-                   {"horizon", profile_.pdHorizon}};
-    QJsonObject root{{"format", "prisca-session"},
-                     {"version", kSessionVersion},
-                     {"plant", plant_},
-                     {"demonstration", demonstrationSource_},
-                     {"scriptedStyle", scriptedStyle_},
-                     {"scriptedSeed", static_cast<double>(scriptedSeed_)},
-                     {"mapping", profile_.mapping.toString()},
-                     {"fit", fit},
-                     {"method", method_},
-                     {"matchingWindow", profile_.matchingWindow},
-                     {"prisca", prisca},
-                     {"pgsd", pgsd},
-                     {"ilc", QJsonObject{{"learningScale", profile_.ilcLearningScale},
-                                         {"lead", profile_.ilcLead},
-                                         {"cutoff", profile_.ilcCutoff},
-                                         {"feedbackScale", profile_.ilcFeedbackScale}}},
-                     {"pd", pd},
-                     {"featureScales", scalesToJson(profile_.features)},
-                     {"limits", QJsonObject{{"lower", vectorToJson(profile_.info.actionLower)},
-                                            {"upper", vectorToJson(profile_.info.actionUpper)}}}};
-    if (profile_.priscaFeatures) {
-        root.insert("priscaFeatureScales", scalesToJson(*profile_.priscaFeatures));
+    const core::PriscaParameters& p = task_.profile.prisca;
+    QJsonObject prisca{
+        {"horizon", p.horizon},
+        {"gamma", p.gamma},
+        {"beta", p.stepSize.beta},
+        {"stepScale", p.stepSize.scale},
+        {"thetaBound", p.thetaBound},
+        {"useBaseline", p.useBaseline},
+        {"useInverseDepreciation", p.useInverseDepreciation},
+        {"fromPd", task_.profile.priscaFromPd},
+        {"automatic", task_.profile.priscaAutomatic},
+        {"gradient",
+         p.gradient == core::PriscaParameters::Gradient::ClosedLoop ? "closed-loop" : "one-step"},
+        {"effortWeight", p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0}};
+    QJsonObject pgsd{{"horizon", task_.profile.pgsd.horizon},
+                     {"stepSize", task_.profile.pgsd.stepSize},
+                     {"thetaBound", task_.profile.pgsd.thetaBound}};
+    QJsonObject pd{{"kp", vectorToJson(task_.profile.pd.kp)},
+                   {"kd", vectorToJson(task_.profile.pd.kd)},
+                   {"horizon", task_.profile.pdHorizon}};
+    QJsonObject root{
+        {"format", "prisca-session"},
+        {"version", kSessionVersion},
+        {"plant", task_.plant},
+        {"demonstration", demonstrationSource_},
+        {"scriptedStyle", scriptedStyle_},
+        {"scriptedSeed", static_cast<double>(scriptedSeed_)},
+        {"mapping", task_.profile.mapping.toString()},
+        {"fit", fit},
+        {"method", method_},
+        {"matchingWindow", task_.profile.matchingWindow},
+        {"prisca", prisca},
+        {"pgsd", pgsd},
+        {"ilc", QJsonObject{{"learningScale", task_.profile.ilcLearningScale},
+                            {"lead", task_.profile.ilcLead},
+                            {"cutoff", task_.profile.ilcCutoff},
+                            {"feedbackScale", task_.profile.ilcFeedbackScale}}},
+        {"pd", pd},
+        {"featureScales", scalesToJson(task_.profile.features)},
+        {"limits", QJsonObject{{"lower", vectorToJson(task_.profile.info.actionLower)},
+                               {"upper", vectorToJson(task_.profile.info.actionUpper)}}}};
+    if (task_.profile.priscaFeatures) {
+        root.insert("priscaFeatureScales", scalesToJson(*task_.profile.priscaFeatures));
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -341,8 +337,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     }
     const QString method = root.value("method").toString(QStringLiteral("prisca"));
     if (!sim::MethodCatalog::contains(method)) {
-        return fail(
-            tr("'method' must be one of %1").arg(sim::MethodCatalog::ids().join(", ")));
+        return fail(tr("'method' must be one of %1").arg(sim::MethodCatalog::ids().join(", ")));
     }
     core::ActionMappingFitOptions fitOptions;
     const QJsonObject fit = root.value("fit").toObject();
@@ -486,20 +481,23 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
             sim::DemonstrationStyles::record(plant, scriptedStyle, scriptedSeed));
     }
 
-    // Everything checked: only now does the session change.
-    plant_ = plant;
-    profile_ = profile;
+    // The task made as every task is (checked and fitted); only then does the session change.
+    sim::Task task;
+    try {
+        task = sim::makeTask(profile, std::move(demonstration), fitOptions);
+    } catch (const std::invalid_argument& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    task_ = std::move(task);
     method_ = method;
     fitOptions_ = fitOptions;
-    demonstration_ = std::move(demonstration);
     demonstrationSource_ = source;
     scriptedStyle_ = scriptedStyle;
     scriptedSeed_ = scriptedSeed;
     notice_ = earlier ? tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
                            "tuned for an earlier PRISCA, so today's defaults are used instead.")
                       : QString();
-    refit();
-    emit plantChanged(plant_);
+    emit plantChanged(task_.plant);
     emit demonstrationChanged();
     emit fitChanged();
     emit controllerChanged();

@@ -3,6 +3,7 @@
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 #include "sim/PlantProfile.h"
+#include "sim/Task.h"
 
 #include <QObject>
 #include <QString>
@@ -13,8 +14,9 @@
 
 namespace prisca::app {
 
-/// What the operator is working on: the target plant, the demonstration to repeat, the intuitive
-/// mapping B~ and its fit, and the controller's method and parameters. Lives on the GUI thread;
+/// What the operator is working on: the task (the target plant, its profile with the intuitive
+/// mapping B~, the demonstration to repeat and its fit, one validated sim::Task made as the CLI
+/// makes its own), and the controller's method and parameters. Lives on the GUI thread;
 /// panels read it and change it through its setters, and listen to its signals. It holds plain
 /// data only, so a run copies what it needs before crossing to the worker thread.
 class LabSession : public QObject {
@@ -23,13 +25,15 @@ class LabSession : public QObject {
     explicit LabSession(QObject* parent = nullptr);
 
     /// The target: a sim::PlantCatalog name ("slidecar", "acrobot", ...).
-    const QString& plant() const { return plant_; }
+    const QString& plant() const { return task_.plant; }
+    /// The whole task: plant, profile, demonstration and fit, always consistent.
+    const sim::Task& task() const { return task_; }
     /// Chooses a target: loads its profile (mapping, features, method defaults) and its scripted
     /// demonstration, and fits B_v. Throws std::invalid_argument for an unknown plant.
     void setPlant(const QString& plant);
 
     /// The demonstration being repeated (never null once a plant is set).
-    std::shared_ptr<const core::Demonstration> demonstration() const { return demonstration_; }
+    std::shared_ptr<const core::Demonstration> demonstration() const { return task_.demonstration; }
     /// Where the demonstration came from: a file path, or empty for the scripted one.
     const QString& demonstrationSource() const { return demonstrationSource_; }
     /// The scripted operator's style and seed (meaningful while demonstrationSource() is empty).
@@ -39,20 +43,21 @@ class LabSession : public QObject {
     /// DemonstrationStyles of the plant) and seed, and refits B_v. Throws std::invalid_argument
     /// for a style the plant does not have (the session is then unchanged).
     void setScriptedDemonstration(const QString& style, std::uint64_t seed);
-    /// Replaces the demonstration and refits B_v. Throws std::invalid_argument if its state or
-    /// action dimension does not match the plant.
+    /// Replaces the demonstration and refits B_v. Throws std::invalid_argument if it is not a
+    /// demonstration of the plant (sim::makeTask says why); the session is then unchanged.
     void setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
                           const QString& source);
 
     /// The plant's profile with the operator's edits (mapping B~, method parameters).
-    const sim::PlantProfile& profile() const { return profile_; }
-    /// Replaces the profile (its mapping must keep the plant's m x n) and refits B_v.
+    const sim::PlantProfile& profile() const { return task_.profile; }
+    /// Replaces the profile and refits B_v if its mapping changed. Throws std::invalid_argument
+    /// if the mapping is not the plant's m x n; the session is then unchanged.
     void setProfile(const sim::PlantProfile& profile);
 
     /// Options of the last fit of B_v, and the fit itself.
     const core::ActionMappingFitOptions& fitOptions() const { return fitOptions_; }
     void setFitOptions(const core::ActionMappingFitOptions& options);
-    const core::ActionMappingFit& fit() const { return fit_; }
+    const core::ActionMappingFit& fit() const { return task_.fit; }
 
     /// The method a run uses (sim::MethodCatalog ids).
     const QString& method() const { return method_; }
@@ -84,18 +89,13 @@ class LabSession : public QObject {
     void controllerChanged();
 
   private:
-    void refit();
-
-    QString plant_;
+    sim::Task task_;
     QString method_ = QStringLiteral("prisca");
-    std::shared_ptr<const core::Demonstration> demonstration_;
     QString demonstrationSource_;
     QString scriptedStyle_;
     QString notice_;
     std::uint64_t scriptedSeed_ = 1;
-    sim::PlantProfile profile_;
     core::ActionMappingFitOptions fitOptions_;
-    core::ActionMappingFit fit_;
 };
 
 }  // namespace prisca::app

@@ -1,6 +1,7 @@
 #include "app/RigPanel.h"
 
 #include "app/CameraView.h"
+#include "app/ChannelMapEditor.h"
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
@@ -16,7 +17,6 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -25,7 +25,6 @@
 #include <QSerialPortInfo>
 #include <QSettings>
 #include <QSpinBox>
-#include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -77,8 +76,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       linkInfo_(new QLabel(this)),
       baudLabel_(new QLabel(this)),
       baud_(new QSpinBox(this)),
-      channelTable_(new QTableWidget(this)),
-      channelProblem_(new QLabel(this)),
+      channels_(new ChannelMapEditor(this)),
       drive_(new QPushButton(this)),
       runTrial_(new QPushButton(this)),
       stopTrial_(new QPushButton(this)),
@@ -118,14 +116,6 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     baud_->setObjectName(QStringLiteral("linkBaud"));
     baud_->setRange(0, 4000000);
     baud_->setSingleStep(100000);
-    channelTable_->setObjectName(QStringLiteral("channelMap"));
-    channelTable_->setColumnCount(5);
-    channelTable_->setRowCount(2);
-    channelTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    channelTable_->setMaximumHeight(90);
-    channelProblem_->setObjectName(QStringLiteral("channelProblem"));
-    channelProblem_->setStyleSheet(QStringLiteral("color: #b00020"));
-    channelProblem_->setWordWrap(true);
     drive_->setObjectName(QStringLiteral("driveOnRig"));
     driving_ = new DrivingInput(this);
     driveTimer_ = new QTimer(this);
@@ -147,20 +137,6 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     gain_->setValue(settings.value("rig/gain", -1).toInt());
     protocol_->setCurrentIndex(settings.value("rig/protocol", 0).toInt());
     baud_->setValue(settings.value("rig/baud", 0).toInt());
-    // The channel map as the operator left it: "channel:trim:min:max:reversed" per control.
-    const QStringList saved = settings.value("rig/channels").toStringList();
-    for (int i = 0; i < saved.size() && i < static_cast<int>(channels_.controls.size()); ++i) {
-        const QStringList f = saved[i].split(QLatin1Char(':'));
-        if (f.size() == 5) {
-            devices::ChannelSetting s{f[0].toInt(), f[1].toDouble(), f[2].toDouble(),
-                                      f[3].toDouble(), f[4] == QLatin1String("1")};
-            devices::ChannelMap trial = channels_;
-            trial.controls[i] = s;
-            if (trial.validate().isEmpty()) {
-                channels_ = trial;
-            }
-        }
-    }
 
     auto* form = new QFormLayout;
     form->addRow(sourceLabel_, source_);
@@ -190,8 +166,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     controls->addWidget(calibrationInfo_);
     controls->addLayout(calibrationButtons);
     controls->addLayout(linkForm);
-    controls->addWidget(channelTable_);
-    controls->addWidget(channelProblem_);
+    controls->addWidget(channels_);
     controls->addLayout(linkButtons);
     controls->addWidget(linkInfo_);
     auto* trialButtons = new QHBoxLayout;
@@ -257,6 +232,8 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         addCalibrationPoint(image, QPointF(x, y));
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
+    connect(&session_, &LabSession::plantChanged, this,
+            [this] { channels_->setControlNames(session_.profile().info.actionNames); });
     connect(runTrial_, &QPushButton::clicked, this, &RigPanel::runTrial);
     drive_->setCheckable(true);
     connect(drive_, &QPushButton::clicked, this, [this](bool on) {
@@ -268,14 +245,15 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             stopDriving();
         }
     });
-    connect(channelTable_, &QTableWidget::itemChanged, this, &RigPanel::applyChannels);
+    // A new map takes effect on the next trial (the loop is rebuilt with it).
+    connect(channels_, &ChannelMapEditor::channelsChanged, &rig_, &rig::RigSession::setChannels);
     connect(stopTrial_, &QPushButton::clicked, this, &RigPanel::stopTrial);
 
-    rig_.setChannels(channels_);
+    rig_.setChannels(channels_->channels());
     view_->setCalibration(rig_.calibration());
     refreshPorts();
     retranslateUi();
-    showChannels();
+    channels_->setControlNames(session_.profile().info.actionNames);
     showTask();
     showLinkStatus(rig_.linkStatus());
 }
@@ -495,7 +473,7 @@ void RigPanel::connectLink() {
         return;
     }
     settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
-    settings.failsafe = channels_.failsafe();
+    settings.failsafe = channels_->channels().failsafe();
     settings.baud = baud_->value();
     settings.sendOnCommand = true;  // a camera frame's command goes out at once
     QSettings saved;
@@ -583,70 +561,6 @@ void RigPanel::showTask() {
                    demo->states(last, pose->heading));
 }
 
-void RigPanel::showChannels() {
-    updatingChannels_ = true;
-    const QStringList names = session_.profile().info.actionNames;
-    channelTable_->setVerticalHeaderLabels({names.value(0), names.value(1)});
-    for (int row = 0; row < 2 && row < static_cast<int>(channels_.controls.size()); ++row) {
-        const devices::ChannelSetting& s = channels_.controls[row];
-        const QStringList cells = {QString::number(s.channel + 1), QString::number(s.trim),
-                                   QString::number(s.minimum), QString::number(s.maximum)};
-        for (int col = 0; col < 4; ++col) {
-            channelTable_->setItem(row, col, new QTableWidgetItem(cells[col]));
-        }
-        auto* reversed = new QTableWidgetItem;
-        reversed->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
-        reversed->setCheckState(s.reversed ? Qt::Checked : Qt::Unchecked);
-        channelTable_->setItem(row, 4, reversed);
-    }
-    updatingChannels_ = false;
-}
-
-void RigPanel::applyChannels() {
-    if (updatingChannels_) {
-        return;
-    }
-    devices::ChannelMap edited = channels_;
-    QString problem;
-    for (int row = 0; row < 2 && row < static_cast<int>(edited.controls.size()); ++row) {
-        double values[4] = {};
-        for (int col = 0; col < 4; ++col) {
-            bool ok = false;
-            const QTableWidgetItem* item = channelTable_->item(row, col);
-            values[col] = item ? item->text().toDouble(&ok) : 0.0;
-            if (!ok) {
-                problem = tr("'%1' is not a number").arg(item ? item->text() : QString());
-            }
-        }
-        devices::ChannelSetting& s = edited.controls[row];
-        s.channel = static_cast<int>(values[0]) - 1;
-        s.trim = values[1];
-        s.minimum = values[2];
-        s.maximum = values[3];
-        s.reversed =
-            channelTable_->item(row, 4) && channelTable_->item(row, 4)->checkState() == Qt::Checked;
-    }
-    if (problem.isEmpty()) {
-        problem = edited.validate();
-    }
-    channelProblem_->setText(problem);
-    if (!problem.isEmpty()) {
-        return;  // nothing half-applied
-    }
-    channels_ = edited;
-    QStringList saved;
-    for (const devices::ChannelSetting& s : channels_.controls) {
-        saved << QStringLiteral("%1:%2:%3:%4:%5")
-                     .arg(s.channel)
-                     .arg(s.trim)
-                     .arg(s.minimum)
-                     .arg(s.maximum)
-                     .arg(s.reversed ? 1 : 0);
-    }
-    QSettings().setValue("rig/channels", saved);
-    rig_.setChannels(channels_);  // takes effect on the next trial
-}
-
 void RigPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
@@ -695,11 +609,6 @@ void RigPanel::retranslateUi() {
     baudLabel_->setText(tr("Baud rate:"));
     baud_->setSpecialValueText(tr("protocol default"));
     baud_->setToolTip(tr("0: the protocol's own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)"));
-    channelTable_->setHorizontalHeaderLabels(
-        {tr("CH"), tr("trim [µs]"), tr("min [µs]"), tr("max [µs]"), tr("reversed")});
-    channelTable_->setToolTip(
-        tr("Which transmitter channel each control drives, its trim, its "
-           "travel limits and its direction"));
     drive_->setText(tr("Drive and record"));
     drive_->setToolTip(
         tr("Drive the car through the link (arrows or WASD, or a gamepad) and "

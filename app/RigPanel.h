@@ -14,12 +14,12 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
-class QTableWidget;
 class QTimer;
 
 namespace prisca::app {
 
 class CameraView;
+class ChannelMapEditor;
 class LabSession;
 class DrivingInput;
 
@@ -53,7 +53,7 @@ class RigPanel : public QWidget {
     long long framesSeen() const { return rig_.framesSeen(); }
     const devices::LinkStatus& linkStatus() const { return rig_.linkStatus(); }
     /// The channel mapping as edited (throttle, steering); invalid edits are named and refused.
-    const devices::ChannelMap& channels() const { return channels_; }
+    const devices::ChannelMap& channels() const { return rig_.channels(); }
     /// The virtual car's port (empty unless the virtual rig runs).
     QString virtualPort() const { return rig_.virtualPort(); }
 
@@ -99,8 +99,6 @@ class RigPanel : public QWidget {
     void showTrialResult(const rig::RigTrialResult& result);
     void useRecording(const rig::RigRecording& recording);
     void driveTick();
-    void showChannels();
-    void applyChannels();
 
     LabSession& session_;
     rig::RigSession rig_;
@@ -131,10 +129,7 @@ class RigPanel : public QWidget {
     QLabel* linkInfo_;
     QLabel* baudLabel_;
     QSpinBox* baud_;
-    QTableWidget* channelTable_;
-    QLabel* channelProblem_;
-    devices::ChannelMap channels_ = devices::ChannelMap::car();
-    bool updatingChannels_ = false;
+    ChannelMapEditor* channels_;
     DrivingInput* driving_ = nullptr;
     bool drivingActive_ = false;
     QTimer* driveTimer_ = nullptr;

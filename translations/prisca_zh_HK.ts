@@ -76,6 +76,44 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::ChannelMapEditor</name>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="84"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>「%1」不是數字</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <source>CH</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <source>trim [µs]</source>
+        <translation>微調 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <source>min [µs]</source>
+        <translation>最小 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <source>max [µs]</source>
+        <translation>最大 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <source>reversed</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <location filename="../app/ChannelMapEditor.cpp" line="126"/>
+        <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
+        <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::ControllerPanel</name>
     <message>
         <location filename="../app/ControllerPanel.cpp" line="187"/>
@@ -546,98 +584,98 @@
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="169"/>
+        <location filename="../app/LabSession.cpp" line="168"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="182"/>
+        <location filename="../app/LabSession.cpp" line="179"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="296"/>
-        <location filename="../app/LabSession.cpp" line="304"/>
+        <location filename="../app/LabSession.cpp" line="292"/>
+        <location filename="../app/LabSession.cpp" line="300"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="310"/>
+        <location filename="../app/LabSession.cpp" line="306"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="316"/>
+        <location filename="../app/LabSession.cpp" line="312"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="319"/>
+        <location filename="../app/LabSession.cpp" line="315"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="324"/>
+        <location filename="../app/LabSession.cpp" line="320"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="331"/>
+        <location filename="../app/LabSession.cpp" line="327"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="335"/>
+        <location filename="../app/LabSession.cpp" line="331"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="345"/>
+        <location filename="../app/LabSession.cpp" line="341"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="382"/>
+        <location filename="../app/LabSession.cpp" line="378"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="388"/>
+        <location filename="../app/LabSession.cpp" line="384"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="399"/>
+        <location filename="../app/LabSession.cpp" line="395"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="426"/>
+        <location filename="../app/LabSession.cpp" line="422"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="440"/>
+        <location filename="../app/LabSession.cpp" line="436"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="466"/>
+        <location filename="../app/LabSession.cpp" line="462"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="470"/>
+        <location filename="../app/LabSession.cpp" line="466"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="477"/>
+        <location filename="../app/LabSession.cpp" line="473"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="482"/>
+        <location filename="../app/LabSession.cpp" line="478"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
@@ -1191,130 +1229,130 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="220"/>
+        <location filename="../app/RigPanel.cpp" line="195"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="221"/>
-        <location filename="../app/RigPanel.cpp" line="228"/>
+        <location filename="../app/RigPanel.cpp" line="196"/>
+        <location filename="../app/RigPanel.cpp" line="203"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="227"/>
+        <location filename="../app/RigPanel.cpp" line="202"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="242"/>
-        <location filename="../app/RigPanel.cpp" line="253"/>
+        <location filename="../app/RigPanel.cpp" line="217"/>
+        <location filename="../app/RigPanel.cpp" line="228"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="243"/>
+        <location filename="../app/RigPanel.cpp" line="218"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="254"/>
+        <location filename="../app/RigPanel.cpp" line="229"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="298"/>
+        <location filename="../app/RigPanel.cpp" line="277"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="300"/>
+        <location filename="../app/RigPanel.cpp" line="279"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="302"/>
+        <location filename="../app/RigPanel.cpp" line="281"/>
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="305"/>
+        <location filename="../app/RigPanel.cpp" line="284"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="308"/>
+        <location filename="../app/RigPanel.cpp" line="287"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="330"/>
+        <location filename="../app/RigPanel.cpp" line="309"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="358"/>
+        <location filename="../app/RigPanel.cpp" line="337"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="393"/>
+        <location filename="../app/RigPanel.cpp" line="372"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="388"/>
+        <location filename="../app/RigPanel.cpp" line="367"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="377"/>
+        <location filename="../app/RigPanel.cpp" line="356"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="406"/>
+        <location filename="../app/RigPanel.cpp" line="385"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="415"/>
+        <location filename="../app/RigPanel.cpp" line="394"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="420"/>
+        <location filename="../app/RigPanel.cpp" line="399"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="423"/>
+        <location filename="../app/RigPanel.cpp" line="402"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="425"/>
+        <location filename="../app/RigPanel.cpp" line="404"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="477"/>
+        <location filename="../app/RigPanel.cpp" line="456"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="494"/>
+        <location filename="../app/RigPanel.cpp" line="473"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="515"/>
-        <location filename="../app/RigPanel.cpp" line="527"/>
+        <location filename="../app/RigPanel.cpp" line="494"/>
+        <location filename="../app/RigPanel.cpp" line="506"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="516"/>
+        <location filename="../app/RigPanel.cpp" line="495"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1323,232 +1361,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="537"/>
+        <location filename="../app/RigPanel.cpp" line="516"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="557"/>
+        <location filename="../app/RigPanel.cpp" line="536"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="560"/>
+        <location filename="../app/RigPanel.cpp" line="539"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="562"/>
+        <location filename="../app/RigPanel.cpp" line="541"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
-        <source>&apos;%1&apos; is not a number</source>
-        <translation>「%1」不是數字</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="658"/>
+        <location filename="../app/RigPanel.cpp" line="573"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="659"/>
+        <location filename="../app/RigPanel.cpp" line="574"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="660"/>
+        <location filename="../app/RigPanel.cpp" line="575"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="661"/>
+        <location filename="../app/RigPanel.cpp" line="576"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="667"/>
+        <location filename="../app/RigPanel.cpp" line="582"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="668"/>
+        <location filename="../app/RigPanel.cpp" line="583"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="669"/>
+        <location filename="../app/RigPanel.cpp" line="584"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="670"/>
+        <location filename="../app/RigPanel.cpp" line="585"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="671"/>
+        <location filename="../app/RigPanel.cpp" line="586"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="672"/>
+        <location filename="../app/RigPanel.cpp" line="587"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="674"/>
+        <location filename="../app/RigPanel.cpp" line="589"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="676"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="677"/>
+        <location filename="../app/RigPanel.cpp" line="592"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="678"/>
+        <location filename="../app/RigPanel.cpp" line="593"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="679"/>
+        <location filename="../app/RigPanel.cpp" line="594"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="680"/>
+        <location filename="../app/RigPanel.cpp" line="595"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="681"/>
+        <location filename="../app/RigPanel.cpp" line="596"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="682"/>
+        <location filename="../app/RigPanel.cpp" line="597"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="685"/>
+        <location filename="../app/RigPanel.cpp" line="600"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="686"/>
+        <location filename="../app/RigPanel.cpp" line="601"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="687"/>
+        <location filename="../app/RigPanel.cpp" line="602"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="689"/>
+        <location filename="../app/RigPanel.cpp" line="604"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="690"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="691"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="692"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="693"/>
+        <location filename="../app/RigPanel.cpp" line="608"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="694"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="695"/>
+        <location filename="../app/RigPanel.cpp" line="610"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="696"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="697"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>CH</source>
-        <translation>通道</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>trim [µs]</source>
-        <translation>微調 [µs]</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>min [µs]</source>
-        <translation>最小 [µs]</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>max [µs]</source>
-        <translation>最大 [µs]</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>reversed</source>
-        <translation>反向</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="701"/>
-        <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
-        <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="703"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="705"/>
+        <location filename="../app/RigPanel.cpp" line="615"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="707"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="709"/>
+        <location filename="../app/RigPanel.cpp" line="619"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="711"/>
+        <location filename="../app/RigPanel.cpp" line="621"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
