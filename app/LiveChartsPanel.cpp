@@ -1,6 +1,6 @@
 #include "app/LiveChartsPanel.h"
 
-#include "app/ChartDecimation.h"
+#include "app/plot/ChartDecimation.h"
 #include "core/FileIo.h"
 
 #include <QChart>
@@ -250,7 +250,7 @@ void LiveChartsPanel::redraw() {
                                const QVector<const QVector<QPointF>*>& data) {
         double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
         for (int i = 0; i < series.size(); ++i) {
-            const QVector<QPointF> points = decimateMinMax(*data[i], kBuckets);
+            const QVector<QPointF> points = plot::decimateMinMax(*data[i], kBuckets);
             for (const QPointF& p : points) {
                 x0 = std::min(x0, p.x());
                 x1 = std::max(x1, p.x());

@@ -2,10 +2,10 @@
 #include "app/cli/CliSupport.h"
 #include "app/cli/CommandTable.h"
 
+#include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
-#include <QGuiApplication>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -41,8 +41,8 @@ QString describeCommands() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
-    // A GUI application only so that plots can lay out text; the offscreen platform means no
-    // window and no display are ever needed.
+    // A widgets application only because the figures are drawn with QtCharts, which is made of
+    // widgets; the offscreen platform means no window and no display are ever needed.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
     }
@@ -54,14 +54,14 @@ int main(int argc, char* argv[]) {
         ::mkdir(runtime.constData(), 0700);
         qputenv("XDG_RUNTIME_DIR", runtime);
     }
-    // The GUI application takes options such as --style and --platform out of argv for itself;
+    // The application takes options such as --style and --platform out of argv for itself;
     // every argument here is the command's (demo --style), so it sees only the program name.
     QStringList arguments;
     for (int i = 0; i < argc; ++i) {
         arguments << QString::fromLocal8Bit(argv[i]);
     }
     int applicationArgc = 1;
-    QGuiApplication application(applicationArgc, argv);
+    QApplication application(applicationArgc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));
     QCoreApplication::setApplicationName(QStringLiteral("prisca-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PRISCA_VERSION));

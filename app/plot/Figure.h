@@ -1,9 +1,9 @@
 #pragma once
 
-// Scientific figures as plain data, rendered with QPainter to an image, a PNG or an SVG file.
-// Never opens a window: QtGui and QtSvg only. A QGuiApplication must exist (fonts need one; the
-// command line creates it on the "offscreen" platform). Rendering is reentrant: any thread may
-// render its own Figure once the application object exists.
+// Scientific figures as plain data, drawn with QtCharts (FigureScene: one QChart per panel) to
+// an image, a PNG or an SVG file. Never opens a window, but QtCharts is made of widgets: a
+// QApplication must exist (the command line creates one on the "offscreen" platform), and
+// figures are rendered on its thread only.
 
 #include <QColor>
 #include <QImage>
@@ -87,8 +87,9 @@ struct Axes {
     /// One unit of x is as long as one unit of y (trajectories): the range is widened along one
     /// axis to fill the panel, never distorted. Ignored with logY.
     bool equalAspect = false;
-    bool logY = false;   ///< Logarithmic y; ticks at powers of ten.
-    bool legend = true;  ///< Draws a legend when some line or band has a label.
+    /// Logarithmic y, ticks at powers of ten: the range is widened to whole decades.
+    bool logY = false;
+    bool legend = true;  ///< A legend below the panel when some line or band has a label.
     std::vector<Band> bands;
     std::vector<Line> lines;
     std::vector<Shape> shapes;
@@ -105,38 +106,14 @@ struct Figure {
     std::vector<Axes> panels;
 };
 
-/// Where a panel landed in the rendered image, for tests and mouse-to-data mapping.
-struct PanelGeometry {
-    QRectF area;        ///< The plot area [px]
-    double xMin = 0.0;  ///< Data x at area.left(), after equal-aspect widening.
-    double xMax = 1.0;  ///< Data x at area.right().
-    double yMin = 0.0;  ///< Data y at area.bottom().
-    double yMax = 1.0;  ///< Data y at area.top().
-    bool logY = false;  ///< y maps logarithmically.
-};
-
 /// Renders to path; the format comes from the extension (.png or .svg, any case). The file is
 /// replaced atomically. False and *error (naming the path) on an unknown extension, an empty
-/// figure size or a file that cannot be written. error may be null.
+/// figure size, no QApplication or a file that cannot be written. error may be null.
 bool saveFigure(const Figure& figure, const QString& path, QString* error);
 
-/// Renders into an ARGB32 image of figure.size (null for an empty or absurd size, > 16384 px).
+/// Renders into an ARGB32 image of figure.size (null for an empty or absurd size, > 16384 px,
+/// or without a QApplication).
 QImage renderFigure(const Figure& figure);
-
-/// The panels' plot areas and data ranges exactly as renderFigure lays them out.
-std::vector<PanelGeometry> layoutFigure(const Figure& figure);
-
-/// Maps a data point to image pixels in a panel (NaN for y <= 0 on a log axis).
-QPointF toPixel(const PanelGeometry& panel, QPointF data);
-
-/// "Nice" tick values in [lo, hi]: multiples of 1, 2 or 5 times a power of ten, about target
-/// of them (at least 2 for a non-empty span). Empty for non-finite input.
-std::vector<double> niceTicks(double lo, double hi, int target);
-
-/// Major ticks of a logarithmic axis over [lo, hi] (lo > 0): powers of ten, every k-th decade
-/// so there are at most about target; over fewer than three powers of ten, 1, 2 and 5 times
-/// powers of ten if at most target of them fit, else (within a decade) nice ticks.
-std::vector<double> logTicks(double lo, double hi, int target);
 
 /// The i-th colour of the default palette (a ten-colour categorical palette); wraps around.
 QColor paletteColor(int index);

@@ -1,7 +1,6 @@
 // The operator's application driven offscreen through its real widgets: run PRISCA on the
 // simulated slide-car, E-STOP, pause, chart export read back, sessions saved and opened, bad
 // files answered with a message box.
-#include "app/ChartDecimation.h"
 #include "app/ControllerPanel.h"
 #include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
@@ -14,6 +13,7 @@
 #include "app/RunController.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
+#include "app/plot/ChartDecimation.h"
 #include "core/DemonstrationCsv.h"
 #include "core/PriscaController.h"
 #include "devices/SyntheticCamera.h"
@@ -113,7 +113,7 @@ class TestGuiRun : public QObject {
         }
         points[54321].setY(25.0);   // one spike up
         points[77777].setY(-30.0);  // one down
-        const QVector<QPointF> drawn = decimateMinMax(points, 500);
+        const QVector<QPointF> drawn = plot::decimateMinMax(points, 500);
         QVERIFY(drawn.size() <= 4 * 500);
         QVERIFY(drawn.size() >= 500);
         double high = -1e9, low = 1e9;
@@ -130,7 +130,7 @@ class TestGuiRun : public QObject {
         QCOMPARE(drawn.back(), points.back());
         // Short series pass through untouched.
         const QVector<QPointF> few = {{0, 1}, {1, 2}, {2, 0}};
-        QCOMPARE(decimateMinMax(few, 500), few);
+        QCOMPARE(plot::decimateMinMax(few, 500), few);
     }
 
     void record_drivingWithTheKeyboardMakesTheDemonstration() {

@@ -1,8 +1,8 @@
-#include "app/ChartDecimation.h"
+#include "app/plot/ChartDecimation.h"
 
 #include <algorithm>
 
-namespace prisca::app {
+namespace prisca::app::plot {
 
 QVector<QPointF> decimateMinMax(const QVector<QPointF>& points, int buckets) {
     if (buckets <= 0 || points.size() <= 4 * buckets) {
@@ -46,4 +46,4 @@ QVector<QPointF> decimateMinMax(const QVector<QPointF>& points, int buckets) {
     return out;
 }
 
-}  // namespace prisca::app
+}  // namespace prisca::app::plot
