@@ -1,5 +1,6 @@
 #include "devices/RigLoop.h"
 
+#include "core/DeviationModel.h"
 #include "devices/TransmitterLink.h"
 
 #include <QLoggingCategory>
@@ -17,10 +18,10 @@ Eigen::VectorXd PoseStateEstimator::update(const PlanarPose& pose, std::int64_t 
         if (dt > 1e-4 && dt < 0.5) {
             const double dx = (pose.x - last_->x) / dt;
             const double dy = (pose.y - last_->y) / dt;
-            const double r = std::remainder(pose.heading - last_->heading, 2.0 * M_PI) / dt;
+            const double r = std::remainder(pose.heading - last_->heading, 2.0 * core::kPi) / dt;
             // Body frame at the mid-heading of the interval.
-            const double mid =
-                last_->heading + 0.5 * std::remainder(pose.heading - last_->heading, 2.0 * M_PI);
+            const double mid = last_->heading +
+                               0.5 * std::remainder(pose.heading - last_->heading, 2.0 * core::kPi);
             const double c = std::cos(mid), s = std::sin(mid);
             const Eigen::Vector3d measured(c * dx + s * dy, -s * dx + c * dy, r);
             rates_ += smoothing_ * (measured - rates_);

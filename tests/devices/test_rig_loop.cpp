@@ -1,0 +1,198 @@
+// The rig loop one frame at a time: the state estimator's body rates from the frames' own
+// timestamps, and tracker -> controller -> link with failsafe on a lost pose, a bad action or a
+// car that left the demonstration. The link writes to a pseudo-terminal.
+#include "devices/RigLoop.h"
+
+#include "core/DeviationModel.h"
+#include "devices/SyntheticCamera.h"
+#include "devices/TransmitterLink.h"
+
+#include <QtTest>
+
+#include <fcntl.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace prisca;
+using namespace prisca::devices;
+
+namespace {
+
+struct Pty {
+    int master = -1;
+    int slave = -1;
+    QString path;
+    Pty() {
+        char name[256] = {};
+        termios raw{};
+        cfmakeraw(&raw);
+        if (openpty(&master, &slave, name, &raw, nullptr) == 0) {
+            path = QString::fromLocal8Bit(name);
+            fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+        }
+    }
+    ~Pty() {
+        if (master >= 0) {
+            ::close(master);
+        }
+        if (slave >= 0) {
+            ::close(slave);
+        }
+    }
+    void drain() const {
+        char buffer[4096];
+        while (::read(master, buffer, sizeof buffer) > 0) {
+        }
+    }
+};
+
+/// Returns a fixed action and remembers the states it saw; its deviation is the state's
+/// distance from `reference` in x, y (what the lost-track guard reads).
+class Recorder : public core::Controller {
+  public:
+    QString name() const override { return QStringLiteral("recorder"); }
+    void reset(core::ResetMode) override { states.clear(); }
+    const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& s) override {
+        states.push_back(s);
+        record_.action = action;
+        record_.referenceAction = Eigen::Vector2d::Zero();
+        record_.deviation = Eigen::VectorXd::Zero(s.size());
+        record_.deviation.head(2) = s.head(2) - reference;
+        return record_;
+    }
+    std::unique_ptr<core::Controller> clone() const override {
+        return std::make_unique<Recorder>(*this);
+    }
+    Eigen::Vector2d action{0.5, -0.2};
+    Eigen::Vector2d reference{0.0, 0.0};
+    std::vector<Eigen::VectorXd> states;
+
+  private:
+    core::ControlStep record_;
+};
+
+CameraFrame frameAt(const std::optional<PlanarPose>& pose, std::int64_t ns) {
+    static const FloorCalibration camera = syntheticCeilingCamera();
+    CameraFrame frame;
+    frame.steadyNs = ns;
+    frame.image = pose ? renderLeds(*pose, camera, {}, LedGeometry{}, 1)
+                       : cv::Mat(480, 640, CV_8UC1, cv::Scalar(0));
+    return frame;
+}
+
+}  // namespace
+
+class TestRigLoop : public QObject {
+    Q_OBJECT
+  private slots:
+    void estimator_bodyRatesFromUnevenFrameTimes() {
+        PoseStateEstimator estimator;
+        // Heading 90 degrees, driving along +y at 2 m/s while turning at 0.5 rad/s, with frames
+        // 20, 30 and 25 ms apart (dropped and late frames): body rates vx = 2, vy = 0, r = 0.5.
+        const int intervals[] = {20, 30, 25};
+        double t = 0.0;
+        std::int64_t ns = 1'000'000'000;
+        Eigen::VectorXd state;
+        for (int k = 0; k < 30; ++k) {
+            // Position integrated exactly for a constant-speed arc.
+            const double heading = core::kPi / 2 + 0.5 * t;
+            const double x = (2.0 / 0.5) * (std::sin(heading) - 1.0);
+            const double y = (2.0 / 0.5) * (-std::cos(heading));
+            state = estimator.update({x, y, std::remainder(heading, 2 * core::kPi)}, ns);
+            const int ms = intervals[k % 3];
+            t += ms * 1e-3;
+            ns += ms * 1'000'000LL;
+        }
+        QVERIFY2(std::abs(state[3] - 2.0) < 1e-3, qPrintable(QString::number(state[3])));
+        QVERIFY2(std::abs(state[4]) < 1e-3, qPrintable(QString::number(state[4])));
+        QVERIFY2(std::abs(state[5] - 0.5) < 1e-3, qPrintable(QString::number(state[5])));
+        // Heading wraps through +-pi without a spike in the yaw rate.
+        PoseStateEstimator wrap(1.0);
+        wrap.update({0.0, 0.0, core::kPi - 0.01}, 0);
+        const Eigen::VectorXd across = wrap.update({0.0, 0.0, -core::kPi + 0.01}, 20'000'000);
+        QVERIFY2(std::abs(across[5] - 1.0) < 1e-9, qPrintable(QString::number(across[5])));
+        // A gap of half a second or more starts the rates afresh.
+        const Eigen::VectorXd gap = wrap.update({1.0, 0.0, -core::kPi + 0.01}, 600'000'000);
+        QCOMPARE(gap[3], 0.0);
+        QCOMPARE(gap[5], 0.0);
+    }
+
+    void loop_tracksStepsAndCommandsThenFailsafeOnNoPoseBadActionOrLostTrack() {
+        Pty pty;
+        QVERIFY(!pty.path.isEmpty());
+        TransmitterLink link;
+        LinkSettings settings;
+        settings.port = pty.path;
+        settings.sendOnCommand = true;
+        settings.staleAfter = 30.0;  // one command holds for the whole test
+        link.start(settings);
+        LinkStatus status;
+        connect(&link, &TransmitterLink::statusChanged,
+                [&status](const LinkStatus& s) { status = s; });
+        QTRY_VERIFY_WITH_TIMEOUT(status.connected, 5000);
+
+        auto owned = std::make_unique<Recorder>();
+        Recorder* controller = owned.get();
+        RigLoop loop(syntheticCeilingCamera(), TrackerSettings{}, std::move(owned),
+                     ChannelMap::car(), link);
+        loop.setLostTrackDistance(1.0);
+        loop.startTrial(core::ResetMode::Cold);
+
+        // A car in view: tracked, its state handed to the controller, the command sent.
+        const PlanarPose pose{1.5, 0.4, 0.3};
+        controller->reference = Eigen::Vector2d(pose.x, pose.y);
+        std::int64_t ns = steadyNowNs();
+        RigStep step = loop.onFrame(frameAt(pose, ns));
+        QVERIFY(step.pose.has_value());
+        QVERIFY2(std::hypot(step.pose->x - pose.x, step.pose->y - pose.y) < 0.01,
+                 qPrintable(QStringLiteral("%1 %2").arg(step.pose->x).arg(step.pose->y)));
+        QVERIFY(std::abs(step.pose->heading - pose.heading) < 1.0 * core::kPi / 180.0);
+        QCOMPARE(controller->states.size(), size_t(1));
+        QCOMPARE(controller->states[0].head(3), step.state.head(3));
+        QCOMPARE(step.action, controller->action);
+        QVERIFY(!step.fault);
+        QVERIFY(step.commandNs >= step.frameNs);
+        QTRY_COMPARE_WITH_TIMEOUT(status.failsafe, FailsafeReason::None, 3000);
+
+        // No car in the frame: no pose, no controller step, failsafe (pose lost).
+        ns += 25'000'000;
+        step = loop.onFrame(frameAt(std::nullopt, ns));
+        QVERIFY(!step.pose);
+        QCOMPARE(controller->states.size(), size_t(1));
+        QTRY_COMPARE_WITH_TIMEOUT(status.failsafe, FailsafeReason::PoseLost, 3000);
+
+        // A non-finite action: a fault, failsafe.
+        controller->action = Eigen::Vector2d(std::numeric_limits<double>::quiet_NaN(), 0.0);
+        ns += 25'000'000;
+        step = loop.onFrame(frameAt(pose, ns));
+        QVERIFY(step.fault);
+        QTRY_COMPARE_WITH_TIMEOUT(status.failsafe, FailsafeReason::ControllerFault, 3000);
+
+        // A new trial clears it; then a car 1.6 m from its reference trips the lost-track guard,
+        // and the failsafe stays for the rest of the trial even back on track.
+        link.resetEmergencyStop();
+        controller->action = Eigen::Vector2d(0.3, 0.0);
+        loop.startTrial(core::ResetMode::WarmStart);
+        ns += 25'000'000;
+        step = loop.onFrame(frameAt(pose, ns));
+        QVERIFY(!step.fault);
+        controller->reference = Eigen::Vector2d(pose.x + 1.6, pose.y);
+        ns += 25'000'000;
+        QVERIFY(loop.onFrame(frameAt(pose, ns)).fault);
+        controller->reference = Eigen::Vector2d(pose.x, pose.y);
+        ns += 25'000'000;
+        QVERIFY(loop.onFrame(frameAt(pose, ns)).fault);
+        loop.startTrial(core::ResetMode::WarmStart);
+        ns += 25'000'000;
+        QVERIFY(!loop.onFrame(frameAt(pose, ns)).fault);
+        link.stop();
+        pty.drain();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRigLoop)
+#include "test_rig_loop.moc"
