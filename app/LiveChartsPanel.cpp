@@ -3,6 +3,7 @@
 #include "app/plot/ChartDecimation.h"
 #include "core/FileIo.h"
 
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
@@ -37,6 +38,37 @@ void attachAxes(QChart* chart, QLineSeries* series) {
     }
 }
 
+// About five round ticks (1, 2 or 5 times a power of ten apart) over the axis's range, placed
+// and labelled here: QValueAxis's dynamic ticks add the interval up from the first tick, and the
+// rounding made a zero tick read "-5.55112e-17".
+void labelRoundTicks(QCategoryAxis* axis) {
+    const double lo = axis->min();
+    const double hi = axis->max();
+    for (const QString& label : axis->categoriesLabels()) {
+        axis->remove(label);
+    }
+    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) {
+        return;
+    }
+    const double raw = (hi - lo) / 5.0;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / power < 2.0 ? power : raw / power < 5.0 ? 2 * power : 5 * power;
+    const double first = std::ceil(lo / step - 1e-9);
+    const double last = std::floor(hi / step + 1e-9);
+    axis->setStartValue(lo - 1e-9 * (hi - lo));
+    for (double k = first; k <= last && k - first < 50; k += 1.0) {
+        const double value = std::abs(k) < 0.5 ? 0.0 : k * step;
+        axis->append(QString::number(value, 'g', 10), value);
+    }
+}
+
+QCategoryAxis* makeAxis() {
+    auto* axis = new QCategoryAxis;
+    axis->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    QObject::connect(axis, &QValueAxis::rangeChanged, axis, [axis] { labelRoundTicks(axis); });
+    return axis;
+}
+
 void setRange(QChart* chart, double x0, double x1, double y0, double y1) {
     const auto horizontal = chart->axes(Qt::Horizontal);
     const auto vertical = chart->axes(Qt::Vertical);
@@ -46,28 +78,14 @@ void setRange(QChart* chart, double x0, double x1, double y0, double y1) {
     if (!(x1 > x0)) {
         x1 = x0 + 1.0;
     }
-    if (!(y1 > y0)) {
+    // A span lost in the values' rounding counts as none.
+    if (!(y1 - y0 > 1e-12 * std::max({1.0, std::abs(y0), std::abs(y1)}))) {
         y0 -= 0.5;
         y1 += 0.5;
     }
     const double pad = 0.05 * (y1 - y0);
     horizontal.first()->setRange(x0, x1);
     vertical.first()->setRange(y0 - pad, y1 + pad);
-    // Round tick values (0, 10, 20 s rather than 0, 6.5, 13 s), about five per axis, on the
-    // data's own range.
-    for (QAbstractAxis* axis : {horizontal.first(), vertical.first()}) {
-        if (auto* value = qobject_cast<QValueAxis*>(axis)) {
-            const double span = value->max() - value->min();
-            const double raw = span / 5.0;
-            const double power = std::pow(10.0, std::floor(std::log10(raw)));
-            const double step = raw / power < 2.0   ? power
-                                : raw / power < 5.0 ? 2 * power
-                                                    : 5 * power;
-            value->setTickType(QValueAxis::TicksDynamic);
-            value->setTickAnchor(0.0);
-            value->setTickInterval(step);
-        }
-    }
 }
 
 }  // namespace
@@ -92,12 +110,8 @@ LiveChartsPanel::LiveChartsPanel(QWidget* parent)
     for (QChart* chart : {errorChart_, thetaChart_, actionChart_}) {
         chart->legend()->setAlignment(Qt::AlignRight);
         chart->setMargins(QMargins(4, 4, 4, 4));
-        auto* x = new QValueAxis;
-        auto* y = new QValueAxis;
-        x->setLabelFormat(QStringLiteral("%g"));
-        y->setLabelFormat(QStringLiteral("%g"));
-        chart->addAxis(x, Qt::AlignBottom);
-        chart->addAxis(y, Qt::AlignLeft);
+        chart->addAxis(makeAxis(), Qt::AlignBottom);
+        chart->addAxis(makeAxis(), Qt::AlignLeft);
     }
     errorSeries_->setPen(QPen(QColor(0xd6, 0x27, 0x28, 110), 1));
     smoothSeries_->setPen(QPen(QColor(0x8b, 0x00, 0x00), 2));

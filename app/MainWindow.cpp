@@ -15,18 +15,28 @@
 #include "app/TaskPanel.h"
 #include "sim/PlantCatalog.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTextEdit>
+#include <QToolBar>
+#include <QToolButton>
 
 namespace prisca::app {
 
@@ -90,6 +100,8 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
 
     createPanels();
     createMenus();
+    createToolBar();
+    qApp->installEventFilter(this);
     statusBar()->addPermanentWidget(versionLabel_);
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
     connect(run_, &RunController::progress, this,
@@ -108,7 +120,42 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    qApp->removeEventFilter(this);
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::KeyPress) {
+        return false;
+    }
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if ((key->key() != Qt::Key_Space && key->key() != Qt::Key_Escape) ||
+        (key->modifiers() & ~Qt::KeypadModifier) != Qt::NoModifier) {
+        return false;
+    }
+    auto* widget = qobject_cast<QWidget*>(watched);
+    if (!widget || QApplication::activePopupWidget() || QApplication::activeModalWidget()) {
+        return false;  // Esc closes the popup or dialog; nothing else
+    }
+    // This window's keys only (a floating dock is a window of its own, but ours).
+    QWidget* top = widget->window();
+    if (top != this && !(qobject_cast<QDockWidget*>(top) && top->parentWidget() == this)) {
+        return false;
+    }
+    if (key->key() == Qt::Key_Space) {
+        QWidget* focus = widget;  // the key goes to the focus widget first
+        const auto* combo = qobject_cast<QComboBox*>(focus);
+        if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
+            qobject_cast<QTextEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus) ||
+            (combo && combo->isEditable())) {
+            return false;  // a space typed into a text field
+        }
+    }
+    if (!key->isAutoRepeat()) {
+        runPanel_->emergencyAction()->trigger();
+    }
+    return true;
+}
 
 void MainWindow::createPanels() {
     arena_ = new ArenaView(this);
@@ -179,6 +226,47 @@ int MainWindow::parameterCount() const {
     return features.featureCount() * features.channelCount();
 }
 
+void MainWindow::createToolBar() {
+    // Always visible, above every dock: run controls and the E-STOP no dock layout can cover.
+    runToolBar_ = addToolBar(QString());
+    runToolBar_->setObjectName(QStringLiteral("runToolBar"));
+    runToolBar_->setMovable(false);
+    runToolBar_->setFloatable(false);
+    runToolBar_->toggleViewAction()->setVisible(false);  // cannot be hidden by mistake
+    runToolBar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    runToolBar_->addActions(runPanel_->runActions());
+    const QStringList names = {QStringLiteral("runButton"), QStringLiteral("pauseButton"),
+                               QStringLiteral("stopButton"), QStringLiteral("resetButton")};
+    for (int i = 0; i < names.size(); ++i) {
+        runToolBar_->widgetForAction(runPanel_->runActions()[i])->setObjectName(names[i]);
+    }
+    auto* spacer = new QWidget(runToolBar_);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    runToolBar_->addWidget(spacer);
+    auto* resetEmergency = new QToolButton(runToolBar_);
+    resetEmergency->setObjectName(QStringLiteral("resetEmergencyButton"));
+    resetEmergency->setDefaultAction(runPanel_->resetEmergencyAction());
+    runToolBar_->addWidget(resetEmergency);
+    emergencyButton_ = new QPushButton(runToolBar_);
+    emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
+    emergencyButton_->setFocusPolicy(Qt::NoFocus);
+    emergencyButton_->setMinimumSize(240, 40);
+    emergencyButton_->setStyleSheet(QStringLiteral(
+        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 18px;"
+        " border: 3px solid #7f0000; border-radius: 6px; padding: 2px 16px; }"
+        "QPushButton:pressed { background: #8e0000; }"));
+    // On press, not release: the fastest the operator can ask.
+    connect(emergencyButton_, &QPushButton::pressed, runPanel_->emergencyAction(),
+            &QAction::trigger);
+    runToolBar_->addWidget(emergencyButton_);
+    const auto showEmergencyText = [this] {
+        emergencyButton_->setText(runPanel_->emergencyAction()->text());
+        emergencyButton_->setToolTip(runPanel_->emergencyAction()->toolTip());
+    };
+    connect(runPanel_->emergencyAction(), &QAction::changed, this, showEmergencyText);
+    showEmergencyText();
+}
+
 void MainWindow::createMenus() {
     fileMenu_ = menuBar()->addMenu(QString());
     fileMenu_->setObjectName(QStringLiteral("fileMenu"));
@@ -220,13 +308,14 @@ void MainWindow::createMenus() {
 
     runMenu_ = menuBar()->addMenu(QString());
     runMenu_->setObjectName(QStringLiteral("runMenu"));
-    emergencyAction_ = runMenu_->addAction(QString());
-    emergencyAction_->setObjectName(QStringLiteral("emergencyStopAction"));
-    connect(emergencyAction_, &QAction::triggered, this, [this] {
-        run_->emergencyStop();
-        recordPanel_->emergencyStop();
-        rigPanel_->emergencyStop();
-    });
+    runMenu_->addActions(runPanel_->runActions());
+    runMenu_->addSeparator();
+    runMenu_->addAction(runPanel_->emergencyAction());
+    runMenu_->addAction(runPanel_->resetEmergencyAction());
+    // The shortcuts work whatever is shown: the actions belong to the window itself.
+    addActions(runPanel_->runActions());
+    connect(runPanel_->resetEmergencyAction(), &QAction::triggered, this,
+            [this] { statusBar()->showMessage(tr("E-STOP reset"), kNoticeMs); });
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
@@ -316,7 +405,7 @@ void MainWindow::retranslateUi() {
     quitAction_->setText(tr("&Quit"));
     quitAction_->setStatusTip(tr("Close the window and leave PRISCA Lab"));
     runMenu_->setTitle(tr("&Run"));
-    emergencyAction_->setText(tr("E-STOP (Space / Esc)"));
+    runToolBar_->setWindowTitle(tr("Run"));
     viewMenu_->setTitle(tr("&View"));
     taskDock_->setWindowTitle(tr("Task"));
     recordDock_->setWindowTitle(tr("Record"));

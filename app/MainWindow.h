@@ -6,6 +6,8 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QPushButton;
+class QToolBar;
 
 namespace prisca::app {
 
@@ -49,11 +51,16 @@ class MainWindow : public QMainWindow {
 
   protected:
     void changeEvent(QEvent* event) override;
+    /// Space and Esc anywhere in the window are E-STOP, except Esc closing a popup or dialog and
+    /// Space typed into a text field; read before any widget sees the key, and independent of
+    /// which window the platform thinks is active.
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
 
   private:
     void createPanels();
     void createMenus();
+    void createToolBar();
     void retranslateUi();
     void showAbout();
     void announceLanguage(const QString& code);
@@ -92,7 +99,8 @@ class MainWindow : public QMainWindow {
     QAction* openSessionAction_ = nullptr;
     QAction* saveSessionAction_ = nullptr;
     QAction* quitAction_ = nullptr;
-    QAction* emergencyAction_ = nullptr;
+    QToolBar* runToolBar_ = nullptr;
+    QPushButton* emergencyButton_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QLabel* versionLabel_;
     QString sessionPath_;

@@ -4,6 +4,7 @@
 #include "app/RunController.h"
 #include "core/RunLogCsv.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -17,7 +18,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
-#include <QShortcut>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -44,12 +44,12 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
       sensor_(new QDoubleSpinBox(this)),
       speedLabel_(new QLabel(this)),
       speed_(new QComboBox(this)),
-      runButton_(new QPushButton(this)),
-      pauseButton_(new QPushButton(this)),
-      stopButton_(new QPushButton(this)),
-      resetButton_(new QPushButton(this)),
-      emergencyButton_(new QPushButton(this)),
-      resetEmergencyButton_(new QPushButton(this)),
+      runAction_(new QAction(this)),
+      pauseAction_(new QAction(this)),
+      stopAction_(new QAction(this)),
+      resetAction_(new QAction(this)),
+      emergencyAction_(new QAction(this)),
+      resetEmergencyAction_(new QAction(this)),
       exportLog_(new QPushButton(this)),
       status_(new QLabel(this)),
       results_(new QTableWidget(0, 4, this)) {
@@ -68,22 +68,21 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     for (int i = 0; i < speeds().size(); ++i) {
         speed_->addItem(QString(), speeds()[i]);
     }
-    runButton_->setObjectName(QStringLiteral("runButton"));
-    pauseButton_->setObjectName(QStringLiteral("pauseButton"));
-    stopButton_->setObjectName(QStringLiteral("stopButton"));
-    runButton_->setShortcut(QKeySequence(Qt::Key_F5));
-    pauseButton_->setShortcut(QKeySequence(Qt::Key_F6));
-    stopButton_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
-    resetButton_->setObjectName(QStringLiteral("resetButton"));
-    resetButton_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
-    emergencyButton_->setMinimumHeight(64);
-    emergencyButton_->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 20px;"
-        " border: 3px solid #7f0000; border-radius: 8px; }"
-        "QPushButton:pressed { background: #8e0000; }"));
-    emergencyButton_->setFocusPolicy(Qt::NoFocus);
-    resetEmergencyButton_->setObjectName(QStringLiteral("resetEmergencyButton"));
+    // The shortcuts live on actions, not on the buttons: a button's setText() replaces its
+    // shortcut with the text's mnemonic (none), which is how F5 once did nothing.
+    runAction_->setObjectName(QStringLiteral("runAction"));
+    runAction_->setShortcut(QKeySequence(Qt::Key_F5));
+    pauseAction_->setObjectName(QStringLiteral("pauseAction"));
+    pauseAction_->setShortcut(QKeySequence(Qt::Key_F6));
+    stopAction_->setObjectName(QStringLiteral("stopAction"));
+    stopAction_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    resetAction_->setObjectName(QStringLiteral("resetAction"));
+    resetAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    for (QAction* action : {runAction_, pauseAction_, stopAction_, resetAction_}) {
+        action->setShortcutContext(Qt::WindowShortcut);
+    }
+    emergencyAction_->setObjectName(QStringLiteral("emergencyStopAction"));
+    resetEmergencyAction_->setObjectName(QStringLiteral("resetEmergencyAction"));
     exportLog_->setObjectName(QStringLiteral("exportRunLog"));
     exportLog_->setEnabled(false);
     status_->setObjectName(QStringLiteral("runStatus"));
@@ -100,16 +99,8 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     form->addRow(perturbationLabel_, perturbation_);
     form->addRow(sensorLabel_, sensor_);
     form->addRow(speedLabel_, speed_);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(runButton_);
-    buttons->addWidget(pauseButton_);
-    buttons->addWidget(stopButton_);
-    buttons->addWidget(resetButton_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addLayout(buttons);
-    layout->addWidget(emergencyButton_);
-    layout->addWidget(resetEmergencyButton_);
     layout->addWidget(status_);
     layout->addWidget(results_, 1);
     layout->addWidget(exportLog_);
@@ -125,15 +116,16 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     settings.endGroup();
     run_.setSpeed(speed_->currentData().toDouble());
 
-    connect(runButton_, &QPushButton::clicked, this, &RunPanel::startRun);
-    connect(pauseButton_, &QPushButton::clicked, this, [this] {
+    connect(runAction_, &QAction::triggered, this, &RunPanel::startRun);
+    connect(pauseAction_, &QAction::triggered, this, [this] {
         if (phase_ == RunPhase::Paused) {
             run_.resume();
-        } else {
+        } else if (phase_ == RunPhase::Running) {
             run_.pause();
         }
     });
-    connect(stopButton_, &QPushButton::clicked, &run_, &RunController::stop);
+    connect(stopAction_, &QAction::triggered, &run_, &RunController::stop);
+
     connect(&run_, &RunController::runLogReady, this,
             [this](std::shared_ptr<const core::RunLog> log) {
                 exportLog_->setEnabled(log && log->rows.rows() > 0);
@@ -157,18 +149,14 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         status_->setText(tr("Run log written to %1").arg(QDir::toNativeSeparators(file)));
     });
     // Reset: stop whatever runs and start the views afresh (the next run starts cold anyway).
-    connect(resetButton_, &QPushButton::clicked, this, [this] {
+    connect(resetAction_, &QAction::triggered, this, [this] {
         run_.stop();
         results_->setRowCount(0);
         status_->clear();
         emit runStarting();
     });
-    const auto emergency = [this] {
-        run_.emergencyStop();
-        emit emergencyStopRequested();
-    };
-    connect(emergencyButton_, &QPushButton::pressed, this, emergency);
-    connect(resetEmergencyButton_, &QPushButton::clicked, this, [this] {
+    connect(emergencyAction_, &QAction::triggered, this, &RunPanel::emergencyStop);
+    connect(resetEmergencyAction_, &QAction::triggered, this, [this] {
         run_.resetEmergencyStop();
         emit emergencyStopReset();
     });
@@ -176,18 +164,21 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         run_.setSpeed(speed_->currentData().toDouble());
         QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());
     });
-    // E-STOP answers Space and Esc anywhere in the window, whatever has the focus.
-    for (const QKeySequence& key : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape)}) {
-        auto* shortcut = new QShortcut(key, this);
-        shortcut->setContext(Qt::WindowShortcut);
-        connect(shortcut, &QShortcut::activated, this, emergency);
-    }
     connect(&run_, &RunController::phaseChanged, this, &RunPanel::updateButtons);
     connect(&run_, &RunController::progress, status_, &QLabel::setText);
     connect(&run_, &RunController::failed, status_, &QLabel::setText);
     connect(&run_, &RunController::trialFinished, this, &RunPanel::addTrialRow);
     retranslateUi();
     updateButtons(run_.phase());
+}
+
+QList<QAction*> RunPanel::runActions() const {
+    return {runAction_, pauseAction_, stopAction_, resetAction_};
+}
+
+void RunPanel::emergencyStop() {
+    run_.emergencyStop();
+    emit emergencyStopRequested();
 }
 
 void RunPanel::startRun() {
@@ -212,12 +203,11 @@ void RunPanel::startRun() {
     request.seed = static_cast<std::uint64_t>(seed_->value());
     request.perturbation = perturbation_->value();
     request.sensor = sensor_->value();
-    request.demonstrationSource =
-        session_.demonstrationSource().isEmpty()
-            ? QStringLiteral("scripted %1, seed %2")
-                  .arg(session_.scriptedStyle())
-                  .arg(session_.scriptedSeed())
-            : session_.demonstrationSource();
+    request.demonstrationSource = session_.demonstrationSource().isEmpty()
+                                      ? QStringLiteral("scripted %1, seed %2")
+                                            .arg(session_.scriptedStyle())
+                                            .arg(session_.scriptedSeed())
+                                      : session_.demonstrationSource();
     results_->setRowCount(0);
     exportLog_->setEnabled(false);
     emit runStarting();
@@ -239,19 +229,29 @@ bool RunPanel::exportRunLog(const QString& path, QString* error) const {
 }
 
 void RunPanel::updateButtons(RunPhase phase) {
-    phase_ = phase;
     const bool active =
         phase == RunPhase::Running || phase == RunPhase::Paused || phase == RunPhase::Training;
-    runButton_->setEnabled(phase == RunPhase::Idle);
-    pauseButton_->setEnabled(phase == RunPhase::Running || phase == RunPhase::Paused);
-    stopButton_->setEnabled(active);
-    resetEmergencyButton_->setVisible(phase == RunPhase::EmergencyStopped);
-    pauseButton_->setText(phase == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
+    const RunPhase previous = phase_;
+    phase_ = phase;
+    runAction_->setEnabled(phase == RunPhase::Idle);
+    pauseAction_->setEnabled(phase == RunPhase::Running || phase == RunPhase::Paused);
+    stopAction_->setEnabled(active);
+    resetEmergencyAction_->setEnabled(phase == RunPhase::EmergencyStopped);
+    retranslateRunActions();
     if (phase == RunPhase::EmergencyStopped) {
         status_->setText(tr("E-STOP engaged: the run is stopped. Reset E-STOP to run again."));
     } else if (phase == RunPhase::Training) {
         status_->setText(tr("Training before the run..."));
+    } else if (previous == RunPhase::EmergencyStopped) {
+        status_->setText(tr("E-STOP reset: ready to run."));
     }
+}
+
+void RunPanel::retranslateRunActions() {
+    runAction_->setText(tr("Run (F5)"));
+    pauseAction_->setText(phase_ == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
+    stopAction_->setText(tr("Stop (Shift+F5)"));
+    resetAction_->setText(tr("Reset (Ctrl+R)"));
 }
 
 void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
@@ -298,19 +298,19 @@ void RunPanel::retranslateUi() {
     speed_->setItemText(0, tr("Real time (1x)"));
     speed_->setItemText(1, tr("10x"));
     speed_->setItemText(2, tr("As fast as possible"));
-    runButton_->setText(tr("Run (F5)"));
-    pauseButton_->setText(phase_ == RunPhase::Paused ? tr("Resume (F6)") : tr("Pause (F6)"));
-    stopButton_->setText(tr("Stop (Shift+F5)"));
-    resetButton_->setText(tr("Reset"));
+    retranslateRunActions();
     exportLog_->setText(tr("Export run log..."));
-    exportLog_->setToolTip(tr("Every control step of the last run's finished trials, in the format "
-                              "of prisca-cli run --out (state, observation, reference, error, u, "
-                              "u*, cost, θ)"));
-    resetButton_->setToolTip(tr("Stop the run and clear the trails, charts and results (Ctrl+R)"));
-    emergencyButton_->setText(tr("E-STOP (Space / Esc)"));
-    emergencyButton_->setToolTip(
-        tr("Stops the run at once, within one control period, and stays engaged until reset."));
-    resetEmergencyButton_->setText(tr("Reset E-STOP"));
+    exportLog_->setToolTip(
+        tr("Every control step of the last run's finished trials, in the format "
+           "of prisca-cli run --out (state, observation, reference, error, u, "
+           "u*, cost, θ)"));
+    resetAction_->setToolTip(tr("Stop the run and clear the trails, charts and results (Ctrl+R)"));
+    emergencyAction_->setText(tr("E-STOP (Space / Esc)"));
+    emergencyAction_->setToolTip(
+        tr("Stops the run, a recording and the rig at once (within one control period) and stays "
+           "engaged until reset. Space outside text fields, or Esc."));
+    resetEmergencyAction_->setText(tr("Reset E-STOP"));
+    resetEmergencyAction_->setToolTip(tr("Release the E-STOP latch so a run can start again"));
     // Short headings (the table is narrow); the tooltips say them in full.
     results_->setHorizontalHeaderLabels(
         {tr("Trial"), tr("Δp [cm]"), tr("Δψ [deg]"),

@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QAction;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -17,8 +18,10 @@ class LabSession;
 class RunController;
 
 /// Run, pause, stop and reset a run of the session's method on the simulated plant; trials,
-/// seed, perturbation and sensor levels; simulation speed (1x, 10x, as fast as possible); the
-/// big red E-STOP (Space or Esc anywhere in the window) and its reset; each trial's result.
+/// seed, perturbation and sensor levels; simulation speed (1x, 10x, as fast as possible); each
+/// trial's result. Run (F5), Pause (F6), Stop (Shift+F5), Reset (Ctrl+R), E-STOP and its reset
+/// are actions (runActions()) the window puts in its Run menu and always-visible toolbar, so
+/// their shortcuts work whatever has the focus and whichever docks are shown.
 class RunPanel : public QWidget {
     Q_OBJECT
   public:
@@ -31,6 +34,14 @@ class RunPanel : public QWidget {
     bool exportRunLog(const QString& path, QString* error) const;
     /// Speeds offered, simulated seconds per wall second (0 = as fast as possible).
     static QList<double> speeds() { return {1.0, 10.0, 0.0}; }
+
+    /// Run, Pause/Resume, Stop, Reset, with their shortcuts, enabled as the run's phase allows.
+    QList<QAction*> runActions() const;
+    /// E-STOP (the window sends Space and Esc to it) and its reset (enabled only while latched).
+    QAction* emergencyAction() const { return emergencyAction_; }
+    QAction* resetEmergencyAction() const { return resetEmergencyAction_; }
+    /// E-STOP now: the run stops within one control period and stays stopped until reset.
+    void emergencyStop();
 
   signals:
     /// A run is about to start, or Reset was pressed: views clear their trails and charts.
@@ -45,6 +56,7 @@ class RunPanel : public QWidget {
 
   private:
     void retranslateUi();
+    void retranslateRunActions();
     void updateButtons(RunPhase phase);
     void addTrialRow(int trial, const sim::TrialSummary& summary);
 
@@ -61,12 +73,12 @@ class RunPanel : public QWidget {
     QDoubleSpinBox* sensor_;
     QLabel* speedLabel_;
     QComboBox* speed_;
-    QPushButton* runButton_;
-    QPushButton* pauseButton_;
-    QPushButton* stopButton_;
-    QPushButton* resetButton_;
-    QPushButton* emergencyButton_;
-    QPushButton* resetEmergencyButton_;
+    QAction* runAction_;
+    QAction* pauseAction_;
+    QAction* stopAction_;
+    QAction* resetAction_;
+    QAction* emergencyAction_;
+    QAction* resetEmergencyAction_;
     QPushButton* exportLog_;  // the last run's log to CSV
     QLabel* status_;
     QTableWidget* results_;

@@ -589,7 +589,7 @@
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="179"/>
+        <location filename="../app/LabSession.cpp" line="180"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
@@ -630,57 +630,57 @@
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="341"/>
+        <location filename="../app/LabSession.cpp" line="340"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="378"/>
+        <location filename="../app/LabSession.cpp" line="377"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="384"/>
+        <location filename="../app/LabSession.cpp" line="383"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="395"/>
+        <location filename="../app/LabSession.cpp" line="394"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="422"/>
+        <location filename="../app/LabSession.cpp" line="421"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="436"/>
+        <location filename="../app/LabSession.cpp" line="435"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="462"/>
+        <location filename="../app/LabSession.cpp" line="461"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="466"/>
+        <location filename="../app/LabSession.cpp" line="465"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="473"/>
+        <location filename="../app/LabSession.cpp" line="472"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="478"/>
+        <location filename="../app/LabSession.cpp" line="477"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="498"/>
+        <location filename="../app/LabSession.cpp" line="497"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -696,109 +696,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="351"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="365"/>
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="358"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="362"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="372"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="376"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="359"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="373"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="367"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="371"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="381"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="368"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="382"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="398"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="386"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="400"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="387"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="388"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="405"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="391"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="405"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="393"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="407"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="409"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="396"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="410"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="397"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="411"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="398"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="412"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="413"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="400"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="414"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="415"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="416"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -806,40 +806,46 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="88"/>
+        <location filename="../app/MainWindow.cpp" line="98"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="98"/>
-        <location filename="../app/MainWindow.cpp" line="325"/>
+        <location filename="../app/MainWindow.cpp" line="110"/>
+        <location filename="../app/MainWindow.cpp" line="408"/>
+        <location filename="../app/MainWindow.cpp" line="414"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="190"/>
-        <location filename="../app/MainWindow.cpp" line="252"/>
+        <location filename="../app/MainWindow.cpp" line="278"/>
+        <location filename="../app/MainWindow.cpp" line="341"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="191"/>
+        <location filename="../app/MainWindow.cpp" line="279"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="202"/>
-        <location filename="../app/MainWindow.cpp" line="271"/>
+        <location filename="../app/MainWindow.cpp" line="290"/>
+        <location filename="../app/MainWindow.cpp" line="360"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="203"/>
+        <location filename="../app/MainWindow.cpp" line="291"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="253"/>
+        <location filename="../app/MainWindow.cpp" line="318"/>
+        <source>E-STOP reset</source>
+        <translation>緊急停止已重設</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="342"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -848,142 +854,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="261"/>
+        <location filename="../app/MainWindow.cpp" line="350"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="263"/>
+        <location filename="../app/MainWindow.cpp" line="352"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="276"/>
+        <location filename="../app/MainWindow.cpp" line="365"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="312"/>
+        <location filename="../app/MainWindow.cpp" line="401"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="313"/>
+        <location filename="../app/MainWindow.cpp" line="402"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="314"/>
+        <location filename="../app/MainWindow.cpp" line="403"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="315"/>
+        <location filename="../app/MainWindow.cpp" line="404"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="316"/>
+        <location filename="../app/MainWindow.cpp" line="405"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="317"/>
+        <location filename="../app/MainWindow.cpp" line="406"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="318"/>
+        <location filename="../app/MainWindow.cpp" line="407"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="319"/>
-        <source>E-STOP (Space / Esc)</source>
-        <translation>緊急停止（空格鍵 / Esc）</translation>
-    </message>
-    <message>
-        <location filename="../app/MainWindow.cpp" line="320"/>
+        <location filename="../app/MainWindow.cpp" line="409"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="321"/>
+        <location filename="../app/MainWindow.cpp" line="410"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="322"/>
+        <location filename="../app/MainWindow.cpp" line="411"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="323"/>
+        <location filename="../app/MainWindow.cpp" line="412"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="324"/>
+        <location filename="../app/MainWindow.cpp" line="413"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="326"/>
+        <location filename="../app/MainWindow.cpp" line="415"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="327"/>
+        <location filename="../app/MainWindow.cpp" line="416"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="328"/>
+        <location filename="../app/MainWindow.cpp" line="417"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="329"/>
+        <location filename="../app/MainWindow.cpp" line="418"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="330"/>
+        <location filename="../app/MainWindow.cpp" line="419"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="331"/>
+        <location filename="../app/MainWindow.cpp" line="420"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="333"/>
+        <location filename="../app/MainWindow.cpp" line="422"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="348"/>
+        <location filename="../app/MainWindow.cpp" line="437"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="360"/>
+        <location filename="../app/MainWindow.cpp" line="449"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="362"/>
+        <location filename="../app/MainWindow.cpp" line="451"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="366"/>
+        <location filename="../app/MainWindow.cpp" line="455"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="369"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1261,98 +1262,98 @@
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="277"/>
+        <location filename="../app/RigPanel.cpp" line="276"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="279"/>
+        <location filename="../app/RigPanel.cpp" line="278"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="281"/>
+        <location filename="../app/RigPanel.cpp" line="280"/>
         <source>The rig drives a car: choose the slide-car as the target.</source>
         <translation>實機驅動的是車輛：請選擇漂移車作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="284"/>
+        <location filename="../app/RigPanel.cpp" line="283"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="287"/>
+        <location filename="../app/RigPanel.cpp" line="286"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="309"/>
+        <location filename="../app/RigPanel.cpp" line="308"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="337"/>
+        <location filename="../app/RigPanel.cpp" line="336"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="372"/>
+        <location filename="../app/RigPanel.cpp" line="371"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367"/>
+        <location filename="../app/RigPanel.cpp" line="366"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="356"/>
+        <location filename="../app/RigPanel.cpp" line="355"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="385"/>
+        <location filename="../app/RigPanel.cpp" line="384"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="394"/>
+        <location filename="../app/RigPanel.cpp" line="393"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="399"/>
+        <location filename="../app/RigPanel.cpp" line="398"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="402"/>
+        <location filename="../app/RigPanel.cpp" line="401"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="404"/>
+        <location filename="../app/RigPanel.cpp" line="403"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="456"/>
+        <location filename="../app/RigPanel.cpp" line="455"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="473"/>
+        <location filename="../app/RigPanel.cpp" line="472"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="494"/>
-        <location filename="../app/RigPanel.cpp" line="506"/>
+        <location filename="../app/RigPanel.cpp" line="493"/>
+        <location filename="../app/RigPanel.cpp" line="505"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="495"/>
+        <location filename="../app/RigPanel.cpp" line="494"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1361,197 +1362,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="516"/>
+        <location filename="../app/RigPanel.cpp" line="515"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="536"/>
+        <location filename="../app/RigPanel.cpp" line="535"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="539"/>
+        <location filename="../app/RigPanel.cpp" line="538"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="541"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="573"/>
+        <location filename="../app/RigPanel.cpp" line="572"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="574"/>
+        <location filename="../app/RigPanel.cpp" line="573"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="575"/>
+        <location filename="../app/RigPanel.cpp" line="574"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="576"/>
+        <location filename="../app/RigPanel.cpp" line="575"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="582"/>
+        <location filename="../app/RigPanel.cpp" line="581"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="583"/>
+        <location filename="../app/RigPanel.cpp" line="582"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="584"/>
+        <location filename="../app/RigPanel.cpp" line="583"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="585"/>
+        <location filename="../app/RigPanel.cpp" line="584"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="586"/>
+        <location filename="../app/RigPanel.cpp" line="585"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="587"/>
+        <location filename="../app/RigPanel.cpp" line="586"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="589"/>
+        <location filename="../app/RigPanel.cpp" line="588"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="590"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="592"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="593"/>
+        <location filename="../app/RigPanel.cpp" line="592"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="594"/>
+        <location filename="../app/RigPanel.cpp" line="593"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="595"/>
+        <location filename="../app/RigPanel.cpp" line="594"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="596"/>
+        <location filename="../app/RigPanel.cpp" line="595"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="597"/>
+        <location filename="../app/RigPanel.cpp" line="596"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="600"/>
+        <location filename="../app/RigPanel.cpp" line="599"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="601"/>
+        <location filename="../app/RigPanel.cpp" line="600"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="602"/>
+        <location filename="../app/RigPanel.cpp" line="601"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="604"/>
+        <location filename="../app/RigPanel.cpp" line="603"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="604"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="608"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="610"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="610"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="612"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="616"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1559,152 +1560,160 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="143"/>
-        <location filename="../app/RunPanel.cpp" line="153"/>
+        <location filename="../app/RunPanel.cpp" line="135"/>
+        <location filename="../app/RunPanel.cpp" line="145"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="144"/>
+        <location filename="../app/RunPanel.cpp" line="136"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="157"/>
+        <location filename="../app/RunPanel.cpp" line="149"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="230"/>
+        <location filename="../app/RunPanel.cpp" line="221"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249"/>
-        <location filename="../app/RunPanel.cpp" line="302"/>
+        <location filename="../app/RunPanel.cpp" line="253"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="249"/>
-        <location filename="../app/RunPanel.cpp" line="302"/>
+        <location filename="../app/RunPanel.cpp" line="253"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251"/>
+        <location filename="../app/RunPanel.cpp" line="243"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253"/>
+        <location filename="../app/RunPanel.cpp" line="245"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="283"/>
+        <location filename="../app/RunPanel.cpp" line="247"/>
+        <source>E-STOP reset: ready to run.</source>
+        <translation>緊急停止已重設：可以運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="255"/>
+        <source>Reset (Ctrl+R)</source>
+        <translation>重設 (Ctrl+R)</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="284"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="284"/>
+        <location filename="../app/RunPanel.cpp" line="285"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="285"/>
+        <location filename="../app/RunPanel.cpp" line="286"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="287"/>
+        <location filename="../app/RunPanel.cpp" line="288"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="289"/>
+        <location filename="../app/RunPanel.cpp" line="290"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="291"/>
+        <location filename="../app/RunPanel.cpp" line="292"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="293"/>
+        <location filename="../app/RunPanel.cpp" line="294"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="295"/>
+        <location filename="../app/RunPanel.cpp" line="296"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="297"/>
+        <location filename="../app/RunPanel.cpp" line="298"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="298"/>
+        <location filename="../app/RunPanel.cpp" line="299"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="299"/>
+        <location filename="../app/RunPanel.cpp" line="300"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="300"/>
+        <location filename="../app/RunPanel.cpp" line="301"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="301"/>
+        <location filename="../app/RunPanel.cpp" line="310"/>
+        <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
+        <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="252"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="303"/>
+        <location filename="../app/RunPanel.cpp" line="254"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="304"/>
-        <source>Reset</source>
-        <translation>重設</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="305"/>
+        <location filename="../app/RunPanel.cpp" line="303"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="306"/>
+        <location filename="../app/RunPanel.cpp" line="304"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="309"/>
+        <location filename="../app/RunPanel.cpp" line="307"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="310"/>
+        <location filename="../app/RunPanel.cpp" line="308"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="312"/>
-        <source>Stops the run at once, within one control period, and stays engaged until reset.</source>
-        <translation>在一個控制週期內立即停止運行，並保持啟動直至重設。</translation>
+        <source>Reset E-STOP</source>
+        <translation>重設緊急停止</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="313"/>
-        <source>Reset E-STOP</source>
-        <translation>重設緊急停止</translation>
+        <source>Release the E-STOP latch so a run can start again</source>
+        <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="316"/>

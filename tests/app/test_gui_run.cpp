@@ -24,8 +24,9 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFormLayout>
 #include <QLabel>
@@ -40,6 +41,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QToolBar>
 #include "sim/DemonstrationStyles.h"
 
 #include <QtTest>
@@ -72,6 +74,15 @@ struct Window {
     Window() {
         window.resize(1280, 800);
         window.show();
+        activate();
+    }
+    // Keys reach the shortcuts of the active window only (a window manager gives the window
+    // back its activation when a popup closes; the offscreen platform does not): wait for it.
+    void activate() {
+        QApplication::setActiveWindow(&window);
+        if (!QTest::qWaitForWindowActive(&window)) {
+            qWarning("the window did not become active");
+        }
     }
     template <class T>
     T* find(const char* name) {
@@ -356,15 +367,19 @@ class TestGuiRun : public QObject {
         // The theta chart has one series per entry of the method's theta: PRISCA's own features
         // on the slide-car, the shared ones for PGSD.
         const prisca::sim::PlantProfile& profile = w.window.session().profile();
-        const auto count = [](const prisca::core::FeatureMap& f) { return f.featureCount() * f.channelCount(); };
-        QCOMPARE(charts->parameterCount(), count(profile.priscaFeatures.value_or(profile.features)));
+        const auto count = [](const prisca::core::FeatureMap& f) {
+            return f.featureCount() * f.channelCount();
+        };
+        QCOMPARE(charts->parameterCount(),
+                 count(profile.priscaFeatures.value_or(profile.features)));
         auto* method = w.find<QComboBox>("method");
         method->setCurrentIndex(method->findData(QStringLiteral("pgsd")));
         emit method->activated(method->currentIndex());
         QCOMPARE(charts->parameterCount(), count(profile.features));
         method->setCurrentIndex(method->findData(QStringLiteral("prisca-paper")));
         emit method->activated(method->currentIndex());
-        QCOMPARE(charts->parameterCount(), count(profile.priscaFeatures.value_or(profile.features)));
+        QCOMPARE(charts->parameterCount(),
+                 count(profile.priscaFeatures.value_or(profile.features)));
     }
 
     void run_aircraftSamplesCarryTheWindTheCarsDoNot() {
@@ -420,6 +435,85 @@ class TestGuiRun : public QObject {
         // Esc works the same, here while idle.
         QTest::keyClick(&w.window, Qt::Key_Escape);
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+    }
+
+    void escOnAnOpenComboList_onlyClosesIt() {
+        Window w;
+        auto* speed = w.find<QComboBox>("speed");
+        QSignalSpy estop(w.find<RunPanel>("runPanel"), &RunPanel::emergencyStopRequested);
+        speed->showPopup();
+        QTRY_VERIFY(QApplication::activePopupWidget() != nullptr);
+        QTest::keyClick(QApplication::activePopupWidget(), Qt::Key_Escape);
+        QTRY_VERIFY(QApplication::activePopupWidget() == nullptr);
+        QCOMPARE(estop.count(), 0);
+        QCOMPARE(w.window.run().phase(), RunPhase::Idle);
+        QVERIFY(w.find<QAction>("resetEmergencyAction") != nullptr);
+        QVERIFY(!w.find<QAction>("resetEmergencyAction")->isEnabled());
+    }
+
+    void shortcuts_workWithTheFocusInAComboBox() {
+        Window w;
+        w.setSpeedIndex(0);  // real time: the run is still going when the keys arrive
+        w.find<QSpinBox>("trials")->setValue(3);
+        auto* speed = w.find<QComboBox>("speed");
+        speed->setFocus();
+        QSignalSpy estop(w.find<RunPanel>("runPanel"), &RunPanel::emergencyStopRequested);
+        // F5, F6, Shift+F5 and Ctrl+R with the focus in a combo box.
+        QTest::keyClick(speed, Qt::Key_F5);
+        QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::Running, kRunTimeoutMs);
+        QTest::keyClick(speed, Qt::Key_F6);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Paused);
+        QTest::keyClick(speed, Qt::Key_F6);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Running);
+        QTest::keyClick(speed, Qt::Key_F5, Qt::ShiftModifier);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        QVERIFY(w.results()->rowCount() >= 0);
+        QTest::keyClick(w.find<QSpinBox>("seed"), Qt::Key_R, Qt::ControlModifier);
+        QTRY_COMPARE(w.results()->rowCount(), 0);
+        // Space in a text field types; elsewhere it is E-STOP.
+        QTest::keyClick(w.find<QSpinBox>("seed"), Qt::Key_Space);
+        QCOMPARE(estop.count(), 0);
+        QTest::keyClick(speed, Qt::Key_Space);
+        QCOMPARE(estop.count(), 1);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        QTest::keyClick(speed, Qt::Key_F5);  // refused while latched
+        QCOMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        w.find<QAbstractButton>("resetEmergencyButton")->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        QVERIFY2(!w.find<QLabel>("runStatus")->text().contains(QLatin1String("engaged")),
+                 qPrintable(w.find<QLabel>("runStatus")->text()));
+    }
+
+    void emergencyStop_staysVisibleWhateverTheDocks() {
+        Window w;
+        auto* button = w.find<QAbstractButton>("emergencyStopButton");
+        const auto inView = [&] {
+            const QRect inWindow(button->mapTo(&w.window, QPoint(0, 0)), button->size());
+            return button->isVisible() && w.window.rect().contains(inWindow) &&
+                   !button->visibleRegion().isEmpty();
+        };
+        QVERIFY(inView());
+        // Every dock made as large as the window allows, then every dock closed.
+        QList<QDockWidget*> docks = w.window.findChildren<QDockWidget*>();
+        QVERIFY(docks.size() >= 8);
+        for (QDockWidget* dock : docks) {
+            w.window.resizeDocks({dock}, {2000}, Qt::Vertical);
+            w.window.resizeDocks({dock}, {2000}, Qt::Horizontal);
+            QCoreApplication::processEvents();
+            QVERIFY2(inView(), qPrintable(dock->objectName()));
+        }
+        for (QDockWidget* dock : docks) {
+            dock->close();
+        }
+        QCoreApplication::processEvents();
+        QVERIFY(inView());
+        // The toolbar cannot be hidden or moved by the operator.
+        auto* bar = w.find<QToolBar>("runToolBar");
+        QVERIFY(!bar->isMovable() && !bar->toggleViewAction()->isVisible());
+        // A click on it (a mouse press) latches E-STOP.
+        QTest::mousePress(button, Qt::LeftButton);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        QTest::mouseRelease(button, Qt::LeftButton);
     }
 
     void pauseAndStop_holdAndEndTheRun() {
@@ -479,8 +573,9 @@ class TestGuiRun : public QObject {
         {
             Window w;
             auto* style = w.find<QComboBox>("demonstrationStyle");
-            QCOMPARE(style->count(), static_cast<int>(
-                                         prisca::sim::DemonstrationStyles::of(QStringLiteral("slidecar")).size()));
+            QCOMPARE(style->count(),
+                     static_cast<int>(
+                         prisca::sim::DemonstrationStyles::of(QStringLiteral("slidecar")).size()));
             QCOMPARE(style->currentData().toString(), QStringLiteral("stick-180-left"));
             style->setCurrentIndex(style->findData(QStringLiteral("keyboard-90-right")));
             w.find<QSpinBox>("demonstrationSeed")->setValue(5);
@@ -490,8 +585,9 @@ class TestGuiRun : public QObject {
             const auto expected = prisca::sim::DemonstrationStyles::record(
                 QStringLiteral("slidecar"), QStringLiteral("keyboard-90-right"), 5);
             QCOMPARE(w.window.session().demonstration()->actions, expected.actions);
-            QVERIFY2(w.find<QLabel>("demonstrationInfo")->text().contains("keyboard-90-right, seed 5"),
-                     qPrintable(w.find<QLabel>("demonstrationInfo")->text()));
+            QVERIFY2(
+                w.find<QLabel>("demonstrationInfo")->text().contains("keyboard-90-right, seed 5"),
+                qPrintable(w.find<QLabel>("demonstrationInfo")->text()));
             // The ILC fields apply to the session like every other parameter.
             w.find<QSpinBox>("ilcLead")->setValue(4);
             QCOMPARE(w.window.session().profile().ilcLead, 4);
@@ -802,8 +898,8 @@ class TestGuiRun : public QObject {
             v.close();
             QVERIFY(w.window.openSession(old));
             const prisca::sim::PlantProfile& opened = w.window.session().profile();
-            const prisca::sim::PlantProfile defaults =
-                prisca::sim::PlantProfile::forPlant(prisca::sim::PlantCatalog::describe("slidecar"));
+            const prisca::sim::PlantProfile defaults = prisca::sim::PlantProfile::forPlant(
+                prisca::sim::PlantCatalog::describe("slidecar"));
             QCOMPARE(opened.matchingWindow, 33);
             const QString status = w.window.statusBar()->currentMessage();
             if (version == 1) {
@@ -818,7 +914,6 @@ class TestGuiRun : public QObject {
                 QVERIFY2(!status.contains("earlier"), qPrintable(status));
             }
         }
-
     }
 
     void demonstrationOfAnotherPlantOrTooShort_isRefusedAndTheSessionKeepsItsOwn() {
@@ -832,13 +927,15 @@ class TestGuiRun : public QObject {
         prisca::core::FileError error;
         QVERIFY(prisca::core::writeDemonstrationCsv(
             prisca::sim::PlantCatalog::demonstrate("slidecar", 2), car, &error));
-        QString text = answerMessageBox(
-            this, [&] { QVERIFY(!w.find<prisca::app::TaskPanel>("taskPanel")->openDemonstration(car)); });
+        QString text = answerMessageBox(this, [&] {
+            QVERIFY(!w.find<prisca::app::TaskPanel>("taskPanel")->openDemonstration(car));
+        });
         QVERIFY2(text.contains("car.csv") && text.contains("slidecar"), qPrintable(text));
         QCOMPARE(w.window.session().demonstration(), before);
         QCOMPARE(w.window.session().fit().b, fitBefore);
         // An aircraft demonstration of three samples: refused, and nothing half-changed.
-        prisca::core::Demonstration shortDemo = prisca::sim::PlantCatalog::demonstrate("aircraft", 2);
+        prisca::core::Demonstration shortDemo =
+            prisca::sim::PlantCatalog::demonstrate("aircraft", 2);
         shortDemo.states.conservativeResize(3, Eigen::NoChange);
         shortDemo.actions.conservativeResize(3, Eigen::NoChange);
         shortDemo.time.conservativeResize(3);
@@ -867,15 +964,17 @@ class TestGuiRun : public QObject {
         QVERIFY2(text.contains("garbage.json") && text.contains("gamma"), qPrintable(text));
         QFile f2(garbage);
         QVERIFY(f2.open(QIODevice::WriteOnly));
-        f2.write("{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
-                 "\"prisca\": {\"gradient\": \"sideways\"} }");
+        f2.write(
+            "{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
+            "\"prisca\": {\"gradient\": \"sideways\"} }");
         f2.close();
         text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
         QVERIFY2(text.contains("gradient") && text.contains("closed-loop"), qPrintable(text));
         QFile f3(garbage);
         QVERIFY(f3.open(QIODevice::WriteOnly));
-        f3.write("{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
-                 "\"prisca\": {\"automatic\": \"yes\"} }");
+        f3.write(
+            "{ \"format\": \"prisca-session\", \"plant\": \"slidecar\", "
+            "\"prisca\": {\"automatic\": \"yes\"} }");
         f3.close();
         text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
         QVERIFY2(text.contains("'automatic'"), qPrintable(text));
