@@ -21,7 +21,7 @@ constexpr double kCarLength = kCar.length;
 constexpr double kCarWidth = kCar.width;
 constexpr double kHalfWheelbase = kCar.wheelbase / 2;
 constexpr double kMaxSteeringAngle = kCar.maxSteeringAngle;  // rad at full steering
-constexpr double kSkidSpeed = 0.15;           // lateral speed above which a skid mark is left [m/s]
+constexpr double kSkidSpeed = 0.15;  // lateral speed above which a skid mark is left [m/s]
 // The parking lot drawn around the demonstration's final pose [m].
 constexpr double kLotLength = 0.55;
 constexpr double kLotWidth = 0.32;

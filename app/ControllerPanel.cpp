@@ -110,9 +110,7 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     // Each field gets its own label object (retranslateUi() fills in the text).
     for (QWidget* field : std::initializer_list<QWidget*>{
              method_, horizon_, gamma_, beta_, automatic_, stepScale_, thetaBound_, fromPd_,
-             gradient_,
-             effort_, window_, pgsdStep_,
-             ilcLearning_, ilcLead_, ilcCutoff_}) {
+             gradient_, effort_, window_, pgsdStep_, ilcLearning_, ilcLead_, ilcCutoff_}) {
         form_->addRow(new QLabel(this), field);
     }
     auto* layout = new QVBoxLayout(this);
@@ -238,9 +236,11 @@ void ControllerPanel::apply() {
     p.priscaAutomatic = automatic_->isChecked();
     p.prisca.thetaBound = thetaBound_->value();
     p.priscaFromPd = fromPd_->isChecked();
-    p.prisca.gradient = static_cast<core::PriscaParameters::Gradient>(gradient_->currentData().toInt());
+    p.prisca.gradient =
+        static_cast<core::PriscaParameters::Gradient>(gradient_->currentData().toInt());
     if (effort_->value() > 0.0) {
-        p.prisca.effortWeights = Eigen::VectorXd::Constant(p.info.actionDimension(), effort_->value());
+        p.prisca.effortWeights =
+            Eigen::VectorXd::Constant(p.info.actionDimension(), effort_->value());
     } else {
         p.prisca.effortWeights.resize(0);
     }

@@ -46,12 +46,12 @@ class ControllerPanel : public QWidget {
     QSpinBox* horizon_;
     QDoubleSpinBox* gamma_;
     QDoubleSpinBox* beta_;
-    QCheckBox* automatic_;       // PRISCA's automatic defaults (PlantProfile::priscaAutomatic)
+    QCheckBox* automatic_;  // PRISCA's automatic defaults (PlantProfile::priscaAutomatic)
     QDoubleSpinBox* stepScale_;
     QDoubleSpinBox* thetaBound_;
-    QCheckBox* fromPd_;          // PRISCA starts from the PD law (PlantProfile::priscaFromPd)
-    QComboBox* gradient_;        // one-step (eq. 14) or closed loop (eq. 4 over the window)
-    QDoubleSpinBox* effort_;     // R of the correction's effort (0: none)
+    QCheckBox* fromPd_;       // PRISCA starts from the PD law (PlantProfile::priscaFromPd)
+    QComboBox* gradient_;     // one-step (eq. 14) or closed loop (eq. 4 over the window)
+    QDoubleSpinBox* effort_;  // R of the correction's effort (0: none)
     QSpinBox* window_;
     QDoubleSpinBox* pgsdStep_;
     QDoubleSpinBox* ilcLearning_;

@@ -284,7 +284,8 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
         while (last > 0 && c.band.count[last - 1] == 0) {
             --last;
         }
-        const QStringList cells = {sim::MethodCatalog::get(c.method).label, at(0), at(c.band.mean.size() / 2),
+        const QStringList cells = {sim::MethodCatalog::get(c.method).label, at(0),
+                                   at(c.band.mean.size() / 2),
                                    last > 0 ? at(last - 1) : QStringLiteral("—")};
         for (int col = 0; col < cells.size(); ++col) {
             table_->setItem(r, col, new QTableWidgetItem(cells[col]));

@@ -174,6 +174,11 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     emit fitChanged();
 }
 
+void LabSession::setDemonstrationSource(const QString& source) {
+    demonstrationSource_ = source;
+    emit demonstrationSourceChanged();
+}
+
 void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t seed) {
     if (!sim::DemonstrationStyles::contains(task_.plant, style)) {
         throw std::invalid_argument(

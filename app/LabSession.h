@@ -48,6 +48,9 @@ class LabSession : public QObject {
     void setDemonstration(std::shared_ptr<const core::Demonstration> demonstration,
                           const QString& source);
 
+    /// The demonstration, unchanged, now lives in `source` (saved there): the session names it.
+    void setDemonstrationSource(const QString& source);
+
     /// The plant's profile with the operator's edits (mapping B~, method parameters).
     const sim::PlantProfile& profile() const { return task_.profile; }
     /// Replaces the profile and refits B_v if its mapping changed. Throws std::invalid_argument
@@ -83,6 +86,8 @@ class LabSession : public QObject {
     void plantChanged(const QString& plant);
     /// The demonstration changed.
     void demonstrationChanged();
+    /// The same demonstration is now named by another file (saved as).
+    void demonstrationSourceChanged();
     /// B~, the fit options or the demonstration changed and B_v was refitted.
     void fitChanged();
     /// The method or its parameters changed.

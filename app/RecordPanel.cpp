@@ -213,6 +213,7 @@ void RecordPanel::emergencyStop() {
             worker_,
             [w = worker_, n = driving_->input().size()] { w->setInput(Eigen::VectorXd::Zero(n)); },
             Qt::QueuedConnection);
+        endedByEmergency_ = recording_;
         stopRecording();
     }
 }
@@ -221,6 +222,19 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     recording_ = false;
     timer_->stop();
     driving_->stop();
+    if (endedByEmergency_) {
+        // A take cut short by E-STOP is not what the operator meant to demonstrate.
+        endedByEmergency_ = false;
+        status_->setText(
+            demonstration.length() == 0
+                ? tr("E-STOP ended the recording; nothing was recorded.")
+                : tr("E-STOP ended the recording after %1 s; the demonstration is unchanged. The "
+                     "take is kept in %2 (open it from the Task panel to use it).")
+                      .arg(demonstration.length() * demonstration.dt, 0, 'f', 1)
+                      .arg(QDir::toNativeSeparators(streamPath)));
+        updateButtons();
+        return;
+    }
     if (demonstration.length() < sim::kMinimumDemonstrationSamples) {
         QFile::remove(streamPath);
         status_->setText(demonstration.length() == 0
@@ -235,13 +249,12 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     auto previous = session_.demonstration();
     const QString previousSource = session_.demonstrationSource();
     try {
-        session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration),
-                                  streamPath);
+        session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration), streamPath);
     } catch (const std::exception& e) {
         // Refused (the session keeps its demonstration); the stream file stays for the record.
-        status_->setText(tr("The recording could not be used: %1. It is kept in %2.")
-                             .arg(QString::fromStdString(e.what()),
-                                  QDir::toNativeSeparators(streamPath)));
+        status_->setText(
+            tr("The recording could not be used: %1. It is kept in %2.")
+                .arg(QString::fromStdString(e.what()), QDir::toNativeSeparators(streamPath)));
         updateButtons();
         return;
     }
@@ -270,6 +283,7 @@ void RecordPanel::save() {
         QMessageBox::warning(this, tr("Save demonstration"), error.toString());
         return;
     }
+    session_.setDemonstrationSource(path);  // from now on it is named by its saved file
     status_->setText(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
 }
 

@@ -80,6 +80,8 @@ class RecordPanel : public QWidget {
     QTimer* timer_;
     int countdownLeft_ = 0;  ///< ticks until recording starts; 0 when not counting down
     bool recording_ = false;
+    /// The recording under way was ended by E-STOP: kept on disk, not made the demonstration.
+    bool endedByEmergency_ = false;
     bool padShown_ = false;  ///< the label says a pad is there
     QString streamPath_;
     /// The demonstration before the recording, restored by Discard.

@@ -359,6 +359,11 @@ void RigPanel::useRecording(const rig::RigRecording& recording) {
     QString message;
     if (!recording.demonstration) {
         message = recording.error;
+    } else if (recordingEndedByEmergency_) {
+        recordingEndedByEmergency_ = false;
+        message = tr("E-STOP ended the rig recording; the demonstration is unchanged. The take is "
+                     "kept in %1.")
+                      .arg(QDir::toNativeSeparators(recording.path));
     } else {
         const int samples = recording.demonstration->length();
         try {
@@ -379,6 +384,7 @@ void RigPanel::useRecording(const rig::RigRecording& recording) {
 
 void RigPanel::emergencyStop() {
     driving_->neutral();
+    recordingEndedByEmergency_ = drivingActive_;
     stopDriving();
     rig_.emergencyStop();
     trialInfo_->setText(tr("E-STOP: the transmitter sends failsafe until E-STOP is reset."));

@@ -138,6 +138,7 @@ class RigPanel : public QWidget {
     QPushButton* stopTrial_;
     QLabel* trialInfo_;
     QString lastResult_;
+    bool recordingEndedByEmergency_ = false;
 };
 
 }  // namespace prisca::app

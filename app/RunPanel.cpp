@@ -165,6 +165,9 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());
     });
     connect(&run_, &RunController::phaseChanged, this, &RunPanel::updateButtons);
+    // Results of another plant or demonstration are not this task's: cleared on a switch.
+    connect(&session_, &LabSession::plantChanged, this, &RunPanel::clearResultsForNewTask);
+    connect(&session_, &LabSession::demonstrationChanged, this, &RunPanel::clearResultsForNewTask);
     connect(&run_, &RunController::progress, status_, &QLabel::setText);
     connect(&run_, &RunController::failed, status_, &QLabel::setText);
     connect(&run_, &RunController::trialFinished, this, &RunPanel::addTrialRow);
@@ -179,6 +182,17 @@ QList<QAction*> RunPanel::runActions() const {
 void RunPanel::emergencyStop() {
     run_.emergencyStop();
     emit emergencyStopRequested();
+}
+
+void RunPanel::clearResultsForNewTask() {
+    if (phase_ != RunPhase::Idle && phase_ != RunPhase::EmergencyStopped) {
+        return;  // a run in progress keeps its own task (it copied it)
+    }
+    if (results_->rowCount() > 0) {
+        results_->setRowCount(0);
+        status_->setText(tr("The task changed: the previous results were cleared."));
+    }
+    retranslateUi();  // the RMS column's unit follows the plant
 }
 
 void RunPanel::startRun() {
@@ -261,9 +275,18 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
     const auto cell = [&](int column, const QString& text) {
         auto* item = new QTableWidgetItem(text);
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (!summary.complete) {
+            // Stopped part-way: its numbers cover only what was run.
+            QFont font = item->font();
+            font.setItalic(true);
+            item->setFont(font);
+            item->setForeground(palette().color(QPalette::Disabled, QPalette::Text));
+            item->setToolTip(
+                tr("Stopped after %1 s: not a finished trial").arg(summary.duration, 0, 'f', 1));
+        }
         results_->setItem(row, column, item);
     };
-    cell(0, QString::number(trial + 1));
+    cell(0, summary.complete ? QString::number(trial + 1) : tr("%1 (stopped)").arg(trial + 1));
     cell(1, planar ? QString::number(summary.finalPositionError * 100.0, 'f', 1)
                    : QStringLiteral("—"));
     cell(2, planar ? QString::number(summary.finalHeadingError * 180.0 / M_PI, 'f', 1)

@@ -59,6 +59,7 @@ class RunPanel : public QWidget {
     void retranslateRunActions();
     void updateButtons(RunPhase phase);
     void addTrialRow(int trial, const sim::TrialSummary& summary);
+    void clearResultsForNewTask();
 
     LabSession& session_;
     RunController& run_;

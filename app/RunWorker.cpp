@@ -77,8 +77,8 @@ void RunWorker::start(const RunRequest& request) {
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
         return;
     }
-    runLog_ = sim::startRunLog(plant_->info(), request_.method, request_.demonstration->dt,
-                               *controller_);
+    runLog_ =
+        sim::startRunLog(plant_->info(), request_.method, request_.demonstration->dt, *controller_);
     runLog_.metadata.insert(QStringLiteral("seed"), QString::number(request_.seed));
     runLog_.metadata.insert(QStringLiteral("trials"), QString::number(request_.trials));
     runLog_.metadata.insert(QStringLiteral("perturbation"), QString::number(request_.perturbation));
@@ -208,8 +208,10 @@ void RunWorker::stop() {
         timer_->stop();
         if (stepper_ && stepper_->stepCount() > 0) {
             const sim::EpisodeResult result = stepper_->takeResult();
-            emit trialFinished(trial_, sim::summarizeTrial(request_.profile.info,
-                                                           *request_.demonstration, result));
+            sim::TrialSummary summary =
+                sim::summarizeTrial(request_.profile.info, *request_.demonstration, result);
+            summary.complete = false;  // stopped part-way: reported, and marked as such
+            emit trialFinished(trial_, summary);
         }
         stepper_.reset();
         emitRunLog();

@@ -34,12 +34,12 @@ struct RunRequest {
     QString method;  ///< sim::MethodCatalog id
     sim::PlantProfile profile;
     std::shared_ptr<const core::Demonstration> demonstration;
-    Eigen::MatrixXd fittedB;    ///< B = B_v (.) B~ (m x n)
-    int trials = 5;             ///< trials in a row; learners keep learning (warm start)
-    std::uint64_t seed = 1;     ///< seed of the first trial's perturbation and sensor noise
-    double perturbation = 1.0;  ///< plant perturbation level (0 nominal, 1 realistic)
-    double sensor = 1.0;        ///< sensor noise level (0 perfect, 1 realistic)
-    int trainingTrials = 8;     ///< for PD (selected) and PEGASUS, trained before the run
+    Eigen::MatrixXd fittedB;      ///< B = B_v (.) B~ (m x n)
+    int trials = 5;               ///< trials in a row; learners keep learning (warm start)
+    std::uint64_t seed = 1;       ///< seed of the first trial's perturbation and sensor noise
+    double perturbation = 1.0;    ///< plant perturbation level (0 nominal, 1 realistic)
+    double sensor = 1.0;          ///< sensor noise level (0 perfect, 1 realistic)
+    int trainingTrials = 8;       ///< for PD (selected) and PEGASUS, trained before the run
     QString demonstrationSource;  ///< for the run log: the file, or the scripted style and seed
 };
 

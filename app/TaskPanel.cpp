@@ -79,6 +79,8 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
         fillStyles();
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &TaskPanel::showDemonstration);
+    connect(&session_, &LabSession::demonstrationSourceChanged, this,
+            &TaskPanel::showDemonstration);
     retranslateUi();
     if (!session_.plant().isEmpty()) {
         target_->setCurrentIndex(target_->findData(session_.plant()));
@@ -145,7 +147,9 @@ void TaskPanel::askSave() {
     core::FileError error;
     if (!core::writeDemonstrationCsv(*session_.demonstration(), path, &error)) {
         QMessageBox::warning(this, tr("Save demonstration"), error.toString());
+        return;
     }
+    session_.setDemonstrationSource(path);  // from now on it is named by its saved file
 }
 
 void TaskPanel::showDemonstration() {
@@ -154,12 +158,11 @@ void TaskPanel::showDemonstration() {
         demonstration_->clear();
         return;
     }
-    const QString source =
-        session_.demonstrationSource().isEmpty()
-            ? tr("the scripted operator (%1, seed %2)")
-                  .arg(session_.scriptedStyle())
-                  .arg(session_.scriptedSeed())
-            : QFileInfo(session_.demonstrationSource()).fileName();
+    const QString source = session_.demonstrationSource().isEmpty()
+                               ? tr("the scripted operator (%1, seed %2)")
+                                     .arg(session_.scriptedStyle())
+                                     .arg(session_.scriptedSeed())
+                               : QFileInfo(session_.demonstrationSource()).fileName();
     demonstration_->setText(tr("Demonstration: %1 samples, %2 s at %3 Hz, from %4.")
                                 .arg(demo->length())
                                 .arg(demo->length() * demo->dt, 0, 'f', 1)
@@ -187,8 +190,9 @@ void TaskPanel::retranslateUi() {
     save_->setText(tr("Save as..."));
     save_->setToolTip(tr("Save the demonstration as CSV"));
     styleLabel_->setText(tr("Scripted operator:"));
-    style_->setToolTip(tr("How the scripted operator demonstrates: keys or stick, left or right, "
-                          "how far and how fast (hover over a style for its description)"));
+    style_->setToolTip(
+        tr("How the scripted operator demonstrates: keys or stick, left or right, "
+           "how far and how fast (hover over a style for its description)"));
     seed_->setToolTip(tr("Seed of the operator's hand variation"));
     seed_->setPrefix(tr("seed "));
     scripted_->setText(tr("Use scripted"));

@@ -20,6 +20,8 @@ struct TrialSummary {
     double duration = 0.0;  ///< simulated time [s]
     /// The controller's CPU time per control step [us] (reports only).
     double controllerMicrosecondsPerStep = 0.0;
+    /// False for a trial stopped before its end (its numbers cover only what was run).
+    bool complete = true;
 };
 
 /// The error that "tracking error" means for a plant at step k, against the demonstration
@@ -41,8 +43,8 @@ struct ParkingError {
     double position = 0.0;  ///< [m]
     double heading = 0.0;   ///< [rad], in [0, pi]
 };
-ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration,
-                          double x, double y, double heading);
+ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration, double x,
+                          double y, double heading);
 
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
                             const EpisodeResult& result);

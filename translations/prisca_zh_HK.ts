@@ -589,98 +589,98 @@
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="180"/>
+        <location filename="../app/LabSession.cpp" line="185"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="292"/>
-        <location filename="../app/LabSession.cpp" line="300"/>
+        <location filename="../app/LabSession.cpp" line="297"/>
+        <location filename="../app/LabSession.cpp" line="305"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="306"/>
+        <location filename="../app/LabSession.cpp" line="311"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="312"/>
+        <location filename="../app/LabSession.cpp" line="317"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="315"/>
+        <location filename="../app/LabSession.cpp" line="320"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="320"/>
+        <location filename="../app/LabSession.cpp" line="325"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="327"/>
+        <location filename="../app/LabSession.cpp" line="332"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="331"/>
+        <location filename="../app/LabSession.cpp" line="336"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="340"/>
+        <location filename="../app/LabSession.cpp" line="345"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="377"/>
+        <location filename="../app/LabSession.cpp" line="382"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="383"/>
+        <location filename="../app/LabSession.cpp" line="388"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="394"/>
+        <location filename="../app/LabSession.cpp" line="399"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="421"/>
+        <location filename="../app/LabSession.cpp" line="426"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="435"/>
+        <location filename="../app/LabSession.cpp" line="440"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="461"/>
+        <location filename="../app/LabSession.cpp" line="466"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="465"/>
+        <location filename="../app/LabSession.cpp" line="470"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="472"/>
+        <location filename="../app/LabSession.cpp" line="477"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="477"/>
+        <location filename="../app/LabSession.cpp" line="482"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="497"/>
+        <location filename="../app/LabSession.cpp" line="502"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1102,7 +1102,7 @@
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="90"/>
-        <location filename="../app/RecordPanel.cpp" line="316"/>
+        <location filename="../app/RecordPanel.cpp" line="331"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
@@ -1122,93 +1122,103 @@
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="227"/>
+        <location filename="../app/RecordPanel.cpp" line="230"/>
+        <source>E-STOP ended the recording; nothing was recorded.</source>
+        <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="231"/>
+        <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
+        <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="241"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="228"/>
+        <location filename="../app/RecordPanel.cpp" line="242"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="242"/>
+        <location filename="../app/RecordPanel.cpp" line="256"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="264"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="259"/>
-        <location filename="../app/RecordPanel.cpp" line="270"/>
+        <location filename="../app/RecordPanel.cpp" line="273"/>
+        <location filename="../app/RecordPanel.cpp" line="284"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="275"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="273"/>
+        <location filename="../app/RecordPanel.cpp" line="288"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="284"/>
+        <location filename="../app/RecordPanel.cpp" line="299"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="306"/>
+        <location filename="../app/RecordPanel.cpp" line="321"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="311"/>
+        <location filename="../app/RecordPanel.cpp" line="326"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="313"/>
+        <location filename="../app/RecordPanel.cpp" line="328"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="314"/>
+        <location filename="../app/RecordPanel.cpp" line="329"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="315"/>
+        <location filename="../app/RecordPanel.cpp" line="330"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="317"/>
+        <location filename="../app/RecordPanel.cpp" line="332"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="318"/>
+        <location filename="../app/RecordPanel.cpp" line="333"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="319"/>
+        <location filename="../app/RecordPanel.cpp" line="334"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="320"/>
+        <location filename="../app/RecordPanel.cpp" line="335"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="321"/>
+        <location filename="../app/RecordPanel.cpp" line="336"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1297,12 +1307,12 @@
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="371"/>
+        <location filename="../app/RigPanel.cpp" line="376"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="366"/>
+        <location filename="../app/RigPanel.cpp" line="371"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
@@ -1312,48 +1322,53 @@
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="384"/>
+        <location filename="../app/RigPanel.cpp" line="364"/>
+        <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
+        <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="390"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="393"/>
+        <location filename="../app/RigPanel.cpp" line="399"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="398"/>
+        <location filename="../app/RigPanel.cpp" line="404"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="401"/>
+        <location filename="../app/RigPanel.cpp" line="407"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="403"/>
+        <location filename="../app/RigPanel.cpp" line="409"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="455"/>
+        <location filename="../app/RigPanel.cpp" line="461"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="472"/>
+        <location filename="../app/RigPanel.cpp" line="478"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="493"/>
-        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="499"/>
+        <location filename="../app/RigPanel.cpp" line="511"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="494"/>
+        <location filename="../app/RigPanel.cpp" line="500"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1362,197 +1377,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="515"/>
+        <location filename="../app/RigPanel.cpp" line="521"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="535"/>
+        <location filename="../app/RigPanel.cpp" line="541"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="538"/>
+        <location filename="../app/RigPanel.cpp" line="544"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="546"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="572"/>
+        <location filename="../app/RigPanel.cpp" line="578"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="573"/>
+        <location filename="../app/RigPanel.cpp" line="579"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="574"/>
+        <location filename="../app/RigPanel.cpp" line="580"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="575"/>
+        <location filename="../app/RigPanel.cpp" line="581"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="581"/>
+        <location filename="../app/RigPanel.cpp" line="587"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="582"/>
+        <location filename="../app/RigPanel.cpp" line="588"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="583"/>
+        <location filename="../app/RigPanel.cpp" line="589"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="584"/>
+        <location filename="../app/RigPanel.cpp" line="590"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="585"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="586"/>
+        <location filename="../app/RigPanel.cpp" line="592"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="588"/>
+        <location filename="../app/RigPanel.cpp" line="594"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="590"/>
+        <location filename="../app/RigPanel.cpp" line="596"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="597"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="592"/>
+        <location filename="../app/RigPanel.cpp" line="598"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="593"/>
+        <location filename="../app/RigPanel.cpp" line="599"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="594"/>
+        <location filename="../app/RigPanel.cpp" line="600"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="595"/>
+        <location filename="../app/RigPanel.cpp" line="601"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="596"/>
+        <location filename="../app/RigPanel.cpp" line="602"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="599"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="600"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="601"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="603"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="604"/>
+        <location filename="../app/RigPanel.cpp" line="610"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="615"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="610"/>
+        <location filename="../app/RigPanel.cpp" line="616"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="612"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="622"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1576,187 +1591,202 @@
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="221"/>
+        <location filename="../app/RunPanel.cpp" line="234"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253"/>
+        <location filename="../app/RunPanel.cpp" line="266"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="253"/>
+        <location filename="../app/RunPanel.cpp" line="266"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243"/>
+        <location filename="../app/RunPanel.cpp" line="256"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="245"/>
+        <location filename="../app/RunPanel.cpp" line="193"/>
+        <source>The task changed: the previous results were cleared.</source>
+        <translation>任務已改變：先前的結果已清除。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="258"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="247"/>
+        <location filename="../app/RunPanel.cpp" line="260"/>
         <source>E-STOP reset: ready to run.</source>
         <translation>緊急停止已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="255"/>
+        <location filename="../app/RunPanel.cpp" line="268"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="284"/>
+        <source>Stopped after %1 s: not a finished trial</source>
+        <translation>在 %1 秒後停止：並非完成的試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="289"/>
+        <source>%1 (stopped)</source>
+        <translation>%1（已停止）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="306"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="285"/>
+        <location filename="../app/RunPanel.cpp" line="307"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="286"/>
+        <location filename="../app/RunPanel.cpp" line="308"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="288"/>
+        <location filename="../app/RunPanel.cpp" line="310"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="290"/>
+        <location filename="../app/RunPanel.cpp" line="312"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="292"/>
+        <location filename="../app/RunPanel.cpp" line="314"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="294"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="296"/>
+        <location filename="../app/RunPanel.cpp" line="318"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="298"/>
+        <location filename="../app/RunPanel.cpp" line="320"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="299"/>
+        <location filename="../app/RunPanel.cpp" line="321"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="300"/>
+        <location filename="../app/RunPanel.cpp" line="322"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="301"/>
+        <location filename="../app/RunPanel.cpp" line="323"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="310"/>
+        <location filename="../app/RunPanel.cpp" line="333"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="252"/>
+        <location filename="../app/RunPanel.cpp" line="265"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="254"/>
+        <location filename="../app/RunPanel.cpp" line="267"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="303"/>
+        <location filename="../app/RunPanel.cpp" line="325"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="304"/>
+        <location filename="../app/RunPanel.cpp" line="327"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="307"/>
+        <location filename="../app/RunPanel.cpp" line="330"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="308"/>
+        <location filename="../app/RunPanel.cpp" line="331"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="312"/>
+        <location filename="../app/RunPanel.cpp" line="335"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="313"/>
+        <location filename="../app/RunPanel.cpp" line="336"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="339"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="339"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="339"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="317"/>
+        <location filename="../app/RunPanel.cpp" line="340"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="317"/>
+        <location filename="../app/RunPanel.cpp" line="340"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="319"/>
+        <location filename="../app/RunPanel.cpp" line="342"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="319"/>
+        <location filename="../app/RunPanel.cpp" line="342"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="320"/>
+        <location filename="../app/RunPanel.cpp" line="343"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="320"/>
+        <location filename="../app/RunPanel.cpp" line="343"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1784,12 +1814,12 @@
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="216"/>
+        <location filename="../app/RunWorker.cpp" line="218"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="233"/>
+        <location filename="../app/RunWorker.cpp" line="235"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -1797,14 +1827,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="114"/>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
-        <location filename="../app/TaskPanel.cpp" line="131"/>
+        <location filename="../app/TaskPanel.cpp" line="116"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="133"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="115"/>
+        <location filename="../app/TaskPanel.cpp" line="117"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1813,93 +1843,93 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="132"/>
+        <location filename="../app/TaskPanel.cpp" line="134"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="140"/>
-        <location filename="../app/TaskPanel.cpp" line="147"/>
+        <location filename="../app/TaskPanel.cpp" line="142"/>
+        <location filename="../app/TaskPanel.cpp" line="149"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="141"/>
+        <location filename="../app/TaskPanel.cpp" line="143"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="105"/>
+        <location filename="../app/TaskPanel.cpp" line="107"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="159"/>
+        <location filename="../app/TaskPanel.cpp" line="163"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="163"/>
+        <location filename="../app/TaskPanel.cpp" line="167"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="178"/>
+        <location filename="../app/TaskPanel.cpp" line="182"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="185"/>
+        <location filename="../app/TaskPanel.cpp" line="189"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="186"/>
+        <location filename="../app/TaskPanel.cpp" line="190"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="187"/>
+        <location filename="../app/TaskPanel.cpp" line="191"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="188"/>
+        <location filename="../app/TaskPanel.cpp" line="192"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="189"/>
+        <location filename="../app/TaskPanel.cpp" line="193"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="190"/>
+        <location filename="../app/TaskPanel.cpp" line="194"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <location filename="../app/TaskPanel.cpp" line="196"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="193"/>
+        <location filename="../app/TaskPanel.cpp" line="197"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="194"/>
+        <location filename="../app/TaskPanel.cpp" line="198"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="196"/>
+        <location filename="../app/TaskPanel.cpp" line="200"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>

@@ -28,8 +28,10 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
@@ -66,6 +68,23 @@ QString answerMessageBox(QObject* context, const std::function<void()>& trigger)
     trigger();
     poll.stop();
     return text;
+}
+
+// Answers the next file dialog with `path` while `trigger` runs.
+void answerFileDialog(QObject* context, const QString& path, const std::function<void()>& trigger) {
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, context, [&] {
+        if (auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+            // Typed into the file name field and confirmed, as an operator would.
+            if (auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) {
+                edit->setText(path);
+                QTest::keyClick(edit, Qt::Key_Return);
+            }
+        }
+    });
+    poll.start(20);
+    trigger();
+    poll.stop();
 }
 
 struct Window {
@@ -192,14 +211,18 @@ class TestGuiRun : public QObject {
         Window w;
         auto* panel = w.find<RecordPanel>("recordPanel");
         w.find<QSpinBox>("countdown")->setValue(0);
+        const auto before = w.window.session().demonstration();
         w.find<QAbstractButton>("recordButton")->click();
         QVERIFY(panel->isRecording());
         QTest::keyPress(&w.window, Qt::Key_Up);
-        QTest::qWait(300);
+        QTRY_VERIFY(panel->input()[0] > 0.5);
         QTest::keyClick(&w.window, Qt::Key_Space);
         QTRY_VERIFY(!panel->isRecording());
         QTest::keyRelease(&w.window, Qt::Key_Up);
         QVERIFY(panel->input().isZero());
+        // The take E-STOP cut short is kept on disk but not made the demonstration.
+        QTRY_VERIFY(w.find<QLabel>("recordStatus")->text().contains(QLatin1String("E-STOP")));
+        QCOMPARE(w.window.session().demonstration(), before);
     }
 
     void mapping_editAndFitShowsValuesAndSignConflicts() {
@@ -532,8 +555,14 @@ class TestGuiRun : public QObject {
         QTRY_VERIFY(worker->stepsTaken() > paused);
         w.find<QAbstractButton>("stopButton")->click();
         QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
-        // The interrupted trial is reported as far as it went.
+        // The interrupted trial is reported as far as it went, and marked as stopped.
         QTRY_COMPARE(w.results()->rowCount(), 1);
+        QVERIFY2(w.results()->item(0, 0)->text().contains(QLatin1String("stopped")),
+                 qPrintable(w.results()->item(0, 0)->text()));
+        // Another plant: the previous plant's results go, and the RMS column says rad.
+        w.window.session().setPlant(QStringLiteral("acrobot"));
+        QCOMPARE(w.results()->rowCount(), 0);
+        QVERIFY(w.results()->horizontalHeaderItem(3)->text().contains(QLatin1String("rad")));
     }
 
     void session_savedAndOpenedWithItsParameters() {
@@ -565,6 +594,18 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.window.session().profile().prisca.horizon, 17);
         QCOMPARE(w.find<QSpinBox>("horizon")->value(), 17);
         QCOMPARE(w.find<QComboBox>("target")->currentData().toString(), QStringLiteral("aircraft"));
+    }
+
+    void task_savedAsNamesTheSavedFile() {
+        QTemporaryDir dir;
+        Window w;
+        const QString path = dir.filePath(QStringLiteral("kept.csv"));
+        answerFileDialog(this, path,
+                         [&] { w.find<QAbstractButton>("saveDemonstration")->click(); });
+        QVERIFY(QFile::exists(path));
+        QCOMPARE(w.window.session().demonstrationSource(), path);
+        QVERIFY2(w.find<QLabel>("demonstrationInfo")->text().contains(QLatin1String("kept.csv")),
+                 qPrintable(w.find<QLabel>("demonstrationInfo")->text()));
     }
 
     void task_scriptedStyleAndSeedAreUsedShownAndSaved() {
