@@ -211,6 +211,9 @@ void MainWindow::createPanels() {
     // ... and on the rig the transmitter goes to failsafe, latched until E-STOP is reset.
     connect(runPanel_, &RunPanel::emergencyStopRequested, rigPanel_, &RigPanel::emergencyStop);
     connect(runPanel_, &RunPanel::emergencyStopReset, rigPanel_, &RigPanel::resetEmergencyStop);
+    // The rig's car where the camera sees it, in the arena too.
+    connect(rigPanel_, &RigPanel::carTracked, arena_,
+            [this](const Eigen::VectorXd& state) { arena_->showState(state, Eigen::VectorXd()); });
     connect(run_, &RunController::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
 }
 

@@ -9,8 +9,10 @@
 #include "devices/SyntheticCamera.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
+#include "sim/PlantCatalog.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QEvent>
@@ -184,6 +186,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(&rig_, &rig::RigSession::cameraFailed, this,
             [this](const QString& message) { linkInfo_->setText(message); });
     connect(&rig_, &rig::RigSession::linkStatusChanged, this, &RigPanel::showLinkStatus);
+    connect(&rig_, &rig::RigSession::cameraRunningChanged, this, &RigPanel::updateButtons);
     connect(&rig_, &rig::RigSession::trialFinished, this, &RigPanel::showTrialResult);
     connect(&rig_, &rig::RigSession::recordingFinished, this, &RigPanel::useRecording);
     connect(startCamera_, &QPushButton::clicked, this, &RigPanel::startCamera);
@@ -256,6 +259,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     channels_->setControlNames(session_.profile().info.actionNames);
     showTask();
     showLinkStatus(rig_.linkStatus());
+    updateButtons();
 }
 
 RigPanel::~RigPanel() {
@@ -276,8 +280,12 @@ bool RigPanel::runTrial() {
         missing = tr("Start the camera first.");
     } else if (!rig_.linkStatus().connected) {
         missing = tr("Connect the transmitter link first.");
-    } else if (!profile.info.pose) {
-        missing = tr("The rig drives a car: choose the slide-car as the target.");
+    } else if (profile.info.name != QLatin1String("slidecar")) {
+        // The rig's state estimator gives the slide-car's state; any other target's
+        // demonstration and controller would be read against the wrong quantities.
+        missing = tr("The rig drives a slide-car: choose the slide-car as the target (now: %1).")
+                      .arg(QCoreApplication::translate(
+                          "PlantCatalog", sim::PlantCatalog::get(profile.info.name).displayName));
     } else if (sim::MethodCatalog::get(session_.method()).simulationOnly) {
         missing =
             tr("The oracle plans on copies of a simulated plant; a real car has none. "
@@ -535,9 +543,28 @@ void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
 void RigPanel::showFrame(const devices::CameraFrame& frame,
                          const std::optional<devices::PlanarPose>& pose) {
     view_->setFrame(toImage(frame.image), pose);
+    if (pose && session_.profile().info.name == QLatin1String("slidecar")) {
+        Eigen::VectorXd state = Eigen::VectorXd::Zero(6);
+        state.head(3) << pose->x, pose->y, pose->heading;
+        emit carTracked(state);
+    }
+}
+
+void RigPanel::updateButtons() {
+    const bool camera = rig_.cameraRunning();
+    const bool linked = rig_.linkStatus().connected;
+    startCamera_->setEnabled(!camera);
+    stopCamera_->setEnabled(camera);
+    source_->setEnabled(!camera);
+    connect_->setEnabled(!linked);
+    disconnect_->setEnabled(linked);
+    port_->setEnabled(!linked);
+    protocol_->setEnabled(!linked);
+    baud_->setEnabled(!linked);
 }
 
 void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
+    updateButtons();
     QString text = status.connected ? tr("Link: connected, %1 frames/s, %2 sent")
                                           .arg(status.measuredRateHz, 0, 'f', 0)
                                           .arg(status.framesSent)

@@ -85,12 +85,15 @@ class RigPanel : public QWidget {
     /// A take recorded by driving became the session's demonstration (or could not: the
     /// message says why).
     void demonstrationRecorded(const QString& message);
+    /// The car's tracked pose as a slide-car state (x, y, psi, 0, 0, 0), for the arena.
+    void carTracked(const Eigen::VectorXd& state);
 
   protected:
     void changeEvent(QEvent* event) override;
 
   private:
     void retranslateUi();
+    void updateButtons();
     void refreshPorts();
     void showFrame(const devices::CameraFrame& frame,
                    const std::optional<devices::PlanarPose>& pose);

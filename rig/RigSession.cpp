@@ -84,6 +84,13 @@ RigSession::RigSession(QObject* parent)
     connect(&camera_, &devices::Camera::frameReady, this,
             [this](const devices::CameraFrame& frame) { emit frameReady(frame, lastPose()); });
     connect(&camera_, &devices::Camera::failed, this, &RigSession::cameraFailed);
+    connect(&camera_, &devices::Camera::finished, this, [this] {
+        {
+            std::lock_guard<std::mutex> lock(poseMutex_);
+            pose_.reset();  // no camera, no pose
+        }
+        emit cameraRunningChanged(false);
+    });
     connect(&link_, &devices::TransmitterLink::statusChanged, this,
             [this](const devices::LinkStatus& status) {
                 linkStatus_ = status;
@@ -164,6 +171,7 @@ bool RigSession::startCamera(const CameraRequest& request, QString* error) {
             break;
     }
     camera_.start(std::shared_ptr<devices::CameraSource>(std::move(source)));
+    emit cameraRunningChanged(true);
     return true;
 }
 
@@ -288,6 +296,9 @@ bool RigSession::trialRunning() const {
 RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault) {
     Loop& l = *loop_;
     l.running = false;
+    // Outside a trial the pose drives nothing: the link's failsafe is the stale command's now,
+    // not "pose lost" from the trial's last frames.
+    link_.setPoseLost(false);
     RigTrialResult result;
     result.trial = l.trials;
     result.stopped = stopped;

@@ -789,6 +789,17 @@ class TestGuiRun : public QObject {
         QVERIFY(!rig->runTrial());
         QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains("camera"));
         QVERIFY(startVirtualRig(w, rig));
+        // Connected: Connect and Start camera are spent, their opposites ready.
+        QTRY_VERIFY(!w.find<QAbstractButton>("connectLink")->isEnabled());
+        QVERIFY(w.find<QAbstractButton>("disconnectLink")->isEnabled());
+        QVERIFY(!w.find<QAbstractButton>("startCamera")->isEnabled());
+        QVERIFY(w.find<QAbstractButton>("stopCamera")->isEnabled());
+        // A car trial while the target is the aircraft: refused, and said why.
+        w.window.session().setPlant(QStringLiteral("aircraft"));
+        QVERIFY(!rig->runTrial());
+        QVERIFY2(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("slide-car")),
+                 qPrintable(w.find<QLabel>("rigTrialInfo")->text()));
+        w.window.session().setPlant(QStringLiteral("slidecar"));
         QSignalSpy finished(rig, &RigPanel::trialFinished);
         QVERIFY(rig->runTrial());
         QVERIFY(finished.wait(20000));
