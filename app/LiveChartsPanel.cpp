@@ -7,12 +7,16 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QCoreApplication>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLineSeries>
 #include <QMessageBox>
 #include <QPainter>
+#include <QPixmap>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTimer>
@@ -109,6 +113,8 @@ LiveChartsPanel::LiveChartsPanel(QWidget* parent)
     exportPng_->setObjectName(QStringLiteral("exportChartsPng"));
     for (QChart* chart : {errorChart_, thetaChart_, actionChart_}) {
         chart->legend()->setAlignment(Qt::AlignRight);
+        // A short piece of each line, dashed where the line is: u and u* apart at a glance.
+        chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
         chart->setMargins(QMargins(4, 4, 4, 4));
         chart->addAxis(makeAxis(), Qt::AlignBottom);
         chart->addAxis(makeAxis(), Qt::AlignLeft);
@@ -345,32 +351,58 @@ bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
 }
 
 bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
+    // Each chart as the operator sees it on its tab (a hidden tab's view has no valid size or
+    // layout of its own), one under the other; the tab on show is given back.
     forceAll_ = true;
     redraw();
     forceAll_ = false;
-    const QSize size(900, 300);
-    QImage image(size.width(), size.height() * 3, QImage::Format_ARGB32_Premultiplied);
+    const int shown = tabs_->currentIndex();
+    QList<QPixmap> pictures;
+    for (int i = 0; i < tabs_->count(); ++i) {
+        tabs_->setCurrentIndex(i);
+        QWidget* page = tabs_->currentWidget();
+        page->resize(tabs_->contentsRect().size());
+        QCoreApplication::sendPostedEvents();  // the chart's layout for its size
+        QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+        pictures << page->grab();
+    }
+    tabs_->setCurrentIndex(shown);
+    int width = 0, height = 0;
+    for (const QPixmap& picture : pictures) {
+        width = std::max(width, picture.width());
+        height += picture.height();
+    }
+    QImage image(std::max(width, 1), std::max(height, 1), QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
     QPainter painter(&image);
     int y = 0;
-    for (QChartView* view : {errorView_, thetaView_, actionView_}) {
-        const QSize old = view->size();
-        view->resize(size);
-        view->render(&painter, QRectF(0, y, size.width(), size.height()));
-        view->resize(old);
-        y += size.height();
+    for (const QPixmap& picture : pictures) {
+        painter.drawPixmap(0, y, picture);
+        y += picture.height();
     }
     painter.end();
     if (!image.save(path, "PNG")) {
-        *error = tr("cannot write the picture to %1").arg(path);
+        *error = tr("cannot write the picture to %1").arg(QDir::toNativeSeparators(path));
         return false;
     }
     return true;
 }
 
+namespace {
+// The extension the filter promised, if the operator typed none.
+QString withSuffix(QString path, const QString& suffix) {
+    if (!path.isEmpty() && QFileInfo(path).suffix().compare(suffix, Qt::CaseInsensitive) != 0) {
+        path += QLatin1Char('.') + suffix;
+    }
+    return path;
+}
+}  // namespace
+
 void LiveChartsPanel::askExportCsv() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export chart data"), QString(),
-                                                      tr("CSV files (*.csv)"));
+    const QString path =
+        withSuffix(QFileDialog::getSaveFileName(this, tr("Export chart data"), QString(),
+                                                tr("CSV files (*.csv)")),
+                   QStringLiteral("csv"));
     QString error;
     if (!path.isEmpty() && !exportCsv(path, &error)) {
         QMessageBox::warning(this, tr("Export chart data"), error);
@@ -378,8 +410,10 @@ void LiveChartsPanel::askExportCsv() {
 }
 
 void LiveChartsPanel::askExportPng() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export charts as picture"),
-                                                      QString(), tr("PNG pictures (*.png)"));
+    const QString path =
+        withSuffix(QFileDialog::getSaveFileName(this, tr("Export charts as picture"), QString(),
+                                                tr("PNG pictures (*.png)")),
+                   QStringLiteral("png"));
     QString error;
     if (!path.isEmpty() && !exportPng(path, &error)) {
         QMessageBox::warning(this, tr("Export charts as picture"), error);

@@ -696,109 +696,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="365"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="372"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="376"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="403"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="408"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="373"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="404"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="381"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="385"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="414"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="419"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="382"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="415"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="398"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="432"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="433"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="400"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="434"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="435"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="436"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="405"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="439"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="405"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="439"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="407"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="441"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="409"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="443"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="410"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="444"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="411"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="445"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="412"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="446"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="413"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="447"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="414"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="448"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="415"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="449"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="416"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="450"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>

@@ -40,6 +40,7 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -385,7 +386,23 @@ class TestGuiRun : public QObject {
         QCOMPARE(last.size(), lines[1].split(',').size());
         const QString png = dir.filePath("charts.png");
         QVERIFY2(charts->exportPng(png, &error), qPrintable(error));
-        QCOMPARE(QImage(png).size(), QSize(900, 900));
+        // The three charts at their on-screen size, one under the other, each drawn in full
+        // (not only the tab on show): every third of the picture has dark ink (axes, labels).
+        const QImage picture(png);
+        auto* tabs = charts->findChild<QTabWidget*>();
+        QVERIFY(picture.width() >= tabs->currentWidget()->width() - 2);
+        QVERIFY(picture.height() >= 3 * 150);
+        for (int part = 0; part < 3; ++part) {
+            int dark = 0;
+            const int top = part * picture.height() / 3;
+            for (int y = top; y < top + picture.height() / 3; y += 2) {
+                for (int x = 0; x < picture.width(); x += 2) {
+                    dark += qGray(picture.pixel(x, y)) < 100 ? 1 : 0;
+                }
+            }
+            QVERIFY2(dark > 200,
+                     qPrintable(QStringLiteral("chart %1: %2 dark px").arg(part).arg(dark)));
+        }
 
         // The theta chart has one series per entry of the method's theta: PRISCA's own features
         // on the slide-car, the shared ones for PGSD.
