@@ -32,9 +32,12 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
+#include <QShowEvent>
 #include <QStatusBar>
 #include <QTextEdit>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 
@@ -51,12 +54,13 @@ constexpr int kMaxRecent = 8;
 const char* const kRecentKey = "session/recent";
 const char* const kLastSessionKey = "session/last";  // the session as it was at the last close
 
-QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel,
-                  Qt::DockWidgetArea area) {
+QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel, Qt::DockWidgetArea area,
+                  bool scrolls = true) {
     auto* d = new QDockWidget(window);
     d->setObjectName(name);  // saveState() needs the name
-    if (area == Qt::RightDockWidgetArea) {
-        // Side panels scroll rather than force the window taller than a laptop screen.
+    if (scrolls) {
+        // Panels scroll rather than force the window taller than a laptop screen, or take the
+        // height of every panel tabbed with them (a tab group is as tall as its tallest).
         auto* scroll = new QScrollArea(d);
         scroll->setWidgetResizable(true);
         scroll->setFrameShape(QFrame::NoFrame);
@@ -117,7 +121,33 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     if (!restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
         resize(kDefaultSize);
     }
-    restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
+    stateRestored_ = restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (!stateRestored_ && !laidOut_) {
+        laidOut_ = true;
+        // Once the window has its size: the layout an operator left is kept; a first start
+        // shares the space out by proportion instead of by the panels' size hints.
+        QTimer::singleShot(0, this, &MainWindow::shareSpace);
+    }
+}
+
+void MainWindow::shareSpace() {
+    // The side panels as wide as their widest content needs (no sideways scrolling), about
+    // a third of the window; the arena over the charts with the larger share of the height.
+    int needed = 0;
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_}) {
+        if (auto* scroll = qobject_cast<QScrollArea*>(d->widget())) {
+            needed = std::max(needed, scroll->widget()->minimumSizeHint().width() +
+                                          scroll->verticalScrollBar()->sizeHint().width() + 8);
+        }
+    }
+    const int side = std::clamp(width() * 3 / 10, needed, std::max(needed, width() / 2));
+    resizeDocks({taskDock_, runDock_}, {side, side}, Qt::Horizontal);
+    resizeDocks({chartsDock_}, {height() * 2 / 5}, Qt::Vertical);
+    resizeDocks({taskDock_, runDock_}, {height() * 11 / 20, height() * 9 / 20}, Qt::Vertical);
 }
 
 MainWindow::~MainWindow() {
@@ -175,7 +205,9 @@ void MainWindow::createPanels() {
     controllerDock_ =
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
     runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
-    chartsDock_ = dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea);
+    // The charts fill what they get (they have no natural height to scroll to).
+    chartsDock_ =
+        dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea, false);
     experimentsDock_ =
         dock(this, QStringLiteral("experimentsDock"), experimentsPanel_, Qt::BottomDockWidgetArea);
     tabifyDockWidget(chartsDock_, experimentsDock_);
@@ -186,8 +218,6 @@ void MainWindow::createPanels() {
     tabifyDockWidget(recordDock_, mappingDock_);
     tabifyDockWidget(mappingDock_, controllerDock_);
     taskDock_->raise();
-    resizeDocks({chartsDock_}, {260}, Qt::Vertical);
-    resizeDocks({runDock_}, {380}, Qt::Horizontal);
 
     connect(session_, &LabSession::demonstrationChanged, this, &MainWindow::showScene);
     connect(session_, &LabSession::plantChanged, this, &MainWindow::showScene);

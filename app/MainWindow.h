@@ -56,11 +56,13 @@ class MainWindow : public QMainWindow {
     /// which window the platform thinks is active.
     bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
   private:
     void createPanels();
     void createMenus();
     void createToolBar();
+    void shareSpace();
     void retranslateUi();
     void showAbout();
     void announceLanguage(const QString& code);
@@ -100,6 +102,8 @@ class MainWindow : public QMainWindow {
     QAction* saveSessionAction_ = nullptr;
     QAction* quitAction_ = nullptr;
     QToolBar* runToolBar_ = nullptr;
+    bool stateRestored_ = false;  ///< the operator's own dock layout was restored
+    bool laidOut_ = false;
     QPushButton* emergencyButton_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QLabel* versionLabel_;

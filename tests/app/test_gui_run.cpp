@@ -35,6 +35,8 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSet>
 #include <QSettings>
 #include <QSpinBox>
@@ -475,6 +477,26 @@ class TestGuiRun : public QObject {
         // Esc works the same, here while idle.
         QTest::keyClick(&w.window, Qt::Key_Escape);
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+    }
+
+    void layout_at1280x800GivesTheArenaRoomAndNoSidewaysScrolling() {
+        Window w;  // a fresh start (init() cleared the settings): the space shared out
+        auto* arena = w.window.centralWidget();
+        QTRY_VERIFY2(
+            arena->height() >= w.window.height() * 2 / 5,
+            qPrintable(
+                QStringLiteral("arena %1 of %2 px").arg(arena->height()).arg(w.window.height())));
+        for (QDockWidget* dock : w.window.findChildren<QDockWidget*>()) {
+            if (w.window.dockWidgetArea(dock) != Qt::RightDockWidgetArea) {
+                continue;
+            }
+            dock->raise();
+            QCoreApplication::processEvents();
+            auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+            QVERIFY(scroll != nullptr);
+            QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                     qPrintable(dock->objectName() + QStringLiteral(" scrolls sideways")));
+        }
     }
 
     void escOnAnOpenComboList_onlyClosesIt() {
