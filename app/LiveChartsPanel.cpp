@@ -54,9 +54,16 @@ void labelRoundTicks(QCategoryAxis* axis) {
     if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) {
         return;
     }
-    const double raw = (hi - lo) / 5.0;
+    // About one tick per 45 px of axis (set by setRange from the plot area), at least three.
+    const double target = std::max(3.0, axis->property("targetTicks").toDouble());
+    const double raw = (hi - lo) / target;
     const double power = std::pow(10.0, std::floor(std::log10(raw)));
-    const double step = raw / power < 2.0 ? power : raw / power < 5.0 ? 2 * power : 5 * power;
+    // The smallest round step at least `raw`: at most about target + 1 ticks.
+    const double ratio = raw / power;
+    const double step = ratio <= 1.0   ? power
+                        : ratio <= 2.0 ? 2 * power
+                        : ratio <= 5.0 ? 5 * power
+                                       : 10 * power;
     const double first = std::ceil(lo / step - 1e-9);
     const double last = std::floor(hi / step + 1e-9);
     axis->setStartValue(lo - 1e-9 * (hi - lo));
@@ -88,6 +95,9 @@ void setRange(QChart* chart, double x0, double x1, double y0, double y1) {
         y1 += 0.5;
     }
     const double pad = 0.05 * (y1 - y0);
+    const QRectF area = chart->plotArea();
+    horizontal.first()->setProperty("targetTicks", area.width() > 0 ? area.width() / 90.0 : 5.0);
+    vertical.first()->setProperty("targetTicks", area.height() > 0 ? area.height() / 45.0 : 5.0);
     horizontal.first()->setRange(x0, x1);
     vertical.first()->setRange(y0 - pad, y1 + pad);
 }
