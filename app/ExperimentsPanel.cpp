@@ -43,6 +43,12 @@ QString plusMinus(const core::ErrorSummary& s) {
         .arg(s.standardDeviation, 0, 'f', 2);
 }
 
+// A variance only where there were trials to take it from (a cancelled row has none).
+QString variance(const core::ErrorSummary& s) {
+    return s.count == 0 || !std::isfinite(s.variance) ? QStringLiteral("—")
+                                                      : QString::number(s.variance, 'f', 2);
+}
+
 }  // namespace
 
 ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
@@ -229,9 +235,8 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
         const QStringList cells = {row.shownLabel(), plusMinus(row.position),
-                                   QString::number(row.position.variance, 'f', 2),
-                                   plusMinus(row.orientation),
-                                   QString::number(row.orientation.variance, 'f', 2)};
+                                   variance(row.position), plusMinus(row.orientation),
+                                   variance(row.orientation)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setTextAlignment(c == 0 ? Qt::AlignLeft | Qt::AlignVCenter

@@ -296,6 +296,29 @@ class TestGuiRun : public QObject {
         QVERIFY(!QImage(png).isNull());
     }
 
+    void experiments_cancelledTable1ShowsDashesNotNan() {
+        Window w;
+        auto* panel = w.find<ExperimentsPanel>("experimentsPanel");
+        w.find<QComboBox>("experimentKind")->setCurrentIndex(0);
+        w.find<QSpinBox>("experimentCount")->setValue(20);
+        QSignalSpy finished(panel, &ExperimentsPanel::finished);
+        w.find<QAbstractButton>("startExperiment")->click();
+        w.find<QAbstractButton>("cancelExperiment")->click();  // the trials under way finish
+        QVERIFY(finished.wait(kRunTimeoutMs));
+        auto* table = w.find<QTableWidget>("experimentTable");
+        QVERIFY(table->rowCount() > 0);
+        int dashes = 0;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            for (int c = 1; c < table->columnCount(); ++c) {
+                const QString text = table->item(r, c)->text();
+                QVERIFY2(!text.contains(QLatin1String("nan"), Qt::CaseInsensitive),
+                         qPrintable(QStringLiteral("row %1 col %2: %3").arg(r).arg(c).arg(text)));
+                dashes += text == QStringLiteral("—") ? 1 : 0;
+            }
+        }
+        QVERIFY(dashes > 0);  // the methods never reached show a dash in every column
+    }
+
     void experiments_cancelStopsTheCurvesAndKeepsWhatFinished() {
         Window w;
         w.find<QComboBox>("target")->setCurrentIndex(1);
