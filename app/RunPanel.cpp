@@ -52,7 +52,11 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
       resetEmergencyAction_(new QAction(this)),
       exportLog_(new QPushButton(this)),
       status_(new QLabel(this)),
-      results_(new QTableWidget(0, 4, this)) {
+      results_(new QTableWidget(0, 4, this)),
+      divergence_(new QWidget(this)),
+      divergenceText_(new QLabel(divergence_)),
+      divergenceStop_(new QPushButton(divergence_)),
+      divergenceRestart_(new QPushButton(divergence_)) {
     setObjectName(QStringLiteral("runPanel"));
     trials_->setObjectName(QStringLiteral("trials"));
     trials_->setRange(1, 1000);
@@ -102,6 +106,22 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(status_);
+    divergence_->setObjectName(QStringLiteral("divergenceWarning"));
+    divergence_->setStyleSheet(QStringLiteral(
+        "#divergenceWarning { background: #fdecea; border: 1px solid #b00020; border-radius: 4px; }"
+        "QLabel { color: #b00020; }"));
+    divergence_->setAttribute(Qt::WA_StyledBackground);
+    divergenceText_->setWordWrap(true);
+    divergenceStop_->setObjectName(QStringLiteral("divergenceStop"));
+    divergenceRestart_->setObjectName(QStringLiteral("divergenceRestart"));
+    auto* warning = new QVBoxLayout(divergence_);
+    warning->addWidget(divergenceText_);
+    auto* choices = new QHBoxLayout;
+    choices->addWidget(divergenceStop_);
+    choices->addWidget(divergenceRestart_);
+    warning->addLayout(choices);
+    divergence_->hide();
+    layout->addWidget(divergence_);
     layout->addWidget(results_, 1);
     layout->addWidget(exportLog_);
 
@@ -171,6 +191,20 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     connect(&run_, &RunController::progress, status_, &QLabel::setText);
     connect(&run_, &RunController::failed, status_, &QLabel::setText);
     connect(&run_, &RunController::trialFinished, this, &RunPanel::addTrialRow);
+    connect(divergenceStop_, &QPushButton::clicked, this, [this] {
+        run_.stop();
+        divergence_->hide();
+    });
+    // Learning starts again from the method's start (a new run is cold), the views afresh.
+    connect(divergenceRestart_, &QPushButton::clicked, this, [this] {
+        divergence_->hide();
+        if (phase_ == RunPhase::Idle) {
+            startRun();
+        } else if (phase_ != RunPhase::EmergencyStopped) {
+            restartPending_ = true;  // once the stopped run is idle
+            run_.stop();
+        }
+    });
     retranslateUi();
     updateButtons(run_.phase());
 }
@@ -223,6 +257,8 @@ void RunPanel::startRun() {
                                             .arg(session_.scriptedSeed())
                                       : session_.demonstrationSource();
     results_->setRowCount(0);
+    firstTrialRms_ = 0.0;
+    divergence_->hide();
     exportLog_->setEnabled(false);
     emit runStarting();
     run_.start(request);
@@ -242,6 +278,13 @@ bool RunPanel::exportRunLog(const QString& path, QString* error) const {
     return true;
 }
 
+bool RunPanel::diverged(const sim::TrialSummary& summary, double firstTrialRms) {
+    // Three times the first trial's tracking error, and clearly off the path (the first trial
+    // is the method's untrained start: learning that works brings the error down from there).
+    return summary.complete && firstTrialRms > 0.0 && std::isfinite(firstTrialRms) &&
+           !(summary.trackingRms <= 3.0 * firstTrialRms);
+}
+
 void RunPanel::updateButtons(RunPhase phase) {
     const bool active =
         phase == RunPhase::Running || phase == RunPhase::Paused || phase == RunPhase::Training;
@@ -252,6 +295,11 @@ void RunPanel::updateButtons(RunPhase phase) {
     stopAction_->setEnabled(active);
     resetEmergencyAction_->setEnabled(phase == RunPhase::EmergencyStopped);
     retranslateRunActions();
+    if (phase == RunPhase::Idle && restartPending_) {
+        restartPending_ = false;
+        startRun();
+        return;
+    }
     if (phase == RunPhase::EmergencyStopped) {
         status_->setText(tr("E-STOP engaged: the run is stopped. Reset E-STOP to run again."));
     } else if (phase == RunPhase::Training) {
@@ -292,6 +340,19 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
     cell(2, planar ? QString::number(summary.finalHeadingError * 180.0 / M_PI, 'f', 1)
                    : QStringLiteral("—"));
     cell(3, QString::number(summary.trackingRms, 'f', 3));
+    if (row == 0 && summary.complete) {
+        firstTrialRms_ = summary.trackingRms;
+    } else if (diverged(summary, firstTrialRms_)) {
+        for (int c = 0; c < results_->columnCount(); ++c) {
+            results_->item(row, c)->setBackground(QColor(0xfd, 0xd8, 0xd8));
+        }
+        divergenceText_->setText(
+            tr("Trial %1 diverged: its tracking error is %2 times the first trial's. The learner "
+               "may have gone unstable; stop the run, or start learning again from the start.")
+                .arg(trial + 1)
+                .arg(summary.trackingRms / firstTrialRms_, 0, 'f', 1));
+        divergence_->show();
+    }
     results_->scrollToBottom();
 }
 
@@ -333,6 +394,10 @@ void RunPanel::retranslateUi() {
         tr("Stops the run, a recording and the rig at once (within one control period) and stays "
            "engaged until reset. Space outside text fields, or Esc."));
     resetEmergencyAction_->setText(tr("Reset E-STOP"));
+    divergenceStop_->setText(tr("Stop the run"));
+    divergenceRestart_->setText(tr("Start learning again"));
+    divergenceRestart_->setToolTip(
+        tr("Stop this run and start a new one: the method starts again from its initial policy"));
     resetEmergencyAction_->setToolTip(tr("Release the E-STOP latch so a run can start again"));
     // Short headings (the table is narrow); the tooltips say them in full.
     results_->setHorizontalHeaderLabels(

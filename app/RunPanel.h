@@ -60,6 +60,8 @@ class RunPanel : public QWidget {
     void updateButtons(RunPhase phase);
     void addTrialRow(int trial, const sim::TrialSummary& summary);
     void clearResultsForNewTask();
+    /// A trial that ends far worse than the run's first: a learner gone unstable, most likely.
+    static bool diverged(const sim::TrialSummary& summary, double firstTrialRms);
 
     LabSession& session_;
     RunController& run_;
@@ -83,6 +85,14 @@ class RunPanel : public QWidget {
     QPushButton* exportLog_;  // the last run's log to CSV
     QLabel* status_;
     QTableWidget* results_;
+    // Shown when a trial diverges: what happened, and what the operator can do about it.
+    QWidget* divergence_;
+    QLabel* divergenceText_;
+    QPushButton* divergenceStop_;
+    QPushButton* divergenceRestart_;
+    double firstTrialRms_ = 0.0;
+    bool restartPending_ = false;  ///< a new run once the stopped one is idle  ///< the run's first
+                                   ///< finished trial, the yardstick
 };
 
 }  // namespace prisca::app

@@ -522,6 +522,34 @@ class TestGuiRun : public QObject {
         }
     }
 
+    void divergingTrial_isShownWithAWayOut() {
+        Window w;
+        w.setSpeedIndex(0);
+        auto* warning = w.find<QWidget>("divergenceWarning");
+        QVERIFY(!warning->isVisible());
+        // Trials as the run reports them: the second within reach of the first, the third five
+        // times the first's tracking error.
+        prisca::sim::TrialSummary summary;
+        summary.trackingRms = 0.10;
+        emit w.window.run().trialFinished(0, summary);
+        summary.trackingRms = 0.25;
+        emit w.window.run().trialFinished(1, summary);
+        QVERIFY(!warning->isVisible());
+        summary.trackingRms = 0.50;
+        emit w.window.run().trialFinished(2, summary);
+        QVERIFY(warning->isVisible());
+        QVERIFY2(warning->findChild<QLabel*>()->text().contains(QLatin1String("5.0")),
+                 qPrintable(warning->findChild<QLabel*>()->text()));
+        QCOMPARE(w.results()->item(2, 0)->background().color(), QColor(0xfd, 0xd8, 0xd8));
+        // "Start learning again": a new run, from the method's start, the warning gone.
+        w.find<QAbstractButton>("divergenceRestart")->click();
+        QVERIFY(!warning->isVisible());
+        QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::Running, kRunTimeoutMs);
+        QCOMPARE(w.results()->rowCount(), 0);
+        w.find<QAbstractButton>("stopButton")->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+    }
+
     void escOnAnOpenComboList_onlyClosesIt() {
         Window w;
         auto* speed = w.find<QComboBox>("speed");
