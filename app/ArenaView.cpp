@@ -111,13 +111,36 @@ void ArenaView::addSamples(const QVector<LiveSample>& samples) {
         referenceIndex_ = sample.referenceIndex;
     }
     if (!samples.isEmpty()) {
+        followRobot();
         update();
+    }
+}
+
+std::optional<QPointF> ArenaView::robotPosition() const {
+    if (!info_.pose || state_.size() <= std::max(info_.pose->x, info_.pose->y)) {
+        return std::nullopt;
+    }
+    return QPointF(state_[info_.pose->x], state_[info_.pose->y]);
+}
+
+void ArenaView::followRobot() {
+    // The view follows a robot about to leave it, unless the operator placed the view.
+    const auto car = robotPosition();
+    if (userMoved_ || !car) {
+        return;
+    }
+    const QPointF at = toScreen(*car);
+    const double margin = 0.05 * std::min(width(), height());
+    if (at.x() < margin || at.y() < margin || at.x() > width() - margin ||
+        at.y() > height() - margin) {
+        fitScene();
     }
 }
 
 void ArenaView::showState(const Eigen::VectorXd& state, const Eigen::VectorXd& action) {
     state_ = state;
     action_ = action;
+    followRobot();
     update();
 }
 
@@ -134,6 +157,21 @@ QRectF ArenaView::sceneBounds() const {
         x1 = std::max(x1, p.x());
         y0 = std::min(y0, p.y());
         y1 = std::max(y1, p.y());
+    }
+    // The robot and its trail too: a car that left the path is still in the picture.
+    const auto include = [&](const QPointF& p) {
+        if (std::isfinite(p.x()) && std::isfinite(p.y())) {
+            x0 = std::min(x0, p.x());
+            x1 = std::max(x1, p.x());
+            y0 = std::min(y0, p.y());
+            y1 = std::max(y1, p.y());
+        }
+    };
+    for (const QPointF& p : trail_) {
+        include(p);
+    }
+    if (const auto car = robotPosition()) {
+        include(*car);
     }
     const double margin = 0.12 * std::max(x1 - x0, y1 - y0) + 0.3;
     return QRectF(QPointF(x0 - margin, y0 - margin), QPointF(x1 + margin, y1 + margin));

@@ -54,6 +54,10 @@ class ArenaView : public QWidget {
     QPointF toScreen(const QPointF& world) const;
     QPointF toWorld(const QPointF& screen) const;
     QRectF sceneBounds() const;
+    /// Where the robot is (planar plants), if known.
+    std::optional<QPointF> robotPosition() const;
+    /// Refits the view when the robot is about to leave it (not after the operator moved it).
+    void followRobot();
     void drawGrid(QPainter& painter) const;
     void drawPlanar(QPainter& painter) const;
     void drawCar(QPainter& painter, const Eigen::VectorXd& state, double steering) const;

@@ -152,6 +152,8 @@ void RecordPanel::beginRecording() {
         worker_,
         [w = worker_, plant = session_.plant(), path = streamPath_] { w->start(plant, path); },
         Qt::QueuedConnection);
+    recordingClock_.start();
+    lastReadoutMs_ = -1000;
     status_->setText(tr("Recording... drive, then press Stop."));
     updateButtons();
 }
@@ -187,6 +189,24 @@ void RecordPanel::tick() {
     }
     QMetaObject::invokeMethod(
         worker_, [w = worker_, scaled] { w->setInput(scaled); }, Qt::QueuedConnection);
+    // What the operator is commanding, and for how long, a few times a second.
+    if (recordingClock_.isValid() && recordingClock_.elapsed() - lastReadoutMs_ >= 200) {
+        lastReadoutMs_ = recordingClock_.elapsed();
+        QStringList commands;
+        for (Eigen::Index l = 0; l < scaled.size(); ++l) {
+            commands << QStringLiteral("%1 %2")
+                            .arg(info.actionNames.value(static_cast<int>(l)))
+                            .arg(scaled[l], 0, 'f', 2);
+        }
+        QString text = tr("Recording %1 s: %2. Press Stop when done.")
+                           .arg(recordingClock_.elapsed() / 1000.0, 0, 'f', 1)
+                           .arg(commands.join(QStringLiteral(", ")));
+        if (info.name == QLatin1String("slidecar")) {
+            text += QLatin1Char('\n') +
+                    tr("The car has no brakes: let go of the throttle early, it slides on.");
+        }
+        status_->setText(text);
+    }
 }
 
 void RecordPanel::stopRecording() {

@@ -2,6 +2,7 @@
 
 #include "app/RecordingWorker.h"
 
+#include <QElapsedTimer>
 #include <QThread>
 #include <QWidget>
 
@@ -78,7 +79,9 @@ class RecordPanel : public QWidget {
     QPushButton* discard_;
     QLabel* status_;
     QTimer* timer_;
-    int countdownLeft_ = 0;  ///< ticks until recording starts; 0 when not counting down
+    int countdownLeft_ = 0;         ///< ticks until recording starts; 0 when not counting down
+    QElapsedTimer recordingClock_;  ///< since the recording began, for the live readout
+    qint64 lastReadoutMs_ = -1000;  ///< when the readout was last refreshed [ms on that clock]
     bool recording_ = false;
     /// The recording under way was ended by E-STOP: kept on disk, not made the demonstration.
     bool endedByEmergency_ = false;

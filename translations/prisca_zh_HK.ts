@@ -27,27 +27,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="188"/>
+        <location filename="../app/ArenaView.cpp" line="226"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="189"/>
+        <location filename="../app/ArenaView.cpp" line="227"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="206"/>
+        <location filename="../app/ArenaView.cpp" line="244"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="207"/>
+        <location filename="../app/ArenaView.cpp" line="245"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="421"/>
+        <location filename="../app/ArenaView.cpp" line="459"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -1102,123 +1102,133 @@
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="90"/>
-        <location filename="../app/RecordPanel.cpp" line="330"/>
+        <location filename="../app/RecordPanel.cpp" line="349"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="155"/>
+        <location filename="../app/RecordPanel.cpp" line="157"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="162"/>
+        <location filename="../app/RecordPanel.cpp" line="164"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="197"/>
+        <location filename="../app/RecordPanel.cpp" line="200"/>
+        <source>Recording %1 s: %2. Press Stop when done.</source>
+        <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="205"/>
+        <source>The car has no brakes: let go of the throttle early, it slides on.</source>
+        <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RecordPanel.cpp" line="216"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="230"/>
+        <location filename="../app/RecordPanel.cpp" line="249"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="231"/>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="241"/>
+        <location filename="../app/RecordPanel.cpp" line="260"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="242"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="256"/>
+        <location filename="../app/RecordPanel.cpp" line="275"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="263"/>
+        <location filename="../app/RecordPanel.cpp" line="282"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="272"/>
-        <location filename="../app/RecordPanel.cpp" line="283"/>
+        <location filename="../app/RecordPanel.cpp" line="291"/>
+        <location filename="../app/RecordPanel.cpp" line="302"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="274"/>
+        <location filename="../app/RecordPanel.cpp" line="293"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="287"/>
+        <location filename="../app/RecordPanel.cpp" line="306"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="298"/>
+        <location filename="../app/RecordPanel.cpp" line="317"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="320"/>
+        <location filename="../app/RecordPanel.cpp" line="339"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="325"/>
+        <location filename="../app/RecordPanel.cpp" line="344"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="327"/>
+        <location filename="../app/RecordPanel.cpp" line="346"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="328"/>
+        <location filename="../app/RecordPanel.cpp" line="347"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="329"/>
+        <location filename="../app/RecordPanel.cpp" line="348"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="331"/>
+        <location filename="../app/RecordPanel.cpp" line="350"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="332"/>
+        <location filename="../app/RecordPanel.cpp" line="351"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="333"/>
+        <location filename="../app/RecordPanel.cpp" line="352"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="334"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="335"/>
+        <location filename="../app/RecordPanel.cpp" line="354"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>

@@ -176,6 +176,11 @@ class TestGuiRun : public QObject {
         // Full throttle by ramp (2 per second), then a left turn, then hands off.
         QTest::keyPress(&w.window, Qt::Key_Up);
         QTRY_VERIFY(panel->input()[0] > 0.99);
+        // The operator sees the time and what is commanded, and the brakeless car's warning.
+        QTRY_VERIFY2(
+            w.find<QLabel>("recordStatus")->text().contains(QLatin1String("throttle 1.00")),
+            qPrintable(w.find<QLabel>("recordStatus")->text()));
+        QVERIFY(w.find<QLabel>("recordStatus")->text().contains(QLatin1String("no brakes")));
         QTest::qWait(600);
         QTest::keyPress(&w.window, Qt::Key_A);
         QTRY_VERIFY(panel->input()[1] > 0.5);
