@@ -178,10 +178,15 @@ QRectF ArenaView::sceneBounds() const {
 }
 
 void ArenaView::fitScene() {
+    // The scene fits the area the axis labels leave free (the y labels on the right, the x
+    // labels along the bottom), so no label is drawn over the robot or its path.
+    constexpr double kRightLabels = 60.0;   // [px]
+    constexpr double kBottomLabels = 30.0;  // [px]
     const QRectF bounds = sceneBounds();
-    centre_ = bounds.center();
-    const double w = std::max(1, width()), h = std::max(1, height());
-    scale_ = std::min(w / bounds.width(), h / bounds.height());
+    const double w = std::max(kRightLabels + 1.0, static_cast<double>(width()));
+    const double h = std::max(kBottomLabels + 1.0, static_cast<double>(height()));
+    scale_ = std::min((w - kRightLabels) / bounds.width(), (h - kBottomLabels) / bounds.height());
+    centre_ = bounds.center() + QPointF(0.5 * kRightLabels / scale_, -0.5 * kBottomLabels / scale_);
     update();
 }
 
