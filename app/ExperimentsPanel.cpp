@@ -312,7 +312,11 @@ void ExperimentsPanel::showFigure() {
         figureView_->clear();
         return;
     }
-    const QImage image = plot::renderFigure(figure_);
+    // Drawn at the size it is shown (text at its normal size, not a 1200 x 800 picture shrunk
+    // to a third), never smaller than a readable minimum.
+    plot::Figure onScreen = figure_;
+    onScreen.size = figureView_->size().expandedTo(QSize(480, 320));
+    const QImage image = plot::renderFigure(onScreen);
     figureView_->setPixmap(QPixmap::fromImage(image).scaled(
         figureView_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
