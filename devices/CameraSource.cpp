@@ -3,7 +3,9 @@
 #include <QFileInfo>
 #include <QLoggingCategory>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 Q_LOGGING_CATEGORY(lcCamera, "prisca.devices.camera")
@@ -135,6 +137,12 @@ class SyntheticSource : public CameraSource {
         return true;
     }
     bool grab(CameraFrame* frame, QString*) override {
+        // As a real camera under a late reader: the frames whose time has passed are gone
+        // (dropped), and the one delivered is the one due now, so the scene's time keeps up
+        // with the clock instead of falling further behind on a loaded machine.
+        const long long due =
+            static_cast<long long>(std::floor((steadyNowNs() - startNs_) * 1e-9 * fps_));
+        index_ = std::max(index_, due);
         paceTo(startNs_, index_, fps_);
         const std::optional<PlanarPose> pose = poseAt_(index_ / fps_);
         if (pose) {
@@ -145,7 +153,8 @@ class SyntheticSource : public CameraSource {
             empty.flicker = 1.0;  // no LED lit: nothing to see
             frame->image = renderLeds({100, 100, 0}, calibration_, empty, LedGeometry{}, seed_);
         }
-        frame->steadyNs = steadyNowNs();
+        // Stamped with its exposure time, as a camera driver stamps its buffers.
+        frame->steadyNs = startNs_ + static_cast<std::int64_t>(index_ * 1e9 / fps_);
         frame->index = index_++;
         return true;
     }
