@@ -6,6 +6,7 @@
 #include "sim/MethodCatalog.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -174,6 +175,12 @@ void ExperimentsPanel::start() {
     }
     ExperimentRequest request;
     request.kind = static_cast<ExperimentRequest::Kind>(kind_->currentData().toInt());
+    // Which demonstration the result is about, named in its caption and every export.
+    demonstrationUsed_ = session_.demonstrationSource().isEmpty()
+                             ? tr("the scripted operator (%1, seed %2)")
+                                   .arg(session_.scriptedStyle())
+                                   .arg(session_.scriptedSeed())
+                             : QDir::toNativeSeparators(session_.demonstrationSource());
     if (request.kind == ExperimentRequest::Kind::Table1 && !session_.profile().info.pose) {
         QMessageBox::information(
             this, tr("Experiment"),
@@ -220,10 +227,12 @@ void ExperimentsPanel::setRunning(bool running) {
 void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> result) {
     int done = 0;
     rows_ = sim::table1Rows(*result, &done);
-    caption_ = tr("Slide parking in simulation (%1): %2 trials per method, seed %3")
+    caption_ = tr("Slide parking in simulation (%1): %2 trials per method, seed %3; "
+                  "demonstration: %4")
                    .arg(session_.plant())
                    .arg(count_->value())
-                   .arg(seed_->value());
+                   .arg(seed_->value())
+                   .arg(demonstrationUsed_);
     if (result->cancelled) {
         caption_ += tr(" (cancelled: %1 trials finished)").arg(done);
     }
@@ -255,11 +264,13 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
 void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSummary>> curves,
                                   bool cancelled) {
     rows_.clear();
-    caption_ = tr("Learning curves (%1): %2 runs per method, %3 steps each, seed %4")
+    caption_ = tr("Learning curves (%1): %2 runs per method, %3 steps each, seed %4; "
+                  "demonstration: %5")
                    .arg(session_.plant())
                    .arg(count_->value())
                    .arg(budget_->value())
-                   .arg(seed_->value());
+                   .arg(seed_->value())
+                   .arg(demonstrationUsed_);
     if (cancelled) {
         caption_ += tr(" (cancelled)");
     }

@@ -77,6 +77,7 @@ class ExperimentsPanel : public QWidget {
     std::vector<core::Table1Row> rows_;
     QString caption_;
     plot::Figure figure_;
+    QString demonstrationUsed_;  ///< the demonstration of the experiment under way or shown
     bool hasFigure_ = false;
 };
 

@@ -27,27 +27,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="226"/>
+        <location filename="../app/ArenaView.cpp" line="231"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="227"/>
+        <location filename="../app/ArenaView.cpp" line="232"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="244"/>
+        <location filename="../app/ArenaView.cpp" line="249"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="245"/>
+        <location filename="../app/ArenaView.cpp" line="250"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="459"/>
+        <location filename="../app/ArenaView.cpp" line="464"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -357,186 +357,191 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="151"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="179"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="152"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="186"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
         <location filename="../app/ExperimentsPanel.cpp" line="180"/>
+        <source>the scripted operator (%1, seed %2)</source>
+        <translation>腳本操作員（%1，種子 %2）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="187"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="198"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="205"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="207"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="214"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="223"/>
-        <source>Slide parking in simulation (%1): %2 trials per method, seed %3</source>
-        <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="228"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="237"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="270"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="234"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="243"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="234"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="243"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
-        <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4</source>
-        <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4</translation>
+        <location filename="../app/ExperimentsPanel.cpp" line="230"/>
+        <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
+        <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
+        <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="275"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="270"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="270"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="270"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="300"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="375"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="388"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="397"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="409"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="412"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="398"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="413"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="414"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="415"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="437"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="440"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="442"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="443"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="445"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="460"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="446"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="461"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="462"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="448"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="463"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -1102,7 +1107,7 @@
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="90"/>
-        <location filename="../app/RecordPanel.cpp" line="349"/>
+        <location filename="../app/RecordPanel.cpp" line="350"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
@@ -1117,118 +1122,118 @@
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="200"/>
+        <location filename="../app/RecordPanel.cpp" line="201"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="205"/>
+        <location filename="../app/RecordPanel.cpp" line="206"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="216"/>
+        <location filename="../app/RecordPanel.cpp" line="217"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="249"/>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="251"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="262"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="275"/>
+        <location filename="../app/RecordPanel.cpp" line="276"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282"/>
+        <location filename="../app/RecordPanel.cpp" line="283"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="291"/>
-        <location filename="../app/RecordPanel.cpp" line="302"/>
+        <location filename="../app/RecordPanel.cpp" line="292"/>
+        <location filename="../app/RecordPanel.cpp" line="303"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293"/>
+        <location filename="../app/RecordPanel.cpp" line="294"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="306"/>
+        <location filename="../app/RecordPanel.cpp" line="307"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="317"/>
+        <location filename="../app/RecordPanel.cpp" line="318"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="339"/>
+        <location filename="../app/RecordPanel.cpp" line="340"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="344"/>
+        <location filename="../app/RecordPanel.cpp" line="345"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="346"/>
+        <location filename="../app/RecordPanel.cpp" line="347"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="347"/>
+        <location filename="../app/RecordPanel.cpp" line="348"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="348"/>
+        <location filename="../app/RecordPanel.cpp" line="349"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="350"/>
+        <location filename="../app/RecordPanel.cpp" line="351"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="351"/>
+        <location filename="../app/RecordPanel.cpp" line="352"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="352"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="354"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="354"/>
+        <location filename="../app/RecordPanel.cpp" line="355"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>

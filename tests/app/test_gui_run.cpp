@@ -282,6 +282,11 @@ class TestGuiRun : public QObject {
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("OURS (PRISCA)"));
         QVERIFY(table->item(0, 1)->text().contains(QStringLiteral("±")));
         QVERIFY(!w.find<QLabel>("experimentFigure")->pixmap().isNull());
+        // The result names the demonstration it is about.
+        QVERIFY2(
+            panel->tableText(prisca::core::TableFormat::Markdown)
+                .contains(QLatin1String("demonstration: the scripted operator (stick-180-left")),
+            qPrintable(panel->tableText(prisca::core::TableFormat::Markdown).left(300)));
 
         QTemporaryDir dir;
         QString error;
