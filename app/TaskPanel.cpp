@@ -16,6 +16,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -89,10 +90,51 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     }
 }
 
+QString TaskPanel::styleLabel(const QString& name) {
+    // A style's command-line name read in the window's language, part by part
+    // ("stick-180-left": stick, 180 degrees, left); English shows the name itself.
+    static const char* const kPhrases[] = {QT_TR_NOOP("figure-eight"), QT_TR_NOOP("s-turn"),
+                                           QT_TR_NOOP("u-turn"), QT_TR_NOOP("s-bend")};
+    static const char* const kWords[] = {
+        QT_TR_NOOP("stick"), QT_TR_NOOP("keyboard"), QT_TR_NOOP("standstill"), QT_TR_NOOP("fast"),
+        QT_TR_NOOP("slow"),  QT_TR_NOOP("blip"),     QT_TR_NOOP("jitter"),     QT_TR_NOOP("coast"),
+        QT_TR_NOOP("left"),  QT_TR_NOOP("right"),    QT_TR_NOOP("swing"),      QT_TR_NOOP("medium"),
+        QT_TR_NOOP("small"), QT_TR_NOOP("large"),    QT_TR_NOOP("circle"),     QT_TR_NOOP("wide"),
+        QT_TR_NOOP("dock"),  QT_TR_NOOP("spin")};
+    QString rest = name;
+    QStringList parts;
+    bool translated = false;
+    while (!rest.isEmpty()) {
+        QString part;
+        for (const char* phrase : kPhrases) {
+            const QString p = QString::fromLatin1(phrase);
+            if (rest.startsWith(p) && (rest.size() == p.size() || rest[p.size()] == u'-')) {
+                part = p;
+            }
+        }
+        if (part.isEmpty()) {
+            part = rest.section(QLatin1Char('-'), 0, 0);
+        }
+        rest = rest.mid(part.size() + 1);
+        bool number = false;
+        part.toInt(&number);
+        QString shown = number ? tr("%1°").arg(part) : part;
+        for (const char* word : kPhrases) {
+            shown = part == QLatin1String(word) ? tr(word) : shown;
+        }
+        for (const char* word : kWords) {
+            shown = part == QLatin1String(word) ? tr(word) : shown;
+        }
+        translated = translated || (!number && shown != part);
+        parts << shown;
+    }
+    return translated ? parts.join(QLatin1Char(' ')) : name;
+}
+
 void TaskPanel::fillStyles() {
     style_->clear();
     for (const sim::DemonstrationStyle& style : sim::DemonstrationStyles::of(session_.plant())) {
-        style_->addItem(style.name, style.name);
+        style_->addItem(styleLabel(style.name), style.name);
         style_->setItemData(style_->count() - 1, style.description, Qt::ToolTipRole);
     }
     style_->setCurrentIndex(std::max(0, style_->findData(session_.scriptedStyle())));
@@ -160,7 +202,7 @@ void TaskPanel::showDemonstration() {
     }
     const QString source = session_.demonstrationSource().isEmpty()
                                ? tr("the scripted operator (%1, seed %2)")
-                                     .arg(session_.scriptedStyle())
+                                     .arg(styleLabel(session_.scriptedStyle()))
                                      .arg(session_.scriptedSeed())
                                : QFileInfo(session_.demonstrationSource()).fileName();
     demonstration_->setText(tr("Demonstration: %1 samples, %2 s at %3 Hz, from %4.")
@@ -179,6 +221,10 @@ void TaskPanel::changeEvent(QEvent* event) {
 
 void TaskPanel::retranslateUi() {
     targetLabel_->setText(tr("Target:"));
+    if (!session_.plant().isEmpty()) {
+        const QSignalBlocker quiet(style_);  // relabelled, not a new choice
+        fillStyles();
+    }
     for (int i = 0; i < target_->count(); ++i) {
         const QString name = target_->itemData(i).toString();
         const sim::PlantEntry* entry = sim::PlantCatalog::find(name);

@@ -33,6 +33,8 @@ class TaskPanel : public QWidget {
     void askOpen();
     void askSave();
     void fillStyles();
+    /// A demonstration style's name as shown in the window's language.
+    static QString styleLabel(const QString& name);
     void useScripted();
 
     LabSession& session_;

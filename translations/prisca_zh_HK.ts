@@ -1862,14 +1862,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="116"/>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
-        <location filename="../app/TaskPanel.cpp" line="133"/>
+        <location filename="../app/TaskPanel.cpp" line="159"/>
+        <location filename="../app/TaskPanel.cpp" line="166"/>
+        <location filename="../app/TaskPanel.cpp" line="176"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="117"/>
+        <location filename="../app/TaskPanel.cpp" line="160"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1878,93 +1878,208 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="167"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="134"/>
+        <location filename="../app/TaskPanel.cpp" line="177"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="142"/>
-        <location filename="../app/TaskPanel.cpp" line="149"/>
+        <location filename="../app/TaskPanel.cpp" line="185"/>
+        <location filename="../app/TaskPanel.cpp" line="192"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="143"/>
+        <location filename="../app/TaskPanel.cpp" line="186"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="107"/>
+        <location filename="../app/TaskPanel.cpp" line="150"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="162"/>
+        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <source>figure-eight</source>
+        <translation>8 字形</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <source>s-turn</source>
+        <translation>S 形轉彎</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <source>u-turn</source>
+        <translation>掉頭</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="98"/>
+        <source>s-bend</source>
+        <translation>S 形彎</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <source>stick</source>
+        <translation>搖桿</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <source>keyboard</source>
+        <translation>鍵盤</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <source>standstill</source>
+        <translation>靜止起步</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <source>fast</source>
+        <translation>快速</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <source>slow</source>
+        <translation>慢速</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <source>blip</source>
+        <translation>點油</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <source>jitter</source>
+        <translation>抖動</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <source>coast</source>
+        <translation>滑行</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <source>left</source>
+        <translation>左</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <source>right</source>
+        <translation>右</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <source>swing</source>
+        <translation>擺動</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <source>medium</source>
+        <translation>中</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <source>small</source>
+        <translation>小</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <source>large</source>
+        <translation>大</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <source>circle</source>
+        <translation>圓形</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <source>wide</source>
+        <translation>寬</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <source>dock</source>
+        <translation>泊位</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <source>spin</source>
+        <translation>原地轉</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="205"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="166"/>
+        <location filename="../app/TaskPanel.cpp" line="209"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="181"/>
+        <location filename="../app/TaskPanel.cpp" line="224"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="188"/>
+        <location filename="../app/TaskPanel.cpp" line="235"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="189"/>
+        <location filename="../app/TaskPanel.cpp" line="236"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="190"/>
+        <location filename="../app/TaskPanel.cpp" line="237"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="191"/>
+        <location filename="../app/TaskPanel.cpp" line="238"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <location filename="../app/TaskPanel.cpp" line="239"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="194"/>
+        <location filename="../app/TaskPanel.cpp" line="241"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="196"/>
+        <location filename="../app/TaskPanel.cpp" line="243"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="197"/>
+        <location filename="../app/TaskPanel.cpp" line="244"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="198"/>
+        <location filename="../app/TaskPanel.cpp" line="245"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="200"/>
+        <location filename="../app/TaskPanel.cpp" line="247"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>
