@@ -54,8 +54,8 @@ void labelRoundTicks(QCategoryAxis* axis) {
     if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) {
         return;
     }
-    // About one tick per 45 px of axis (set by setRange from the plot area), at least three.
-    const double target = std::max(3.0, axis->property("targetTicks").toDouble());
+    // About one tick per 45 px of axis (set by setRange from the plot area), at least four.
+    const double target = std::max(4.0, axis->property("targetTicks").toDouble());
     const double raw = (hi - lo) / target;
     const double power = std::pow(10.0, std::floor(std::log10(raw)));
     // The smallest round step at least `raw`: at most about target + 1 ticks.
