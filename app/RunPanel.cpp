@@ -5,6 +5,7 @@
 #include "core/RunLogCsv.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -17,10 +18,12 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 
 #include <cmath>
 
@@ -96,6 +99,7 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
     results_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     results_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     results_->setMinimumHeight(60);
+    results_->viewport()->installEventFilter(this);
 
     auto* form = new QFormLayout;
     form->addRow(trialsLabel_, trials_);
@@ -354,6 +358,17 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
         divergence_->show();
     }
     results_->scrollToBottom();
+}
+
+bool RunPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == results_->viewport() && event->type() == QEvent::Wheel) {
+        const auto* wheel = static_cast<QWheelEvent*>(event);
+        QScrollBar* bar = results_->verticalScrollBar();
+        bar->setValue(bar->value() - wheel->angleDelta().y() * QApplication::wheelScrollLines() *
+                                         bar->singleStep() / 120);
+        return true;  // handled here even at the table's end: the dock does not scroll
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void RunPanel::changeEvent(QEvent* event) {

@@ -53,6 +53,8 @@ class RunPanel : public QWidget {
 
   protected:
     void changeEvent(QEvent* event) override;
+    /// The wheel over the results scrolls the results, never the dock behind them.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void retranslateUi();

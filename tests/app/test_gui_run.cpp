@@ -47,6 +47,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QToolBar>
+#include <QWheelEvent>
 #include "sim/DemonstrationStyles.h"
 
 #include <QtTest>
