@@ -134,6 +134,15 @@ void MainWindow::showEvent(QShowEvent* event) {
     }
 }
 
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    // Until the operator sizes the panels (or a saved layout was restored), the space is shared
+    // out again when the window changes size, e.g. when it is maximised.
+    if (laidOut_ && !stateRestored_ && !operatorSizedDocks_) {
+        QTimer::singleShot(0, this, &MainWindow::shareSpace);
+    }
+}
+
 void MainWindow::shareSpace() {
     // The side panels as wide as their widest content needs (no sideways scrolling), about
     // a third of the window; the arena over the charts with the larger share of the height.
@@ -155,6 +164,12 @@ MainWindow::~MainWindow() {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::MouseButtonPress && watched == this) {
+        // A press on the window itself, not on a panel: a separator between docks. From now on
+        // the operator sizes the panels.
+        operatorSizedDocks_ = true;
+        return false;
+    }
     if (event->type() != QEvent::KeyPress) {
         return false;
     }

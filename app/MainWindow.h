@@ -57,6 +57,7 @@ class MainWindow : public QMainWindow {
     bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
   private:
     void createPanels();
@@ -104,6 +105,7 @@ class MainWindow : public QMainWindow {
     QToolBar* runToolBar_ = nullptr;
     bool stateRestored_ = false;  ///< the operator's own dock layout was restored
     bool laidOut_ = false;
+    bool operatorSizedDocks_ = false;  ///< the operator dragged a separator: keep their sizes
     QPushButton* emergencyButton_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QLabel* versionLabel_;
