@@ -176,11 +176,7 @@ void ExperimentsPanel::start() {
     ExperimentRequest request;
     request.kind = static_cast<ExperimentRequest::Kind>(kind_->currentData().toInt());
     // Which demonstration the result is about, named in its caption and every export.
-    demonstrationUsed_ = session_.demonstrationSource().isEmpty()
-                             ? tr("the scripted operator (%1, seed %2)")
-                                   .arg(session_.scriptedStyle())
-                                   .arg(session_.scriptedSeed())
-                             : QDir::toNativeSeparators(session_.demonstrationSource());
+    demonstrationUsed_ = session_.demonstrationDescription();
     if (request.kind == ExperimentRequest::Kind::Table1 && !session_.profile().info.pose) {
         QMessageBox::information(
             this, tr("Experiment"),

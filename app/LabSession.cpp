@@ -7,6 +7,7 @@
 #include "sim/PlantCatalog.h"
 #include "sim/Task.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -172,6 +173,12 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     demonstrationSource_ = source;
     emit demonstrationChanged();
     emit fitChanged();
+}
+
+QString LabSession::demonstrationDescription() const {
+    return demonstrationSource_.isEmpty()
+               ? tr("the scripted operator (%1, seed %2)").arg(scriptedStyle_).arg(scriptedSeed_)
+               : QDir::toNativeSeparators(demonstrationSource_);
 }
 
 void LabSession::setDemonstrationSource(const QString& source) {

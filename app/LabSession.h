@@ -36,6 +36,9 @@ class LabSession : public QObject {
     std::shared_ptr<const core::Demonstration> demonstration() const { return task_.demonstration; }
     /// Where the demonstration came from: a file path, or empty for the scripted one.
     const QString& demonstrationSource() const { return demonstrationSource_; }
+    /// The demonstration in words for captions and exports: its file, or the scripted operator's
+    /// style and seed.
+    QString demonstrationDescription() const;
     /// The scripted operator's style and seed (meaningful while demonstrationSource() is empty).
     const QString& scriptedStyle() const { return scriptedStyle_; }
     std::uint64_t scriptedSeed() const { return scriptedSeed_; }

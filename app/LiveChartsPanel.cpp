@@ -323,7 +323,11 @@ void LiveChartsPanel::redraw() {
 }
 
 bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
-    QByteArray text = "# PRISCA Lab live chart export\nt,error,error_smoothed";
+    QByteArray text = "# PRISCA Lab live chart export\n";
+    if (!caption_.isEmpty()) {
+        text += "# " + caption_.toUtf8() + '\n';
+    }
+    text += "t,error,error_smoothed";
     for (int i = 0; i < theta_.size(); ++i) {
         text += ",theta_" + QByteArray::number(i);
     }
@@ -377,7 +381,8 @@ bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
         pictures << page->grab();
     }
     tabs_->setCurrentIndex(shown);
-    int width = 0, height = 0;
+    const int captionHeight = caption_.isEmpty() ? 0 : fontMetrics().height() + 12;
+    int width = 0, height = captionHeight;
     for (const QPixmap& picture : pictures) {
         width = std::max(width, picture.width());
         height += picture.height();
@@ -385,7 +390,13 @@ bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
     QImage image(std::max(width, 1), std::max(height, 1), QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
     QPainter painter(&image);
-    int y = 0;
+    if (captionHeight > 0) {
+        painter.setPen(Qt::black);
+        painter.setFont(font());
+        painter.drawText(QRect(8, 0, width - 16, captionHeight), Qt::AlignVCenter | Qt::AlignLeft,
+                         caption_);
+    }
+    int y = captionHeight;
     for (const QPixmap& picture : pictures) {
         painter.drawPixmap(0, y, picture);
         y += picture.height();

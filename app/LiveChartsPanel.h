@@ -34,6 +34,8 @@ class LiveChartsPanel : public QWidget {
     void setPlant(const sim::PlantInfo& info, int parameterCount);
     /// Clears the data (a new run).
     void clear();
+    /// What the charts show (method, target, demonstration): written with every export.
+    void setCaption(const QString& caption) { caption_ = caption; }
     /// Buffers samples; the charts follow within one redraw period.
     void addSamples(const QVector<LiveSample>& samples);
 
@@ -54,6 +56,7 @@ class LiveChartsPanel : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    QString caption_;
     void scheduleRedraw();
     void retranslateUi();
     void askExportCsv();

@@ -13,6 +13,7 @@
 #include "app/RunController.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
 #include <QAbstractSpinBox>
@@ -244,6 +245,12 @@ void MainWindow::createPanels() {
         }
     });
     connect(runPanel_, &RunPanel::runStarting, this, [this] {
+        chartsPanel_->setCaption(
+            tr("%1 on the %2; demonstration: %3")
+                .arg(sim::MethodCatalog::get(session_->method()).label,
+                     QCoreApplication::translate(
+                         "PlantCatalog", sim::PlantCatalog::get(session_->plant()).displayName),
+                     session_->demonstrationDescription()));
         arena_->clearTrails();
         chartsPanel_->clear();
     });

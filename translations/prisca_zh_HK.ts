@@ -358,190 +358,185 @@
     <name>prisca::app::ExperimentsPanel</name>
     <message>
         <location filename="../app/ExperimentsPanel.cpp" line="152"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="186"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="182"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="180"/>
-        <source>the scripted operator (%1, seed %2)</source>
-        <translation>腳本操作員（%1，種子 %2）</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="187"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="183"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="205"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="201"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="214"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="210"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="237"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="242"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="243"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="243"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="230"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="263"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="275"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="308"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="386"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="399"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="412"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="420"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="413"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="409"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="425"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="426"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="448"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="460"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="461"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="462"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="463"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="459"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -549,143 +544,148 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="45"/>
+        <location filename="../app/LabSession.cpp" line="46"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="59"/>
+        <location filename="../app/LabSession.cpp" line="60"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="73"/>
+        <location filename="../app/LabSession.cpp" line="74"/>
         <source>&apos;%1&apos; must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="79"/>
+        <location filename="../app/LabSession.cpp" line="80"/>
         <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="109"/>
+        <location filename="../app/LabSession.cpp" line="110"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="115"/>
+        <location filename="../app/LabSession.cpp" line="116"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="123"/>
+        <location filename="../app/LabSession.cpp" line="124"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="161"/>
+        <location filename="../app/LabSession.cpp" line="162"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="168"/>
+        <location filename="../app/LabSession.cpp" line="169"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="185"/>
+        <location filename="../app/LabSession.cpp" line="180"/>
+        <source>the scripted operator (%1, seed %2)</source>
+        <translation>腳本操作員（%1，種子 %2）</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="192"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="297"/>
-        <location filename="../app/LabSession.cpp" line="305"/>
+        <location filename="../app/LabSession.cpp" line="304"/>
+        <location filename="../app/LabSession.cpp" line="312"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="311"/>
+        <location filename="../app/LabSession.cpp" line="318"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="317"/>
+        <location filename="../app/LabSession.cpp" line="324"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="320"/>
+        <location filename="../app/LabSession.cpp" line="327"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="325"/>
+        <location filename="../app/LabSession.cpp" line="332"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="332"/>
+        <location filename="../app/LabSession.cpp" line="339"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="336"/>
+        <location filename="../app/LabSession.cpp" line="343"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="345"/>
+        <location filename="../app/LabSession.cpp" line="352"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="382"/>
+        <location filename="../app/LabSession.cpp" line="389"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="388"/>
+        <location filename="../app/LabSession.cpp" line="395"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="399"/>
+        <location filename="../app/LabSession.cpp" line="406"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="426"/>
+        <location filename="../app/LabSession.cpp" line="433"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="440"/>
+        <location filename="../app/LabSession.cpp" line="447"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="466"/>
+        <location filename="../app/LabSession.cpp" line="473"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="470"/>
+        <location filename="../app/LabSession.cpp" line="477"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="477"/>
+        <location filename="../app/LabSession.cpp" line="484"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="482"/>
+        <location filename="../app/LabSession.cpp" line="489"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="502"/>
+        <location filename="../app/LabSession.cpp" line="509"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -701,109 +701,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="406"/>
         <source>cannot write the picture to %1</source>
         <translation>無法把圖片寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="413"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="418"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="424"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="429"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="414"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="425"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="424"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="429"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="435"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="440"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="425"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="436"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="442"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="453"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="443"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="454"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="444"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="455"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="445"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="456"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="446"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="457"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="449"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="460"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="449"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="460"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="451"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="462"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="453"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="464"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="454"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="465"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="455"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="466"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="456"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="467"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="457"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="468"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="458"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="469"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="459"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="460"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="471"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -811,46 +811,51 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="102"/>
+        <location filename="../app/MainWindow.cpp" line="103"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="114"/>
-        <location filename="../app/MainWindow.cpp" line="441"/>
-        <location filename="../app/MainWindow.cpp" line="447"/>
+        <location filename="../app/MainWindow.cpp" line="115"/>
+        <location filename="../app/MainWindow.cpp" line="463"/>
+        <location filename="../app/MainWindow.cpp" line="469"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="311"/>
-        <location filename="../app/MainWindow.cpp" line="374"/>
+        <location filename="../app/MainWindow.cpp" line="249"/>
+        <source>%1 on the %2; demonstration: %3</source>
+        <translation>%1，對象：%2；示範：%3</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="333"/>
+        <location filename="../app/MainWindow.cpp" line="396"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="312"/>
+        <location filename="../app/MainWindow.cpp" line="334"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="323"/>
-        <location filename="../app/MainWindow.cpp" line="393"/>
+        <location filename="../app/MainWindow.cpp" line="345"/>
+        <location filename="../app/MainWindow.cpp" line="415"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="324"/>
+        <location filename="../app/MainWindow.cpp" line="346"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="351"/>
+        <location filename="../app/MainWindow.cpp" line="373"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="375"/>
+        <location filename="../app/MainWindow.cpp" line="397"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -859,137 +864,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="383"/>
+        <location filename="../app/MainWindow.cpp" line="405"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="385"/>
+        <location filename="../app/MainWindow.cpp" line="407"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="398"/>
+        <location filename="../app/MainWindow.cpp" line="420"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="434"/>
+        <location filename="../app/MainWindow.cpp" line="456"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="435"/>
+        <location filename="../app/MainWindow.cpp" line="457"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="436"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="437"/>
+        <location filename="../app/MainWindow.cpp" line="459"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="438"/>
+        <location filename="../app/MainWindow.cpp" line="460"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="439"/>
+        <location filename="../app/MainWindow.cpp" line="461"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="440"/>
+        <location filename="../app/MainWindow.cpp" line="462"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="442"/>
+        <location filename="../app/MainWindow.cpp" line="464"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="443"/>
+        <location filename="../app/MainWindow.cpp" line="465"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="444"/>
+        <location filename="../app/MainWindow.cpp" line="466"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="445"/>
+        <location filename="../app/MainWindow.cpp" line="467"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="446"/>
+        <location filename="../app/MainWindow.cpp" line="468"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="448"/>
+        <location filename="../app/MainWindow.cpp" line="470"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="449"/>
+        <location filename="../app/MainWindow.cpp" line="471"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="450"/>
+        <location filename="../app/MainWindow.cpp" line="472"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="451"/>
+        <location filename="../app/MainWindow.cpp" line="473"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="452"/>
+        <location filename="../app/MainWindow.cpp" line="474"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="453"/>
+        <location filename="../app/MainWindow.cpp" line="475"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="455"/>
+        <location filename="../app/MainWindow.cpp" line="477"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="470"/>
+        <location filename="../app/MainWindow.cpp" line="492"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="482"/>
+        <location filename="../app/MainWindow.cpp" line="504"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="484"/>
+        <location filename="../app/MainWindow.cpp" line="506"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="488"/>
+        <location filename="../app/MainWindow.cpp" line="510"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="491"/>
+        <location filename="../app/MainWindow.cpp" line="513"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1590,238 +1595,238 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="155"/>
-        <location filename="../app/RunPanel.cpp" line="165"/>
+        <location filename="../app/RunPanel.cpp" line="159"/>
+        <location filename="../app/RunPanel.cpp" line="169"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="156"/>
+        <location filename="../app/RunPanel.cpp" line="160"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="169"/>
+        <location filename="../app/RunPanel.cpp" line="173"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="270"/>
+        <location filename="../app/RunPanel.cpp" line="274"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="314"/>
+        <location filename="../app/RunPanel.cpp" line="318"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="314"/>
+        <location filename="../app/RunPanel.cpp" line="318"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="304"/>
+        <location filename="../app/RunPanel.cpp" line="308"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="227"/>
+        <location filename="../app/RunPanel.cpp" line="231"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="306"/>
+        <location filename="../app/RunPanel.cpp" line="310"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="308"/>
+        <location filename="../app/RunPanel.cpp" line="312"/>
         <source>E-STOP reset: ready to run.</source>
         <translation>緊急停止已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="320"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="333"/>
+        <location filename="../app/RunPanel.cpp" line="337"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="337"/>
+        <location filename="../app/RunPanel.cpp" line="341"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="350"/>
+        <location filename="../app/RunPanel.cpp" line="354"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="367"/>
+        <location filename="../app/RunPanel.cpp" line="382"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="368"/>
+        <location filename="../app/RunPanel.cpp" line="383"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="369"/>
+        <location filename="../app/RunPanel.cpp" line="384"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="371"/>
+        <location filename="../app/RunPanel.cpp" line="386"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="373"/>
+        <location filename="../app/RunPanel.cpp" line="388"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="375"/>
+        <location filename="../app/RunPanel.cpp" line="390"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="377"/>
+        <location filename="../app/RunPanel.cpp" line="392"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="379"/>
+        <location filename="../app/RunPanel.cpp" line="394"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="381"/>
+        <location filename="../app/RunPanel.cpp" line="396"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="382"/>
+        <location filename="../app/RunPanel.cpp" line="397"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="383"/>
+        <location filename="../app/RunPanel.cpp" line="398"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="384"/>
+        <location filename="../app/RunPanel.cpp" line="399"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="409"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="313"/>
+        <location filename="../app/RunPanel.cpp" line="317"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="315"/>
+        <location filename="../app/RunPanel.cpp" line="319"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="386"/>
+        <location filename="../app/RunPanel.cpp" line="401"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="388"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="391"/>
+        <location filename="../app/RunPanel.cpp" line="406"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="392"/>
+        <location filename="../app/RunPanel.cpp" line="407"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="396"/>
+        <location filename="../app/RunPanel.cpp" line="411"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="397"/>
+        <location filename="../app/RunPanel.cpp" line="412"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="413"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="400"/>
+        <location filename="../app/RunPanel.cpp" line="415"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="401"/>
+        <location filename="../app/RunPanel.cpp" line="416"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="420"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="420"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="408"/>
+        <location filename="../app/RunPanel.cpp" line="423"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="408"/>
+        <location filename="../app/RunPanel.cpp" line="423"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1862,14 +1867,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="159"/>
-        <location filename="../app/TaskPanel.cpp" line="166"/>
-        <location filename="../app/TaskPanel.cpp" line="176"/>
+        <location filename="../app/TaskPanel.cpp" line="158"/>
+        <location filename="../app/TaskPanel.cpp" line="165"/>
+        <location filename="../app/TaskPanel.cpp" line="175"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="160"/>
+        <location filename="../app/TaskPanel.cpp" line="159"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -1878,38 +1883,38 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="167"/>
+        <location filename="../app/TaskPanel.cpp" line="166"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="177"/>
+        <location filename="../app/TaskPanel.cpp" line="176"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="185"/>
-        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <location filename="../app/TaskPanel.cpp" line="184"/>
+        <location filename="../app/TaskPanel.cpp" line="191"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="186"/>
+        <location filename="../app/TaskPanel.cpp" line="185"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="150"/>
+        <location filename="../app/TaskPanel.cpp" line="149"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <location filename="../app/TaskPanel.cpp" line="96"/>
         <source>figure-eight</source>
         <translation>8 字形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <location filename="../app/TaskPanel.cpp" line="96"/>
         <source>s-turn</source>
         <translation>S 形轉彎</translation>
     </message>
@@ -1919,167 +1924,167 @@
         <translation>掉頭</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="98"/>
+        <location filename="../app/TaskPanel.cpp" line="97"/>
         <source>s-bend</source>
         <translation>S 形彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="99"/>
         <source>stick</source>
         <translation>搖桿</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="99"/>
         <source>keyboard</source>
         <translation>鍵盤</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="99"/>
         <source>standstill</source>
         <translation>靜止起步</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="99"/>
         <source>fast</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
         <source>slow</source>
         <translation>慢速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
         <source>blip</source>
         <translation>點油</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
         <source>jitter</source>
         <translation>抖動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="100"/>
         <source>coast</source>
         <translation>滑行</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
         <source>left</source>
         <translation>左</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
         <source>right</source>
         <translation>右</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
         <source>swing</source>
         <translation>擺動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="101"/>
         <source>medium</source>
         <translation>中</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
         <source>small</source>
         <translation>小</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
         <source>large</source>
         <translation>大</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
         <source>circle</source>
         <translation>圓形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="102"/>
         <source>wide</source>
         <translation>寬</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
         <source>dock</source>
         <translation>泊位</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="104"/>
+        <location filename="../app/TaskPanel.cpp" line="103"/>
         <source>spin</source>
         <translation>原地轉</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="121"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="205"/>
+        <location filename="../app/TaskPanel.cpp" line="204"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="209"/>
+        <location filename="../app/TaskPanel.cpp" line="208"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="224"/>
+        <location filename="../app/TaskPanel.cpp" line="223"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="235"/>
+        <location filename="../app/TaskPanel.cpp" line="234"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="236"/>
+        <location filename="../app/TaskPanel.cpp" line="235"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="237"/>
+        <location filename="../app/TaskPanel.cpp" line="236"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="238"/>
+        <location filename="../app/TaskPanel.cpp" line="237"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="239"/>
+        <location filename="../app/TaskPanel.cpp" line="238"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="241"/>
+        <location filename="../app/TaskPanel.cpp" line="240"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="243"/>
+        <location filename="../app/TaskPanel.cpp" line="242"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="244"/>
+        <location filename="../app/TaskPanel.cpp" line="243"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="245"/>
+        <location filename="../app/TaskPanel.cpp" line="244"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="247"/>
+        <location filename="../app/TaskPanel.cpp" line="246"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>
