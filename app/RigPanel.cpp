@@ -276,10 +276,8 @@ bool RigPanel::runTrial() {
     }
     QString missing;
     const sim::PlantProfile& profile = session_.profile();
-    if (!rig_.cameraRunning()) {
-        missing = tr("Start the camera first.");
-    } else if (!rig_.linkStatus().connected) {
-        missing = tr("Connect the transmitter link first.");
+    if (const QString rig = rig_.notReady(); !rig.isEmpty()) {
+        missing = rig;  // the camera or the link
     } else if (profile.info.name != QLatin1String("slidecar")) {
         // The rig's state estimator gives the slide-car's state; any other target's
         // demonstration and controller would be read against the wrong quantities.

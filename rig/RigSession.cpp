@@ -226,6 +226,16 @@ void RigSession::setChannels(const devices::ChannelMap& channels) {
     loop_->stale = true;
 }
 
+QString RigSession::notReady() const {
+    if (!camera_.isRunning()) {
+        return tr("Start the camera first.");
+    }
+    if (!linkStatus_.connected) {
+        return tr("Connect the transmitter link first.");
+    }
+    return {};
+}
+
 bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     auto fail = [error](const QString& why) {
         if (error) {
@@ -233,11 +243,8 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         }
         return false;
     };
-    if (!camera_.isRunning()) {
-        return fail(tr("Start the camera first."));
-    }
-    if (!linkStatus_.connected) {
-        return fail(tr("Connect the transmitter link first."));
+    if (const QString missing = notReady(); !missing.isEmpty()) {
+        return fail(missing);
     }
     if (!request.demonstration || request.demonstration->length() == 0 || !request.plant.pose) {
         return fail(tr("The rig needs a demonstration of a planar vehicle."));
@@ -396,11 +403,8 @@ bool RigSession::startRecording(const sim::PlantInfo& plant, const QString& path
         }
         return false;
     };
-    if (!camera_.isRunning()) {
-        return fail(tr("Start the camera first."));
-    }
-    if (!linkStatus_.connected) {
-        return fail(tr("Connect the transmitter link first."));
+    if (const QString missing = notReady(); !missing.isEmpty()) {
+        return fail(missing);
     }
     const double fps = camera_.framesPerSecond();
     if (!(fps > 0.0)) {

@@ -124,6 +124,10 @@ class RigSession : public QObject {
     void setChannels(const devices::ChannelMap& channels);
     const devices::ChannelMap& channels() const { return channels_; }
 
+    /// What is missing before a trial or a recording can start (the camera, the link); empty
+    /// when ready.
+    QString notReady() const;
+
     // Trials.
     /// Starts a trial (the loop is kept for the same method: learners learn from trial to
     /// trial). False and *error if one already runs, the camera is off or the link is down.

@@ -1292,103 +1292,93 @@
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="280"/>
-        <source>Start the camera first.</source>
-        <translation>請先啟動攝影機。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="282"/>
-        <source>Connect the transmitter link first.</source>
-        <translation>請先連接發射器。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="291"/>
+        <location filename="../app/RigPanel.cpp" line="289"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="294"/>
+        <location filename="../app/RigPanel.cpp" line="292"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="316"/>
+        <location filename="../app/RigPanel.cpp" line="314"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="344"/>
+        <location filename="../app/RigPanel.cpp" line="342"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="384"/>
+        <location filename="../app/RigPanel.cpp" line="382"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="379"/>
+        <location filename="../app/RigPanel.cpp" line="377"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="286"/>
+        <location filename="../app/RigPanel.cpp" line="284"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="363"/>
+        <location filename="../app/RigPanel.cpp" line="361"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="372"/>
+        <location filename="../app/RigPanel.cpp" line="370"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="398"/>
+        <location filename="../app/RigPanel.cpp" line="396"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="407"/>
+        <location filename="../app/RigPanel.cpp" line="405"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="412"/>
+        <location filename="../app/RigPanel.cpp" line="410"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="415"/>
+        <location filename="../app/RigPanel.cpp" line="413"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="417"/>
+        <location filename="../app/RigPanel.cpp" line="415"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="469"/>
+        <location filename="../app/RigPanel.cpp" line="467"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="486"/>
+        <location filename="../app/RigPanel.cpp" line="484"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="507"/>
-        <location filename="../app/RigPanel.cpp" line="519"/>
+        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="517"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="508"/>
+        <location filename="../app/RigPanel.cpp" line="506"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1397,197 +1387,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="529"/>
+        <location filename="../app/RigPanel.cpp" line="527"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="568"/>
+        <location filename="../app/RigPanel.cpp" line="566"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="571"/>
+        <location filename="../app/RigPanel.cpp" line="569"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="573"/>
+        <location filename="../app/RigPanel.cpp" line="571"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="603"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="604"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="615"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
+        <location filename="../app/RigPanel.cpp" line="616"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="619"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="621"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="622"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="625"/>
+        <location filename="../app/RigPanel.cpp" line="623"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="625"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="628"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="630"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="633"/>
+        <location filename="../app/RigPanel.cpp" line="631"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="632"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="636"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="635"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="638"/>
+        <location filename="../app/RigPanel.cpp" line="636"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="639"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="640"/>
+        <location filename="../app/RigPanel.cpp" line="638"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="641"/>
+        <location filename="../app/RigPanel.cpp" line="639"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="640"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="641"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="644"/>
+        <location filename="../app/RigPanel.cpp" line="642"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="645"/>
+        <location filename="../app/RigPanel.cpp" line="643"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="647"/>
+        <location filename="../app/RigPanel.cpp" line="645"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="649"/>
+        <location filename="../app/RigPanel.cpp" line="647"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="651"/>
+        <location filename="../app/RigPanel.cpp" line="649"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="653"/>
+        <location filename="../app/RigPanel.cpp" line="651"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -2097,59 +2087,57 @@
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="237"/>
-        <location filename="../rig/RigSession.cpp" line="400"/>
+        <location filename="../rig/RigSession.cpp" line="231"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="240"/>
-        <location filename="../rig/RigSession.cpp" line="403"/>
+        <location filename="../rig/RigSession.cpp" line="234"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="243"/>
+        <location filename="../rig/RigSession.cpp" line="250"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="248"/>
+        <location filename="../rig/RigSession.cpp" line="255"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="251"/>
+        <location filename="../rig/RigSession.cpp" line="258"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="257"/>
+        <location filename="../rig/RigSession.cpp" line="264"/>
         <source>%1 could not be set up.</source>
         <translation>無法設定 %1。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="407"/>
+        <location filename="../rig/RigSession.cpp" line="411"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="410"/>
+        <location filename="../rig/RigSession.cpp" line="414"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="421"/>
+        <location filename="../rig/RigSession.cpp" line="425"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="476"/>
+        <location filename="../rig/RigSession.cpp" line="480"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="488"/>
+        <location filename="../rig/RigSession.cpp" line="492"/>
         <source>The rig recording could not be saved: %1</source>
         <translation>實驗台錄製無法儲存：%1</translation>
     </message>

@@ -1,15 +1,11 @@
 // The transmitter link on pseudo-terminals: frames at the set rate, failsafe within one period
 // of a stale command, E-STOP latched, the port reopened after the far end goes away, garbage
 // from the far end harmless.
+#include "PseudoTerminal.h"
 #include "devices/ChannelMap.h"
 #include "devices/TransmitterLink.h"
 
 #include <QtTest>
-
-#include <fcntl.h>
-#include <pty.h>
-#include <termios.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -17,41 +13,6 @@
 using namespace prisca::devices;
 
 namespace {
-
-// A pseudo-terminal pair: the link opens the slave by path; the test reads the master.
-struct Pty {
-    int master = -1;
-    int slave = -1;
-    QString path;
-    Pty() {
-        char name[256] = {};
-        termios raw{};
-        cfmakeraw(&raw);
-        if (openpty(&master, &slave, name, &raw, nullptr) == 0) {
-            path = QString::fromLocal8Bit(name);
-            fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
-        }
-    }
-    ~Pty() { closeAll(); }
-    void closeAll() {
-        if (master >= 0)
-            ::close(master);
-        if (slave >= 0)
-            ::close(slave);
-        master = slave = -1;
-    }
-    QByteArray read() const {
-        QByteArray out;
-        char buffer[4096];
-        for (;;) {
-            const ssize_t n = ::read(master, buffer, sizeof buffer);
-            if (n <= 0)
-                break;
-            out.append(buffer, static_cast<int>(n));
-        }
-        return out;
-    }
-};
 
 // Reads frames from the master for `ms`, returning them with their arrival time [ms].
 struct Capture {
