@@ -299,17 +299,19 @@ bool LabSession::save(const QString& path, QString* error) const {
 }
 
 bool LabSession::open(const QString& path, QString* error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = tr("%1: %2").arg(path, file.errorString());
+    core::FileError fileError;
+    const std::optional<QByteArray> json =
+        core::readFileBounded(path, kMaxSessionBytes, &fileError);
+    if (!json) {
+        *error = fileError.toString();
         return false;
     }
-    return fromJson(file.readAll(), path, error);
+    return fromJson(*json, path, error);
 }
 
 bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString* error) {
     const auto fail = [&](const QString& what) {
-        *error = tr("%1: %2").arg(origin, what);
+        *error = core::printable(tr("%1: %2").arg(origin, what));
         return false;
     };
     QJsonParseError parseError;

@@ -72,6 +72,8 @@ class LabSession : public QObject {
     /// Saves mapping, fit options, method and parameters as JSON (atomically). On failure returns
     /// false and sets *error naming the file and what went wrong.
     bool save(const QString& path, QString* error) const;
+    /// The largest session file open() reads (a session is a few KB of settings).
+    static constexpr qint64 kMaxSessionBytes = qint64(16) << 20;
     /// Opens a session saved by save(). On failure the session is unchanged, *error says what is
     /// wrong and where (file, key), and false is returned.
     bool open(const QString& path, QString* error);

@@ -3,6 +3,7 @@
 #include "app/plot/ChartDecimation.h"
 #include "core/FileIo.h"
 
+#include <QBuffer>
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
@@ -402,8 +403,17 @@ bool LiveChartsPanel::exportPng(const QString& path, QString* error) {
         y += picture.height();
     }
     painter.end();
-    if (!image.save(path, "PNG")) {
-        *error = tr("cannot write the picture to %1").arg(QDir::toNativeSeparators(path));
+    // Encoded in memory, then written atomically with every byte checked (a full disk).
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG")) {
+        *error = tr("cannot encode the picture for %1").arg(QDir::toNativeSeparators(path));
+        return false;
+    }
+    core::FileError fileError;
+    if (!core::writeFileAtomically(path, png, &fileError)) {
+        *error = fileError.toString();
         return false;
     }
     return true;

@@ -85,6 +85,8 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
     connect(worker_, &RecordingWorker::finished, this, &RecordPanel::finished);
     connect(worker_, &RecordingWorker::failed, this, [this](const QString& message) {
         recording_ = false;
+        timer_->stop();
+        driving_->stop();
         updateButtons();
         status_->setText(message);
         QMessageBox::warning(this, tr("Record"), message);

@@ -38,14 +38,13 @@ void RecordingWorker::start(const QString& plant, const QString& streamPath) {
         sim::DemonstrationRecorder(plant_->info(), plant_->timing().controlPeriod).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
     QString error;
-    if (!stream_.open(streamPath, header, &error)) {
+    if (!stream_.open(streamPath, header, plant_->info().angleIndices, &error)) {
         emit failed(tr("Cannot record to %1").arg(error));
         return;
     }
     state_ = plant_->reset(1, sim::Perturbation::none());
     input_ = Eigen::VectorXd::Zero(plant_->info().actionDimension());
-    states_.clear();
-    actions_.clear();
+    steps_ = 0;
     samples_.clear();
     stopRequested_.store(false);
     active_ = true;
@@ -71,17 +70,16 @@ void RecordingWorker::tick() {
         return;
     }
     const double dt = plant_->timing().controlPeriod;
-    const int due =
-        static_cast<int>(clock_.nsecsElapsed() * 1e-9 / dt) + 1 - static_cast<int>(states_.size());
+    const int due = static_cast<int>(clock_.nsecsElapsed() * 1e-9 / dt) + 1 - steps_;
     for (int i = 0; i < due && i < 40; ++i) {
-        const int k = static_cast<int>(states_.size());
+        const int k = steps_++;
         const double t = k * dt;
         QString error;
         if (!stream_.append(t, state_, input_, &error)) {
-            emit failed(tr("Writing the recording failed: %1").arg(error));
+            // A full disk: end the take (stop() tries once more to save it, and says where
+            // what was written is if that fails too).
+            stopRequested_.store(true);
         }
-        states_.push_back(state_);
-        actions_.push_back(input_);
         LiveSample sample;
         sample.step = k;
         sample.time = t;
@@ -111,16 +109,13 @@ void RecordingWorker::stop() {
         samples_.clear();
     }
     const QString streamPath = stream_.fileName();
+    core::Demonstration demo = stream_.demonstration();  // "source" is in the header already
     QString error;
-    if (!stream_.close(&error)) {
-        emit failed(tr("Writing the recording failed: %1").arg(error));
+    if (!stream_.finish(&error)) {
+        emit failed(tr("Writing the recording failed: %1 (the take so far is in %2)")
+                        .arg(error, core::DemonstrationStream::partPath(streamPath)));
+        return;
     }
-    sim::DemonstrationRecorder recorder(plant_->info(), plant_->timing().controlPeriod);
-    for (size_t k = 0; k < states_.size(); ++k) {
-        recorder.record(states_[k], actions_[k]);
-    }
-    core::Demonstration demo = recorder.demonstration();
-    demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded by driving"));
     emit finished(demo, streamPath);
 }
 

@@ -25,7 +25,7 @@ namespace prisca::app {
 /// Records a demonstration by driving a simulated plant in real time: at every control period
 /// it applies the operator's latest input, records (state, action) and streams the row to a CSV
 /// file in the demonstration format (core::DemonstrationStream: the header at once, rows flushed
-/// every quarter second, so a crash loses at most that).
+/// every quarter second, so a crash loses at most that; a ".part" file renamed when it ends).
 /// Lives on its own thread; slots are called queued, requestStop() from any thread.
 class RecordingWorker : public QObject {
     Q_OBJECT
@@ -61,8 +61,7 @@ class RecordingWorker : public QObject {
     QVector<LiveSample> samples_;
     Eigen::VectorXd input_;
     Eigen::VectorXd state_;
-    std::vector<Eigen::VectorXd> states_;
-    std::vector<Eigen::VectorXd> actions_;
+    int steps_ = 0;  ///< control steps recorded
     std::atomic<bool> stopRequested_{false};
     bool active_ = false;
 };

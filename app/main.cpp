@@ -5,7 +5,12 @@
 
 #include <QApplication>
 
+#include <csignal>
+
 int main(int argc, char* argv[]) {
+    // A write past a file-size limit fails with an error the saving code reports, instead of
+    // killing the window (and the operator's unsaved work) with SIGXFSZ.
+    std::signal(SIGXFSZ, SIG_IGN);
     QApplication application(argc, argv);
     // QSettings derives its file location from these names.
     QApplication::setOrganizationName(QStringLiteral("PRISCA Lab"));

@@ -117,8 +117,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                 .toStdString());
     }
     const double dt = demonstration.dt;
-    Eigen::MatrixXd ds(K, n);  // row t: change of state, in the frame of the earlier sample
-    Eigen::MatrixXd du(K, m);  // row t: change of action
+    Eigen::MatrixXd ds(K, n);     // row t: change of state, in the frame of the earlier sample
+    Eigen::MatrixXd du(K, m);     // row t: change of action
     Eigen::MatrixXd drift(K, n);  // row t: the previous one-step change ds_k (eq. 5's A term)
     Eigen::VectorXd change(n);
     Eigen::VectorXd previousChange(n);
@@ -314,7 +314,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                     const bool outlier = weights[t] < 0.01 * w[t];
                     setAside += outlier;
                     if (outlier) {
-                        fit.explained[first + t] = false;  // pair t pairs du_k with the state after k
+                        fit.explained[first + t] =
+                            false;  // pair t pairs du_k with the state after k
                     }
                 }
                 fit.outlierShare[c] = static_cast<double>(setAside) / K;
@@ -340,6 +341,18 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     }
 
     fit.b = fit.bv.cwiseProduct(mapping.asDouble());
+    // Only a degenerate demonstration gets here with these: actions that barely change against
+    // states that jump (or numbers near the format's bounds). No B_v is better than a wrong one.
+    const bool finite = fit.bv.allFinite() && fit.a.allFinite() &&
+                        fit.unconstrainedBv.allFinite() && fit.residualRms.allFinite();
+    if (!finite || fit.b.cwiseAbs().maxCoeff() > kMaxAbsB) {
+        throw std::invalid_argument(
+            QStringLiteral("the fit of B_v gives %1: the demonstration's action changes do not "
+                           "explain its state changes (is it a recording of this plant?)")
+                .arg(finite ? QStringLiteral("an entry of B beyond +-%1").arg(kMaxAbsB)
+                            : QStringLiteral("a value that is not a number"))
+                .toStdString());
+    }
     return fit;
 }
 

@@ -74,16 +74,16 @@ struct ActionMappingFitOptions {
 
 /// The fitted action mapping and its diagnostics.
 struct ActionMappingFit {
-    Eigen::MatrixXd bv;           ///< B_v, m x n (0 where B~ is 0 or the channel was never excited)
-    Eigen::MatrixXd b;            ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
+    Eigen::MatrixXd bv;  ///< B_v, m x n (0 where B~ is 0 or the channel was never excited)
+    Eigen::MatrixXd b;   ///< B = B_v (.) B~, m x n [state unit / (action unit * s)]
     /// A (n x n) of eq. 5, row c: how the one-step change of state c follows the previous
     /// one-step change of every state [1/s]; zero unless options.drift.
     Eigen::MatrixXd a;
     /// The B_v the data would give without the B_v >= 0 constraint (m x n), for the operator to
     /// see what a sign conflict's zero replaced.
     Eigen::MatrixXd unconstrainedBv;
-    Eigen::VectorXd residualRms;  ///< per state component: weighted RMS of ds - B^T dt du
-    Eigen::VectorXd rSquared;     ///< per state component; NaN where no control acts on it
+    Eigen::VectorXd residualRms;   ///< per state component: weighted RMS of ds - B^T dt du
+    Eigen::VectorXd rSquared;      ///< per state component; NaN where no control acts on it
     Eigen::VectorXd outlierShare;  ///< per state: share of samples the robust fit set aside
     /// (control, state) where the unconstrained fit of B_v is negative: the data contradicts B~.
     std::vector<std::pair<int, int>> signConflicts;
@@ -93,16 +93,20 @@ struct ActionMappingFit {
     /// fit kept it for every modelled state (true everywhere without the robust fit, and at
     /// the few first and last samples no pair covers).
     std::vector<bool> explained;
-    QStringList warnings;                ///< one line each, in the operator's words
+    QStringList warnings;  ///< one line each, in the operator's words
 };
+
+/// The largest |B| fitActionMapping accepts [state unit / (action unit * s)]: the plants' B are
+/// of order 1 to 100; 10^6 means the fit divided by action changes that are not there.
+inline constexpr double kMaxAbsB = 1e6;
 
 /// Fits B_v (eq. 8): minimises sum_k w_k || y_{k+1+d} - (B_v (.) B~)^T dt du_k ||^2 with the
 /// nested-expectation weights w of E_{i=0:T} E_{j=i:T}, du_k = u_k - u_{k-1}, and y the state
 /// change chosen by options.target. State changes are expressed by the deviation model (a
 /// planar vehicle's displacement is measured in its own frame at the earlier sample). The problem
 /// separates into one weighted least-squares problem per state component in the non-zero entries of
-/// that column of B~. Throws std::invalid_argument on inconsistent dimensions or a demonstration
-/// too short for the latency.
+/// that column of B~. Throws std::invalid_argument on inconsistent dimensions, a demonstration
+/// too short for the latency, or a fit that is not finite or beyond kMaxAbsB.
 ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                                   const IntuitiveMapping& mapping, const DeviationModel& deviation,
                                   const ActionMappingFitOptions& options = {});

@@ -9,8 +9,8 @@ QString Demonstration::validate() const {
     if (T == 0) {
         return QStringLiteral("the demonstration has no samples");
     }
-    if (!(dt > 0.0) || !std::isfinite(dt)) {
-        return QStringLiteral("dt must be a positive finite number of seconds, got %1").arg(dt);
+    if (!(dt >= kMinDt && dt <= kMaxDt)) {
+        return QStringLiteral("dt must be from %1 to %2 s, got %3").arg(kMinDt).arg(kMaxDt).arg(dt);
     }
     if (time.size() != T || actions.rows() != T) {
         return QStringLiteral("time (%1), states (%2) and actions (%3) differ in length")
@@ -31,8 +31,10 @@ QString Demonstration::validate() const {
             .arg(actionUnits.size());
     }
     for (int k = 0; k < T; ++k) {
-        if (!std::isfinite(time[k])) {
-            return QStringLiteral("time at sample %1 is not finite").arg(k);
+        if (!(std::abs(time[k]) <= kMaxAbsTime)) {
+            return QStringLiteral("time at sample %1 is not a number within +-%2 s")
+                .arg(k)
+                .arg(kMaxAbsTime);
         }
         if (k > 0 && !(time[k] > time[k - 1])) {
             return QStringLiteral("time is not strictly increasing at sample %1 (%2 after %3)")
@@ -41,17 +43,19 @@ QString Demonstration::validate() const {
                 .arg(time[k - 1]);
         }
         for (int c = 0; c < stateDimension(); ++c) {
-            if (!std::isfinite(states(k, c))) {
-                return QStringLiteral("state '%1' at sample %2 is not finite")
+            if (!(std::abs(states(k, c)) <= kMaxAbsValue)) {
+                return QStringLiteral("state '%1' at sample %2 is not a number within +-%3")
                     .arg(stateNames.value(c))
-                    .arg(k);
+                    .arg(k)
+                    .arg(kMaxAbsValue);
             }
         }
         for (int c = 0; c < actionDimension(); ++c) {
-            if (!std::isfinite(actions(k, c))) {
-                return QStringLiteral("action '%1' at sample %2 is not finite")
+            if (!(std::abs(actions(k, c)) <= kMaxAbsValue)) {
+                return QStringLiteral("action '%1' at sample %2 is not a number within +-%3")
                     .arg(actionNames.value(c))
-                    .arg(k);
+                    .arg(k)
+                    .arg(kMaxAbsValue);
             }
         }
     }

@@ -4,7 +4,7 @@
 
 #include "DemonstrationCsvText.h"
 
-#include <QFile>
+#include <QSet>
 
 #include <algorithm>
 #include <charconv>
@@ -99,6 +99,7 @@ class DemonstrationParser {
     KnownLine plant_, dt_, states_, actions_;
     QMap<QString, QString> metadata_;
     QStringList stateNames_, stateUnits_, actionNames_, actionUnits_;
+    QSet<QString> allNames_;  // state and action names, for the duplicate check
     double dt_value_ = 0.0;
     bool dtInferred_ = false;
 
@@ -281,11 +282,12 @@ bool DemonstrationParser::readEntries(const KnownLine& declaration, const QStrin
         if (!problem.isEmpty()) {
             return bad(QStringLiteral("has a name that ") + problem);
         }
-        if (stateNames_.contains(nameString) || actionNames_.contains(nameString)) {
+        if (allNames_.contains(nameString)) {  // a set: 10^5 names stay linear
             return bad(QStringLiteral("repeats the name %1; column names must be unique")
                            .arg(quoted(nameString)));
         }
         names->append(nameString);
+        allNames_.insert(nameString);
         units->append(unit);
         if (comma == Text::npos) {
             return true;
@@ -315,9 +317,12 @@ bool DemonstrationParser::readDt() {
             return fail(dt_.line, 0,
                         QStringLiteral("dt %1 is not a finite number").arg(quoted(dt_.value)));
     }
-    if (!(dt_value_ > 0.0)) {
+    if (!(dt_value_ >= Demonstration::kMinDt && dt_value_ <= Demonstration::kMaxDt)) {
         return fail(dt_.line, 0,
-                    QStringLiteral("dt must be positive, got %1").arg(quoted(dt_.value)));
+                    QStringLiteral("dt must be from %1 to %2 s, got %3")
+                        .arg(Demonstration::kMinDt)
+                        .arg(Demonstration::kMaxDt)
+                        .arg(quoted(dt_.value)));
     }
     return true;
 }
@@ -457,6 +462,12 @@ bool DemonstrationParser::readRows() {
                 case NumberStatus::NotFinite:
                     return bad(QStringLiteral("value %1 in column %2 is not finite"));
             }
+            const double bound =
+                column == 1 ? Demonstration::kMaxAbsTime : Demonstration::kMaxAbsValue;
+            if (!(std::abs(values_[base + size_t(column - 1)]) <= bound)) {
+                return bad(QStringLiteral("value %1 in column %2 is beyond +-") +
+                           numberText(bound) + QStringLiteral(", more than the format can mean"));
+            }
         }
         if (!rowLines_.empty()) {
             const double time = values_[base];
@@ -501,6 +512,14 @@ bool DemonstrationParser::checkTiming() {
             const double below =
                 *std::max_element(steps.begin(), steps.begin() + std::ptrdiff_t(middle));
             dt_value_ = 0.5 * (below + dt_value_);
+        }
+        if (!(dt_value_ >= Demonstration::kMinDt && dt_value_ <= Demonstration::kMaxDt)) {
+            return fail(rowLines_[middle + 1], 1,
+                        QStringLiteral("the median time step is %1 s; it must be from %2 to "
+                                       "%3 s (or give '# dt:')")
+                            .arg(numberText(dt_value_))
+                            .arg(Demonstration::kMinDt)
+                            .arg(Demonstration::kMaxDt));
         }
     }
     const double tolerance = options_.dtTolerance >= 0.0 ? options_.dtTolerance : 0.0;
@@ -575,35 +594,11 @@ std::optional<Demonstration> parseDemonstrationCsv(const QByteArray& text,
 
 std::optional<Demonstration> readDemonstrationCsv(const QString& path, FileError* error,
                                                   const CsvReadOptions& options) {
-    const auto fail = [&](const QString& message) {
-        if (error) {
-            *error = FileError{path, 0, 0, message};
-        }
+    const std::optional<QByteArray> text = readFileBounded(path, kMaxBytes, error);
+    if (!text) {
         return std::nullopt;
-    };
-    if (path.isEmpty()) {
-        return fail(QStringLiteral("no file name given"));
     }
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return fail(QStringLiteral("cannot open for reading: %1").arg(file.errorString()));
-    }
-    if (file.size() > kMaxBytes) {
-        return fail(QStringLiteral("the file is %1 bytes, more than the %2 bytes this reader "
-                                   "accepts")
-                        .arg(file.size())
-                        .arg(kMaxBytes));
-    }
-    QByteArray text;
-    try {
-        text = file.readAll();
-    } catch (const std::bad_alloc&) {
-        return fail(QStringLiteral("not enough memory to read the file"));
-    }
-    if (file.error() != QFileDevice::NoError) {
-        return fail(QStringLiteral("cannot read: %1").arg(file.errorString()));
-    }
-    return parseDemonstrationCsv(text, path, error, options);
+    return parseDemonstrationCsv(*text, path, error, options);
 }
 
 }  // namespace prisca::core

@@ -1,7 +1,10 @@
 #include "FileIo.h"
 
+#include <QFile>
+#include <QFileInfo>
 #include <QSaveFile>
 
+#include <algorithm>
 #include <charconv>
 
 namespace prisca::core {
@@ -17,7 +20,73 @@ QString FileError::toString() const {
     if (!text.isEmpty()) {
         text += QStringLiteral(": ");
     }
-    return text + message;
+    return printable(text + message);
+}
+
+QString printable(const QString& text) {
+    QString out;
+    out.reserve(text.size());
+    for (const QChar c : text) {
+        const char16_t u = c.unicode();
+        if (u < 0x20 || u == 0x7f || (u >= 0x80 && u < 0xa0)) {
+            out += QStringLiteral("\\x%1").arg(int(u), 2, 16, QLatin1Char('0'));
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, FileError* error) {
+    const auto fail = [&](const QString& message) {
+        if (error) {
+            *error = FileError{path, 0, 0, message};
+        }
+        return std::nullopt;
+    };
+    if (path.isEmpty()) {
+        return fail(QStringLiteral("no file name given"));
+    }
+    const QFileInfo info(path);
+    if (!info.exists()) {
+        return fail(QStringLiteral("no such file"));
+    }
+    if (info.isDir()) {
+        return fail(QStringLiteral("is a folder, not a file"));
+    }
+    if (!info.isFile()) {
+        return fail(
+            QStringLiteral("is not a regular file (a device, FIFO or socket); save the "
+                           "data to a file first"));
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return fail(QStringLiteral("cannot open for reading: %1").arg(file.errorString()));
+    }
+    QByteArray bytes;
+    constexpr qint64 kChunk = qint64(1) << 20;
+    try {
+        for (;;) {
+            const qint64 room = maxBytes + 1 - bytes.size();  // one more tells "too big"
+            if (room <= 0) {
+                return fail(
+                    QStringLiteral("more than the %1 bytes this reader accepts").arg(maxBytes));
+            }
+            const qint64 at = bytes.size();
+            bytes.resize(at + std::min(kChunk, room));
+            const qint64 got = file.read(bytes.data() + at, bytes.size() - at);
+            if (got < 0) {
+                return fail(QStringLiteral("cannot read: %1").arg(file.errorString()));
+            }
+            bytes.resize(at + got);
+            if (got == 0) {
+                break;
+            }
+        }
+    } catch (const std::bad_alloc&) {
+        return fail(QStringLiteral("not enough memory to read the file"));
+    }
+    return bytes;
 }
 
 void appendCsvNumber(QByteArray& out, double value) {
@@ -40,10 +109,22 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
     if (!file.open(QIODevice::WriteOnly)) {
         return fail(QStringLiteral("cannot open for writing: %1").arg(file.errorString()));
     }
-    if (file.write(bytes) != bytes.size()) {
-        const QString reason = file.errorString();
+    // A small write stays in the file's buffer, and commit() does not report a failed flush
+    // of it (a full disk then left an empty file behind a "saved"): flush and check first.
+    const qint64 written = file.write(bytes);
+    if (written != bytes.size() || !file.flush()) {
+        // A short write (a full disk, a file-size limit) sets no error string of its own.
+        QString reason = file.errorString();
+        if (written != bytes.size() || reason.isEmpty() ||
+            reason == QLatin1String("Unknown error")) {
+            reason = written >= 0 && written < bytes.size()
+                         ? QStringLiteral("the disk is full (%1 of %2 bytes written)")
+                               .arg(written)
+                               .arg(bytes.size())
+                         : QStringLiteral("the disk is full");
+        }
         file.cancelWriting();
-        return fail(QStringLiteral("cannot write: %1").arg(reason));
+        return fail(QStringLiteral("cannot write: %1; the previous file is kept").arg(reason));
     }
     if (!file.commit()) {
         return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));

@@ -3,6 +3,8 @@
 #include <QByteArray>
 #include <QString>
 
+#include <optional>
+
 namespace prisca::core {
 
 /// Where and why a file could not be read or written.
@@ -14,16 +16,29 @@ struct FileError {
     int column = 0;
     QString message;  ///< one line; names the offending column and quotes the offending text
 
-    /// "path:line:column: message", leaving out the parts that are empty or zero.
+    /// "path:line:column: message", leaving out the parts that are empty or zero; control
+    /// characters escaped (printable()).
     QString toString() const;
 };
+
+/// The text with every control character (C0, DEL, C1; NUL included) written as \xNN, so a
+/// message quoting hostile input stays one line, is not cut short by a NUL and sends no escape
+/// sequence to a terminal. Any thread.
+QString printable(const QString& text);
+
+/// Reads a whole regular file of at most maxBytes. Devices, FIFOs, sockets and folders are
+/// refused before they are opened (a FIFO would block, /dev/zero never ends), and the size is
+/// capped while reading, not taken from stat, so a file growing under the reader cannot exhaust
+/// memory either. On failure nullopt with *error (if given) naming the path. Any thread.
+std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, FileError* error);
 
 /// Appends the shortest text that reads back to exactly the same double (locale independent,
 /// unlike printf). Any thread.
 void appendCsvNumber(QByteArray& out, double value);
 
 /// Writes bytes to path atomically: a temporary file renamed over the target only when
-/// complete, so a crash or a full disk never leaves a half-written file or damages the old one.
+/// complete and flushed, so a crash or a full disk never leaves a half-written file or damages
+/// the old one.
 /// On failure returns false and fills *error (if given) naming the path. Any thread.
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError* error);
 

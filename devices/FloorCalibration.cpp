@@ -9,6 +9,7 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace prisca::devices {
@@ -69,7 +70,66 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
         sum += r * r;
     }
     c.rmsMetres = std::sqrt(sum / points.size());
+    if (const QString problem = c.homographyProblem(); !problem.isEmpty()) {
+        *error = QStringLiteral("the homography these points give %1").arg(problem);
+        return std::nullopt;
+    }
     return c;
+}
+
+QString FloorCalibration::homographyProblem() const {
+    double largest = 0.0;
+    for (double v : imageToFloor.val) {
+        if (!std::isfinite(v)) {
+            return QStringLiteral("has an entry that is not a finite number");
+        }
+        largest = std::max(largest, std::abs(v));
+    }
+    if (largest == 0.0) {
+        return QStringLiteral("is all zeros");
+    }
+    // Scale-free: a homography is defined up to a factor, so judge it with its largest entry 1.
+    const cv::Matx33d h = imageToFloor * (1.0 / largest);
+    if (std::abs(cv::determinant(h)) < 1e-12) {
+        return QStringLiteral("is singular (it folds the image onto a line)");
+    }
+    // The image it must map: the calibration points' extent, or a VGA frame without points.
+    double u0 = 0.0, v0 = 0.0, u1 = 640.0, v1 = 480.0;
+    if (!points.empty()) {
+        u0 = u1 = points.front().image.x;
+        v0 = v1 = points.front().image.y;
+        for (const CalibrationPoint& p : points) {
+            u0 = std::min(u0, p.image.x);
+            u1 = std::max(u1, p.image.x);
+            v0 = std::min(v0, p.image.y);
+            v1 = std::max(v1, p.image.y);
+        }
+    }
+    double sign = 0.0;
+    for (const cv::Point2d corner :
+         {cv::Point2d(u0, v0), cv::Point2d(u1, v0), cv::Point2d(u0, v1), cv::Point2d(u1, v1)}) {
+        const cv::Vec3d q = h * cv::Vec3d(corner.x, corner.y, 1.0);
+        if (sign == 0.0) {
+            sign = q[2] > 0.0 ? 1.0 : -1.0;
+        }
+        if (!(q[2] * sign > 0.0)) {
+            return QStringLiteral(
+                "puts the horizon inside the image (a ceiling camera sees "
+                "only floor)");
+        }
+        const double x = q[0] / q[2], y = q[1] / q[2];
+        if (!(std::abs(x) <= kMaxFloorMetres && std::abs(y) <= kMaxFloorMetres)) {
+            return QStringLiteral(
+                       "maps image point (%1, %2) px to (%3, %4) m, beyond the "
+                       "+-%5 m a floor can span")
+                .arg(corner.x)
+                .arg(corner.y)
+                .arg(x, 0, 'g', 3)
+                .arg(y, 0, 'g', 3)
+                .arg(kMaxFloorMetres);
+        }
+    }
+    return {};
 }
 
 cv::Point2d FloorCalibration::toFloor(const cv::Point2d& image) const {
@@ -127,10 +187,6 @@ std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& jso
         }
         c.imageToFloor.val[i] = h[i].toDouble();
     }
-    if (std::abs(cv::determinant(c.imageToFloor)) < 1e-300) {
-        *error = QStringLiteral("'homography' is singular");
-        return std::nullopt;
-    }
     const QJsonArray pts = root.value("points").toArray();
     for (int i = 0; i < pts.size(); ++i) {
         const QJsonArray im = pts[i].toObject().value("image").toArray();
@@ -141,22 +197,41 @@ std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& jso
                     .arg(i + 1);
             return std::nullopt;
         }
-        c.points.push_back(
-            {{im[0].toDouble(), im[1].toDouble()}, {fl[0].toDouble(), fl[1].toDouble()}});
+        const CalibrationPoint p{{im[0].toDouble(), im[1].toDouble()},
+                                 {fl[0].toDouble(), fl[1].toDouble()}};
+        if (!std::isfinite(p.image.x) || !std::isfinite(p.image.y) || !std::isfinite(p.floor.x) ||
+            !std::isfinite(p.floor.y)) {
+            *error = QStringLiteral("'points' entry %1 is not four finite numbers").arg(i + 1);
+            return std::nullopt;
+        }
+        c.points.push_back(p);
     }
-    c.rmsMetres = root.value("rms_m").toDouble(0.0);
+    const QJsonValue rms = root.value("rms_m");
+    if (!rms.isUndefined()) {
+        if (!rms.isDouble() || !(rms.toDouble() >= 0.0 && rms.toDouble() <= kMaxFloorMetres)) {
+            *error =
+                QStringLiteral("'rms_m' must be a distance from 0 to %1 m").arg(kMaxFloorMetres);
+            return std::nullopt;
+        }
+        c.rmsMetres = rms.toDouble();
+    }
+    if (const QString problem = c.homographyProblem(); !problem.isEmpty()) {
+        *error = QStringLiteral("'homography' %1").arg(problem);
+        return std::nullopt;
+    }
     return c;
 }
 
 std::optional<FloorCalibration> FloorCalibration::load(const QString& path, QString* error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+    core::FileError fileError;
+    const std::optional<QByteArray> json = core::readFileBounded(path, kMaxJsonBytes, &fileError);
+    if (!json) {
+        *error = fileError.toString();
         return std::nullopt;
     }
-    auto c = fromJson(file.readAll(), error);
+    auto c = fromJson(*json, error);
     if (!c) {
-        *error = QStringLiteral("%1: %2").arg(path, *error);
+        *error = core::printable(QStringLiteral("%1: %2").arg(path, *error));
     }
     return c;
 }

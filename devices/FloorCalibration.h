@@ -31,6 +31,14 @@ struct FloorCalibration {
     static std::optional<FloorCalibration> fit(const std::vector<CalibrationPoint>& points,
                                                QString* error);
 
+    /// How far from the origin a floor point may lie [m]; a lab floor is tens of metres, so 1 km
+    /// is only a corrupt file.
+    static constexpr double kMaxFloorMetres = 1000.0;
+    /// Empty when imageToFloor is a homography a ceiling camera can have: finite, not singular,
+    /// the image (the points' extent, a 640 x 480 frame without points) on one side of the
+    /// horizon and mapped within kMaxFloorMetres; else what is wrong, for a message.
+    QString homographyProblem() const;
+
     cv::Point2d toFloor(const cv::Point2d& image) const;
     cv::Point2d toImage(const cv::Point2d& floor) const;
     /// Per point, the distance between its floor position and its image point mapped [m].
@@ -39,6 +47,8 @@ struct FloorCalibration {
     QByteArray toJson() const;
     /// Reads the JSON; on failure nullopt and *error names the key and the problem.
     static std::optional<FloorCalibration> fromJson(const QByteArray& json, QString* error);
+    /// The largest calibration file load() reads (a few hundred points take a few KB).
+    static constexpr qint64 kMaxJsonBytes = qint64(1) << 20;
     /// Reads a file; errors name the file.
     static std::optional<FloorCalibration> load(const QString& path, QString* error);
     bool save(const QString& path, QString* error) const;

@@ -49,23 +49,10 @@ struct RigSession::Loop {
     double lastTime = -1.0;          ///< its newest sample's time [s]
 };
 
-/// The take being recorded, on the worker thread only.
+/// The take being recorded, on the worker thread only: the one streaming recorder (the
+/// window's too), fed with the frames' own times.
 struct RigSession::Recorder {
-    sim::PlantInfo plant;
     core::DemonstrationStream stream;
-    double streamDt = 0.0;      ///< the crash copy's even step: the camera's frame period [s]
-    std::vector<double> times;  ///< each sample's frame time since the first [s]
-    std::vector<Eigen::VectorXd> states, actions;
-
-    void append(double t, const Eigen::VectorXd& state, const Eigen::VectorXd& action) {
-        times.push_back(t);
-        states.push_back(state);
-        actions.push_back(action);
-        // The crash copy keeps the format's even steps; the finished take is resampled from the
-        // frames' own times. A failed write is retried at the next flush; the take is in memory.
-        QString ignored;
-        stream.append((times.size() - 1) * streamDt, state, action, &ignored);
-    }
 };
 
 RigSession::RigSession(QObject* parent)
@@ -116,11 +103,7 @@ RigSession::~RigSession() {
     QMetaObject::invokeMethod(
         worker_,
         [this] {
-            if (recorder_) {
-                QString ignored;
-                recorder_->stream.close(&ignored);
-                recorder_.reset();
-            }
+            recorder_.reset();  // flushed and closed; its ".part" file stays
         },
         Qt::BlockingQueuedConnection);
     workerThread_.quit();
@@ -379,7 +362,8 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                         l.lastTime = t;
                         onWorker([this, t, state, action = l.driveAction] {
                             if (recorder_) {
-                                recorder_->append(t, state, action);
+                                QString ignored;  // retried at the next flush; told at the end
+                                recorder_->stream.append(t, state, action, &ignored);
                             }
                         });
                     }
@@ -413,15 +397,13 @@ bool RigSession::startRecording(const sim::PlantInfo& plant, const QString& path
     if (trialRunning() || recording()) {
         return fail(tr("A trial or a recording is already running."));
     }
-    // The header of the demonstration format, on disk at once; rows follow as they come. Its
-    // dt is the camera's frame period; the finished take is resampled onto the measured one.
+    // The header of the demonstration format, on disk at once; rows follow as frames come,
+    // interpolated from the frames' own times onto the camera's frame period.
     auto recorder = std::make_unique<Recorder>();
-    recorder->plant = plant;
-    recorder->streamDt = 1.0 / fps;
     core::Demonstration header = sim::DemonstrationRecorder(plant, 1.0 / fps).demonstration();
     header.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
     QString openError;
-    if (!recorder->stream.open(path, header, &openError)) {
+    if (!recorder->stream.open(path, header, plant.angleIndices, &openError)) {
         return fail(tr("Cannot record to %1").arg(openError));
     }
     onWorker([this, r = recorder.release()] { recorder_.reset(r); });
@@ -473,23 +455,18 @@ void RigSession::stopRecording() {
         std::unique_ptr<Recorder> r = std::move(recorder_);
         RigRecording done;
         done.path = r->stream.fileName();
-        QString ignored;  // the file is rewritten below from the samples in memory
-        r->stream.close(&ignored);
-        if (r->states.size() < 2) {
-            QFile::remove(done.path);
+        if (r->stream.rows() < 2) {
+            r->stream.abandon();
             done.error = tr("Nothing recorded (no pose seen).");
             emit recordingFinished(done);
             return;
         }
-        // The frames' own times onto one uniform step (the camera's median frame interval).
-        core::Demonstration demo =
-            sim::DemonstrationRecorder::fromTimedSamples(r->plant, r->times, r->states, r->actions);
-        demo.metadata.insert(QStringLiteral("source"), QStringLiteral("recorded on the rig"));
-        // The streamed file (even steps of the nominal period, kept for a crash) becomes the
-        // resampled one.
-        core::FileError writeError;
-        if (!core::writeDemonstrationCsv(demo, done.path, &writeError)) {
-            done.error = tr("The rig recording could not be saved: %1").arg(writeError.toString());
+        // Rows at the camera's frame period, interpolated from the frames' own times.
+        core::Demonstration demo = r->stream.demonstration();
+        QString writeError;
+        if (!r->stream.finish(&writeError)) {
+            done.error = tr("The rig recording could not be saved: %1 (the take so far is in %2)")
+                             .arg(writeError, core::DemonstrationStream::partPath(done.path));
         } else {
             done.demonstration = std::make_shared<core::Demonstration>(std::move(demo));
         }

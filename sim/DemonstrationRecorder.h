@@ -23,16 +23,6 @@ class DemonstrationRecorder {
     /// The demonstration so far (t_k = k dt).
     core::Demonstration demonstration() const;
 
-    /// A demonstration from samples taken at their own times (a camera's frame timestamps, with
-    /// jitter and dropped frames): dt is the median interval between samples, the states are
-    /// interpolated onto t_k = k dt (angles the short way round) and each action is the one
-    /// applied at t_k (the last sample at or before it). Needs at least two samples with
-    /// increasing times; std::invalid_argument otherwise.
-    static core::Demonstration fromTimedSamples(const PlantInfo& info,
-                                                const std::vector<double>& times,
-                                                const std::vector<Eigen::VectorXd>& states,
-                                                const std::vector<Eigen::VectorXd>& actions);
-
   private:
     PlantInfo info_;
     double dt_;

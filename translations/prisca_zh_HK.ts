@@ -599,93 +599,92 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="304"/>
-        <location filename="../app/LabSession.cpp" line="312"/>
+        <location filename="../app/LabSession.cpp" line="314"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="318"/>
+        <location filename="../app/LabSession.cpp" line="320"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="324"/>
+        <location filename="../app/LabSession.cpp" line="326"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="327"/>
+        <location filename="../app/LabSession.cpp" line="329"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="332"/>
+        <location filename="../app/LabSession.cpp" line="334"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="339"/>
+        <location filename="../app/LabSession.cpp" line="341"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="343"/>
+        <location filename="../app/LabSession.cpp" line="345"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="352"/>
+        <location filename="../app/LabSession.cpp" line="354"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="389"/>
+        <location filename="../app/LabSession.cpp" line="391"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="395"/>
+        <location filename="../app/LabSession.cpp" line="397"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="406"/>
+        <location filename="../app/LabSession.cpp" line="408"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="433"/>
+        <location filename="../app/LabSession.cpp" line="435"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="447"/>
+        <location filename="../app/LabSession.cpp" line="449"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="473"/>
+        <location filename="../app/LabSession.cpp" line="475"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="477"/>
+        <location filename="../app/LabSession.cpp" line="479"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="484"/>
+        <location filename="../app/LabSession.cpp" line="486"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="489"/>
+        <location filename="../app/LabSession.cpp" line="491"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="509"/>
+        <location filename="../app/LabSession.cpp" line="511"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -701,109 +700,109 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="406"/>
-        <source>cannot write the picture to %1</source>
-        <translation>無法把圖片寫入 %1</translation>
+        <location filename="../app/LiveChartsPanel.cpp" line="411"/>
+        <source>cannot encode the picture for %1</source>
+        <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="424"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="429"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="434"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="439"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="425"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="435"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="435"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="440"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="445"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="450"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="436"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="446"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="453"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="463"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="454"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="464"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="455"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="465"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="456"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="466"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="457"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="467"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="460"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="460"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="462"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="472"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="464"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="474"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="465"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="475"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="466"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="476"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="467"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="477"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="468"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="478"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="469"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="479"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="480"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="471"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="481"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1111,134 +1110,134 @@
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="90"/>
-        <location filename="../app/RecordPanel.cpp" line="350"/>
+        <location filename="../app/RecordPanel.cpp" line="92"/>
+        <location filename="../app/RecordPanel.cpp" line="352"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="157"/>
+        <location filename="../app/RecordPanel.cpp" line="159"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="164"/>
+        <location filename="../app/RecordPanel.cpp" line="166"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="201"/>
+        <location filename="../app/RecordPanel.cpp" line="203"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="206"/>
+        <location filename="../app/RecordPanel.cpp" line="208"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="217"/>
+        <location filename="../app/RecordPanel.cpp" line="219"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="252"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="251"/>
+        <location filename="../app/RecordPanel.cpp" line="253"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="263"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="262"/>
+        <location filename="../app/RecordPanel.cpp" line="264"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="276"/>
+        <location filename="../app/RecordPanel.cpp" line="278"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="283"/>
+        <location filename="../app/RecordPanel.cpp" line="285"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="292"/>
-        <location filename="../app/RecordPanel.cpp" line="303"/>
+        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="305"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="296"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="307"/>
+        <location filename="../app/RecordPanel.cpp" line="309"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="318"/>
+        <location filename="../app/RecordPanel.cpp" line="320"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="340"/>
+        <location filename="../app/RecordPanel.cpp" line="342"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="345"/>
+        <location filename="../app/RecordPanel.cpp" line="347"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="347"/>
+        <location filename="../app/RecordPanel.cpp" line="349"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="348"/>
+        <location filename="../app/RecordPanel.cpp" line="350"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="349"/>
+        <location filename="../app/RecordPanel.cpp" line="351"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="351"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="352"/>
+        <location filename="../app/RecordPanel.cpp" line="354"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="355"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="354"/>
+        <location filename="../app/RecordPanel.cpp" line="356"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="355"/>
+        <location filename="../app/RecordPanel.cpp" line="357"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1251,10 +1250,9 @@
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="81"/>
         <location filename="../app/RecordingWorker.cpp" line="116"/>
-        <source>Writing the recording failed: %1</source>
-        <translation>寫入錄製失敗：%1</translation>
+        <source>Writing the recording failed: %1 (the take so far is in %2)</source>
+        <translation>寫入錄製失敗：%1（目前錄得的內容在 %2）</translation>
     </message>
 </context>
 <context>
@@ -2082,64 +2080,64 @@
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="145"/>
+        <location filename="../rig/RigSession.cpp" line="128"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="231"/>
+        <location filename="../rig/RigSession.cpp" line="214"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="234"/>
+        <location filename="../rig/RigSession.cpp" line="217"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="250"/>
+        <location filename="../rig/RigSession.cpp" line="233"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="255"/>
+        <location filename="../rig/RigSession.cpp" line="238"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="258"/>
+        <location filename="../rig/RigSession.cpp" line="241"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="264"/>
+        <location filename="../rig/RigSession.cpp" line="247"/>
         <source>%1 could not be set up.</source>
         <translation>無法設定 %1。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="411"/>
+        <location filename="../rig/RigSession.cpp" line="395"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="414"/>
+        <location filename="../rig/RigSession.cpp" line="398"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="425"/>
+        <location filename="../rig/RigSession.cpp" line="407"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="480"/>
+        <location filename="../rig/RigSession.cpp" line="460"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="492"/>
-        <source>The rig recording could not be saved: %1</source>
-        <translation>實驗台錄製無法儲存：%1</translation>
+        <location filename="../rig/RigSession.cpp" line="468"/>
+        <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
+        <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
 </context>
 </TS>

@@ -2,7 +2,9 @@
 
 #include "app/cli/CliSupport.h"
 
-#include <QFile>
+#include "core/FileIo.h"
+
+#include <QList>
 
 #include <cmath>
 #include <vector>
@@ -10,17 +12,20 @@
 namespace prisca::app::cli {
 
 Eigen::MatrixXd readActionTable(const QString& path, const QStringList& actionNames) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        throw UsageError(QStringLiteral("%1: cannot open: %2").arg(path, file.errorString()));
+    core::FileError error;
+    constexpr qint64 kMaxBytes = qint64(256) << 20;
+    const std::optional<QByteArray> text = core::readFileBounded(path, kMaxBytes, &error);
+    if (!text) {
+        throw UsageError(error.toString());
     }
+    const QList<QByteArray> lines = text->split('\n');
     std::vector<int> columnOf;
     int fieldCount = 0;
     std::vector<Eigen::VectorXd> rows;
     int lineNumber = 0;
-    while (!file.atEnd()) {
+    for (const QByteArray& bytes : lines) {
         ++lineNumber;
-        const QString line = QString::fromUtf8(file.readLine()).trimmed();
+        const QString line = QString::fromUtf8(bytes).trimmed();
         if (line.isEmpty() || line.startsWith(QLatin1Char('#'))) {
             continue;
         }

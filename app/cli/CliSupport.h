@@ -3,6 +3,7 @@
 #include "app/plot/Figure.h"
 
 #include "core/Demonstration.h"
+#include "core/FileIo.h"
 
 #include <QCommandLineParser>
 #include <QJsonObject>
@@ -17,7 +18,9 @@ namespace prisca::app::cli {
 /// A bad argument or file: main() prints "prisca-cli: <command>: <message>" and exits 2.
 class UsageError : public std::runtime_error {
   public:
-    explicit UsageError(const QString& message) : std::runtime_error(message.toStdString()) {}
+    /// Control characters in the message are escaped (core::printable): it quotes user input.
+    explicit UsageError(const QString& message)
+        : std::runtime_error(core::printable(message).toStdString()) {}
 };
 
 /// The options every command shares and the parsing of its own. One per command invocation.

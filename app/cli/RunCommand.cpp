@@ -4,11 +4,11 @@
 #include "app/cli/TaskSetup.h"
 #include "app/figures/PaperFigures.h"
 #include "core/RunLogCsv.h"
-#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
-#include "sim/RunLogBuilder.h"
+#include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunLogBuilder.h"
 #include "sim/TrialMetrics.h"
 
 #include <QJsonArray>
@@ -36,8 +36,7 @@ int runCommand(const QStringList& arguments) {
                                     "control step."));
     line.addValue("plant", "Plant: " + sim::PlantCatalog::names().join(", ") + ".", "name");
     line.addValue("demo", "Demonstration CSV to repeat.", "file");
-    line.addValue("method", "Method: " + sim::MethodCatalog::ids().join(", ") + ".",
-                  "name");
+    line.addValue("method", "Method: " + sim::MethodCatalog::ids().join(", ") + ".", "name");
     line.addValue("trials", "Trials in a row (warm start: PRISCA and PGSD keep learning).", "N",
                   "1");
     line.addValue("seed", "Seed of the trials' perturbations and sensor noise.", "N", "1");
@@ -224,6 +223,18 @@ int runCommand(const QStringList& arguments) {
     core::FileError error;
     if (!core::writeRunLogCsv(log, out, &error)) {
         throw UsageError(error.toString());
+    }
+    // A trial whose error is not a number has no result to report (the plant's state left the
+    // numbers, e.g. on a demonstration no real car could drive): say so, and exit 2.
+    for (size_t trial = 0; trial < rms.size(); ++trial) {
+        const bool finite =
+            std::isfinite(rms[trial]) && (!comparison || std::isfinite(compareRms[trial]));
+        if (!finite) {
+            throw UsageError(QStringLiteral("trial %1 diverged: its tracking error is not a "
+                                            "number (the run log %2 keeps every step)")
+                                 .arg(trial)
+                                 .arg(out));
+        }
     }
     if (line.isSet("plot")) {
         if (!info.pose) {

@@ -5,8 +5,8 @@
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "core/Table1Report.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/SlideCar.h"
 #include "sim/Table1Experiment.h"
@@ -73,8 +73,9 @@ int table1ProtocolCommand(const CommandLine& line) {
             "--styles records its own demonstrations; it does not take --demo or --demo-seed"));
     }
     if (line.isSet("plot")) {
-        throw UsageError(QStringLiteral("--plot draws one demonstration's trials; not with "
-                                        "--styles"));
+        throw UsageError(
+            QStringLiteral("--plot draws one demonstration's trials; not with "
+                           "--styles"));
     }
     const QString plant = checkedPlant(line.value("plant"));
     sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
@@ -93,9 +94,9 @@ int table1ProtocolCommand(const CommandLine& line) {
     }
     for (const QString& style : settings.styles) {
         if (!sim::DemonstrationStyles::contains(plant, style)) {
-            throw UsageError(QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
-                                 .arg(plant, style,
-                                      sim::DemonstrationStyles::names(plant).join(' ')));
+            throw UsageError(
+                QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
+                    .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
         }
     }
     settings.table.methods = checkedMethods(line, settings.table.methods);
@@ -115,19 +116,19 @@ int table1ProtocolCommand(const CommandLine& line) {
     const sim::Table1ProtocolResult result = sim::runTable1Protocol(settings, profile);
     printProgress(QString());
 
-    QString caption =
-        QStringLiteral("Slide parking in simulation (%1) on %2 styles x %3 seed sets (%4..%5): "
-                       "%6 trials per method and cell, %7 training trials, perturbation %8, "
-                       "sensor %9; means and 95% intervals over the cells")
-            .arg(plant)
-            .arg(settings.styles.size())
-            .arg(seedSets)
-            .arg(first)
-            .arg(first + seedSets - 1)
-            .arg(settings.table.trials)
-            .arg(settings.table.trainingTrials)
-            .arg(settings.table.perturbation)
-            .arg(settings.table.sensor);
+    QString caption = QStringLiteral(
+                          "Slide parking in simulation (%1) on %2 styles x %3 seed sets (%4..%5): "
+                          "%6 trials per method and cell, %7 training trials, perturbation %8, "
+                          "sensor %9; means and 95% intervals over the cells")
+                          .arg(plant)
+                          .arg(settings.styles.size())
+                          .arg(seedSets)
+                          .arg(first)
+                          .arg(first + seedSets - 1)
+                          .arg(settings.table.trials)
+                          .arg(settings.table.trainingTrials)
+                          .arg(settings.table.perturbation)
+                          .arg(settings.table.sensor);
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
@@ -201,14 +202,10 @@ int table1Command(const QStringList& arguments) {
                                  .arg(plant, sim::PlantCatalog::names().join(' ')));
         }
         // The scripted demonstration goes through the same checks as a file would.
-        const QString scratch = QDir::temp().filePath(
-            QStringLiteral("prisca-table1-demo-%1.csv").arg(QCoreApplication::applicationPid()));
-        writeDemonstration(
-            sim::PlantCatalog::demonstrate(
-                plant, static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62))),
-            scratch);
-        task = loadTask(plant, scratch, QString());
-        QFile::remove(scratch);
+        const auto seed = static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62));
+        task = scriptedTaskFor(
+            plant, sim::PlantCatalog::demonstrate(plant, seed),
+            QStringLiteral("%1 scripted demonstration seed %2").arg(plant).arg(seed));
     }
     if (!task.profile.info.pose) {
         throw UsageError(

@@ -1,23 +1,41 @@
 #include "app/cli/TaskSetup.h"
 
 #include "app/cli/CliSupport.h"
+#include "core/DemonstrationCsv.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-
-#include <QCoreApplication>
-#include <QDir>
-#include <QFile>
 
 namespace prisca::app::cli {
 
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
               const core::ActionMappingFitOptions& options) {
-    core::Demonstration demonstration = readDemonstration(demonstrationPath);
+    return taskFor(plant, readDemonstration(demonstrationPath), demonstrationPath, mask, options);
+}
+
+Task scriptedTaskFor(const QString& plant, const core::Demonstration& scripted,
+                     const QString& sourceName) {
+    // Through the format's text, in memory: a scripted demonstration passes the same checks as
+    // a recorded file (and no scratch file can fail on a full disk).
+    QString problem;
+    const QByteArray text = core::formatDemonstrationCsv(scripted, &problem);
+    if (text.isEmpty()) {
+        throw UsageError(QStringLiteral("%1: %2").arg(sourceName, problem));
+    }
+    core::FileError error;
+    auto demonstration = core::parseDemonstrationCsv(text, sourceName, &error);
+    if (!demonstration) {
+        throw UsageError(error.toString());
+    }
+    return taskFor(plant, std::move(*demonstration), sourceName, QString());
+}
+
+Task taskFor(const QString& plant, core::Demonstration demonstration,
+             const QString& demonstrationPath, const QString& mask,
+             const core::ActionMappingFitOptions& options) {
     const QString name = plant.isEmpty() ? demonstration.plant : plant;
     if (!sim::PlantCatalog::contains(name)) {
-        throw UsageError(
-            QStringLiteral("%1: unknown plant '%2' (one of: %3; or give --plant)")
-                .arg(demonstrationPath, name, sim::PlantCatalog::names().join(' ')));
+        throw UsageError(QStringLiteral("%1: unknown plant '%2' (one of: %3; or give --plant)")
+                             .arg(demonstrationPath, name, sim::PlantCatalog::names().join(' ')));
     }
     const sim::PlantInfo info = sim::PlantCatalog::describe(name);
     sim::PlantProfile profile = sim::PlantProfile::forPlant(info);
@@ -74,13 +92,8 @@ Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed
         throw UsageError(QStringLiteral("unknown %1 style '%2' (one of: %3)")
                              .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
     }
-    // Through a scratch file, so a scripted demonstration passes the same checks as a recorded one.
-    const QString scratch = QDir::temp().filePath(
-        QStringLiteral("prisca-demo-%1-%2.csv").arg(plant).arg(QCoreApplication::applicationPid()));
-    writeDemonstration(sim::DemonstrationStyles::record(plant, style, seed), scratch);
-    Task task = loadTask(plant, scratch, QString());
-    QFile::remove(scratch);
-    return task;
+    return scriptedTaskFor(plant, sim::DemonstrationStyles::record(plant, style, seed),
+                           QStringLiteral("%1 %2 seed %3").arg(plant, style).arg(seed));
 }
 
 void addPriscaDefaultsOption(CommandLine& line) {

@@ -20,6 +20,16 @@ using Task = sim::Task;
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
               const core::ActionMappingFitOptions& options = {});
 
+/// loadTask() on a demonstration already read (`demonstrationPath` names it in messages).
+Task taskFor(const QString& plant, core::Demonstration demonstration,
+             const QString& demonstrationPath, const QString& mask,
+             const core::ActionMappingFitOptions& options = {});
+
+/// The task of a scripted demonstration, checked as a file would be (written and read back in
+/// the format's text, in memory); `sourceName` names it in messages.
+Task scriptedTaskFor(const QString& plant, const core::Demonstration& scripted,
+                     const QString& sourceName);
+
 /// The plant name, checked against the catalogue; UsageError naming the known plants if not.
 QString checkedPlant(const QString& name);
 

@@ -12,6 +12,7 @@
 #include <opencv2/videoio.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 namespace prisca::app::cli {
 
@@ -97,7 +98,9 @@ int trackCommand(const QStringList& arguments) {
         } else {
             row += ",,,0,";
         }
-        core::appendCsvNumber(row, r.misfit);
+        if (std::isfinite(r.misfit)) {  // no misfit without three blobs: left empty
+            core::appendCsvNumber(row, r.misfit);
+        }
         row += ',' + QByteArray::number(r.blobs) + '\n';
         csv += row;
         ++frames;
@@ -112,6 +115,12 @@ int trackCommand(const QStringList& arguments) {
     core::FileError fileError;
     if (!core::writeFileAtomically(out, csv, &fileError)) {
         throw UsageError(fileError.toString());
+    }
+    if (found == 0) {
+        std::fprintf(stderr,
+                     "prisca-cli: track: warning: none of the %d frames gave a pose; check "
+                     "--threshold, --leds and the calibration\n",
+                     frames);
     }
     if (line.format() == QLatin1String("json")) {
         printJson({{"frames", frames}, {"withPose", found}, {"out", out}});

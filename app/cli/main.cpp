@@ -1,6 +1,7 @@
 // prisca-cli: the headless front end of PRISCA Lab. It never opens a window.
 #include "app/cli/CliSupport.h"
 #include "app/cli/CommandTable.h"
+#include "core/FileIo.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -9,6 +10,7 @@
 
 #include <sys/stat.h>
 #include <unistd.h>
+#include <csignal>
 #include <cstdio>
 
 namespace {
@@ -18,7 +20,8 @@ using prisca::app::cli::kExitUsage;
 
 // One line on stderr, prefixed so it is clear which program complained inside a script.
 int fail(const QString& message) {
-    std::fprintf(stderr, "prisca-cli: %s\n", message.toLocal8Bit().constData());
+    std::fprintf(stderr, "prisca-cli: %s\n",
+                 prisca::core::printable(message).toLocal8Bit().constData());
     return kExitUsage;
 }
 
@@ -41,6 +44,9 @@ QString describeCommands() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+    // A write past a file-size limit fails with an error (exit 2 naming the file) instead of
+    // killing the process with SIGXFSZ and leaving a temporary file behind.
+    std::signal(SIGXFSZ, SIG_IGN);
     // A widgets application only because the figures are drawn with QtCharts, which is made of
     // widgets; the offscreen platform means no window and no display are ever needed.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {

@@ -1,11 +1,12 @@
 #include "app/plot/Figure.h"
 
 #include "app/plot/FigureScene.h"
+#include "core/FileIo.h"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QFileInfo>
 #include <QPainter>
-#include <QSaveFile>
 #include <QSvgGenerator>
 
 #include <array>
@@ -69,20 +70,20 @@ bool saveFigure(const Figure& figure, const QString& path, QString* error) {
         // QtCharts draws with widgets (e.g. on the offscreen platform).
         return fail(error, QStringLiteral("%1: rendering a plot needs a QApplication").arg(path));
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        return fail(error, QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
-    }
+    // Encoded in memory, then written by the one atomic writer, which checks that every byte
+    // reached the disk: a device's short write (a full disk) is not an error to QTextStream or
+    // QImageWriter, and QSaveFile::commit() does not report a failed final flush.
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
     if (suffix == QLatin1String("png")) {
-        if (!renderFigure(figure).save(&file, "PNG")) {
-            file.cancelWriting();
-            return fail(error,
-                        QStringLiteral("%1: cannot encode PNG: %2").arg(path, file.errorString()));
+        if (!renderFigure(figure).save(&buffer, "PNG")) {
+            return fail(error, QStringLiteral("%1: cannot encode PNG").arg(path));
         }
     } else {
         const FigureScene scene(figure, kSvgColumnsPerPixel);
         QSvgGenerator generator;
-        generator.setOutputDevice(&file);
+        generator.setOutputDevice(&buffer);
         generator.setSize(figure.size);
         generator.setViewBox(QRect(QPoint(0, 0), figure.size));
         generator.setResolution(96);  // so width and height in mm come out as CSS pixels
@@ -90,15 +91,16 @@ bool saveFigure(const Figure& figure, const QString& path, QString* error) {
         generator.setDescription(QStringLiteral("PRISCA Lab figure"));
         QPainter painter;
         if (!painter.begin(&generator)) {
-            file.cancelWriting();
             return fail(error, QStringLiteral("%1: cannot start the SVG").arg(path));
         }
         painter.fillRect(QRectF(QPointF(0, 0), QSizeF(figure.size)), Qt::white);
         scene.render(&painter);
         painter.end();
     }
-    if (!file.commit()) {
-        return fail(error, QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
+    buffer.close();
+    core::FileError fileError;
+    if (!core::writeFileAtomically(path, bytes, &fileError)) {
+        return fail(error, fileError.toString());
     }
     return true;
 }

@@ -134,10 +134,10 @@ class TestCliCommands : public QObject {
     }
 
     void table1_stylesAndSeedSetsGiveMeansIntervalsAndABreakdown() {
-        const CliResult r = cli({"table1", "--styles", "stick-90-left,fast-180-right",
-                                 "--seed-sets", "2", "--seed", "40", "--trials", "2",
-                                 "--training-trials", "1", "--methods", "pd-h-lsd,ilc",
-                                 "--format", "json"});
+        const CliResult r =
+            cli({"table1", "--styles", "stick-90-left,fast-180-right", "--seed-sets", "2", "--seed",
+                 "40", "--trials", "2", "--training-trials", "1", "--methods", "pd-h-lsd,ilc",
+                 "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject root = parseJson(r.out);
         QCOMPARE(root.value("seedSets").toArray().size(), 2);
@@ -157,7 +157,10 @@ class TestCliCommands : public QObject {
             QCOMPARE(styles.size(), 2);
             double sum = 0.0;
             for (const QJsonValue& style : styles) {
-                sum += style.toObject().value("positionCm").toObject().value("meanAbsoluteError")
+                sum += style.toObject()
+                           .value("positionCm")
+                           .toObject()
+                           .value("meanAbsoluteError")
                            .toDouble();
             }
             QVERIFY(std::abs(sum / 2.0 - mean) < 1e-9);
@@ -176,10 +179,10 @@ class TestCliCommands : public QObject {
     }
 
     void curve_stylesPoolTheRunsAndBreakDownTheFinalError() {
-        const CliResult r = cli({"curve", "--plant", "acrobot", "--styles",
-                                 "swing-small,swing-large", "--methods", "ilc,pd", "--runs", "2",
-                                 "--budget", "960", "--out", "styles-curve.csv", "--format",
-                                 "json"});
+        const CliResult r =
+            cli({"curve", "--plant", "acrobot", "--styles", "swing-small,swing-large", "--methods",
+                 "ilc,pd", "--runs", "2", "--budget", "960", "--out", "styles-curve.csv",
+                 "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject root = parseJson(r.out);
         QCOMPARE(root.value("cells").toInt(), 2);
@@ -192,8 +195,9 @@ class TestCliCommands : public QObject {
     void fit_worksOnARobotOutsideTheCatalog() {
         // A robot no catalog knows, flown in closed loop, whose data follow eq. 5 exactly:
         // s_{k+1} = s_k + dt (A s_k + B^T u_k), B = (1, 3).
-        QByteArray csv = "# prisca-demonstration 1\n# plant: hovercraft\n# dt: 0.025\n"
-                         "# states: a[m], b[m/s]\n# actions: thrust[1]\nt,a,b,thrust\n";
+        QByteArray csv =
+            "# prisca-demonstration 1\n# plant: hovercraft\n# dt: 0.025\n"
+            "# states: a[m], b[m/s]\n# actions: thrust[1]\nt,a,b,thrust\n";
         double a = 0.0, b = 0.0;
         for (int k = 0; k < 2000; ++k) {
             const double t = k * 0.025;
@@ -209,8 +213,8 @@ class TestCliCommands : public QObject {
         QCOMPARE(noMask.exitCode, 2);
         QVERIFY2(noMask.err.contains("hovercraft") && noMask.err.contains("--mask"),
                  qPrintable(noMask.err));
-        const CliResult r = cli({"fit", "--demo", "hover.csv", "--mask", "1,1", "--drift",
-                                 "--format", "json"});
+        const CliResult r =
+            cli({"fit", "--demo", "hover.csv", "--mask", "1,1", "--drift", "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject fit = parseJson(r.out);
         QCOMPARE(fit.value("plant").toString(), QStringLiteral("hovercraft"));
@@ -224,8 +228,7 @@ class TestCliCommands : public QObject {
             parseJson(cli({"fit", "--demo", "hover.csv", "--mask", "1,1", "--format", "json"}).out);
         QVERIFY(std::abs(plain.value("Bv").toArray()[0].toArray()[1].toDouble() - 3.0) > 1.0);
         QVERIFY(plain.value("unconstrainedBv").toArray()[0].toArray()[1].toDouble() < 0.0);
-        QCOMPARE(cli({"fit", "--demo", "hover.csv", "--mask", "1,1", "--angles", "7"}).exitCode,
-                 2);
+        QCOMPARE(cli({"fit", "--demo", "hover.csv", "--mask", "1,1", "--angles", "7"}).exitCode, 2);
     }
 
     void fit_reportsTheMappingAndDiagnosticsAsJson() {
@@ -492,7 +495,7 @@ class TestCliCommands : public QObject {
             << "--duration must lie in";
         QTest::newRow("simulate: missing actions file")
             << (QStringList{"simulate", "--plant", "slidecar", "--actions", "nope.csv"} + out)
-            << "nope.csv: cannot open";
+            << "nope.csv: no such file";
         QTest::newRow("simulate: bad action value")
             << (QStringList{"simulate", "--plant", "slidecar", "--actions", "bad-actions.csv"} +
                 out)
@@ -578,6 +581,60 @@ class TestCliCommands : public QObject {
         QCOMPARE(r.err.count(u'\n'), 1);
         QCOMPARE(r.out, QString());
         QVERIFY(!QFile::exists(path("never.csv")));
+    }
+
+    // A full disk (a file-size limit of 0, which fails every write as ENOSPC does): every output
+    // is refused with exit 2 naming the file, and the previous file stays byte for byte.
+    void fullDisk_exitsTwoAndKeepsThePreviousFile_data() {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("output");
+        QTest::newRow("demo --out")
+            << QStringList{"demo", "--plant", "slidecar", "--out", "o.csv"} << "o.csv";
+        QTest::newRow("simulate --out")
+            << QStringList{"simulate",   "--plant", "slidecar", "--zero-action",
+                           "--duration", "5",       "--out",    "o.csv"}
+            << "o.csv";
+        QTest::newRow("run --out")
+            << QStringList{"run", "--plant",  "slidecar", "--demo", "car.csv", "--method",
+                           "pd",  "--trials", "1",        "--out",  "o.csv"}
+            << "o.csv";
+        QTest::newRow("lemma41 --out") << QStringList{"lemma41", "--out", "o.csv"} << "o.csv";
+        QTest::newRow("table1 --out")
+            << QStringList{"table1", "--trials", "1",    "--training-trials", "1", "--methods",
+                           "pd",     "--out",    "o.csv"}
+            << "o.csv";
+    }
+
+    void fullDisk_exitsTwoAndKeepsThePreviousFile() {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, output);
+        QTemporaryDir full;
+        QVERIFY(QFile::copy(path("car.csv"), full.filePath("car.csv")));
+        const QByteArray previous = "the previous file, which must survive\n";
+        writeFile(full.filePath(output), previous);
+        if (output != QLatin1String("o.csv")) {
+            writeFile(full.filePath("o.csv"), previous);
+        }
+        QProcess process;
+        process.setWorkingDirectory(full.path());
+        // The CLI ignores SIGXFSZ, so its writes fail with EFBIG.
+        process.start("/bin/sh", QStringList{"-c", "ulimit -f 0 && exec \"$0\" \"$@\"",
+                                             QStringLiteral(PRISCA_CLI)} +
+                                     arguments);
+        QVERIFY(process.waitForFinished(120000));
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        const QString err = QString::fromLocal8Bit(process.readAllStandardError());
+        QVERIFY2(process.exitCode() == 2, qPrintable(err));
+        QVERIFY2(err.contains(output), qPrintable(err));
+        QFile kept(full.filePath(output));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), previous);
+        // No temporary file left behind either.
+        const QStringList left = QDir(full.path()).entryList(QDir::Files);
+        for (const QString& name : left) {
+            QVERIFY2(name == "car.csv" || name == "o.csv" || name == output || name == "log.csv",
+                     qPrintable(left.join(' ')));
+        }
     }
 
     void table1_writesEveryFormatWellFormed() {

@@ -19,6 +19,9 @@
 #include "devices/SyntheticCamera.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+#include "support/FileSizeLimit.h"
+
+#include <sys/stat.h>
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -672,6 +675,36 @@ class TestGuiRun : public QObject {
         w.window.session().setPlant(QStringLiteral("acrobot"));
         QCOMPARE(w.results()->rowCount(), 0);
         QVERIFY(w.results()->horizontalHeaderItem(3)->text().contains(QLatin1String("rad")));
+    }
+
+    void session_fullDiskRefusedAndThePreviousFileKept() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("session.json");
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("{\"the previous session\": true}\n");
+        old.close();
+        LabSession session;
+        session.setPlant(QStringLiteral("slidecar"));
+        QString error;
+        {
+            const FileSizeLimit full(64);
+            QVERIFY(full.active());
+            QVERIFY(!session.save(path, &error));
+        }
+        QVERIFY2(error.contains(path), qPrintable(error));
+        QVERIFY(old.open(QIODevice::ReadOnly));
+        QCOMPARE(old.readAll(), QByteArray("{\"the previous session\": true}\n"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+                 QStringList{"session.json"});
+        // Hostile files are refused before they are read: a device, a FIFO.
+        QVERIFY(!session.open(QStringLiteral("/dev/zero"), &error));
+        QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+        const QByteArray fifo = QFile::encodeName(dir.filePath("fifo"));
+        QCOMPARE(::mkfifo(fifo.constData(), 0600), 0);
+        QVERIFY(!session.open(dir.filePath("fifo"), &error));  // would block forever if opened
+        QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+        QCOMPARE(session.plant(), QStringLiteral("slidecar"));
     }
 
     void session_savedAndOpenedWithItsParameters() {

@@ -4,6 +4,7 @@
 #include "app/plot/DataClipping.h"
 #include "app/plot/Figure.h"
 #include "app/plot/FigureScene.h"
+#include "support/FileSizeLimit.h"
 
 #include <QApplication>
 #include <QChart>
@@ -622,6 +623,34 @@ class TestPlot : public QObject {
         QVERIFY(!saveFigure(figure, path, &error));
         QVERIFY(error.contains(path));
         QCOMPARE(QImage(path).size(), QSize(320, 240));  // the old file is untouched
+    }
+
+    void save_onAFullDiskFailsAndKeepsTheOldFile_data() {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("png") << "a.png";
+        QTest::newRow("svg") << "a.svg";
+    }
+
+    void save_onAFullDiskFailsAndKeepsTheOldFile() {
+        // A small image stays in the file's buffer until commit; its failed flush was reported
+        // as saved and left an empty file.
+        QFETCH(QString, name);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(name);
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("old");
+        old.close();
+        QString error;
+        {
+            const FileSizeLimit full(100);
+            QVERIFY(full.active());
+            QVERIFY(!saveFigure(onePanel(Axes{}, QSize(320, 240)), path, &error));
+        }
+        QVERIFY2(error.contains(path), qPrintable(error));
+        QVERIFY(old.open(QIODevice::ReadOnly));
+        QCOMPARE(old.readAll(), QByteArray("old"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{name});
     }
 };
 

@@ -187,13 +187,13 @@ class TestDemonstrationCsv : public QObject {
                                   std::numeric_limits<double>::denorm_min(),
                                   -std::numeric_limits<double>::denorm_min(),
                                   std::numeric_limits<double>::min(),
-                                  std::numeric_limits<double>::max(),
-                                  std::numeric_limits<double>::lowest(),
                                   std::numeric_limits<double>::epsilon(),
-                                  1e21,
-                                  123456789.123456789,
+                                  Demonstration::kMaxAbsValue,  // the format's bounds
+                                  -Demonstration::kMaxAbsValue,
+                                  std::nextafter(Demonstration::kMaxAbsValue, 0.0),
+                                  123456.789123456789,
                                   0.30000000000000004,
-                                  9007199254740993.0};
+                                  98765.432101234567};
         const int count = int(sizeof awkward / sizeof awkward[0]);
         Demonstration demo = makeDemonstration(count);
         demo.dt = 0.1;  // not exactly representable
@@ -214,12 +214,13 @@ class TestDemonstrationCsv : public QObject {
     }
 
     void roundTrip_randomBitPatternsKeepEveryBit() {
+        // Every double the format can mean (within +-kMaxAbsValue, subnormals included).
         std::mt19937_64 random(20240501);
         Demonstration demo = makeDemonstration(500);
         for (Eigen::Index k = 0; k < demo.states.rows(); ++k) {
             for (Eigen::Index c = 0; c < demo.states.cols(); ++c) {
                 double value = std::numeric_limits<double>::quiet_NaN();
-                while (!std::isfinite(value)) {
+                while (!(std::abs(value) <= Demonstration::kMaxAbsValue)) {
                     const std::uint64_t bits = random();
                     std::memcpy(&value, &bits, sizeof value);
                 }
@@ -392,8 +393,10 @@ class TestDemonstrationCsv : public QObject {
     void badDt_rejected_data() {
         QTest::addColumn<QByteArray>("value");
         QTest::addColumn<QString>("mention");
-        QTest::newRow("zero") << QByteArray("0") << "positive";
-        QTest::newRow("negative") << QByteArray("-0.025") << "positive";
+        QTest::newRow("zero") << QByteArray("0") << "from 0.0001 to 10 s";
+        QTest::newRow("negative") << QByteArray("-0.025") << "from 0.0001 to 10 s";
+        QTest::newRow("tiny") << QByteArray("1e-300") << "from 0.0001 to 10 s";
+        QTest::newRow("an hour") << QByteArray("3600") << "from 0.0001 to 10 s";
         QTest::newRow("text") << QByteArray("fast") << "'fast'";
         QTest::newRow("with unit") << QByteArray("0.025 s") << "'0.025 s'";
         QTest::newRow("empty") << QByteArray("") << "no value";
@@ -494,6 +497,35 @@ class TestDemonstrationCsv : public QObject {
         QFETCH(QString, mention);
         expectError(withField(10, 3, value), 10, 3,
                     {QStringLiteral("'%1'").arg(QString::fromUtf8(value)), "'y'", mention});
+    }
+
+    void valueBeyondTheFormatsBound_rejected_data() {
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QByteArray>("value");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("state 1e300") << 3 << QByteArray("1e300") << "'y'";
+        QTest::newRow("state -1e7") << 3 << QByteArray("-1e7") << "'y'";
+        QTest::newRow("action 2e6") << 8 << QByteArray("2e6") << "'throttle'";
+        QTest::newRow("time 1e12") << 1 << QByteArray("1e12") << "'t'";
+    }
+
+    void valueBeyondTheFormatsBound_rejected() {
+        QFETCH(int, column);
+        QFETCH(QByteArray, value);
+        QFETCH(QString, name);
+        expectError(withField(10, column, value), 10, column,
+                    {QStringLiteral("'%1'").arg(QString::fromUtf8(value)), name, "beyond"});
+    }
+
+    void inferredDtOutsideItsRange_rejected() {
+        // No '# dt:' line and rows 1e-6 s apart: the median step is no sampling period.
+        QByteArray text = "# prisca-demonstration 1\n# states: x [m]\n# actions: u\nt,x,u\n";
+        for (int k = 0; k < 5; ++k) {
+            text += QByteArray::number(k * 1e-6) + ",0,0\n";
+        }
+        const std::optional<FileError> error = errorOf(text, {});
+        QVERIFY2(error, "accepted");
+        QVERIFY2(error->message.contains("median time step"), qPrintable(error->message));
     }
 
     void timeNotIncreasing_reportsLine_data() {

@@ -4,6 +4,7 @@
 #include "devices/FloorCalibration.h"
 #include "devices/LedTracker.h"
 #include "devices/SyntheticCamera.h"
+#include "support/FileSizeLimit.h"
 
 #include <QtTest>
 
@@ -63,7 +64,27 @@ class TestLedTracker : public QObject {
         QVERIFY(!FloorCalibration::fromJson("{\"homography\": [1, 2, 3]}", &error));
         QVERIFY(error.contains("9 numbers"));
         QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0,0,0,0,0,0,0,0,0]}", &error));
-        QVERIFY(error.contains("singular"));
+        QVERIFY2(error.contains("all zeros"), qPrintable(error));
+        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [1,2,3,2,4,6,0,0,1]}", &error));
+        QVERIFY2(error.contains("singular"), qPrintable(error));
+        // Finite but meaningless: 1e300 m per pixel, a horizon across the image, a negative rms,
+        // points that are not numbers.
+        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [1e5,0,0,0,1e5,0,0,0,1]}", &error));
+        QVERIFY2(error.contains("beyond"), qPrintable(error));
+        QVERIFY(
+            !FloorCalibration::fromJson("{\"homography\": [1e300,0,0,0,1e300,0,0,0,1]}", &error));
+        QVERIFY2(error.contains("'homography'"), qPrintable(error));
+        QVERIFY(
+            !FloorCalibration::fromJson("{\"homography\": [0.01,0,0,0,0.01,0,0,0.01,-1]}", &error));
+        QVERIFY2(error.contains("horizon"), qPrintable(error));
+        QVERIFY(!FloorCalibration::fromJson(
+            "{\"homography\": [0.01,0,0,0,0.01,0,0,0,1], \"rms_m\": -1}", &error));
+        QVERIFY2(error.contains("rms_m"), qPrintable(error));
+        QVERIFY(!FloorCalibration::fromJson(
+            "{\"homography\": [0.01,0,0,0,0.01,0,0,0,1], \"points\": [{\"image\": [1e308, 0], "
+            "\"floor\": [0, 0]}]}",
+            &error));  // the image the homography must map reaches 1e308 px
+        QVERIFY2(error.contains("beyond"), qPrintable(error));
         QVERIFY(!FloorCalibration::fromJson("nonsense", &error));
         QVERIFY(error.contains("not valid JSON"));
         QTemporaryDir dir;
@@ -71,6 +92,15 @@ class TestLedTracker : public QObject {
         QVERIFY(FloorCalibration::load(dir.filePath("cal.json"), &error));
         QVERIFY(!FloorCalibration::load(dir.filePath("missing.json"), &error));
         QVERIFY(error.contains("missing.json"));
+        QVERIFY(!FloorCalibration::load(QStringLiteral("/dev/zero"), &error));  // never ends
+        QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+        {
+            const FileSizeLimit full(64);  // a full disk: refused, the saved file kept
+            QVERIFY(full.active());
+            QVERIFY(!camera.save(dir.filePath("cal.json"), &error));
+            QVERIFY2(error.contains("cal.json"), qPrintable(error));
+        }
+        QVERIFY(FloorCalibration::load(dir.filePath("cal.json"), &error));
     }
 
     void tracker_recoversPosesTo5MillimetresAnd1Degree() {

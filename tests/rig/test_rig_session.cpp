@@ -5,6 +5,7 @@
 
 #include "core/ActionMapping.h"
 #include "core/DemonstrationCsv.h"
+#include "core/DemonstrationStream.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantProfile.h"
@@ -167,7 +168,9 @@ class TestRigSession : public QObject {
         QVERIFY2(rig.startRecording(car.profile.info, path, &error), qPrintable(error));
         QVERIFY(rig.recording());
         QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd")), &error));  // not while driving
-        QVERIFY(QFile::exists(path));  // the header is on disk at once
+        // The header is on disk at once, under the partial name until the take ends.
+        QVERIFY(QFile::exists(core::DemonstrationStream::partPath(path)));
+        QVERIFY(!QFile::exists(path));
         qRegisterMetaType<rig::RigRecording>();
         QSignalSpy done(&rig, &rig::RigSession::recordingFinished);
         // Full throttle until the camera has seen 30 frames more.
@@ -186,7 +189,7 @@ class TestRigSession : public QObject {
         const core::Demonstration& demo = *recording.demonstration;
         QCOMPARE(recording.path, path);
         QVERIFY(demo.length() >= 20);
-        // The median frame interval of a 40 fps camera.
+        // The frame period of a 40 fps camera.
         QVERIFY2(std::abs(demo.dt - 1.0 / kFps) < 0.1 / kFps, qPrintable(QString::number(demo.dt)));
         QVERIFY(demo.actions.col(0).maxCoeff() > 0.99);
         QVERIFY(demo.states(demo.length() - 1, 0) - demo.states(0, 0) > 0.05);  // it drove off
@@ -195,6 +198,7 @@ class TestRigSession : public QObject {
         QVERIFY2(onDisk, qPrintable(readError.toString()));
         QCOMPARE(onDisk->length(), demo.length());
         QCOMPARE(onDisk->dt, demo.dt);
+        QVERIFY(!QFile::exists(core::DemonstrationStream::partPath(path)));
     }
 
     void destroyedWhileRecording_keepsTheTakeOnDisk() {
@@ -210,7 +214,8 @@ class TestRigSession : public QObject {
             QVERIFY(QTest::qWaitFor([&] { return rig.framesSeen() > start + 12; }, 10000));
         }  // no stopRecording(): the session goes while the take runs
         core::FileError error;
-        const auto kept = core::readDemonstrationCsv(path, &error);
+        const auto kept =
+            core::readDemonstrationCsv(core::DemonstrationStream::partPath(path), &error);
         QVERIFY2(kept, qPrintable(error.toString()));
         QVERIFY(kept->length() >= 10);
     }
