@@ -97,7 +97,8 @@ bool DemonstrationStream::append(double time, const Eigen::VectorXd& state,
     lastTime_ = time;
     lastState_ = state;
     lastAction_ = action;
-    if (sinceFlush_.isValid() && sinceFlush_.elapsed() < flushIntervalMs_) {
+    // The first row at once, so the file is a demonstration from the first sample on.
+    if (rows() > 1 && sinceFlush_.isValid() && sinceFlush_.elapsed() < flushIntervalMs_) {
         return true;
     }
     return flush(error);

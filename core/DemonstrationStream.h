@@ -21,7 +21,8 @@ namespace prisca::core {
 /// one applied at t_k (the last sample at or before it). So a gap keeps its length in time.
 ///
 /// Crash safety: the rows go to partPath(path), whose header is written and flushed when it
-/// opens; rows are flushed at least every `flushIntervalMs` of wall time, so a crash or a kill
+/// opens, the first row with its sample; rows are flushed at least every `flushIntervalMs` of
+/// wall time, so a crash or a kill
 /// loses at most that much of the take and never the header, and what is left is a readable
 /// demonstration. finish() renames the partial file onto `path` in one step, so an older file
 /// there is either kept whole or replaced whole. Not thread-safe; one thread at a time.

@@ -1,14 +1,62 @@
 #include "RunLogCsv.h"
 
+#include "DemonstrationCsvText.h"
+
 namespace prisca::core {
 
-QByteArray formatRunLogCsv(const RunLog& log, QString* problem) {
+namespace {
+
+// Why a "# key: value" line's text would not survive, or empty if it would.
+QString lineProblem(const QString& text) {
+    for (const QChar c : text) {
+        if (c.unicode() < 0x20 || c.unicode() == 0x7f) {
+            return QStringLiteral("contains a control character");
+        }
+    }
+    return {};
+}
+
+// The first reason the log cannot be written as the format says, or empty.
+QString logProblem(const RunLog& log) {
     if (log.columns.size() != log.rows.cols() || log.units.size() != log.columns.size()) {
+        return QStringLiteral("%1 columns, %2 units and %3 values per row disagree")
+            .arg(log.columns.size())
+            .arg(log.units.size())
+            .arg(log.rows.cols());
+    }
+    using csvtext::quoted;
+    for (const auto& [what, text] : {std::pair{"plant", log.plant}, {"method", log.method}}) {
+        if (const QString why = lineProblem(text); !why.isEmpty()) {
+            return QStringLiteral("the %1 %2 %3").arg(what, quoted(text), why);
+        }
+    }
+    for (auto it = log.metadata.cbegin(); it != log.metadata.cend(); ++it) {
+        QString why = lineProblem(it.key() + it.value());
+        if (why.isEmpty() && (it.key().isEmpty() || it.key().contains(QLatin1Char(':')))) {
+            why = QStringLiteral("needs a key without ':'");
+        }
+        if (!why.isEmpty()) {
+            return QStringLiteral("the metadata line %1 %2").arg(quoted(it.key()), why);
+        }
+    }
+    for (int c = 0; c < log.columns.size(); ++c) {
+        if (const QString why = csvtext::nameProblem(log.columns[c]); !why.isEmpty()) {
+            return QStringLiteral("column %1 %2 %3").arg(c + 1).arg(quoted(log.columns[c]), why);
+        }
+        if (const QString why = csvtext::unitProblem(log.units[c]); !why.isEmpty()) {
+            return QStringLiteral("the unit %1 of column %2 %3")
+                .arg(quoted(log.units[c]), quoted(log.columns[c]), why);
+        }
+    }
+    return {};
+}
+
+}  // namespace
+
+QByteArray formatRunLogCsv(const RunLog& log, QString* problem) {
+    if (const QString why = logProblem(log); !why.isEmpty()) {
         if (problem) {
-            *problem = QStringLiteral("%1 columns, %2 units and %3 values per row disagree")
-                           .arg(log.columns.size())
-                           .arg(log.units.size())
-                           .arg(log.rows.cols());
+            *problem = why;
         }
         return {};
     }

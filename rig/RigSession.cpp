@@ -438,6 +438,11 @@ bool RigSession::recording() const {
     return loop_->recording;
 }
 
+double RigSession::recordedSeconds() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->recording ? loop_->lastTime : -1.0;
+}
+
 void RigSession::stopRecording() {
     {
         std::lock_guard<std::mutex> lock(mutex_);

@@ -147,6 +147,9 @@ class RigSession : public QObject {
     /// Ends the recording; recordingFinished() follows once the take is resampled and written.
     void stopRecording();
     bool recording() const;
+    /// How long the take being recorded is so far [s, the frames' clock, from its first frame
+    /// with a pose]: its newest sample, handed to the writer; -1 before the first.
+    double recordedSeconds() const;
 
     /// E-STOP: failsafe on the link (latched until reset), the trial and recording end.
     void emergencyStop();

@@ -50,13 +50,18 @@ class TestDemonstrationStream : public QObject {
         QVERIFY(contents(part).startsWith("# prisca-demonstration 1\n"));
         QVERIFY(!QFile::exists(path));  // the final name only once the take ends
         const int headerSize = contents(part).size();
-        for (int k = 0; k < 4; ++k) {
+        QVERIFY(stream.append(0.0, Eigen::Vector2d(0.0, 1.0), Eigen::VectorXd::Constant(1, 0.5),
+                              &error));
+        const int firstRowSize = contents(part).size();  // the first row at once
+        QVERIFY(firstRowSize > headerSize);
+        QVERIFY(readDemonstrationCsv(part, nullptr));  // a demonstration from the first sample on
+        for (int k = 1; k < 4; ++k) {
             QVERIFY(stream.append(k * 0.025, Eigen::Vector2d(0.1 * k, 1.0),
                                   Eigen::VectorXd::Constant(1, 0.5), &error));
         }
-        QCOMPARE(contents(part).size(), headerSize);  // pending until a flush
+        QCOMPARE(contents(part).size(), firstRowSize);  // pending until a flush
         QVERIFY(stream.flush(&error));
-        QVERIFY(contents(part).size() > headerSize);
+        QVERIFY(contents(part).size() > firstRowSize);
         QVERIFY2(stream.finish(&error), qPrintable(error));
         QVERIFY(!QFile::exists(part));
         FileError readError;
