@@ -1,5 +1,7 @@
 #include "devices/CameraWorker.h"
 
+#include "devices/ThreadPriority.h"
+
 #include <QMetaObject>
 
 namespace prisca::devices {
@@ -14,6 +16,8 @@ Camera::Camera(QObject* parent) : QObject(parent), context_(new QObject) {
     context_->moveToThread(&thread_);
     connect(&thread_, &QThread::finished, context_, &QObject::deleteLater);
     thread_.start();
+    // Frames are tracked and the loop stepped on this thread: ahead of other programs' work.
+    QMetaObject::invokeMethod(context_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
 }
 
 Camera::~Camera() {

@@ -1,5 +1,7 @@
 #include "devices/TransmitterLink.h"
 
+#include "devices/ThreadPriority.h"
+
 #include <QLoggingCategory>
 #include <QMetaObject>
 #include <QSerialPort>
@@ -52,6 +54,8 @@ TransmitterLink::TransmitterLink(QObject* parent)
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
     thread_.start();
+    // Frames are written on this thread: ahead of other programs' work.
+    QMetaObject::invokeMethod(worker_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
 }
 
 TransmitterLink::~TransmitterLink() {

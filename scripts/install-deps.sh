@@ -12,6 +12,10 @@ packages=(
     xvfb xauth
     qt6-svg-dev qt6-translations-l10n fonts-noto-cjk
 )
+# make fuzz: clang with libFuzzer and its sanitizer runtimes.
+if [ "${1:-}" = "fuzz" ]; then
+    packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

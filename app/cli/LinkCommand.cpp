@@ -81,8 +81,10 @@ int linkCommand(const QStringList& arguments) {
             break;  // the port never opened: say why below
         }
     }
-    link.emergencyStop();  // the last frames out are failsafe
+    const long long beforeFailsafe = link.framesSent();
+    link.emergencyStop();  // the last frames out are failsafe, if the port is there to take them
     QThread::msleep(static_cast<unsigned long>(std::ceil(2000.0 / settings.rateHz)));
+    const long long failsafeFrames = link.framesSent() - beforeFailsafe;
     link.stop();
     QCoreApplication::processEvents();
     const long long frames = link.framesSent();
@@ -98,14 +100,23 @@ int linkCommand(const QStringList& arguments) {
                    {"framesSent", static_cast<double>(frames)},
                    {"seconds", seconds},
                    {"rateHz", frames / std::max(seconds, 1e-9)},
+                   {"failsafeFramesAtEnd", static_cast<double>(failsafeFrames)},
                    {"lastError", status.lastError}});
     } else {
-        printText(QStringLiteral("%1 on %2: %3 frames in %4 s (%5 per second), ending in "
-                                 "failsafe%6\n")
+        // Only frames that went out can be failsafe: with the port gone (unplugged) the receiver
+        // falls back to its own failsafe when frames stop.
+        const QString ending =
+            failsafeFrames > 0
+                ? QStringLiteral("ending in failsafe (%1 frames)").arg(failsafeFrames)
+                : QStringLiteral("no failsafe frame could go out at the end (the port was "
+                                 "gone); the receiver's own failsafe takes over when frames "
+                                 "stop");
+        printText(QStringLiteral("%1 on %2: %3 frames in %4 s (%5 per second), %6%7\n")
                       .arg(devices::protocolName(settings.protocol), settings.port)
                       .arg(frames)
                       .arg(seconds, 0, 'f', 2)
                       .arg(frames / std::max(seconds, 1e-9), 0, 'f', 1)
+                      .arg(ending)
                       .arg(status.lastError.isEmpty()
                                ? QString()
                                : QStringLiteral("; last error: %1").arg(status.lastError)));

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds and runs every fuzz target of tests/fuzz for the given number of seconds each, one after
+# the other, from the corpus in the tree; prints the inputs run and what was found per target.
+# Usage: scripts/run-fuzz.sh SECONDS   (make fuzz FUZZ_SECONDS=N)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+targets=(demonstration_csv run_log session_json calibration_json rc_decoder)
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+export QT_QPA_PLATFORM=offscreen
+status=0
+printf '%-20s %12s %10s %s\n' target inputs seconds findings
+for t in "${targets[@]}"; do
+    corpus=build-fuzz/corpus/$t
+    artifacts=build-fuzz/findings/$t/
+    mkdir -p "$corpus" "$artifacts"
+    log=build-fuzz/fuzz-$t.log
+    if ./build-fuzz/tests/fuzz/fuzz_$t -max_total_time="$seconds" -print_final_stats=1 \
+        -max_len=65536 -timeout=10 -rss_limit_mb=4096 -artifact_prefix="$artifacts" \
+        "$corpus" "tests/fuzz/corpus/$t" >"$log" 2>&1; then
+        found=0
+    else
+        found=1
+        status=1
+    fi
+    runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+    findings=$(find "$artifacts" -type f | wc -l)
+    printf '%-20s %12s %10s %s\n' "$t" "$runs" "$seconds" \
+        "$([ "$found" = 0 ] && echo "0 crashes" || echo "FOUND $findings: see $log, $artifacts")"
+done
+exit $status
