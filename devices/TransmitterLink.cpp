@@ -55,7 +55,8 @@ TransmitterLink::TransmitterLink(QObject* parent)
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
     thread_.start();
     // Frames are written on this thread: ahead of other programs' work.
-    QMetaObject::invokeMethod(worker_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
 }
 
 TransmitterLink::~TransmitterLink() {
@@ -277,6 +278,17 @@ void TransmitterLinkWorker::tick() {
     if (port_->write(frame) != frame.size()) {
         closePort(port_->errorString());
         return;
+    }
+    // Into the device now: a port that is gone (unplugged, the far end of a pty closed) fails
+    // here, and a frame is counted as sent only once the device has taken it, so "ending in
+    // failsafe" is said only when failsafe frames really went out.
+    port_->flush();
+    if (port_->error() != QSerialPort::NoError && port_->error() != QSerialPort::TimeoutError) {
+        closePort(port_->errorString());
+        return;
+    }
+    if (port_->bytesToWrite() > 0) {
+        return;  // the device is not taking bytes as fast as they come: not sent (yet)
     }
     framesSent.fetch_add(1);
     if (!failsafe) {

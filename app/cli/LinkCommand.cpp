@@ -108,9 +108,10 @@ int linkCommand(const QStringList& arguments) {
         const QString ending =
             failsafeFrames > 0
                 ? QStringLiteral("ending in failsafe (%1 frames)").arg(failsafeFrames)
-                : QStringLiteral("no failsafe frame could go out at the end (the port was "
-                                 "gone); the receiver's own failsafe takes over when frames "
-                                 "stop");
+                : QStringLiteral(
+                      "no failsafe frame could go out at the end (the port was "
+                      "gone); the receiver's own failsafe takes over when frames "
+                      "stop");
         printText(QStringLiteral("%1 on %2: %3 frames in %4 s (%5 per second), %6%7\n")
                       .arg(devices::protocolName(settings.protocol), settings.port)
                       .arg(frames)

@@ -1,5 +1,6 @@
 // prisca-cli simulate, demo, fit and run end to end on real files, and every bad-input path:
 // one line on stderr naming the problem, exit code 2, nothing written.
+#include <QElapsedTimer>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,6 +16,7 @@
 #include <pty.h>
 #include <termios.h>
 #include <unistd.h>
+#include <csignal>
 
 namespace {
 
@@ -401,6 +403,102 @@ class TestCliCommands : public QObject {
         QCOMPARE(static_cast<unsigned char>(received[last + 23]) & 0x08, 0x08);
     }
 
+    // The link ended by a signal: SIGTERM and SIGINT send failsafe frames before exiting and say
+    // so; unplugged first, it says no failsafe frame could go out; SIGKILL leaves the last
+    // command as the last frame and silence after it (the receiver's own failsafe then acts).
+    void link_endedBySignals_data() {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<bool>("unplugFirst");
+        QTest::newRow("SIGTERM") << int(SIGTERM) << false;
+        QTest::newRow("SIGINT") << int(SIGINT) << false;
+        QTest::newRow("SIGTERM while unplugged") << int(SIGTERM) << true;
+        QTest::newRow("SIGKILL") << int(SIGKILL) << false;
+    }
+
+    void link_endedBySignals() {
+        QFETCH(int, signal);
+        QFETCH(bool, unplugFirst);
+        int master = -1, slave = -1;
+        char name[256] = {};
+        termios raw{};
+        cfmakeraw(&raw);
+        QCOMPARE(openpty(&master, &slave, name, &raw, nullptr), 0);
+        fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+        // Not inherited by the CLI: an unplug must close the far end for good.
+        fcntl(master, F_SETFD, FD_CLOEXEC);
+        fcntl(slave, F_SETFD, FD_CLOEXEC);
+        QTemporaryDir ports;
+        const QString port = ports.filePath("ttyRC");  // a stable path, as udev gives
+        QVERIFY(QFile::link(QString::fromLocal8Bit(name), port));
+        QProcess process;
+        process.start(QStringLiteral(PRISCA_CLI),
+                      {"link", "--port", port, "--protocol", "sbus", "--channels", "1400,1500,1700",
+                       "--duration", "600"});
+        QByteArray received;
+        char buffer[4096];
+        const auto drain = [&] {
+            for (ssize_t n; (n = ::read(master, buffer, sizeof buffer)) > 0;) {
+                received.append(buffer, static_cast<int>(n));
+            }
+        };
+        // Wait on the frames themselves: ten of them.
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                drain();
+                return received.size() >= 250;
+            },
+            30000));
+        if (unplugFirst) {
+            ::close(master);
+            ::close(slave);
+            QFile::remove(port);  // the device node goes with the cable
+        }
+        QElapsedTimer sinceSignal;
+        sinceSignal.start();
+        ::kill(static_cast<pid_t>(process.processId()), signal);
+        qint64 lastByteMs = -1;
+        while (!process.waitForFinished(5)) {
+            if (!unplugFirst) {
+                const qsizetype before = received.size();
+                drain();
+                if (received.size() > before) {
+                    lastByteMs = sinceSignal.elapsed();
+                }
+            }
+        }
+        if (!unplugFirst) {
+            drain();
+            ::close(master);
+            ::close(slave);
+        }
+        const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
+        if (signal == SIGKILL) {
+            QCOMPARE(process.exitStatus(), QProcess::CrashExit);
+            // The last whole frame is the command, not failsafe: nothing ran after the kill.
+            const qsizetype last = received.lastIndexOf('\x0f', received.size() - 25);
+            QVERIFY(last >= 0);
+            QCOMPARE(static_cast<unsigned char>(received[last + 23]) & 0x08, 0);  // no failsafe
+            if (lastByteMs < 0) {
+                qInfo("SIGKILL: no byte after the signal, silence from then on");
+            } else {
+                qInfo("SIGKILL: the last bytes %lld ms after the signal, then silence",
+                      static_cast<long long>(lastByteMs));
+            }
+            return;
+        }
+        QCOMPARE(process.exitCode(), 130);
+        if (unplugFirst) {
+            QVERIFY2(out.contains("no failsafe frame could go out"), qPrintable(out));
+            return;
+        }
+        QVERIFY2(out.contains("ending in failsafe"), qPrintable(out));
+        // The last frame on the wire carries SBUS's failsafe flag.
+        const qsizetype last = received.size() - 25;
+        QCOMPARE(static_cast<unsigned char>(received[last]), 0x0f);
+        QVERIFY2(static_cast<unsigned char>(received[last + 23]) & 0x08,
+                 "the last frame is not failsafe");
+    }
+
     void link_badInputGivesOneLineAndExitTwo() {
         CliResult r = cli({"link", "--port", "/dev/null", "--channels", "1500,abc"});
         QCOMPARE(r.exitCode, 2);
@@ -782,7 +880,14 @@ class TestCliCommands : public QObject {
                       {"table1", "--trials", "100000", "--training-trials", "0", "--methods", "pd",
                        "--jobs", "1"});
         QVERIFY(process.waitForStarted());
-        QTest::qWait(1500);
+        // Interrupt once some trials have finished (its progress line says so).
+        QByteArray progress;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                progress += process.readAllStandardError();
+                return progress.contains("table1: ");
+            },
+            60000));
         process.terminate();  // SIGTERM, handled like Ctrl-C
         QVERIFY(process.waitForFinished(60000));
         QCOMPARE(process.exitCode(), 130);

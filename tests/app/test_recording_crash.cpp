@@ -55,7 +55,7 @@ class TestRecordingCrash : public QObject {
         QCOMPARE(child.state(), QProcess::Running);
         child.kill();  // SIGKILL: no handler, no flush, no destructor runs
         QVERIFY(child.waitForFinished(30000));
-        readReports();  // what it printed up to the kill
+        readReports();                  // what it printed up to the kill
         QVERIFY(!QFile::exists(path));  // the final name only for a finished take
         core::FileError error;
         const auto take =
@@ -63,8 +63,8 @@ class TestRecordingCrash : public QObject {
         QVERIFY2(take, qPrintable(error.toString()));
         const double recorded = (take->length() - 1) * take->dt;
         const double lost = elapsed - recorded;
-        qInfo("%s killed at %.3f s: %d rows on disk, last at %.3f s, %.3f s lost",
-              qPrintable(mode), elapsed, take->length(), recorded, lost);
+        qInfo("%s killed at %.3f s: %d rows on disk, last at %.3f s, %.3f s lost", qPrintable(mode),
+              elapsed, take->length(), recorded, lost);
         QVERIFY2(lost <= 0.5, qPrintable(QString::number(lost)));
     }
 };

@@ -48,8 +48,7 @@ int main(int argc, char** argv) {
             "virtual rig, camera frame -> serial bytes written, %s (%zu frames): median %.2f ms, "
             "95th percentile %.2f ms, 99th percentile %.2f ms, worst %.2f ms\n",
             condition, latency.size(), latency[latency.size() / 2],
-            latency[latency.size() * 95 / 100], latency[latency.size() * 99 / 100],
-            latency.back());
+            latency[latency.size() * 95 / 100], latency[latency.size() * 99 / 100], latency.back());
         std::fflush(stdout);
     };
     std::printf("loop and link threads at raised priority: %s\n",

@@ -29,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     RunLog log;
     log.plant = text(4);
     log.method = text(4);
-    std::memcpy(&log.dt, data + std::min(at, size), std::min<std::size_t>(8, size - std::min(at, size)));
+    std::memcpy(&log.dt, data + std::min(at, size),
+                std::min<std::size_t>(8, size - std::min(at, size)));
     at = std::min(at + 8, size);
     for (int c = 0; c < columns; ++c) {
         log.columns << text(3);

@@ -26,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(session->demonstration() != nullptr);
     FUZZ_CHECK(session->task().fit.b.allFinite());
     // Put back the state every input starts from, so inputs do not depend on each other.
-    if (session->plant() != QLatin1String("slidecar") || !session->demonstrationSource().isEmpty()) {
+    if (session->plant() != QLatin1String("slidecar") ||
+        !session->demonstrationSource().isEmpty()) {
         session->setPlant(QStringLiteral("slidecar"));
     }
     return 0;
