@@ -10,6 +10,9 @@
 
 #include <QCoreApplication>
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -59,6 +62,9 @@ int main(int argc, char** argv) {
     std::vector<std::thread> busy;
     for (unsigned i = 0; i < std::max(1u, std::thread::hardware_concurrency()); ++i) {
         busy.emplace_back([&stop] {
+            // Ordinary work: not the real-time policy this thread would inherit from ours.
+            sched_param normal{};
+            pthread_setschedparam(pthread_self(), SCHED_OTHER, &normal);
             volatile unsigned long spin = 0;
             while (!stop.load(std::memory_order_relaxed)) {
                 spin = spin + 1;
