@@ -274,6 +274,9 @@ bool DemonstrationParser::readEntries(const KnownLine& declaration, const QStrin
                 return bad(QStringLiteral("has a '[' inside its unit"));
             }
             unit = toQString(unitText);
+            if (const QString problem = unitProblem(unit); !problem.isEmpty()) {
+                return bad(QStringLiteral("has a unit that ") + problem);
+            }
         } else if (entry.find(']') != Text::npos) {
             return bad(QStringLiteral("has a ']' without an opening '['"));
         }

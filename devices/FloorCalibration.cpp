@@ -93,11 +93,9 @@ QString FloorCalibration::homographyProblem() const {
     if (std::abs(cv::determinant(h)) < 1e-12) {
         return QStringLiteral("is singular (it folds the image onto a line)");
     }
-    // The image it must map: the calibration points' extent, or a VGA frame without points.
+    // The image it must map: a VGA frame and the calibration points' extent.
     double u0 = 0.0, v0 = 0.0, u1 = 640.0, v1 = 480.0;
-    if (!points.empty()) {
-        u0 = u1 = points.front().image.x;
-        v0 = v1 = points.front().image.y;
+    {
         for (const CalibrationPoint& p : points) {
             u0 = std::min(u0, p.image.x);
             u1 = std::max(u1, p.image.x);

@@ -35,7 +35,7 @@ struct FloorCalibration {
     /// is only a corrupt file.
     static constexpr double kMaxFloorMetres = 1000.0;
     /// Empty when imageToFloor is a homography a ceiling camera can have: finite, not singular,
-    /// the image (the points' extent, a 640 x 480 frame without points) on one side of the
+    /// the image (a 640 x 480 frame and the points' extent) on one side of the
     /// horizon and mapped within kMaxFloorMetres; else what is wrong, for a message.
     QString homographyProblem() const;
 

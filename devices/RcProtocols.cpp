@@ -188,9 +188,28 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
                                 ? frame[0] == kSbusHeader && frame[24] == 0x00
                                 : (frame[0] == 0x55 || frame[0] == 0x54);
             if (!ok) {
+                locked_ = false;
                 ++start;
                 ++skipped_;
                 continue;
+            }
+            // SBUS and Multiprotocol carry no checksum: a header byte in garbage (or in a frame's
+            // channel bytes) would start a false frame and hide the real ones after it. So the
+            // first frame is taken only when the next one starts right after it; from then on
+            // the stream is in step and every frame is taken as it comes.
+            if (!locked_) {
+                if (available < size + 1) {
+                    break;  // wait for the next frame's first byte
+                }
+                const std::uint8_t next = frame[size];
+                const bool nextOk = protocol_ == RcProtocol::Sbus ? next == kSbusHeader
+                                                                  : (next == 0x55 || next == 0x54);
+                if (!nextOk) {
+                    ++start;
+                    ++skipped_;
+                    continue;
+                }
+                locked_ = true;
             }
             if (protocol_ == RcProtocol::Sbus) {
                 lastFailsafe_ = (frame[23] & 0x08) != 0;

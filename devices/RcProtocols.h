@@ -71,7 +71,8 @@ struct MultiprotocolHeader {
 QByteArray encodeMultiprotocol(const ChannelValues& values, const MultiprotocolHeader& header);
 
 /// Finds protocol frames in a byte stream (the far end of a link in tests and the virtual rig).
-/// Garbage between frames is skipped; a CRSF frame with a bad CRC is dropped. Never throws.
+/// Garbage between frames is skipped; a CRSF frame with a bad CRC is dropped; SBUS and
+/// Multiprotocol frames (no checksum) are taken once two start back to back. Never throws.
 class RcFrameDecoder {
   public:
     explicit RcFrameDecoder(RcProtocol protocol) : protocol_(protocol) {}
@@ -87,6 +88,7 @@ class RcFrameDecoder {
     QByteArray buffer_;
     long long skipped_ = 0;
     bool lastFailsafe_ = false;
+    bool locked_ = false;  ///< SBUS, Multiprotocol: in step with the frames
 };
 
 }  // namespace prisca::devices

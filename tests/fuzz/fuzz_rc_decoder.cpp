@@ -1,6 +1,6 @@
 // The transmitter protocols' frame decoders on arbitrary byte streams (the first byte picks the
 // protocol): they never crash, keep their buffer bounded, and every frame they return carries
-// channel values the protocol can encode. A valid frame after the garbage is always found.
+// channel values the protocol can encode. Valid frames after the garbage are always found.
 #include "FuzzTarget.h"
 
 #include "devices/RcProtocols.h"
@@ -34,8 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     QByteArray frame = protocol == RcProtocol::Crsf   ? encodeCrsf(sent)
                        : protocol == RcProtocol::Sbus ? encodeSbus(sent)
                                                       : encodeMultiprotocol(sent, {});
-    // Two copies: the first may be taken as the tail of a frame the garbage began.
-    const auto frames = decoder.push(frame + frame);
+    // Four copies: garbage may begin a false frame that takes up to 64 bytes to rule out.
+    const auto frames = decoder.push(frame + frame + frame + frame);
     FUZZ_CHECK(!frames.empty());
     FUZZ_CHECK(frames.back() == sent);
     return 0;
