@@ -1,5 +1,6 @@
 #include "devices/LedTracker.h"
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -7,6 +8,12 @@
 #include <limits>
 
 namespace prisca::devices {
+
+LedTracker::LedTracker(TrackerSettings settings) : settings_(settings) {
+    // One thread: a frame takes a few tenths of a millisecond on its own, and OpenCV's pool would
+    // wake other threads every frame (which would inherit the loop thread's real-time priority).
+    cv::setNumThreads(1);
+}
 
 namespace {
 

@@ -48,7 +48,7 @@ struct TrackResult {
 /// Not thread-safe; one per camera.
 class LedTracker {
   public:
-    explicit LedTracker(TrackerSettings settings = {}) : settings_(settings) {}
+    explicit LedTracker(TrackerSettings settings = {});
     /// `frame` is 8-bit grey (or BGR, converted).
     TrackResult track(const cv::Mat& frame, const FloorCalibration& calibration);
     /// Forget the lock (a new run, a jump).
