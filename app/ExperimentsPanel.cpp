@@ -135,7 +135,6 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
 
     thread_.setObjectName(QStringLiteral("prisca-experiments"));
     worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &ExperimentWorker::progress, this,
             [this](int done, int total, const QString& text) {
                 if (total > 0) {
@@ -167,6 +166,11 @@ ExperimentsPanel::~ExperimentsPanel() {
     worker_->cancel();
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (thread_.isFinished()) {
+        delete worker_;
+    }
 }
 
 void ExperimentsPanel::start() {

@@ -80,7 +80,6 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
 
     thread_.setObjectName(QStringLiteral("prisca-record"));
     worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &RecordingWorker::samplesReady, this, &RecordPanel::samplesReady);
     connect(worker_, &RecordingWorker::finished, this, &RecordPanel::finished);
     connect(worker_, &RecordingWorker::failed, this, [this](const QString& message) {
@@ -115,6 +114,11 @@ RecordPanel::~RecordPanel() {
     worker_->requestStop();
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (thread_.isFinished()) {
+        delete worker_;
+    }
 }
 
 const Eigen::VectorXd& RecordPanel::input() const {

@@ -17,7 +17,6 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
     qRegisterMetaType<sim::TrialSummary>();
     thread_.setObjectName(QStringLiteral("prisca-run"));
     worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &RunWorker::samplesReady, this, &RunController::samplesReady);
     connect(worker_, &RunWorker::phaseChanged, this, [this](RunPhase phase) {
         phase_ = phase;
@@ -40,6 +39,11 @@ RunController::~RunController() {
     QMetaObject::invokeMethod(worker_, &RunWorker::stop, Qt::QueuedConnection);
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (thread_.isFinished()) {
+        delete worker_;
+    }
 }
 
 void RunController::start(const RunRequest& request) {

@@ -14,7 +14,6 @@ Camera::Camera(QObject* parent) : QObject(parent), context_(new QObject) {
     qRegisterMetaType<CameraFrame>();
     thread_.setObjectName(QStringLiteral("prisca-camera"));
     context_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, context_, &QObject::deleteLater);
     thread_.start();
     // Frames are tracked and the loop stepped on this thread: ahead of other programs' work.
     QMetaObject::invokeMethod(context_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
@@ -24,6 +23,11 @@ Camera::~Camera() {
     stop();
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (thread_.isFinished()) {
+        delete context_;
+    }
 }
 
 void Camera::setConsumer(std::function<void(const CameraFrame&)> consumer) {

@@ -51,7 +51,6 @@ TransmitterLink::TransmitterLink(QObject* parent)
     qRegisterMetaType<LinkStatus>();
     thread_.setObjectName(QStringLiteral("prisca-link"));
     worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
     thread_.start();
     // Frames are written on this thread: ahead of other programs' work.
@@ -65,6 +64,11 @@ TransmitterLink::~TransmitterLink() {
     QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::BlockingQueuedConnection);
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (thread_.isFinished()) {
+        delete worker_;
+    }
 }
 
 void TransmitterLink::start(const LinkSettings& settings) {

@@ -62,7 +62,6 @@ RigSession::RigSession(QObject* parent)
     qRegisterMetaType<std::optional<devices::PlanarPose>>();
     workerThread_.setObjectName(QStringLiteral("prisca-rig"));
     worker_->moveToThread(&workerThread_);
-    connect(&workerThread_, &QThread::finished, worker_, &QObject::deleteLater);
     workerThread_.start();
 
     // Until the operator calibrates, the synthetic camera's own calibration.
@@ -108,6 +107,11 @@ RigSession::~RigSession() {
         Qt::BlockingQueuedConnection);
     workerThread_.quit();
     workerThread_.wait(kShutdownWaitMs);
+    // Deleted here, after its thread has ended (so every write it made is ordered before this,
+    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
+    if (workerThread_.isFinished()) {
+        delete worker_;
+    }
     link_.stop();
 }
 
