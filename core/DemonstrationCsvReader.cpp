@@ -207,8 +207,17 @@ bool DemonstrationParser::readMetadata() {
             }
         }
         if (!known) {
-            metadata_.insert(toQString(key), toQString(value));
+            const QString keyText = toQString(key), valueText = toQString(value);
+            if (const QString problem = metadataProblem(keyText, valueText); !problem.isEmpty()) {
+                return fail(cursor_.number(), 0, problem);
+            }
+            metadata_.insert(keyText, valueText);
             continue;
+        }
+        if (hasLineBreak(toQString(value))) {
+            return fail(cursor_.number(), 0,
+                        QStringLiteral("the '# %1:' line contains a NUL or a carriage return")
+                            .arg(toQString(key)));
         }
         if (known->line != 0) {
             return fail(cursor_.number(), 0,

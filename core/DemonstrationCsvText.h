@@ -152,4 +152,31 @@ inline QString unitProblem(const QString& unit) {
 // Keys of the "# key: value" lines the reader interprets itself (not free metadata).
 inline const char* const kReservedKeys[] = {"plant", "dt", "states", "actions"};
 
+// Why a "# key: value" metadata line would not be written back as read, or empty if it would.
+// The writer refuses such metadata and the reader such lines, so what one accepts the other does.
+inline QString metadataProblem(const QString& key, const QString& value) {
+    if (key.trimmed().isEmpty()) {
+        return QStringLiteral("a metadata key is empty");
+    }
+    if (key.trimmed() != key) {
+        return QStringLiteral("metadata key %1 has spaces at its start or end").arg(quoted(key));
+    }
+    if (key.contains(QLatin1Char(':')) || hasLineBreak(key)) {
+        return QStringLiteral("metadata key %1 contains ':' or a line break").arg(quoted(key));
+    }
+    for (const char* reserved : kReservedKeys) {
+        if (key.compare(QLatin1String(reserved), Qt::CaseInsensitive) == 0) {
+            return QStringLiteral(
+                       "metadata key %1 is reserved for the Demonstration field of "
+                       "that name")
+                .arg(quoted(key));
+        }
+    }
+    if (hasLineBreak(value) || value.trimmed() != value) {
+        return QStringLiteral("metadata value of %1 contains a line break or spaces at its ends")
+            .arg(quoted(key));
+    }
+    return {};
+}
+
 }  // namespace prisca::core::csvtext

@@ -64,27 +64,8 @@ QString checkDemonstrationForCsv(const Demonstration& demo) {
         return QStringLiteral("the plant name %1 contains a line break").arg(quoted(demo.plant));
     }
     for (auto it = demo.metadata.cbegin(); it != demo.metadata.cend(); ++it) {
-        const QString& key = it.key();
-        if (key.trimmed().isEmpty()) {
-            return QStringLiteral("a metadata key is empty");
-        }
-        if (key.trimmed() != key) {
-            return QStringLiteral("metadata key %1 has spaces at its start or end")
-                .arg(quoted(key));
-        }
-        if (key.contains(QLatin1Char(':')) || hasLineBreak(key)) {
-            return QStringLiteral("metadata key %1 contains ':' or a line break").arg(quoted(key));
-        }
-        for (const char* reserved : kReservedKeys) {
-            if (key.compare(QLatin1String(reserved), Qt::CaseInsensitive) == 0) {
-                return QStringLiteral(
-                           "metadata key %1 is reserved for the Demonstration field "
-                           "of that name")
-                    .arg(quoted(key));
-            }
-        }
-        if (hasLineBreak(it.value())) {
-            return QStringLiteral("metadata value of %1 contains a line break").arg(quoted(key));
+        if (const QString problem = metadataProblem(it.key(), it.value()); !problem.isEmpty()) {
+            return problem;
         }
     }
     return {};

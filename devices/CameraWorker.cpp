@@ -16,7 +16,8 @@ Camera::Camera(QObject* parent) : QObject(parent), context_(new QObject) {
     context_->moveToThread(&thread_);
     thread_.start();
     // Frames are tracked and the loop stepped on this thread: ahead of other programs' work.
-    QMetaObject::invokeMethod(context_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        context_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
 }
 
 Camera::~Camera() {
