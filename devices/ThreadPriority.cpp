@@ -1,6 +1,5 @@
 #include "devices/ThreadPriority.h"
 
-#include <pthread.h>
 #include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -9,16 +8,19 @@
 namespace prisca::devices {
 
 bool raiseCurrentThreadPriority() {
-    // Real-time first: a frame's work (a millisecond) then never waits behind other programs'
-    // time slices. The thread sleeps between frames, so it cannot starve the machine.
+    // This thread alone (on Linux a thread is a task with its own id), and never the threads it
+    // starts: SCHED_RESET_ON_FORK gives every task created from it (OpenCV's or a video
+    // decoder's worker pool, whose workers spin while they wait for work) the normal policy and
+    // nice value, so no busy-waiting thread runs ahead of everything else.
+    const auto thread = static_cast<pid_t>(::syscall(SYS_gettid));
     sched_param realtime{};
     realtime.sched_priority = 10;  // low among real-time priorities; the kernel's own run higher
-    if (::pthread_setschedparam(::pthread_self(), SCHED_FIFO, &realtime) == 0) {
+    if (::sched_setscheduler(thread, SCHED_FIFO | SCHED_RESET_ON_FORK, &realtime) == 0) {
         return true;
     }
-    // Else a nice value for this thread alone (on Linux it belongs to the thread's task id).
-    const auto thread = static_cast<id_t>(::syscall(SYS_gettid));
-    return ::setpriority(PRIO_PROCESS, thread, -10) == 0;
+    sched_param normal{};
+    ::sched_setscheduler(thread, SCHED_OTHER | SCHED_RESET_ON_FORK, &normal);
+    return ::setpriority(PRIO_PROCESS, static_cast<id_t>(thread), -10) == 0;
 }
 
 }  // namespace prisca::devices
