@@ -12,7 +12,6 @@
 #include "sim/Table1Experiment.h"
 #include "sim/Table1Protocol.h"
 
-#include <QDir>
 
 #include <cmath>
 

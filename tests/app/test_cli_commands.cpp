@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "devices/PseudoTerminal.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
@@ -418,29 +419,20 @@ class TestCliCommands : public QObject {
     void link_endedBySignals() {
         QFETCH(int, signal);
         QFETCH(bool, unplugFirst);
-        int master = -1, slave = -1;
-        char name[256] = {};
-        termios raw{};
-        cfmakeraw(&raw);
-        QCOMPARE(openpty(&master, &slave, name, &raw, nullptr), 0);
-        fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+        Pty pty;
+        QVERIFY(pty.master >= 0);
         // Not inherited by the CLI: an unplug must close the far end for good.
-        fcntl(master, F_SETFD, FD_CLOEXEC);
-        fcntl(slave, F_SETFD, FD_CLOEXEC);
+        fcntl(pty.master, F_SETFD, FD_CLOEXEC);
+        fcntl(pty.slave, F_SETFD, FD_CLOEXEC);
         QTemporaryDir ports;
         const QString port = ports.filePath("ttyRC");  // a stable path, as udev gives
-        QVERIFY(QFile::link(QString::fromLocal8Bit(name), port));
+        QVERIFY(QFile::link(pty.path, port));
         QProcess process;
         process.start(QStringLiteral(PRISCA_CLI),
                       {"link", "--port", port, "--protocol", "sbus", "--channels", "1400,1500,1700",
                        "--duration", "600"});
         QByteArray received;
-        char buffer[4096];
-        const auto drain = [&] {
-            for (ssize_t n; (n = ::read(master, buffer, sizeof buffer)) > 0;) {
-                received.append(buffer, static_cast<int>(n));
-            }
-        };
+        const auto drain = [&] { received += pty.read(); };
         // Wait on the frames themselves: ten of them.
         QVERIFY(QTest::qWaitFor(
             [&] {
@@ -449,8 +441,7 @@ class TestCliCommands : public QObject {
             },
             30000));
         if (unplugFirst) {
-            ::close(master);
-            ::close(slave);
+            pty.closeAll();
             QFile::remove(port);  // the device node goes with the cable
         }
         QElapsedTimer sinceSignal;
@@ -468,8 +459,7 @@ class TestCliCommands : public QObject {
         }
         if (!unplugFirst) {
             drain();
-            ::close(master);
-            ::close(slave);
+            pty.closeAll();
         }
         const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
         if (signal == SIGKILL) {

@@ -34,6 +34,12 @@ QByteArray contents(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+// An older file where the take is going, which must survive until the take ends.
+bool writeOlderTake(const QString& path) {
+    QFile old(path);
+    return old.open(QIODevice::WriteOnly) && old.write("the older take\n") > 0;
+}
+
 }  // namespace
 
 class TestDemonstrationStream : public QObject {
@@ -136,10 +142,7 @@ class TestDemonstrationStream : public QObject {
     void finishReplacesAnOlderFileWhole_abandonLeavesItAlone() {
         QTemporaryDir dir;
         const QString path = dir.filePath("rec.csv");
-        QFile old(path);
-        QVERIFY(old.open(QIODevice::WriteOnly));
-        old.write("the older take\n");
-        old.close();
+        QVERIFY(writeOlderTake(path));
         QString error;
         {
             DemonstrationStream stream;
@@ -179,10 +182,7 @@ class TestDemonstrationStream : public QObject {
     void aFullDisk_isReportedAndTheOlderFileKept() {
         QTemporaryDir dir;
         const QString path = dir.filePath("rec.csv");
-        QFile old(path);
-        QVERIFY(old.open(QIODevice::WriteOnly));
-        old.write("the older take\n");
-        old.close();
+        QVERIFY(writeOlderTake(path));
         DemonstrationStream stream(0);
         QString error;
         QVERIFY(stream.open(path, header(), kAngles, &error));
