@@ -33,9 +33,7 @@ test: build
 # whose code runs on several threads (link, camera, rig loop and session, virtual rig, GUI runs,
 # recordings). Suppressions name third-party code only (tests/sanitizers/*.supp say why).
 SANITIZER_DIR := $(CURDIR)/tests/sanitizers
-# test_camera is left out for now: under TSan its missing-device case hangs when it runs after
-# the video-file case (alone it passes in 0.2 s; the normal and ASan builds pass it).
-TSAN_TESTS    := test_transmitter_link test_rig_loop test_rig_session \
+TSAN_TESTS    := test_transmitter_link test_camera test_rig_loop test_rig_session \
                  test_virtual_rig test_gui_run test_recording_crash
 check-sanitizers: deps
 	@test -f build-asan/build.ninja || cmake --preset asan

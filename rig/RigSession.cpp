@@ -174,6 +174,13 @@ long long RigSession::virtualFramesDecoded() const {
     return car_ ? car_->framesDecoded() : -1;
 }
 
+std::optional<Eigen::VectorXd> RigSession::virtualReceivedCommand() const {
+    if (!car_) {
+        return std::nullopt;
+    }
+    return car_->receivedCommand();
+}
+
 std::optional<devices::PlanarPose> RigSession::lastPose() const {
     std::lock_guard<std::mutex> lock(poseMutex_);
     return pose_;

@@ -108,6 +108,10 @@ class RigSession : public QObject {
     QString virtualPort() const;
     /// Link frames the virtual car has decoded so far (-1: no virtual car).
     long long virtualFramesDecoded() const;
+    /// The action the virtual car's receiver holds now, from the newest link frame on its line
+    /// (empty: no virtual car). Read after the link has stopped, it is what the car was left
+    /// with: failsafe is neutral.
+    std::optional<Eigen::VectorXd> virtualReceivedCommand() const;
 
     // The floor calibration the tracker uses.
     const devices::FloorCalibration& calibration() const { return calibration_; }

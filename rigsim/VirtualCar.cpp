@@ -18,7 +18,7 @@ VirtualCar::VirtualCar(devices::RcProtocol protocol, devices::ChannelMap channel
       perturbation_(perturbation),
       car_(sim::PlantCatalog::create(QStringLiteral("slidecar"))),
       decoder_(protocol) {
-    reset(seed);
+    resetLocked(seed);
 }
 
 VirtualCar::~VirtualCar() {
@@ -42,6 +42,11 @@ bool VirtualCar::open(QString* error) {
 }
 
 void VirtualCar::reset(std::uint64_t seed) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    resetLocked(seed);
+}
+
+void VirtualCar::resetLocked(std::uint64_t seed) {
     state_ = car_->reset(seed, sim::Perturbation{perturbation_, perturbation_, perturbation_});
     action_ = Eigen::VectorXd::Zero(car_->info().actionDimension());
     time_ = 0.0;
@@ -68,9 +73,16 @@ void VirtualCar::readCommands() {
     }
 }
 
+Eigen::VectorXd VirtualCar::receivedCommand() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    readCommands();
+    return action_;
+}
+
 devices::PlanarPose VirtualCar::poseAt(double t) {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (resetRequested_.exchange(false)) {
-        reset(resetSeed_.load());
+        resetLocked(resetSeed_.load());
         time_ = t;  // the new trial starts now
     }
     readCommands();

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace prisca::rigsim {
@@ -16,7 +17,8 @@ namespace prisca::rigsim {
 /// The far end of a transmitter link with no hardware: a pseudo-terminal whose bytes are
 /// decoded as a car's receiver would, driving a simulated slide-car. The synthetic camera asks
 /// it where the car is (poseAt), which steps the car up to that time with the newest command.
-/// Used by the virtual rig; single-threaded (the camera's thread).
+/// Used by the virtual rig: the camera's thread steps it; receivedCommand() may be called from any
+/// thread once the camera has stopped or while it runs.
 class VirtualCar {
   public:
     VirtualCar(devices::RcProtocol protocol, devices::ChannelMap channels, std::uint64_t seed,
@@ -34,7 +36,11 @@ class VirtualCar {
     devices::PlanarPose poseAt(double t);
     /// Frames decoded from the link so far. Any thread.
     long long framesDecoded() const { return decoded_.load(); }
-    /// Puts the car back at its start (a new trial), with a new seed. Camera thread only.
+    /// What the receiver holds now: reads the bytes waiting on the line (so a link that has
+    /// just sent its last frame and closed is heard) and returns the action [-1, 1] decoded
+    /// from the newest frame (zeros before any frame). Any thread.
+    Eigen::VectorXd receivedCommand();
+    /// Puts the car back at its start (a new trial), with a new seed.
     void reset(std::uint64_t seed);
     /// Any thread: the car goes back to its start at the next poseAt() (a new trial on the
     /// virtual rig while the camera runs).
@@ -44,7 +50,10 @@ class VirtualCar {
     }
 
   private:
-    void readCommands();
+    void readCommands();  ///< under mutex_
+    void resetLocked(std::uint64_t seed);
+
+    mutable std::mutex mutex_;  ///< the line, the decoder, the car (camera thread vs readback)
 
     devices::RcProtocol protocol_;
     devices::ChannelMap channels_;

@@ -8,6 +8,7 @@
 #include "sim/MethodCatalog.h"
 #include "sim/TrialMetrics.h"
 
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -17,6 +18,12 @@
 #include <cmath>
 
 namespace prisca::app::cli {
+
+namespace {
+// A command within two pulse microseconds of centre (of +-512) counts as neutral: the
+// protocols' channel steps are finer (CRSF about 0.6 us).
+constexpr double kNeutralSlack = 2.0 / 512.0;
+}  // namespace
 
 int rigCommand(const QStringList& arguments) {
     CommandLine line(
@@ -130,7 +137,24 @@ int rigCommand(const QStringList& arguments) {
         if (!rig.startTrial(request, &error)) {
             throw UsageError(QStringLiteral("trial %1 could not start: %2").arg(t + 1).arg(error));
         }
-        waitFor([&] { return last.has_value(); }, static_cast<int>((seconds + 30.0) * 1000));
+        // Progress each second of the trial (wall-clock; the trial itself runs on frame time).
+        QElapsedTimer sinceStart;
+        sinceStart.start();
+        int shownSecond = 0;
+        waitFor(
+            [&] {
+                if (const int second = static_cast<int>(sinceStart.elapsed() / 1000);
+                    second > shownSecond && !last) {
+                    shownSecond = second;
+                    printProgress(QStringLiteral("rig: trial %1/%2: %3 of %4 s")
+                                      .arg(t + 1)
+                                      .arg(trials)
+                                      .arg(second)
+                                      .arg(seconds, 0, 'f', 1));
+                }
+                return last.has_value();
+            },
+            static_cast<int>((seconds + 30.0) * 1000));
         if (!last) {
             rig.stopTrial();  // interrupted, the camera failed, or no frames: ends it now
         }
@@ -174,12 +198,31 @@ int rigCommand(const QStringList& arguments) {
         }
     }
     rig.stopCamera();
+    // The link's last frame is failsafe; once it has closed, what the car's receiver holds is
+    // what the car was left with (an interrupt included).
     rig.disconnectLink();
+    const bool closed = waitFor([&] { return !rig.linkStatus().connected; }, 5000);
+    const Eigen::VectorXd held = rig.virtualReceivedCommand().value_or(Eigen::VectorXd());
+    const bool neutral = closed && held.size() > 0 && held.cwiseAbs().maxCoeff() <= kNeutralSlack;
+    QJsonArray heldJson;
+    for (double u : held) {
+        heldJson.append(u);
+    }
     if (line.format() == QLatin1String("json")) {
         printJson(QJsonObject{{"plant", QStringLiteral("slidecar")},
                               {"method", method},
                               {"seed", static_cast<double>(seed)},
-                              {"trials", rows}});
+                              {"trials", rows},
+                              {"receiverLastCommand", heldJson},
+                              {"receiverNeutral", neutral}});
+    } else {
+        QStringList values;
+        for (double u : held) {
+            values << QString::asprintf("%+.3f", u);
+        }
+        printText(QStringLiteral("link closed; the car's receiver holds [%1]: %2\n")
+                      .arg(values.join(", "), neutral ? QStringLiteral("neutral (failsafe)")
+                                                      : QStringLiteral("NOT neutral")));
     }
     return interrupted() ? kExitInterrupted : 0;
 }

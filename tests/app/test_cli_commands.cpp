@@ -17,7 +17,9 @@
 #include <pty.h>
 #include <termios.h>
 #include <unistd.h>
+#include <cmath>
 #include <csignal>
+#include <memory>
 
 namespace {
 
@@ -487,6 +489,95 @@ class TestCliCommands : public QObject {
         QCOMPARE(static_cast<unsigned char>(received[last]), 0x0f);
         QVERIFY2(static_cast<unsigned char>(received[last + 23]) & 0x08,
                  "the last frame is not failsafe");
+    }
+
+    // The cable pulled and put back while prisca-cli link runs: the pty's far end goes away
+    // and a new one appears behind the same path; frames resume on it.
+    void link_resumesAfterUnplugAndReplug() {
+        auto first = std::make_unique<Pty>();
+        QVERIFY(first->master >= 0);
+        fcntl(first->master, F_SETFD, FD_CLOEXEC);
+        fcntl(first->slave, F_SETFD, FD_CLOEXEC);
+        QTemporaryDir ports;
+        const QString port = ports.filePath("ttyRC");
+        QVERIFY(QFile::link(first->path, port));
+        QProcess process;
+        process.start(QStringLiteral(PRISCA_CLI),
+                      {"link", "--port", port, "--protocol", "sbus", "--channels", "1400,1500,1700",
+                       "--duration", "600"});
+        QByteArray received;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                received += first->read();
+                return received.size() >= 250;
+            },
+            30000));
+        first.reset();  // unplugged: the device node goes with the cable
+        QFile::remove(port);
+        Pty second;
+        QVERIFY(second.master >= 0);
+        fcntl(second.master, F_SETFD, FD_CLOEXEC);
+        fcntl(second.slave, F_SETFD, FD_CLOEXEC);
+        QElapsedTimer sincePlug;
+        sincePlug.start();
+        QVERIFY(QFile::link(second.path, port));
+        QByteArray resumed;
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         resumed += second.read();
+                         return resumed.size() >= 250;  // ten frames on the new port
+                     },
+                     30000),
+                 qPrintable(process.readAllStandardError()));
+        qInfo("frames resumed on the replugged port; ten frames %lld ms after the plug",
+              static_cast<long long>(sincePlug.elapsed()));
+        const qsizetype at = resumed.indexOf('\x0f');
+        QVERIFY(at >= 0 && at + 25 <= resumed.size());
+        QCOMPARE(static_cast<unsigned char>(resumed[at + 24]), 0x00);  // an SBUS frame's end
+        ::kill(static_cast<pid_t>(process.processId()), SIGTERM);
+        QVERIFY(process.waitForFinished(30000));
+        QCOMPARE(process.exitCode(), 130);
+    }
+
+    // SIGTERM or SIGINT in the middle of a trial of prisca-cli rig --virtual: the trial ends
+    // stopped, the link's last frames are failsafe, and the car's receiver is left neutral.
+    void rig_endedBySignalLeavesTheCarNeutral_data() {
+        QTest::addColumn<int>("signal");
+        QTest::newRow("SIGTERM") << int(SIGTERM);
+        QTest::newRow("SIGINT") << int(SIGINT);
+    }
+
+    void rig_endedBySignalLeavesTheCarNeutral() {
+        QFETCH(int, signal);
+        QProcess process;
+        process.start(QStringLiteral(PRISCA_CLI),
+                      {"rig", "--virtual", "--trials", "1", "--format", "json"});
+        QByteArray err;
+        // One second into the trial the car is being driven (the demonstration's commands).
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         process.waitForReadyRead(5);
+                         err += process.readAllStandardError();
+                         return err.contains("rig: trial 1/1: 1 of") ||
+                                process.state() == QProcess::NotRunning;
+                     },
+                     60000),
+                 err.constData());
+        QVERIFY2(process.state() == QProcess::Running, err.constData());
+        ::kill(static_cast<pid_t>(process.processId()), signal);
+        QVERIFY(process.waitForFinished(30000));
+        QCOMPARE(process.exitCode(), 130);
+        const QJsonObject out = QJsonDocument::fromJson(process.readAllStandardOutput()).object();
+        const QJsonObject trial = out["trials"].toArray().at(0).toObject();
+        QVERIFY2(trial["stopped"].toBool(), qPrintable(QJsonDocument(out).toJson()));
+        QVERIFY(trial["linkFramesDecoded"].toDouble() > 0);
+        const QJsonArray held = out["receiverLastCommand"].toArray();
+        QCOMPARE(held.size(), 2);  // steering, throttle
+        for (const QJsonValue& u : held) {
+            QVERIFY2(std::abs(u.toDouble()) <= 2.0 / 512.0,
+                     qPrintable(QJsonDocument(out).toJson()));
+        }
+        QVERIFY(out["receiverNeutral"].toBool());
     }
 
     void link_badInputGivesOneLineAndExitTwo() {

@@ -22,6 +22,27 @@
 
 using namespace prisca::devices;
 
+namespace {
+
+// A camera's failed() and finished() as seen on the test's thread. They are emitted on the camera
+// thread; a QSignalSpy would record them there (a direct connection), and its wait() counts only
+// the signals after it is entered, so one emitted before the test reaches wait() (a missing
+// device fails at once) is missed and the wait runs to its bound. Queued to a receiver on this
+// thread instead, they are recorded by this thread's event loop, which QTRY_ runs: none is lost,
+// and no list is shared between threads.
+struct CameraEnd {
+    QObject receiver;  // lives on the test's thread
+    QStringList failures;
+    int finished = 0;
+    explicit CameraEnd(Camera* camera) {
+        QObject::connect(camera, &Camera::failed, &receiver,
+                         [this](const QString& message) { failures << message; });
+        QObject::connect(camera, &Camera::finished, &receiver, [this] { ++finished; });
+    }
+};
+
+}  // namespace
+
 class TestCamera : public QObject {
     Q_OBJECT
   private slots:
@@ -119,24 +140,24 @@ class TestCamera : public QObject {
         Camera camera;
         std::atomic<int> count{0};
         camera.setConsumer([&](const CameraFrame&) { ++count; });
-        QSignalSpy finished(&camera, &Camera::finished);
-        QSignalSpy failed(&camera, &Camera::failed);
+        CameraEnd end(&camera);
         camera.start(makeVideoFileSource(path, false));
-        QVERIFY(finished.wait(30000));  // 0.6 s of video; the bound only ends a hang
+        QTRY_COMPARE_WITH_TIMEOUT(end.finished, 1, 30000);  // 0.6 s of video; the bound ends a hang
         QCOMPARE(count.load(), 25);
-        QCOMPARE(failed.size(), 1);  // "end of the video"
-        QVERIFY(failed.first().at(0).toString().contains("end of the video"));
+        QCOMPARE(end.failures.size(), 1);  // "end of the video"
+        QVERIFY(end.failures.first().contains("end of the video"));
     }
 
     void missingDevice_isReportedByName() {
         Camera camera;
-        QSignalSpy failed(&camera, &Camera::failed);
+        CameraEnd end(&camera);
         V4l2Settings settings;
         settings.device = QStringLiteral("/dev/video-none");
         camera.start(makeV4l2Source(settings));
-        QVERIFY(failed.wait(30000));  // the bound only ends a hang (backends are probed)
-        QVERIFY(failed.first().at(0).toString().contains("/dev/video-none"));
-        QTRY_VERIFY(!camera.isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(end.finished, 1, 30000);  // the bound only ends a hang
+        QCOMPARE(end.failures.size(), 1);
+        QVERIFY(end.failures.first().contains("/dev/video-none"));
+        QVERIFY(!camera.isRunning());
     }
 };
 
