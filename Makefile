@@ -3,7 +3,7 @@
 #   make test   install missing Debian packages, build, run the whole test suite (offscreen)
 #   make bench  build in release mode and run the benchmarks
 #   make check-sanitizers  the suite under AddressSanitizer + UBSan, the threaded tests under TSan
-#   make fuzz FUZZ_SECONDS=N  every fuzz target for N seconds (clang, libFuzzer)
+#   make fuzz FUZZ_SECONDS=N [FUZZ_TARGETS="a b"]  each fuzz target for N seconds (libFuzzer)
 #   make test-under-load RUNS=N  make test N times while busy loops keep every core busy
 BUILD_DIR ?= build
 PRESET    ?= default
@@ -52,10 +52,11 @@ check-sanitizers: deps
 # libFuzzer on every target of tests/fuzz for FUZZ_SECONDS each, starting from the corpus in the
 # tree (new inputs found stay in build-fuzz/corpus; copy the interesting ones into the tree).
 FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?=
 fuzz:
 	@./scripts/install-deps.sh fuzz
 	@test -f build-fuzz/build.ninja || cmake --preset fuzz
-	./scripts/run-fuzz.sh $(FUZZ_SECONDS)
+	./scripts/run-fuzz.sh $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 RUNS ?= 10
 test-under-load: build

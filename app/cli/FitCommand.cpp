@@ -24,10 +24,6 @@ QJsonArray matrixJson(const Eigen::MatrixXd& matrix) {
     return rows;
 }
 
-QJsonValue finiteOrNull(double value) {
-    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
-}
-
 std::vector<int> columns(const QString& option, const QString& text, int n) {
     std::vector<int> out;
     for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -67,12 +63,13 @@ Task fitTask(const CommandLine& line, const QString& demoPath,
         throw UsageError(QStringLiteral("--mask: %1").arg(error));
     }
     if (mapping->controls() != m || mapping->states() != n) {
-        throw UsageError(QStringLiteral("--mask has %1 x %2 signs; %3 has %4 controls and %5 states")
-                             .arg(mapping->controls())
-                             .arg(mapping->states())
-                             .arg(demoPath)
-                             .arg(m)
-                             .arg(n));
+        throw UsageError(
+            QStringLiteral("--mask has %1 x %2 signs; %3 has %4 controls and %5 states")
+                .arg(mapping->controls())
+                .arg(mapping->states())
+                .arg(demoPath)
+                .arg(m)
+                .arg(n));
     }
     core::DeviationModel deviation = core::DeviationModel::euclidean(n);
     deviation.angleIndices = columns(QStringLiteral("angles"), line.value("angles"), n);
@@ -162,9 +159,16 @@ int fitCommand(const QStringList& arguments) {
     const core::Demonstration& demo = *task.demonstration;
 
     if (line.format() == QLatin1String("json")) {
-        QJsonArray r2, rms, conflicts, unexcited, warnings;
+        // R^2 of the states the fit explains, by name; a state no control acts on (its mask
+        // column is all zeros) has none and is listed as such, never as null.
+        QJsonObject r2;
+        QJsonArray unexplained, rms, conflicts, unexcited, warnings;
         for (int c = 0; c < demo.stateDimension(); ++c) {
-            r2.append(finiteOrNull(fit.rSquared[c]));
+            if (std::isfinite(fit.rSquared[c])) {
+                r2.insert(demo.stateNames[c], fit.rSquared[c]);
+            } else {
+                unexplained.append(demo.stateNames[c]);
+            }
             rms.append(fit.residualRms[c]);
         }
         for (const auto& [l, c] : fit.signConflicts) {
@@ -189,6 +193,7 @@ int fitCommand(const QStringList& arguments) {
                    {"drift", options.drift},
                    {"A", matrixJson(fit.a)},
                    {"rSquared", r2},
+                   {"statesNoControlActsOn", unexplained},
                    {"residualRms", rms},
                    {"signConflicts", conflicts},
                    {"unexcitedControls", unexcited},
@@ -224,8 +229,9 @@ int fitCommand(const QStringList& arguments) {
     }
     text += QLatin1Char('\n');
     if (options.drift) {
-        text += QStringLiteral("drift A (row: state's one-step change; column: the previous "
-                               "one-step change of) [1/s]:\n");
+        text += QStringLiteral(
+            "drift A (row: state's one-step change; column: the previous "
+            "one-step change of) [1/s]:\n");
         for (int r = 0; r < demo.stateDimension(); ++r) {
             text += QStringLiteral("%1").arg(demo.stateNames[r], -12);
             for (int c = 0; c < demo.stateDimension(); ++c) {

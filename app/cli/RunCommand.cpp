@@ -165,11 +165,13 @@ int runCommand(const QStringList& arguments) {
             compareRms.push_back(otherSummary.trackingRms);
             comparePathRms.push_back(otherSummary.pathRms);
             comparePaths.push_back(pathOf(other));
-            compareJson.append(QJsonObject{
-                {"trial", trial},
-                {"finalPositionErrorCm", finiteOrNull(otherSummary.finalPositionError * 100.0)},
-                {"trackingRms", otherSummary.trackingRms},
-                {"pathRms", finiteOrNull(otherSummary.pathRms)}});
+            QJsonObject otherJson{{"trial", trial}, {"trackingRms", otherSummary.trackingRms}};
+            if (info.pose) {  // a plant with no pose has no position to speak of: no null
+                otherJson.insert("finalPositionErrorCm",
+                                 finiteOrNull(otherSummary.finalPositionError * 100.0));
+                otherJson.insert("pathRms", finiteOrNull(otherSummary.pathRms));
+            }
+            compareJson.append(otherJson);
             text += info.pose ? QStringLiteral("trial %1 (%2): tracking RMS %3 m, path RMS %4 m\n")
                                     .arg(trial)
                                     .arg(compareMethod)
@@ -186,15 +188,19 @@ int runCommand(const QStringList& arguments) {
         rms.push_back(summary.trackingRms);
         pathRms.push_back(summary.pathRms);
         paths.push_back(pathOf(result));
-        trialsJson.append(QJsonObject{
-            {"trial", trial},
-            {"duration", summary.duration},
-            {"finalPositionErrorCm", finiteOrNull(summary.finalPositionError * 100.0)},
-            {"finalHeadingErrorDeg", finiteOrNull(summary.finalHeadingError * 180.0 / M_PI)},
-            {"trackingRms", summary.trackingRms},
-            {"pathRms", finiteOrNull(summary.pathRms)},
-            {"meanCost", summary.meanCost},
-            {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep}});
+        QJsonObject trialJson{{"trial", trial},
+                              {"duration", summary.duration},
+                              {"trackingRms", summary.trackingRms},
+                              {"meanCost", summary.meanCost},
+                              {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep}};
+        if (info.pose) {
+            trialJson.insert("finalPositionErrorCm",
+                             finiteOrNull(summary.finalPositionError * 100.0));
+            trialJson.insert("finalHeadingErrorDeg",
+                             finiteOrNull(summary.finalHeadingError * 180.0 / M_PI));
+            trialJson.insert("pathRms", finiteOrNull(summary.pathRms));
+        }
+        trialsJson.append(trialJson);
         if (info.pose) {
             text += QStringLiteral(
                         "trial %1: final position error %2 cm, heading error %3 deg, "

@@ -243,13 +243,22 @@ class TestCliCommands : public QObject {
         QCOMPARE(fit.value("B").toArray().size(), 2);
         QCOMPARE(fit.value("B").toArray().at(0).toArray().size(), 6);
         QVERIFY(fit.value("B").toArray().at(0).toArray().at(3).toDouble() > 0.5);  // throttle -> vx
-        QCOMPARE(fit.value("rSquared").toArray().size(), 6);
+        // R^2 by state for the five states the default mask lets a control act on; vy has none.
+        QCOMPARE(fit.value("rSquared").toObject().keys(),
+                 (QStringList{"psi", "r", "vx", "x", "y"}));
+        QCOMPARE(fit.value("statesNoControlActsOn").toArray(), QJsonArray{"vy"});
+        QVERIFY2(!r.out.contains("null") && !r.out.contains("nan"), qPrintable(r.out));
         QVERIFY(fit.contains("warnings") && fit.contains("signConflicts"));
         // A mask that says throttle does nothing to vx: that entry is 0.
         const CliResult masked = cli(
             {"fit", "--demo", "car.csv", "--mask", "1,0,0,0,0,0;0,1,1,0,0,1", "--format", "json"});
         QCOMPARE(masked.exitCode, 0);
         QCOMPARE(parseJson(masked.out).value("B").toArray().at(0).toArray().at(3).toDouble(), 0.0);
+        // R^2 is not defined for the states no control acts on: named, never null.
+        QVERIFY2(!masked.out.contains("null"), qPrintable(masked.out));
+        QCOMPARE(parseJson(masked.out).value("rSquared").toObject().size(), 4);
+        QCOMPARE(parseJson(masked.out).value("statesNoControlActsOn").toArray(),
+                 (QJsonArray{"vx", "vy"}));
         const CliResult text = cli({"fit", "--demo", "car.csv"});
         QCOMPARE(text.exitCode, 0);
         QVERIFY(text.out.contains("R^2") && text.out.contains("steering"));
