@@ -3,6 +3,7 @@
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
+#include "core/ThreadHandOff.h"
 #include "sim/PlantCatalog.h"
 #include "sim/TaskCheck.h"
 
@@ -90,6 +91,7 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
         status_->setText(message);
         QMessageBox::warning(this, tr("Record"), message);
     });
+    core::markThreadEnd(thread_);
     thread_.start();
 
     timer_->setInterval(kTickMs);
@@ -115,8 +117,8 @@ RecordPanel::~RecordPanel() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
-    if (thread_.isFinished()) {
+    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (core::joined(thread_)) {
         delete worker_;
     }
 }
@@ -154,10 +156,9 @@ void RecordPanel::beginRecording() {
                                  .arg(session_.plant(), QDateTime::currentDateTime().toString(
                                                             QStringLiteral("yyyyMMdd-HHmmss")));
     emit recordingStarted();
-    QMetaObject::invokeMethod(
-        worker_,
-        [w = worker_, plant = session_.plant(), path = streamPath_] { w->start(plant, path); },
-        Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_, plant = session_.plant(), path = streamPath_] {
+        w->start(plant, path);
+    });
     recordingClock_.start();
     lastReadoutMs_ = -1000;
     status_->setText(tr("Recording... drive, then press Stop."));
@@ -193,8 +194,7 @@ void RecordPanel::tick() {
         scaled[l] =
             input[l] >= 0.0 ? input[l] * info.actionUpper[l] : -input[l] * info.actionLower[l];
     }
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_, scaled] { w->setInput(scaled); }, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_, scaled] { w->setInput(scaled); });
     // What the operator is commanding, and for how long, a few times a second.
     if (recordingClock_.isValid() && recordingClock_.elapsed() - lastReadoutMs_ >= 200) {
         lastReadoutMs_ = recordingClock_.elapsed();
@@ -225,7 +225,7 @@ void RecordPanel::stopRecording() {
         return;
     }
     if (recording_) {
-        QMetaObject::invokeMethod(worker_, &RecordingWorker::stop, Qt::QueuedConnection);
+        core::postTo(worker_, [w = worker_] { w->stop(); });
     }
 }
 
@@ -235,10 +235,9 @@ void RecordPanel::emergencyStop() {
         driving_->neutral();
         timer_->stop();
         worker_->requestStop();
-        QMetaObject::invokeMethod(
-            worker_,
-            [w = worker_, n = driving_->input().size()] { w->setInput(Eigen::VectorXd::Zero(n)); },
-            Qt::QueuedConnection);
+        core::postTo(worker_, [w = worker_, n = driving_->input().size()] {
+            w->setInput(Eigen::VectorXd::Zero(n));
+        });
         endedByEmergency_ = recording_;
         stopRecording();
     }

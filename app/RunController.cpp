@@ -1,5 +1,7 @@
 #include "app/RunController.h"
 
+#include "core/ThreadHandOff.h"
+
 #include <QMetaObject>
 
 namespace prisca::app {
@@ -31,51 +33,50 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
                 emit runLogReady(lastRunLog_);
             });
     connect(worker_, &RunWorker::failed, this, &RunController::failed);
+    core::markThreadEnd(thread_);
     thread_.start();
 }
 
 RunController::~RunController() {
     worker_->requestCancel();
-    QMetaObject::invokeMethod(worker_, &RunWorker::stop, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->stop(); });
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
-    if (thread_.isFinished()) {
+    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (core::joined(thread_)) {
         delete worker_;
     }
 }
 
 void RunController::start(const RunRequest& request) {
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_, request] { w->start(request); }, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_, request] { w->start(request); });
 }
 
 void RunController::pause() {
-    QMetaObject::invokeMethod(worker_, &RunWorker::pause, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->pause(); });
 }
 
 void RunController::resume() {
-    QMetaObject::invokeMethod(worker_, &RunWorker::resume, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->resume(); });
 }
 
 void RunController::stop() {
     worker_->requestCancel();  // training polls this; stop() itself waits in the queue
-    QMetaObject::invokeMethod(worker_, &RunWorker::stop, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->stop(); });
 }
 
 void RunController::emergencyStop() {
     worker_->requestEmergencyStop();
-    QMetaObject::invokeMethod(worker_, &RunWorker::engageEmergencyStop, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->engageEmergencyStop(); });
 }
 
 void RunController::resetEmergencyStop() {
-    QMetaObject::invokeMethod(worker_, &RunWorker::resetEmergencyStop, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->resetEmergencyStop(); });
 }
 
 void RunController::setSpeed(double speed) {
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_, speed] { w->setSpeed(speed); }, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_, speed] { w->setSpeed(speed); });
 }
 
 }  // namespace prisca::app

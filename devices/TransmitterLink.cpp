@@ -1,5 +1,7 @@
 #include "devices/TransmitterLink.h"
 
+#include "core/ThreadHandOff.h"
+
 #include "devices/ThreadPriority.h"
 
 #include <QLoggingCategory>
@@ -52,10 +54,10 @@ TransmitterLink::TransmitterLink(QObject* parent)
     thread_.setObjectName(QStringLiteral("prisca-link"));
     worker_->moveToThread(&thread_);
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
+    core::markThreadEnd(thread_);
     thread_.start();
     // Frames are written on this thread: ahead of other programs' work.
-    QMetaObject::invokeMethod(
-        worker_, [] { raiseCurrentThreadPriority(); }, Qt::QueuedConnection);
+    core::postTo(worker_, [] { raiseCurrentThreadPriority(); });
 }
 
 TransmitterLink::~TransmitterLink() {
@@ -65,25 +67,24 @@ TransmitterLink::~TransmitterLink() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
-    if (thread_.isFinished()) {
+    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (core::joined(thread_)) {
         delete worker_;
     }
 }
 
 void TransmitterLink::start(const LinkSettings& settings) {
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_, settings] { w->start(settings); }, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_, settings] { w->start(settings); });
 }
 
 void TransmitterLink::stop() {
-    QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::QueuedConnection);
+    core::postTo(worker_, [w = worker_] { w->stop(); });
 }
 
 void TransmitterLink::setCommand(const ChannelPulses& pulses) {
     worker_->setCommand(pulses);
     if (worker_->sendOnCommand.load()) {
-        QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::sendNow, Qt::QueuedConnection);
+        core::postTo(worker_, [w = worker_] { w->sendNow(); });
     }
 }
 

@@ -1,5 +1,7 @@
 #include "rig/RigSession.h"
 
+#include "core/ThreadHandOff.h"
+
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
 #include "devices/LedTracker.h"
@@ -62,6 +64,7 @@ RigSession::RigSession(QObject* parent)
     qRegisterMetaType<std::optional<devices::PlanarPose>>();
     workerThread_.setObjectName(QStringLiteral("prisca-rig"));
     worker_->moveToThread(&workerThread_);
+    core::markThreadEnd(workerThread_);
     workerThread_.start();
 
     // Until the operator calibrates, the synthetic camera's own calibration.
@@ -108,8 +111,8 @@ RigSession::~RigSession() {
     workerThread_.quit();
     workerThread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // visibly to ThreadSanitizer too); left alone if the thread has not ended in time.
-    if (workerThread_.isFinished()) {
+    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (core::joined(workerThread_)) {
         delete worker_;
     }
     link_.stop();
@@ -117,7 +120,7 @@ RigSession::~RigSession() {
 
 template <typename F>
 void RigSession::onWorker(F&& f) {
-    QMetaObject::invokeMethod(worker_, std::forward<F>(f), Qt::QueuedConnection);
+    core::postTo(worker_, std::forward<F>(f));
 }
 
 bool RigSession::startCamera(const CameraRequest& request, QString* error) {

@@ -1,0 +1,78 @@
+#pragma once
+// Hand-offs between this project's threads made visible to ThreadSanitizer.
+//
+// Debian's Qt is not built with ThreadSanitizer: its event queue and QThread::wait() synchronise
+// through futexes and detached threads TSan cannot see. So a value a thread writes and then hands
+// to a worker through Qt's queue, or a worker object deleted after QThread::wait(), looks to TSan
+// like a race although Qt orders it. These helpers tell TSan what Qt guarantees (release before
+// the hand-off, acquire where it arrives), on the same object Qt synchronises on; in builds
+// without TSan they are plain QMetaObject::invokeMethod and QThread::isFinished().
+#include <QMetaObject>
+#include <QObject>
+#include <QThread>
+
+#include <utility>
+
+#if defined(__SANITIZE_THREAD__)
+#define PRISCA_TSAN 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define PRISCA_TSAN 1
+#endif
+#endif
+
+#ifdef PRISCA_TSAN
+#include <sanitizer/tsan_interface.h>
+#endif
+
+namespace prisca::core {
+
+/// Everything this thread did so far happens before a later happensAfter(token) on any thread.
+inline void happensBefore(const void* token) {
+#ifdef PRISCA_TSAN
+    __tsan_release(const_cast<void*>(token));
+#else
+    (void)token;
+#endif
+}
+
+/// Everything done before a happensBefore(token) happens before what this thread does next.
+inline void happensAfter(const void* token) {
+#ifdef PRISCA_TSAN
+    __tsan_acquire(const_cast<void*>(token));
+#else
+    (void)token;
+#endif
+}
+
+/// Runs f on receiver's thread, queued (Qt::QueuedConnection): what the caller wrote before
+/// posting happens before f, as Qt's posted-event queue (a mutex per receiving thread) orders it.
+template <class F>
+void postTo(QObject* receiver, F&& f) {
+    happensBefore(receiver);
+    QMetaObject::invokeMethod(
+        receiver,
+        [receiver, f = std::forward<F>(f)]() mutable {
+            happensAfter(receiver);
+            f();
+        },
+        Qt::QueuedConnection);
+}
+
+/// Call once on a worker thread before starting it: the end of its run is marked, so that
+/// joined() can order everything the thread did before what its owner does next.
+inline void markThreadEnd(QThread& thread) {
+    QObject::connect(&thread, &QThread::finished, [t = &thread] { happensBefore(t); });
+}
+
+/// After thread.wait(): whether the thread has ended; if so, everything it did happens before
+/// what the caller does next (deleting its worker object, say).
+inline bool joined(QThread& thread) {
+    if (!thread.isFinished()) {
+        return false;
+    }
+    happensAfter(&thread);
+    return true;
+}
+
+}  // namespace prisca::core
