@@ -11,6 +11,8 @@
 #include <QObject>
 #include <QThread>
 
+#include <memory>
+#include <type_traits>
 #include <utility>
 
 #if defined(__SANITIZE_THREAD__)
@@ -45,16 +47,19 @@ inline void happensAfter(const void* token) {
 #endif
 }
 
-/// Runs f on receiver's thread, queued (Qt::QueuedConnection): what the caller wrote before
-/// posting happens before f, as Qt's posted-event queue (a mutex per receiving thread) orders it.
+/// Runs f on receiver's thread, queued (Qt::QueuedConnection): f and what the caller wrote before
+/// posting happen before f runs, as Qt's posted-event queue (a mutex per receiving thread)
+/// orders them. f is moved to the heap first, so everything it carries is written before the
+/// release; Qt's own slot object around it is Qt's business (tests/sanitizers/tsan.supp).
 template <class F>
 void postTo(QObject* receiver, F&& f) {
-    happensBefore(receiver);
+    auto task = std::make_shared<std::decay_t<F>>(std::forward<F>(f));
+    happensBefore(task.get());
     QMetaObject::invokeMethod(
         receiver,
-        [receiver, f = std::forward<F>(f)]() mutable {
-            happensAfter(receiver);
-            f();
+        [task = std::move(task)] {
+            happensAfter(task.get());
+            (*task)();
         },
         Qt::QueuedConnection);
 }
