@@ -51,6 +51,8 @@ class RigPanel : public QWidget {
     const devices::FloorCalibration& calibration() const { return rig_.calibration(); }
     std::optional<devices::PlanarPose> lastPose() const { return rig_.lastPose(); }
     long long framesSeen() const { return rig_.framesSeen(); }
+    /// The take's recorded time [s] by the frames' clock (-1: not recording).
+    double recordedSeconds() const { return rig_.recordedSeconds(); }
     const devices::LinkStatus& linkStatus() const { return rig_.linkStatus(); }
     /// The channel mapping as edited (throttle, steering); invalid edits are named and refused.
     const devices::ChannelMap& channels() const { return rig_.channels(); }

@@ -185,7 +185,18 @@ class TestGuiRun : public QObject {
             w.find<QLabel>("recordStatus")->text().contains(QLatin1String("throttle 1.00")),
             qPrintable(w.find<QLabel>("recordStatus")->text()));
         QVERIFY(w.find<QLabel>("recordStatus")->text().contains(QLatin1String("no brakes")));
-        QTest::qWait(600);
+        // Full throttle for 0.6 s of the recording's own time (not the wall clock's).
+        double recorded = 0.0;
+        const QMetaObject::Connection seen =
+            QObject::connect(panel, &RecordPanel::samplesReady, panel,
+                             [&recorded](const QVector<prisca::app::LiveSample>& samples) {
+                                 if (!samples.isEmpty()) {
+                                     recorded = samples.back().time;
+                                 }
+                             });
+        const double throttleFrom = recorded;
+        QTRY_VERIFY_WITH_TIMEOUT(recorded >= throttleFrom + 0.6, 30000);
+        QObject::disconnect(seen);
         QTest::keyPress(&w.window, Qt::Key_A);
         QTRY_VERIFY(panel->input()[1] > 0.5);
         QTest::keyRelease(&w.window, Qt::Key_A);
@@ -347,8 +358,7 @@ class TestGuiRun : public QObject {
         w.find<QSpinBox>("experimentBudget")->setValue(2000000);  // far more than the test waits
         QSignalSpy finished(panel, &ExperimentsPanel::finished);
         w.find<QAbstractButton>("startExperiment")->click();
-        QTest::qWait(300);
-        QVERIFY(panel->isRunning());
+        QVERIFY(panel->isRunning());  // cancelled while it runs
         w.find<QAbstractButton>("cancelExperiment")->click();
         QVERIFY(finished.wait(kRunTimeoutMs));
         QVERIFY(!panel->isRunning());
@@ -953,7 +963,9 @@ class TestGuiRun : public QObject {
         QVERIFY2(m.captured(1).toDouble() < 50.0, qPrintable(result));
         // A second trial, stopped by E-STOP (Space): failsafe latched on the link.
         QVERIFY(rig->runTrial());
-        QTest::qWait(500);
+        const long long framesAtStart = rig->framesSeen();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->framesSeen() >= framesAtStart + 10, 30000);  // under way
+        QVERIFY(rig->isRunning());
         QTest::keyClick(&w.window, Qt::Key_Space);
         QTRY_VERIFY(!rig->isRunning());
         QTRY_COMPARE_WITH_TIMEOUT(rig->linkStatus().failsafe,
@@ -973,9 +985,10 @@ class TestGuiRun : public QObject {
         QVERIFY(rig->startDriving());
         QTest::keyPress(&w.window, Qt::Key_Up);
         QTRY_VERIFY(rig->drivingInput()[0] > 0.99);
-        QTest::qWait(700);
+        // Full throttle for 0.7 s of the take's own (frame) time, then 0.3 s coasting.
+        QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 0.7, 30000);
         QTest::keyRelease(&w.window, Qt::Key_Up);
-        QTest::qWait(300);
+        QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 1.0, 30000);
         rig->stopDriving();
         // The take is resampled and written on the rig's worker thread, then handed over.
         QTRY_VERIFY_WITH_TIMEOUT(w.window.session().demonstration() != before, 10000);
@@ -1003,7 +1016,7 @@ class TestGuiRun : public QObject {
             auto* rig = w.find<RigPanel>("rigPanel");
             QVERIFY(startVirtualRig(w, rig));
             QVERIFY(rig->startDriving());
-            QTest::qWait(400);
+            QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 0.4, 30000);
             QVERIFY(rig->isDriving());
             QVERIFY(w.window.close());
         }  // the window, its session and the panel go while the recording runs: no crash
