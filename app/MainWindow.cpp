@@ -106,6 +106,9 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     createPanels();
     createMenus();
     createToolBar();
+    for (QWidget* field : findChildren<QWidget*>()) {
+        noWheelFocus(field);
+    }
     qApp->installEventFilter(this);
     statusBar()->addPermanentWidget(versionLabel_);
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
@@ -164,11 +167,35 @@ MainWindow::~MainWindow() {
     qApp->removeEventFilter(this);
 }
 
+void MainWindow::noWheelFocus(QWidget* field) {
+    // Settings take the focus from a click or Tab, not from the wheel passing over them: the
+    // wheel then scrolls the panel instead of changing what it passes (see eventFilter).
+    if ((qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractSpinBox*>(field)) &&
+        field->focusPolicy() == Qt::WheelFocus) {
+        field->setFocusPolicy(Qt::StrongFocus);
+    }
+}
+
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::MouseButtonPress && watched == this) {
         // A press on the window itself, not on a panel: a separator between docks. From now on
         // the operator sizes the panels.
         operatorSizedDocks_ = true;
+        return false;
+    }
+    if (event->type() == QEvent::Polish) {
+        noWheelFocus(qobject_cast<QWidget*>(watched));  // a setting made later (a dialog's)
+        return false;
+    }
+    if (event->type() == QEvent::Wheel) {
+        // The wheel over a setting the operator has not clicked into scrolls the panel around it
+        // instead of changing the setting (a protocol or a gain changed by scrolling past it).
+        auto* field = qobject_cast<QWidget*>(watched);
+        if ((qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractSpinBox*>(field)) &&
+            !field->hasFocus() && field->parentWidget()) {
+            QCoreApplication::sendEvent(field->parentWidget(), event);
+            return true;
+        }
         return false;
     }
     if (event->type() != QEvent::KeyPress) {

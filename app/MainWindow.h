@@ -55,6 +55,7 @@ class MainWindow : public QMainWindow {
     /// Space typed into a text field; read before any widget sees the key, and independent of
     /// which window the platform thinks is active.
     bool eventFilter(QObject* watched, QEvent* event) override;
+    static void noWheelFocus(QWidget* field);
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;

@@ -4,17 +4,24 @@
 #include "app/LanguageSwitcher.h"
 #include "app/MainWindow.h"
 
+#include <QtTest/qtestspontaneevent.h>
 #include <QAbstractButton>
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
+#include <QWheelEvent>
 #include <QtTest>
 
 using prisca::app::LanguageSwitcher;
@@ -54,6 +61,7 @@ class TestMainWindow : public QObject {
     void geometry_isRememberedForTheNextStart();
     void aboutAction_showsWhatTheAppIs();
     void quitShortcut_closesWindowAndEndsTheEventLoopWithZero();
+    void wheel_overAnUnfocusedSettingScrollsAndLeavesIt();
 };
 
 void TestMainWindow::initTestCase() {
@@ -239,3 +247,49 @@ void TestMainWindow::quitShortcut_closesWindowAndEndsTheEventLoopWithZero() {
 
 QTEST_MAIN(TestMainWindow)
 #include "test_main_window.moc"
+
+void TestMainWindow::wheel_overAnUnfocusedSettingScrollsAndLeavesIt() {
+    LanguageSwitcher languages;
+    MainWindow window(languages);
+    window.resize(1280, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* protocol = window.findChild<QComboBox*>(QStringLiteral("linkProtocol"));
+    QVERIFY(protocol);
+    // The rig panel shown (its dock raised) in the active window, as an operator has it.
+    for (QWidget* w = protocol; w; w = w->parentWidget()) {
+        if (auto* dock = qobject_cast<QDockWidget*>(w)) {
+            dock->raise();
+        }
+    }
+    QTRY_VERIFY(protocol->isVisible());
+    QApplication::setActiveWindow(&window);
+    QTRY_VERIFY(window.isActiveWindow());
+    const int before = protocol->currentIndex();
+    auto wheel = [&](int steps) {
+        const QPointF at(protocol->width() / 2.0, protocol->height() / 2.0);
+        QWheelEvent event(at, protocol->mapToGlobal(at), QPoint(), QPoint(0, -120 * steps),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        // From the window system, as a real wheel: the application gives focus to what the
+        // wheel is over according to its focus policy, then delivers it, then propagates it.
+        QSpontaneKeyEvent::setSpontaneous(&event);
+        QApplication::sendEvent(protocol, &event);
+    };
+    // The wheel passing over a setting does not give it the focus (a click or Tab does).
+    for (const QWidget* field : window.findChildren<QComboBox*>()) {
+        QVERIFY2(field->focusPolicy() == Qt::StrongFocus, qPrintable(field->objectName()));
+    }
+    for (const QWidget* field : window.findChildren<QAbstractSpinBox*>()) {
+        QVERIFY2(field->focusPolicy() == Qt::StrongFocus, qPrintable(field->objectName()));
+    }
+    QVERIFY(protocol->focusPolicy() == Qt::StrongFocus);
+    // Not clicked into: the setting stays; the wheel goes to what is around it.
+    QVERIFY(!protocol->hasFocus());
+    wheel(1);
+    QCOMPARE(protocol->currentIndex(), before);
+    // Clicked into (focused): the wheel changes it, as everywhere else.
+    protocol->setFocus();
+    QTRY_VERIFY(protocol->hasFocus());
+    wheel(1);
+    QVERIFY(protocol->currentIndex() != before);
+}
