@@ -1,6 +1,6 @@
 #include "app/ExperimentsPanel.h"
 
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 
 #include "app/LabSession.h"
 #include "app/figures/PaperFigures.h"
@@ -153,7 +153,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
         QMessageBox::warning(this, tr("Experiment"), message);
         emit finished();
     });
-    core::markThreadEnd(thread_);
+    devices::markThreadEnd(thread_);
     thread_.start();
 
     connect(start_, &QPushButton::clicked, this, &ExperimentsPanel::start);
@@ -170,8 +170,8 @@ ExperimentsPanel::~ExperimentsPanel() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(thread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(thread_)) {
         delete worker_;
     }
 }
@@ -207,7 +207,7 @@ void ExperimentsPanel::start() {
     progress_->setRange(0, 0);  // busy until the first count arrives
     status_->setText(tr("Starting..."));
     setRunning(true);
-    core::postTo(worker_, [w = worker_, request] { w->run(request); });
+    devices::postTo(worker_, [w = worker_, request] { w->run(request); });
 }
 
 void ExperimentsPanel::cancel() {

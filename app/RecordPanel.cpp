@@ -3,7 +3,7 @@
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 #include "sim/PlantCatalog.h"
 #include "sim/TaskCheck.h"
 
@@ -91,7 +91,7 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
         status_->setText(message);
         QMessageBox::warning(this, tr("Record"), message);
     });
-    core::markThreadEnd(thread_);
+    devices::markThreadEnd(thread_);
     thread_.start();
 
     timer_->setInterval(kTickMs);
@@ -117,8 +117,8 @@ RecordPanel::~RecordPanel() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(thread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(thread_)) {
         delete worker_;
     }
 }
@@ -156,7 +156,7 @@ void RecordPanel::beginRecording() {
                                  .arg(session_.plant(), QDateTime::currentDateTime().toString(
                                                             QStringLiteral("yyyyMMdd-HHmmss")));
     emit recordingStarted();
-    core::postTo(worker_, [w = worker_, plant = session_.plant(), path = streamPath_] {
+    devices::postTo(worker_, [w = worker_, plant = session_.plant(), path = streamPath_] {
         w->start(plant, path);
     });
     recordingClock_.start();
@@ -194,7 +194,7 @@ void RecordPanel::tick() {
         scaled[l] =
             input[l] >= 0.0 ? input[l] * info.actionUpper[l] : -input[l] * info.actionLower[l];
     }
-    core::postTo(worker_, [w = worker_, scaled] { w->setInput(scaled); });
+    devices::postTo(worker_, [w = worker_, scaled] { w->setInput(scaled); });
     // What the operator is commanding, and for how long, a few times a second.
     if (recordingClock_.isValid() && recordingClock_.elapsed() - lastReadoutMs_ >= 200) {
         lastReadoutMs_ = recordingClock_.elapsed();
@@ -225,7 +225,7 @@ void RecordPanel::stopRecording() {
         return;
     }
     if (recording_) {
-        core::postTo(worker_, [w = worker_] { w->stop(); });
+        devices::postTo(worker_, [w = worker_] { w->stop(); });
     }
 }
 
@@ -235,7 +235,7 @@ void RecordPanel::emergencyStop() {
         driving_->neutral();
         timer_->stop();
         worker_->requestStop();
-        core::postTo(worker_, [w = worker_, n = driving_->input().size()] {
+        devices::postTo(worker_, [w = worker_, n = driving_->input().size()] {
             w->setInput(Eigen::VectorXd::Zero(n));
         });
         endedByEmergency_ = recording_;

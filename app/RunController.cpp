@@ -1,6 +1,6 @@
 #include "app/RunController.h"
 
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 
 #include <QMetaObject>
 
@@ -33,50 +33,50 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
                 emit runLogReady(lastRunLog_);
             });
     connect(worker_, &RunWorker::failed, this, &RunController::failed);
-    core::markThreadEnd(thread_);
+    devices::markThreadEnd(thread_);
     thread_.start();
 }
 
 RunController::~RunController() {
     worker_->requestCancel();
-    core::postTo(worker_, [w = worker_] { w->stop(); });
+    devices::postTo(worker_, [w = worker_] { w->stop(); });
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(thread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(thread_)) {
         delete worker_;
     }
 }
 
 void RunController::start(const RunRequest& request) {
-    core::postTo(worker_, [w = worker_, request] { w->start(request); });
+    devices::postTo(worker_, [w = worker_, request] { w->start(request); });
 }
 
 void RunController::pause() {
-    core::postTo(worker_, [w = worker_] { w->pause(); });
+    devices::postTo(worker_, [w = worker_] { w->pause(); });
 }
 
 void RunController::resume() {
-    core::postTo(worker_, [w = worker_] { w->resume(); });
+    devices::postTo(worker_, [w = worker_] { w->resume(); });
 }
 
 void RunController::stop() {
     worker_->requestCancel();  // training polls this; stop() itself waits in the queue
-    core::postTo(worker_, [w = worker_] { w->stop(); });
+    devices::postTo(worker_, [w = worker_] { w->stop(); });
 }
 
 void RunController::emergencyStop() {
     worker_->requestEmergencyStop();
-    core::postTo(worker_, [w = worker_] { w->engageEmergencyStop(); });
+    devices::postTo(worker_, [w = worker_] { w->engageEmergencyStop(); });
 }
 
 void RunController::resetEmergencyStop() {
-    core::postTo(worker_, [w = worker_] { w->resetEmergencyStop(); });
+    devices::postTo(worker_, [w = worker_] { w->resetEmergencyStop(); });
 }
 
 void RunController::setSpeed(double speed) {
-    core::postTo(worker_, [w = worker_, speed] { w->setSpeed(speed); });
+    devices::postTo(worker_, [w = worker_, speed] { w->setSpeed(speed); });
 }
 
 }  // namespace prisca::app

@@ -1,6 +1,6 @@
 #include "devices/CameraWorker.h"
 
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 
 #include "devices/ThreadPriority.h"
 
@@ -16,10 +16,10 @@ Camera::Camera(QObject* parent) : QObject(parent), context_(new QObject) {
     qRegisterMetaType<CameraFrame>();
     thread_.setObjectName(QStringLiteral("prisca-camera"));
     context_->moveToThread(&thread_);
-    core::markThreadEnd(thread_);
+    devices::markThreadEnd(thread_);
     thread_.start();
     // Frames are tracked and the loop stepped on this thread: ahead of other programs' work.
-    core::postTo(context_, [] { raiseCurrentThreadPriority(); });
+    devices::postTo(context_, [] { raiseCurrentThreadPriority(); });
 }
 
 Camera::~Camera() {
@@ -27,8 +27,8 @@ Camera::~Camera() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(thread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(thread_)) {
         delete context_;
     }
 }
@@ -40,7 +40,7 @@ void Camera::setConsumer(std::function<void(const CameraFrame&)> consumer) {
 void Camera::start(std::shared_ptr<CameraSource> source, double displayHz) {
     stopRequested_.store(false);
     running_.store(true);
-    core::postTo(context_, [this, source, displayHz] { run(source, displayHz); });
+    devices::postTo(context_, [this, source, displayHz] { run(source, displayHz); });
 }
 
 void Camera::stop() {

@@ -1,6 +1,6 @@
 #include "devices/TransmitterLink.h"
 
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 
 #include "devices/ThreadPriority.h"
 
@@ -54,10 +54,10 @@ TransmitterLink::TransmitterLink(QObject* parent)
     thread_.setObjectName(QStringLiteral("prisca-link"));
     worker_->moveToThread(&thread_);
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
-    core::markThreadEnd(thread_);
+    devices::markThreadEnd(thread_);
     thread_.start();
     // Frames are written on this thread: ahead of other programs' work.
-    core::postTo(worker_, [] { raiseCurrentThreadPriority(); });
+    devices::postTo(worker_, [] { raiseCurrentThreadPriority(); });
 }
 
 TransmitterLink::~TransmitterLink() {
@@ -67,24 +67,24 @@ TransmitterLink::~TransmitterLink() {
     thread_.quit();
     thread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(thread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(thread_)) {
         delete worker_;
     }
 }
 
 void TransmitterLink::start(const LinkSettings& settings) {
-    core::postTo(worker_, [w = worker_, settings] { w->start(settings); });
+    devices::postTo(worker_, [w = worker_, settings] { w->start(settings); });
 }
 
 void TransmitterLink::stop() {
-    core::postTo(worker_, [w = worker_] { w->stop(); });
+    devices::postTo(worker_, [w = worker_] { w->stop(); });
 }
 
 void TransmitterLink::setCommand(const ChannelPulses& pulses) {
     worker_->setCommand(pulses);
     if (worker_->sendOnCommand.load()) {
-        core::postTo(worker_, [w = worker_] { w->sendNow(); });
+        devices::postTo(worker_, [w = worker_] { w->sendNow(); });
     }
 }
 

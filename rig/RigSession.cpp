@@ -1,6 +1,6 @@
 #include "rig/RigSession.h"
 
-#include "core/ThreadHandOff.h"
+#include "devices/ThreadHandOff.h"
 
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
@@ -64,7 +64,7 @@ RigSession::RigSession(QObject* parent)
     qRegisterMetaType<std::optional<devices::PlanarPose>>();
     workerThread_.setObjectName(QStringLiteral("prisca-rig"));
     worker_->moveToThread(&workerThread_);
-    core::markThreadEnd(workerThread_);
+    devices::markThreadEnd(workerThread_);
     workerThread_.start();
 
     // Until the operator calibrates, the synthetic camera's own calibration.
@@ -111,8 +111,8 @@ RigSession::~RigSession() {
     workerThread_.quit();
     workerThread_.wait(kShutdownWaitMs);
     // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // core::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (core::joined(workerThread_)) {
+    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
+    if (devices::joined(workerThread_)) {
         delete worker_;
     }
     link_.stop();
@@ -120,7 +120,7 @@ RigSession::~RigSession() {
 
 template <typename F>
 void RigSession::onWorker(F&& f) {
-    core::postTo(worker_, std::forward<F>(f));
+    devices::postTo(worker_, std::forward<F>(f));
 }
 
 bool RigSession::startCamera(const CameraRequest& request, QString* error) {

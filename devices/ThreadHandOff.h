@@ -27,7 +27,7 @@
 #include <sanitizer/tsan_interface.h>
 #endif
 
-namespace prisca::core {
+namespace prisca::devices {
 
 /// Everything this thread did so far happens before a later happensAfter(token) on any thread.
 inline void happensBefore(const void* token) {
@@ -80,4 +80,4 @@ inline bool joined(QThread& thread) {
     return true;
 }
 
-}  // namespace prisca::core
+}  // namespace prisca::devices
