@@ -49,10 +49,11 @@ inline void happensAfter(const void* token) {
 
 /// Runs f on receiver's thread, queued (Qt::QueuedConnection): f and what the caller wrote before
 /// posting happen before f runs, as Qt's posted-event queue (a mutex per receiving thread)
-/// orders them. f is moved to the heap first, so everything it carries is written before the
-/// release; Qt's own slot object around it is Qt's business (tests/sanitizers/tsan.supp).
+/// orders them. Under TSan f is moved to the heap first, so everything it carries is written
+/// before the release; Qt's own slot object around it is Qt's business (tsan.supp).
 template <class F>
 void postTo(QObject* receiver, F&& f) {
+#ifdef PRISCA_TSAN
     auto task = std::make_shared<std::decay_t<F>>(std::forward<F>(f));
     happensBefore(task.get());
     QMetaObject::invokeMethod(
@@ -62,6 +63,9 @@ void postTo(QObject* receiver, F&& f) {
             (*task)();
         },
         Qt::QueuedConnection);
+#else
+    QMetaObject::invokeMethod(receiver, std::forward<F>(f), Qt::QueuedConnection);
+#endif
 }
 
 /// Call once on a worker thread before starting it: the end of its run is marked, so that
