@@ -7,7 +7,6 @@
 namespace prisca::app {
 
 void ExperimentWorker::run(const ExperimentRequest& request) {
-    cancelled_.store(false);
     // The experiments report "k/N"; the bar follows it.
     const auto report = [this](const QString& text) {
         static const QRegularExpression fraction(QStringLiteral("(\\d+)/(\\d+)"));

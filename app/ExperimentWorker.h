@@ -35,6 +35,9 @@ class ExperimentWorker : public QObject {
     Q_OBJECT
   public:
     explicit ExperimentWorker(QObject* parent = nullptr) : QObject(parent) {}
+    /// Any thread, before run() is posted: a cancel() from then on stops that run, even one
+    /// that comes before the run has begun on the worker's thread.
+    void prepare() { cancelled_.store(false); }
     /// Any thread.
     void cancel() { cancelled_.store(true); }
 

@@ -207,6 +207,7 @@ void ExperimentsPanel::start() {
     progress_->setRange(0, 0);  // busy until the first count arrives
     status_->setText(tr("Starting..."));
     setRunning(true);
+    worker_->prepare();
     devices::postTo(worker_, [w = worker_, request] { w->run(request); });
 }
 
