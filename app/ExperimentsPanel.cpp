@@ -1,10 +1,9 @@
 #include "app/ExperimentsPanel.h"
 
-#include "devices/ThreadHandOff.h"
-
 #include "app/LabSession.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
+#include "devices/ThreadHandOff.h"
 #include "sim/MethodCatalog.h"
 
 #include <QComboBox>
@@ -167,13 +166,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
 
 ExperimentsPanel::~ExperimentsPanel() {
     worker_->cancel();
-    thread_.quit();
-    thread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(thread_)) {
-        delete worker_;
-    }
+    devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
 }
 
 void ExperimentsPanel::start() {

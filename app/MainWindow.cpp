@@ -167,11 +167,17 @@ MainWindow::~MainWindow() {
     qApp->removeEventFilter(this);
 }
 
+namespace {
+// A setting the wheel would change: a combo box or a spin box.
+bool isSetting(const QObject* widget) {
+    return qobject_cast<const QComboBox*>(widget) || qobject_cast<const QAbstractSpinBox*>(widget);
+}
+}  // namespace
+
 void MainWindow::noWheelFocus(QWidget* field) {
     // Settings take the focus from a click or Tab, not from the wheel passing over them: the
     // wheel then scrolls the panel instead of changing what it passes (see eventFilter).
-    if ((qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractSpinBox*>(field)) &&
-        field->focusPolicy() == Qt::WheelFocus) {
+    if (isSetting(field) && field->focusPolicy() == Qt::WheelFocus) {
         field->setFocusPolicy(Qt::StrongFocus);
     }
 }
@@ -191,9 +197,8 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         // The wheel over a setting the operator has not clicked into scrolls the panel around it
         // instead of changing the setting (a protocol or a gain changed by scrolling past it).
         auto* field = qobject_cast<QWidget*>(watched);
-        if ((qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractSpinBox*>(field)) &&
-            !field->hasFocus() && field->parentWidget()) {
-            QCoreApplication::sendEvent(field->parentWidget(), event);
+        if (isSetting(field) && !field->hasFocus()) {
+            event->ignore();  // not the setting's: the application passes it on to the parents
             return true;
         }
         return false;

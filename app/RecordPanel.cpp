@@ -114,13 +114,7 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
 
 RecordPanel::~RecordPanel() {
     worker_->requestStop();
-    thread_.quit();
-    thread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(thread_)) {
-        delete worker_;
-    }
+    devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
 }
 
 const Eigen::VectorXd& RecordPanel::input() const {

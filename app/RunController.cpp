@@ -2,8 +2,6 @@
 
 #include "devices/ThreadHandOff.h"
 
-#include <QMetaObject>
-
 namespace prisca::app {
 
 namespace {
@@ -40,13 +38,7 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
 RunController::~RunController() {
     worker_->requestCancel();
     devices::postTo(worker_, [w = worker_] { w->stop(); });
-    thread_.quit();
-    thread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(thread_)) {
-        delete worker_;
-    }
+    devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
 }
 
 void RunController::start(const RunRequest& request) {

@@ -290,7 +290,7 @@ bool DemonstrationParser::readEntries(const KnownLine& declaration, const QStrin
             return bad(QStringLiteral("has a ']' without an opening '['"));
         }
         const QString nameString = toQString(name);
-        const QString problem = nameProblem(nameString);
+        const QString problem = stateOrActionNameProblem(nameString);
         if (!problem.isEmpty()) {
             return bad(QStringLiteral("has a name that ") + problem);
         }

@@ -127,6 +127,14 @@ inline QString nameProblem(const QString& name) {
             return QStringLiteral("contains '%1', which CSV readers would misread").arg(c);
         }
     }
+    return {};
+}
+
+// nameProblem, and a demonstration's state or action name may not be "t" (its time column).
+inline QString stateOrActionNameProblem(const QString& name) {
+    if (const QString problem = nameProblem(name); !problem.isEmpty()) {
+        return problem;
+    }
     if (name == QLatin1String("t")) {
         return QStringLiteral("is reserved for the time column");
     }

@@ -36,7 +36,7 @@ QString checkDemonstrationForCsv(const Demonstration& demo) {
     const auto checkChannels = [&seen](const QString& kind, const QStringList& names,
                                        const QStringList& units) -> QString {
         for (int i = 0; i < names.size(); ++i) {
-            const QString nameWhy = nameProblem(names[i]);
+            const QString nameWhy = stateOrActionNameProblem(names[i]);
             if (!nameWhy.isEmpty()) {
                 return QStringLiteral("%1 name %2 %3").arg(kind, quoted(names[i]), nameWhy);
             }

@@ -40,10 +40,7 @@ QString logProblem(const RunLog& log) {
         }
     }
     for (int c = 0; c < log.columns.size(); ++c) {
-        // "t" is the run log's own time column (reserved only in a demonstration's header).
-        const QString why =
-            log.columns[c] == QLatin1String("t") ? QString() : csvtext::nameProblem(log.columns[c]);
-        if (!why.isEmpty()) {
+        if (const QString why = csvtext::nameProblem(log.columns[c]); !why.isEmpty()) {
             return QStringLiteral("column %1 %2 %3").arg(c + 1).arg(quoted(log.columns[c]), why);
         }
         if (const QString why = csvtext::unitProblem(log.units[c]); !why.isEmpty()) {

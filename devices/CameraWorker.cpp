@@ -1,10 +1,7 @@
 #include "devices/CameraWorker.h"
 
 #include "devices/ThreadHandOff.h"
-
 #include "devices/ThreadPriority.h"
-
-#include <QMetaObject>
 
 namespace prisca::devices {
 
@@ -16,21 +13,15 @@ Camera::Camera(QObject* parent) : QObject(parent), context_(new QObject) {
     qRegisterMetaType<CameraFrame>();
     thread_.setObjectName(QStringLiteral("prisca-camera"));
     context_->moveToThread(&thread_);
-    devices::markThreadEnd(thread_);
+    markThreadEnd(thread_);
     thread_.start();
     // Frames are tracked and the loop stepped on this thread: ahead of other programs' work.
-    devices::postTo(context_, [] { raiseCurrentThreadPriority(); });
+    postTo(context_, [] { raiseCurrentThreadPriority(); });
 }
 
 Camera::~Camera() {
     stop();
-    thread_.quit();
-    thread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(thread_)) {
-        delete context_;
-    }
+    endWorkerThread(thread_, context_, kShutdownWaitMs);
 }
 
 void Camera::setConsumer(std::function<void(const CameraFrame&)> consumer) {
@@ -40,7 +31,7 @@ void Camera::setConsumer(std::function<void(const CameraFrame&)> consumer) {
 void Camera::start(std::shared_ptr<CameraSource> source, double displayHz) {
     stopRequested_.store(false);
     running_.store(true);
-    devices::postTo(context_, [this, source, displayHz] { run(source, displayHz); });
+    postTo(context_, [this, source, displayHz] { run(source, displayHz); });
 }
 
 void Camera::stop() {

@@ -95,13 +95,11 @@ QString FloorCalibration::homographyProblem() const {
     }
     // The image it must map: a VGA frame and the calibration points' extent.
     double u0 = 0.0, v0 = 0.0, u1 = 640.0, v1 = 480.0;
-    {
-        for (const CalibrationPoint& p : points) {
-            u0 = std::min(u0, p.image.x);
-            u1 = std::max(u1, p.image.x);
-            v0 = std::min(v0, p.image.y);
-            v1 = std::max(v1, p.image.y);
-        }
+    for (const CalibrationPoint& p : points) {
+        u0 = std::min(u0, p.image.x);
+        u1 = std::max(u1, p.image.x);
+        v0 = std::min(v0, p.image.y);
+        v1 = std::max(v1, p.image.y);
     }
     double sign = 0.0;
     for (const cv::Point2d corner :

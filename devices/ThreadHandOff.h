@@ -6,7 +6,7 @@
 // to a worker through Qt's queue, or a worker object deleted after QThread::wait(), looks to TSan
 // like a race although Qt orders it. These helpers tell TSan what Qt guarantees (release before
 // the hand-off, acquire where it arrives), on the same object Qt synchronises on; in builds
-// without TSan they are plain QMetaObject::invokeMethod and QThread::isFinished().
+// without TSan they are plain QMetaObject::invokeMethod and QThread::wait().
 #include <QMetaObject>
 #include <QObject>
 #include <QThread>
@@ -29,23 +29,19 @@
 
 namespace prisca::devices {
 
+#ifdef PRISCA_TSAN
 /// Everything this thread did so far happens before a later happensAfter(token) on any thread.
 inline void happensBefore(const void* token) {
-#ifdef PRISCA_TSAN
     __tsan_release(const_cast<void*>(token));
-#else
-    (void)token;
-#endif
 }
-
 /// Everything done before a happensBefore(token) happens before what this thread does next.
 inline void happensAfter(const void* token) {
-#ifdef PRISCA_TSAN
     __tsan_acquire(const_cast<void*>(token));
-#else
-    (void)token;
-#endif
 }
+#else
+inline void happensBefore(const void*) {}
+inline void happensAfter(const void*) {}
+#endif
 
 /// Runs f on receiver's thread, queued (Qt::QueuedConnection): f and what the caller wrote before
 /// posting happen before f runs, as Qt's posted-event queue (a mutex per receiving thread)
@@ -69,19 +65,22 @@ void postTo(QObject* receiver, F&& f) {
 }
 
 /// Call once on a worker thread before starting it: the end of its run is marked, so that
-/// joined() can order everything the thread did before what its owner does next.
+/// endWorkerThread() can order everything the thread did before the worker is deleted.
 inline void markThreadEnd(QThread& thread) {
     QObject::connect(&thread, &QThread::finished, [t = &thread] { happensBefore(t); });
 }
 
-/// After thread.wait(): whether the thread has ended; if so, everything it did happens before
-/// what the caller does next (deleting its worker object, say).
-inline bool joined(QThread& thread) {
+/// Ends a worker's thread: quits its event loop, waits up to waitMs for it to end, then deletes
+/// worker, after everything the thread did (TSan is told). A thread still running after waitMs
+/// keeps its worker: left alone rather than deleted under it.
+inline void endWorkerThread(QThread& thread, QObject* worker, unsigned long waitMs) {
+    thread.quit();
+    thread.wait(waitMs);
     if (!thread.isFinished()) {
-        return false;
+        return;
     }
     happensAfter(&thread);
-    return true;
+    delete worker;
 }
 
 }  // namespace prisca::devices

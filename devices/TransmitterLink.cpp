@@ -1,7 +1,6 @@
 #include "devices/TransmitterLink.h"
 
 #include "devices/ThreadHandOff.h"
-
 #include "devices/ThreadPriority.h"
 
 #include <QLoggingCategory>
@@ -54,37 +53,31 @@ TransmitterLink::TransmitterLink(QObject* parent)
     thread_.setObjectName(QStringLiteral("prisca-link"));
     worker_->moveToThread(&thread_);
     connect(worker_, &TransmitterLinkWorker::statusChanged, this, &TransmitterLink::statusChanged);
-    devices::markThreadEnd(thread_);
+    markThreadEnd(thread_);
     thread_.start();
     // Frames are written on this thread: ahead of other programs' work.
-    devices::postTo(worker_, [] { raiseCurrentThreadPriority(); });
+    postTo(worker_, [] { raiseCurrentThreadPriority(); });
 }
 
 TransmitterLink::~TransmitterLink() {
     // Failsafe first, so the last frame the far end sees is neutral, then close.
     worker_->emergency.store(true);
     QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::BlockingQueuedConnection);
-    thread_.quit();
-    thread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(thread_)) {
-        delete worker_;
-    }
+    endWorkerThread(thread_, worker_, kShutdownWaitMs);
 }
 
 void TransmitterLink::start(const LinkSettings& settings) {
-    devices::postTo(worker_, [w = worker_, settings] { w->start(settings); });
+    postTo(worker_, [w = worker_, settings] { w->start(settings); });
 }
 
 void TransmitterLink::stop() {
-    devices::postTo(worker_, [w = worker_] { w->stop(); });
+    postTo(worker_, [w = worker_] { w->stop(); });
 }
 
 void TransmitterLink::setCommand(const ChannelPulses& pulses) {
     worker_->setCommand(pulses);
     if (worker_->sendOnCommand.load()) {
-        devices::postTo(worker_, [w = worker_] { w->sendNow(); });
+        postTo(worker_, [w = worker_] { w->sendNow(); });
     }
 }
 

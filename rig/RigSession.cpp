@@ -1,11 +1,10 @@
 #include "rig/RigSession.h"
 
-#include "devices/ThreadHandOff.h"
-
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
 #include "devices/LedTracker.h"
 #include "devices/RigLoop.h"
+#include "devices/ThreadHandOff.h"
 #include "rigsim/VirtualCar.h"
 #include "sim/DemonstrationRecorder.h"
 #include "sim/EpisodeRunner.h"
@@ -108,13 +107,7 @@ RigSession::~RigSession() {
             recorder_.reset();  // flushed and closed; its ".part" file stays
         },
         Qt::BlockingQueuedConnection);
-    workerThread_.quit();
-    workerThread_.wait(kShutdownWaitMs);
-    // Deleted here, after its thread has ended (so every write it made is ordered before this,
-    // devices::joined tells ThreadSanitizer so); left alone if the thread has not ended in time.
-    if (devices::joined(workerThread_)) {
-        delete worker_;
-    }
+    devices::endWorkerThread(workerThread_, worker_, kShutdownWaitMs);
     link_.stop();
 }
 

@@ -23,6 +23,12 @@
 
 namespace {
 
+// A pty for a CLI's link whose ends the CLI does not inherit: closing them unplugs it for good.
+bool keptFromChildren(const Pty& pty) {
+    return pty.master >= 0 && fcntl(pty.master, F_SETFD, FD_CLOEXEC) == 0 &&
+           fcntl(pty.slave, F_SETFD, FD_CLOEXEC) == 0;
+}
+
 struct CliResult {
     int exitCode = -1;
     QString out;
@@ -431,10 +437,7 @@ class TestCliCommands : public QObject {
         QFETCH(int, signal);
         QFETCH(bool, unplugFirst);
         Pty pty;
-        QVERIFY(pty.master >= 0);
-        // Not inherited by the CLI: an unplug must close the far end for good.
-        fcntl(pty.master, F_SETFD, FD_CLOEXEC);
-        fcntl(pty.slave, F_SETFD, FD_CLOEXEC);
+        QVERIFY(keptFromChildren(pty));
         QTemporaryDir ports;
         const QString port = ports.filePath("ttyRC");  // a stable path, as udev gives
         QVERIFY(QFile::link(pty.path, port));
@@ -504,9 +507,7 @@ class TestCliCommands : public QObject {
     // and a new one appears behind the same path; frames resume on it.
     void link_resumesAfterUnplugAndReplug() {
         auto first = std::make_unique<Pty>();
-        QVERIFY(first->master >= 0);
-        fcntl(first->master, F_SETFD, FD_CLOEXEC);
-        fcntl(first->slave, F_SETFD, FD_CLOEXEC);
+        QVERIFY(keptFromChildren(*first));
         QTemporaryDir ports;
         const QString port = ports.filePath("ttyRC");
         QVERIFY(QFile::link(first->path, port));
@@ -524,9 +525,7 @@ class TestCliCommands : public QObject {
         first.reset();  // unplugged: the device node goes with the cable
         QFile::remove(port);
         Pty second;
-        QVERIFY(second.master >= 0);
-        fcntl(second.master, F_SETFD, FD_CLOEXEC);
-        fcntl(second.slave, F_SETFD, FD_CLOEXEC);
+        QVERIFY(keptFromChildren(second));
         QElapsedTimer sincePlug;
         sincePlug.start();
         QVERIFY(QFile::link(second.path, port));

@@ -185,17 +185,18 @@ class TestGuiRun : public QObject {
             w.find<QLabel>("recordStatus")->text().contains(QLatin1String("throttle 1.00")),
             qPrintable(w.find<QLabel>("recordStatus")->text()));
         QVERIFY(w.find<QLabel>("recordStatus")->text().contains(QLatin1String("no brakes")));
-        // Full throttle for 0.6 s of the recording's own time (not the wall clock's).
-        double recorded = 0.0;
-        const QMetaObject::Connection seen =
-            QObject::connect(panel, &RecordPanel::samplesReady, panel,
-                             [&recorded](const QVector<prisca::app::LiveSample>& samples) {
-                                 if (!samples.isEmpty()) {
-                                     recorded = samples.back().time;
-                                 }
-                             });
-        const double throttleFrom = recorded;
-        QTRY_VERIFY_WITH_TIMEOUT(recorded >= throttleFrom + 0.6, 30000);
+        // Full throttle for 0.6 s of the recording's own time (not the wall clock's), counted
+        // from the first samples that arrive now.
+        double throttleFrom = -1.0, recorded = -1.0;
+        const QMetaObject::Connection seen = QObject::connect(
+            panel, &RecordPanel::samplesReady, panel,
+            [&](const QVector<prisca::app::LiveSample>& samples) {
+                if (!samples.isEmpty()) {
+                    throttleFrom = throttleFrom < 0.0 ? samples.front().time : throttleFrom;
+                    recorded = samples.back().time;
+                }
+            });
+        QTRY_VERIFY_WITH_TIMEOUT(throttleFrom >= 0.0 && recorded >= throttleFrom + 0.6, 30000);
         QObject::disconnect(seen);
         QTest::keyPress(&w.window, Qt::Key_A);
         QTRY_VERIFY(panel->input()[1] > 0.5);
