@@ -1,0 +1,108 @@
+cmake_minimum_required(VERSION 3.24)
+# Fails when a relative link or image in the documentation points at a file that does not exist,
+# or when README.md is longer than a front door should be.
+# Checked: README.md, docs/*.md, devices/README.md. A link is [text](target) or ![alt](target),
+# or a reference definition "[label]: target"; targets with a scheme (https:, mailto:, ...) and
+# pure #anchors are skipped, a #anchor suffix is stripped, and the rest is resolved against the
+# directory of the file that holds it ("/..." against the source directory). Fenced code blocks
+# and inline code are not read.
+# Run by CTest as: cmake -DSOURCE_DIR=... -P check_doc_links.cmake
+set(max_readme_lines 150)
+
+if(NOT SOURCE_DIR)
+    message(FATAL_ERROR "check_doc_links.cmake: give the source directory with -DSOURCE_DIR=...")
+endif()
+get_filename_component(SOURCE_DIR "${SOURCE_DIR}" ABSOLUTE)
+
+set(readme "${SOURCE_DIR}/README.md")
+if(NOT EXISTS "${readme}")
+    message(FATAL_ERROR "${readme}: missing")
+endif()
+file(GLOB docs "${SOURCE_DIR}/docs/*.md")
+list(SORT docs)
+set(files "${readme}" ${docs})
+if(EXISTS "${SOURCE_DIR}/devices/README.md")
+    list(APPEND files "${SOURCE_DIR}/devices/README.md")
+endif()
+
+# README.md's length, counted as wc -l does (a last line without a newline counts too).
+file(READ "${readme}" text)
+string(REGEX MATCHALL "\n" newlines "${text}")
+list(LENGTH newlines readme_lines)
+if(NOT text STREQUAL "" AND NOT text MATCHES "\n$")
+    math(EXPR readme_lines "${readme_lines} + 1")
+endif()
+set(problems "")
+if(readme_lines GREATER max_readme_lines)
+    string(APPEND problems "\n  README.md: ${readme_lines} lines, at most ${max_readme_lines} (move the detail to docs/)")
+endif()
+
+set(checked 0)
+foreach(path IN LISTS files)
+    file(RELATIVE_PATH shown "${SOURCE_DIR}" "${path}")
+    get_filename_component(dir "${path}" DIRECTORY)
+    file(READ "${path}" text)
+    # CMake lists split on ';' except inside [...]: take both out of the way before splitting the
+    # text into lines, and match the placeholders instead.
+    string(REPLACE "\r" "" text "${text}")
+    string(REPLACE ";" "<SEMICOLON>" text "${text}")
+    string(REPLACE "[" "<LB>" text "${text}")
+    string(REPLACE "]" "<RB>" text "${text}")
+    string(REPLACE "\n" ";" lines "${text}")
+    set(number 0)
+    set(fenced FALSE)
+    foreach(line IN LISTS lines)
+        math(EXPR number "${number} + 1")
+        if(line MATCHES "^[ \t]*(```|~~~)")
+            if(fenced)
+                set(fenced FALSE)
+            else()
+                set(fenced TRUE)
+            endif()
+            continue()
+        endif()
+        if(fenced)
+            continue()
+        endif()
+        string(REGEX REPLACE "`[^`]*`" "" line "${line}")
+        # Inline links and images: <RB>(target) after the text or alt in brackets.
+        string(REGEX MATCHALL "<RB>\\([^)]*\\)" found "${line}")
+        set(targets "")
+        foreach(match IN LISTS found)
+            string(REGEX REPLACE "^<RB>\\((.*)\\)$" "\\1" target "${match}")
+            list(APPEND targets "${target}")
+        endforeach()
+        # Reference definitions: [label]: target
+        if(line MATCHES "^[ \t]*<LB>[^<]+<RB>:[ \t]+([^ \t]+)")
+            list(APPEND targets "${CMAKE_MATCH_1}")
+        endif()
+        foreach(target IN LISTS targets)
+            string(STRIP "${target}" target)
+            string(REGEX REPLACE "^<(.*)>$" "\\1" target "${target}")     # <target>
+            string(REGEX REPLACE "[ \t]+\".*\"$" "" target "${target}")   # target "title"
+            string(REPLACE "<SEMICOLON>" ";" link "${target}")
+            string(REPLACE "<LB>" "[" link "${link}")
+            string(REPLACE "<RB>" "]" link "${link}")
+            if(target STREQUAL "" OR target MATCHES "^#" OR target MATCHES "^[A-Za-z][A-Za-z0-9+.-]*:")
+                continue()  # an anchor in the same file, or a URL (https:, mailto:, ...)
+            endif()
+            string(REGEX REPLACE "#.*$" "" file_part "${link}")
+            string(REPLACE "%20" " " file_part "${file_part}")
+            if(file_part MATCHES "^/")
+                set(resolved "${SOURCE_DIR}${file_part}")
+            else()
+                set(resolved "${dir}/${file_part}")
+            endif()
+            math(EXPR checked "${checked} + 1")
+            if(NOT EXISTS "${resolved}")
+                string(APPEND problems "\n  ${shown}:${number}: broken link '${link}' (no ${file_part})")
+            endif()
+        endforeach()
+    endforeach()
+endforeach()
+
+list(LENGTH files file_count)
+if(NOT problems STREQUAL "")
+    message(FATAL_ERROR "The documentation has problems:${problems}")
+endif()
+message(STATUS "${checked} relative links in ${file_count} files lead to files that exist; README.md has ${readme_lines} lines (at most ${max_readme_lines})")
