@@ -20,30 +20,26 @@ void ExperimentWorker::run(const ExperimentRequest& request) {
     try {
         if (request.kind == ExperimentRequest::Kind::Table1) {
             sim::Table1Settings settings;
-            settings.plant = request.plant;
             settings.trials = request.trials;
-            settings.seed = request.seed;
-            settings.threads = request.threads;
+            settings.run = request.settings;
             settings.keepPaths = true;  // for Fig. 7
             settings.cancelled = [this] { return cancelled_.load(); };
             settings.progress = report;
-            auto result = std::make_shared<sim::Table1Result>(
-                sim::runTable1(settings, request.demonstration, request.profile, request.fittedB));
+            auto result =
+                std::make_shared<sim::Table1Result>(sim::runTable1(settings, request.task));
             emit table1Finished(result);
         } else {
             sim::LearningCurveSettings settings;
-            settings.plant = request.plant;
-            settings.runs = request.trials;
-            settings.seed = request.seed;
+            settings.runs = request.runs;
             settings.budgetSteps = request.budgetSteps;
-            settings.threads = request.threads;
+            settings.run = request.settings;
             settings.cancelled = [this] { return cancelled_.load(); };
             settings.progress = report;
-            const auto curves = sim::runLearningCurves(settings, request.demonstration,
-                                                       request.profile, request.fittedB);
+            const auto curves = sim::runLearningCurves(settings, request.task);
+            const core::Demonstration& demonstration = *request.task.demonstration;
             auto summaries = std::make_shared<std::vector<sim::CurveSummary>>(
-                sim::summarizeCurves(curves, request.demonstration->length(), request.budgetSteps,
-                                     request.demonstration->dt));
+                sim::summarizeCurves(curves, demonstration.length(), request.budgetSteps,
+                                     demonstration.dt));
             emit curvesFinished(summaries, cancelled_.load());
         }
     } catch (const std::exception& e) {

@@ -3,6 +3,8 @@
 #include "core/Demonstration.h"
 #include "sim/LearningCurveExperiment.h"
 #include "sim/PlantProfile.h"
+#include "sim/RunSetup.h"
+#include "sim/Task.h"
 #include "sim/Table1Experiment.h"
 
 #include <Eigen/Core>
@@ -18,14 +20,11 @@ namespace prisca::app {
 struct ExperimentRequest {
     enum class Kind { Table1, LearningCurves };
     Kind kind = Kind::Table1;
-    QString plant;
-    sim::PlantProfile profile;
-    std::shared_ptr<const core::Demonstration> demonstration;
-    Eigen::MatrixXd fittedB;
-    int trials = 20;  ///< Table I: trials per method; curves: runs per method
-    std::uint64_t seed = 1;
-    long long budgetSteps = 64000;  ///< curves: simulated steps per run
-    int threads = 2;
+    sim::Task task;                 ///< the demonstration, its plant, profile and fit
+    int trials = 20;                ///< Table I: evaluation trials per method
+    int runs = 20;                  ///< learning curves: independent runs per method
+    long long budgetSteps = 64000;  ///< learning curves: simulated steps per run
+    sim::RunSettings settings;      ///< seed, levels, training trials, threads
 };
 
 /// Table I or the learning curves in the background (the same experiments as prisca-cli

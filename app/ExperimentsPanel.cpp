@@ -184,14 +184,11 @@ void ExperimentsPanel::start() {
                "slide-car or the aircraft as the target."));
         return;
     }
-    request.plant = session_.plant();
-    request.profile = session_.profile();
-    request.demonstration = session_.demonstration();
-    request.fittedB = session_.fit().b;
-    request.trials = count_->value();
-    request.seed = static_cast<std::uint64_t>(seed_->value());
+    request.task = session_.task();
+    request.trials = request.runs = count_->value();
+    request.settings.seed = static_cast<std::uint64_t>(seed_->value());
     request.budgetSteps = budget_->value();
-    request.threads = std::max(1, QThread::idealThreadCount());
+    request.settings.threads = std::max(1, QThread::idealThreadCount());
     QSettings settings;
     settings.setValue("experiments/kind", kind_->currentIndex());
     settings.setValue("experiments/count", count_->value());

@@ -297,15 +297,7 @@ bool RigPanel::runTrial() {
         return false;
     }
     rig::TrialRequest request;
-    request.method = session_.method();
-    request.createController = [this] {
-        return sim::MethodCatalog::create(session_.method(), session_.profile(),
-                                          session_.demonstration(), session_.fit().b);
-    };
-    request.plant = profile.info;
-    request.demonstration = session_.demonstration();
-    request.settleTime = profile.settleTime;
-    request.lostTrackDistance = profile.lostTrackDistance;
+    request.setup = std::make_shared<const sim::RunSetup>(session_.task(), session_.method());
     QString error;
     if (!rig_.startTrial(request, &error)) {
         trialInfo_->setText(error);

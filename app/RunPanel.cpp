@@ -246,15 +246,12 @@ void RunPanel::startRun() {
     settings.endGroup();
 
     RunRequest request;
-    request.plant = session_.plant();
+    request.task = session_.task();
     request.method = session_.method();
-    request.profile = session_.profile();
-    request.demonstration = session_.demonstration();
-    request.fittedB = session_.fit().b;
     request.trials = trials_->value();
-    request.seed = static_cast<std::uint64_t>(seed_->value());
-    request.perturbation = perturbation_->value();
-    request.sensor = sensor_->value();
+    request.settings.seed = static_cast<std::uint64_t>(seed_->value());
+    request.settings.perturbation = perturbation_->value();
+    request.settings.sensor = sensor_->value();
     request.demonstrationSource = session_.demonstrationSource().isEmpty()
                                       ? QStringLiteral("scripted %1, seed %2")
                                             .arg(session_.scriptedStyle())

@@ -44,26 +44,17 @@ void RunWorker::start(const RunRequest& request) {
     cancelTraining_.store(false);
     request_ = request;
     try {
-        plant_ = sim::PlantCatalog::create(request_.plant);
-        episode_ = request_.profile.episode(*request_.demonstration, request_.perturbation,
-                                            request_.sensor);
-
+        // The same set-up as `prisca-cli run`: the plant at the demonstration's period, the
+        // trials' seeds, the training, the run log.
+        setup_.emplace(request_.task, request_.method, request_.settings);
+        plant_ = setup_->makePlant();
         // Offline methods train first, on seeds the run never uses.
-        sim::TrainingSetup training;
-        training.plant = request_.plant;
-        training.profile = request_.profile;
-        training.demonstration = request_.demonstration;
-        training.fittedB = request_.fittedB;
-        training.episode = episode_;
-        training.seeds = sim::trainingSeeds(request_.seed, request_.trainingTrials);
-        training.threads = 1;
-        training.cancelled = [this] { return cancelTraining_.load() || emergency_.load(); };
-        training.progress = [this](const QString& text) { emit progress(text); };
-        if (sim::trainsOffline(request_.method)) {
+        if (setup_->method().trainsOffline()) {
             setPhase(RunPhase::Training);
         }
-        controller_ =
-            sim::createTrained(request_.method, training, request_.profile.pegasusIterations);
+        controller_ = setup_->makeController(
+            [this] { return cancelTraining_.load() || emergency_.load(); },
+            [this](const QString& text) { emit progress(text); });
         if (!controller_) {  // training cancelled
             if (emergency_.load()) {
                 enterEmergencyStop();
@@ -77,13 +68,7 @@ void RunWorker::start(const RunRequest& request) {
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
         return;
     }
-    runLog_ =
-        sim::startRunLog(plant_->info(), request_.method, request_.demonstration->dt, *controller_);
-    runLog_.metadata.insert(QStringLiteral("seed"), QString::number(request_.seed));
-    runLog_.metadata.insert(QStringLiteral("trials"), QString::number(request_.trials));
-    runLog_.metadata.insert(QStringLiteral("perturbation"), QString::number(request_.perturbation));
-    runLog_.metadata.insert(QStringLiteral("sensor"), QString::number(request_.sensor));
-    runLog_.metadata.insert(QStringLiteral("demonstration"), request_.demonstrationSource);
+    runLog_ = setup_->startRunLog(*controller_, request_.trials, request_.demonstrationSource);
     trial_ = 0;
     runTimeOffset_ = 0.0;
     stepsTaken_.store(0);
@@ -93,8 +78,7 @@ void RunWorker::start(const RunRequest& request) {
 }
 
 void RunWorker::beginTrial() {
-    sim::setTrial(episode_, request_.seed, trial_);
-    stepper_ = std::make_unique<sim::EpisodeStepper>(*plant_, *controller_, episode_);
+    stepper_ = std::make_unique<sim::EpisodeStepper>(*plant_, *controller_, setup_->trial(trial_));
     emit progress(tr("Trial %1 of %2").arg(trial_ + 1).arg(request_.trials));
     repace();
     flushClock_.start();
@@ -148,7 +132,7 @@ void RunWorker::tick() {
         sample.theta = record.parameters;
         sample.referenceIndex = record.referenceIndex;
         sample.cost = record.cost;
-        sample.trackedError = sim::trackedError(request_.profile.info, *request_.demonstration,
+        sample.trackedError = sim::trackedError(request_.task.profile.info, *request_.task.demonstration,
                                                 record.state, sample.step);
         sample.wind = plant_->windVelocity();
         pending_.push_back(std::move(sample));
@@ -162,8 +146,8 @@ void RunWorker::endTrial() {
     flushSamples();
     const sim::EpisodeResult result = stepper_->takeResult();
     const sim::TrialSummary summary =
-        sim::summarizeTrial(request_.profile.info, *request_.demonstration, result);
-    sim::appendRunLogTrial(runLog_, trial_, result, request_.demonstration->dt);
+        sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
+    sim::appendRunLogTrial(runLog_, trial_, result, request_.task.demonstration->dt);
     emit trialFinished(trial_, summary);
     runTimeOffset_ += result.duration;
     ++trial_;
@@ -209,7 +193,7 @@ void RunWorker::stop() {
         if (stepper_ && stepper_->stepCount() > 0) {
             const sim::EpisodeResult result = stepper_->takeResult();
             sim::TrialSummary summary =
-                sim::summarizeTrial(request_.profile.info, *request_.demonstration, result);
+                sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
             summary.complete = false;  // stopped part-way: reported, and marked as such
             emit trialFinished(trial_, summary);
         }

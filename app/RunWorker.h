@@ -4,6 +4,7 @@
 #include "core/RunLogCsv.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/PlantProfile.h"
+#include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
 #include <Eigen/Core>
@@ -30,16 +31,10 @@ namespace prisca::app {
 /// Everything a run needs, copied by value into the worker thread (plain data; the
 /// demonstration is shared read-only).
 struct RunRequest {
-    QString plant;   ///< sim::PlantCatalog name
-    QString method;  ///< sim::MethodCatalog id
-    sim::PlantProfile profile;
-    std::shared_ptr<const core::Demonstration> demonstration;
-    Eigen::MatrixXd fittedB;      ///< B = B_v (.) B~ (m x n)
+    sim::Task task;               ///< the demonstration, its plant, profile and fit
+    QString method;               ///< sim::MethodCatalog id
     int trials = 5;               ///< trials in a row; learners keep learning (warm start)
-    std::uint64_t seed = 1;       ///< seed of the first trial's perturbation and sensor noise
-    double perturbation = 1.0;    ///< plant perturbation level (0 nominal, 1 realistic)
-    double sensor = 1.0;          ///< sensor noise level (0 perfect, 1 realistic)
-    int trainingTrials = 8;       ///< for PD (selected) and PEGASUS, trained before the run
+    sim::RunSettings settings;    ///< seed, levels, training trials (sim::RunSetup's defaults)
     QString demonstrationSource;  ///< for the run log: the file, or the scripted style and seed
 };
 
@@ -126,12 +121,12 @@ class RunWorker : public QObject {
     void repace();
 
     RunRequest request_;
+    std::optional<sim::RunSetup> setup_;
     std::unique_ptr<sim::Plant> plant_;
     std::unique_ptr<core::Controller> controller_;
     core::RunLog runLog_;  // the finished trials of this run
     void emitRunLog();
     std::unique_ptr<sim::EpisodeStepper> stepper_;
-    sim::EpisodeSettings episode_;
     QTimer* timer_;
     QElapsedTimer paceClock_;   ///< wall time since the pace was last anchored
     QElapsedTimer flushClock_;  ///< wall time since samples were last sent

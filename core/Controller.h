@@ -75,12 +75,13 @@ class Controller {
     virtual const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) = 0;
     /// An independent copy in the same state.
     virtual std::unique_ptr<Controller> clone() const = 0;
-    /// How old each observation is when it reaches the controller [control steps] (a camera's
-    /// latency; 0 by default). A controller that compensates compares the observation with the
-    /// reference of the time it was taken and applies the demonstration's action of now (that
-    /// index + age). Takes effect from the next reset(); controllers that track no reference
-    /// ignore it.
-    virtual void setObservationAge(int steps) { (void)steps; }
+    /// Latency compensation: how old each observation is when it reaches the controller
+    /// [control steps] (a camera's latency; 0 by default). A controller that compensates compares
+    /// the observation with the reference of the time it was taken and applies the
+    /// demonstration's action of now (that index + the latency). Takes effect from the next
+    /// reset(); controllers that track no reference ignore it. The simulation and the rig both
+    /// set it from EpisodeSettings::compensatedLatencySteps().
+    virtual void setLatencyCompensation(int steps) { (void)steps; }
     /// The learned policy parameters theta (p x m) for logging and plotting, or nullptr for a
     /// controller that learns nothing.
     virtual const Eigen::MatrixXd* learnedParameters() const { return nullptr; }

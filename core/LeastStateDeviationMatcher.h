@@ -42,10 +42,11 @@ class LeastStateDeviationMatcher {
 
     /// Back to the start of the demonstration.
     void reset();
-    /// The observations' age [steps] >= 0: time-driven matching returns j_k = k - age (the
-    /// sample of the time the observation was taken) and maxLag counts from there.
-    void setAge(int steps) { age_ = std::max(0, steps); }
-    int age() const { return age_; }
+    /// The sensor latency compensated [steps] >= 0: time-driven matching returns
+    /// j_k = k - latency (the sample of the time the observation was taken) and maxLag counts
+    /// from there.
+    void setLatency(int steps) { latency_ = std::max(0, steps); }
+    int latency() const { return latency_; }
     /// The reference index for the next observation (call once per control step).
     int match(const Eigen::Ref<const Eigen::VectorXd>& state);
     /// The last index returned by match(), -1 before the first call.
@@ -66,7 +67,7 @@ class LeastStateDeviationMatcher {
     MatchingParameters parameters_;
     int last_ = -1;
     int step_ = 0;
-    int age_ = 0;
+    int latency_ = 0;
 };
 
 }  // namespace prisca::core

@@ -28,9 +28,9 @@ class PdController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
-    void setObservationAge(int steps) override {
-        age_ = std::max(0, steps);
-        matcher_.setAge(age_);
+    void setLatencyCompensation(int steps) override {
+        latency_ = std::max(0, steps);
+        matcher_.setLatency(latency_);
     }
 
     const PdParameters& parameters() const { return feedback_.parameters(); }
@@ -44,7 +44,7 @@ class PdController : public Controller {
     PdFeedback feedback_;
     ControlStep record_;
     int step_ = 0;
-    int age_ = 0;  // observations' age compensated [steps]
+    int latency_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

@@ -111,9 +111,9 @@ void PriscaController::setModelValidity(std::vector<bool> valid) {
     modelValid_ = std::move(valid);
 }
 
-void PriscaController::setObservationAge(int steps) {
-    age_ = parameters_.compensateAge ? std::max(0, steps) : 0;
-    matcher_.setAge(age_);
+void PriscaController::setLatencyCompensation(int steps) {
+    latency_ = parameters_.compensateLatency ? std::max(0, steps) : 0;
+    matcher_.setLatency(latency_);
 }
 
 void PriscaController::setDrift(const Eigen::MatrixXd& a) {
@@ -349,7 +349,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     // The demonstration's action of now: the observation's sample plus its age (less at the
     // start, before the observations had any age to show).
     record_.referenceAction = referenceActions_.col(
-        std::min(j + std::min(age_, k), static_cast<int>(referenceActions_.cols()) - 1));
+        std::min(j + std::min(latency_, k), static_cast<int>(referenceActions_.cols()) - 1));
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     if (parameters_.prior.kp.size() != 0) {

@@ -236,7 +236,8 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     if (const QString missing = notReady(); !missing.isEmpty()) {
         return fail(missing);
     }
-    if (!request.demonstration || request.demonstration->length() == 0 || !request.plant.pose) {
+    if (!request.setup || request.setup->task().demonstration->length() == 0 ||
+        !request.setup->profile().info.pose) {
         return fail(tr("The rig needs a demonstration of a planar vehicle."));
     }
     std::lock_guard<std::mutex> lock(mutex_);
@@ -248,15 +249,22 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         return fail(tr("Stop driving first."));
     }
     // One loop per method: learners keep what they learnt from trial to trial (warm start).
-    if (!l.loop || l.stale || l.method != request.method) {
-        std::unique_ptr<core::Controller> controller = request.createController();
-        if (!controller) {
-            return fail(tr("%1 could not be set up.").arg(request.method));
+    const sim::RunSetup& setup = *request.setup;
+    const QString& method = setup.method().id;
+    if (!l.loop || l.stale || l.method != method) {
+        std::unique_ptr<core::Controller> controller;
+        try {
+            controller = setup.makeUntrainedController();
+        } catch (const std::exception& e) {
+            return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));
         }
+        // Latency compensation as in simulation (EpisodeStepper does the same), from the run's
+        // set-up: the sensor latency the profile assumes for the camera.
+        controller->setLatencyCompensation(setup.episode().compensatedLatencySteps());
         l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
                                                     std::move(controller), channels_, link_);
-        l.loop->setLostTrackDistance(request.lostTrackDistance);
-        l.method = request.method;
+        l.loop->setLostTrackDistance(setup.profile().lostTrackDistance);
+        l.method = method;
         l.stale = false;
         l.trials = 0;
     }
@@ -265,16 +273,16 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         car_->requestReset(request.virtualSeed != 0 ? request.virtualSeed
                                                     : static_cast<std::uint64_t>(l.trials + 1));
     }
-    const core::Demonstration& demo = *request.demonstration;
-    l.trialSeconds = demo.length() * demo.dt + request.settleTime;
+    const core::Demonstration& demo = *setup.task().demonstration;
+    l.trialSeconds = demo.length() * demo.dt + setup.profile().settleTime;
     l.trialStartNs = -1;
     l.lastFrameNs = -1;
     l.frames = 0;
     l.framesWithPose = 0;
     l.latencyMs.clear();
     l.lastTrackedPose.reset();
-    l.plant = request.plant;
-    l.demonstration = request.demonstration;
+    l.plant = setup.profile().info;
+    l.demonstration = setup.task().demonstration;
     l.running = true;
     ++l.trials;
     return true;

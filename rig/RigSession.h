@@ -8,6 +8,7 @@
 #include "devices/FloorCalibration.h"
 #include "devices/TransmitterLink.h"
 #include "sim/Plant.h"
+#include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
 #include <QMetaType>
@@ -48,13 +49,11 @@ struct CameraRequest {
 
 /// One trial on the rig.
 struct TrialRequest {
-    QString method;  ///< a MethodCatalog id; a new method gets a new loop
-    /// Builds the method's controller (called only when a new loop is needed).
-    std::function<std::unique_ptr<core::Controller>()> createController;
-    sim::PlantInfo plant;                                      ///< the target (a planar vehicle)
-    std::shared_ptr<const core::Demonstration> demonstration;  ///< its length and its lot
-    double settleTime = 0.0;         ///< after the demonstration's length [s]
-    double lostTrackDistance = 0.0;  ///< the loop's lost-track failsafe [m] (0: none)
+    /// The run, set up as in simulation (sim::RunSetup): its method (a new method gets a new
+    /// loop, its controller made untrained), the target (a planar vehicle), the demonstration
+    /// (its length and its lot), the settle time after it, the lost-track failsafe distance and
+    /// the latency the controller compensates.
+    std::shared_ptr<const sim::RunSetup> setup;
     /// The virtual car's seed for this trial (its start, friction, gains); 0: the trial number.
     std::uint64_t virtualSeed = 0;
 };

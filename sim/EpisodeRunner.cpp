@@ -31,8 +31,7 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
         aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
     }
     // The sensor's latency is known to the loop (on the rig: the frames' timestamps).
-    controller_.setObservationAge(
-        settings_.compensateObservationAge ? settings_.measurement.latencySteps : 0);
+    controller_.setLatencyCompensation(settings_.compensatedLatencySteps());
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
 }

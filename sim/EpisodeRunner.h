@@ -22,14 +22,20 @@ struct EpisodeSettings {
     /// (negative: never end early).
     double stopAtRestAfter = -1.0;
     core::ResetMode resetMode = core::ResetMode::Cold;  ///< how the controller starts the trial
-    /// Tell the controller how old its observations are (the sensor's latency), so that
-    /// trackers compensate it (Controller::setObservationAge). Off: they see age 0.
-    bool compensateObservationAge = false;
+    /// Latency compensation: tell the controller how old its observations are (the sensor's
+    /// latency), so that trackers compensate it (Controller::setLatencyCompensation). Off: they
+    /// are told 0.
+    bool compensateLatency = false;
     /// Position deviation [m] past which the robot has left the demonstration and the trial
     /// ends in failsafe: zero action (throttle neutral, steering centred) for the rest of it,
     /// the controller no longer stepped (core::LostTrackGuard). 0: never.
     double lostTrackDistance = 0.0;
     bool recordSteps = true;                            ///< keep a StepRecord per control step
+
+    /// The latency the controller compensates [control steps]: the sensor's, if compensated.
+    int compensatedLatencySteps() const {
+        return compensateLatency ? measurement.latencySteps : 0;
+    }
 };
 
 /// One control step of a trial.

@@ -1,11 +1,13 @@
 #include "LearningCurveExperiment.h"
 
+#include "DemonstrationStyles.h"
 #include "MethodCatalog.h"
 #include "ParallelTrials.h"
 #include "PlantCatalog.h"
 #include "TrialMetrics.h"
 #include "core/Pegasus.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -54,9 +56,11 @@ std::vector<double> resampleCurve(const std::vector<CurvePoint>& run,
     return values;
 }
 
-std::vector<MethodCurves> runLearningCurves(
-    const LearningCurveSettings& settings, std::shared_ptr<const core::Demonstration> demonstration,
-    const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
+std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& settings,
+                                            const Task& task) {
+    // One set-up per method: the same trial as everywhere else (the plant at the task's
+    // period, perturbation, sensor with its latency and drops, length).
+    std::vector<RunSetup> setups;
     for (const QString& method : settings.methods) {
         if (!isCurveMethod(method)) {
             throw std::invalid_argument(
@@ -64,26 +68,27 @@ std::vector<MethodCurves> runLearningCurves(
                     .arg(method, curveMethods().join(QLatin1Char(' ')))
                     .toStdString());
         }
+        setups.emplace_back(task, method, settings.run);
     }
-    // The same trial as everywhere else (perturbation, sensor with its latency and drops,
-    // length), from the profile.
-    const EpisodeSettings base =
-        profile.episode(*demonstration, settings.perturbation, settings.sensor);
+    const PlantProfile& profile = task.profile;
+    const std::shared_ptr<const core::Demonstration>& demonstration = task.demonstration;
+    const Eigen::MatrixXd& fittedB = task.fit.b;
 
     const int runs = settings.runs;
     const std::function<std::vector<CurvePoint>(int)> job = [&](int index) {
-        const QString& method = settings.methods[index / runs];
-        const std::uint64_t runSeed = mixSeed(settings.seed, index % runs);
-        auto plant = PlantCatalog::create(settings.plant);
+        const RunSetup& setup = setups[index / runs];
+        const QString& method = setup.method().id;
+        const std::uint64_t runSeed = mixSeed(settings.run.seed, index % runs);
+        auto plant = setup.makePlant();
         const PlantInfo info = plant->info();
         std::vector<CurvePoint> curve;
         long long consumed = 0;
-        if (MethodCatalog::get(method).training == MethodSpec::Training::Pegasus) {
+        if (setup.method().training == MethodSpec::Training::Pegasus) {
             // Fixed scenarios for this run; every rollout is charged to the budget.
             auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
                 auto policy = MethodCatalog::create(method, profile, demonstration, fittedB,
                                                     &theta);
-                EpisodeSettings episode = base;
+                EpisodeSettings episode = setup.episode();
                 episode.seed = mixSeed(runSeed, 1000 + scenario);
                 const EpisodeResult result =
                     runEpisode(*plant, *policy, episode, settings.cancelled);
@@ -102,9 +107,9 @@ std::vector<MethodCurves> runLearningCurves(
                 }
                 // Scored like the online learners: on a fresh trial it never trained on (an
                 // evaluation, so not charged to its budget).
-                auto policy = MethodCatalog::create(QStringLiteral("pegasus"), profile,
-                                                        demonstration, fittedB, &pegasus.theta());
-                EpisodeSettings episode = base;
+                auto policy = MethodCatalog::create(method, profile, demonstration, fittedB,
+                                                    &pegasus.theta());
+                EpisodeSettings episode = setup.episode();
                 episode.seed = mixSeed(runSeed, 5000 + static_cast<std::uint64_t>(curve.size()));
                 const EpisodeResult evaluation =
                     runEpisode(*plant, *policy, episode, settings.cancelled);
@@ -115,12 +120,12 @@ std::vector<MethodCurves> runLearningCurves(
         } else {
             // Online learners carry what they learned into the next trial; the others start
             // every trial afresh (a flat curve to read the learners against).
-            auto controller = MethodCatalog::create(method, profile, demonstration, fittedB);
-            for (int trial = 0; consumed < settings.budgetSteps; ++trial) {
+            auto controller = setup.makeController(settings.cancelled);
+            for (int trial = 0; controller && consumed < settings.budgetSteps; ++trial) {
                 if (settings.cancelled && settings.cancelled()) {
                     break;
                 }
-                EpisodeSettings episode = base;
+                EpisodeSettings episode = setup.episode();
                 setTrial(episode, runSeed, trial);
                 const EpisodeResult result =
                     runEpisode(*plant, *controller, episode, settings.cancelled);
@@ -134,8 +139,8 @@ std::vector<MethodCurves> runLearningCurves(
         return curve;
     };
     const auto all = runParallel<std::vector<CurvePoint>>(
-        static_cast<int>(settings.methods.size()) * runs, settings.threads, job, settings.cancelled,
-        [&](int done, int total) {
+        static_cast<int>(settings.methods.size()) * runs, settings.run.threads, job,
+        settings.cancelled, [&](int done, int total) {
             if (settings.progress &&
                 (done == total || done * 10 / total != (done - 1) * 10 / total)) {
                 settings.progress(QStringLiteral("curve: %1/%2 runs").arg(done).arg(total));
@@ -151,6 +156,73 @@ std::vector<MethodCurves> runLearningCurves(
         curves.push_back(std::move(method));
     }
     return curves;
+}
+
+namespace {
+
+// Adds a cell's runs to each method's runs so far.
+void pool(std::vector<MethodCurves>& into, const std::vector<MethodCurves>& cell) {
+    if (into.empty()) {
+        into = cell;
+        return;
+    }
+    for (size_t m = 0; m < cell.size(); ++m) {
+        into[m].runs.insert(into[m].runs.end(), cell[m].runs.begin(), cell[m].runs.end());
+    }
+}
+
+}  // namespace
+
+LearningCurveProtocolResult runLearningCurveProtocol(
+    const LearningCurveProtocolSettings& settings, const PlantProfile& profile,
+    const std::function<void(int, int, const QString&, std::uint64_t)>& cellStarted) {
+    const QString& plant = profile.info.name;
+    for (const QString& style : settings.styles) {
+        if (!DemonstrationStyles::contains(plant, style)) {
+            throw std::invalid_argument(QStringLiteral("unknown %1 style '%2' (one of: %3)")
+                                            .arg(plant, style,
+                                                 DemonstrationStyles::names(plant).join(' '))
+                                            .toStdString());
+        }
+    }
+    if (settings.styles.isEmpty() || settings.seedSets.empty()) {
+        throw std::invalid_argument("the curves need at least one style and one seed set");
+    }
+    LearningCurveProtocolResult result;
+    result.perStyle.resize(static_cast<size_t>(settings.styles.size()));
+    result.shortestDemonstration = std::numeric_limits<long long>::max();
+    const int cellCount = static_cast<int>(settings.styles.size() * settings.seedSets.size());
+    for (int s = 0; s < settings.styles.size() && !result.cancelled; ++s) {
+        for (std::uint64_t set : settings.seedSets) {
+            if (settings.curves.cancelled && settings.curves.cancelled()) {
+                result.cancelled = true;
+                break;
+            }
+            if (cellStarted) {
+                cellStarted(result.cells + 1, cellCount, settings.styles[s], set);
+            }
+            const Task task =
+                makeTask(profile,
+                         std::make_shared<core::Demonstration>(
+                             DemonstrationStyles::record(plant, settings.styles[s], set)),
+                         settings.fit);
+            LearningCurveSettings cell = settings.curves;
+            cell.run.seed = set;
+            const std::vector<MethodCurves> curves = runLearningCurves(cell, task);
+            if (result.cells == 0) {
+                result.dt = task.demonstration->dt;
+            }
+            ++result.cells;
+            result.shortestDemonstration =
+                std::min<long long>(result.shortestDemonstration, task.demonstration->length());
+            pool(result.pooled, curves);
+            pool(result.perStyle[static_cast<size_t>(s)], curves);
+        }
+    }
+    if (settings.curves.cancelled && settings.curves.cancelled()) {
+        result.cancelled = true;
+    }
+    return result;
 }
 
 std::vector<CurveSummary> summarizeCurves(const std::vector<MethodCurves>& curves, long long unit,

@@ -4,6 +4,8 @@
 
 #include "EpisodeRunner.h"
 #include "PlantProfile.h"
+#include "RunSetup.h"
+#include "Task.h"
 #include "core/Demonstration.h"
 
 #include <Eigen/Core>
@@ -16,14 +18,11 @@ namespace prisca::sim {
 
 /// Learning curves at an equal budget of simulated experience (paper Fig. 3b). Plain data.
 struct LearningCurveSettings {
-    QString plant = QStringLiteral("acrobot");
     QStringList methods = {"prisca", "pgsd", "pegasus"};  ///< curveMethods()
-    int runs = 20;  ///< independent runs per method (run r: seeds from mixSeed(seed, r))
-    std::uint64_t seed = 1;
+    /// Independent runs per method (run r: its trials' seeds from mixSeed(run.seed, r)).
+    int runs = 20;
     long long budgetSteps = 64000;  ///< simulated control steps each run may consume
-    double perturbation = 1.0;      ///< plant perturbation level
-    double sensor = 1.0;            ///< sensor noise level
-    int threads = 2;
+    RunSettings run;                ///< seed, perturbation and sensor levels, threads
     std::function<bool()> cancelled;
     std::function<void(const QString&)> progress;
 };
@@ -51,9 +50,35 @@ struct MethodCurves {
 /// run seed), and after each iteration its policy is scored on a fresh trial it never trained on,
 /// as the online learners are (that evaluation is not charged to its budget). Independent of the
 /// thread count.
-std::vector<MethodCurves> runLearningCurves(
-    const LearningCurveSettings& settings, std::shared_ptr<const core::Demonstration> demonstration,
-    const PlantProfile& profile, const Eigen::MatrixXd& fittedB);
+std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& settings,
+                                            const Task& task);
+
+/// Learning curves on many demonstrations: every method on every cell, a cell being one
+/// demonstration style recorded with one seed set's hand variation and run with that seed.
+struct LearningCurveProtocolSettings {
+    LearningCurveSettings curves;  ///< its run seed is replaced by each seed set's
+    QStringList styles;            ///< demonstration styles of the profile's plant
+    std::vector<std::uint64_t> seedSets;
+    core::ActionMappingFitOptions fit;  ///< how B_v is fitted on each demonstration
+};
+
+/// What the protocol produced: every cell's runs pooled per method, and per style.
+struct LearningCurveProtocolResult {
+    std::vector<MethodCurves> pooled;                   ///< per method, every cell's runs
+    std::vector<std::vector<MethodCurves>> perStyle;    ///< per style (settings order)
+    long long shortestDemonstration = 0;  ///< [samples]: the grid unit of summarizeCurves
+    double dt = 0.0;                      ///< the first cell's control period [s]
+    int cells = 0;                        ///< cells that ran
+    bool cancelled = false;
+};
+
+/// Runs the curves on every (style, seed set) cell in turn, each cell's Task made from the
+/// profile and that cell's demonstration (makeTask). Throws std::invalid_argument for an unknown
+/// style or method, or no cell.
+LearningCurveProtocolResult runLearningCurveProtocol(
+    const LearningCurveProtocolSettings& settings, const PlantProfile& profile,
+    const std::function<void(int cell, int cells, const QString& style, std::uint64_t seed)>&
+        cellStarted = {});
 
 /// Resamples a run onto a common grid of step counts: at each grid point, the error of the most
 /// recent point at or before it (NaN before the first).

@@ -3,16 +3,19 @@
 #include "MethodCatalog.h"
 #include "ParallelTrials.h"
 #include "PlantCatalog.h"
+#include "RunSetup.h"
 #include "TrialMetrics.h"
 #include "core/Pegasus.h"
 #include "core/PriscaController.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace prisca::sim {
 
-core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<double>& kpScales,
+core::PdParameters selectPdGains(const RunSetup& setup, const TrainingHooks& hooks,
+                                 const std::vector<double>& kpScales,
                                  const std::vector<double>& kdScales) {
     struct Candidate {
         double kp, kd;
@@ -23,28 +26,33 @@ core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<d
             grid.push_back({kp, kd});
         }
     }
-    const int seeds = static_cast<int>(setup.seeds.size());
+    const std::vector<std::uint64_t> seedList = setup.trainingSeeds();
+    const int seeds = static_cast<int>(seedList.size());
+    if (seeds == 0) {
+        return setup.profile().pd;
+    }
+    const Task& task = setup.task();
     // One job per (candidate, seed) so both cores stay busy on small grids.
     const std::function<double(int)> job = [&](int index) {
         const Candidate& c = grid[index / seeds];
-        PlantProfile profile = setup.profile;
+        PlantProfile profile = task.profile;
         profile.pd.kp *= c.kp;
         profile.pd.kd *= c.kd;
-        auto plant = PlantCatalog::create(setup.plant);
-        auto controller = MethodCatalog::create(QStringLiteral("pd"), profile,
-                                                    setup.demonstration, setup.fittedB);
-        EpisodeSettings episode = setup.episode;
-        episode.seed = setup.seeds[index % seeds];
-        const EpisodeResult result = runEpisode(*plant, *controller, episode, setup.cancelled);
-        return tuningScore(plant->info(),
-                           summarizeTrial(plant->info(), *setup.demonstration, result));
+        auto plant = setup.makePlant();
+        auto controller = MethodCatalog::create(QStringLiteral("pd"), profile, task.demonstration,
+                                                task.fit.b);
+        EpisodeSettings episode = setup.episode();
+        episode.seed = seedList[index % seeds];
+        episode.recordSteps = false;
+        const EpisodeResult result = runEpisode(*plant, *controller, episode, hooks.cancelled);
+        return tuningScore(plant->info(), summarizeTrial(plant->info(), *task.demonstration, result));
     };
     const std::vector<double> scores = runParallel<double>(
-        static_cast<int>(grid.size()) * seeds, setup.threads, job, setup.cancelled,
+        static_cast<int>(grid.size()) * seeds, setup.settings().threads, job, hooks.cancelled,
         [&](int done, int total) {
             // About ten lines in all, however large the grid.
-            if (setup.progress && (done == total || done * 10 / total != (done - 1) * 10 / total)) {
-                setup.progress(QStringLiteral("pd-selected: grid %1/%2").arg(done).arg(total));
+            if (hooks.progress && (done == total || done * 10 / total != (done - 1) * 10 / total)) {
+                hooks.progress(QStringLiteral("pd-selected: grid %1/%2").arg(done).arg(total));
             }
         });
     // Risk-averse: mean + standard deviation over the training trials, so gains that are good
@@ -68,39 +76,49 @@ core::PdParameters selectPdGains(const TrainingSetup& setup, const std::vector<d
             chosen = grid[g];
         }
     }
-    core::PdParameters gains = setup.profile.pd;
+    core::PdParameters gains = task.profile.pd;
     gains.kp *= chosen.kp;
     gains.kd *= chosen.kd;
     return gains;
 }
 
-PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations) {
-    const int scenarios = static_cast<int>(setup.seeds.size());
+PegasusTraining trainPegasus(const RunSetup& setup, int iterations, const TrainingHooks& hooks) {
+    const Task& task = setup.task();
+    std::vector<std::uint64_t> seeds = setup.trainingSeeds();
+    if (static_cast<int>(seeds.size()) > task.profile.pegasus.scenarios) {
+        seeds.resize(static_cast<size_t>(std::max(1, task.profile.pegasus.scenarios)));
+    }
+    const int scenarios = static_cast<int>(seeds.size());
+    PegasusTraining training;
+    if (scenarios == 0) {
+        training.theta = Eigen::MatrixXd::Zero(task.profile.features.featureCount(),
+                                               task.profile.features.channelCount());
+        return training;
+    }
     auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
-        auto plant = PlantCatalog::create(setup.plant);
-        auto policy = MethodCatalog::create(QStringLiteral("pegasus"), setup.profile,
-                                                setup.demonstration, setup.fittedB, &theta);
-        EpisodeSettings episode = setup.episode;
-        episode.seed = setup.seeds[scenario];
+        auto plant = setup.makePlant();
+        auto policy = MethodCatalog::create(QStringLiteral("pegasus"), task.profile,
+                                            task.demonstration, task.fit.b, &theta);
+        EpisodeSettings episode = setup.episode();
+        episode.seed = seeds[scenario];
         episode.recordSteps = false;
-        const EpisodeResult result = runEpisode(*plant, *policy, episode, setup.cancelled);
+        const EpisodeResult result = runEpisode(*plant, *policy, episode, hooks.cancelled);
         return core::EpisodeOutcome{result.meanCost, result.stepCount};
     };
-    core::PegasusParameters parameters = setup.profile.pegasus;
+    core::PegasusParameters parameters = task.profile.pegasus;
     parameters.scenarios = scenarios;
-    const Eigen::MatrixXd start = Eigen::MatrixXd::Zero(setup.profile.features.featureCount(),
-                                                        setup.profile.features.channelCount());
+    const Eigen::MatrixXd start = Eigen::MatrixXd::Zero(task.profile.features.featureCount(),
+                                                        task.profile.features.channelCount());
     core::Pegasus pegasus(rollout, start, parameters);
-    PegasusTraining training;
     for (int i = 0; i < iterations; ++i) {
-        const auto iteration = pegasus.iterate(setup.cancelled);
+        const auto iteration = pegasus.iterate(hooks.cancelled);
         if (!iteration) {
             break;
         }
         training.costs.push_back(iteration->cost);
         training.steps.push_back(iteration->stepsConsumed);
-        if (setup.progress) {
-            setup.progress(QStringLiteral("pegasus: iteration %1/%2, cost %3")
+        if (hooks.progress) {
+            hooks.progress(QStringLiteral("pegasus: iteration %1/%2, cost %3")
                                .arg(i + 1)
                                .arg(iterations)
                                .arg(iteration->cost, 0, 'g', 4));
@@ -121,31 +139,6 @@ std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count) {
 
 bool trainsOffline(const QString& method) {
     return MethodCatalog::get(method).trainsOffline();
-}
-
-std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
-                                                int pegasusIterations) {
-    PlantProfile profile = setup.profile;
-    Eigen::MatrixXd pegasusTheta;
-    if (trainsOffline(method)) {
-        TrainingSetup training = setup;
-        training.episode.recordSteps = false;
-        switch (MethodCatalog::get(method).training) {
-            case MethodSpec::Training::Pegasus:
-                pegasusTheta = trainPegasus(training, pegasusIterations).theta;
-                break;
-            case MethodSpec::Training::SelectPdGains:
-                profile.pd = selectPdGains(training);
-                break;
-            case MethodSpec::Training::None:
-                break;
-        }
-        if (setup.cancelled && setup.cancelled()) {
-            return nullptr;
-        }
-    }
-    return MethodCatalog::create(method, profile, setup.demonstration, setup.fittedB,
-                                     pegasusTheta.size() ? &pegasusTheta : nullptr);
 }
 
 }  // namespace prisca::sim

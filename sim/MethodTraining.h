@@ -1,37 +1,31 @@
 #pragma once
 
-#include "EpisodeRunner.h"
-#include "PlantProfile.h"
 #include "core/Controller.h"
-#include "core/Demonstration.h"
+#include "core/PdController.h"
 
 #include <Eigen/Core>
 
+#include <QString>
+
+#include <cstdint>
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace prisca::sim {
 
-/// What the offline-tuned methods train on: the plant, the demonstration, and the training
-/// trials (seeds that are never the evaluation seeds).
-struct TrainingSetup {
-    QString plant;         ///< plant name (PlantCatalog)
-    PlantProfile profile;  ///< features, limits, defaults
-    std::shared_ptr<const core::Demonstration> demonstration;
-    Eigen::MatrixXd fittedB;                       ///< B for PRISCA-style policies
-    EpisodeSettings episode;                       ///< duration, perturbation, sensor
-    std::vector<std::uint64_t> seeds;              ///< training trials
-    int threads = 1;                               ///< worker threads
-    std::function<bool()> cancelled;               ///< polled between episodes
+class RunSetup;
+
+/// What a training polls and reports.
+struct TrainingHooks {
+    std::function<bool()> cancelled;               ///< polled between and within episodes
     std::function<void(const QString&)> progress;  ///< one line per stage (any thread)
 };
 
 /// PD (selected): a grid search over common scales of the profile's Kp and Kd (each scale
 /// multiplies every channel's gain), scored by the mean plus the standard deviation of
-/// tuningScore() over the training seeds.
-/// Returns the profile's PD parameters with the best gains.
-core::PdParameters selectPdGains(const TrainingSetup& setup,
+/// tuningScore() over the setup's training trials. Returns the profile's PD parameters with the
+/// best gains.
+core::PdParameters selectPdGains(const RunSetup& setup, const TrainingHooks& hooks = {},
                                  const std::vector<double>& kpScales = {0.25, 0.5, 1, 2, 4},
                                  const std::vector<double>& kdScales = {0, 0.5, 1, 2});
 
@@ -42,9 +36,11 @@ struct PegasusTraining {
     std::vector<long long> steps;  ///< cumulative simulated steps after each iteration
 };
 
-/// PEGASUS on fixed scenarios (the training seeds: each fixes the start, the perturbation and
-/// every noise stream) with the frozen linear policy of the "pegasus" method.
-PegasusTraining trainPegasus(const TrainingSetup& setup, int iterations);
+/// PEGASUS on fixed scenarios (the first profile.pegasus.scenarios training trials: each fixes
+/// the start, the perturbation and every noise stream) with the frozen linear policy of the
+/// "pegasus" method, `iterations` gradient steps.
+PegasusTraining trainPegasus(const RunSetup& setup, int iterations,
+                             const TrainingHooks& hooks = {});
 
 /// The training seeds of a run or experiment with seed `seed`: their own stream, never its
 /// evaluation seeds (mixSeed(seed, i)).
@@ -52,12 +48,5 @@ std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count);
 
 /// Whether `method` trains offline before it runs (PD (selected), PEGASUS).
 bool trainsOffline(const QString& method);
-
-/// `method`'s controller for setup.profile, trained first on setup's seeds if it trains offline
-/// (PD (selected) selects its gains, PEGASUS takes `pegasusIterations` gradient steps). Returns
-/// null if setup.cancelled stopped the training. Throws std::invalid_argument as
-/// MethodCatalog::create does.
-std::unique_ptr<core::Controller> createTrained(const QString& method, const TrainingSetup& setup,
-                                                int pegasusIterations);
 
 }  // namespace prisca::sim

@@ -258,7 +258,7 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
         episode.measurement.latencySteps = 0;
         episode.measurement.dropProbability = 0.0;
     }
-    episode.compensateObservationAge = compensateLatency;
+    episode.compensateLatency = compensateLatency;
     episode.lostTrackDistance = lostTrackDistance;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;

@@ -14,81 +14,64 @@
 namespace prisca::sim {
 
 
-Table1Result runTable1(const Table1Settings& settings,
-                       std::shared_ptr<const core::Demonstration> demonstration,
-                       const PlantProfile& profile, const Eigen::MatrixXd& fittedB) {
+Table1Result runTable1(const Table1Settings& settings, const Task& task) {
+    const PlantProfile& profile = task.profile;
     if (!profile.info.pose) {
         throw std::invalid_argument("Table I needs a planar vehicle (final position and heading)");
     }
+    // One set-up per method: the plant at the task's period, the trials, the training.
+    std::vector<RunSetup> setups;
     for (const QString& method : settings.methods) {
         const MethodSpec* spec = MethodCatalog::find(method);
         if (!spec || !spec->inTable1) {
             throw std::invalid_argument(
                 QStringLiteral("Table I has no row for method '%1'").arg(method).toStdString());
         }
+        setups.emplace_back(task, method, settings.run);
     }
     const auto say = [&](const QString& text) {
         if (settings.progress) {
             settings.progress(text);
         }
     };
-    const EpisodeSettings base =
-        profile.episode(*demonstration, settings.perturbation, settings.sensor);
-    const std::vector<std::uint64_t> trainingSeeds =
-        sim::trainingSeeds(settings.seed, settings.trainingTrials);
+    const std::shared_ptr<const core::Demonstration>& demonstration = task.demonstration;
 
     Table1Result result;
     const int T = demonstration->length();
     result.lot = demonstration->states.row(T - 1).head<3>().transpose();
 
-    // Training: the grid search of PD (selected), and the learners' warm-up runs (each learner
-    // a sequential chain of trials, the chains side by side on the pool).
-    std::map<QString, std::shared_ptr<const core::Controller>> trained;
-    PlantProfile selectedProfile = profile;
-    const bool selects = std::any_of(settings.methods.begin(), settings.methods.end(),
-                                     [](const QString& method) {
-                                         return MethodCatalog::get(method).training ==
-                                                MethodSpec::Training::SelectPdGains;
-                                     });
-    if (selects && !trainingSeeds.empty()) {
-        TrainingSetup training;
-        training.plant = settings.plant;
-        training.profile = profile;
-        training.demonstration = demonstration;
-        training.fittedB = fittedB;
-        training.episode = base;
-        training.episode.recordSteps = false;
-        training.seeds = trainingSeeds;
-        training.threads = settings.threads;
-        training.cancelled = settings.cancelled;
-        training.progress = settings.progress;
-        selectedProfile.pd = selectPdGains(training);
-    }
-    QStringList learners;
-    for (const QString& method : settings.methods) {
-        if (MethodCatalog::get(method).learnsOnline) {
-            learners << method;
+    // Training: the offline methods train (PD (selected) selects its gains), and the online
+    // learners warm up on the training trials in a row (each learner a sequential chain of
+    // trials, the chains side by side on the pool).
+    std::vector<std::shared_ptr<const core::Controller>> trained(setups.size());
+    std::vector<int> learners;
+    for (size_t m = 0; m < setups.size(); ++m) {
+        if (setups[m].method().trainsOffline()) {
+            trained[m] = setups[m].makeController(settings.cancelled, settings.progress);
+        } else if (setups[m].method().learnsOnline) {
+            learners.push_back(static_cast<int>(m));
         }
     }
     const std::function<std::shared_ptr<const core::Controller>(int)> warmUp = [&](int i) {
-        auto plant = PlantCatalog::create(settings.plant);
-        std::shared_ptr<core::Controller> controller =
-            MethodCatalog::create(learners[i], profile, demonstration, fittedB);
-        for (size_t t = 0; t < trainingSeeds.size(); ++t) {
-            EpisodeSettings episode = base;
-            episode.seed = trainingSeeds[t];
+        const RunSetup& setup = setups[learners[i]];
+        auto plant = setup.makePlant();
+        std::shared_ptr<core::Controller> controller = setup.makeController();
+        const std::vector<std::uint64_t> seeds = setup.trainingSeeds();
+        for (size_t t = 0; t < seeds.size(); ++t) {
+            EpisodeSettings episode = setup.episode();
+            episode.seed = seeds[t];
             episode.recordSteps = false;
             episode.resetMode = resetForTrial(static_cast<int>(t));
             runEpisode(*plant, *controller, episode, settings.cancelled);
         }
         say(QStringLiteral("table1: %1 learned on %2 training trials")
-                .arg(learners[i])
-                .arg(trainingSeeds.size()));
+                .arg(setup.method().id)
+                .arg(seeds.size()));
         return std::shared_ptr<const core::Controller>(controller);
     };
     const auto warmed = runParallel<std::shared_ptr<const core::Controller>>(
-        static_cast<int>(learners.size()), settings.threads, warmUp, settings.cancelled);
-    for (int i = 0; i < learners.size(); ++i) {
+        static_cast<int>(learners.size()), settings.run.threads, warmUp, settings.cancelled);
+    for (size_t i = 0; i < learners.size(); ++i) {
         trained[learners[i]] = warmed[i];
     }
 
@@ -101,24 +84,19 @@ Table1Result runTable1(const Table1Settings& settings,
         bool finished = false;  // false if cancellation cut the trial short
     };
     const std::function<Outcome(int)> evaluate = [&](int job) {
-        const QString& method = settings.methods[job / trials];
+        const RunSetup& setup = setups[job / trials];
         const int trial = job % trials;
-        auto plant = PlantCatalog::create(settings.plant);
+        auto plant = setup.makePlant();
         std::unique_ptr<core::Controller> controller;
-        EpisodeSettings episode = base;
-        episode.seed = mixSeed(settings.seed, trial);
+        EpisodeSettings episode = setup.trial(trial);
         episode.recordSteps = settings.keepPaths;
-        const auto learned = trained.find(method);
-        if (learned != trained.end() && learned->second) {
-            controller = learned->second->clone();
+        if (const auto& learned = trained[job / trials]) {
+            controller = learned->clone();
+            // Learners go on from what they learned; the others learn nothing to keep.
             episode.resetMode = core::ResetMode::WarmStart;
         } else {
-            controller = MethodCatalog::create(
-                method,
-                MethodCatalog::get(method).training == MethodSpec::Training::SelectPdGains
-                    ? selectedProfile
-                    : profile,
-                demonstration, fittedB);
+            controller = setup.makeController();
+            episode.resetMode = core::ResetMode::Cold;
         }
         // Summaries need only the final state; the path is kept for Fig. 7 when asked.
         const EpisodeResult run = runEpisode(*plant, *controller, episode, settings.cancelled);
@@ -135,7 +113,7 @@ Table1Result runTable1(const Table1Settings& settings,
     };
     std::vector<bool> completed;
     const std::vector<Outcome> outcomes = runParallel<Outcome>(
-        methods * trials, settings.threads, evaluate, settings.cancelled,
+        methods * trials, settings.run.threads, evaluate, settings.cancelled,
         [&](int done, int total) {
             if (done == total || done * 20 / total != (done - 1) * 20 / total) {
                 say(QStringLiteral("table1: %1/%2 trials").arg(done).arg(total));

@@ -17,7 +17,7 @@ std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count) {
 
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                                        const PlantProfile& profile) {
-    const QString& plant = settings.table.plant;
+    const QString& plant = profile.info.name;
     for (const QString& style : settings.styles) {
         if (!DemonstrationStyles::contains(plant, style)) {
             throw std::invalid_argument(QStringLiteral("unknown %1 style '%2' (one of: %3)")
@@ -47,14 +47,14 @@ Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                                             .arg(style)
                                             .arg(set));
             }
-            auto demonstration =
-                std::make_shared<core::Demonstration>(DemonstrationStyles::record(plant, style, set));
-            const core::ActionMappingFit fit = core::fitActionMapping(
-                *demonstration, profile.mapping, profile.info.deviationModel(), settings.fit);
+            const Task task = makeTask(profile,
+                                       std::make_shared<core::Demonstration>(
+                                           DemonstrationStyles::record(plant, style, set)),
+                                       settings.fit);
             Table1Settings table = settings.table;
-            table.seed = set;
+            table.run.seed = set;
             table.keepPaths = false;
-            const Table1Result run = runTable1(table, demonstration, profile, fit.b);
+            const Table1Result run = runTable1(table, task);
             int finished = 0;
             const std::vector<core::Table1Row> rows = table1Rows(run, &finished);
             result.finishedTrials += finished;

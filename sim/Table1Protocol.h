@@ -17,9 +17,9 @@ namespace prisca::sim {
 /// seed set's trials. Plain data.
 struct Table1ProtocolSettings {
     /// Methods, trials, training trials, perturbation, sensor, threads, cancellation and
-    /// progress; its seed is replaced by each seed set's.
+    /// progress; its run seed is replaced by each seed set's.
     Table1Settings table;
-    QStringList styles;                   ///< demonstration styles of table.plant
+    QStringList styles;                   ///< demonstration styles of the profile's plant
     std::vector<std::uint64_t> seedSets;  ///< each: the demonstration's hand and the trials' seed
     core::ActionMappingFitOptions fit;    ///< how B_v is fitted on each demonstration
 };
@@ -35,8 +35,8 @@ struct Table1ProtocolResult {
 /// The seed sets first, first + 1, ..., first + count - 1.
 std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count);
 
-/// Runs Table I on every (style, seed set) cell in turn (each cell's trials in parallel), with
-/// the profile's mapping fitted anew on each cell's demonstration. Deterministic for the
+/// Runs Table I on every (style, seed set) cell in turn (each cell's trials in parallel), each
+/// cell's Task made from the profile and that cell's demonstration (makeTask: checked, fitted). Deterministic for the
 /// settings whatever the thread count. Throws std::invalid_argument for an unknown style or
 /// method (as runTable1 does).
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,

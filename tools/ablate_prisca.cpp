@@ -20,6 +20,7 @@
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
 #include "sim/Table1Experiment.h"
 #include "sim/TrialMetrics.h"
 using namespace prisca;
@@ -125,15 +126,14 @@ int main(int argc, char** argv) {
                 std::printf("\n");
             }
         }
-        auto ctrl = sim::MethodCatalog::create(method, p, demo, fit.b);
-        auto plant = sim::PlantCatalog::create("slidecar");
-        sim::EpisodeSettings ep = p.episode(*demo, 1.0, 1.0);
+        sim::RunSettings traceSettings;
+        traceSettings.seed = 999;
+        const sim::RunSetup setup(sim::makeTask(p, demo, fo), method, traceSettings);
+        auto ctrl = setup.makeController();
+        auto plant = setup.makePlant();
         const int traceTrials = getenv("TRIALS") ? atoi(getenv("TRIALS")) : 30;
         for (int t = 0; t < traceTrials; ++t) {
-            auto e = ep;
-            e.seed = sim::mixSeed(999, t);
-            e.resetMode = t ? core::ResetMode::WarmStart : core::ResetMode::Cold;
-            auto r = sim::runEpisode(*plant, *ctrl, e);
+            auto r = sim::runEpisode(*plant, *ctrl, setup.trial(t));
             auto sum = sim::summarizeTrial(plant->info(), *demo, r);
             std::printf("trial %2d: %.1f cm theta", t, 100 * sum.finalPositionError);
             const Eigen::MatrixXd& th = *ctrl->learnedParameters();
@@ -149,14 +149,16 @@ int main(int argc, char** argv) {
         const QStringList where = QString::fromLatin1(getenv("DUMP")).split(':');
         auto demo = std::make_shared<core::Demonstration>(
             sim::DemonstrationStyles::record("slidecar", where[0], where[1].toULongLong()));
-        const auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), {});
-        auto plant = sim::PlantCatalog::create("slidecar");
+        sim::RunSettings dumpSettings;
+        dumpSettings.seed = where[1].toULongLong();
+        const sim::RunSetup setup(sim::makeTask(p, demo), method, dumpSettings);
+        auto plant = setup.makePlant();
         double worst = -1.0;
         sim::EpisodeResult worstRun;
         for (int i = 0; i < 10; ++i) {
-            auto controller = sim::MethodCatalog::create(method, p, demo, fit.b);
-            sim::EpisodeSettings e = p.episode(*demo, 1.0, 1.0);
-            e.seed = sim::mixSeed(where[1].toULongLong(), i);
+            auto controller = setup.makeController();
+            sim::EpisodeSettings e = setup.trial(i);
+            e.resetMode = core::ResetMode::Cold;
             auto r = sim::runEpisode(*plant, *controller, e);
             const double error = sim::summarizeTrial(plant->info(), *demo, r).finalPositionError;
             if (error > worst) {
@@ -186,16 +188,15 @@ int main(int argc, char** argv) {
                 sim::DemonstrationStyles::record("slidecar", style, set));
             core::ActionMappingFitOptions fo;
             fo.drift = drift;
-            auto fit = core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), fo);
             sim::Table1Settings s;
             s.methods = {method};
-            s.seed = set;
+            s.run.seed = set;
             s.trials = 10;
             if (getenv("PERT"))
-                s.perturbation = atof(getenv("PERT"));
+                s.run.perturbation = atof(getenv("PERT"));
             if (getenv("SENSOR"))
-                s.sensor = atof(getenv("SENSOR"));
-            auto r = sim::runTable1(s, demo, p, fit.b);
+                s.run.sensor = atof(getenv("SENSOR"));
+            auto r = sim::runTable1(s, sim::makeTask(p, demo, fo));
             auto rows = sim::table1Rows(r);
             cellPos.push_back(rows[0].position.meanAbsoluteError);
             cellOri.push_back(rows[0].orientation.meanAbsoluteError);

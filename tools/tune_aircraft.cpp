@@ -14,6 +14,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
 #include <algorithm>
@@ -84,18 +85,17 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     p.pd.errorCombination << s.comboLon, 0, 0, s.comboU, 0, 0,  //
         0, s.comboLat, s.comboPsi, 0, 0, s.comboR;
 
+    sim::Task task = sim::makeTask(p, demo, fitOptions);
+    task.fit.b = B;
     const auto runs = sim::runParallel<std::pair<double, double>>(kRuns, 2, [&](int run) {
-        auto plant = sim::PlantCatalog::create(plantName, sim::SimulationTiming{});
-        auto controller = sim::MethodCatalog::create(method, p, demo, B);
-        sim::EpisodeSettings episode;
-        episode.perturbation = sim::Perturbation::realistic();
-        episode.measurement = p.measurement;
-        episode.duration = demo->length() * demo->dt + p.settleTime;
+        sim::RunSettings settings;
+        settings.seed = sim::mixSeed(seedSet, run);
+        const sim::RunSetup setup(task, method, settings);
+        auto plant = setup.makePlant();
+        auto controller = setup.makeController();
         double rms = 0, path = 0;
         for (int trial = 0; trial < kTrials; ++trial) {
-            episode.seed = sim::mixSeed(sim::mixSeed(seedSet, run), trial);
-            episode.resetMode = trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
-            const sim::EpisodeResult r = sim::runEpisode(*plant, *controller, episode);
+            const sim::EpisodeResult r = sim::runEpisode(*plant, *controller, setup.trial(trial));
             const sim::TrialSummary t = sim::summarizeTrial(plant->info(), *demo, r);
             if (trial > 0) {
                 rms += t.trackingRms / (kTrials - 1);

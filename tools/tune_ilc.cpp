@@ -13,6 +13,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
 #include <algorithm>
@@ -51,19 +52,17 @@ double score(const QString& plant, const QStringList& styles, const Setting& s) 
         for (std::uint64_t set : {100, 101}) {
             auto demo = std::make_shared<core::Demonstration>(
                 sim::DemonstrationStyles::record(plant, style, set));
-            const Eigen::MatrixXd B =
-                core::fitActionMapping(*demo, p.mapping, p.info.deviationModel(), {}).b;
+            const sim::Task task = sim::makeTask(p, demo);
             const auto runs = sim::runParallel<double>(kRuns, 2, [&](int run) {
-                auto plantObject = sim::PlantCatalog::create(plant);
-                auto controller = sim::MethodCatalog::create("ilc", p, demo, B);
-                sim::EpisodeSettings episode = p.episode(*demo, 1.0, 1.0);
-                episode.recordSteps = true;
+                sim::RunSettings settings;
+                settings.seed = sim::mixSeed(set, run);
+                const sim::RunSetup setup(task, "ilc", settings);
+                auto plantObject = setup.makePlant();
+                auto controller = setup.makeController();
                 double rms = 0.0;
                 for (int trial = 0; trial < kTrials; ++trial) {
-                    episode.seed = sim::mixSeed(sim::mixSeed(set, run), trial);
-                    episode.resetMode =
-                        trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart;
-                    const sim::EpisodeResult r = sim::runEpisode(*plantObject, *controller, episode);
+                    const sim::EpisodeResult r =
+                        sim::runEpisode(*plantObject, *controller, setup.trial(trial));
                     if (trial > 0) {
                         rms += sim::summarizeTrial(plantObject->info(), *demo, r).trackingRms /
                                (kTrials - 1);

@@ -14,6 +14,7 @@
 #include "core/Statistics.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
 #include "sim/Table1Experiment.h"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ struct Setting {
 
 struct Cell {
     std::shared_ptr<const core::Demonstration> demo;
-    std::map<int, Eigen::MatrixXd> fits;  // by response horizon
+    std::map<int, sim::Task> tasks;  // the demonstration with its fit, by response horizon
     std::uint64_t set;
 };
 
@@ -71,8 +72,7 @@ std::vector<Cell> tuningCells() {
             for (int r : {1, 2}) {
                 core::ActionMappingFitOptions options;
                 options.responseSteps = r;
-                cell.fits[r] =
-                    core::fitActionMapping(*cell.demo, p.mapping, p.info.deviationModel(), options).b;
+                cell.tasks.emplace(r, sim::makeTask(p, cell.demo, options));
             }
             cell.set = set;
             cells.push_back(std::move(cell));
@@ -125,11 +125,12 @@ double score(const Setting& s, const char* method, const std::vector<Cell>& cell
     for (const Cell& cell : cells) {
         sim::Table1Settings settings;
         settings.methods = {method};
-        settings.seed = cell.set;
+        settings.run.seed = cell.set;
         settings.trials = kTrials;
-        settings.trainingTrials = !std::strcmp(method, "prisca") ? s.trainingTrials : 16;
-        const sim::Table1Result r =
-            sim::runTable1(settings, cell.demo, profile, cell.fits.at(s.responseSteps));
+        settings.run.trainingTrials = !std::strcmp(method, "prisca") ? s.trainingTrials : 16;
+        sim::Task task = cell.tasks.at(s.responseSteps);
+        task.profile = profile;
+        const sim::Table1Result r = sim::runTable1(settings, task);
         std::vector<double> position, orientation;
         for (const sim::TrialSummary& t : r.methods[0].trials) {
             position.push_back(t.finalPositionError * 100.0);

@@ -2111,8 +2111,8 @@
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="247"/>
-        <source>%1 could not be set up.</source>
-        <translation>無法設定 %1。</translation>
+        <source>%1 could not be set up: %2</source>
+        <translation>無法設定 %1：%2</translation>
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="395"/>

@@ -8,6 +8,7 @@
 #include "core/Statistics.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/LearningCurveExperiment.h"
+#include "sim/PlantCatalog.h"
 #include "sim/Table1Protocol.h"
 
 #include <QJsonArray>
@@ -32,23 +33,6 @@ double finalMean(const sim::MethodCurves& method) {
     }
     return core::mean(last);
 }
-
-// Adds a cell's runs to each method's runs so far.
-void pool(std::vector<sim::MethodCurves>& into, const std::vector<sim::MethodCurves>& cell) {
-    if (into.empty()) {
-        into = cell;
-        return;
-    }
-    for (size_t m = 0; m < cell.size(); ++m) {
-        into[m].runs.insert(into[m].runs.end(), cell[m].runs.begin(), cell[m].runs.end());
-    }
-}
-
-struct Cell {
-    QString style;  // empty: a single demonstration
-    Task task;
-    std::uint64_t seed = 1;
-};
 
 }  // namespace
 
@@ -79,7 +63,7 @@ int curveCommand(const QStringList& arguments) {
     line.addValue("out", "CSV of the curves: method, steps, time, mean, lower, upper, runs.",
                   "file");
     line.addValue("plot", "Also draw the curves (Fig. 3b) to this .png or .svg file.", "file");
-    addPriscaDefaultsOption(line);
+    addMethodParameterOptions(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -99,79 +83,82 @@ int curveCommand(const QStringList& arguments) {
     settings.runs = static_cast<int>(line.integer("runs", 1, 100000));
     settings.budgetSteps = line.integer("budget", 1, 1LL << 40);
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
-    settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
-    settings.perturbation = line.number("perturbation", 0.0, 10.0);
-    settings.sensor = line.number("sensor", 0.0, 10.0);
+    settings.run.seed = seed;
+    settings.run.threads = static_cast<int>(line.integer("jobs", 1, 256));
+    settings.run.perturbation = line.number("perturbation", 0.0, 10.0);
+    settings.run.sensor = line.number("sensor", 0.0, 10.0);
+    installInterruptHandler();
+    settings.cancelled = [] { return interrupted(); };
 
-    std::vector<Cell> cells;
+    // Every cell's runs, pooled per method; and per style for the breakdown.
     QStringList styles;
+    sim::LearningCurveProtocolResult result;
+    QString plant;
     if (line.isSet("styles")) {
         if (line.isSet("demo") || line.isSet("demo-seed")) {
             throw UsageError(QStringLiteral("--styles records its own demonstrations; it does not "
                                             "take --demo or --demo-seed"));
         }
-        const QString plant = checkedPlant(line.value("plant"));
+        plant = checkedPlant(line.value("plant"));
         styles = line.value("styles") == QLatin1String("all")
                      ? sim::DemonstrationStyles::names(plant)
                      : line.value("styles").split(QLatin1Char(','), Qt::SkipEmptyParts);
         if (styles.isEmpty()) {
             throw UsageError(QStringLiteral("--styles: no style given"));
         }
-        const auto sets =
-            sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
         for (const QString& style : styles) {
-            for (std::uint64_t set : sets) {
-                cells.push_back({style, scriptedTask(plant, style, set), set});
+            if (!sim::DemonstrationStyles::contains(plant, style)) {
+                throw UsageError(
+                    QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
+                        .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
             }
         }
+        sim::LearningCurveProtocolSettings protocol;
+        protocol.curves = settings;
+        protocol.styles = styles;
+        protocol.seedSets =
+            sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
+        sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+        applyMethodParameters(line, profile);
+        int cellNow = 0, cellsAll = 0;
+        QString cellStyle;
+        std::uint64_t cellSeed = 0;
+        protocol.curves.progress = [&](const QString& text) {
+            printProgress(QStringLiteral("cell %1/%2 (%3, seed set %4): %5")
+                              .arg(cellNow)
+                              .arg(cellsAll)
+                              .arg(cellStyle)
+                              .arg(cellSeed)
+                              .arg(text));
+        };
+        result = sim::runLearningCurveProtocol(
+            protocol, profile,
+            [&](int cell, int cells, const QString& style, std::uint64_t cellSeedSet) {
+                cellNow = cell;
+                cellsAll = cells;
+                cellStyle = style;
+                cellSeed = cellSeedSet;
+            });
     } else {
         if (line.isSet("seed-sets")) {
             throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
         }
-        cells.push_back(
-            {QString(),
-             loadOrDemonstrate(line.value("plant"), line.value("demo"),
-                               static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62))),
-             seed});
-    }
-    for (Cell& cell : cells) {
-        applyPriscaDefaults(line, cell.task.profile);
-    }
-    settings.plant = cells.front().task.plant;
-    installInterruptHandler();
-    settings.cancelled = [] { return interrupted(); };
-
-    // Every cell's runs, pooled per method; and per style for the breakdown.
-    std::vector<sim::MethodCurves> pooled;
-    std::vector<std::vector<sim::MethodCurves>> perStyle(styles.size());
-    long long unit = std::numeric_limits<long long>::max();
-    double dt = cells.front().task.demonstration->dt;
-    for (size_t c = 0; c < cells.size(); ++c) {
-        const Cell& cell = cells[c];
-        sim::LearningCurveSettings cellSettings = settings;
-        cellSettings.seed = cell.seed;
-        cellSettings.progress = [&](const QString& text) {
-            printProgress(cells.size() > 1
-                              ? QStringLiteral("cell %1/%2 (%3, seed set %4): %5")
-                                    .arg(c + 1)
-                                    .arg(cells.size())
-                                    .arg(cell.style)
-                                    .arg(cell.seed)
-                                    .arg(text)
-                              : text);
-        };
-        const auto curves = sim::runLearningCurves(cellSettings, cell.task.demonstration,
-                                                   cell.task.profile, cell.task.fit.b);
-        unit = std::min<long long>(unit, cell.task.demonstration->length());
-        pool(pooled, curves);
-        if (!cell.style.isEmpty()) {
-            pool(perStyle[styles.indexOf(cell.style)], curves);
-        }
-        if (interrupted()) {
-            break;
-        }
+        Task task = loadOrDemonstrate(
+            line.value("plant"), line.value("demo"),
+            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
+        applyMethodParameters(line, task.profile);
+        plant = task.plant;
+        settings.progress = [](const QString& text) { printProgress(text); };
+        result.pooled = sim::runLearningCurves(settings, task);
+        result.shortestDemonstration = task.demonstration->length();
+        result.dt = task.demonstration->dt;
+        result.cells = 1;
     }
     printProgress(QString());
+    const std::vector<sim::MethodCurves>& pooled = result.pooled;
+    const std::vector<std::vector<sim::MethodCurves>>& perStyle = result.perStyle;
+    const long long unit = result.shortestDemonstration;
+    const double dt = result.dt;
 
     // A common grid: one point per (shortest) demonstration length of experience.
     const std::vector<sim::CurveSummary> summaries =
@@ -235,16 +222,16 @@ int curveCommand(const QStringList& arguments) {
         throw UsageError(error.toString());
     }
     if (line.isSet("plot")) {
-        const QString yLabel = cells.front().task.profile.info.pose
+        const QString yLabel = sim::PlantCatalog::describe(plant).pose
                                    ? QStringLiteral("mean squared position error [m\u00b2]")
                                    : QStringLiteral("mean squared joint-angle error [rad\u00b2]");
         saveFigureOrThrow(learningCurveFigure(plotted, plottedSeconds, plottedBands, yLabel),
                           line.value("plot"));
     }
     if (line.format() == QLatin1String("json")) {
-        printJson({{"plant", settings.plant},
+        printJson({{"plant", plant},
                    {"budgetSteps", static_cast<double>(settings.budgetSteps)},
-                   {"cells", static_cast<int>(cells.size())},
+                   {"cells", result.cells},
                    {"methods", summary},
                    {"out", out}});
     } else {

@@ -17,6 +17,10 @@ int demoCommand(const QStringList& arguments) {
     line.addValue("style", "Operator style (default: the plant's classic one).", "name");
     line.addFlag("list-styles", "Print the plant's styles, one name a line, and exit.");
     line.addValue("seed", "Seed of the operator's hand variation.", "N", "1");
+    line.addValue("rate",
+                  "Control rate of the recording [Hz]: one sample per control step, as a camera "
+                  "take at this frame rate gives (default 40).",
+                  "Hz", "40");
     line.addValue("out", "Output demonstration CSV.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
@@ -50,11 +54,16 @@ int demoCommand(const QStringList& arguments) {
     const QString out = line.required("out");
     const auto seed =
         static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));
-    core::Demonstration demonstration = sim::DemonstrationStyles::record(plantName, style, seed);
+    sim::SimulationTiming timing;
+    const double rate = line.number("rate", 5.0, 1000.0);
+    timing.controlPeriod = 1.0 / rate;
+    core::Demonstration demonstration =
+        sim::DemonstrationStyles::record(plantName, style, seed, timing);
     demonstration.metadata.insert(QStringLiteral("source"),
-                                  QStringLiteral("prisca-cli demo, style %1, seed %2")
+                                  QStringLiteral("prisca-cli demo, style %1, seed %2, %3 Hz")
                                       .arg(style)
-                                      .arg(seed));
+                                      .arg(seed)
+                                      .arg(rate));
     writeDemonstration(demonstration, out);
     const int T = demonstration.length();
     if (line.format() == QLatin1String("json")) {

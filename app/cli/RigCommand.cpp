@@ -43,7 +43,7 @@ int rigCommand(const QStringList& arguments) {
                   "N", "3");
     line.addValue("seed", "Seed of the trials (the car's start, friction, gains).", "N", "1");
     line.addValue("perturbation", "The simulated car's perturbation level.", "level", "1");
-    addPriscaDefaultsOption(line);
+    addMethodParameterOptions(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -67,9 +67,12 @@ int rigCommand(const QStringList& arguments) {
     Task task =
         loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
                           static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
-    applyPriscaDefaults(line, task.profile);
+    applyMethodParameters(line, task.profile);
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
+    // The run as the simulation sets it up: the rig's loop takes its controller, settle time,
+    // lost-track distance and latency compensation from here.
+    const auto setup = std::make_shared<const sim::RunSetup>(task, method);
 
     // The window's rig session, headless: the virtual car seen by the synthetic camera at the
     // demonstration's control rate, the link on the car's pseudo-terminal.
@@ -123,14 +126,7 @@ int rigCommand(const QStringList& arguments) {
                           .arg(trials)
                           .arg(seconds, 0, 'f', 1));
         rig::TrialRequest request;
-        request.method = method;
-        request.createController = [&] {
-            return sim::MethodCatalog::create(method, task.profile, task.demonstration, task.fit.b);
-        };
-        request.plant = task.profile.info;
-        request.demonstration = task.demonstration;
-        request.settleTime = task.profile.settleTime;
-        request.lostTrackDistance = task.profile.lostTrackDistance;
+        request.setup = setup;
         request.virtualSeed = sim::mixSeed(seed, t);
         last.reset();
         const long long decodedBefore = rig.virtualFramesDecoded();

@@ -9,11 +9,13 @@
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 #include "sim/RunLogBuilder.h"
+#include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
 #include <QJsonArray>
 
 #include <cmath>
+#include <optional>
 
 namespace prisca::app::cli {
 
@@ -39,10 +41,7 @@ int runCommand(const QStringList& arguments) {
     line.addValue("method", "Method: " + sim::MethodCatalog::ids().join(", ") + ".", "name");
     line.addValue("trials", "Trials in a row (warm start: PRISCA and PGSD keep learning).", "N",
                   "1");
-    line.addValue("seed", "Seed of the trials' perturbations and sensor noise.", "N", "1");
-    line.addValue("perturbation", "Scale of the plant perturbation (0 nominal, 1 realistic).",
-                  "level", "1");
-    line.addValue("sensor", "Scale of the sensor noise (0 perfect, 1 realistic).", "level", "1");
+    addRunSettingsOptions(line, "Training trials for PEGASUS and PD (selected).");
     line.addValue("mask", "Intuitive mapping B~ (default: the plant's), as for 'fit'.", "signs");
     line.addValue("H", "PRISCA/PGSD smoothing horizon H [steps] (eq. 9).", "steps");
     line.addValue("gamma", "PRISCA inverse-depreciation rate in [0, 1] (eq. 10).", "gamma");
@@ -52,10 +51,8 @@ int runCommand(const QStringList& arguments) {
                   "Least-state-deviation search window [samples] (eq. 12); PRISCA with automatic "
                   "defaults takes one second of the demonstration instead.",
                   "samples");
-    addPriscaDefaultsOption(line);
+    addMethodParameterOptions(line);
     line.addValue("iterations", "PEGASUS gradient steps before evaluation.", "N");
-    line.addValue("training-trials", "Training trials for PEGASUS and PD (selected).", "N", "4");
-    line.addValue("jobs", "Worker threads for training.", "N", "2");
     line.addValue("out", "Run log CSV.", "file");
     line.addValue("compare", "Also run this method on the same trials and report it beside.",
                   "name");
@@ -92,55 +89,42 @@ int runCommand(const QStringList& arguments) {
     if (line.isSet("window")) {
         profile.matchingWindow = static_cast<int>(line.integer("window", 0, 1000000));
     }
-    applyPriscaDefaults(line, profile);
+    applyMethodParameters(line, profile);
+    if (line.isSet("iterations")) {
+        profile.pegasusIterations = static_cast<int>(line.integer("iterations", 0, 100000));
+    }
     const int trials = static_cast<int>(line.integer("trials", 1, 100000));
-    const auto seed =
-        static_cast<std::uint64_t>(line.integer("seed", 0, std::numeric_limits<long long>::max()));
-    const double perturbationLevel = line.number("perturbation", 0.0, 10.0);
-    const double sensorLevel = line.number("sensor", 0.0, 10.0);
-    const int jobs = static_cast<int>(line.integer("jobs", 1, 256));
-    const int trainingTrials = static_cast<int>(line.integer("training-trials", 1, 10000));
-
-    const core::Demonstration& demo = *task.demonstration;
-    sim::EpisodeSettings episode = profile.episode(demo, perturbationLevel, sensorLevel);
-
-    // Offline-tuned methods train first, on their own seeds.
-    const auto build = [&](const QString& name) {
-        sim::TrainingSetup training;
-        training.plant = task.plant;
-        training.profile = profile;
-        training.demonstration = task.demonstration;
-        training.fittedB = task.fit.b;
-        training.episode = episode;
-        training.seeds = sim::trainingSeeds(seed, trainingTrials);
-        training.threads = jobs;
-        training.progress = [](const QString& text) { printProgress(text); };
-        const int iterations = line.isSet("iterations")
-                                   ? static_cast<int>(line.integer("iterations", 0, 100000))
-                                   : profile.pegasusIterations;
-        auto controller = sim::createTrained(name, training, iterations);
-        if (sim::trainsOffline(name)) {
-            printProgress(QString());
-        }
-        return controller;
-    };
-
-    auto plant = sim::PlantCatalog::create(task.plant, task.timing);
-    auto controller = build(method);
+    sim::RunSettings settings;
+    readRunSettings(line, settings);
     const QString compareMethod = line.value("compare");
     if (!compareMethod.isEmpty() && !sim::MethodCatalog::contains(compareMethod)) {
         throw UsageError(QStringLiteral("--compare: unknown method '%1' (one of: %2)")
                              .arg(compareMethod, sim::MethodCatalog::ids().join(' ')));
     }
-    auto comparison = compareMethod.isEmpty() ? nullptr : build(compareMethod);
-    const sim::PlantInfo& info = plant->info();
 
-    core::RunLog log = sim::startRunLog(info, method, demo.dt, *controller);
-    log.metadata.insert(QStringLiteral("seed"), QString::number(seed));
-    log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
-    log.metadata.insert(QStringLiteral("perturbation"), QString::number(perturbationLevel));
-    log.metadata.insert(QStringLiteral("sensor"), QString::number(sensorLevel));
-    log.metadata.insert(QStringLiteral("demonstration"), line.value("demo"));
+    // Offline-tuned methods train first, on their own seeds.
+    const auto build = [&](const sim::RunSetup& setup) {
+        auto controller = setup.makeController(
+            {}, [](const QString& text) { printProgress(text); });
+        if (setup.method().trainsOffline()) {
+            printProgress(QString());
+        }
+        return controller;
+    };
+    const sim::RunSetup setup(task, method, settings);
+    const core::Demonstration& demo = *setup.task().demonstration;
+    auto plant = setup.makePlant();
+    auto controller = build(setup);
+    std::optional<sim::RunSetup> compareSetup;
+    std::unique_ptr<core::Controller> comparison;
+    if (!compareMethod.isEmpty()) {
+        compareSetup.emplace(task, compareMethod, settings);
+        comparison = build(*compareSetup);
+    }
+    const sim::PlantInfo& info = plant->info();
+    const std::uint64_t seed = settings.seed;
+
+    core::RunLog log = setup.startRunLog(*controller, trials, line.value("demo"));
 
     QJsonArray trialsJson;
     QJsonArray compareJson;
@@ -157,7 +141,7 @@ int runCommand(const QStringList& arguments) {
         return path;
     };
     for (int trial = 0; trial < trials; ++trial) {
-        sim::setTrial(episode, seed, trial);
+        const sim::EpisodeSettings episode = setup.trial(trial);
         if (comparison) {
             // The same trial (seed, perturbation, sensor noise) for the other method.
             const sim::EpisodeResult other = sim::runEpisode(*plant, *comparison, episode);

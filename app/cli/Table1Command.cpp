@@ -39,20 +39,6 @@ QStringList checkedMethods(const CommandLine& line, const QStringList& defaults)
     return methods;
 }
 
-// --H, --gamma, --beta: PRISCA's own parameters for this experiment.
-void applyPriscaOptions(const CommandLine& line, sim::PlantProfile& profile) {
-    if (line.isSet("H")) {
-        profile.prisca.horizon = static_cast<int>(line.integer("H", 1, 1000));
-    }
-    if (line.isSet("gamma")) {
-        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
-    }
-    if (line.isSet("beta")) {
-        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
-    }
-    applyPriscaDefaults(line, profile);
-}
-
 // The table to --out (atomically) or to standard output.
 void writeTable(const CommandLine& line, const QString& table) {
     if (line.isSet("out")) {
@@ -83,7 +69,6 @@ int table1ProtocolCommand(const CommandLine& line) {
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));
     }
     sim::Table1ProtocolSettings settings;
-    settings.table.plant = plant;
     const QString styles = line.value("styles");
     settings.styles = styles == QLatin1String("all")
                           ? sim::DemonstrationStyles::names(plant)
@@ -103,11 +88,8 @@ int table1ProtocolCommand(const CommandLine& line) {
     const auto first = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     settings.seedSets = sim::consecutiveSeedSets(first, seedSets);
     settings.table.trials = static_cast<int>(line.integer("trials", 1, 100000));
-    settings.table.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
-    settings.table.threads = static_cast<int>(line.integer("jobs", 1, 256));
-    settings.table.perturbation = line.number("perturbation", 0.0, 10.0);
-    settings.table.sensor = line.number("sensor", 0.0, 10.0);
-    applyPriscaOptions(line, profile);
+    readRunSettings(line, settings.table.run);
+    applyMethodParameters(line, profile);
     const auto format = core::parseTableFormat(line.format());
     installInterruptHandler();
     settings.table.cancelled = [] { return interrupted(); };
@@ -125,9 +107,9 @@ int table1ProtocolCommand(const CommandLine& line) {
                           .arg(first)
                           .arg(first + seedSets - 1)
                           .arg(settings.table.trials)
-                          .arg(settings.table.trainingTrials)
-                          .arg(settings.table.perturbation)
-                          .arg(settings.table.sensor);
+                          .arg(settings.table.run.trainingTrials)
+                          .arg(settings.table.run.perturbation)
+                          .arg(settings.table.run.sensor);
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
@@ -162,21 +144,14 @@ int table1Command(const QStringList& arguments) {
                   "demonstration's hand variation and the trials' perturbations).",
                   "N", "1");
     line.addValue("trials", "Evaluation trials per method.", "N", "20");
-    line.addValue("training-trials", "Training trials for PD (selected), PRISCA and PGSD.", "N",
-                  "16");
-    line.addValue("seed", "Seed of the evaluation trials.", "N", "1");
-    line.addValue("jobs", "Worker threads.", "N", "2");
-    line.addValue("perturbation", "Plant perturbation level (0 nominal, 1 realistic).", "level",
-                  "1");
-    line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level", "1");
+    addRunSettingsOptions(line,
+                          "Training trials: PD (selected) selects its gains on them, the learners "
+                          "(PRISCA, PGSD, ILC) learn on them before evaluation.");
     line.addValue("methods",
                   "Comma-separated methods (default: the paper's rows, PGSD, ILC and the "
                   "oracle, the limit).",
                   "list");
-    line.addValue("H", "PRISCA horizon H [steps].", "steps");
-    line.addValue("gamma", "PRISCA gamma in [0, 1].", "gamma");
-    line.addValue("beta", "PRISCA beta > 0.", "beta");
-    addPriscaDefaultsOption(line);
+    addMethodParameterOptions(line);
     line.addValue("out", "Write the table here instead of standard output.", "file");
     line.addValue("plot",
                   "Also draw Fig. 7 (paths and end postures of playback, PD and PRISCA) "
@@ -211,23 +186,17 @@ int table1Command(const QStringList& arguments) {
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(task.plant));
     }
     sim::Table1Settings settings;
-    settings.plant = task.plant;
     settings.methods = checkedMethods(line, settings.methods);
     settings.trials = static_cast<int>(line.integer("trials", 1, 100000));
-    settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
-    settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
-    settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
-    settings.perturbation = line.number("perturbation", 0.0, 10.0);
-    settings.sensor = line.number("sensor", 0.0, 10.0);
-    applyPriscaOptions(line, task.profile);
+    readRunSettings(line, settings.run);
+    applyMethodParameters(line, task.profile);
     const auto format = core::parseTableFormat(line.format());
 
     settings.keepPaths = line.isSet("plot");
     installInterruptHandler();
     settings.cancelled = [] { return interrupted(); };
     settings.progress = [](const QString& text) { printProgress(text); };
-    const sim::Table1Result result =
-        sim::runTable1(settings, task.demonstration, task.profile, task.fit.b);
+    const sim::Table1Result result = sim::runTable1(settings, task);
     printProgress(QString());
 
     int finished = 0;
@@ -237,10 +206,10 @@ int table1Command(const QStringList& arguments) {
                           "%4 training trials, perturbation %5, sensor %6")
                           .arg(task.plant)
                           .arg(settings.trials)
-                          .arg(settings.seed)
-                          .arg(settings.trainingTrials)
-                          .arg(settings.perturbation)
-                          .arg(settings.sensor);
+                          .arg(settings.run.seed)
+                          .arg(settings.run.trainingTrials)
+                          .arg(settings.run.perturbation)
+                          .arg(settings.run.sensor);
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: %1 of %2 trials finished)")
                        .arg(finished)

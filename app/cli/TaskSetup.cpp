@@ -96,7 +96,7 @@ Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed
                            QStringLiteral("%1 %2 seed %3").arg(plant, style).arg(seed));
 }
 
-void addPriscaDefaultsOption(CommandLine& line) {
+void addMethodParameterOptions(CommandLine& line) {
     line.addValue("prisca-defaults",
                   "PRISCA's feature scales, alpha_0 and matching window: 'automatic' (from each "
                   "demonstration and its fit) or 'preset' (the plant's tuned numbers). Default: "
@@ -104,7 +104,7 @@ void addPriscaDefaultsOption(CommandLine& line) {
                   "choice");
 }
 
-void applyPriscaDefaults(const CommandLine& line, sim::PlantProfile& profile) {
+void applyMethodParameters(const CommandLine& line, sim::PlantProfile& profile) {
     if (!line.isSet("prisca-defaults")) {
         return;
     }
@@ -117,6 +117,26 @@ void applyPriscaDefaults(const CommandLine& line, sim::PlantProfile& profile) {
         throw UsageError(
             QStringLiteral("--prisca-defaults: '%1' is not one of: automatic preset").arg(choice));
     }
+}
+
+void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
+    const sim::RunSettings defaults;
+    line.addValue("seed", "Seed of the evaluation trials (training trials have their own stream).",
+                  "N", QString::number(defaults.seed));
+    line.addValue("perturbation", "Plant perturbation level (0 nominal, 1 realistic).", "level",
+                  QString::number(defaults.perturbation));
+    line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level",
+                  QString::number(defaults.sensor));
+    line.addValue("training-trials", trainingHelp, "N", QString::number(defaults.trainingTrials));
+    line.addValue("jobs", "Worker threads.", "N", QString::number(defaults.threads));
+}
+
+void readRunSettings(const CommandLine& line, sim::RunSettings& settings) {
+    settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
+    settings.perturbation = line.number("perturbation", 0.0, 10.0);
+    settings.sensor = line.number("sensor", 0.0, 10.0);
+    settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
+    settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
 }
 
 }  // namespace prisca::app::cli

@@ -4,6 +4,7 @@
 #include "core/Demonstration.h"
 #include "sim/Plant.h"
 #include "sim/PlantProfile.h"
+#include "sim/RunSetup.h"
 #include "sim/Task.h"
 
 #include <memory>
@@ -43,9 +44,15 @@ Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
 Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
 
 /// Adds --prisca-defaults automatic|preset (PlantProfile::priscaAutomatic).
-void addPriscaDefaultsOption(CommandLine& line);
+void addMethodParameterOptions(CommandLine& line);
 /// Applies --prisca-defaults if given (the plant's own choice otherwise); UsageError naming the
 /// choices for anything else.
-void applyPriscaDefaults(const CommandLine& line, sim::PlantProfile& profile);
+void applyMethodParameters(const CommandLine& line, sim::PlantProfile& profile);
+
+/// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
+/// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`), --jobs.
+void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp);
+/// Reads them; UsageError naming an option out of its range.
+void readRunSettings(const CommandLine& line, sim::RunSettings& settings);
 
 }  // namespace prisca::app::cli

@@ -270,6 +270,69 @@ class TestCliCommands : public QObject {
         QVERIFY(text.out.contains("R^2") && text.out.contains("steering"));
     }
 
+    // A demonstration at any camera rate replays exactly on the nominal plant with a perfect
+    // sensor in every command: each steps the plant at the demonstration's own period.
+    void anyRate_playbackRepeatsTheDemonstrationInRunTable1AndCurve_data() {
+        QTest::addColumn<int>("hertz");
+        for (int hertz : {25, 30, 50, 60}) {
+            QTest::addRow("%d Hz", hertz) << hertz;
+        }
+    }
+    void anyRate_playbackRepeatsTheDemonstrationInRunTable1AndCurve() {
+        QFETCH(int, hertz);
+        const QString demo = QStringLiteral("car-%1hz.csv").arg(hertz);
+        const CliResult made = cli({"demo", "--plant", "slidecar", "--rate", QString::number(hertz),
+                                    "--out", demo, "--format", "json"});
+        QVERIFY2(made.exitCode == 0, qPrintable(made.err));
+        QCOMPARE(parseJson(made.out).value("dt").toDouble(), 1.0 / hertz);
+        const QStringList nominal = {"--perturbation", "0", "--sensor", "0"};
+
+        const CliResult run = cli(QStringList{"run", "--plant", "slidecar", "--demo", demo,
+                                              "--method", "playback", "--out", "rate-log.csv",
+                                              "--format", "json"} +
+                                  nominal);
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const double runCm = parseJson(run.out)
+                                 .value("trials")
+                                 .toArray()
+                                 .at(0)
+                                 .toObject()
+                                 .value("finalPositionErrorCm")
+                                 .toDouble(-1);
+        QVERIFY2(runCm >= 0.0 && runCm < 0.01, qPrintable(QString::number(runCm)));
+
+        const CliResult table = cli(QStringList{"table1", "--demo", demo, "--methods", "playback",
+                                                "--trials", "1", "--format", "json"} +
+                                    nominal);
+        QVERIFY2(table.exitCode == 0, qPrintable(table.err));
+        const double tableCm = parseJson(table.out)
+                                   .value("rows")
+                                   .toArray()
+                                   .at(0)
+                                   .toObject()
+                                   .value("positionCm")
+                                   .toObject()
+                                   .value("meanAbsoluteError")
+                                   .toDouble(-1);
+        QVERIFY2(tableCm >= 0.0 && tableCm < 0.01, qPrintable(QString::number(tableCm)));
+
+        const CliResult curve =
+            cli(QStringList{"curve", "--plant", "slidecar", "--demo", demo, "--methods",
+                            "playback", "--runs", "1", "--budget", "2000", "--out",
+                            "rate-curve.csv", "--format", "json"} +
+                nominal);
+        QVERIFY2(curve.exitCode == 0, qPrintable(curve.err));
+        // Mean squared position error over a trial [m^2]: (0.1 mm)^2 at most.
+        const double curveM2 = parseJson(curve.out)
+                                   .value("methods")
+                                   .toArray()
+                                   .at(0)
+                                   .toObject()
+                                   .value("finalMean")
+                                   .toDouble(-1);
+        QVERIFY2(curveM2 >= 0.0 && curveM2 < 1e-8, qPrintable(QString::number(curveM2)));
+    }
+
     void run_logsEveryStepOfEveryTrial() {
         const CliResult r =
             cli({"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",

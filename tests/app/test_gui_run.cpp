@@ -41,6 +41,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSet>
+#include <QProcess>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -402,6 +403,79 @@ class TestGuiRun : public QObject {
         }
         QCOMPARE(trials, QSet<QString>({"0", "1"}));
         QVERIFY(lines.size() - at - 1 >= 2 * 158);
+    }
+
+    // The window's Run panel and `prisca-cli run` set a run up the same way (sim::RunSetup): on a
+    // demonstration recorded at 60 Hz the same seed gives the same run log byte for byte, and on
+    // the nominal plant with a perfect sensor playback and PRISCA repeat it exactly.
+    void runLog_ofTheWindowAndTheCliAreTheSameBytesAt60Hz() {
+        QTemporaryDir dir;
+        prisca::sim::SimulationTiming timing;
+        timing.controlPeriod = 1.0 / 60.0;
+        const QString demoPath = dir.filePath("car-60hz.csv");
+        prisca::core::FileError fileError;
+        QVERIFY(prisca::core::writeDemonstrationCsv(
+            prisca::sim::PlantCatalog::demonstrate("slidecar", 1, timing), demoPath, &fileError));
+        Window w;
+        auto demo = prisca::core::readDemonstrationCsv(demoPath, &fileError);
+        QVERIFY(demo);
+        w.window.session().setDemonstration(
+            std::make_shared<const prisca::core::Demonstration>(std::move(*demo)), demoPath);
+        w.setSpeedIndex(2);
+        const auto runOnce = [&](const QString& method, int perturbation, int sensor,
+                                 const QString& file) -> QByteArray {
+            w.window.session().setMethod(method);
+            w.find<QSpinBox>("trials")->setValue(2);
+            w.find<QSpinBox>("seed")->setValue(5);
+            w.find<QDoubleSpinBox>("perturbation")->setValue(perturbation);
+            w.find<QDoubleSpinBox>("sensor")->setValue(sensor);
+            QSignalSpy finished(&w.window.run(), &RunController::runFinished);
+            w.find<QAbstractButton>("runButton")->click();
+            if (!finished.wait(kRunTimeoutMs)) {
+                return QByteArray();
+            }
+            if (!QTest::qWaitFor(
+                    [&] { return w.find<QAbstractButton>("exportRunLog")->isEnabled(); }, 5000)) {
+                return QByteArray();
+            }
+            QString error;
+            if (!w.find<RunPanel>("runPanel")->exportRunLog(file, &error)) {
+                qWarning("%s", qPrintable(error));
+                return QByteArray();
+            }
+            QFile f(file);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        const auto cliRun = [&](const QString& method, int perturbation, int sensor,
+                                const QString& file) -> QByteArray {
+            QProcess cli;
+            cli.setWorkingDirectory(dir.path());
+            cli.start(QStringLiteral(PRISCA_CLI),
+                      {"run", "--plant", "slidecar", "--demo", demoPath, "--method", method,
+                       "--trials", "2", "--seed", "5", "--perturbation",
+                       QString::number(perturbation), "--sensor", QString::number(sensor),
+                       "--out", file});
+            if (!cli.waitForFinished(kRunTimeoutMs) || cli.exitCode() != 0) {
+                qWarning("%s", cli.readAllStandardError().constData());
+                return QByteArray();
+            }
+            QFile f(file);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        // PRISCA on the realistic plant and sensor: learning, noise and latency included.
+        const QByteArray window = runOnce("prisca", 1, 1, dir.filePath("window.csv"));
+        QVERIFY(window.contains("# dt: 0.0166666"));
+        QCOMPARE(window, cliRun("prisca", 1, 1, dir.filePath("cli.csv")));
+        // The nominal case: playback and PRISCA park on the lot (the table shows cm).
+        for (const QString method : {"playback", "prisca"}) {
+            const QByteArray nominal = runOnce(method, 0, 0, dir.filePath(method + "-0.csv"));
+            QVERIFY(!nominal.isEmpty());
+            QCOMPARE(nominal, cliRun(method, 0, 0, dir.filePath(method + "-cli-0.csv")));
+            QCOMPARE(w.results()->rowCount(), 2);
+            for (int row = 0; row < 2; ++row) {
+                QCOMPARE(w.results()->item(row, 1)->text(), QStringLiteral("0.0"));
+            }
+        }
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {

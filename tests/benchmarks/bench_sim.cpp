@@ -91,6 +91,7 @@ int main() {
                 ? ""
                 : qPrintable(QStringLiteral(" (speed-up %1x)").arg(oneThread / t, 0, 'f', 2)));
     }
+    const sim::Task task = sim::makeTask(profile, demo);
     // Table I: 8 methods x 20 trials (plus the training phases), as `prisca-cli table1 --jobs N`.
     for (int threads : {1, 2}) {
         std::vector<double> times;
@@ -98,9 +99,9 @@ int main() {
             sim::Table1Settings settings;
             settings.methods = {"prisca", "pd",       "pd-selected", "pd-h",
                                 "pd-lsd", "pd-h-lsd", "playback",    "pgsd"};
-            settings.threads = threads;
+            settings.run.threads = threads;
             const auto start = Clock::now();
-            sim::runTable1(settings, demo, profile, B);
+            sim::runTable1(settings, task);
             times.push_back(seconds(start));
         }
         std::printf(
@@ -112,9 +113,9 @@ int main() {
     {
         sim::Table1Settings settings;
         settings.methods = {"oracle"};
-        settings.threads = 2;
+        settings.run.threads = 2;
         const auto start = Clock::now();
-        const sim::Table1Result result = sim::runTable1(settings, demo, profile, B);
+        const sim::Table1Result result = sim::runTable1(settings, task);
         const auto rows = sim::table1Rows(result);
         std::printf("table1, the oracle alone (20 trials) on 2 threads: %.2f s, %.0f us of CPU per "
                     "control step\n",

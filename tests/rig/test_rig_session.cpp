@@ -8,6 +8,8 @@
 #include "core/DemonstrationStream.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
+#include "sim/Task.h"
 #include "sim/PlantProfile.h"
 
 #include <QFile>
@@ -41,18 +43,12 @@ struct SlideCar {
                 .b;
     }
 
-    rig::TrialRequest trial(const QString& method, int* built = nullptr) const {
+    rig::TrialRequest trial(const QString& method) const {
+        sim::PlantProfile settling = profile;
+        settling.settleTime = 0.5;
         rig::TrialRequest request;
-        request.method = method;
-        request.createController = [this, method, built] {
-            if (built) {
-                ++*built;
-            }
-            return sim::MethodCatalog::create(method, profile, demonstration, b);
-        };
-        request.plant = profile.info;
-        request.demonstration = demonstration;
-        request.settleTime = 0.5;
+        request.setup = std::make_shared<const sim::RunSetup>(
+            sim::makeTask(settling, demonstration), method);
         return request;
     }
 };
@@ -107,14 +103,12 @@ class TestRigSession : public QObject {
         const SlideCar car(60.0);  // the whole 4 s manoeuvre
         const double length = car.demonstration->length() * car.demonstration->dt + 0.5;
         QSignalSpy finished(&rig, &rig::RigSession::trialFinished);
-        int built = 0;
         QString error;
         for (int trial = 1; trial <= 2; ++trial) {
-            QVERIFY2(rig.startTrial(car.trial(QStringLiteral("pd"), &built), &error),
-                     qPrintable(error));
+            QVERIFY2(rig.startTrial(car.trial(QStringLiteral("pd")), &error), qPrintable(error));
             QVERIFY(rig.trialRunning());
-            QCOMPARE(rig.trialNumber(), trial);
-            QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd"), &built), &error));
+            QCOMPARE(rig.trialNumber(), trial);  // one loop for both trials of one method
+            QVERIFY(!rig.startTrial(car.trial(QStringLiteral("pd")), &error));
             QTRY_COMPARE_WITH_TIMEOUT(finished.count(), trial, 20000);
             const auto result = finished.last().at(0).value<rig::RigTrialResult>();
             QCOMPARE(result.trial, trial);
@@ -130,10 +124,8 @@ class TestRigSession : public QObject {
             QVERIFY2(result.parked->position < 0.5,
                      qPrintable(QString::number(result.parked->position)));
         }
-        QCOMPARE(built, 1);  // one loop for both trials of one method
-        QVERIFY(rig.startTrial(car.trial(QStringLiteral("pd-h-lsd"), &built), &error));
-        QCOMPARE(built, 2);  // a new method, a new loop, counting from 1
-        QCOMPARE(rig.trialNumber(), 1);
+        QVERIFY(rig.startTrial(car.trial(QStringLiteral("pd-h-lsd")), &error));
+        QCOMPARE(rig.trialNumber(), 1);  // a new method, a new loop, counting from 1
         rig.stopTrial();
         QCOMPARE(finished.count(), 3);  // said at once, on the caller's thread
         const auto stopped = finished.last().at(0).value<rig::RigTrialResult>();

@@ -4,7 +4,9 @@
 #include "core/RunLogCsv.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
+#include "sim/LearningCurveExperiment.h"
 #include "sim/PlantProfile.h"
+#include "sim/RunSetup.h"
 #include "sim/Table1Experiment.h"
 
 #include <QtTest>
@@ -18,12 +20,29 @@ using namespace prisca::sim;
 namespace {
 
 struct CarTask {
-    PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
-    std::shared_ptr<const core::Demonstration> demo =
-        std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
-    Eigen::MatrixXd b =
-        core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
+    Task task = makeTask(PlantProfile::forPlant(PlantCatalog::describe("slidecar")),
+                         std::make_shared<core::Demonstration>(
+                             PlantCatalog::demonstrate("slidecar", 1)));
+    const PlantProfile& profile = task.profile;
+    std::shared_ptr<const core::Demonstration> demo = task.demonstration;
 };
+
+// The slide-car's scripted demonstration recorded at `hertz` control steps per second.
+Task carTaskAt(double hertz) {
+    SimulationTiming timing;
+    timing.controlPeriod = 1.0 / hertz;
+    return makeTask(PlantProfile::forPlant(PlantCatalog::describe("slidecar")),
+                    std::make_shared<core::Demonstration>(
+                        PlantCatalog::demonstrate("slidecar", 1, timing)));
+}
+
+RunSettings nominal() {
+    RunSettings settings;
+    settings.perturbation = 0.0;
+    settings.sensor = 0.0;
+    settings.trainingTrials = 0;
+    return settings;
+}
 
 double meanPositionCm(const MethodTrials& m) {
     double sum = 0.0;
@@ -42,10 +61,8 @@ class TestExperiments : public QObject {
         Table1Settings settings;
         settings.methods = {"playback", "pd-h-lsd"};
         settings.trials = 2;
-        settings.trainingTrials = 0;
-        settings.perturbation = 0.0;
-        settings.sensor = 0.0;
-        const Table1Result result = runTable1(settings, task.demo, task.profile, task.b);
+        settings.run = nominal();
+        const Table1Result result = runTable1(settings, task.task);
         QCOMPARE(result.methods.size(), size_t(2));
         // With nothing perturbed, the demonstration's own actions put the car on its lot (to
         // Box2D's single precision: within 0.1 mm).
@@ -68,11 +85,11 @@ class TestExperiments : public QObject {
         Table1Settings settings;
         settings.methods = {"playback", "pd-h-lsd"};
         settings.trials = 4;
-        settings.trainingTrials = 0;
-        settings.threads = 1;
-        const Table1Result one = runTable1(settings, task.demo, task.profile, task.b);
-        settings.threads = 2;
-        const Table1Result two = runTable1(settings, task.demo, task.profile, task.b);
+        settings.run.trainingTrials = 0;
+        settings.run.threads = 1;
+        const Table1Result one = runTable1(settings, task.task);
+        settings.run.threads = 2;
+        const Table1Result two = runTable1(settings, task.task);
         for (size_t m = 0; m < one.methods.size(); ++m) {
             for (size_t t = 0; t < one.methods[m].trials.size(); ++t) {
                 QCOMPARE(one.methods[m].trials[t].finalPositionError,
@@ -87,7 +104,7 @@ class TestExperiments : public QObject {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, [&] {
             Table1Settings bad = settings;
             bad.methods = {"pegasus"};  // no Table I row
-            runTable1(bad, task.demo, task.profile, task.b);
+            runTable1(bad, task.task);
         }());
     }
 
@@ -105,21 +122,80 @@ class TestExperiments : public QObject {
 
     void selectedPdGains_comeFromTheGrid() {
         CarTask task;
-        TrainingSetup setup;
-        setup.plant = "slidecar";
-        setup.profile = task.profile;
-        setup.demonstration = task.demo;
-        setup.fittedB = task.b;
-        setup.episode = task.profile.episode(*task.demo, 1.0, 1.0);
-        setup.episode.recordSteps = false;
-        setup.seeds = trainingSeeds(3, 2);
-        const core::PdParameters gains = selectPdGains(setup, {0.5, 2.0}, {0.0, 1.0});
+        RunSettings settings;
+        settings.seed = 3;
+        settings.trainingTrials = 2;
+        const RunSetup setup(task.task, "pd-selected", settings);
+        QCOMPARE(setup.trainingSeeds(), trainingSeeds(3, 2));
+        const core::PdParameters gains = selectPdGains(setup, {}, {0.5, 2.0}, {0.0, 1.0});
         const double kpScale = gains.kp[0] / task.profile.pd.kp[0];
         QVERIFY2(std::abs(kpScale - 0.5) < 1e-12 || std::abs(kpScale - 2.0) < 1e-12,
                  qPrintable(QString::number(kpScale)));
         QVERIFY(((gains.kp / kpScale) - task.profile.pd.kp).cwiseAbs().maxCoeff() < 1e-12);
         QVERIFY(gains.kd.cwiseAbs().maxCoeff() == 0.0 ||
                 ((gains.kd - task.profile.pd.kd).cwiseAbs().maxCoeff() < 1e-12));
+    }
+
+    // A demonstration recorded at any control rate replays exactly on the nominal plant with a
+    // perfect sensor: every experiment steps the plant at the demonstration's own period.
+    void runSetup_stepsThePlantAtTheDemonstrationsPeriod_data() {
+        QTest::addColumn<double>("hertz");
+        for (double hertz : {25.0, 30.0, 40.0, 50.0, 60.0}) {
+            QTest::addRow("%g Hz", hertz) << hertz;
+        }
+    }
+    void runSetup_stepsThePlantAtTheDemonstrationsPeriod() {
+        QFETCH(double, hertz);
+        const Task task = carTaskAt(hertz);
+        QCOMPARE(task.demonstration->dt, 1.0 / hertz);
+        const RunSetup setup(task, "playback", nominal());
+        auto plant = setup.makePlant();
+        QCOMPARE(plant->timing().controlPeriod, 1.0 / hertz);
+        auto controller = setup.makeController();
+        const EpisodeResult run = runEpisode(*plant, *controller, setup.trial(0));
+        const TrialSummary summary = summarizeTrial(plant->info(), *task.demonstration, run);
+        QVERIFY2(summary.finalPositionError < 1e-4,
+                 qPrintable(QStringLiteral("run: %1 m").arg(summary.finalPositionError)));
+
+        Table1Settings table;
+        table.methods = {"playback"};
+        table.trials = 1;
+        table.run = nominal();
+        const Table1Result result = runTable1(table, task);
+        QVERIFY2(result.methods[0].trials[0].finalPositionError < 1e-4,
+                 qPrintable(QStringLiteral("table1: %1 m")
+                                .arg(result.methods[0].trials[0].finalPositionError)));
+
+        LearningCurveSettings curves;
+        curves.methods = {"playback"};
+        curves.runs = 1;
+        curves.budgetSteps = task.demonstration->length();
+        curves.run = nominal();
+        const std::vector<MethodCurves> curve = runLearningCurves(curves, task);
+        QVERIFY(!curve[0].runs[0].empty());
+        // Mean squared position error over the trial [m^2].
+        QVERIFY2(curve[0].runs[0][0].trackingError < 1e-8,
+                 qPrintable(QStringLiteral("curve: %1 m^2").arg(curve[0].runs[0][0].trackingError)));
+    }
+
+    void runSetup_oneSetOfDefaultsAndTrialSeeds() {
+        const RunSettings defaults;
+        QCOMPARE(defaults.trainingTrials, 16);
+        const Task task = carTaskAt(40.0);
+        const RunSetup setup(task, "prisca", defaults);
+        const EpisodeSettings third = setup.trial(2);
+        QCOMPARE(third.seed, mixSeed(defaults.seed, 2));
+        QVERIFY(third.resetMode == core::ResetMode::WarmStart);
+        QVERIFY(setup.trial(0).resetMode == core::ResetMode::Cold);
+        QCOMPARE(setup.trainingSeeds(), trainingSeeds(defaults.seed, defaults.trainingTrials));
+        // The slide-car's trackers compensate the camera's latency, on the rig as in simulation.
+        QCOMPARE(setup.episode().compensatedLatencySteps(),
+                 task.profile.measurement.latencySteps);
+        QVERIFY(setup.episode().compensatedLatencySteps() > 0);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, RunSetup(task, "no-such-method"));
+        RunSettings bad;
+        bad.threads = 0;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, RunSetup(task, "pd", bad));
     }
 
     void profileEpisode_perfectSensorHasNoLatencyAndTheTrialTheDemonstrationsLength() {

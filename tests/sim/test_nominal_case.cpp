@@ -30,18 +30,17 @@ class TestNominalCase : public QObject {
     void everyMethod_parksOnEveryStyle() {
         QFETCH(QString, method);
         QFETCH(double, toleranceCm);
+        const QString plant = QStringLiteral("slidecar");
         Table1ProtocolSettings settings;
-        settings.table.plant = QStringLiteral("slidecar");
         settings.table.methods = {method};
         settings.table.trials = 1;
-        settings.table.trainingTrials = 2;
-        settings.table.perturbation = 0.0;
-        settings.table.sensor = 0.0;
-        settings.table.threads = 2;
-        settings.styles = DemonstrationStyles::names(settings.table.plant);
+        settings.table.run.trainingTrials = 2;
+        settings.table.run.perturbation = 0.0;
+        settings.table.run.sensor = 0.0;
+        settings.table.run.threads = 2;
+        settings.styles = DemonstrationStyles::names(plant);
         settings.seedSets = {7};
-        const PlantProfile profile =
-            PlantProfile::forPlant(PlantCatalog::describe(settings.table.plant));
+        const PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe(plant));
         const Table1ProtocolResult result = runTable1Protocol(settings, profile);
         QCOMPARE(static_cast<int>(result.cells[0].size()), static_cast<int>(settings.styles.size()));
         for (const core::ProtocolCell& cell : result.cells[0]) {

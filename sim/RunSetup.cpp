@@ -1,0 +1,80 @@
+#include "RunSetup.h"
+
+#include "MethodTraining.h"
+#include "PlantCatalog.h"
+#include "RunLogBuilder.h"
+
+#include <stdexcept>
+
+namespace prisca::sim {
+
+RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings)
+    : task_(std::move(task)), method_(&MethodCatalog::get(method)), settings_(settings) {
+    if (!task_.demonstration) {
+        throw std::invalid_argument("a run needs a demonstration");
+    }
+    if (settings_.trainingTrials < 0 || settings_.threads < 1 || !(settings_.perturbation >= 0.0) ||
+        !(settings_.sensor >= 0.0)) {
+        throw std::invalid_argument(
+            "run settings out of range: training trials >= 0, threads >= 1, levels >= 0");
+    }
+    // The plant steps at the demonstration's own period, whatever rate it was recorded at.
+    task_.timing.controlPeriod = task_.demonstration->dt;
+    episode_ = task_.profile.episode(*task_.demonstration, settings_.perturbation,
+                                     settings_.sensor);
+}
+
+std::unique_ptr<Plant> RunSetup::makePlant() const {
+    return PlantCatalog::create(task_.plant, task_.timing);
+}
+
+EpisodeSettings RunSetup::trial(int trial) const {
+    EpisodeSettings episode = episode_;
+    setTrial(episode, settings_.seed, trial);
+    return episode;
+}
+
+std::vector<std::uint64_t> RunSetup::trainingSeeds() const {
+    return sim::trainingSeeds(settings_.seed, settings_.trainingTrials);
+}
+
+std::unique_ptr<core::Controller> RunSetup::makeController(
+    const std::function<bool()>& cancelled,
+    const std::function<void(const QString&)>& progress) const {
+    PlantProfile profile = task_.profile;
+    Eigen::MatrixXd pegasusTheta;
+    const TrainingHooks hooks{cancelled, progress};
+    switch (method_->training) {
+        case MethodSpec::Training::Pegasus:
+            pegasusTheta = trainPegasus(*this, profile.pegasusIterations, hooks).theta;
+            break;
+        case MethodSpec::Training::SelectPdGains:
+            profile.pd = selectPdGains(*this, hooks);
+            break;
+        case MethodSpec::Training::None:
+            break;
+    }
+    if (method_->trainsOffline() && cancelled && cancelled()) {
+        return nullptr;
+    }
+    return MethodCatalog::create(method_->id, profile, task_.demonstration, task_.fit.b,
+                                 pegasusTheta.size() ? &pegasusTheta : nullptr);
+}
+
+std::unique_ptr<core::Controller> RunSetup::makeUntrainedController() const {
+    return MethodCatalog::create(method_->id, task_.profile, task_.demonstration, task_.fit.b);
+}
+
+core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trials,
+                                   const QString& demonstrationSource) const {
+    core::RunLog log = sim::startRunLog(task_.profile.info, method_->id,
+                                        task_.demonstration->dt, controller);
+    log.metadata.insert(QStringLiteral("seed"), QString::number(settings_.seed));
+    log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
+    log.metadata.insert(QStringLiteral("perturbation"), QString::number(settings_.perturbation));
+    log.metadata.insert(QStringLiteral("sensor"), QString::number(settings_.sensor));
+    log.metadata.insert(QStringLiteral("demonstration"), demonstrationSource);
+    return log;
+}
+
+}  // namespace prisca::sim

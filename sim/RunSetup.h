@@ -1,0 +1,81 @@
+#pragma once
+
+#include "EpisodeRunner.h"
+#include "MethodCatalog.h"
+#include "Plant.h"
+#include "Task.h"
+#include "core/Controller.h"
+#include "core/RunLogCsv.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace prisca::sim {
+
+/// The settings of a run that are not a method's parameters, with the one set of defaults the
+/// window, the command line, the experiments, the tuning tools and the rig share. Plain data.
+struct RunSettings {
+    /// Evaluation trial i uses mixSeed(seed, i); training trials have their own stream
+    /// (trainingSeeds), never an evaluation seed.
+    std::uint64_t seed = 1;
+    double perturbation = 1.0;  ///< plant perturbation level (0 nominal, 1 realistic)
+    double sensor = 1.0;        ///< sensor level (0 perfect state, 1 realistic)
+    /// Trials a method trains on before it is evaluated: PD (selected) scores its gain grid on
+    /// them; in Table I the online learners warm up on them. PEGASUS takes its fixed scenarios
+    /// from the first PegasusParameters::scenarios of them.
+    int trainingTrials = 16;
+    int threads = 2;  ///< worker threads for training and parallel trials
+};
+
+/// One run set up from a Task, a method and the run's settings: the plant at the task's own
+/// control period (the demonstration's dt), the trials' episode settings, the method's
+/// controller (trained first where it trains offline) and the run log's header. Every front end
+/// and experiment builds its runs here, so none can disagree about the control period, the
+/// trials' seeds or the defaults. Immutable once made; any thread may use a const RunSetup.
+class RunSetup {
+  public:
+    /// Throws std::invalid_argument naming the known methods for an unknown one, or for
+    /// settings out of range (negative training trials, no thread, a negative level).
+    RunSetup(Task task, const QString& method, const RunSettings& settings = {});
+
+    const Task& task() const { return task_; }
+    const PlantProfile& profile() const { return task_.profile; }
+    const MethodSpec& method() const { return *method_; }
+    const RunSettings& settings() const { return settings_; }
+
+    /// A new plant of the task's kind at the task's control period.
+    std::unique_ptr<Plant> makePlant() const;
+    /// Every trial's settings but its seed and reset: perturbation and sensor at the run's
+    /// levels, the demonstration's length plus the settle time, latency compensation.
+    const EpisodeSettings& episode() const { return episode_; }
+    /// Evaluation trial `trial` (0-based) of the run: seed mixSeed(seed, trial), a cold start
+    /// for the first and warm starts after (setTrial).
+    EpisodeSettings trial(int trial) const;
+    /// The training trials' seeds (settings.trainingTrials of them, their own stream).
+    std::vector<std::uint64_t> trainingSeeds() const;
+
+    /// The method's controller, trained first on the training trials if it trains offline
+    /// (PD (selected) selects its gains, PEGASUS searches its policy). Null if `cancelled`
+    /// stopped the training. `progress` gets a line per training stage (any thread).
+    std::unique_ptr<core::Controller> makeController(
+        const std::function<bool()>& cancelled = {},
+        const std::function<void(const QString&)>& progress = {}) const;
+    /// The method's controller as the profile sets it up, with no training (what runs where
+    /// there is no simulation to train in: the rig).
+    std::unique_ptr<core::Controller> makeUntrainedController() const;
+
+    /// The run log's header for `trials` trials of `controller` (columns, plant, method, the
+    /// control period, seed, levels and where the demonstration came from).
+    core::RunLog startRunLog(const core::Controller& controller, int trials,
+                             const QString& demonstrationSource) const;
+
+  private:
+    Task task_;
+    const MethodSpec* method_;
+    RunSettings settings_;
+    EpisodeSettings episode_;
+};
+
+}  // namespace prisca::sim
