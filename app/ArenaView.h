@@ -35,8 +35,6 @@ class ArenaView : public QWidget {
     /// Fits the whole scene into the view.
     void fitScene();
 
-    /// World metres per pixel (for tests and the status line).
-    double metresPerPixel() const { return 1.0 / scale_; }
 
     QSize sizeHint() const override { return {640, 480}; }
 

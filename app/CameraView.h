@@ -26,7 +26,6 @@ class CameraView : public QWidget {
     /// The demonstration's path and lot on the floor [m] (x, y) and the lot's heading [rad].
     void setTask(const QVector<QPointF>& path, const QPointF& lot, double lotHeading);
     void setCalibrating(bool on);
-    bool isCalibrating() const { return calibrating_; }
 
     QSize sizeHint() const override { return {640, 480}; }
 

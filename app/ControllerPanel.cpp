@@ -15,7 +15,9 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QHBoxLayout>
 #include <QVBoxLayout>
+#include <QCoreApplication>
 
 #include <cmath>
 
@@ -26,20 +28,6 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
       session_(session),
       form_(new QFormLayout),
       method_(new QComboBox(this)),
-      horizon_(new QSpinBox(this)),
-      gamma_(new QDoubleSpinBox(this)),
-      beta_(new QDoubleSpinBox(this)),
-      automatic_(new QCheckBox(this)),
-      stepScale_(new QDoubleSpinBox(this)),
-      thetaBound_(new QDoubleSpinBox(this)),
-      fromPd_(new QCheckBox(this)),
-      gradient_(new QComboBox(this)),
-      effort_(new QDoubleSpinBox(this)),
-      window_(new QSpinBox(this)),
-      pgsdStep_(new QDoubleSpinBox(this)),
-      ilcLearning_(new QDoubleSpinBox(this)),
-      ilcLead_(new QSpinBox(this)),
-      ilcCutoff_(new QDoubleSpinBox(this)),
       featuresLabel_(new QLabel(this)),
       features_(new QTableWidget(this)),
       limitsLabel_(new QLabel(this)),
@@ -51,49 +39,6 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     for (const sim::MethodSpec& spec : sim::MethodCatalog::all()) {
         method_->addItem(spec.label, spec.id);
     }
-    horizon_->setObjectName(QStringLiteral("horizon"));
-    horizon_->setRange(1, 200);
-    horizon_->setSuffix(QStringLiteral(" steps"));
-    gamma_->setObjectName(QStringLiteral("gamma"));
-    gamma_->setRange(0.0, 1.0);
-    gamma_->setDecimals(3);
-    gamma_->setSingleStep(0.01);
-    beta_->setObjectName(QStringLiteral("beta"));
-    beta_->setRange(1.0, 1e7);
-    beta_->setDecimals(0);
-    beta_->setSingleStep(100);
-    beta_->setSuffix(QStringLiteral(" steps"));
-    automatic_->setObjectName(QStringLiteral("priscaAutomatic"));
-    stepScale_->setObjectName(QStringLiteral("stepScale"));
-    stepScale_->setRange(0.0, 1e4);
-    stepScale_->setDecimals(4);
-    thetaBound_->setObjectName(QStringLiteral("thetaBound"));
-    thetaBound_->setRange(0.0, 1e4);
-    thetaBound_->setDecimals(2);
-    fromPd_->setObjectName(QStringLiteral("priscaFromPd"));
-    gradient_->setObjectName(QStringLiteral("priscaGradient"));
-    gradient_->addItem(QString(), static_cast<int>(core::PriscaParameters::Gradient::OneStep));
-    gradient_->addItem(QString(), static_cast<int>(core::PriscaParameters::Gradient::ClosedLoop));
-    effort_->setObjectName(QStringLiteral("effortWeight"));
-    effort_->setRange(0.0, 1e4);
-    effort_->setDecimals(3);
-    window_->setObjectName(QStringLiteral("matchingWindow"));
-    window_->setRange(0, 100000);
-    window_->setSuffix(QStringLiteral(" samples"));
-    pgsdStep_->setObjectName(QStringLiteral("pgsdStep"));
-    pgsdStep_->setRange(0.0, 1e6);
-    pgsdStep_->setDecimals(5);
-    ilcLearning_->setObjectName(QStringLiteral("ilcLearning"));
-    ilcLearning_->setRange(0.0, 100.0);
-    ilcLearning_->setDecimals(3);
-    ilcLearning_->setSingleStep(0.05);
-    ilcLead_->setObjectName(QStringLiteral("ilcLead"));
-    ilcLead_->setRange(0, 200);
-    ilcLead_->setSuffix(QStringLiteral(" steps"));
-    ilcCutoff_->setObjectName(QStringLiteral("ilcCutoff"));
-    ilcCutoff_->setRange(0.0, 20.0);
-    ilcCutoff_->setDecimals(2);
-    ilcCutoff_->setSuffix(QStringLiteral(" Hz"));
     preset_->setObjectName(QStringLiteral("controllerPreset"));
     features_->setObjectName(QStringLiteral("featureScales"));
     limits_->setObjectName(QStringLiteral("actionLimits"));
@@ -107,12 +52,7 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
         table->setMinimumHeight(60);
     }
 
-    // Each field gets its own label object (retranslateUi() fills in the text).
-    for (QWidget* field : std::initializer_list<QWidget*>{
-             method_, horizon_, gamma_, beta_, automatic_, stepScale_, thetaBound_, fromPd_,
-             gradient_, effort_, window_, pgsdStep_, ilcLearning_, ilcLead_, ilcCutoff_}) {
-        form_->addRow(new QLabel(this), field);
-    }
+    form_->addRow(new QLabel(this), method_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form_);
     layout->addWidget(featuresLabel_);
@@ -124,20 +64,10 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     layout->addStretch(1);
 
     connect(method_, &QComboBox::activated, this, &ControllerPanel::apply);
-    connect(gradient_, &QComboBox::activated, this, &ControllerPanel::apply);
-    connect(fromPd_, &QCheckBox::toggled, this, &ControllerPanel::apply);
-    connect(automatic_, &QCheckBox::toggled, this, &ControllerPanel::apply);
-    for (QSpinBox* box : {horizon_, window_, ilcLead_}) {
-        connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
-    }
-    for (QDoubleSpinBox* box :
-         {gamma_, beta_, stepScale_, thetaBound_, effort_, pgsdStep_, ilcLearning_, ilcCutoff_}) {
-        connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
-    }
     connect(features_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
     connect(limits_, &QTableWidget::itemChanged, this, &ControllerPanel::apply);
     connect(preset_, &QPushButton::clicked, this, [this] {
-        sim::PlantProfile preset = sim::PlantProfile::forPlant(session_.profile().info);
+        sim::MethodTuning preset = sim::MethodTuning::forPlant(session_.profile().info);
         preset.mapping = session_.profile().mapping;  // the operator's B~ is not a parameter
         session_.setProfile(preset);
     });
@@ -146,24 +76,115 @@ ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     showSession();
 }
 
+void ControllerPanel::buildEditors() {
+    const QString key = session_.method() + QLatin1Char('@') + session_.plant();
+    if (key == editorsFor_) {
+        return;
+    }
+    editorsFor_ = key;
+    for (const Editor& editor : editors_) {
+        form_->removeRow(editor.label);  // deletes the label and the field
+    }
+    editors_.clear();
+    const sim::MethodSpec* spec = sim::MethodCatalog::find(session_.method());
+    if (!spec) {
+        return;
+    }
+    const sim::PlantInfo& info = session_.profile().info;
+    for (const sim::MethodParameter& parameter : spec->parameters) {
+        Editor editor;
+        editor.parameter = &parameter;
+        editor.label = new QLabel(this);
+        const QString name = QString::fromLatin1(parameter.name);
+        const QString unit = QString::fromUtf8(parameter.unit);
+        const int count = parameter.perChannel ? info.actionDimension() : 1;
+        for (int l = 0; l < count; ++l) {
+            QWidget* field = nullptr;
+            switch (parameter.kind) {
+                case sim::MethodParameter::Kind::Switch: {
+                    auto* box = new QCheckBox(this);
+                    connect(box, &QCheckBox::toggled, this, &ControllerPanel::apply);
+                    field = box;
+                    break;
+                }
+                case sim::MethodParameter::Kind::Choice: {
+                    auto* box = new QComboBox(this);
+                    for (const char* choice : parameter.choices) {
+                        box->addItem(QString::fromLatin1(choice));
+                    }
+                    connect(box, &QComboBox::activated, this, &ControllerPanel::apply);
+                    field = box;
+                    break;
+                }
+                case sim::MethodParameter::Kind::Integer: {
+                    auto* box = new QSpinBox(this);
+                    box->setRange(static_cast<int>(parameter.minimum),
+                                  static_cast<int>(parameter.maximum));
+                    if (!unit.isEmpty()) {
+                        box->setSuffix(QLatin1Char(' ') + unit);
+                    }
+                    connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
+                    field = box;
+                    break;
+                }
+                case sim::MethodParameter::Kind::Real: {
+                    auto* box = new QDoubleSpinBox(this);
+                    box->setRange(parameter.minimum, parameter.maximum);
+                    box->setDecimals(parameter.decimals);
+                    if (!unit.isEmpty()) {
+                        box->setSuffix(QLatin1Char(' ') + unit);
+                    }
+                    connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
+                    field = box;
+                    break;
+                }
+            }
+            field->setObjectName(parameter.perChannel ? QStringLiteral("%1[%2]").arg(name).arg(l)
+                                                      : name);
+            editor.fields.push_back(field);
+        }
+        if (editor.fields.size() == 1) {
+            form_->addRow(editor.label, editor.fields.front());
+        } else {
+            // One box per control, each labelled with its control's name.
+            auto* row = new QWidget(this);
+            row->setObjectName(name);
+            auto* boxes = new QHBoxLayout(row);
+            boxes->setContentsMargins(0, 0, 0, 0);
+            for (size_t l = 0; l < editor.fields.size(); ++l) {
+                auto* channel = new QLabel(info.actionNames.value(static_cast<int>(l)), row);
+                boxes->addWidget(channel);
+                editor.fields[l]->setParent(row);
+                boxes->addWidget(editor.fields[l], 1);
+            }
+            form_->addRow(editor.label, row);
+        }
+        editors_.push_back(editor);
+    }
+    retranslateUi();
+}
+
 void ControllerPanel::showSession() {
     updating_ = true;
-    const sim::PlantProfile& p = session_.profile();
+    buildEditors();
+    const sim::MethodTuning& p = session_.profile();
     method_->setCurrentIndex(method_->findData(session_.method()));
-    horizon_->setValue(p.prisca.horizon);
-    gamma_->setValue(p.prisca.gamma);
-    beta_->setValue(p.prisca.stepSize.beta);
-    automatic_->setChecked(p.priscaAutomatic);
-    stepScale_->setValue(p.prisca.stepSize.scale);
-    thetaBound_->setValue(p.prisca.thetaBound);
-    fromPd_->setChecked(p.priscaFromPd);
-    gradient_->setCurrentIndex(gradient_->findData(static_cast<int>(p.prisca.gradient)));
-    effort_->setValue(p.prisca.effortWeights.size() ? p.prisca.effortWeights.maxCoeff() : 0.0);
-    window_->setValue(p.matchingWindow);
-    pgsdStep_->setValue(p.pgsd.stepSize);
-    ilcLearning_->setValue(p.ilcLearningScale);
-    ilcLead_->setValue(p.ilcLead);
-    ilcCutoff_->setValue(p.ilcCutoff);
+    for (const Editor& editor : editors_) {
+        const Eigen::VectorXd value = editor.parameter->value(p);
+        for (size_t l = 0; l < editor.fields.size() && static_cast<Eigen::Index>(l) < value.size();
+             ++l) {
+            QWidget* field = editor.fields[l];
+            if (auto* box = qobject_cast<QCheckBox*>(field)) {
+                box->setChecked(value[l] != 0.0);
+            } else if (auto* combo = qobject_cast<QComboBox*>(field)) {
+                combo->setCurrentIndex(static_cast<int>(value[l]));
+            } else if (auto* spin = qobject_cast<QSpinBox*>(field)) {
+                spin->setValue(static_cast<int>(value[l]));
+            } else if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {
+                real->setValue(value[l]);
+            }
+        }
+    }
 
     const core::FeatureMap& features = editedFeatures();
     const int m = p.info.actionDimension();
@@ -216,7 +237,13 @@ void ControllerPanel::showSession() {
 void ControllerPanel::enableScales() {
     const bool derived =
         session_.profile().priscaAutomatic && session_.method() == QLatin1String("prisca");
-    stepScale_->setEnabled(!derived);
+    for (const Editor& editor : editors_) {
+        if (QLatin1String(editor.parameter->name) == QLatin1String("prisca.alpha0")) {
+            for (QWidget* field : editor.fields) {
+                field->setEnabled(!derived);
+            }
+        }
+    }
     features_->setEnabled(!derived);
 }
 
@@ -228,27 +255,29 @@ void ControllerPanel::apply() {
     if (updating_ || session_.plant().isEmpty()) {
         return;
     }
-    sim::PlantProfile p = session_.profile();
-    p.prisca.horizon = horizon_->value();
-    p.prisca.gamma = gamma_->value();
-    p.prisca.stepSize.beta = beta_->value();
-    p.prisca.stepSize.scale = stepScale_->value();
-    p.priscaAutomatic = automatic_->isChecked();
-    p.prisca.thetaBound = thetaBound_->value();
-    p.priscaFromPd = fromPd_->isChecked();
-    p.prisca.gradient =
-        static_cast<core::PriscaParameters::Gradient>(gradient_->currentData().toInt());
-    if (effort_->value() > 0.0) {
-        p.prisca.effortWeights =
-            Eigen::VectorXd::Constant(p.info.actionDimension(), effort_->value());
-    } else {
-        p.prisca.effortWeights.resize(0);
+    sim::MethodTuning p = session_.profile();
+    const QString method = method_->currentData().toString();
+    if (method != session_.method()) {
+        // A new method shows its own parameters: switch first, then edits apply to it.
+        session_.setMethod(method);
+        return;
     }
-    p.matchingWindow = window_->value();
-    p.pgsd.stepSize = pgsdStep_->value();
-    p.ilcLearningScale = ilcLearning_->value();
-    p.ilcLead = ilcLead_->value();
-    p.ilcCutoff = ilcCutoff_->value();
+    for (const Editor& editor : editors_) {
+        Eigen::VectorXd value(static_cast<Eigen::Index>(editor.fields.size()));
+        for (size_t l = 0; l < editor.fields.size(); ++l) {
+            QWidget* field = editor.fields[l];
+            if (auto* box = qobject_cast<QCheckBox*>(field)) {
+                value[l] = box->isChecked() ? 1.0 : 0.0;
+            } else if (auto* combo = qobject_cast<QComboBox*>(field)) {
+                value[l] = combo->currentIndex();
+            } else if (auto* spin = qobject_cast<QSpinBox*>(field)) {
+                value[l] = spin->value();
+            } else if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {
+                value[l] = real->value();
+            }
+        }
+        editor.parameter->assign(p, value);  // the editors' ranges are the declaration's
+    }
 
     // Feature scales and limits: every cell must be a finite number; limits within the plant's.
     QString problem;
@@ -293,12 +322,8 @@ void ControllerPanel::apply() {
     } else {
         p.features = core::FeatureMap(terms);
     }
-    const QString method = method_->currentData().toString();
     updating_ = true;  // the session echoes the change back; the boxes already show it
     session_.setProfile(p);
-    if (method != session_.method()) {
-        session_.setMethod(method);
-    }
     updating_ = false;
     enableScales();
 }
@@ -311,69 +336,37 @@ void ControllerPanel::changeEvent(QEvent* event) {
 }
 
 void ControllerPanel::retranslateUi() {
-    const auto label = [this](QWidget* field, const QString& text, const QString& tip) {
-        if (auto* l = qobject_cast<QLabel*>(form_->labelForField(field))) {
+    const auto label = [this](QWidget* field, QLabel* l, const QString& text, const QString& tip) {
+        if (l) {
             l->setText(text);
             l->setToolTip(tip);
         }
         field->setToolTip(tip);
     };
-    label(method_, tr("Method:"),
+    label(method_, qobject_cast<QLabel*>(form_->labelForField(method_)), tr("Method:"),
           tr("PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, "
              "PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated "
              "plant itself (simulation only)."));
-    label(horizon_, tr("Horizon H:"),
-          tr("Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13)."));
-    label(gamma_, tr("Depreciation γ:"),
-          tr("Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10."));
-    label(beta_, tr("Step rate β:"),
-          tr("Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3)."));
-    label(automatic_, tr("Automatic scales:"),
-          tr("PRISCA derives its feature scales, α_0 and matching window from the demonstration "
-             "and the fit when it starts (each feature of order one over a second of the "
-             "manoeuvre; the step a fixed share of a Newton step; a one-second window). Off: the "
-             "step scale and feature scales below, the plant's tuned preset."));
-    label(stepScale_, tr("Step scale α_0:"),
-          tr("α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and "
-             "B)."));
-    label(thetaBound_, tr("θ bound:"),
-          tr("If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 "
-             "leaves it free."));
-    thetaBound_->setSpecialValueText(tr("none"));
-    label(fromPd_, tr("Start from the PD law:"),
-          tr("PRISCA's policy is u = u* + the PD law + θᵀφ: θ = 0 already holds the robot on the "
-             "path and PRISCA learns a correction (off: θ = 0 is no feedback at all, as in "
-             "Algorithm 1)."));
-    label(gradient_, tr("Gradient:"),
-          tr("One step: eq. 14 as printed (how the next state moves with θ). Closed loop: eq. 4's "
-             "chain rule carried over the window through the fitted model and the policy's own "
-             "feedback."));
-    gradient_->setItemText(0, tr("One step (eq. 14)"));
-    gradient_->setItemText(1, tr("Closed loop (eq. 4 over H)"));
-    label(effort_, tr("Effort weight R:"),
-          tr("The cost also charges the correction's effort, R (θᵀφ)² per control: what makes "
-             "learning settle without a θ bound. 0: none."));
-    effort_->setSpecialValueText(tr("none"));
-    label(window_, tr("Matching window:"),
-          tr("How far ahead the least-state-deviation reference may search (eq. 12); 0 searches "
-             "the whole demonstration."));
-    label(pgsdStep_, tr("PGSD step α:"), tr("The fixed step size of PGSD (no decay)."));
-    label(ilcLearning_, tr("ILC learning Γ/Kp:"),
-          tr("ILC's learning gain per control, as a share of the PD's Kp: how much of a trial's "
-             "error goes into the next trial's feedforward."));
-    label(ilcLead_, tr("ILC lead:"),
-          tr("The error this many steps later corrects the action now (covers the plant's "
-             "delay)."));
-    label(ilcCutoff_, tr("ILC Q cutoff:"),
-          tr("Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it "
-             "unfiltered."));
-    ilcLead_->setSuffix(tr(" steps"));
+    for (const Editor& editor : editors_) {
+        const sim::MethodParameter& p = *editor.parameter;
+        const QString help = QCoreApplication::translate("MethodParameter", p.help);
+        const QString tip = QStringLiteral("%1 (%2, %3)").arg(help, QString::fromLatin1(p.name),
+                                                               p.range());
+        label(editor.fields.front(), editor.label,
+              QCoreApplication::translate("MethodParameter", p.label) + QLatin1Char(':'), tip);
+        for (QWidget* field : editor.fields) {
+            field->setToolTip(tip);
+            if (p.zeroMeans) {
+                if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {
+                    real->setSpecialValueText(
+                        QCoreApplication::translate("MethodParameter", p.zeroMeans));
+                }
+            }
+        }
+    }
     preset_->setText(tr("Restore the plant's tuned preset"));
     featuresLabel_->setText(tr("Feature scales φ (per control; the policy is u = u* + θᵀφ):"));
     limitsLabel_->setText(tr("Action limits:"));
-    horizon_->setSuffix(tr(" steps"));
-    beta_->setSuffix(tr(" steps"));
-    window_->setSuffix(tr(" samples"));
 }
 
 }  // namespace prisca::app

@@ -1,6 +1,9 @@
 #pragma once
 
 #include "core/FeatureMap.h"
+#include "sim/MethodParameter.h"
+
+#include <vector>
 
 #include <QWidget>
 
@@ -17,11 +20,12 @@ namespace prisca::app {
 
 class LabSession;
 
-/// The controller: the method, and PRISCA's parameters (H, gamma, beta, step scale, theta
-/// bound, matching window) with tooltips naming the paper's equations; PGSD's fixed step; the
-/// scales of the features phi (of the method chosen: PRISCA may have its own) and the action
-/// limits the controller saturates to; a button restoring the plant's tuned preset. Every valid
-/// edit goes straight into the session; an invalid one is named and not applied.
+/// The controller: the method, and the parameters its catalog entry declares
+/// (sim::MethodSpec::parameters: label, unit, range and help come from there), the scales of the
+/// features φ (of the method chosen: PRISCA may have its own) and the action limits the
+/// controller saturates to; a button restoring the plant's tuned preset. Every valid edit goes
+/// straight into the session; an invalid one is named and not applied. Each parameter's editor
+/// is named after the parameter ("prisca.H"; one per control "pd.kp[0]", "pd.kp[1]").
 class ControllerPanel : public QWidget {
     Q_OBJECT
   public:
@@ -31,7 +35,14 @@ class ControllerPanel : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    struct Editor {
+        const sim::MethodParameter* parameter = nullptr;
+        QLabel* label = nullptr;
+        std::vector<QWidget*> fields;  // one, or one per control
+    };
     void retranslateUi();
+    /// The method's parameters as editors (rebuilt when the method or the plant changes).
+    void buildEditors();
     void showSession();
     void apply();
     /// alpha_0 and the feature scales are PRISCA's own to set only with automatic defaults off.
@@ -41,22 +52,10 @@ class ControllerPanel : public QWidget {
 
     LabSession& session_;
     bool updating_ = false;
+    QString editorsFor_;  // the method and plant the editors were built for
     QFormLayout* form_;
     QComboBox* method_;
-    QSpinBox* horizon_;
-    QDoubleSpinBox* gamma_;
-    QDoubleSpinBox* beta_;
-    QCheckBox* automatic_;  // PRISCA's automatic defaults (PlantProfile::priscaAutomatic)
-    QDoubleSpinBox* stepScale_;
-    QDoubleSpinBox* thetaBound_;
-    QCheckBox* fromPd_;       // PRISCA starts from the PD law (PlantProfile::priscaFromPd)
-    QComboBox* gradient_;     // one-step (eq. 14) or closed loop (eq. 4 over the window)
-    QDoubleSpinBox* effort_;  // R of the correction's effort (0: none)
-    QSpinBox* window_;
-    QDoubleSpinBox* pgsdStep_;
-    QDoubleSpinBox* ilcLearning_;
-    QSpinBox* ilcLead_;
-    QDoubleSpinBox* ilcCutoff_;
+    std::vector<Editor> editors_;
     QLabel* featuresLabel_;
     QTableWidget* features_;
     QLabel* limitsLabel_;

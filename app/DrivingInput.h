@@ -24,7 +24,6 @@ class DrivingInput : public QObject {
     /// Starts listening (neutral input); stop() releases the keys and returns to neutral.
     void start(int controls);
     void stop();
-    bool isActive() const { return active_; }
     /// Advances the ramp by dt [s] and reads the gamepad; returns the input.
     const Eigen::VectorXd& advance(double dt);
     const Eigen::VectorXd& input() const { return input_; }

@@ -2,7 +2,7 @@
 
 #include "core/Demonstration.h"
 #include "sim/LearningCurveExperiment.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
 #include "sim/Table1Experiment.h"

@@ -24,7 +24,9 @@ namespace {
 // 2: the slide-car's PRISCA starts from the PD+H+LSD law and learns through the closed loop;
 // PRISCA's, the PD's and ILC's parameters were re-tuned with it, so those of a version-1 session
 // are not applied (they would make the new form run away: development cells 3.83 -> 6.01 cm).
-constexpr int kSessionVersion = 2;
+// 3: method parameters as the catalog declares them ("parameters": {"prisca.H": "10", ...});
+// 2 and 1 kept them in per-method objects, still read.
+constexpr int kSessionVersion = 3;
 
 QJsonArray vectorToJson(const Eigen::VectorXd& v) {
     QJsonArray a;
@@ -144,7 +146,7 @@ void LabSession::setPlant(const QString& plant) {
     }
     const QString style = sim::DemonstrationStyles::classic(plant);
     task_ = sim::makeTask(
-        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant)),
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)),
         std::make_shared<core::Demonstration>(sim::DemonstrationStyles::record(plant, style, 1)),
         fitOptions_);
     scriptedStyle_ = style;
@@ -202,7 +204,7 @@ void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t se
     emit fitChanged();
 }
 
-void LabSession::setProfile(const sim::PlantProfile& profile) {
+void LabSession::setProfile(const sim::MethodTuning& profile) {
     const bool mappingChanged =
         profile.mapping.signs.rows() != task_.profile.mapping.signs.rows() ||
         profile.mapping.signs.cols() != task_.profile.mapping.signs.cols() ||
@@ -242,26 +244,12 @@ QByteArray LabSession::toJson() const {
                        : "rate"},
         {"nonNegative", fitOptions_.nonNegative},
         {"robust", fitOptions_.robust}};
-    const core::PriscaParameters& p = task_.profile.prisca;
-    QJsonObject prisca{
-        {"horizon", p.horizon},
-        {"gamma", p.gamma},
-        {"beta", p.stepSize.beta},
-        {"stepScale", p.stepSize.scale},
-        {"thetaBound", p.thetaBound},
-        {"useBaseline", p.useBaseline},
-        {"useInverseDepreciation", p.useInverseDepreciation},
-        {"fromPd", task_.profile.priscaFromPd},
-        {"automatic", task_.profile.priscaAutomatic},
-        {"gradient",
-         p.gradient == core::PriscaParameters::Gradient::ClosedLoop ? "closed-loop" : "one-step"},
-        {"effortWeight", p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0}};
-    QJsonObject pgsd{{"horizon", task_.profile.pgsd.horizon},
-                     {"stepSize", task_.profile.pgsd.stepSize},
-                     {"thetaBound", task_.profile.pgsd.thetaBound}};
-    QJsonObject pd{{"kp", vectorToJson(task_.profile.pd.kp)},
-                   {"kd", vectorToJson(task_.profile.pd.kd)},
-                   {"horizon", task_.profile.pdHorizon}};
+    // Every parameter a method declares, by name, as `--param` writes it.
+    QJsonObject parameters;
+    for (const sim::MethodParameter* parameter : sim::MethodCatalog::parameters()) {
+        parameters.insert(QString::fromLatin1(parameter->name),
+                          parameter->format(parameter->value(task_.profile)));
+    }
     QJsonObject root{
         {"format", "prisca-session"},
         {"version", kSessionVersion},
@@ -272,14 +260,7 @@ QByteArray LabSession::toJson() const {
         {"mapping", task_.profile.mapping.toString()},
         {"fit", fit},
         {"method", method_},
-        {"matchingWindow", task_.profile.matchingWindow},
-        {"prisca", prisca},
-        {"pgsd", pgsd},
-        {"ilc", QJsonObject{{"learningScale", task_.profile.ilcLearningScale},
-                            {"lead", task_.profile.ilcLead},
-                            {"cutoff", task_.profile.ilcCutoff},
-                            {"feedbackScale", task_.profile.ilcFeedbackScale}}},
-        {"pd", pd},
+        {"parameters", parameters},
         {"featureScales", scalesToJson(task_.profile.features)},
         {"limits", QJsonObject{{"lower", vectorToJson(task_.profile.info.actionLower)},
                                {"upper", vectorToJson(task_.profile.info.actionUpper)}}}};
@@ -333,7 +314,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     if (!sim::PlantCatalog::names().contains(plant)) {
         return fail(tr("'plant' must be one of %1").arg(sim::PlantCatalog::names().join(", ")));
     }
-    sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
     QString what;
     if (root.contains("mapping")) {
         const auto mapping = core::IntuitiveMapping::parse(root.value("mapping").toString(), &what);
@@ -417,6 +398,20 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     } else {
         p.effortWeights.resize(0);
     }
+    // Version 3 on: every declared parameter by name, checked as --param checks it.
+    const QJsonObject parameters = root.value("parameters").toObject();
+    for (auto it = parameters.begin(); it != parameters.end(); ++it) {
+        if (!it.value().isString()) {
+            return fail(tr("'parameters.%1' must be a string such as \"10\" or \"1,1.2\"")
+                            .arg(it.key()));
+        }
+        try {
+            sim::MethodCatalog::setParameter(profile, it.key() + QLatin1Char('=') +
+                                                          it.value().toString());
+        } catch (const std::invalid_argument& e) {
+            return fail(tr("'parameters': %1").arg(QString::fromUtf8(e.what())));
+        }
+    }
     if (!readScales(root, "featureScales", &profile.features, &what)) {
         return fail(what);
     }
@@ -460,8 +455,12 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
                             : core::ActionMappingFitOptions::Target::RateChange;
     fitOptions.nonNegative = fit.value("nonNegative").toBool(true);
     fitOptions.robust = fit.value("robust").toBool(true);
-    p.useBaseline = prisca.value("useBaseline").toBool(true);
-    p.useInverseDepreciation = prisca.value("useInverseDepreciation").toBool(true);
+    if (prisca.contains("useBaseline")) {  // version 2
+        p.useBaseline = prisca.value("useBaseline").toBool(true);
+    }
+    if (prisca.contains("useInverseDepreciation")) {
+        p.useInverseDepreciation = prisca.value("useInverseDepreciation").toBool(true);
+    }
 
     // The demonstration: the file the session names, else the plant's scripted one.
     std::shared_ptr<const core::Demonstration> demonstration;

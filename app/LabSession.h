@@ -2,7 +2,7 @@
 
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/Task.h"
 
 #include <QObject>
@@ -55,10 +55,10 @@ class LabSession : public QObject {
     void setDemonstrationSource(const QString& source);
 
     /// The plant's profile with the operator's edits (mapping B~, method parameters).
-    const sim::PlantProfile& profile() const { return task_.profile; }
+    const sim::MethodTuning& profile() const { return task_.profile; }
     /// Replaces the profile and refits B_v if its mapping changed. Throws std::invalid_argument
     /// if the mapping is not the plant's m x n; the session is then unchanged.
-    void setProfile(const sim::PlantProfile& profile);
+    void setProfile(const sim::MethodTuning& profile);
 
     /// Options of the last fit of B_v, and the fit itself.
     const core::ActionMappingFitOptions& fitOptions() const { return fitOptions_; }

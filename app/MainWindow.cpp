@@ -10,7 +10,7 @@
 #include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
 #include "app/RigPanel.h"
-#include "app/RunController.h"
+#include "app/RunThread.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
 #include "sim/MethodCatalog.h"
@@ -80,7 +80,7 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     : QMainWindow(parent),
       languages_(languages),
       session_(new LabSession(this)),
-      run_(new RunController(this)),
+      run_(new RunThread(this)),
       versionLabel_(new QLabel(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(kProductName);
@@ -112,9 +112,9 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     qApp->installEventFilter(this);
     statusBar()->addPermanentWidget(versionLabel_);
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
-    connect(run_, &RunController::progress, this,
+    connect(run_, &RunThread::progress, this,
             [this](const QString& text) { statusBar()->showMessage(text); });
-    connect(run_, &RunController::failed, this,
+    connect(run_, &RunThread::failed, this,
             [this](const QString& text) { QMessageBox::warning(this, tr("Run"), text); });
     retranslateUi();
     if (!session_->notice().isEmpty()) {
@@ -286,7 +286,7 @@ void MainWindow::createPanels() {
         arena_->clearTrails();
         chartsPanel_->clear();
     });
-    connect(run_, &RunController::samplesReady, arena_, &ArenaView::addSamples);
+    connect(run_, &RunThread::samplesReady, arena_, &ArenaView::addSamples);
     connect(recordPanel_, &RecordPanel::recordingStarted, arena_, &ArenaView::clearTrails);
     connect(recordPanel_, &RecordPanel::samplesReady, arena_, &ArenaView::addSamples);
     // E-STOP ends a recording too (the operator may be driving when it is pressed).
@@ -298,11 +298,11 @@ void MainWindow::createPanels() {
     // The rig's car where the camera sees it, in the arena too.
     connect(rigPanel_, &RigPanel::carTracked, arena_,
             [this](const Eigen::VectorXd& state) { arena_->showState(state, Eigen::VectorXd()); });
-    connect(run_, &RunController::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
+    connect(run_, &RunThread::samplesReady, chartsPanel_, &LiveChartsPanel::addSamples);
 }
 
 void MainWindow::showScene() {
-    const sim::PlantProfile& profile = session_->profile();
+    const sim::MethodTuning& profile = session_->profile();
     arena_->setScene(profile.info, session_->demonstration());
     chartsPanel_->setPlant(profile.info, parameterCount());
 }

@@ -21,7 +21,7 @@ class LiveChartsPanel;
 class MappingPanel;
 class RecordPanel;
 class RigPanel;
-class RunController;
+class RunThread;
 class RunPanel;
 class TaskPanel;
 
@@ -42,7 +42,7 @@ class MainWindow : public QMainWindow {
     ~MainWindow() override;
 
     LabSession& session() { return *session_; }
-    RunController& run() { return *run_; }
+    RunThread& run() { return *run_; }
 
     /// Opens a session file; a bad file gets a message box and changes nothing.
     bool openSession(const QString& path);
@@ -76,7 +76,7 @@ class MainWindow : public QMainWindow {
 
     LanguageSwitcher& languages_;
     LabSession* session_;
-    RunController* run_;
+    RunThread* run_;
     ArenaView* arena_ = nullptr;
     TaskPanel* taskPanel_ = nullptr;
     ControllerPanel* controllerPanel_ = nullptr;

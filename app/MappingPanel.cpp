@@ -100,7 +100,7 @@ MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
 }
 
 void MappingPanel::showSession() {
-    const sim::PlantProfile& p = session_.profile();
+    const sim::MethodTuning& p = session_.profile();
     const int m = p.info.actionDimension(), n = p.info.stateDimension();
     signs_->clear();
     signs_->setRowCount(m);
@@ -135,7 +135,7 @@ void MappingPanel::setSign(int control, int state, int sign) {
 }
 
 void MappingPanel::fit() {
-    sim::PlantProfile p = session_.profile();
+    sim::MethodTuning p = session_.profile();
     for (int l = 0; l < signs_->rowCount(); ++l) {
         for (int i = 0; i < signs_->columnCount(); ++i) {
             if (const QTableWidgetItem* item = signs_->item(l, i)) {

@@ -275,7 +275,7 @@ bool RigPanel::runTrial() {
         return false;
     }
     QString missing;
-    const sim::PlantProfile& profile = session_.profile();
+    const sim::MethodTuning& profile = session_.profile();
     if (const QString rig = rig_.notReady(); !rig.isEmpty()) {
         missing = rig;  // the camera or the link
     } else if (profile.info.name != QLatin1String("slidecar")) {

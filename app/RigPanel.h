@@ -70,8 +70,6 @@ class RigPanel : public QWidget {
     void emergencyStop();
     void resetEmergencyStop();
     bool isRunning() const { return rig_.trialRunning(); }
-    /// The result line of the last trial ("parked ... cm from the lot").
-    QString lastResult() const { return lastResult_; }
 
     /// Drive the car through the link with the keyboard or a gamepad and record the camera's
     /// states and the commands as a demonstration (streamed to disk as it goes); once stopped

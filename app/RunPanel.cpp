@@ -1,7 +1,7 @@
 #include "app/RunPanel.h"
 
 #include "app/LabSession.h"
-#include "app/RunController.h"
+#include "app/RunThread.h"
 #include "core/RunLogCsv.h"
 
 #include <QAction>
@@ -33,7 +33,7 @@ namespace {
 const char* const kSettingsGroup = "run";
 }
 
-RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
+RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
     : QWidget(parent),
       session_(session),
       run_(run),
@@ -148,9 +148,9 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
             run_.pause();
         }
     });
-    connect(stopAction_, &QAction::triggered, &run_, &RunController::stop);
+    connect(stopAction_, &QAction::triggered, &run_, &RunThread::stop);
 
-    connect(&run_, &RunController::runLogReady, this,
+    connect(&run_, &RunThread::runLogReady, this,
             [this](std::shared_ptr<const core::RunLog> log) {
                 exportLog_->setEnabled(log && log->rows.rows() > 0);
             });
@@ -188,13 +188,13 @@ RunPanel::RunPanel(LabSession& session, RunController& run, QWidget* parent)
         run_.setSpeed(speed_->currentData().toDouble());
         QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());
     });
-    connect(&run_, &RunController::phaseChanged, this, &RunPanel::updateButtons);
+    connect(&run_, &RunThread::phaseChanged, this, &RunPanel::updateButtons);
     // Results of another plant or demonstration are not this task's: cleared on a switch.
     connect(&session_, &LabSession::plantChanged, this, &RunPanel::clearResultsForNewTask);
     connect(&session_, &LabSession::demonstrationChanged, this, &RunPanel::clearResultsForNewTask);
-    connect(&run_, &RunController::progress, status_, &QLabel::setText);
-    connect(&run_, &RunController::failed, status_, &QLabel::setText);
-    connect(&run_, &RunController::trialFinished, this, &RunPanel::addTrialRow);
+    connect(&run_, &RunThread::progress, status_, &QLabel::setText);
+    connect(&run_, &RunThread::failed, status_, &QLabel::setText);
+    connect(&run_, &RunThread::trialFinished, this, &RunPanel::addTrialRow);
     connect(divergenceStop_, &QPushButton::clicked, this, [this] {
         run_.stop();
         divergence_->hide();

@@ -15,7 +15,7 @@ class QTableWidget;
 namespace prisca::app {
 
 class LabSession;
-class RunController;
+class RunThread;
 
 /// Run, pause, stop and reset a run of the session's method on the simulated plant; trials,
 /// seed, perturbation and sensor levels; simulation speed (1x, 10x, as fast as possible); each
@@ -25,7 +25,7 @@ class RunController;
 class RunPanel : public QWidget {
     Q_OBJECT
   public:
-    RunPanel(LabSession& session, RunController& run, QWidget* parent = nullptr);
+    RunPanel(LabSession& session, RunThread& run, QWidget* parent = nullptr);
 
     /// Starts a run with the session as it is now (the same as pressing Run).
     void startRun();
@@ -66,7 +66,7 @@ class RunPanel : public QWidget {
     static bool diverged(const sim::TrialSummary& summary, double firstTrialRms);
 
     LabSession& session_;
-    RunController& run_;
+    RunThread& run_;
     RunPhase phase_ = RunPhase::Idle;
     QLabel* trialsLabel_;
     QSpinBox* trials_;

@@ -3,7 +3,7 @@
 #include "core/Demonstration.h"
 #include "core/RunLogCsv.h"
 #include "sim/EpisodeRunner.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
@@ -64,7 +64,7 @@ enum class RunPhase {
 };
 
 /// Runs a method on a simulated plant, trial after trial, paced to real time, a multiple of it,
-/// or as fast as possible. Lives on its own thread (RunController moves it there); its slots are
+/// or as fast as possible. Lives on its own thread (RunThread moves it there); its slots are
 /// called through queued connections, and requestEmergencyStop() from any thread. Samples are
 /// emitted in batches (every ~40 ms of wall time and at the end of each trial) so a fast run
 /// never floods the GUI thread.

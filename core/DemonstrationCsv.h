@@ -10,7 +10,7 @@
 
 namespace prisca::core {
 
-// The demonstration / run-log CSV format (DESIGN.md "File formats"):
+// The demonstration / run-log CSV format (docs/architecture.md "File formats"):
 //
 //     # prisca-demonstration 1
 //     # plant: slidecar

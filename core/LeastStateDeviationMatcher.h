@@ -49,8 +49,6 @@ class LeastStateDeviationMatcher {
     int latency() const { return latency_; }
     /// The reference index for the next observation (call once per control step).
     int match(const Eigen::Ref<const Eigen::VectorXd>& state);
-    /// The last index returned by match(), -1 before the first call.
-    int lastIndex() const { return last_; }
     /// Weighted L1 distance between a state and demonstration sample j.
     double distance(const Eigen::Ref<const Eigen::VectorXd>& state, int j) const;
 

@@ -8,7 +8,7 @@ namespace prisca::core {
 /// smoothed gradient terms A_k = E_i E_j a_j and G_k = E_i E_j a_j D_j of the last tau' steps
 /// (tau' = 2H in the paper). E below is the plain mean over those steps.
 ///
-/// PaperEq15, eq. 15 as printed (DESIGN.md):
+/// PaperEq15, eq. 15 as printed (docs/architecture.md):
 ///     b = 2 E[G (.) A] / (E[A (.) A] + E[A] (.) E[A]),   g = G - b (.) A.
 /// Because G and A are built from the same a_j, G ~ c A over the window, and this b then makes
 /// g ~ 0 (steady A) or g ~ -G (A fluctuating around 0): the update stalls or climbs the cost.

@@ -12,7 +12,7 @@ namespace prisca::core {
 /// element t is the weight of sample j = a + t.
 Eigen::VectorXd nestedExpectationWeights(int count);
 
-/// Smoothing weights of the H-step window ending at step k (DESIGN.md "Smoothing"):
+/// Smoothing weights of the H-step window ending at step k (docs/architecture.md "Smoothing"):
 /// nestedExpectationWeights(min(k, H) + 1); while k < H only the samples that exist are used.
 Eigen::VectorXd smoothingWeights(int step, int horizon);
 

@@ -12,17 +12,6 @@ PdController::PdController(TrackingProblem problem, PdParameters parameters, QSt
       feedback_(std::move(parameters), problem_.demonstration->stateDimension(),
                 problem_.demonstration->actionDimension(), problem_.demonstration->dt) {}
 
-QString PdController::variantName(bool smoothed, bool leastStateDeviation) {
-    QString name = QStringLiteral("pd");
-    if (smoothed) {
-        name += QStringLiteral("-h");
-    }
-    if (leastStateDeviation) {
-        name += QStringLiteral("-lsd");
-    }
-    return name;
-}
-
 void PdController::reset(ResetMode) {
     // PD learns nothing, so a warm start is the same as a cold one.
     matcher_.reset();

@@ -13,16 +13,13 @@ namespace prisca::core {
 /// PD around the demonstration, the paper's comparison family (Table I):
 ///     eps_l = c_l . e_k              (or its H-step nested-expectation smoothing for PD+H)
 ///     u_l = u*_l - Kp_l eps_l - Kd_l d(eps_l)/dt,
-/// saturated. The minus signs make positive gains negative feedback (DESIGN.md writes the sign
+/// saturated. The minus signs make positive gains negative feedback (docs/architecture.md writes the sign
 /// into the gains). The reference is time-driven (PD, PD+H) or least-state-deviation
 /// (PD+LSD, PD+H+LSD), as set in the problem's matching parameters. d/dt is the backward
 /// difference over one control period, zero on the first step.
 class PdController : public Controller {
   public:
     PdController(TrackingProblem problem, PdParameters parameters, QString name);
-
-    /// The method name for a variant: "pd", "pd-h", "pd-lsd" or "pd-h-lsd".
-    static QString variantName(bool smoothed, bool leastStateDeviation);
 
     QString name() const override { return name_; }
     void reset(ResetMode mode = ResetMode::Cold) override;
@@ -34,8 +31,6 @@ class PdController : public Controller {
     }
 
     const PdParameters& parameters() const { return feedback_.parameters(); }
-    /// The error signal eps (m) of the last step, after smoothing.
-    const Eigen::VectorXd& errorSignal() const { return feedback_.signal(); }
 
   private:
     TrackingProblem problem_;

@@ -6,7 +6,7 @@
 
 namespace prisca::core {
 
-/// Gains and variant of the PD baselines (DESIGN.md "Baselines").
+/// Gains and variant of the PD baselines (docs/architecture.md "Baselines").
 struct PdParameters {
     /// Error combination c_l (m x n): row l weighs the tracking error components for control l;
     /// normally B~ (or B), so that "left of the path" becomes "steer right".

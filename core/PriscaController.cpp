@@ -83,7 +83,6 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     smoothedA_.setZero(p, m);
     smoothedG_.setZero(p, m);
     historyA_.setZero(p * m, H + 1);
-    historyCost_.setZero(H + 1);
     weightedError_.setZero(n);
     projected_.setZero(m);
     depreciationOfWindow_.resize(H + 1);
@@ -242,7 +241,6 @@ void PriscaController::reset(ResetMode mode) {
     smoothedA_.setZero();
     smoothedG_.setZero();
     alpha_ = 0.0;
-    smoothedCost_ = 0.0;
     prior_.reset();
     if (mode == ResetMode::Cold) {
         theta_ = initialTheta_;
@@ -268,7 +266,6 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     weightedError_ = problem_.costWeights.cwiseProduct(e);
     const int slot = k % (H + 1);
     record_.cost = e.dot(weightedError_);
-    historyCost_[slot] = record_.cost;
     const int count = std::min(k, H) + 1;
     if (parameters_.gradient == PriscaParameters::Gradient::ClosedLoop) {
         const int ring = static_cast<int>(errorHistory_.cols());
@@ -307,7 +304,6 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     const Eigen::VectorXd& w = windowWeights_[count - 1];
     smoothedA_.setZero();
     smoothedG_.setZero();
-    smoothedCost_ = 0.0;
     depreciationOfWindow_.resize(count);  // changes size only while the first window fills
     for (int t = 0; t < count; ++t) {
         const int sample = k - count + 1 + t;
@@ -317,7 +313,6 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         const auto a = historyA_.col(ring).reshaped(phi_.rows(), m);
         smoothedA_ += w[t] * a;
         smoothedG_ += (w[t] * D) * a;
-        smoothedCost_ += w[t] * historyCost_[ring];
     }
 
     // 4. Gradient with the local optimal baseline.

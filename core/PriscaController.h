@@ -104,8 +104,6 @@ class PriscaController : public Controller {
     /// The theta a cold reset returns to (zero unless set), e.g. a fixed policy found offline.
     /// Also sets the current theta.
     void setInitialTheta(const Eigen::MatrixXd& theta);
-    /// Turns learning on or off from the next step (theta kept as it is).
-    void setLearning(bool learning) { parameters_.learning = learning; }
     /// Where along the demonstration the model holds (one flag per sample, e.g. the samples a
     /// robust fit explained): the closed-loop gradient learns only from errors at references
     /// the model explains, and its sensitivities start afresh after one it does not (a car
@@ -118,21 +116,15 @@ class PriscaController : public Controller {
     const Eigen::MatrixXd& gradient() const { return gradient_; }
     /// b of the last step (p x m); zero when the baseline is off.
     const Eigen::MatrixXd& baseline() const { return baseline_.value(); }
-    /// A_k and G_k of the last step (p x m).
-    const Eigen::MatrixXd& smoothedA() const { return smoothedA_; }
-    const Eigen::MatrixXd& smoothedG() const { return smoothedG_; }
     /// Phi of the last step (p x m).
     const Eigen::MatrixXd& features() const { return phi_; }
     /// alpha_k of the last step.
     double stepSize() const { return alpha_; }
     /// D of the samples of the last window, oldest first (size min(k, H) + 1).
     const Eigen::VectorXd& depreciation() const { return depreciationOfWindow_; }
-    /// J_k = sum_j w_j C_j, the smoothed cost of the last window (eq. 9).
-    double smoothedCost() const { return smoothedCost_; }
     /// dS (m x n): row l is the state effect dt B[l, :] of control l.
     const Eigen::MatrixXd& stateEffect() const { return stateEffect_; }
     const PriscaParameters& parameters() const { return parameters_; }
-    const FeatureMap& featureMap() const { return featureMap_; }
     /// Steps taken since the last cold reset (the k of alpha_k).
     int learningSteps() const { return learningStep_; }
 
@@ -171,7 +163,6 @@ class PriscaController : public Controller {
     Eigen::VectorXd sample_;                      // (p*m) scratch: a_t
     Eigen::MatrixXd actionSensitivity_;           // m x (p*m) scratch: du_t/dtheta
     Eigen::VectorXd effort_;                      // m scratch: R (u_t - u*_t)
-    Eigen::VectorXd costWeights_;                 // n
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
@@ -182,7 +173,6 @@ class PriscaController : public Controller {
     Eigen::MatrixXd smoothedA_;
     Eigen::MatrixXd smoothedG_;
     Eigen::MatrixXd historyA_;     // (p*m) x (H+1) ring of a_j
-    Eigen::VectorXd historyCost_;  // (H+1) ring of C_j
     Eigen::VectorXd weightedError_;
     Eigen::VectorXd projected_;
     Eigen::VectorXd depreciationOfWindow_;
@@ -190,7 +180,6 @@ class PriscaController : public Controller {
     double alpha_ = 0.0;
     double curvatureSum_ = 0.0;  // sum of the steps' curvatures (StepSize::normalised)
     double curvatureSteps_ = 0.0;
-    double smoothedCost_ = 0.0;
     int step_ = 0;          // k within the trial
     int learningStep_ = 0;  // k of alpha_k, kept across warm starts
     int latency_ = 0;           // the sensor latency compensated [steps]

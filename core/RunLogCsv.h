@@ -10,7 +10,7 @@
 
 namespace prisca::core {
 
-/// A run log: one row per control step of one or more trials (DESIGN.md "File formats"):
+/// A run log: one row per control step of one or more trials (docs/architecture.md "File formats"):
 ///
 ///     # prisca-run-log 1
 ///     # plant: slidecar

@@ -4,7 +4,7 @@
 
 namespace prisca::core {
 
-// Statistics for the evaluation metrics (DESIGN.md "Metrics"): Table I error summaries and the
+// Statistics for the evaluation metrics (docs/architecture.md "Metrics"): Table I error summaries and the
 // learning-curve confidence bands. Pure functions, no state; any thread may call them.
 //
 // Non-finite values (NaN, +-inf) are never averaged in: every function here skips them, and

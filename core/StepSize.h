@@ -18,7 +18,7 @@ struct StepSize {
     /// Decaying mode, PRISCA: divide alpha_k by the mean Gauss-Newton curvature of the cost in
     /// theta seen so far (the mean over steps of tr(dE/dtheta^T W dE/dtheta) per theta entry), so
     /// that scale is unit-free: the fraction of a scalar Newton step taken per control step,
-    /// whatever the units of e, phi and B (PlantProfile::automatic).
+    /// whatever the units of e, phi and B (MethodTuning::automatic).
     bool normalised = false;
 
     /// alpha_k for step k >= 0.

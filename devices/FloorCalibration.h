@@ -17,7 +17,7 @@ struct CalibrationPoint {
 };
 
 /// The floor calibration: the homography from image pixels to floor metres, fitted to four or
-/// more points the operator clicked, and how well it fits them. JSON as DESIGN.md gives it:
+/// more points the operator clicked, and how well it fits them. JSON as docs/architecture.md gives it:
 /// {"homography": [h00..h22 row-major, image px -> floor m], "points": [...], "rms_m": ...}.
 struct FloorCalibration {
     cv::Matx33d imageToFloor = cv::Matx33d::eye();

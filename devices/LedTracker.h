@@ -10,7 +10,7 @@
 
 namespace prisca::devices {
 
-/// Where the car's three IR LEDs sit in the car frame (x forward, y left) [m]; DESIGN.md's
+/// Where the car's three IR LEDs sit in the car frame (x forward, y left) [m]; docs/architecture.md's
 /// default: front (+0.12, 0), rear-left (-0.08, +0.06), rear-right (-0.08, -0.06).
 struct LedGeometry {
     std::array<cv::Point2d, 3> leds = {cv::Point2d(0.12, 0.0), cv::Point2d(-0.08, 0.06),
@@ -41,7 +41,7 @@ struct TrackResult {
     bool usedRegion = false;         ///< searched only around the last pose
 };
 
-/// The IR-LED tracker of DESIGN.md: threshold, connected components with area gating and
+/// The IR-LED tracker of docs/architecture.md: threshold, connected components with area gating and
 /// intensity-weighted centroids, the three blobs that best match the LED triangle (all triples,
 /// all labellings, a rigid fit on the floor), the pose through the floor calibration. Once
 /// locked it searches a region around the last pose first and falls back to the full frame.

@@ -137,7 +137,6 @@ class TransmitterLinkWorker : public QObject {
     ChannelPulses command_{};
     QElapsedTimer commandAge_;    ///< invalid until the first command
     std::int64_t commandNs_ = 0;  ///< steady time of the last setCommand()
-    bool sendQueued_ = false;
     bool running_ = false;
 };
 

@@ -39,7 +39,7 @@ struct AcrobotParameters {
     double restEnergy = 1e-3;
 };
 
-/// A two-link acrobot swinging in a vertical plane (DESIGN.md "Plants"), simulated with Box2D: a
+/// A two-link acrobot swinging in a vertical plane (docs/architecture.md "Plants"), simulated with Box2D: a
 /// static ground body, link 1 pinned to it at the origin (the shoulder) and link 2 pinned to the
 /// end of link 1 (the elbow), each with b2RevoluteJoints, masses and inertias set exactly, gravity
 /// (0, -g), and no collision between the links. Must agree with AcrobotEquations.

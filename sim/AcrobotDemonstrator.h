@@ -8,7 +8,7 @@
 
 namespace prisca::sim {
 
-/// A scripted person swinging the simulated acrobot (DESIGN.md "scripted demonstrator"). They
+/// A scripted person swinging the simulated acrobot (docs/architecture.md "scripted demonstrator"). They
 /// have a smooth swing in mind: the shoulder swings with an amplitude that grows from 0 to about
 /// 50 degrees over the first 5.5 s and is then held, the elbow counter-swings a little behind it
 /// (aimed at 35 degrees, about 25 reached), near the arm's slow natural period. They push each

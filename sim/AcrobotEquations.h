@@ -5,7 +5,7 @@
 namespace prisca::sim {
 
 /// The constants of the common reinforcement-learning acrobot (its "book" dynamics).
-/// Plain data; SI units. The defaults are the standard values (DESIGN.md "Plants").
+/// Plain data; SI units. The defaults are the standard values (docs/architecture.md "Plants").
 struct AcrobotConstants {
     double m1 = 1.0;   ///< mass of link 1 [kg]
     double m2 = 1.0;   ///< mass of link 2 [kg]

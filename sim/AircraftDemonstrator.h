@@ -9,7 +9,7 @@
 
 namespace prisca::sim {
 
-/// A scripted pilot who flies the planar aircraft through an S-turn once (DESIGN.md "scripted
+/// A scripted pilot who flies the planar aircraft through an S-turn once (docs/architecture.md "scripted
 /// demonstrator"; the paper's desired UAV trajectory, Fig. 4): a straight along +x, a left turn
 /// of about 180 deg, a straight back along -x, a right turn of about 180 deg, and a final
 /// straight along +x again; about 26 s at the control rate in still air (Perturbation::none()).

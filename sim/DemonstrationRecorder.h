@@ -8,7 +8,7 @@
 namespace prisca::sim {
 
 /// Collects a demonstration sample by sample: row k holds the state s_k observed at t_k and the
-/// action u_k applied from t_k on (DESIGN.md "Demonstration" CSV). Used by the scripted
+/// action u_k applied from t_k on (docs/architecture.md "Demonstration" CSV). Used by the scripted
 /// demonstrators and by recording in the application.
 class DemonstrationRecorder {
   public:

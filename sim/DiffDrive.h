@@ -58,8 +58,6 @@ class DiffDrive : public Plant {
     double time() const override { return time_; }
     bool atRest() const override;
 
-    /// The wheels' current rim speeds [m/s] (left, right), after the motor lag.
-    const std::array<double, 2>& wheelSpeeds() const { return wheelSpeed_; }
     const DiffDriveParameters& parameters() const { return parameters_; }
 
     /// The plant description shared by every differential-drive robot.

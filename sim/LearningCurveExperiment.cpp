@@ -70,7 +70,7 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
         }
         setups.emplace_back(task, method, settings.run);
     }
-    const PlantProfile& profile = task.profile;
+    const MethodTuning& profile = task.profile;
     const std::shared_ptr<const core::Demonstration>& demonstration = task.demonstration;
     const Eigen::MatrixXd& fittedB = task.fit.b;
 
@@ -174,7 +174,7 @@ void pool(std::vector<MethodCurves>& into, const std::vector<MethodCurves>& cell
 }  // namespace
 
 LearningCurveProtocolResult runLearningCurveProtocol(
-    const LearningCurveProtocolSettings& settings, const PlantProfile& profile,
+    const LearningCurveProtocolSettings& settings, const MethodTuning& profile,
     const std::function<void(int, int, const QString&, std::uint64_t)>& cellStarted) {
     const QString& plant = profile.info.name;
     for (const QString& style : settings.styles) {

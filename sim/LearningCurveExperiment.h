@@ -3,7 +3,7 @@
 #include "core/Statistics.h"
 
 #include "EpisodeRunner.h"
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 #include "RunSetup.h"
 #include "Task.h"
 #include "core/Demonstration.h"
@@ -76,7 +76,7 @@ struct LearningCurveProtocolResult {
 /// profile and that cell's demonstration (makeTask). Throws std::invalid_argument for an unknown
 /// style or method, or no cell.
 LearningCurveProtocolResult runLearningCurveProtocol(
-    const LearningCurveProtocolSettings& settings, const PlantProfile& profile,
+    const LearningCurveProtocolSettings& settings, const MethodTuning& profile,
     const std::function<void(int cell, int cells, const QString& style, std::uint64_t seed)>&
         cellStarted = {});
 

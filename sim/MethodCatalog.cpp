@@ -3,10 +3,14 @@
 #include "OracleController.h"
 #include "core/ActionPlayback.h"
 #include "core/IlcController.h"
+#include "core/LqrController.h"
 #include "core/PdController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
 
+#include <QCoreApplication>
+
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -19,7 +23,7 @@ using Made = std::unique_ptr<core::Controller>;
 
 Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     const QString& method = spec.id;
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     const Eigen::MatrixXd& fittedB = in.fittedB;
     core::PriscaParameters parameters = profile.prisca;
@@ -30,9 +34,9 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     }
     Eigen::MatrixXd model = fittedB;
     std::optional<Eigen::MatrixXd> drift;
-    if (profile.priscaModel == PlantProfile::PriscaModel::Signs) {
+    if (profile.priscaModel == MethodTuning::PriscaModel::Signs) {
         model = profile.mapping.asDouble();
-    } else if (profile.priscaModel == PlantProfile::PriscaModel::FittedWithDrift) {
+    } else if (profile.priscaModel == MethodTuning::PriscaModel::FittedWithDrift) {
         // eq. 5 in full, fitted here on the demonstration: PRISCA's own model.
         core::ActionMappingFitOptions options;
         options.drift = true;
@@ -43,11 +47,11 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     }
     if (profile.priscaAutomatic) {
         parameters.stepSize.normalised = true;
-        parameters.stepSize.scale = PlantProfile::automaticStep;
+        parameters.stepSize.scale = MethodTuning::automaticStep;
     }
     core::TrackingProblem problem = profile.priscaProblem(demonstration);
     if (profile.priscaAutomatic) {
-        problem.matching.window = PlantProfile::automaticWindow(*demonstration);
+        problem.matching.window = MethodTuning::automaticWindow(*demonstration);
     }
     auto prisca = std::make_unique<core::PriscaController>(
         std::move(problem),
@@ -67,7 +71,7 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
 
 Made makePriscaPaper(const MethodSpec& spec, const MethodInput& in) {
     const QString& method = spec.id;
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     // Algorithm 1 exactly as printed: eq. 8 literally (the state change against the action
     // change, no sign constraint, no robust weights), eq. 15 as printed, alpha_0 = 1 and no
@@ -96,7 +100,7 @@ Made makePriscaPaper(const MethodSpec& spec, const MethodInput& in) {
 }
 
 Made makePgsd(const MethodSpec&, const MethodInput& in) {
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     return std::make_unique<core::PgsdController>(
         profile.trackingProblem(demonstration, Mode::TimeDriven), profile.features, profile.mapping,
@@ -104,7 +108,7 @@ Made makePgsd(const MethodSpec&, const MethodInput& in) {
 }
 
 Made makePegasus(const MethodSpec&, const MethodInput& in) {
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     const Eigen::MatrixXd* theta = in.theta;
     // PEGASUS learns offline, episode by episode; online it is the same linear policy
@@ -121,14 +125,14 @@ Made makePegasus(const MethodSpec&, const MethodInput& in) {
 }
 
 Made makeIlc(const MethodSpec&, const MethodInput& in) {
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     return std::make_unique<core::IlcController>(
         profile.trackingProblem(demonstration, Mode::TimeDriven), profile.ilcParameters());
 }
 
 Made makeOracle(const MethodSpec&, const MethodInput& in) {
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     OracleParameters parameters = profile.oracle;
     const EpisodeSettings trial = profile.episode(*demonstration, 1.0, 1.0);
@@ -145,7 +149,7 @@ Made makeOracle(const MethodSpec&, const MethodInput& in) {
 }
 
 Made makePlayback(const MethodSpec&, const MethodInput& in) {
-    const PlantProfile& profile = in.profile;
+    const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     return std::make_unique<core::ActionPlayback>(
         profile.trackingProblem(demonstration, Mode::TimeDriven));
@@ -164,6 +168,591 @@ Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
         gains, spec.id);
 }
 
+
+// ---- The parameters methods are tuned by (MethodParameter): declared once, here. -------------
+
+Eigen::VectorXd one(double v) {
+    return Eigen::VectorXd::Constant(1, v);
+}
+
+using Kind = MethodParameter::Kind;
+
+MethodParameter integer(const char* name, const char* label, const char* unit, double low,
+                        double high, const char* help) {
+    MethodParameter p;
+    p.name = name;
+    p.label = label;
+    p.unit = unit;
+    p.kind = Kind::Integer;
+    p.minimum = low;
+    p.maximum = high;
+    p.decimals = 0;
+    p.help = help;
+    return p;
+}
+
+MethodParameter real(const char* name, const char* label, const char* unit, double low,
+                     double high, int decimals, const char* help) {
+    MethodParameter p = integer(name, label, unit, low, high, help);
+    p.kind = Kind::Real;
+    p.decimals = decimals;
+    return p;
+}
+
+MethodParameter onOff(const char* name, const char* label, const char* help) {
+    MethodParameter p = integer(name, label, "", 0, 1, help);
+    p.kind = Kind::Switch;
+    return p;
+}
+
+const MethodParameter& priscaHorizon() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "prisca.H", QT_TRANSLATE_NOOP("MethodParameter", "Horizon H"), "steps", 1, 200,
+            QT_TRANSLATE_NOOP("MethodParameter", "Smoothing horizon H of the nested expectation "
+                                                 "over the last H steps (eq. 9, 13)."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.horizon); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.prisca.horizon = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaGamma() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.gamma", QT_TRANSLATE_NOOP("MethodParameter", "Depreciation γ"), "", 0, 1, 3,
+            QT_TRANSLATE_NOOP("MethodParameter", "Rate of inverse depreciation D (eq. 10); Lemma "
+                                                 "4.1 needs γ ≥ 0.93 at H = 10."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.gamma); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.gamma = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaBeta() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.beta", QT_TRANSLATE_NOOP("MethodParameter", "Step rate β"), "steps", 1, 1e7, 0,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3)."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.stepSize.beta); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.stepSize.beta = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaAutomatic() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.automatic", QT_TRANSLATE_NOOP("MethodParameter", "Automatic scales"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Feature scales, α_0 and matching window derived from the "
+                              "demonstration and the fit when PRISCA starts; off: the step scale "
+                              "and feature scales set here."));
+        p.get = [](const MethodTuning& f) { return one(f.priscaAutomatic ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.priscaAutomatic = v[0] != 0.0; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaStepScale() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.alpha0", QT_TRANSLATE_NOOP("MethodParameter", "Step scale α_0"), "", 0, 1e4, 4,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "α_0 of eq. 3 (the paper uses 1; its right size depends on the "
+                              "units of e, φ and B). Not used with automatic scales."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.stepSize.scale); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.stepSize.scale = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaThetaBound() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.theta-bound", QT_TRANSLATE_NOOP("MethodParameter", "θ bound"), "", 0, 1e4, 2,
+            QT_TRANSLATE_NOOP("MethodParameter", "If above 0, θ is kept in |θ_i| ≤ bound after "
+                                                 "each update (projected descent)."));
+        p.zeroMeans = QT_TRANSLATE_NOOP("MethodParameter", "none");
+        p.get = [](const MethodTuning& f) { return one(f.prisca.thetaBound); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.thetaBound = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaFromPd() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.from-pd", QT_TRANSLATE_NOOP("MethodParameter", "Start from the PD law"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds "
+                              "the robot on the path; off: θ = 0 is no feedback (Algorithm 1)."));
+        p.get = [](const MethodTuning& f) { return one(f.priscaFromPd ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.priscaFromPd = v[0] != 0.0; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaGradient() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.gradient", QT_TRANSLATE_NOOP("MethodParameter", "Gradient"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "one-step: eq. 14 as printed; closed-loop: eq. 4's chain rule "
+                              "carried over the window through the fitted model and the "
+                              "policy's own feedback."));
+        p.kind = Kind::Choice;
+        p.choices = {"one-step", "closed-loop"};
+        p.get = [](const MethodTuning& f) {
+            return one(f.prisca.gradient == core::PriscaParameters::Gradient::ClosedLoop ? 1 : 0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.prisca.gradient = v[0] != 0.0 ? core::PriscaParameters::Gradient::ClosedLoop
+                                            : core::PriscaParameters::Gradient::OneStep;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaEffort() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.effort", QT_TRANSLATE_NOOP("MethodParameter", "Effort weight R"), "", 0, 1e4, 3,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The cost also charges the correction's effort, R (θᵀφ)² per "
+                              "control: what makes learning settle without a θ bound."));
+        p.zeroMeans = QT_TRANSLATE_NOOP("MethodParameter", "none");
+        p.get = [](const MethodTuning& f) {
+            return one(f.prisca.effortWeights.size() ? f.prisca.effortWeights.maxCoeff() : 0.0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            if (v[0] > 0.0) {
+                f.prisca.effortWeights = Eigen::VectorXd::Constant(f.info.actionDimension(), v[0]);
+            } else {
+                f.prisca.effortWeights.resize(0);
+            }
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaBaseline() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.baseline", QT_TRANSLATE_NOOP("MethodParameter", "Local optimal baseline"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Subtract the local optimal baseline b (eq. 15) from the gradient; "
+                              "off: b = 0."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.useBaseline ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.prisca.useBaseline = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaDepreciation() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.depreciation", QT_TRANSLATE_NOOP("MethodParameter", "Inverse depreciation"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Weigh the window's gradients by the inverse depreciation D "
+                              "(eq. 10); off: D = 1."));
+        p.get = [](const MethodTuning& f) {
+            return one(f.prisca.useInverseDepreciation ? 1.0 : 0.0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.prisca.useInverseDepreciation = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaModel() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.model", QT_TRANSLATE_NOOP("MethodParameter", "Model"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; "
+                              "drift: eq. 5 in full, the state's own drift A fitted with B."));
+        p.kind = Kind::Choice;
+        p.choices = {"fitted", "signs", "drift"};
+        p.get = [](const MethodTuning& f) { return one(static_cast<int>(f.priscaModel)); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.priscaModel = static_cast<MethodTuning::PriscaModel>(static_cast<int>(v[0]));
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaModelDelay() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "prisca.model-delay", QT_TRANSLATE_NOOP("MethodParameter", "Model delay d"), "steps",
+            0, 50,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The measurement's age d in the closed-loop gradient's model."));
+        p.get = [](const MethodTuning& f) { return one(f.prisca.modelDelay); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.prisca.modelDelay = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaExplainedOnly() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "prisca.explained-only", QT_TRANSLATE_NOOP("MethodParameter", "Learn where explained"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The closed-loop gradient learns only on the samples a robust fit "
+                              "explains."));
+        p.get = [](const MethodTuning& f) {
+            return one(f.priscaLearnWhereExplained ? 1.0 : 0.0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.priscaLearnWhereExplained = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& matchingWindow() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "matching.window", QT_TRANSLATE_NOOP("MethodParameter", "Matching window"), "samples",
+            0, 100000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "How far ahead the least-state-deviation reference may search "
+                              "(eq. 12); 0 searches the whole demonstration."));
+        p.get = [](const MethodTuning& f) { return one(f.matchingWindow); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.matchingWindow = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pdKp() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "pd.kp", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kp"), "", 0, 1e4, 3,
+            QT_TRANSLATE_NOOP("MethodParameter", "Proportional gain per control on its error "
+                                                 "combination c_l · e (u = u* − Kp ε − Kd dε/dt)."));
+        p.perChannel = true;
+        p.get = [](const MethodTuning& f) -> Eigen::VectorXd { return f.pd.kp; };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pd.kp = v; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pdKd() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "pd.kd", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kd"), "s", 0, 1e4, 3,
+            QT_TRANSLATE_NOOP("MethodParameter", "Derivative gain per control on the rate of "
+                                                 "its error combination."));
+        p.perChannel = true;
+        p.get = [](const MethodTuning& f) -> Eigen::VectorXd { return f.pd.kd; };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pd.kd = v; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pdHorizon() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "pd.H", QT_TRANSLATE_NOOP("MethodParameter", "PD smoothing H"), "steps", 0, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter", "PD+H and PD+H+LSD smooth the error over this "
+                                                 "many steps (the weights of eq. 9)."));
+        p.get = [](const MethodTuning& f) { return one(f.pdHorizon); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.pdHorizon = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pgsdHorizon() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "pgsd.H", QT_TRANSLATE_NOOP("MethodParameter", "PGSD horizon H"), "steps", 1, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter", "PGSD's smoothing horizon H (eq. 9)."));
+        p.get = [](const MethodTuning& f) { return one(f.pgsd.horizon); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.pgsd.horizon = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pgsdStep() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "pgsd.alpha", QT_TRANSLATE_NOOP("MethodParameter", "PGSD step α"), "", 0, 1e6, 5,
+            QT_TRANSLATE_NOOP("MethodParameter", "The fixed step size of PGSD (no decay)."));
+        p.get = [](const MethodTuning& f) { return one(f.pgsd.stepSize); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pgsd.stepSize = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pgsdThetaBound() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "pgsd.theta-bound", QT_TRANSLATE_NOOP("MethodParameter", "PGSD θ bound"), "", 0, 1e4,
+            2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "If above 0, PGSD's θ is kept in |θ_i| ≤ bound after each update."));
+        p.zeroMeans = QT_TRANSLATE_NOOP("MethodParameter", "none");
+        p.get = [](const MethodTuning& f) { return one(f.pgsd.thetaBound); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pgsd.thetaBound = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pegasusIterations() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "pegasus.iterations", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS iterations"), "",
+            0, 100000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Gradient steps PEGASUS takes on its fixed scenarios before a run."));
+        p.get = [](const MethodTuning& f) { return one(f.pegasusIterations); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.pegasusIterations = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pegasusScenarios() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "pegasus.scenarios", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS scenarios"), "", 1,
+            1000,
+            QT_TRANSLATE_NOOP("MethodParameter", "Fixed scenarios (start, perturbation, noise) "
+                                                 "each evaluation averages."));
+        p.get = [](const MethodTuning& f) { return one(f.pegasus.scenarios); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.pegasus.scenarios = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& pegasusStep() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "pegasus.alpha", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS step α"), "", 0, 1e9, 4,
+            QT_TRANSLATE_NOOP("MethodParameter", "Gradient-descent step on the mean episode cost."));
+        p.get = [](const MethodTuning& f) { return one(f.pegasus.stepSize); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pegasus.stepSize = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& ilcLearning() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "ilc.learning", QT_TRANSLATE_NOOP("MethodParameter", "ILC learning Γ/Kp"), "", 0, 100,
+            3,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "ILC's learning gain per control, as a share of the PD's Kp: how "
+                              "much of a trial's error goes into the next trial's feedforward."));
+        p.get = [](const MethodTuning& f) { return one(f.ilcLearningScale); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.ilcLearningScale = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& ilcLead() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "ilc.lead", QT_TRANSLATE_NOOP("MethodParameter", "ILC lead"), "steps", 0, 200,
+            QT_TRANSLATE_NOOP("MethodParameter", "The error this many steps later corrects the "
+                                                 "action now (covers the plant's delay)."));
+        p.get = [](const MethodTuning& f) { return one(f.ilcLead); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.ilcLead = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& ilcCutoff() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "ilc.cutoff", QT_TRANSLATE_NOOP("MethodParameter", "ILC Q cutoff"), "Hz", 0, 20, 2,
+            QT_TRANSLATE_NOOP("MethodParameter", "Zero-phase low-pass on the learned feedforward "
+                                                 "after each trial; 0 leaves it unfiltered."));
+        p.get = [](const MethodTuning& f) { return one(f.ilcCutoff); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.ilcCutoff = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& ilcFeedback() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "ilc.feedback", QT_TRANSLATE_NOOP("MethodParameter", "ILC feedback scale"), "", 0, 100,
+            3,
+            QT_TRANSLATE_NOOP("MethodParameter", "The PD gains in ILC's loop, scaled by this."));
+        p.get = [](const MethodTuning& f) { return one(f.ilcFeedbackScale); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.ilcFeedbackScale = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& oracleSamples() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "oracle.samples", QT_TRANSLATE_NOOP("MethodParameter", "Oracle samples"), "", 1, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Candidate plans the oracle simulates at each planning."));
+        p.get = [](const MethodTuning& f) { return one(f.oracle.samples); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.oracle.samples = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& oracleReplan() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "oracle.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Oracle replanning"),
+            "steps", 1, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter", "Control steps between two plans of the oracle."));
+        p.get = [](const MethodTuning& f) { return one(f.oracle.replanEvery); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.oracle.replanEvery = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+// ---- lqr: a time-varying LQR on the model fitted from the demonstration ----------------------
+
+// Its per-plant defaults, from grids on each plant's tuning cells only (docs/results.md, "LQR").
+struct LqrDefaults {
+    const char* plant;
+    double throttleEffort, otherEffort;  // R of the first control, and of the others
+    double terminal;
+    bool drift;
+};
+constexpr LqrDefaults kLqrDefaults[] = {
+    {"slidecar", 0.3, 0.5, 100.0, false},
+    {"acrobot", 1e-6, 1e-6, 100.0, true},
+    {"aircraft", 1e-5, 1e-5, 1.0, true},
+    {"diffdrive", 1e-3, 1e-3, 100.0, false},
+};
+const LqrDefaults& lqrDefaults(const MethodTuning& f) {
+    for (const LqrDefaults& d : kLqrDefaults) {
+        if (f.info.name == QLatin1String(d.plant)) {
+            return d;
+        }
+    }
+    return kLqrDefaults[0];  // a plant outside the catalog starts from the slide-car's
+}
+
+const MethodParameter& lqrEffort() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "lqr.effort", QT_TRANSLATE_NOOP("MethodParameter", "LQR effort weight R"),
+            "1/action²", 1e-6, 1e6, 6,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "R per control in the LQR's cost e^T W e + (u − u*)^T R (u − u*): "
+                              "larger is gentler."));
+        p.perChannel = true;
+        p.defaultFor = [](const MethodTuning& f) -> Eigen::VectorXd {
+            const LqrDefaults& d = lqrDefaults(f);
+            Eigen::VectorXd r = Eigen::VectorXd::Constant(f.info.actionDimension(), d.otherEffort);
+            r[0] = d.throttleEffort;
+            return r;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& lqrTerminal() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "lqr.terminal", QT_TRANSLATE_NOOP("MethodParameter", "LQR terminal weight"), "", 0,
+            1e6, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The deviation at the demonstration's end costs this many times a "
+                              "step's (where a parking manoeuvre is judged)."));
+        p.defaultFor = [](const MethodTuning& f) { return one(lqrDefaults(f).terminal); };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& lqrDrift() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "lqr.drift", QT_TRANSLATE_NOOP("MethodParameter", "LQR models the drift"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Fit eq. 5 in full (the state's own drift A with B); off: B alone, "
+                              "each state driven only by the controls."));
+        p.defaultFor = [](const MethodTuning& f) { return one(lqrDefaults(f).drift ? 1 : 0); };
+        return p;
+    }();
+    return p;
+}
+
+Made makeLqr(const MethodSpec&, const MethodInput& in) {
+    const MethodTuning& profile = in.profile;
+    // eq. 5 (A with B, or B alone) fitted on the demonstration: the model a control engineer
+    // would identify from the one recording there is.
+    core::ActionMappingFitOptions options;
+    options.drift = profile.parameter(QStringLiteral("lqr.drift"))[0] != 0.0;
+    const core::ActionMappingFit fit = core::fitActionMapping(
+        *in.demonstration, profile.mapping, profile.info.deviationModel(), options);
+    core::LqrParameters parameters;
+    parameters.a = fit.a;
+    parameters.b = fit.b;
+    parameters.effort = profile.parameter(QStringLiteral("lqr.effort"));
+    parameters.terminalWeight = profile.parameter(QStringLiteral("lqr.terminal"))[0];
+    return std::make_unique<core::LqrController>(
+        profile.trackingProblem(in.demonstration, Mode::TimeDriven), parameters);
+}
+
 MethodSpec entry(const char* id, const char* label, MethodSpec::Create create) {
     MethodSpec s;
     s.id = QString::fromLatin1(id);
@@ -179,49 +768,69 @@ std::vector<MethodSpec> makeCatalog() {
     s.learnsOnline = true;
     s.ownFeatures = true;
     s.summary = "the product's PRISCA: from the PD law, closed-loop gradient, automatic scales";
+    s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
+                    priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
+                    priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
+                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), pdKp(),
+                    pdKd(),          pdHorizon()};
     all.push_back(s);
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);
     s.learnsOnline = true;
     s.ownFeatures = true;
     s.summary = "Algorithm 1 exactly as printed";
+    s.parameters = {priscaHorizon(), priscaGamma(), priscaBeta(), matchingWindow()};
     all.push_back(s);
     s = entry("pd", "PD", &makePdFamily);
     s.summary = "proportional-derivative feedback around the demonstration, time-driven";
+    s.parameters = {pdKp(), pdKd()};
     all.push_back(s);
     s = entry("pd-selected", "PD (SELECTED)", &makePdFamily);
     s.training = MethodSpec::Training::SelectPdGains;
     s.inCurves = false;  // selects its gains offline, before any curve starts
     s.summary = "PD with gains grid-searched on the training trials";
+    s.parameters = {pdKp(), pdKd()};
     all.push_back(s);
     s = entry("pd-h", "PD+H", &makePdFamily);
     s.summary = "PD on the error smoothed over H steps";
+    s.parameters = {pdKp(), pdKd(), pdHorizon()};
     all.push_back(s);
     s = entry("pd-lsd", "PD+LSD", &makePdFamily);
     s.summary = "PD with the least-state-deviation reference";
+    s.parameters = {pdKp(), pdKd(), matchingWindow()};
     all.push_back(s);
     s = entry("pd-h-lsd", "PD+H+LSD", &makePdFamily);
     s.summary = "PD with both";
+    s.parameters = {pdKp(), pdKd(), pdHorizon(), matchingWindow()};
+    all.push_back(s);
+    s = entry("lqr", "LQR", &makeLqr);
+    s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5 with drift)";
+    s.parameters = {lqrEffort(), lqrTerminal(), lqrDrift()};
     all.push_back(s);
     s = entry("playback", "ACTION PLAYBACK", &makePlayback);
     s.summary = "the demonstration's actions, open loop";
+    s.parameters = {};
     all.push_back(s);
     s = entry("pgsd", "PGSD", &makePgsd);
     s.learnsOnline = true;
     s.summary = "policy search by the signed derivative";
+    s.parameters = {pgsdHorizon(), pgsdStep(), pgsdThetaBound()};
     all.push_back(s);
     s = entry("pegasus", "PEGASUS", &makePegasus);
     s.training = MethodSpec::Training::Pegasus;
     s.inTable1 = false;  // its offline search is the learning curves' subject
     s.summary = "offline policy search on fixed scenarios";
+    s.parameters = {pegasusIterations(), pegasusScenarios(), pegasusStep()};
     all.push_back(s);
     s = entry("ilc", "ILC", &makeIlc);
     s.learnsOnline = true;
     s.summary = "iterative learning control around the PD";
+    s.parameters = {ilcLearning(), ilcLead(), ilcCutoff(), ilcFeedback(), pdKp(), pdKd()};
     all.push_back(s);
     s = entry("oracle", "LIMIT (oracle)", &makeOracle);
     s.limit = true;
     s.simulationOnly = true;
     s.summary = "plans on copies of the simulated plant itself: the limit, simulation only";
+    s.parameters = {oracleSamples(), oracleReplan()};
     all.push_back(s);
     return all;
 }
@@ -280,11 +889,61 @@ const MethodSpec& MethodCatalog::get(const QString& id) {
 }
 
 std::unique_ptr<core::Controller> MethodCatalog::create(
-    const QString& method, const PlantProfile& profile,
+    const QString& method, const MethodTuning& profile,
     std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
     const Eigen::MatrixXd* theta) {
     const MethodSpec& s = get(method);
     return s.create(s, MethodInput{profile, std::move(demonstration), fittedB, theta});
+}
+
+std::vector<const MethodParameter*> MethodCatalog::parameters() {
+    std::vector<const MethodParameter*> found;
+    for (const MethodSpec& spec : all()) {
+        for (const MethodParameter& p : spec.parameters) {
+            const bool known = std::any_of(found.begin(), found.end(), [&](const MethodParameter* q) {
+                return QLatin1String(q->name) == QLatin1String(p.name);
+            });
+            if (!known) {
+                found.push_back(&p);
+            }
+        }
+    }
+    return found;
+}
+
+const MethodParameter* MethodCatalog::parameter(const QString& name) {
+    for (const MethodParameter* p : parameters()) {
+        if (name == QLatin1String(p->name)) {
+            return p;
+        }
+    }
+    return nullptr;
+}
+
+void MethodCatalog::setParameter(MethodTuning& profile, const QString& assignment) {
+    const int equals = assignment.indexOf(QLatin1Char('='));
+    if (equals <= 0) {
+        throw std::invalid_argument(
+            QStringLiteral("'%1' is not NAME=VALUE").arg(assignment).toStdString());
+    }
+    const QString name = assignment.left(equals).trimmed();
+    const MethodParameter* declared = parameter(name);
+    if (!declared) {
+        QStringList names;
+        for (const MethodParameter* p : parameters()) {
+            names << QString::fromLatin1(p->name);
+        }
+        throw std::invalid_argument(QStringLiteral("no method has a parameter '%1' (one of: %2)")
+                                        .arg(name, names.join(QLatin1Char(' ')))
+                                        .toStdString());
+    }
+    QString error;
+    const auto value =
+        declared->parse(assignment.mid(equals + 1), profile.info.actionDimension(), &error);
+    if (!value) {
+        throw std::invalid_argument(error.toStdString());
+    }
+    declared->assign(profile, *value);
 }
 
 }  // namespace prisca::sim

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "PlantProfile.h"
+#include "MethodParameter.h"
+#include "MethodTuning.h"
 #include "core/Controller.h"
 
 #include <QStringList>
@@ -14,7 +15,7 @@ namespace prisca::sim {
 /// gains), the demonstration, the fitted B = B_v (.) B~ (m x n) and, for a method trained
 /// offline into a policy, that policy's theta (p x m; null for none).
 struct MethodInput {
-    const PlantProfile& profile;
+    const MethodTuning& profile;
     std::shared_ptr<const core::Demonstration> demonstration;
     const Eigen::MatrixXd& fittedB;
     const Eigen::MatrixXd* theta = nullptr;
@@ -40,7 +41,11 @@ struct MethodSpec {
     bool ownFeatures = false;     ///< theta over the profile's PRISCA features (priscaFeatures)
     bool limit = false;           ///< the ruler every accuracy figure is read against
     bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
-    Create create = nullptr;      ///< builds the controller
+    /// What the method is tuned by, in the order the Controller panel shows them; a parameter
+    /// several methods share (the PD gains, the matching window) is the same declaration in
+    /// each of their lists.
+    std::vector<MethodParameter> parameters;
+    Create create = nullptr;  ///< builds the controller
 
     bool trainsOffline() const { return training != Training::None; }
 };
@@ -58,10 +63,18 @@ class MethodCatalog {
     static bool contains(const QString& id) { return find(id) != nullptr; }
     /// The spec of an id; std::invalid_argument naming the known ids if there is none.
     static const MethodSpec& get(const QString& id);
+    /// Every parameter any method declares, once each, in catalog order.
+    static std::vector<const MethodParameter*> parameters();
+    /// The declaration of a parameter by name, or null.
+    static const MethodParameter* parameter(const QString& name);
+    /// Applies "NAME=VALUE" (as --param and the session spell it) to a profile; throws
+    /// std::invalid_argument naming the parameter, the value and what is allowed (an unknown
+    /// name lists the known ones).
+    static void setParameter(MethodTuning& profile, const QString& assignment);
     /// The controller of `method` (std::invalid_argument for an unknown one or inconsistent
     /// shapes). "pd-selected" uses profile.pd: pass a profile whose gains were selected.
     static std::unique_ptr<core::Controller> create(
-        const QString& method, const PlantProfile& profile,
+        const QString& method, const MethodTuning& profile,
         std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
         const Eigen::MatrixXd* theta = nullptr);
 };

@@ -35,7 +35,7 @@ core::PdParameters selectPdGains(const RunSetup& setup, const TrainingHooks& hoo
     // One job per (candidate, seed) so both cores stay busy on small grids.
     const std::function<double(int)> job = [&](int index) {
         const Candidate& c = grid[index / seeds];
-        PlantProfile profile = task.profile;
+        MethodTuning profile = task.profile;
         profile.pd.kp *= c.kp;
         profile.pd.kd *= c.kd;
         auto plant = setup.makePlant();

@@ -46,7 +46,7 @@ struct PlanarAircraftParameters {
     double restYawRate = 0.05;  ///< ... and this yaw rate the aircraft is at rest [rad/s]
 };
 
-/// A small fixed-wing UAV flying in the horizontal plane, seen from above (DESIGN.md "Plants";
+/// A small fixed-wing UAV flying in the horizontal plane, seen from above (docs/architecture.md "Plants";
 /// the paper's aerial robot, section V.B), simulated as one Box2D body with gravity off and
 /// aerodynamic and propeller forces and a yaw moment applied at every physics step.
 ///

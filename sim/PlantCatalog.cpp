@@ -3,9 +3,9 @@
 #include "Acrobot.h"
 #include "DiffDrive.h"
 #include "DiffDriveDemonstrator.h"
-#include "DiffDriveProfile.h"
+#include "DiffDriveTuning.h"
 #include "PlanarAircraft.h"
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 #include "SlideCar.h"
 
 #include <QtGlobal>
@@ -30,7 +30,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.drawing = PlantEntry::Drawing::Car;
     e.create = &make<SlideCar, SlideCarParameters>;
     e.describe = &SlideCar::describe;
-    e.profile = &slideCarProfile;
+    e.profile = &slideCarTuning;
     e.styles = slideCarStyles();
     all.push_back(e);
 
@@ -40,7 +40,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.drawing = PlantEntry::Drawing::Arm;
     e.create = &make<Acrobot, AcrobotParameters>;
     e.describe = [] { return Acrobot::describe(); };
-    e.profile = &acrobotProfile;
+    e.profile = &acrobotTuning;
     e.styles = acrobotStyles();
     all.push_back(e);
 
@@ -50,7 +50,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.drawing = PlantEntry::Drawing::Aircraft;
     e.create = &make<PlanarAircraft, PlanarAircraftParameters>;
     e.describe = &PlanarAircraft::describe;
-    e.profile = &aircraftProfile;
+    e.profile = &aircraftTuning;
     e.styles = aircraftStyles();
     all.push_back(e);
 
@@ -60,7 +60,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.drawing = PlantEntry::Drawing::Vehicle;
     e.create = &make<DiffDrive, DiffDriveParameters>;
     e.describe = &DiffDrive::describe;
-    e.profile = &diffDriveProfile;
+    e.profile = &diffDriveTuning;
     e.styles = diffDriveStyles();
     e.fromStick = [](const Eigen::VectorXd& stick) {  // the robot mixes a stick into its wheels
         Eigen::VectorXd wheels(2);

@@ -12,7 +12,7 @@
 
 namespace prisca::sim {
 
-struct PlantProfile;
+struct MethodTuning;
 
 /// One plant: everything the window, the CLI and the experiments need to know of it. Adding a
 /// plant is one entry in PlantCatalog.cpp plus the plant's own files (its model, demonstrator,
@@ -31,7 +31,7 @@ struct PlantEntry {
     Drawing drawing = Drawing::Vehicle;
     std::unique_ptr<Plant> (*create)(const SimulationTiming& timing) = nullptr;
     PlantInfo (*describe)() = nullptr;
-    PlantProfile (*profile)(const PlantInfo& info) = nullptr;  ///< its tuned methods' settings
+    MethodTuning (*profile)(const PlantInfo& info) = nullptr;  ///< its tuned methods' settings
     StyleSet styles;  ///< its demonstration styles; the first is its classic one
     /// How an operator's two stick axes (forward, left; each in [-1, 1]) become its actions when
     /// recording in the window; null: one axis per action, in order.

@@ -41,7 +41,7 @@ std::vector<std::uint64_t> RunSetup::trainingSeeds() const {
 std::unique_ptr<core::Controller> RunSetup::makeController(
     const std::function<bool()>& cancelled,
     const std::function<void(const QString&)>& progress) const {
-    PlantProfile profile = task_.profile;
+    MethodTuning profile = task_.profile;
     Eigen::MatrixXd pegasusTheta;
     const TrainingHooks hooks{cancelled, progress};
     switch (method_->training) {

@@ -41,7 +41,7 @@ class RunSetup {
     RunSetup(Task task, const QString& method, const RunSettings& settings = {});
 
     const Task& task() const { return task_; }
-    const PlantProfile& profile() const { return task_.profile; }
+    const MethodTuning& profile() const { return task_.profile; }
     const MethodSpec& method() const { return *method_; }
     const RunSettings& settings() const { return settings_; }
 

@@ -41,7 +41,7 @@ struct SlideCarParameters {
     double restYawRate = 0.05;        ///< ... and this yaw rate the car is at rest [rad/s]
 };
 
-/// A brakeless 4x4 RC car on a flat floor, seen from above (DESIGN.md "Plants"), simulated as one
+/// A brakeless 4x4 RC car on a flat floor, seen from above (docs/architecture.md "Plants"), simulated as one
 /// Box2D body with gravity off and tyre forces applied at the two axles each physics step.
 ///
 /// State (n = 6): x, y [m] of the car-frame origin (the body centre), heading psi [rad] of the

@@ -11,7 +11,7 @@
 
 namespace prisca::sim {
 
-/// A scripted operator who slide-parks the simulated car once (DESIGN.md "scripted
+/// A scripted operator who slide-parks the simulated car once (docs/architecture.md "scripted
 /// demonstrator"): launch along +x, throttle off and full lock at speed; the rear lets go and the
 /// car yaws and slides sideways; the operator centres the wheel (optionally with a counter-steer)
 /// once it has turned far enough, and the car spins on into the lot and comes to rest. The

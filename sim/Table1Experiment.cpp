@@ -15,7 +15,7 @@ namespace prisca::sim {
 
 
 Table1Result runTable1(const Table1Settings& settings, const Task& task) {
-    const PlantProfile& profile = task.profile;
+    const MethodTuning& profile = task.profile;
     if (!profile.info.pose) {
         throw std::invalid_argument("Table I needs a planar vehicle (final position and heading)");
     }

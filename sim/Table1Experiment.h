@@ -4,7 +4,7 @@
 
 #include "EpisodeRunner.h"
 #include "MethodCatalog.h"
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 #include "RunSetup.h"
 #include "Task.h"
 #include "TrialMetrics.h"
@@ -18,7 +18,7 @@
 
 namespace prisca::sim {
 
-/// How Table I is produced (paper Table I, DESIGN.md "Metrics"). Plain data.
+/// How Table I is produced (paper Table I, docs/architecture.md "Metrics"). Plain data.
 struct Table1Settings {
     /// Methods, as MethodCatalog names them, in table order (default: every Table I method).
     QStringList methods = MethodCatalog::table1Ids();

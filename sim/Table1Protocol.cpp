@@ -16,7 +16,7 @@ std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count) {
 }
 
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
-                                       const PlantProfile& profile) {
+                                       const MethodTuning& profile) {
     const QString& plant = profile.info.name;
     for (const QString& style : settings.styles) {
         if (!DemonstrationStyles::contains(plant, style)) {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 #include "Table1Experiment.h"
 #include "core/ActionMapping.h"
 #include "core/ProtocolReport.h"
@@ -12,7 +12,7 @@
 
 namespace prisca::sim {
 
-/// Table I on many demonstrations (DESIGN.md "Evaluation"): every method on every cell, a cell
+/// Table I on many demonstrations (docs/architecture.md "Evaluation"): every method on every cell, a cell
 /// being one demonstration style recorded with one seed set's hand variation and run on that
 /// seed set's trials. Plain data.
 struct Table1ProtocolSettings {
@@ -40,6 +40,6 @@ std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count);
 /// settings whatever the thread count. Throws std::invalid_argument for an unknown style or
 /// method (as runTable1 does).
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
-                                       const PlantProfile& profile);
+                                       const MethodTuning& profile);
 
 }  // namespace prisca::sim

@@ -6,7 +6,7 @@
 
 namespace prisca::sim {
 
-Task makeTask(const PlantProfile& profile, std::shared_ptr<const core::Demonstration> demonstration,
+Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstration> demonstration,
               const core::ActionMappingFitOptions& options) {
     if (!demonstration) {
         throw std::invalid_argument("no demonstration");

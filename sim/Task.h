@@ -1,6 +1,6 @@
 #pragma once
 
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 
@@ -12,7 +12,7 @@ namespace prisca::sim {
 /// every run, experiment and the window's session start from.
 struct Task {
     QString plant;            ///< plant name
-    PlantProfile profile;     ///< profile (mapping possibly the operator's own)
+    MethodTuning profile;     ///< profile (mapping possibly the operator's own)
     SimulationTiming timing;  ///< control period = the demonstration's dt
     std::shared_ptr<const core::Demonstration> demonstration;  ///< S*, U*
     core::ActionMappingFit fit;                                ///< B_v, B and diagnostics
@@ -21,7 +21,7 @@ struct Task {
 /// The one way a task is made, for the window and the CLI alike: the demonstration is checked
 /// against the profile's plant (checkDemonstrationFor) and fitted with the profile's B~ and
 /// `options`. Throws std::invalid_argument saying what does not fit; nothing is half-made.
-Task makeTask(const PlantProfile& profile, std::shared_ptr<const core::Demonstration> demonstration,
+Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstration> demonstration,
               const core::ActionMappingFitOptions& options = {});
 
 }  // namespace prisca::sim

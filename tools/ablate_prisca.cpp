@@ -26,7 +26,7 @@
 using namespace prisca;
 int main(int argc, char** argv) {
     const char* method = argv[1];
-    sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     bool drift = false;
     for (int i = 2; i + 1 < argc; i += 2) {
         std::string k = argv[i];
@@ -57,10 +57,10 @@ int main(int argc, char** argv) {
         else if (k == "drift") {
             drift = v;
             if (v)
-                p.priscaModel = sim::PlantProfile::PriscaModel::FittedWithDrift;
+                p.priscaModel = sim::MethodTuning::PriscaModel::FittedWithDrift;
         } else if (k == "signs") {
             if (v)
-                p.priscaModel = sim::PlantProfile::PriscaModel::Signs;
+                p.priscaModel = sim::MethodTuning::PriscaModel::Signs;
         } else if (k == "wv") {
             p.costWeights[3] = v;
             p.costWeights[4] = v;

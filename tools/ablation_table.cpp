@@ -23,7 +23,7 @@ namespace {
 struct Variant {
     const char* label;
     const char* method;
-    std::function<void(sim::PlantProfile&, core::ActionMappingFitOptions&)> change;
+    std::function<void(sim::MethodTuning&, core::ActionMappingFitOptions&)> change;
 };
 
 }  // namespace
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    using Profile = sim::PlantProfile;
+    using Profile = sim::MethodTuning;
     using Fit = core::ActionMappingFitOptions;
     const Profile base = Profile::forPlant(sim::PlantCatalog::describe("slidecar"));
     using Gradient = core::PriscaParameters::Gradient;

@@ -54,7 +54,7 @@ struct Score {
 Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     const QString plantName = QStringLiteral("aircraft");
     auto demo = std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plantName, 1));
-    sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plantName));
+    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName));
     core::ActionMappingFitOptions fitOptions;
     fitOptions.responseSteps = s.responseSteps;
     Eigen::MatrixXd B =
@@ -65,7 +65,7 @@ Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     // Every method is scored on the setting drawn, not on the profile's tuned choices.
     p.priscaFeatures.reset();
     p.priscaCostWeights.resize(0);
-    p.priscaModel = sim::PlantProfile::PriscaModel::Fitted;
+    p.priscaModel = sim::MethodTuning::PriscaModel::Fitted;
     p.features = core::FeatureMap({{{Source::Deviation, 0, s.lon}, {Source::Deviation, 3, s.u}},
                                    {{Source::Deviation, 1, s.lat}, {Source::Deviation, 2, s.psi}}});
     p.costWeights << 1, 1, s.weightPsi, s.weightVelocity, s.weightVelocity, s.weightR;

@@ -41,7 +41,7 @@ T pick(std::mt19937& g, std::initializer_list<T> values) {
 }
 
 double score(const QString& plant, const QStringList& styles, const Setting& s) {
-    sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
     p.ilcLearningScale = s.scale;
     p.ilcLead = s.lead;
     p.ilcCutoff = s.cutoff;
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
                                    : QStringList{"s-turn", "circle"};
     std::mt19937 g(12345);
     std::vector<std::pair<double, Setting>> results;
-    const sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    const sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
     for (int i = 0; i < count; ++i) {
         Setting s;
         if (i == 0) {

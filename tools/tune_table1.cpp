@@ -63,7 +63,7 @@ struct Cell {
 
 std::vector<Cell> tuningCells() {
     std::vector<Cell> cells;
-    const sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     for (const char* style : kTuningStyles) {
         for (std::uint64_t set : kTuningSets) {
             Cell cell;
@@ -81,8 +81,8 @@ std::vector<Cell> tuningCells() {
     return cells;
 }
 
-sim::PlantProfile profileFor(const Setting& s, const char* method) {
-    sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+sim::MethodTuning profileFor(const Setting& s, const char* method) {
+    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     if (!std::strcmp(method, "ilc")) {
         // ILC learns around the profile's tuned PD: only its own knobs are drawn.
         p.ilcLearningScale = s.ilcScale;
@@ -120,7 +120,7 @@ sim::PlantProfile profileFor(const Setting& s, const char* method) {
 }
 
 double score(const Setting& s, const char* method, const std::vector<Cell>& cells) {
-    const sim::PlantProfile profile = profileFor(s, method);
+    const sim::MethodTuning profile = profileFor(s, method);
     double total = 0.0;
     for (const Cell& cell : cells) {
         sim::Table1Settings settings;
@@ -194,7 +194,7 @@ Setting draw(std::mt19937& g, const char* method) {
 
 // The first setting scored is the profile's current one, so a search never does worse than it.
 Setting current(const char* method) {
-    const sim::PlantProfile p = sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     Setting s;
     s.stepScale = !std::strcmp(method, "pgsd") ? p.pgsd.stepSize : p.prisca.stepSize.scale;
     s.beta = p.prisca.stepSize.beta;

@@ -2,6 +2,346 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_HK">
 <context>
+    <name>MethodParameter</name>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="211"/>
+        <source>Horizon H</source>
+        <translation>時域 H</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="212"/>
+        <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
+        <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="226"/>
+        <source>Depreciation γ</source>
+        <translation>折舊 γ</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="227"/>
+        <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
+        <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="239"/>
+        <source>Step rate β</source>
+        <translation>步長速率 β</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="240"/>
+        <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
+        <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="252"/>
+        <source>Automatic scales</source>
+        <translation>自動比例</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="253"/>
+        <source>Feature scales, α_0 and matching window derived from the demonstration and the fit when PRISCA starts; off: the step scale and feature scales set here.</source>
+        <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="267"/>
+        <source>Step scale α_0</source>
+        <translation>步長比例 α_0</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="268"/>
+        <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B). Not used with automatic scales.</source>
+        <translation>式 3 的 α_0（論文用 1；合適大小取決於 e、φ 及 B 的單位）。使用自動比例時不採用。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="281"/>
+        <source>θ bound</source>
+        <translation>θ 界限</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="282"/>
+        <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent).</source>
+        <translation>若大於 0，每次更新後 θ 保持在 |θ_i| ≤ 界限內（投影下降）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="284"/>
+        <location filename="../sim/MethodCatalog.cpp" line="335"/>
+        <location filename="../sim/MethodCatalog.cpp" line="530"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="295"/>
+        <source>Start from the PD law</source>
+        <translation>由 PD 控制律開始</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="296"/>
+        <source>The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds the robot on the path; off: θ = 0 is no feedback (Algorithm 1).</source>
+        <translation>策略為 u = u* + PD 控制律 + θᵀφ，因此 θ = 0 已能讓機械人保持在路徑上；關閉：θ = 0 即無回饋（演算法 1）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="309"/>
+        <source>Gradient</source>
+        <translation>梯度</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="310"/>
+        <source>one-step: eq. 14 as printed; closed-loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
+        <translation>one-step：照印出的式 14；closed-loop：式 4 的連鎖律經擬合模型及策略本身的回饋在窗口內傳遞。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="331"/>
+        <source>Effort weight R</source>
+        <translation>施力權重 R</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="332"/>
+        <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound.</source>
+        <translation>成本亦計入修正的施力，每個控制量 R (θᵀφ)²：令學習在無 θ 界限下收斂。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="354"/>
+        <source>Local optimal baseline</source>
+        <translation>局部最優基線</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="355"/>
+        <source>Subtract the local optimal baseline b (eq. 15) from the gradient; off: b = 0.</source>
+        <translation>從梯度減去局部最優基線 b（式 15）；關閉：b = 0。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="370"/>
+        <source>Inverse depreciation</source>
+        <translation>逆折舊</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="371"/>
+        <source>Weigh the window&apos;s gradients by the inverse depreciation D (eq. 10); off: D = 1.</source>
+        <translation>以逆折舊 D（式 10）加權窗口內的梯度；關閉：D = 1。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="388"/>
+        <source>Model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="389"/>
+        <source>fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; drift: eq. 5 in full, the state&apos;s own drift A fitted with B.</source>
+        <translation>fitted：擬合得出的 B = B_v (.) B~（式 8）；signs：只用 B~；drift：完整的式 5，狀態本身的漂移 A 與 B 一併擬合。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="406"/>
+        <source>Model delay d</source>
+        <translation>模型延遲 d</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="408"/>
+        <source>The measurement&apos;s age d in the closed-loop gradient&apos;s model.</source>
+        <translation>閉環梯度模型中量測的時延 d。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="422"/>
+        <source>Learn where explained</source>
+        <translation>只在可解釋處學習</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="423"/>
+        <source>The closed-loop gradient learns only on the samples a robust fit explains.</source>
+        <translation>閉環梯度只在穩健擬合能解釋的樣本上學習。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="440"/>
+        <source>Matching window</source>
+        <translation>匹配窗口</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="442"/>
+        <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
+        <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="457"/>
+        <source>PD gain Kp</source>
+        <translation>PD 增益 Kp</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="458"/>
+        <source>Proportional gain per control on its error combination c_l · e (u = u* − Kp ε − Kd dε/dt).</source>
+        <translation>每個控制量對其誤差組合 c_l · e 的比例增益（u = u* − Kp ε − Kd dε/dt）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="471"/>
+        <source>PD gain Kd</source>
+        <translation>PD 增益 Kd</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="472"/>
+        <source>Derivative gain per control on the rate of its error combination.</source>
+        <translation>每個控制量對其誤差組合變化率的微分增益。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="485"/>
+        <source>PD smoothing H</source>
+        <translation>PD 平滑 H</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="486"/>
+        <source>PD+H and PD+H+LSD smooth the error over this many steps (the weights of eq. 9).</source>
+        <translation>PD+H 及 PD+H+LSD 在這麼多步上平滑誤差（式 9 的權重）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="500"/>
+        <source>PGSD horizon H</source>
+        <translation>PGSD 時域 H</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="501"/>
+        <source>PGSD&apos;s smoothing horizon H (eq. 9).</source>
+        <translation>PGSD 的平滑時域 H（式 9）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="514"/>
+        <source>PGSD step α</source>
+        <translation>PGSD 步長 α</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="515"/>
+        <source>The fixed step size of PGSD (no decay).</source>
+        <translation>PGSD 的固定步長（不遞減）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="526"/>
+        <source>PGSD θ bound</source>
+        <translation>PGSD θ 界限</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="528"/>
+        <source>If above 0, PGSD&apos;s θ is kept in |θ_i| ≤ bound after each update.</source>
+        <translation>若大於 0，每次更新後 PGSD 的 θ 保持在 |θ_i| ≤ 界限內。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="541"/>
+        <source>PEGASUS iterations</source>
+        <translation>PEGASUS 迭代次數</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="543"/>
+        <source>Gradient steps PEGASUS takes on its fixed scenarios before a run.</source>
+        <translation>PEGASUS 在運行前於其固定情境上所作的梯度步數。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="557"/>
+        <source>PEGASUS scenarios</source>
+        <translation>PEGASUS 情境數</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="559"/>
+        <source>Fixed scenarios (start, perturbation, noise) each evaluation averages.</source>
+        <translation>每次評估所平均的固定情境（起點、擾動、雜訊）數目。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="573"/>
+        <source>PEGASUS step α</source>
+        <translation>PEGASUS 步長 α</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="574"/>
+        <source>Gradient-descent step on the mean episode cost.</source>
+        <translation>對平均回合成本的梯度下降步長。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="585"/>
+        <source>ILC learning Γ/Kp</source>
+        <translation>ILC 學習 Γ/Kp</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="587"/>
+        <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
+        <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="600"/>
+        <source>ILC lead</source>
+        <translation>ILC 超前</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="601"/>
+        <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
+        <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="615"/>
+        <source>ILC Q cutoff</source>
+        <translation>ILC Q 截止頻率</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="616"/>
+        <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
+        <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="628"/>
+        <source>ILC feedback scale</source>
+        <translation>ILC 回饋比例</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="630"/>
+        <source>The PD gains in ILC&apos;s loop, scaled by this.</source>
+        <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="641"/>
+        <source>Oracle samples</source>
+        <translation>理想控制器樣本數</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="642"/>
+        <source>Candidate plans the oracle simulates at each planning.</source>
+        <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="656"/>
+        <source>Oracle replanning</source>
+        <translation>理想控制器重新規劃</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="658"/>
+        <source>Control steps between two plans of the oracle.</source>
+        <translation>理想控制器兩次規劃之間的控制步數。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="695"/>
+        <source>LQR effort weight R</source>
+        <translation>LQR 施力權重 R</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="697"/>
+        <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
+        <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="715"/>
+        <source>LQR terminal weight</source>
+        <translation>LQR 終端權重</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="717"/>
+        <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
+        <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="729"/>
+        <source>LQR models the drift</source>
+        <translation>LQR 模型包含漂移</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="730"/>
+        <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
+        <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
+    </message>
+</context>
+<context>
     <name>PlantCatalog</name>
     <message>
         <location filename="../sim/PlantCatalog.cpp" line="29"/>
@@ -116,242 +456,74 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="185"/>
+        <location filename="../app/ControllerPanel.cpp" line="206"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="186"/>
+        <location filename="../app/ControllerPanel.cpp" line="207"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="187"/>
+        <location filename="../app/ControllerPanel.cpp" line="208"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="189"/>
+        <location filename="../app/ControllerPanel.cpp" line="210"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="200"/>
+        <location filename="../app/ControllerPanel.cpp" line="221"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="200"/>
+        <location filename="../app/ControllerPanel.cpp" line="221"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="206"/>
+        <location filename="../app/ControllerPanel.cpp" line="227"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="264"/>
+        <location filename="../app/ControllerPanel.cpp" line="293"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="278"/>
+        <location filename="../app/ControllerPanel.cpp" line="307"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="321"/>
+        <location filename="../app/ControllerPanel.cpp" line="346"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="325"/>
-        <source>Horizon H:</source>
-        <translation>時域 H：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="326"/>
-        <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
-        <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="327"/>
-        <source>Depreciation γ:</source>
-        <translation>折舊率 γ：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="328"/>
-        <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
-        <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="329"/>
-        <source>Step rate β:</source>
-        <translation>步長速率 β：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="330"/>
-        <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
-        <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="331"/>
-        <source>Automatic scales:</source>
-        <translation>自動尺度：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="332"/>
-        <source>PRISCA derives its feature scales, α_0 and matching window from the demonstration and the fit when it starts (each feature of order one over a second of the manoeuvre; the step a fixed share of a Newton step; a one-second window). Off: the step scale and feature scales below, the plant&apos;s tuned preset.</source>
-        <translation>PRISCA 開始時由示範及擬合推導其特徵尺度、α_0 及匹配窗口（每個特徵在操作的一秒內約為一；步長為牛頓步的固定比例；一秒的窗口）。關閉：使用下方的步長尺度及特徵尺度，即該設備調校好的預設值。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="336"/>
-        <source>Step scale α_0:</source>
-        <translation>步長比例 α_0：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="337"/>
-        <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B).</source>
-        <translation>式 3 的 α_0（論文用 1；合適的大小取決於 e、φ 和 B 的單位）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="339"/>
-        <source>θ bound:</source>
-        <translation>θ 界限：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="340"/>
-        <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent); 0 leaves it free.</source>
-        <translation>大於 0 時，每次更新後把 θ 限制在 |θ_i| ≤ 界限之內（投影下降）；0 表示不設限。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="342"/>
-        <location filename="../app/ControllerPanel.cpp" line="356"/>
-        <source>none</source>
-        <translation>無</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="343"/>
-        <source>Start from the PD law:</source>
-        <translation>由 PD 控制律開始：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="344"/>
-        <source>PRISCA&apos;s policy is u = u* + the PD law + θᵀφ: θ = 0 already holds the robot on the path and PRISCA learns a correction (off: θ = 0 is no feedback at all, as in Algorithm 1).</source>
-        <translation>PRISCA 的策略為 u = u* + PD 控制律 + θᵀφ：θ = 0 已能令機械人保持在路徑上，PRISCA 學習其修正（關閉時：θ = 0 即完全沒有回饋，與演算法 1 相同）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="347"/>
-        <source>Gradient:</source>
-        <translation>梯度：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="348"/>
-        <source>One step: eq. 14 as printed (how the next state moves with θ). Closed loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
-        <translation>單步：按原文的式 14（下一個狀態如何隨 θ 改變）。閉環：把式 4 的連鎖律經擬合模型及策略本身的回饋延伸至整個時窗。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="351"/>
-        <source>One step (eq. 14)</source>
-        <translation>單步（式 14）</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="352"/>
-        <source>Closed loop (eq. 4 over H)</source>
-        <translation>閉環（式 4，跨 H 步）</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="353"/>
-        <source>Effort weight R:</source>
-        <translation>控制量權重 R：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="354"/>
-        <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound. 0: none.</source>
-        <translation>成本亦計入修正的控制量，每個控制為 R (θᵀφ)²：令學習在沒有 θ 界限時亦會收斂。0：無。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="357"/>
-        <source>Matching window:</source>
-        <translation>匹配窗口：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="358"/>
-        <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
-        <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="360"/>
-        <source>PGSD step α:</source>
-        <translation>PGSD 步長 α：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="360"/>
-        <source>The fixed step size of PGSD (no decay).</source>
-        <translation>PGSD 的固定步長（不遞減）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="361"/>
-        <source>ILC learning Γ/Kp:</source>
-        <translation>ILC 學習 Γ/Kp：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="362"/>
-        <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
-        <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="364"/>
-        <source>ILC lead:</source>
-        <translation>ILC 超前：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="365"/>
-        <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
-        <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
-    </message>
-    <message>
         <location filename="../app/ControllerPanel.cpp" line="367"/>
-        <source>ILC Q cutoff:</source>
-        <translation>ILC Q 截止頻率：</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="368"/>
-        <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
-        <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="371"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="372"/>
+        <location filename="../app/ControllerPanel.cpp" line="368"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="373"/>
+        <location filename="../app/ControllerPanel.cpp" line="369"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="370"/>
-        <location filename="../app/ControllerPanel.cpp" line="374"/>
-        <location filename="../app/ControllerPanel.cpp" line="375"/>
-        <source> steps</source>
-        <translation> 步</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="322"/>
+        <location filename="../app/ControllerPanel.cpp" line="347"/>
         <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
-    </message>
-    <message>
-        <location filename="../app/ControllerPanel.cpp" line="376"/>
-        <source> samples</source>
-        <translation> 個樣本</translation>
     </message>
 </context>
 <context>
@@ -368,175 +540,175 @@
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="201"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="198"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="210"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="207"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="230"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="236"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="236"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="223"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="263"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="260"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="277"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="304"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="308"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="386"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="383"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="399"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="408"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="420"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="405"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="417"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="409"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="406"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="425"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="426"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="444"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="448"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="445"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="448"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="449"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="459"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -544,147 +716,157 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="46"/>
+        <location filename="../app/LabSession.cpp" line="48"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="60"/>
+        <location filename="../app/LabSession.cpp" line="62"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="74"/>
+        <location filename="../app/LabSession.cpp" line="76"/>
         <source>&apos;%1&apos; must be a list of %2 numbers</source>
         <translation>「%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="80"/>
+        <location filename="../app/LabSession.cpp" line="82"/>
         <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
         <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="110"/>
+        <location filename="../app/LabSession.cpp" line="112"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="116"/>
+        <location filename="../app/LabSession.cpp" line="118"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="124"/>
+        <location filename="../app/LabSession.cpp" line="126"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="162"/>
+        <location filename="../app/LabSession.cpp" line="164"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="169"/>
+        <location filename="../app/LabSession.cpp" line="171"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="180"/>
+        <location filename="../app/LabSession.cpp" line="182"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="192"/>
+        <location filename="../app/LabSession.cpp" line="194"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="314"/>
+        <location filename="../app/LabSession.cpp" line="295"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="320"/>
+        <location filename="../app/LabSession.cpp" line="301"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="326"/>
+        <location filename="../app/LabSession.cpp" line="307"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="329"/>
+        <location filename="../app/LabSession.cpp" line="310"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="334"/>
+        <location filename="../app/LabSession.cpp" line="315"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="341"/>
+        <location filename="../app/LabSession.cpp" line="322"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="345"/>
+        <location filename="../app/LabSession.cpp" line="326"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="354"/>
+        <location filename="../app/LabSession.cpp" line="335"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="391"/>
+        <location filename="../app/LabSession.cpp" line="372"/>
         <source>&apos;fromPd&apos; must be true or false</source>
         <translation>「fromPd」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="397"/>
+        <location filename="../app/LabSession.cpp" line="378"/>
         <source>&apos;automatic&apos; must be true or false</source>
         <translation>「automatic」必須為 true 或 false</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="408"/>
+        <location filename="../app/LabSession.cpp" line="389"/>
         <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
         <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="435"/>
+        <location filename="../app/LabSession.cpp" line="405"/>
+        <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
+        <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="412"/>
+        <source>&apos;parameters&apos;: %1</source>
+        <translation>「parameters」：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="430"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="449"/>
+        <location filename="../app/LabSession.cpp" line="444"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="475"/>
+        <location filename="../app/LabSession.cpp" line="474"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="479"/>
+        <location filename="../app/LabSession.cpp" line="478"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="486"/>
+        <location filename="../app/LabSession.cpp" line="485"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="491"/>
+        <location filename="../app/LabSession.cpp" line="490"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="511"/>
+        <location filename="../app/LabSession.cpp" line="510"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -815,46 +997,46 @@
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="115"/>
-        <location filename="../app/MainWindow.cpp" line="463"/>
-        <location filename="../app/MainWindow.cpp" line="469"/>
+        <location filename="../app/MainWindow.cpp" line="118"/>
+        <location filename="../app/MainWindow.cpp" line="495"/>
+        <location filename="../app/MainWindow.cpp" line="501"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="249"/>
+        <location filename="../app/MainWindow.cpp" line="281"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="333"/>
-        <location filename="../app/MainWindow.cpp" line="396"/>
+        <location filename="../app/MainWindow.cpp" line="365"/>
+        <location filename="../app/MainWindow.cpp" line="428"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="334"/>
+        <location filename="../app/MainWindow.cpp" line="366"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="345"/>
-        <location filename="../app/MainWindow.cpp" line="415"/>
+        <location filename="../app/MainWindow.cpp" line="377"/>
+        <location filename="../app/MainWindow.cpp" line="447"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="346"/>
+        <location filename="../app/MainWindow.cpp" line="378"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="373"/>
+        <location filename="../app/MainWindow.cpp" line="405"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="397"/>
+        <location filename="../app/MainWindow.cpp" line="429"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -863,137 +1045,137 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="405"/>
+        <location filename="../app/MainWindow.cpp" line="437"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="407"/>
+        <location filename="../app/MainWindow.cpp" line="439"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="420"/>
+        <location filename="../app/MainWindow.cpp" line="452"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="456"/>
+        <location filename="../app/MainWindow.cpp" line="488"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="457"/>
+        <location filename="../app/MainWindow.cpp" line="489"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="458"/>
+        <location filename="../app/MainWindow.cpp" line="490"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="459"/>
+        <location filename="../app/MainWindow.cpp" line="491"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="460"/>
+        <location filename="../app/MainWindow.cpp" line="492"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="461"/>
+        <location filename="../app/MainWindow.cpp" line="493"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="462"/>
+        <location filename="../app/MainWindow.cpp" line="494"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="464"/>
+        <location filename="../app/MainWindow.cpp" line="496"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="465"/>
+        <location filename="../app/MainWindow.cpp" line="497"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="466"/>
+        <location filename="../app/MainWindow.cpp" line="498"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="467"/>
+        <location filename="../app/MainWindow.cpp" line="499"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="468"/>
+        <location filename="../app/MainWindow.cpp" line="500"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="470"/>
+        <location filename="../app/MainWindow.cpp" line="502"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="471"/>
+        <location filename="../app/MainWindow.cpp" line="503"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="472"/>
+        <location filename="../app/MainWindow.cpp" line="504"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="473"/>
+        <location filename="../app/MainWindow.cpp" line="505"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="474"/>
+        <location filename="../app/MainWindow.cpp" line="506"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="475"/>
+        <location filename="../app/MainWindow.cpp" line="507"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="477"/>
+        <location filename="../app/MainWindow.cpp" line="509"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="492"/>
+        <location filename="../app/MainWindow.cpp" line="524"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="504"/>
+        <location filename="../app/MainWindow.cpp" line="536"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindow.cpp" line="538"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="510"/>
+        <location filename="../app/MainWindow.cpp" line="542"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="513"/>
+        <location filename="../app/MainWindow.cpp" line="545"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1111,133 +1293,133 @@
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="92"/>
-        <location filename="../app/RecordPanel.cpp" line="352"/>
+        <location filename="../app/RecordPanel.cpp" line="349"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="159"/>
+        <location filename="../app/RecordPanel.cpp" line="158"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="166"/>
+        <location filename="../app/RecordPanel.cpp" line="165"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="203"/>
+        <location filename="../app/RecordPanel.cpp" line="201"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="208"/>
+        <location filename="../app/RecordPanel.cpp" line="206"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="219"/>
+        <location filename="../app/RecordPanel.cpp" line="217"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="252"/>
+        <location filename="../app/RecordPanel.cpp" line="249"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="253"/>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="263"/>
+        <location filename="../app/RecordPanel.cpp" line="260"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="264"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="278"/>
+        <location filename="../app/RecordPanel.cpp" line="275"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="285"/>
+        <location filename="../app/RecordPanel.cpp" line="282"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
-        <location filename="../app/RecordPanel.cpp" line="305"/>
+        <location filename="../app/RecordPanel.cpp" line="291"/>
+        <location filename="../app/RecordPanel.cpp" line="302"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="296"/>
+        <location filename="../app/RecordPanel.cpp" line="293"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="309"/>
+        <location filename="../app/RecordPanel.cpp" line="306"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="320"/>
+        <location filename="../app/RecordPanel.cpp" line="317"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="342"/>
+        <location filename="../app/RecordPanel.cpp" line="339"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="347"/>
+        <location filename="../app/RecordPanel.cpp" line="344"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="349"/>
+        <location filename="../app/RecordPanel.cpp" line="346"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="350"/>
+        <location filename="../app/RecordPanel.cpp" line="347"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="351"/>
+        <location filename="../app/RecordPanel.cpp" line="348"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="350"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="354"/>
+        <location filename="../app/RecordPanel.cpp" line="351"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="355"/>
+        <location filename="../app/RecordPanel.cpp" line="352"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="356"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="357"/>
+        <location filename="../app/RecordPanel.cpp" line="354"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1250,7 +1432,7 @@
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="116"/>
+        <location filename="../app/RecordingWorker.cpp" line="115"/>
         <source>Writing the recording failed: %1 (the take so far is in %2)</source>
         <translation>寫入錄製失敗：%1（目前錄得的內容在 %2）</translation>
     </message>
@@ -1300,22 +1482,22 @@
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="314"/>
+        <location filename="../app/RigPanel.cpp" line="306"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="342"/>
+        <location filename="../app/RigPanel.cpp" line="334"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="382"/>
+        <location filename="../app/RigPanel.cpp" line="374"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="377"/>
+        <location filename="../app/RigPanel.cpp" line="369"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
@@ -1325,58 +1507,58 @@
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="361"/>
+        <location filename="../app/RigPanel.cpp" line="353"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="370"/>
+        <location filename="../app/RigPanel.cpp" line="362"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="396"/>
+        <location filename="../app/RigPanel.cpp" line="388"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="405"/>
+        <location filename="../app/RigPanel.cpp" line="397"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="410"/>
+        <location filename="../app/RigPanel.cpp" line="402"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="413"/>
+        <location filename="../app/RigPanel.cpp" line="405"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="415"/>
+        <location filename="../app/RigPanel.cpp" line="407"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="467"/>
+        <location filename="../app/RigPanel.cpp" line="459"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="484"/>
+        <location filename="../app/RigPanel.cpp" line="476"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="505"/>
-        <location filename="../app/RigPanel.cpp" line="517"/>
+        <location filename="../app/RigPanel.cpp" line="497"/>
+        <location filename="../app/RigPanel.cpp" line="509"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="506"/>
+        <location filename="../app/RigPanel.cpp" line="498"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1385,197 +1567,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="527"/>
+        <location filename="../app/RigPanel.cpp" line="519"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="566"/>
+        <location filename="../app/RigPanel.cpp" line="558"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="569"/>
+        <location filename="../app/RigPanel.cpp" line="561"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="571"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="603"/>
+        <location filename="../app/RigPanel.cpp" line="595"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="604"/>
+        <location filename="../app/RigPanel.cpp" line="596"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="597"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="598"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="612"/>
+        <location filename="../app/RigPanel.cpp" line="604"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="608"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="622"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="615"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="616"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="625"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="619"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="630"/>
+        <location filename="../app/RigPanel.cpp" line="622"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="631"/>
+        <location filename="../app/RigPanel.cpp" line="623"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="635"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="636"/>
+        <location filename="../app/RigPanel.cpp" line="628"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="629"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="638"/>
+        <location filename="../app/RigPanel.cpp" line="630"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="639"/>
+        <location filename="../app/RigPanel.cpp" line="631"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="640"/>
+        <location filename="../app/RigPanel.cpp" line="632"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="641"/>
+        <location filename="../app/RigPanel.cpp" line="633"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="635"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="645"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="647"/>
+        <location filename="../app/RigPanel.cpp" line="639"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="649"/>
+        <location filename="../app/RigPanel.cpp" line="641"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="651"/>
+        <location filename="../app/RigPanel.cpp" line="643"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -1599,22 +1781,22 @@
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="274"/>
+        <location filename="../app/RunPanel.cpp" line="271"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="318"/>
+        <location filename="../app/RunPanel.cpp" line="315"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="318"/>
+        <location filename="../app/RunPanel.cpp" line="315"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="308"/>
+        <location filename="../app/RunPanel.cpp" line="305"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
@@ -1624,197 +1806,197 @@
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="310"/>
+        <location filename="../app/RunPanel.cpp" line="307"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="312"/>
+        <location filename="../app/RunPanel.cpp" line="309"/>
         <source>E-STOP reset: ready to run.</source>
         <translation>緊急停止已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="320"/>
+        <location filename="../app/RunPanel.cpp" line="317"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="337"/>
+        <location filename="../app/RunPanel.cpp" line="334"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="341"/>
+        <location filename="../app/RunPanel.cpp" line="338"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="354"/>
+        <location filename="../app/RunPanel.cpp" line="351"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="382"/>
+        <location filename="../app/RunPanel.cpp" line="379"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="383"/>
+        <location filename="../app/RunPanel.cpp" line="380"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="384"/>
+        <location filename="../app/RunPanel.cpp" line="381"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="386"/>
+        <location filename="../app/RunPanel.cpp" line="383"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="388"/>
+        <location filename="../app/RunPanel.cpp" line="385"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="390"/>
+        <location filename="../app/RunPanel.cpp" line="387"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="392"/>
+        <location filename="../app/RunPanel.cpp" line="389"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="391"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="396"/>
+        <location filename="../app/RunPanel.cpp" line="393"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="397"/>
+        <location filename="../app/RunPanel.cpp" line="394"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="395"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="399"/>
+        <location filename="../app/RunPanel.cpp" line="396"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="409"/>
+        <location filename="../app/RunPanel.cpp" line="406"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="317"/>
+        <location filename="../app/RunPanel.cpp" line="314"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="319"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="401"/>
+        <location filename="../app/RunPanel.cpp" line="398"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="400"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="406"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="411"/>
+        <location filename="../app/RunPanel.cpp" line="408"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="412"/>
+        <location filename="../app/RunPanel.cpp" line="409"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="413"/>
+        <location filename="../app/RunPanel.cpp" line="410"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="415"/>
+        <location filename="../app/RunPanel.cpp" line="412"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="416"/>
+        <location filename="../app/RunPanel.cpp" line="413"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="416"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="416"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="416"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="420"/>
+        <location filename="../app/RunPanel.cpp" line="417"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="420"/>
+        <location filename="../app/RunPanel.cpp" line="417"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="423"/>
+        <location filename="../app/RunPanel.cpp" line="420"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="423"/>
+        <location filename="../app/RunPanel.cpp" line="420"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -1827,27 +2009,27 @@
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="77"/>
+        <location filename="../app/RunWorker.cpp" line="68"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="98"/>
+        <location filename="../app/RunWorker.cpp" line="82"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="174"/>
+        <location filename="../app/RunWorker.cpp" line="158"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="218"/>
+        <location filename="../app/RunWorker.cpp" line="202"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="235"/>
+        <location filename="../app/RunWorker.cpp" line="219"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -2085,57 +2267,57 @@
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="214"/>
+        <location filename="../rig/RigSession.cpp" line="221"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="217"/>
+        <location filename="../rig/RigSession.cpp" line="224"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="233"/>
+        <location filename="../rig/RigSession.cpp" line="241"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="238"/>
+        <location filename="../rig/RigSession.cpp" line="246"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="241"/>
+        <location filename="../rig/RigSession.cpp" line="249"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="247"/>
+        <location filename="../rig/RigSession.cpp" line="259"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="395"/>
+        <location filename="../rig/RigSession.cpp" line="410"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="398"/>
+        <location filename="../rig/RigSession.cpp" line="413"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="407"/>
+        <location filename="../rig/RigSession.cpp" line="422"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="460"/>
+        <location filename="../rig/RigSession.cpp" line="480"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="468"/>
+        <location filename="../rig/RigSession.cpp" line="488"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>

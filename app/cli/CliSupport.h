@@ -47,6 +47,8 @@ class CommandLine {
     QString required(const QString& name) const;
     /// The value (or default) of an option.
     QString value(const QString& name) const { return parser_.value(name); }
+    /// Every value of an option given several times, in order.
+    QStringList values(const QString& name) const { return parser_.values(name); }
     /// A number in [minimum, maximum]; UsageError naming the option and the bad text.
     double number(const QString& name, double minimum, double maximum) const;
     /// An integer in [minimum, maximum].

@@ -12,6 +12,8 @@ const std::vector<CliCommand>& commandTable() {
         {"simulate", "Simulate a plant from an initial state under given actions", simulateCommand},
         {"demo", "Generate a scripted demonstration for a plant", demoCommand},
         {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", fitCommand},
+        {"methods", "List the methods and their parameters (units, ranges, defaults)",
+         methodsCommand},
         {"run", "Run PRISCA or a baseline on a plant and log the trial", runCommand},
         {"table1", "Run batches of trials and report the paper's Table I metrics", table1Command},
         {"curve", "Learning curves of several methods over many runs", curveCommand},

@@ -11,7 +11,7 @@ namespace prisca::app::cli {
 /// Exit code for bad input: an unknown or unavailable command, or a malformed option.
 constexpr int kExitUsage = 2;
 
-/// Every command of DESIGN.md "Command line", in the order `--help` lists them.
+/// Every command of docs/architecture.md "Command line", in the order `--help` lists them.
 const std::vector<CliCommand>& commandTable();
 
 /// The command called `name`, or nullptr when there is none.

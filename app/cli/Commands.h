@@ -15,5 +15,6 @@ int lemma41Command(const QStringList& arguments);
 int linkCommand(const QStringList& arguments);
 int trackCommand(const QStringList& arguments);
 int rigCommand(const QStringList& arguments);
+int methodsCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

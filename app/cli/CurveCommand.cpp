@@ -118,7 +118,7 @@ int curveCommand(const QStringList& arguments) {
         protocol.styles = styles;
         protocol.seedSets =
             sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
-        sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+        sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
         applyMethodParameters(line, profile);
         int cellNow = 0, cellsAll = 0;
         QString cellStyle;

@@ -43,16 +43,7 @@ int runCommand(const QStringList& arguments) {
                   "1");
     addRunSettingsOptions(line, "Training trials for PEGASUS and PD (selected).");
     line.addValue("mask", "Intuitive mapping B~ (default: the plant's), as for 'fit'.", "signs");
-    line.addValue("H", "PRISCA/PGSD smoothing horizon H [steps] (eq. 9).", "steps");
-    line.addValue("gamma", "PRISCA inverse-depreciation rate in [0, 1] (eq. 10).", "gamma");
-    line.addValue("beta", "PRISCA step-size rate beta > 0 (eq. 3).", "beta");
-    line.addValue("alpha", "PGSD fixed step size.", "alpha");
-    line.addValue("window",
-                  "Least-state-deviation search window [samples] (eq. 12); PRISCA with automatic "
-                  "defaults takes one second of the demonstration instead.",
-                  "samples");
     addMethodParameterOptions(line);
-    line.addValue("iterations", "PEGASUS gradient steps before evaluation.", "N");
     line.addValue("out", "Run log CSV.", "file");
     line.addValue("compare", "Also run this method on the same trials and report it beside.",
                   "name");
@@ -72,27 +63,8 @@ int runCommand(const QStringList& arguments) {
     }
     const QString out = line.required("out");
     Task task = loadTask(plantName, line.required("demo"), line.value("mask"));
-    sim::PlantProfile& profile = task.profile;
-    if (line.isSet("H")) {
-        profile.prisca.horizon = profile.pgsd.horizon = profile.pdHorizon =
-            static_cast<int>(line.integer("H", 1, 1000));
-    }
-    if (line.isSet("gamma")) {
-        profile.prisca.gamma = line.number("gamma", 0.0, 1.0);
-    }
-    if (line.isSet("beta")) {
-        profile.prisca.stepSize.beta = line.number("beta", 1e-9, 1e12);
-    }
-    if (line.isSet("alpha")) {
-        profile.pgsd.stepSize = line.number("alpha", 0.0, 1e6);
-    }
-    if (line.isSet("window")) {
-        profile.matchingWindow = static_cast<int>(line.integer("window", 0, 1000000));
-    }
+    sim::MethodTuning& profile = task.profile;
     applyMethodParameters(line, profile);
-    if (line.isSet("iterations")) {
-        profile.pegasusIterations = static_cast<int>(line.integer("iterations", 0, 100000));
-    }
     const int trials = static_cast<int>(line.integer("trials", 1, 100000));
     sim::RunSettings settings;
     readRunSettings(line, settings);

@@ -63,7 +63,7 @@ int table1ProtocolCommand(const CommandLine& line) {
                            "--styles"));
     }
     const QString plant = checkedPlant(line.value("plant"));
-    sim::PlantProfile profile = sim::PlantProfile::forPlant(sim::PlantCatalog::describe(plant));
+    sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
     if (!profile.info.pose) {
         throw UsageError(
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));

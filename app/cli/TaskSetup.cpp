@@ -1,5 +1,7 @@
 #include "app/cli/TaskSetup.h"
 
+#include "sim/MethodCatalog.h"
+
 #include "app/cli/CliSupport.h"
 #include "core/DemonstrationCsv.h"
 #include "sim/DemonstrationStyles.h"
@@ -38,7 +40,7 @@ Task taskFor(const QString& plant, core::Demonstration demonstration,
                              .arg(demonstrationPath, name, sim::PlantCatalog::names().join(' ')));
     }
     const sim::PlantInfo info = sim::PlantCatalog::describe(name);
-    sim::PlantProfile profile = sim::PlantProfile::forPlant(info);
+    sim::MethodTuning profile = sim::MethodTuning::forPlant(info);
     if (!mask.isEmpty()) {
         QString error;
         auto parsed = core::IntuitiveMapping::parse(mask, &error);
@@ -97,25 +99,20 @@ Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed
 }
 
 void addMethodParameterOptions(CommandLine& line) {
-    line.addValue("prisca-defaults",
-                  "PRISCA's feature scales, alpha_0 and matching window: 'automatic' (from each "
-                  "demonstration and its fit) or 'preset' (the plant's tuned numbers). Default: "
-                  "the plant's choice (automatic for the slide-car, preset otherwise).",
-                  "choice");
+    line.addValue("param",
+                  "Set a method parameter, NAME=VALUE (repeatable; one value per control, "
+                  "comma-separated, where it has one per control). 'prisca-cli methods' lists "
+                  "every method's parameters with units, ranges and each plant's default.",
+                  "NAME=VALUE");
 }
 
-void applyMethodParameters(const CommandLine& line, sim::PlantProfile& profile) {
-    if (!line.isSet("prisca-defaults")) {
-        return;
-    }
-    const QString choice = line.value("prisca-defaults");
-    if (choice == QLatin1String("automatic")) {
-        profile.priscaAutomatic = true;
-    } else if (choice == QLatin1String("preset")) {
-        profile.priscaAutomatic = false;
-    } else {
-        throw UsageError(
-            QStringLiteral("--prisca-defaults: '%1' is not one of: automatic preset").arg(choice));
+void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile) {
+    for (const QString& assignment : line.values("param")) {
+        try {
+            sim::MethodCatalog::setParameter(profile, assignment);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(QStringLiteral("--param: %1").arg(QString::fromUtf8(e.what())));
+        }
     }
 }
 

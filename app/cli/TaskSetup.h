@@ -3,7 +3,7 @@
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 #include "sim/Plant.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
 
@@ -43,11 +43,12 @@ Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
 /// file would be); UsageError for an unknown plant or style.
 Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
 
-/// Adds --prisca-defaults automatic|preset (PlantProfile::priscaAutomatic).
+/// Adds --param NAME=VALUE (repeatable): a method parameter as the catalog declares it
+/// (sim::MethodCatalog::parameters()).
 void addMethodParameterOptions(CommandLine& line);
-/// Applies --prisca-defaults if given (the plant's own choice otherwise); UsageError naming the
-/// choices for anything else.
-void applyMethodParameters(const CommandLine& line, sim::PlantProfile& profile);
+/// Applies every --param to the profile, in order; UsageError naming the parameter, the value
+/// and what is allowed.
+void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
 /// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`), --jobs.

@@ -27,7 +27,7 @@ int trackCommand(const QStringList& arguments) {
     line.addValue("threshold", "Grey level above which a pixel is lit.", "0..255", "180");
     line.addValue("leds",
                   "LED positions in the car frame [m], front first: \"x,y;x,y;x,y\" (x forward, "
-                  "y left; default the DESIGN geometry 0.12,0;-0.08,0.06;-0.08,-0.06).",
+                  "y left; default the car's LED triangle 0.12,0;-0.08,0.06;-0.08,-0.06).",
                   "x,y;x,y;x,y");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {

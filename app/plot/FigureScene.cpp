@@ -526,10 +526,6 @@ bool FigureScene::isValid() const {
            qobject_cast<QApplication*>(QCoreApplication::instance()) != nullptr;
 }
 
-int FigureScene::panelCount() const {
-    return static_cast<int>(panels_.size());
-}
-
 QChart* FigureScene::chart(int panel) const {
     return panels_.at(static_cast<std::size_t>(panel))->chart;
 }

@@ -32,8 +32,6 @@ class FigureScene {
     /// nothing is built.
     bool isValid() const;
 
-    /// The panels' charts, in the figure's order; owned by the scene.
-    int panelCount() const;
     QChart* chart(int panel) const;
 
     /// A panel's plot area [px in the figure].

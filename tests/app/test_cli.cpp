@@ -25,7 +25,7 @@ CliResult runCli(const QStringList& arguments) {
     return result;
 }
 
-// The commands DESIGN.md "Command line" plans.
+// The commands docs/architecture.md "Command line" plans.
 const QStringList kPlannedCommands = {
     QStringLiteral("simulate"), QStringLiteral("demo"),   QStringLiteral("fit"),
     QStringLiteral("run"),      QStringLiteral("table1"), QStringLiteral("curve"),

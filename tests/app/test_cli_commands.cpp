@@ -420,7 +420,7 @@ class TestCliCommands : public QObject {
         }
         // Small training budgets: this checks the plumbing, not the tuning.
         const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
-                                 "--iterations", "1", "--training-trials", "1", "--out",
+                                 "--param", "pegasus.iterations=1", "--training-trials", "1", "--out",
                                  plant + "-" + method + ".csv", "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
@@ -790,18 +790,30 @@ class TestCliCommands : public QObject {
             << QStringList{"fit", "--demo", "car.csv", "--plant", "acrobot"}
             << "recorded on 'slidecar', not 'acrobot'";
         QTest::newRow("run: unknown method")
-            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "lqr"} +
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "lqg"} +
                 out)
-            << "unknown method 'lqr'";
+            << "unknown method 'lqg'";
         QTest::newRow("run: demo of another plant")
             << (QStringList{"run", "--plant", "acrobot", "--demo", "car.csv", "--method", "pd"} +
                 out)
             << "recorded on 'slidecar'";
         QTest::newRow("run: gamma out of range")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
-                            "--gamma", "1.5"} +
+                            "--param", "prisca.gamma=1.5"} +
                 out)
-            << "--gamma must lie in [0, 1]";
+            << "--param: prisca.gamma: 1.5 is outside 0 .. 1";
+        QTest::newRow("run: unknown parameter")
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
+                            "--param", "prisca.H2=3"} +
+                out)
+            << "no method has a parameter 'prisca.H2' (one of: prisca.H ";
+        QTest::newRow("run: a gain per control")
+            << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "pd",
+                            "--param", "pd.kp=1,2,3"} +
+                out)
+            << "pd.kp takes 2 values (one per control), got 3";
+        QTest::newRow("table1: not NAME=VALUE")
+            << QStringList{"table1", "--param", "prisca.H"} << "'prisca.H' is not NAME=VALUE";
         QTest::newRow("table1: not a table method")
             << QStringList{"table1", "--methods", "prisca,pegasus"}
             << "'pegasus' is not a Table I method";
@@ -893,14 +905,14 @@ class TestCliCommands : public QObject {
         const CliResult md = cli(base);
         QCOMPARE(md.exitCode, 0);
         for (const char* label : {"OURS (PRISCA)", "PRISCA (paper)", "PD (SELECTED)", "PD+H+LSD",
-                                  "ACTION PLAYBACK", "PGSD", "ILC", "LIMIT (oracle)"}) {
+                                  "LQR", "ACTION PLAYBACK", "PGSD", "ILC", "LIMIT (oracle)"}) {
             QVERIFY2(md.out.contains(QStringLiteral("| %1 | 3 |").arg(label)), qPrintable(md.out));
         }
         QVERIFY(md.err.contains("table1:"));  // progress on stderr, the table on stdout
         const CliResult json = cli(base + QStringList{"--format", "json"});
         QCOMPARE(json.exitCode, 0);
         const QJsonArray rows = parseJson(json.out).value("rows").toArray();
-        QCOMPARE(rows.size(), 11);
+        QCOMPARE(rows.size(), 12);
         for (const QJsonValue& row : rows) {
             const QJsonObject position = row.toObject().value("positionCm").toObject();
             QCOMPARE(position.value("count").toInt(), 3);
@@ -924,13 +936,13 @@ class TestCliCommands : public QObject {
             return root;
         };
         QCOMPARE(withoutCpu(cli(base + QStringList{"--format", "json"}).out), withoutCpu(json.out));
-        QCOMPARE(measured, 22);
+        QCOMPARE(measured, 24);
         const CliResult csv = cli(base + QStringList{"--format", "csv", "--out", "table.csv"});
         QCOMPARE(csv.exitCode, 0);
         QCOMPARE(csv.out, QString());
         QFile file(path("table.csv"));
         QVERIFY(file.open(QIODevice::ReadOnly));
-        QCOMPARE(file.readAll().trimmed().split('\n').size(), 12);
+        QCOMPARE(file.readAll().trimmed().split('\n').size(), 13);
         const CliResult tex =
             cli(base + QStringList{"--format", "latex", "--methods", "prisca,pd"});
         QCOMPARE(tex.exitCode, 0);
@@ -1020,7 +1032,7 @@ class TestCliCommands : public QObject {
             QVERIFY(pathRms >= 0.0);
             QVERIFY(pathRms <= pdTrials[t].toObject().value("trackingRms").toDouble());
         }
-        QCOMPARE(cli(base + QStringList{"--method", "prisca", "--compare", "lqr", "--out", "x.csv"})
+        QCOMPARE(cli(base + QStringList{"--method", "prisca", "--compare", "lqg", "--out", "x.csv"})
                      .exitCode,
                  2);
     }
@@ -1049,9 +1061,47 @@ class TestCliCommands : public QObject {
         QVERIFY2(err.contains("kept the"), qPrintable(err));
     }
 
+    // Every method's parameters come from its catalog entry, and docs/methods.md is what
+    // `methods --format md` prints (regenerate it with that command when a parameter changes).
+    void methods_listEachMethodsParametersAndTheDocsAreGenerated() {
+        const CliResult json = cli({"methods", "--format", "json"});
+        QCOMPARE(json.exitCode, 0);
+        const QJsonArray methods = parseJson(json.out).value("methods").toArray();
+        QCOMPARE(methods.size(), 13);
+        QJsonObject lqr;
+        for (const QJsonValue& m : methods) {
+            if (m.toObject().value("id").toString() == QLatin1String("lqr")) {
+                lqr = m.toObject();
+            }
+        }
+        const QJsonArray parameters = lqr.value("parameters").toArray();
+        QCOMPARE(parameters.size(), 3);
+        const QJsonObject effort = parameters.at(0).toObject();
+        QCOMPARE(effort.value("name").toString(), QStringLiteral("lqr.effort"));
+        QVERIFY(effort.value("perControl").toBool());
+        QCOMPARE(effort.value("defaults").toObject().keys(),
+                 QStringList({"acrobot", "aircraft", "diffdrive", "slidecar"}));
+        const CliResult text = cli({"methods", "--plant", "slidecar"});
+        QCOMPARE(text.exitCode, 0);
+        QVERIFY2(text.out.contains("prisca.gamma [-] 0 .. 1; default slidecar 0.95"),
+                 qPrintable(text.out));
+        const CliResult md = cli({"methods", "--format", "md"});
+        QCOMPARE(md.exitCode, 0);
+        QFile doc(QStringLiteral(PRISCA_SOURCE_DIR "/docs/methods.md"));
+        QVERIFY(doc.open(QIODevice::ReadOnly));
+        QVERIFY2(QString::fromUtf8(doc.readAll()) == md.out,
+                 "docs/methods.md is stale: regenerate it with "
+                 "`prisca-cli methods --format md > docs/methods.md`");
+        // The parameters a run takes are the ones listed.
+        const CliResult run = cli({"run", "--plant", "slidecar", "--demo", "car.csv", "--method",
+                                   "lqr", "--param", "lqr.effort=0.3,0.5", "--param",
+                                   "lqr.terminal=100", "--out", "lqr.csv", "--format", "json"});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    }
+
     void help_documentsEachCommandsOptions() {
         for (const char* command :
-             {"simulate", "demo", "fit", "run", "table1", "curve", "lemma41"}) {
+             {"simulate", "demo", "fit", "methods", "run", "table1", "curve", "lemma41"}) {
             const CliResult r = cli({command, "--help"});
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.contains("--format"), qPrintable(r.out));

@@ -148,7 +148,7 @@ QStringList tsFiles() {
     return paths;
 }
 
-// Every source under app/ and the two outside it: the set app/CMakeLists.txt hands to lupdate.
+// Every source under app/ and the few outside it: the set app/CMakeLists.txt hands to lupdate.
 QStringList appSources() {
     QStringList sources;
     QDirIterator it(QStringLiteral(PRISCA_SOURCE_DIR "/app"), {"*.cpp", "*.h"}, QDir::Files,
@@ -158,6 +158,7 @@ QStringList appSources() {
     }
     sources.sort();
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/PlantCatalog.cpp");  // the plants' names
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/MethodCatalog.cpp");  // method parameters
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");    // the rig's messages
     return sources;
 }

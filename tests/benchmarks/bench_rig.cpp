@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
     QCoreApplication application(argc, argv);
     auto demo = std::make_shared<core::Demonstration>(
         sim::PlantCatalog::demonstrate(QStringLiteral("slidecar"), 1));
-    const sim::PlantProfile profile =
-        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+    const sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
     rigsim::VirtualRig rig({}, sim::MethodCatalog::create("prisca", profile, demo, b));

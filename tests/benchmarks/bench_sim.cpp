@@ -5,7 +5,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/Table1Experiment.h"
 
 #include <algorithm>
@@ -57,8 +57,8 @@ int main() {
     // A 20-trial batch of PRISCA on the slide-car with realistic perturbation and sensor.
     auto demo =
         std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate("slidecar", 1));
-    const sim::PlantProfile profile =
-        sim::PlantProfile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     const Eigen::MatrixXd B =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
     const std::function<double(int)> trial = [&](int i) {

@@ -1,5 +1,5 @@
 // Table I error statistics, the Student t distribution and the learning-curve confidence band
-// (DESIGN.md "Metrics"), checked against hand-computed values, closed forms, tabulated quantiles
+// (docs/architecture.md "Metrics"), checked against hand-computed values, closed forms, tabulated quantiles
 // and plain brute-force computations written here independently of core/Statistics.cpp.
 
 #include <QtTest>

@@ -10,7 +10,7 @@
 #include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -26,8 +26,8 @@ namespace {
 constexpr double kFps = 40.0;
 
 struct SlideCar {
-    sim::PlantProfile profile =
-        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+    sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     std::shared_ptr<const core::Demonstration> demonstration;
     Eigen::MatrixXd b;
 
@@ -44,7 +44,7 @@ struct SlideCar {
     }
 
     rig::TrialRequest trial(const QString& method) const {
-        sim::PlantProfile settling = profile;
+        sim::MethodTuning settling = profile;
         settling.settleTime = 0.5;
         rig::TrialRequest request;
         request.setup = std::make_shared<const sim::RunSetup>(

@@ -4,7 +4,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/MeasurementModel.h"
 #include "sim/ParallelTrials.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/SlideCar.h"
 #include "sim/SlideCarDemonstrator.h"
 #include "sim/TrialMetrics.h"
@@ -27,7 +27,7 @@ bool identical(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 struct SlideCarSetup {
     std::shared_ptr<const core::Demonstration> demo =
         std::make_shared<core::Demonstration>(SlideCarDemonstrator::record(1));
-    PlantProfile profile = PlantProfile::forPlant(SlideCar::describe());
+    MethodTuning profile = MethodTuning::forPlant(SlideCar::describe());
     Eigen::MatrixXd fittedB =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
 

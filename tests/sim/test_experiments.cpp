@@ -5,7 +5,7 @@
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 #include "sim/LearningCurveExperiment.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/Table1Experiment.h"
 
@@ -20,10 +20,10 @@ using namespace prisca::sim;
 namespace {
 
 struct CarTask {
-    Task task = makeTask(PlantProfile::forPlant(PlantCatalog::describe("slidecar")),
+    Task task = makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
                          std::make_shared<core::Demonstration>(
                              PlantCatalog::demonstrate("slidecar", 1)));
-    const PlantProfile& profile = task.profile;
+    const MethodTuning& profile = task.profile;
     std::shared_ptr<const core::Demonstration> demo = task.demonstration;
 };
 
@@ -31,7 +31,7 @@ struct CarTask {
 Task carTaskAt(double hertz) {
     SimulationTiming timing;
     timing.controlPeriod = 1.0 / hertz;
-    return makeTask(PlantProfile::forPlant(PlantCatalog::describe("slidecar")),
+    return makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
                     std::make_shared<core::Demonstration>(
                         PlantCatalog::demonstrate("slidecar", 1, timing)));
 }

@@ -21,7 +21,7 @@ class TestMethodCatalog : public QObject {
   private:
     std::shared_ptr<const core::Demonstration> demo_ =
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 2));
-    PlantProfile profile_ = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
+    MethodTuning profile_ = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
 
   private slots:
     void priscaPaper_isAlgorithm1AsPrinted() {
@@ -111,7 +111,7 @@ class TestMethodCatalog : public QObject {
             demo.states(k, 0) = 2.0 * k * demo.dt;
             demo.states(k, 3) = 2.0;
         }
-        QCOMPARE(PlantProfile::automaticWindow(demo), 40);
+        QCOMPARE(MethodTuning::automaticWindow(demo), 40);
         const core::FeatureMap preset = profile_.featuresOf("prisca");
         const core::FeatureMap automatic = profile_.automaticFeatures("prisca", demo);
         QCOMPARE(automatic.terms().size(), preset.terms().size());
@@ -125,7 +125,7 @@ class TestMethodCatalog : public QObject {
             }
         }
         demo.dt = 0.05;
-        QCOMPARE(PlantProfile::automaticWindow(demo), 20);
+        QCOMPARE(MethodTuning::automaticWindow(demo), 20);
         // The factory's PRISCA takes them when the profile asks, and the normalised step.
         QVERIFY(profile_.priscaAutomatic);
         auto shared = std::make_shared<const core::Demonstration>(*demo_);
@@ -134,8 +134,8 @@ class TestMethodCatalog : public QObject {
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
         QVERIFY(prisca->parameters().stepSize.normalised);
-        QCOMPARE(prisca->parameters().stepSize.scale, PlantProfile::automaticStep);
-        PlantProfile preset2 = profile_;
+        QCOMPARE(prisca->parameters().stepSize.scale, MethodTuning::automaticStep);
+        MethodTuning preset2 = profile_;
         preset2.priscaAutomatic = false;
         controller = MethodCatalog::create("prisca", preset2, shared,
                                                Eigen::MatrixXd::Constant(2, 6, 0.5));
@@ -168,6 +168,81 @@ class TestMethodCatalog : public QObject {
         QCOMPARE(ilc->parameters().lead, profile_.ilcLead);
     }
 
+    // Every parameter is declared once, and its declaration is what reads, writes, formats,
+    // parses and checks it: on every plant, each default round-trips through the text the
+    // command line and the session use.
+    void parameters_areDeclaredOnceAndRoundTripOnEveryPlant() {
+        QSet<QString> names;
+        for (const MethodParameter* p : MethodCatalog::parameters()) {
+            const QString name = QString::fromLatin1(p->name);
+            QVERIFY2(!names.contains(name), qPrintable(name));
+            names.insert(name);
+            QVERIFY2(QString::fromUtf8(p->help).size() > 10, qPrintable(name));
+            QCOMPARE(MethodCatalog::parameter(name), p);
+            for (const QString& plant : PlantCatalog::names()) {
+                MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe(plant));
+                const Eigen::VectorXd value = p->value(profile);
+                const int m = profile.info.actionDimension();
+                QVERIFY2(p->check(value, m).isEmpty(),
+                         qPrintable(plant + ": " + p->check(value, m)));
+                QString error;
+                const auto parsed = p->parse(p->format(value), m, &error);
+                QVERIFY2(parsed && parsed->isApprox(value), qPrintable(plant + ": " + error));
+                MethodCatalog::setParameter(profile, name + QLatin1Char('=') + p->format(value));
+                QVERIFY(p->value(profile).isApprox(value));
+            }
+        }
+        // The same declaration where several methods share a parameter.
+        const auto named = [](const MethodSpec& spec, const char* name) {
+            for (const MethodParameter& p : spec.parameters) {
+                if (QLatin1String(p.name) == QLatin1String(name)) {
+                    return &p;
+                }
+            }
+            return static_cast<const MethodParameter*>(nullptr);
+        };
+        QVERIFY(named(MethodCatalog::get("pd"), "pd.kp"));
+        QCOMPARE(named(MethodCatalog::get("pd"), "pd.kp")->name,
+                 named(MethodCatalog::get("ilc"), "pd.kp")->name);
+        QVERIFY(!named(MethodCatalog::get("playback"), "pd.kp"));
+    }
+
+    void setParameter_changesTheProfileOrSaysWhatIsAllowed() {
+        MethodTuning profile = profile_;
+        MethodCatalog::setParameter(profile, "prisca.H=17");
+        QCOMPARE(profile.prisca.horizon, 17);
+        MethodCatalog::setParameter(profile, "pd.kp=0.5,2");
+        QCOMPARE(profile.pd.kp, Eigen::Vector2d(0.5, 2.0).eval());
+        MethodCatalog::setParameter(profile, "pd.kd=0.25");  // one number for every control
+        QCOMPARE(profile.pd.kd, Eigen::Vector2d(0.25, 0.25).eval());
+        MethodCatalog::setParameter(profile, "prisca.gradient=one-step");
+        QVERIFY(profile.prisca.gradient == core::PriscaParameters::Gradient::OneStep);
+        MethodCatalog::setParameter(profile, "prisca.automatic=off");
+        QVERIFY(!profile.priscaAutomatic);
+        // A method's own parameter with no field in the profile: kept by name.
+        MethodCatalog::setParameter(profile, "lqr.terminal=3");
+        QCOMPARE(profile.parameter("lqr.terminal")[0], 3.0);
+        const auto refused = [&](const char* assignment, const char* words) {
+            try {
+                MethodCatalog::setParameter(profile, QString::fromLatin1(assignment));
+            } catch (const std::invalid_argument& e) {
+                return QString::fromUtf8(e.what()).contains(QLatin1String(words));
+            }
+            return false;
+        };
+        QVERIFY(refused("prisca.H=0", "prisca.H: 0 is outside 1 .. 200"));
+        QVERIFY(refused("prisca.H=2.5", "outside"));
+        QVERIFY(refused("prisca.gamma=nan", "outside 0 .. 1"));
+        QVERIFY(refused("prisca.gradient=sideways", "one-step | closed-loop"));
+        QVERIFY(refused("pd.kp=1,2,3", "pd.kp takes 2 values"));
+        QVERIFY(refused("nope=1", "no method has a parameter 'nope'"));
+        QVERIFY(refused("prisca.H", "is not NAME=VALUE"));
+        QCOMPARE(profile.prisca.horizon, 17);  // nothing half-applied
+        // Per-plant defaults: the LQR's effort is the acrobot's own.
+        const MethodTuning acrobot = MethodTuning::forPlant(PlantCatalog::describe("acrobot"));
+        QVERIFY(acrobot.parameter("lqr.effort")[0] != profile_.parameter("lqr.effort")[0]);
+    }
+
     void catalog_isOneTableEveryListComesFrom() {
         // Ids unique and labelled; every entry builds a controller that calls itself by its id.
         QSet<QString> seen, labels;
@@ -186,7 +261,7 @@ class TestMethodCatalog : public QObject {
         // The traits the experiments read, as the paper's protocol has them.
         QCOMPARE(MethodCatalog::table1Ids(),
                  QStringList({"prisca", "prisca-paper", "pd", "pd-selected", "pd-h", "pd-lsd",
-                              "pd-h-lsd", "playback", "pgsd", "ilc", "oracle"}));
+                              "pd-h-lsd", "lqr", "playback", "pgsd", "ilc", "oracle"}));
         QVERIFY(!MethodCatalog::curveIds().contains("pd-selected"));
         QVERIFY(MethodCatalog::curveIds().contains("pegasus"));
         QStringList online, limits, own;

@@ -40,7 +40,7 @@ class TestNominalCase : public QObject {
         settings.table.run.threads = 2;
         settings.styles = DemonstrationStyles::names(plant);
         settings.seedSets = {7};
-        const PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe(plant));
+        const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe(plant));
         const Table1ProtocolResult result = runTable1Protocol(settings, profile);
         QCOMPARE(static_cast<int>(result.cells[0].size()), static_cast<int>(settings.styles.size()));
         for (const core::ProtocolCell& cell : result.cells[0]) {

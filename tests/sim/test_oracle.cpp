@@ -4,7 +4,7 @@
 #include "sim/EpisodeRunner.h"
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/MethodCatalog.h"
 #include "sim/TrialMetrics.h"
 
@@ -152,7 +152,7 @@ class TestOracle : public QObject {
         // oracle must not move away from them.
         auto demo = std::make_shared<core::Demonstration>(
             PlantCatalog::demonstrate(QStringLiteral("slidecar"), 3));
-        const PlantProfile profile = PlantProfile::forPlant(PlantCatalog::describe("slidecar"));
+        const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
         auto oracle = MethodCatalog::create(QStringLiteral("oracle"), profile, demo,
                                                 Eigen::MatrixXd::Zero(2, 6));
         auto plant = PlantCatalog::create(QStringLiteral("slidecar"));

@@ -1,7 +1,7 @@
 // The plant catalog: one entry per plant, everything the front ends need from it consistent.
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 #include "sim/TaskCheck.h"
 
 #include <QSet>
@@ -13,7 +13,7 @@ using namespace prisca::sim;
 class TestPlantCatalog : public QObject {
     Q_OBJECT
   private slots:
-    void everyEntry_isConsistentWithItsPlantProfileAndStyles() {
+    void everyEntry_isConsistentWithItsTuningAndStyles() {
         QSet<QString> names;
         QVERIFY(PlantCatalog::all().size() >= 3);
         for (const PlantEntry& entry : PlantCatalog::all()) {
@@ -28,7 +28,7 @@ class TestPlantCatalog : public QObject {
             QCOMPARE(plant->info().stateDimension(), info.stateDimension());
             QCOMPARE(plant->info().actionDimension(), info.actionDimension());
             // Its profile's sign model is m x n for this plant.
-            const PlantProfile profile = PlantProfile::forPlant(info);
+            const MethodTuning profile = MethodTuning::forPlant(info);
             QCOMPARE(profile.mapping.controls(), info.actionDimension());
             QCOMPARE(profile.mapping.states(), info.stateDimension());
             // Its styles record demonstrations of it; the first is the classic one.

@@ -10,12 +10,12 @@ namespace prisca::app {
 /// The GUI thread's handle on a RunWorker running on its own thread. Every call returns at once;
 /// the worker's signals arrive queued on the GUI thread. E-STOP is flagged directly (an atomic)
 /// so it takes effect at the worker's next control step even while its event queue is busy.
-class RunController : public QObject {
+class RunThread : public QObject {
     Q_OBJECT
   public:
-    explicit RunController(QObject* parent = nullptr);
+    explicit RunThread(QObject* parent = nullptr);
     /// Stops the run, quits the thread and waits for it (bounded; never terminates it).
-    ~RunController() override;
+    ~RunThread() override;
 
     void start(const RunRequest& request);
     void pause();

@@ -1,4 +1,4 @@
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 
 #include "MethodCatalog.h"
 #include "PlantCatalog.h"
@@ -36,8 +36,8 @@ Eigen::VectorXd vector(std::initializer_list<double> values) {
 // "More throttle, more speed and further along"; "steer left, move and turn left".
 }  // namespace
 
-PlantProfile slideCarProfile(const PlantInfo& info) {
-    PlantProfile p;
+MethodTuning slideCarTuning(const PlantInfo& info) {
+    MethodTuning p;
     p.info = info;
     p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
     // Features and every method's settings below come from tools/tune_table1: a random search of
@@ -57,9 +57,8 @@ PlantProfile slideCarProfile(const PlantInfo& info) {
     p.settleTime = 2.0;
     // Two metres off the path in an arena of a few metres: the car has left the demonstration
     // (a reference stalled on a full-throttle sample, feedback saturated on metres of error)
-    // and goes to failsafe instead of driving into the wall. On development cells it leaves
-    // PD+H+LSD as it was (5.90 cm), PRISCA 10.98 -> 11.13 cm, and stops PGSD's runaways
-    // (35.98 -> 15.48 cm, worst trial 5.8 -> 2.9 m).
+    // and goes to failsafe instead of driving into the wall (what it cost and saved on the
+    // development cells: docs/decisions.md, "What the profiles' numbers rest on").
     p.lostTrackDistance = 2.0;
     p.compensateLatency = true;
     p.prisca.horizon = 10;
@@ -70,10 +69,7 @@ PlantProfile slideCarProfile(const PlantInfo& info) {
     // combination is lateral only) and the longitudinal position for the throttle. The cost
     // charges the correction's effort (R = 3 per control: a third of a metre of error is worth
     // a full-lock correction), which is what makes the update turn round: theta settles per
-    // demonstration with no bound (heading gain -0.115 on fast-180-right, -0.042 on
-    // stick-180-left, -0.008 on keyboard-180-right after 100 trials). On development cells:
-    // R = 1 4.09 cm, 3 3.83 cm, 10 a spin; alpha_0 from 0.03 to 1 all within 0.05 cm, 0.01
-    // learns too slowly to stop a spin.
+    // demonstration with no bound (the sweeps behind R and alpha_0: docs/decisions.md).
     p.priscaFromPd = true;
     p.priscaFeatures = core::FeatureMap({
         {{Source::Deviation, 0, 1.0}},
@@ -84,7 +80,7 @@ PlantProfile slideCarProfile(const PlantInfo& info) {
     p.prisca.stepSize.scale = 0.1;
     // Table I runs on demonstrations no one tuned on: PRISCA's feature scales, alpha_0 and
     // matching window come from each demonstration and its fit (the preset numbers above stay
-    // for an operator who wants them). Development cells: automatic 3.84 cm, preset 3.83.
+    // for an operator who wants them).
     p.priscaAutomatic = true;
     p.prisca.thetaBound = 0.0;
     p.pgsd.horizon = 5;
@@ -113,8 +109,8 @@ PlantProfile slideCarProfile(const PlantInfo& info) {
 }
 
 // Acrobot: e = joint angle and rate errors; each torque drives its own joint (paper V.A).
-PlantProfile acrobotProfile(const PlantInfo& info) {
-    PlantProfile p;
+MethodTuning acrobotTuning(const PlantInfo& info) {
+    MethodTuning p;
     p.info = info;
     p.mapping = signs("1,0,1,0;0,1,0,1");
     p.features = core::FeatureMap({
@@ -128,16 +124,12 @@ PlantProfile acrobotProfile(const PlantInfo& info) {
     p.measurement.noise = vector({0.002, 0.002, 0.02, 0.02});
     p.settleTime = 0.0;
     // The acrobot follows a timed trajectory, so PRISCA's reference is time-driven here.
-    // Steps from one-dimensional sweeps on tuning seeds (run seed 100): PRISCA alpha_0 in
-    // {1, 10, 30, 100, 300}, PGSD alpha in {1, 3, 10, 30, 100, 300, 1000, 3000}.
+    // Steps from one-dimensional sweeps on tuning seeds (docs/decisions.md).
     p.priscaMatching = core::MatchingParameters::Mode::TimeDriven;
     p.prisca.horizon = 10;
     p.prisca.stepSize.beta = 2000.0;
-    // PRISCA starts from the plain PD below and learns on top with the one-step gradient
-    // (development cells, swing-medium and swing-large x seed sets 200, 201, 2 runs each: the
-    // last trial within 6,400 steps 3.37e-4 with learning off, alpha_0 = 30 2.99e-4, 100 2.68e-4,
-    // 300 2.69e-4, 1000 diverges; within 32,000 steps 1.38e-4 at 100, PD 1.80e-4, ILC 1.82e-4).
-    // From theta = 0 it settled at 2.5x the PD.
+    // PRISCA starts from the plain PD below and learns on top with the one-step gradient (from
+    // theta = 0 it settled well above the PD; the sweep: docs/decisions.md).
     p.priscaFromPd = true;
     p.priscaPriorHorizon = 0;
     p.prisca.stepSize.scale = 100.0;
@@ -146,16 +138,15 @@ PlantProfile acrobotProfile(const PlantInfo& info) {
     p.pd.errorCombination = (Eigen::MatrixXd(2, 4) << 1.0, 0, 0.2, 0,  //
                              0, 1.0, 0, 0.2)
                                 .finished();
-    // Kp from `tune_ilc acrobot 60`, which searched ILC's feedback too (x 0.25 .. 2 of the
-    // earlier 20): 40 did best, so PD has it as well; ILC's learning adds nothing measurable.
+    // Kp from `tune_ilc acrobot 60`, which searched ILC's feedback too: the best feedback is the
+    // PD's as well (docs/decisions.md).
     p.pd.kp = vector({40.0, 40.0});
     p.pd.kd = vector({0.0, 0.0});
     p.ilcLearningScale = 0.03;
     p.ilcLead = 0;
     p.ilcCutoff = 0.5;
     p.ilcFeedbackScale = 1.0;
-    // From a sweep on tuning seeds (run seed 100): step in {20, 1e3, 1e4, 1e5, 1e6}, h in {0.5, 2},
-    // scenarios in {1, 2, 4}, step limit in {5, 20, 50, 200}.
+    // From a sweep on tuning seeds (docs/decisions.md).
     p.pegasus.scenarios = 2;
     p.pegasus.stepSize = 1e5;
     p.pegasus.perturbation = 0.5;
@@ -171,8 +162,8 @@ PlantProfile acrobotProfile(const PlantInfo& info) {
 // Planar aircraft: rudder left turns left; throttle speeds up (paper V.B, Fig. 4, 5).
 // The tuned values come from `tune_aircraft prisca|pgsd|pd 600` (README "Results", Fig. 4):
 // equal budgets of random settings scored on tuning seed sets 100 and 101.
-PlantProfile aircraftProfile(const PlantInfo& info) {
-    PlantProfile p;
+MethodTuning aircraftTuning(const PlantInfo& info) {
+    MethodTuning p;
     p.info = info;
     p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
     // Shared features and cost weights (PGSD's and PEGASUS's): PGSD's tuned choice.
@@ -190,7 +181,7 @@ PlantProfile aircraftProfile(const PlantInfo& info) {
     // PRISCA's tuned choice: the signs B~ as its model (every one of the five best settings
     // chose them over the fit, which on this closed-loop demonstration gives the rudder a
     // negative lateral effect), its time-driven reference and its own features and weights.
-    p.priscaModel = PlantProfile::PriscaModel::Signs;
+    p.priscaModel = MethodTuning::PriscaModel::Signs;
     p.priscaMatching = core::MatchingParameters::Mode::TimeDriven;
     p.priscaFeatures = core::FeatureMap({
         {{Source::Deviation, 0, 1.0}, {Source::Deviation, 3, 0.3}},
@@ -202,9 +193,8 @@ PlantProfile aircraftProfile(const PlantInfo& info) {
     p.prisca.stepSize.scale = 0.1;
     p.prisca.stepSize.beta = 2000.0;
     p.prisca.thetaBound = 0.0;
-    // PRISCA starts from the plain PD below (development cells, s-turn and circle x seed sets
-    // 200, 201, 2 runs each, the last trial within 7,000 steps: from theta = 0 28.6 m^2; from the
-    // PD with learning off 17.43, alpha_0 = 0.03 19.76, 0.1 16.43, 0.3 16.61, 1 20.06).
+    // PRISCA starts from the plain PD below (from theta = 0 it did worse; the sweep:
+    // docs/decisions.md).
     p.priscaFromPd = true;
     p.priscaPriorHorizon = 0;
     p.pgsd.horizon = 10;
@@ -235,16 +225,32 @@ PlantProfile aircraftProfile(const PlantInfo& info) {
 }
 
 
-PlantProfile PlantProfile::forPlant(const PlantInfo& info) {
+MethodTuning MethodTuning::forPlant(const PlantInfo& info) {
     const PlantEntry* entry = PlantCatalog::find(info.name);
     if (!entry || !entry->profile) {
         throw std::invalid_argument(
             QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
     }
-    return entry->profile(info);
+    MethodTuning profile = entry->profile(info);
+    for (const MethodParameter* parameter : MethodCatalog::parameters()) {
+        if (!parameter->get && parameter->defaultFor) {
+            profile.methodValues[QString::fromLatin1(parameter->name)] =
+                parameter->defaultFor(profile);
+        }
+    }
+    return profile;
 }
 
-EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, double perturbation,
+Eigen::VectorXd MethodTuning::parameter(const QString& name) const {
+    const MethodParameter* declared = MethodCatalog::parameter(name);
+    if (!declared) {
+        throw std::invalid_argument(
+            QStringLiteral("no method has a parameter '%1'").arg(name).toStdString());
+    }
+    return declared->value(*this);
+}
+
+EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, double perturbation,
                                       double sensor) const {
     EpisodeSettings episode;
     episode.perturbation = {perturbation * perturbationShares.initialState,
@@ -266,7 +272,7 @@ EpisodeSettings PlantProfile::episode(const core::Demonstration& demonstration, 
     return episode;
 }
 
-core::IlcParameters PlantProfile::ilcParameters() const {
+core::IlcParameters MethodTuning::ilcParameters() const {
     core::IlcParameters parameters;
     parameters.feedback = pd;
     parameters.feedback.kp *= ilcFeedbackScale;
@@ -278,7 +284,7 @@ core::IlcParameters PlantProfile::ilcParameters() const {
     return parameters;
 }
 
-core::TrackingProblem PlantProfile::priscaProblem(
+core::TrackingProblem MethodTuning::priscaProblem(
     std::shared_ptr<const core::Demonstration> demonstration) const {
     core::TrackingProblem problem = trackingProblem(std::move(demonstration), priscaMatching);
     if (priscaCostWeights.size() > 0) {
@@ -288,17 +294,17 @@ core::TrackingProblem PlantProfile::priscaProblem(
     return problem;
 }
 
-const core::FeatureMap& PlantProfile::featuresOf(const QString& method) const {
+const core::FeatureMap& MethodTuning::featuresOf(const QString& method) const {
     const MethodSpec* spec = MethodCatalog::find(method);
     return spec && spec->ownFeatures && priscaFeatures ? *priscaFeatures : features;
 }
 
-int PlantProfile::automaticWindow(const core::Demonstration& demonstration) {
+int MethodTuning::automaticWindow(const core::Demonstration& demonstration) {
     const int window = static_cast<int>(std::lround(automaticWindowSeconds / demonstration.dt));
     return std::clamp(window, 1, std::max(1, demonstration.length() - 1));
 }
 
-core::FeatureMap PlantProfile::automaticFeatures(const QString& method,
+core::FeatureMap MethodTuning::automaticFeatures(const QString& method,
                                                  const core::Demonstration& demonstration) const {
     const core::DeviationModel deviation = info.deviationModel();
     const int lag = automaticWindow(demonstration);
@@ -325,7 +331,7 @@ core::FeatureMap PlantProfile::automaticFeatures(const QString& method,
     return core::FeatureMap(std::move(terms));
 }
 
-core::TrackingProblem PlantProfile::trackingProblem(
+core::TrackingProblem MethodTuning::trackingProblem(
     std::shared_ptr<const core::Demonstration> demonstration,
     core::MatchingParameters::Mode mode) const {
     core::TrackingProblem problem;

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <optional>
 
 namespace prisca::sim {
@@ -21,8 +22,8 @@ namespace prisca::sim {
 /// How each method is set up on one plant: the intuitive mapping B~, the features, the
 /// matching and cost weights, a camera-like measurement model, and every method's default
 /// tuning. The app, the CLI and the experiments all start from here, so the baselines share
-/// the plant, features and limits with PRISCA (DESIGN.md "Baselines"). Plain data.
-struct PlantProfile {
+/// the plant, features and limits with PRISCA (docs/architecture.md "Baselines"). Plain data.
+struct MethodTuning {
     PlantInfo info;                     ///< the plant
     core::IntuitiveMapping mapping;     ///< B~ (m x n signs)
     core::FeatureMap features;          ///< phi_l per channel
@@ -74,9 +75,8 @@ struct PlantProfile {
     /// structure stays: which deviations feed which control, the model, gradient and R.
     bool priscaAutomatic = false;
     /// alpha_0 of the automatic defaults, one number for every plant: the fraction of a scalar
-    /// Newton step taken per control step (StepSize::normalised). From sweeps on development
-    /// cells (0.0001 .. 1): the slide-car holds 3.82-3.86 cm from 0.0003 to 0.03 and spins at
-    /// 0.1; the acrobot diverges within 32,000 steps at 0.001; the aircraft worsens from 0.003.
+    /// Newton step taken per control step (StepSize::normalised), from sweeps on development
+    /// cells (docs/decisions.md, "What the profiles' numbers rest on").
     static constexpr double automaticStep = 0.0003;
     /// The automatic matching window: this much of the demonstration's time [s].
     static constexpr double automaticWindowSeconds = 1.0;
@@ -97,10 +97,16 @@ struct PlantProfile {
     /// Whether the oracle plans through the proportional part of the PD feedback.
     bool oracleFeedback = true;
     int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
+    /// The values of parameters a method declares with no field here (MethodParameter without
+    /// get/set), by parameter name; forPlant() fills in each one's per-plant default.
+    std::map<QString, Eigen::VectorXd> methodValues;
+    /// The value of a declared parameter (MethodCatalog::parameter); std::invalid_argument for a
+    /// name no method declares.
+    Eigen::VectorXd parameter(const QString& name) const;
 
     /// The profile of a plant by its info (its PlantCatalog entry's). Throws
     /// std::invalid_argument for an unknown plant.
-    static PlantProfile forPlant(const PlantInfo& info);
+    static MethodTuning forPlant(const PlantInfo& info);
     /// How a trial of this plant repeating `demonstration` runs: the perturbation and the
     /// sensor scaled by their levels (0 nominal / perfect, 1 realistic; a perfect sensor also has
     /// no latency and no drops), the demonstration's length plus settleTime, and (vehicles) an
@@ -130,9 +136,9 @@ struct PlantProfile {
     static int automaticWindow(const core::Demonstration& demonstration);
 };
 
-/// The catalog plants' tuned profiles (PlantCatalog's entries point here).
-PlantProfile slideCarProfile(const PlantInfo& info);
-PlantProfile acrobotProfile(const PlantInfo& info);
-PlantProfile aircraftProfile(const PlantInfo& info);
+/// The catalog plants' tunings (PlantCatalog's entries point here).
+MethodTuning slideCarTuning(const PlantInfo& info);
+MethodTuning acrobotTuning(const PlantInfo& info);
+MethodTuning aircraftTuning(const PlantInfo& info);
 
 }  // namespace prisca::sim

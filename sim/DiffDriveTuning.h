@@ -1,10 +1,10 @@
 #pragma once
 
-#include "PlantProfile.h"
+#include "MethodTuning.h"
 
 namespace prisca::sim {
 
 /// The differential-drive robot's profile: its sign model, sensor and every method's settings.
-PlantProfile diffDriveProfile(const PlantInfo& info);
+MethodTuning diffDriveTuning(const PlantInfo& info);
 
 }  // namespace prisca::sim

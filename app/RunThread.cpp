@@ -1,4 +1,4 @@
-#include "app/RunController.h"
+#include "app/RunThread.h"
 
 #include "devices/ThreadHandOff.h"
 
@@ -8,7 +8,7 @@ namespace {
 constexpr unsigned long kShutdownWaitMs = 3000;
 }
 
-RunController::RunController(QObject* parent) : QObject(parent), worker_(new RunWorker) {
+RunThread::RunThread(QObject* parent) : QObject(parent), worker_(new RunWorker) {
     qRegisterMetaType<RunRequest>();
     qRegisterMetaType<LiveSample>();
     qRegisterMetaType<std::shared_ptr<const core::RunLog>>();
@@ -17,57 +17,57 @@ RunController::RunController(QObject* parent) : QObject(parent), worker_(new Run
     qRegisterMetaType<sim::TrialSummary>();
     thread_.setObjectName(QStringLiteral("prisca-run"));
     worker_->moveToThread(&thread_);
-    connect(worker_, &RunWorker::samplesReady, this, &RunController::samplesReady);
+    connect(worker_, &RunWorker::samplesReady, this, &RunThread::samplesReady);
     connect(worker_, &RunWorker::phaseChanged, this, [this](RunPhase phase) {
         phase_ = phase;
         emit phaseChanged(phase);
     });
-    connect(worker_, &RunWorker::progress, this, &RunController::progress);
-    connect(worker_, &RunWorker::trialFinished, this, &RunController::trialFinished);
-    connect(worker_, &RunWorker::runFinished, this, &RunController::runFinished);
+    connect(worker_, &RunWorker::progress, this, &RunThread::progress);
+    connect(worker_, &RunWorker::trialFinished, this, &RunThread::trialFinished);
+    connect(worker_, &RunWorker::runFinished, this, &RunThread::runFinished);
     connect(worker_, &RunWorker::runLogReady, this,
             [this](std::shared_ptr<const core::RunLog> log) {
                 lastRunLog_ = std::move(log);
                 emit runLogReady(lastRunLog_);
             });
-    connect(worker_, &RunWorker::failed, this, &RunController::failed);
+    connect(worker_, &RunWorker::failed, this, &RunThread::failed);
     devices::markThreadEnd(thread_);
     thread_.start();
 }
 
-RunController::~RunController() {
+RunThread::~RunThread() {
     worker_->requestCancel();
     devices::postTo(worker_, [w = worker_] { w->stop(); });
     devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
 }
 
-void RunController::start(const RunRequest& request) {
+void RunThread::start(const RunRequest& request) {
     devices::postTo(worker_, [w = worker_, request] { w->start(request); });
 }
 
-void RunController::pause() {
+void RunThread::pause() {
     devices::postTo(worker_, [w = worker_] { w->pause(); });
 }
 
-void RunController::resume() {
+void RunThread::resume() {
     devices::postTo(worker_, [w = worker_] { w->resume(); });
 }
 
-void RunController::stop() {
+void RunThread::stop() {
     worker_->requestCancel();  // training polls this; stop() itself waits in the queue
     devices::postTo(worker_, [w = worker_] { w->stop(); });
 }
 
-void RunController::emergencyStop() {
+void RunThread::emergencyStop() {
     worker_->requestEmergencyStop();
     devices::postTo(worker_, [w = worker_] { w->engageEmergencyStop(); });
 }
 
-void RunController::resetEmergencyStop() {
+void RunThread::resetEmergencyStop() {
     devices::postTo(worker_, [w = worker_] { w->resetEmergencyStop(); });
 }
 
-void RunController::setSpeed(double speed) {
+void RunThread::setSpeed(double speed) {
     devices::postTo(worker_, [w = worker_, speed] { w->setSpeed(speed); });
 }
 

@@ -5,7 +5,7 @@
 #include "core/ActionMapping.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantProfile.h"
+#include "sim/MethodTuning.h"
 
 #include <QtTest>
 
@@ -21,8 +21,8 @@ std::unique_ptr<core::Controller> makeController(const QString& method,
                                                  std::shared_ptr<const core::Demonstration>* demo) {
     *demo = std::make_shared<core::Demonstration>(
         sim::PlantCatalog::demonstrate(QStringLiteral("slidecar"), 1));
-    const sim::PlantProfile profile =
-        sim::PlantProfile::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+    const sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(**demo, profile.mapping, profile.info.deviationModel()).b;
     return sim::MethodCatalog::create(method, profile, *demo, b);

@@ -1,12 +1,12 @@
-#include "DiffDriveProfile.h"
+#include "DiffDriveTuning.h"
 
 #include <stdexcept>
 
 namespace prisca::sim {
 
-PlantProfile diffDriveProfile(const PlantInfo& info) {
+MethodTuning diffDriveTuning(const PlantInfo& info) {
     using Source = core::FeatureTerm::Source;
-    PlantProfile p;
+    MethodTuning p;
     p.info = info;
     // e = (longitudinal, lateral, heading, vx, vy, r) in the desired pose's frame. "Either wheel
     // forward, more speed and further along; the right wheel turns it left (and moves it left),

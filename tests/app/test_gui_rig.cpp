@@ -1,0 +1,193 @@
+// The Rig panel driven offscreen on the virtual rig: camera, link, trials, driving and
+// recording, the channel map and the floor calibration.
+#include "GuiTestSupport.h"
+
+using namespace prisca::app;
+using namespace prisca::test;
+
+class TestGuiRig : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_gui_rig"));
+        QApplication::setQuitOnLastWindowClosed(false);
+    }
+    void init() { QSettings().clear(); }
+
+    void rig_virtualCameraTracksTheCarAndTheLinkConnects() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(0);  // the virtual rig
+        rig->startCamera();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->framesSeen() > 20, 10000);
+        QTRY_VERIFY(rig->lastPose().has_value());
+        // The simulated car stands at its (perturbed) start: within a few cm of the origin.
+        QVERIFY(std::hypot(rig->lastPose()->x, rig->lastPose()->y) < 0.1);
+        QVERIFY(!rig->virtualPort().isEmpty());
+        w.find<QComboBox>("linkPort")->setEditText(rig->virtualPort());
+        rig->connectLink();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->linkStatus().connected && rig->linkStatus().framesSent > 5,
+                                 5000);
+        QCOMPARE(rig->linkStatus().failsafe, prisca::devices::FailsafeReason::NoCommand);
+        QVERIFY(w.find<QLabel>("linkStatus")->text().contains("failsafe"));
+        rig->stopCamera();
+        rig->disconnectLink();
+        QTRY_VERIFY(!rig->linkStatus().connected);
+    }
+
+    void rig_priscaParksTheVirtualCarThroughTheLinkAndEstopLatchesFailsafe() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        // Not before camera and link are up: said plainly.
+        QVERIFY(!rig->runTrial());
+        QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains("camera"));
+        QVERIFY(startVirtualRig(w, rig));
+        // Connected: Connect and Start camera are spent, their opposites ready.
+        QTRY_VERIFY(!w.find<QAbstractButton>("connectLink")->isEnabled());
+        QVERIFY(w.find<QAbstractButton>("disconnectLink")->isEnabled());
+        QVERIFY(!w.find<QAbstractButton>("startCamera")->isEnabled());
+        QVERIFY(w.find<QAbstractButton>("stopCamera")->isEnabled());
+        // A car trial while the target is the aircraft: refused, and said why.
+        w.window.session().setPlant(QStringLiteral("aircraft"));
+        QVERIFY(!rig->runTrial());
+        QVERIFY2(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("slide-car")),
+                 qPrintable(w.find<QLabel>("rigTrialInfo")->text()));
+        w.window.session().setPlant(QStringLiteral("slidecar"));
+        QSignalSpy finished(rig, &RigPanel::trialFinished);
+        QVERIFY(rig->runTrial());
+        QVERIFY(finished.wait(20000));
+        const QString result = finished.last().at(0).toString();
+        const QRegularExpression cm(QStringLiteral("parked ([0-9.]+) cm"));
+        const QRegularExpressionMatch m = cm.match(result);
+        QVERIFY2(m.hasMatch(), qPrintable(result));
+        qInfo("virtual rig from the window: %s", qPrintable(result));
+        QVERIFY2(m.captured(1).toDouble() < 50.0, qPrintable(result));
+        // A second trial, stopped by E-STOP (Space): failsafe latched on the link.
+        QVERIFY(rig->runTrial());
+        const long long framesAtStart = rig->framesSeen();
+        QTRY_VERIFY_WITH_TIMEOUT(rig->framesSeen() >= framesAtStart + 10, 30000);  // under way
+        QVERIFY(rig->isRunning());
+        QTest::keyClick(&w.window, Qt::Key_Space);
+        QTRY_VERIFY(!rig->isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(rig->linkStatus().failsafe,
+                                  prisca::devices::FailsafeReason::EmergencyStop, 3000);
+        QVERIFY(rig->linkStatus().emergencyLatched);
+        w.find<QAbstractButton>("resetEmergencyButton")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!rig->linkStatus().emergencyLatched, 3000);
+        rig->stopCamera();
+        rig->disconnectLink();
+    }
+
+    void rig_drivingThroughTheLinkRecordsADemonstration() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        QVERIFY(startVirtualRig(w, rig));
+        const auto before = w.window.session().demonstration();
+        QVERIFY(rig->startDriving());
+        QTest::keyPress(&w.window, Qt::Key_Up);
+        QTRY_VERIFY(rig->drivingInput()[0] > 0.99);
+        // Full throttle for 0.7 s of the take's own (frame) time, then 0.3 s coasting.
+        QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 0.7, 30000);
+        QTest::keyRelease(&w.window, Qt::Key_Up);
+        QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 1.0, 30000);
+        rig->stopDriving();
+        // The take is resampled and written on the rig's worker thread, then handed over.
+        QTRY_VERIFY_WITH_TIMEOUT(w.window.session().demonstration() != before, 10000);
+        const auto demo = w.window.session().demonstration();
+        QVERIFY2(demo->length() >= 30, qPrintable(QString::number(demo->length())));
+        QVERIFY(demo->actions.col(0).maxCoeff() > 0.99);
+        // The car, driven through the link, moved forward; the camera saw it do so.
+        const double moved = demo->states(demo->length() - 1, 0) - demo->states(0, 0);
+        QVERIFY2(moved > 0.3, qPrintable(QString::number(moved)));
+        QVERIFY(demo->states.col(3).maxCoeff() > 0.5);  // and measured its speed
+        // The stream on disk reads back as the same demonstration.
+        prisca::core::FileError error;
+        const auto onDisk =
+            prisca::core::readDemonstrationCsv(w.window.session().demonstrationSource(), &error);
+        QVERIFY2(onDisk, qPrintable(error.toString()));
+        QCOMPARE(onDisk->length(), demo->length());
+        rig->stopCamera();
+        rig->disconnectLink();
+    }
+
+    void rig_closingTheWindowWhileDrivingKeepsTheRecordingOnDisk() {
+        QString stream;
+        {
+            Window w;
+            auto* rig = w.find<RigPanel>("rigPanel");
+            QVERIFY(startVirtualRig(w, rig));
+            QVERIFY(rig->startDriving());
+            QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 0.4, 30000);
+            QVERIFY(rig->isDriving());
+            QVERIFY(w.window.close());
+        }  // the window, its session and the panel go while the recording runs: no crash
+        const QDir folder(RecordPanel::recordingsFolder());
+        const QStringList files =
+            folder.entryList({QStringLiteral("rig-*.csv")}, QDir::Files, QDir::Time);
+        QVERIFY(!files.isEmpty());
+        prisca::core::FileError error;
+        const auto kept =
+            prisca::core::readDemonstrationCsv(folder.filePath(files.first()), &error);
+        QVERIFY2(kept, qPrintable(error.toString()));
+        QVERIFY(kept->length() > 5);
+    }
+
+    void rig_channelMapIsCheckedAppliedAndRemembered() {
+        {
+            Window w;
+            auto* rig = w.find<RigPanel>("rigPanel");
+            auto* table = w.find<QTableWidget>("channelMap");
+            auto* problem = w.find<QLabel>("channelProblem");
+            QCOMPARE(table->item(0, 0)->text(), QStringLiteral("3"));  // throttle on CH3
+            QCOMPARE(table->item(1, 0)->text(), QStringLiteral("1"));  // steering on CH1
+            table->item(1, 0)->setText(QStringLiteral("3"));
+            QVERIFY2(problem->text().contains("twice"), qPrintable(problem->text()));
+            QCOMPARE(rig->channels().controls[1].channel, 0);  // refused, unchanged
+            table->item(1, 0)->setText(QStringLiteral("2"));
+            table->item(1, 1)->setText(QStringLiteral("20"));
+            table->item(1, 4)->setCheckState(Qt::Checked);
+            QVERIFY(problem->text().isEmpty());
+            QCOMPARE(rig->channels().controls[1].channel, 1);
+            QCOMPARE(rig->channels().controls[1].trim, 20.0);
+            QVERIFY(rig->channels().controls[1].reversed);
+            // Failsafe centres steering with its trim: 1520 us on CH2.
+            QCOMPARE(rig->channels().failsafe()[1], 1520.0);
+        }
+        Window again;
+        auto* rig = again.find<RigPanel>("rigPanel");
+        QCOMPARE(rig->channels().controls[1].channel, 1);
+        QCOMPARE(rig->channels().controls[1].trim, 20.0);
+        QVERIFY(rig->channels().controls[1].reversed);
+    }
+
+    void rig_calibrationByClicksSavedAndBadFilesRefused() {
+        QTemporaryDir dir;
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        const prisca::devices::FloorCalibration truth = prisca::devices::syntheticCeilingCamera();
+        // Four clicks on points whose floor position the operator knows.
+        for (const auto& floor :
+             {QPointF(0.0, 0.0), QPointF(3.0, 0.0), QPointF(3.0, 1.5), QPointF(0.0, 1.5)}) {
+            const cv::Point2d image = truth.toImage({floor.x(), floor.y()});
+            rig->addCalibrationPoint(QPointF(image.x, image.y), floor);
+        }
+        QCOMPARE(rig->calibration().points.size(), size_t(4));
+        QVERIFY(rig->calibration().rmsMetres < 1e-6);
+        QVERIFY(w.find<QLabel>("calibrationInfo")->text().contains("4 points"));
+        QVERIFY(rig->saveCalibration(dir.filePath("cal.json")));
+        QFile bad(dir.filePath("bad.json"));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("{\"homography\": \"no\"}");
+        bad.close();
+        const QString text = answerMessageBox(
+            this, [&] { QVERIFY(!rig->loadCalibration(dir.filePath("bad.json"))); });
+        QVERIFY2(text.contains("bad.json") && text.contains("homography"), qPrintable(text));
+        QCOMPARE(rig->calibration().points.size(), size_t(4));  // unchanged
+        QVERIFY(rig->loadCalibration(dir.filePath("cal.json")));
+    }
+};
+
+QTEST_MAIN(TestGuiRig)
+#include "test_gui_rig.moc"
