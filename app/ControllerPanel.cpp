@@ -15,7 +15,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QVBoxLayout>
 #include <QCoreApplication>
 
@@ -120,7 +120,7 @@ void ControllerPanel::buildEditors() {
                     auto* box = new QSpinBox(this);
                     box->setRange(static_cast<int>(parameter.minimum),
                                   static_cast<int>(parameter.maximum));
-                    if (!unit.isEmpty()) {
+                    if (!unit.isEmpty() && !parameter.perChannel) {  // else the label says it
                         box->setSuffix(QLatin1Char(' ') + unit);
                     }
                     connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
@@ -131,7 +131,7 @@ void ControllerPanel::buildEditors() {
                     auto* box = new QDoubleSpinBox(this);
                     box->setRange(parameter.minimum, parameter.maximum);
                     box->setDecimals(parameter.decimals);
-                    if (!unit.isEmpty()) {
+                    if (!unit.isEmpty() && !parameter.perChannel) {  // else the label says it
                         box->setSuffix(QLatin1Char(' ') + unit);
                     }
                     connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
@@ -146,17 +146,24 @@ void ControllerPanel::buildEditors() {
         if (editor.fields.size() == 1) {
             form_->addRow(editor.label, editor.fields.front());
         } else {
-            // One box per control, each labelled with its control's name.
+            // One box per control, one line each, labelled with its control's name (side by
+            // side they would push the panel wider than its dock).
             auto* row = new QWidget(this);
             row->setObjectName(name);
-            auto* boxes = new QHBoxLayout(row);
+            auto* boxes = new QGridLayout(row);
             boxes->setContentsMargins(0, 0, 0, 0);
             for (size_t l = 0; l < editor.fields.size(); ++l) {
-                auto* channel = new QLabel(info.actionNames.value(static_cast<int>(l)), row);
-                boxes->addWidget(channel);
-                editor.fields[l]->setParent(row);
-                boxes->addWidget(editor.fields[l], 1);
+                const int line = static_cast<int>(l);
+                boxes->addWidget(new QLabel(info.actionNames.value(line), row), line, 0);
+                QWidget* field = editor.fields[l];
+                field->setParent(row);
+                // The width the row has, not that of the range's largest number.
+                field->setSizePolicy(QSizePolicy::Ignored, field->sizePolicy().verticalPolicy());
+                field->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("00.000000")) +
+                                       30);
+                boxes->addWidget(field, line, 1);
             }
+            boxes->setColumnStretch(1, 1);
             form_->addRow(editor.label, row);
         }
         editors_.push_back(editor);
@@ -230,6 +237,10 @@ void ControllerPanel::showSession() {
         }
     }
     problem_->clear();
+    const sim::MethodSpec* spec = sim::MethodCatalog::find(session_.method());
+    const bool showFeatures = spec && spec->usesFeatures;  // the others have no theta^T phi
+    featuresLabel_->setVisible(showFeatures);
+    features_->setVisible(showFeatures);
     enableScales();
     updating_ = false;
 }
@@ -352,8 +363,11 @@ void ControllerPanel::retranslateUi() {
         const QString help = QCoreApplication::translate("MethodParameter", p.help);
         const QString tip = QStringLiteral("%1 (%2, %3)").arg(help, QString::fromLatin1(p.name),
                                                                p.range());
-        label(editor.fields.front(), editor.label,
-              QCoreApplication::translate("MethodParameter", p.label) + QLatin1Char(':'), tip);
+        QString text = QCoreApplication::translate("MethodParameter", p.label);
+        if (p.perChannel && *p.unit) {
+            text += QStringLiteral(" [%1]").arg(QString::fromUtf8(p.unit));
+        }
+        label(editor.fields.front(), editor.label, text + QLatin1Char(':'), tip);
         for (QWidget* field : editor.fields) {
             field->setToolTip(tip);
             if (p.zeroMeans) {

@@ -767,6 +767,7 @@ std::vector<MethodSpec> makeCatalog() {
     MethodSpec s = entry("prisca", "OURS (PRISCA)", &makePrisca);
     s.learnsOnline = true;
     s.ownFeatures = true;
+    s.usesFeatures = true;
     s.summary = "the product's PRISCA: from the PD law, closed-loop gradient, automatic scales";
     s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
                     priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
@@ -777,6 +778,7 @@ std::vector<MethodSpec> makeCatalog() {
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);
     s.learnsOnline = true;
     s.ownFeatures = true;
+    s.usesFeatures = true;
     s.summary = "Algorithm 1 exactly as printed";
     s.parameters = {priscaHorizon(), priscaGamma(), priscaBeta(), matchingWindow()};
     all.push_back(s);
@@ -812,12 +814,14 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pgsd", "PGSD", &makePgsd);
     s.learnsOnline = true;
+    s.usesFeatures = true;
     s.summary = "policy search by the signed derivative";
     s.parameters = {pgsdHorizon(), pgsdStep(), pgsdThetaBound()};
     all.push_back(s);
     s = entry("pegasus", "PEGASUS", &makePegasus);
     s.training = MethodSpec::Training::Pegasus;
     s.inTable1 = false;  // its offline search is the learning curves' subject
+    s.usesFeatures = true;
     s.summary = "offline policy search on fixed scenarios";
     s.parameters = {pegasusIterations(), pegasusScenarios(), pegasusStep()};
     all.push_back(s);

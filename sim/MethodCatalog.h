@@ -39,6 +39,7 @@ struct MethodSpec {
     bool inTable1 = true;         ///< has a row in Table I
     bool inCurves = true;         ///< can be drawn as a learning curve
     bool ownFeatures = false;     ///< theta over the profile's PRISCA features (priscaFeatures)
+    bool usesFeatures = false;    ///< a policy theta^T phi over features (the panel shows phi)
     bool limit = false;           ///< the ruler every accuracy figure is read against
     bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
     /// What the method is tuned by, in the order the Controller panel shows them; a parameter
