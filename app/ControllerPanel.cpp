@@ -19,6 +19,7 @@
 #include <QVBoxLayout>
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 
 namespace prisca::app {
@@ -273,21 +274,34 @@ void ControllerPanel::apply() {
         session_.setMethod(method);
         return;
     }
+    // Only the value the operator changed: the others keep what the session holds (a box
+    // rounds to its decimals, and writing it back would change a value nobody touched).
+    const QObject* source = sender();
     for (const Editor& editor : editors_) {
-        Eigen::VectorXd value(static_cast<Eigen::Index>(editor.fields.size()));
-        for (size_t l = 0; l < editor.fields.size(); ++l) {
-            QWidget* field = editor.fields[l];
-            if (auto* box = qobject_cast<QCheckBox*>(field)) {
-                value[l] = box->isChecked() ? 1.0 : 0.0;
-            } else if (auto* combo = qobject_cast<QComboBox*>(field)) {
-                value[l] = combo->currentIndex();
-            } else if (auto* spin = qobject_cast<QSpinBox*>(field)) {
-                value[l] = spin->value();
-            } else if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {
-                value[l] = real->value();
-            }
+        const auto at = std::find(editor.fields.begin(), editor.fields.end(), source);
+        if (at == editor.fields.end()) {
+            continue;
         }
-        editor.parameter->assign(p, value);  // the editors' ranges are the declaration's
+        Eigen::VectorXd value = editor.parameter->value(p);
+        const Eigen::Index l = at - editor.fields.begin();
+        if (l >= value.size()) {
+            continue;
+        }
+        if (auto* box = qobject_cast<QCheckBox*>(*at)) {
+            value[l] = box->isChecked() ? 1.0 : 0.0;
+        } else if (auto* combo = qobject_cast<QComboBox*>(*at)) {
+            value[l] = combo->currentIndex();
+        } else if (auto* spin = qobject_cast<QSpinBox*>(*at)) {
+            value[l] = spin->value();
+        } else if (auto* real = qobject_cast<QDoubleSpinBox*>(*at)) {
+            value[l] = real->value();
+        }
+        try {
+            editor.parameter->assign(p, value);
+        } catch (const std::invalid_argument& e) {
+            problem_->setText(QString::fromUtf8(e.what()));
+            return;  // nothing applied
+        }
     }
 
     // Feature scales and limits: every cell must be a finite number; limits within the plant's.
@@ -355,7 +369,7 @@ void ControllerPanel::retranslateUi() {
         field->setToolTip(tip);
     };
     label(method_, qobject_cast<QLabel*>(form_->labelForField(method_)), tr("Method:"),
-          tr("PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, "
+          tr("PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, "
              "PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated "
              "plant itself (simulation only)."));
     for (const Editor& editor : editors_) {

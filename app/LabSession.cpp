@@ -66,28 +66,6 @@ bool readInteger(const QJsonObject& object, const QString& key, int low, int hig
     return true;
 }
 
-bool readVector(const QJsonObject& object, const QString& key, Eigen::Index size,
-                Eigen::VectorXd* value, QString* error) {
-    if (!object.contains(key)) {
-        return true;
-    }
-    const QJsonArray a = object.value(key).toArray();
-    if (!object.value(key).isArray() || a.size() != size) {
-        *error = LabSession::tr("'%1' must be a list of %2 numbers").arg(key).arg(size);
-        return false;
-    }
-    Eigen::VectorXd v(size);
-    for (int i = 0; i < a.size(); ++i) {
-        if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()) || a[i].toDouble() < 0.0) {
-            *error = LabSession::tr("'%1' entry %2 must be a number >= 0").arg(key).arg(i + 1);
-            return false;
-        }
-        v[i] = a[i].toDouble();
-    }
-    *value = v;
-    return true;
-}
-
 QJsonArray scalesToJson(const core::FeatureMap& features) {
     QJsonArray channels;
     for (const auto& channel : features.terms()) {
@@ -343,73 +321,95 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     const QJsonObject prisca = earlier ? QJsonObject() : root.value("prisca").toObject();
     const QJsonObject pd = earlier ? QJsonObject() : root.value("pd").toObject();
     const QJsonObject ilc = earlier ? QJsonObject() : root.value("ilc").toObject();
-    core::PriscaParameters& p = profile.prisca;
     const bool ok =
         readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
-        readInteger(fit, "responseSteps", 1, 1000, &fitOptions.responseSteps, &what) &&
-        readInteger(root, "matchingWindow", 0, 1000000, &profile.matchingWindow, &what) &&
-        readInteger(prisca, "horizon", 1, 1000, &p.horizon, &what) &&
-        readNumber(prisca, "gamma", 0.0, 1.0, &p.gamma, &what) &&
-        readNumber(prisca, "beta", 1e-9, 1e12, &p.stepSize.beta, &what) &&
-        readNumber(prisca, "stepScale", 0.0, 1e12, &p.stepSize.scale, &what) &&
-        readNumber(prisca, "thetaBound", 0.0, 1e12, &p.thetaBound, &what) &&
-        readInteger(pgsd, "horizon", 1, 1000, &profile.pgsd.horizon, &what) &&
-        readNumber(pgsd, "stepSize", 0.0, 1e12, &profile.pgsd.stepSize, &what) &&
-        readNumber(pgsd, "thetaBound", 0.0, 1e12, &profile.pgsd.thetaBound, &what) &&
-        readVector(pd, "kp", profile.pd.kp.size(), &profile.pd.kp, &what) &&
-        readVector(pd, "kd", profile.pd.kd.size(), &profile.pd.kd, &what) &&
-        readInteger(pd, "horizon", 1, 1000, &profile.pdHorizon, &what) &&
-        readNumber(ilc, "learningScale", 0.0, 1e6, &profile.ilcLearningScale, &what) &&
-        readInteger(ilc, "lead", 0, 1000, &profile.ilcLead, &what) &&
-        readNumber(ilc, "cutoff", 0.0, 1e3, &profile.ilcCutoff, &what) &&
-        readNumber(ilc, "feedbackScale", 0.0, 1e6, &profile.ilcFeedbackScale, &what);
+        readInteger(fit, "responseSteps", 1, 1000, &fitOptions.responseSteps, &what);
     if (!ok) {
         return fail(what);
     }
-    // PRISCA's form: where it starts, its gradient and the effort it is charged.
-    if (prisca.contains("fromPd")) {
-        if (!prisca.value("fromPd").isBool()) {
-            return fail(tr("'fromPd' must be true or false"));
+    // Every method parameter goes through its declaration, whichever version wrote it, so a
+    // session holds only values today's checks accept.
+    const auto apply = [&](const QString& name, const QString& value, const QString& key) {
+        try {
+            sim::MethodCatalog::setParameter(profile, name + QLatin1Char('=') + value);
+        } catch (const std::invalid_argument& e) {
+            what = tr("'%1': %2").arg(key, QString::fromUtf8(e.what()));
+            return false;
         }
-        profile.priscaFromPd = prisca.value("fromPd").toBool();
-    }
-    if (prisca.contains("automatic")) {
-        if (!prisca.value("automatic").isBool()) {
-            return fail(tr("'automatic' must be true or false"));
+        return true;
+    };
+    // Versions 1 and 2 kept them in per-method objects, under names of their own.
+    struct Legacy {
+        const QJsonObject& object;
+        const char* objectName;
+        const char* key;
+        const char* parameter;
+    };
+    const QJsonObject rootParameters{{"matchingWindow", root.value("matchingWindow")}};
+    const Legacy legacy[] = {
+        {rootParameters, "", "matchingWindow", "matching.window"},
+        {prisca, "prisca", "horizon", "prisca.H"},
+        {prisca, "prisca", "gamma", "prisca.gamma"},
+        {prisca, "prisca", "beta", "prisca.beta"},
+        {prisca, "prisca", "stepScale", "prisca.alpha0"},
+        {prisca, "prisca", "thetaBound", "prisca.theta-bound"},
+        {prisca, "prisca", "fromPd", "prisca.from-pd"},
+        {prisca, "prisca", "automatic", "prisca.automatic"},
+        {prisca, "prisca", "gradient", "prisca.gradient"},
+        {prisca, "prisca", "effortWeight", "prisca.effort"},
+        {prisca, "prisca", "useBaseline", "prisca.baseline"},
+        {prisca, "prisca", "useInverseDepreciation", "prisca.depreciation"},
+        {pgsd, "pgsd", "horizon", "pgsd.H"},
+        {pgsd, "pgsd", "stepSize", "pgsd.alpha"},
+        {pgsd, "pgsd", "thetaBound", "pgsd.theta-bound"},
+        {pd, "pd", "kp", "pd.kp"},
+        {pd, "pd", "kd", "pd.kd"},
+        {pd, "pd", "horizon", "pd.H"},
+        {ilc, "ilc", "learningScale", "ilc.learning"},
+        {ilc, "ilc", "lead", "ilc.lead"},
+        {ilc, "ilc", "cutoff", "ilc.cutoff"},
+        {ilc, "ilc", "feedbackScale", "ilc.feedback"},
+    };
+    for (const Legacy& entry : legacy) {
+        const QJsonValue value = entry.object.value(QLatin1String(entry.key));
+        if (value.isUndefined() || value.isNull()) {
+            continue;
         }
-        profile.priscaAutomatic = prisca.value("automatic").toBool();
-    }
-    if (prisca.contains("gradient")) {
-        const QString gradient = prisca.value("gradient").toString();
-        if (gradient == QLatin1String("closed-loop")) {
-            p.gradient = core::PriscaParameters::Gradient::ClosedLoop;
-        } else if (gradient == QLatin1String("one-step")) {
-            p.gradient = core::PriscaParameters::Gradient::OneStep;
-        } else {
-            return fail(tr("'gradient' must be \"one-step\" or \"closed-loop\""));
+        QString text;
+        if (value.isBool()) {
+            text = value.toBool() ? QStringLiteral("on") : QStringLiteral("off");
+        } else if (value.isDouble()) {
+            text = QString::number(value.toDouble(), 'g', 17);
+        } else if (value.isString()) {
+            text = value.toString();
+        } else if (value.isArray()) {
+            QStringList numbers;
+            for (const QJsonValue& v : value.toArray()) {
+                numbers << (v.isDouble() ? QString::number(v.toDouble(), 'g', 17) : QString());
+            }
+            text = numbers.join(QLatin1Char(','));
+        }
+        const QString key = *entry.objectName
+                                ? QStringLiteral("%1.%2").arg(QLatin1String(entry.objectName),
+                                                              QLatin1String(entry.key))
+                                : QString::fromLatin1(entry.key);
+        if (!apply(QString::fromLatin1(entry.parameter), text, key)) {
+            return fail(what);
         }
     }
-    double effort = p.effortWeights.size() ? p.effortWeights.maxCoeff() : 0.0;
-    if (!readNumber(prisca, "effortWeight", 0.0, 1e6, &effort, &what)) {
-        return fail(what);
+    // Version 3 on: every declared parameter by name, as --param spells it.
+    const QJsonValue parametersValue = root.value("parameters");
+    if (!parametersValue.isUndefined() && !parametersValue.isObject()) {
+        return fail(tr("'parameters' must be an object of \"name\": \"value\""));
     }
-    if (effort > 0.0) {
-        p.effortWeights = Eigen::VectorXd::Constant(profile.info.actionDimension(), effort);
-    } else {
-        p.effortWeights.resize(0);
-    }
-    // Version 3 on: every declared parameter by name, checked as --param checks it.
-    const QJsonObject parameters = root.value("parameters").toObject();
+    const QJsonObject parameters = parametersValue.toObject();
     for (auto it = parameters.begin(); it != parameters.end(); ++it) {
         if (!it.value().isString()) {
             return fail(tr("'parameters.%1' must be a string such as \"10\" or \"1,1.2\"")
                             .arg(it.key()));
         }
-        try {
-            sim::MethodCatalog::setParameter(profile, it.key() + QLatin1Char('=') +
-                                                          it.value().toString());
-        } catch (const std::invalid_argument& e) {
-            return fail(tr("'parameters': %1").arg(QString::fromUtf8(e.what())));
+        if (!apply(it.key(), it.value().toString(), QStringLiteral("parameters"))) {
+            return fail(what);
         }
     }
     if (!readScales(root, "featureScales", &profile.features, &what)) {
@@ -455,12 +455,6 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
                             : core::ActionMappingFitOptions::Target::RateChange;
     fitOptions.nonNegative = fit.value("nonNegative").toBool(true);
     fitOptions.robust = fit.value("robust").toBool(true);
-    if (prisca.contains("useBaseline")) {  // version 2
-        p.useBaseline = prisca.value("useBaseline").toBool(true);
-    }
-    if (prisca.contains("useInverseDepreciation")) {
-        p.useInverseDepreciation = prisca.value("useInverseDepreciation").toBool(true);
-    }
 
     // The demonstration: the file the session names, else the plant's scripted one.
     std::shared_ptr<const core::Demonstration> demonstration;

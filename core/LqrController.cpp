@@ -34,19 +34,24 @@ LqrController::LqrController(TrackingProblem problem, LqrParameters parameters)
                 .toStdString());
     }
     if ((p.effort.array() <= 0.0).any() || !p.effort.allFinite() ||
-        !(p.terminalWeight >= 0.0)) {
-        throw std::invalid_argument("LQR: effort weights must be > 0, the terminal weight >= 0");
+        !(p.terminalWeight > 0.0) || p.holdSteps < 0) {
+        throw std::invalid_argument(
+            "LQR: effort weights and the terminal weight must be > 0, the hold steps >= 0");
     }
     const double dt = demo.dt;
-    const Eigen::MatrixXd ad = Eigen::MatrixXd::Identity(n, n) + dt * p.a;
     const Eigen::MatrixXd bd = dt * p.b.transpose();  // n x m
     const Eigen::MatrixXd q = problem_.costWeights.asDiagonal();
     const Eigen::MatrixXd r = p.effort.asDiagonal();
-    // Backwards from the end: P_T = terminal Q; K_k from P_{k+1}; P_k = Q + Ad^T P (Ad - Bd K).
+    // Backwards from the end: P_N = terminal Q; K_k from P_{k+1}; P_k = Q + Ad^T P (Ad - Bd K).
     const int T = demo.length();
-    gains_.assign(static_cast<size_t>(T), Eigen::MatrixXd::Zero(m, n));
+    const int N = T + p.holdSteps;
+    gains_.assign(static_cast<size_t>(N), Eigen::MatrixXd::Zero(m, n));
     Eigen::MatrixXd cost = p.terminalWeight * q;
-    for (int k = T - 1; k >= 0; --k) {
+    Eigen::MatrixXd kinematics(n, n);
+    for (int k = N - 1; k >= 0; --k) {
+        const int j = std::min(k, T - 1);  // held at the last sample past the end
+        problem_.deviation.kinematics(demo.states.row(j).transpose(), kinematics);
+        const Eigen::MatrixXd ad = Eigen::MatrixXd::Identity(n, n) + dt * (p.a + kinematics);
         const Eigen::MatrixXd s = r + bd.transpose() * cost * bd;
         Eigen::MatrixXd gain = s.ldlt().solve(bd.transpose() * cost * ad);
         const Eigen::MatrixXd closed = ad - bd * gain;
@@ -88,7 +93,7 @@ const ControlStep& LqrController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     record_.step = step_;
     record_.referenceIndex = j;
     record_.referenceAction = demo.actions.row(now).transpose();
-    record_.action.noalias() = record_.referenceAction - gain(now) * record_.deviation;
+    record_.action.noalias() = record_.referenceAction - gain(step_) * record_.deviation;
     problem_.limits.saturate(record_.action);
     record_.cost = problem_.cost(record_.deviation);
     ++step_;

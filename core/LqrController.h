@@ -18,19 +18,24 @@ struct LqrParameters {
     /// Q = diag(the problem's cost weights): the state cost per step (the same W as every
     /// method's C = e^T W e). R = diag(effort) per control [1 / action unit^2]: > 0.
     Eigen::VectorXd effort;
-    /// The deviation at the demonstration's end costs terminalWeight x Q (a parking manoeuvre
-    /// is judged where it ends), >= 0.
+    /// The deviation at the trial's end costs terminalWeight x Q (a parking manoeuvre is judged
+    /// where it ends), > 0.
     double terminalWeight = 10.0;
+    /// Control steps the trial goes on past the demonstration's end (its settle time), the
+    /// reference held at the last sample: the recursion plans over them too, so the loop keeps
+    /// its feedback while the vehicle comes to rest. >= 0.
+    int holdSteps = 0;
 };
 
 /// A finite-horizon, time-varying LQR around the demonstration: the control engineer's first
-/// model-based try. On the model fitted from the demonstration, the Riccati recursion is run
-/// backwards once over the demonstration's length (from P_T = terminalWeight Q), giving one gain
-/// per step:
-///     K_k = (R + Bd^T P_{k+1} Bd)^-1 Bd^T P_{k+1} Ad,   Ad = I + dt A,  Bd = dt B^T,
-///     u_k = u*_k - K_k e_k          (time-driven reference, saturated),
-/// and past the demonstration's end the last gain holds the end. Learns nothing: a warm start is
-/// a cold one. Single-threaded; clone() for parallel trials.
+/// model-based try. On the model fitted from the demonstration plus the error's own kinematics
+/// at each reference sample (DeviationModel::kinematics, as PRISCA's closed-loop gradient has
+/// it), the Riccati recursion is run backwards once over the trial (the demonstration and
+/// holdSteps more at its last sample, from P_N = terminalWeight Q), giving one gain per step:
+///     K_k = (R + Bd^T P_{k+1} Bd)^-1 Bd^T P_{k+1} Ad_k,
+///     Ad_k = I + dt (A + kinematics(s*_k)),  Bd = dt B^T,
+///     u_k = u*_k - K_k e_k          (time-driven reference, saturated).
+/// Learns nothing: a warm start is a cold one. Single-threaded; clone() for parallel trials.
 class LqrController : public Controller {
   public:
     /// Throws std::invalid_argument for shapes that do not match the problem, a non-positive
@@ -43,7 +48,7 @@ class LqrController : public Controller {
     std::unique_ptr<Controller> clone() const override;
     void setLatencyCompensation(int steps) override;
 
-    /// K_k (m x n) of step k (the last one past the demonstration's end).
+    /// K_k (m x n) of step k (the last one past the trial's planned end).
     const Eigen::MatrixXd& gain(int k) const;
     int gainCount() const { return static_cast<int>(gains_.size()); }
 

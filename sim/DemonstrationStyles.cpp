@@ -190,6 +190,16 @@ QStringList DemonstrationStyles::names(const QString& plant) {
     return names;
 }
 
+QString DemonstrationStyles::unknownStyleIn(const QString& plant, const QStringList& styles) {
+    for (const QString& style : styles) {
+        if (!contains(plant, style)) {
+            return QStringLiteral("unknown %1 style '%2' (one of: %3)")
+                .arg(plant, style, names(plant).join(QLatin1Char(' ')));
+        }
+    }
+    return {};
+}
+
 QString DemonstrationStyles::classic(const QString& plant) {
     const QStringList all = names(plant);
     return all.isEmpty() ? QString() : all.front();

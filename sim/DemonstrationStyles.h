@@ -44,6 +44,9 @@ class DemonstrationStyles {
     }
     /// The first, classic style of a plant.
     static QString classic(const QString& plant);
+    /// Empty when every style is one of the plant's; else "unknown <plant> style 'x' (one of:
+    /// ...)" for the first that is not.
+    static QString unknownStyleIn(const QString& plant, const QStringList& styles);
     /// Records the demonstration of this style with this seed's hand variation. Throws
     /// std::invalid_argument naming the known styles for an unknown plant or style.
     static core::Demonstration record(const QString& plant, const QString& style,

@@ -30,7 +30,7 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
     if (auto* aware = dynamic_cast<PlantAware*>(&controller_)) {
         aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
     }
-    // The sensor's latency is known to the loop (on the rig: the frames' timestamps).
+    // The sensor's latency is known to the loop; the rig sets the same from its RunSetup.
     controller_.setLatencyCompensation(settings_.compensatedLatencySteps());
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);

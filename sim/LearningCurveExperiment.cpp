@@ -177,13 +177,9 @@ LearningCurveProtocolResult runLearningCurveProtocol(
     const LearningCurveProtocolSettings& settings, const MethodTuning& profile,
     const std::function<void(int, int, const QString&, std::uint64_t)>& cellStarted) {
     const QString& plant = profile.info.name;
-    for (const QString& style : settings.styles) {
-        if (!DemonstrationStyles::contains(plant, style)) {
-            throw std::invalid_argument(QStringLiteral("unknown %1 style '%2' (one of: %3)")
-                                            .arg(plant, style,
-                                                 DemonstrationStyles::names(plant).join(' '))
-                                            .toStdString());
-        }
+    if (const QString unknown = DemonstrationStyles::unknownStyleIn(plant, settings.styles);
+        !unknown.isEmpty()) {
+        throw std::invalid_argument(unknown.toStdString());
     }
     if (settings.styles.isEmpty() || settings.seedSets.empty()) {
         throw std::invalid_argument("the curves need at least one style and one seed set");

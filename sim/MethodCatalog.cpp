@@ -208,7 +208,7 @@ MethodParameter onOff(const char* name, const char* label, const char* help) {
 const MethodParameter& priscaHorizon() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
-            "prisca.H", QT_TRANSLATE_NOOP("MethodParameter", "Horizon H"), "steps", 1, 200,
+            "prisca.H", QT_TRANSLATE_NOOP("MethodParameter", "Horizon H"), "steps", 1, 1000,
             QT_TRANSLATE_NOOP("MethodParameter", "Smoothing horizon H of the nested expectation "
                                                  "over the last H steps (eq. 9, 13)."));
         p.get = [](const MethodTuning& f) { return one(f.prisca.horizon); };
@@ -438,7 +438,7 @@ const MethodParameter& matchingWindow() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
             "matching.window", QT_TRANSLATE_NOOP("MethodParameter", "Matching window"), "samples",
-            0, 100000,
+            0, 1000000,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "How far ahead the least-state-deviation reference may search "
                               "(eq. 12); 0 searches the whole demonstration."));
@@ -675,18 +675,20 @@ struct LqrDefaults {
     bool drift;
 };
 constexpr LqrDefaults kLqrDefaults[] = {
-    {"slidecar", 0.3, 0.5, 100.0, false},
+    {"slidecar", 30.0, 100.0, 100.0, false},
     {"acrobot", 1e-6, 1e-6, 100.0, true},
-    {"aircraft", 1e-5, 1e-5, 1.0, true},
+    {"aircraft", 3.0, 3.0, 100.0, false},
     {"diffdrive", 1e-3, 1e-3, 100.0, false},
 };
-const LqrDefaults& lqrDefaults(const MethodTuning& f) {
+// Null for a plant with no entry: its parameters then have no value, which the catalog's tests
+// catch for every catalog plant.
+const LqrDefaults* lqrDefaults(const MethodTuning& f) {
     for (const LqrDefaults& d : kLqrDefaults) {
         if (f.info.name == QLatin1String(d.plant)) {
-            return d;
+            return &d;
         }
     }
-    return kLqrDefaults[0];  // a plant outside the catalog starts from the slide-car's
+    return nullptr;
 }
 
 const MethodParameter& lqrEffort() {
@@ -699,9 +701,12 @@ const MethodParameter& lqrEffort() {
                               "larger is gentler."));
         p.perChannel = true;
         p.defaultFor = [](const MethodTuning& f) -> Eigen::VectorXd {
-            const LqrDefaults& d = lqrDefaults(f);
-            Eigen::VectorXd r = Eigen::VectorXd::Constant(f.info.actionDimension(), d.otherEffort);
-            r[0] = d.throttleEffort;
+            const LqrDefaults* d = lqrDefaults(f);
+            if (!d) {
+                return Eigen::VectorXd();
+            }
+            Eigen::VectorXd r = Eigen::VectorXd::Constant(f.info.actionDimension(), d->otherEffort);
+            r[0] = d->throttleEffort;
             return r;
         };
         return p;
@@ -712,12 +717,15 @@ const MethodParameter& lqrEffort() {
 const MethodParameter& lqrTerminal() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
-            "lqr.terminal", QT_TRANSLATE_NOOP("MethodParameter", "LQR terminal weight"), "", 0,
+            "lqr.terminal", QT_TRANSLATE_NOOP("MethodParameter", "LQR terminal weight"), "", 0.01,
             1e6, 2,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "The deviation at the demonstration's end costs this many times a "
                               "step's (where a parking manoeuvre is judged)."));
-        p.defaultFor = [](const MethodTuning& f) { return one(lqrDefaults(f).terminal); };
+        p.defaultFor = [](const MethodTuning& f) {
+            const LqrDefaults* d = lqrDefaults(f);
+            return d ? one(d->terminal) : Eigen::VectorXd();
+        };
         return p;
     }();
     return p;
@@ -730,7 +738,10 @@ const MethodParameter& lqrDrift() {
             QT_TRANSLATE_NOOP("MethodParameter",
                               "Fit eq. 5 in full (the state's own drift A with B); off: B alone, "
                               "each state driven only by the controls."));
-        p.defaultFor = [](const MethodTuning& f) { return one(lqrDefaults(f).drift ? 1 : 0); };
+        p.defaultFor = [](const MethodTuning& f) {
+            const LqrDefaults* d = lqrDefaults(f);
+            return d ? one(d->drift ? 1 : 0) : Eigen::VectorXd();
+        };
         return p;
     }();
     return p;
@@ -740,15 +751,24 @@ Made makeLqr(const MethodSpec&, const MethodInput& in) {
     const MethodTuning& profile = in.profile;
     // eq. 5 (A with B, or B alone) fitted on the demonstration: the model a control engineer
     // would identify from the one recording there is.
-    core::ActionMappingFitOptions options;
-    options.drift = profile.parameter(QStringLiteral("lqr.drift"))[0] != 0.0;
-    const core::ActionMappingFit fit = core::fitActionMapping(
-        *in.demonstration, profile.mapping, profile.info.deviationModel(), options);
+    const core::Demonstration& demonstration = *in.demonstration;
+    const int n = demonstration.stateDimension();
     core::LqrParameters parameters;
-    parameters.a = fit.a;
-    parameters.b = fit.b;
+    if (profile.parameter(QStringLiteral("lqr.drift"))[0] != 0.0) {
+        core::ActionMappingFitOptions options;
+        options.drift = true;
+        const core::ActionMappingFit fit = core::fitActionMapping(
+            demonstration, profile.mapping, profile.info.deviationModel(), options);
+        parameters.a = fit.a;
+        parameters.b = fit.b;
+    } else {
+        parameters.a = Eigen::MatrixXd::Zero(n, n);
+        parameters.b = in.fittedB;  // the task's own fit, as the Mapping panel shows it
+    }
     parameters.effort = profile.parameter(QStringLiteral("lqr.effort"));
     parameters.terminalWeight = profile.parameter(QStringLiteral("lqr.terminal"))[0];
+    // The trial goes on for the settle time past the demonstration: plan over it too.
+    parameters.holdSteps = static_cast<int>(std::lround(profile.settleTime / demonstration.dt));
     return std::make_unique<core::LqrController>(
         profile.trackingProblem(in.demonstration, Mode::TimeDriven), parameters);
 }
@@ -805,7 +825,7 @@ std::vector<MethodSpec> makeCatalog() {
     s.parameters = {pdKp(), pdKd(), pdHorizon(), matchingWindow()};
     all.push_back(s);
     s = entry("lqr", "LQR", &makeLqr);
-    s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5 with drift)";
+    s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5)";
     s.parameters = {lqrEffort(), lqrTerminal(), lqrDrift()};
     all.push_back(s);
     s = entry("playback", "ACTION PLAYBACK", &makePlayback);

@@ -42,7 +42,7 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     p.mapping = signs("1,0,0,1,0,0;0,1,1,0,0,1");
     // Features and every method's settings below come from tools/tune_table1: a random search of
     // equal budget (400 settings each for PRISCA, PD+H+LSD, PGSD and ILC) scored on six tuning
-    // styles x tuning seed sets 100 and 101, never on the evaluation sets; see README "Results".
+    // styles x tuning seed sets 100 and 101, never on the evaluation sets; see docs/results.md.
     p.features = core::FeatureMap({
         {{Source::Deviation, 0, 2.0}, {Source::Deviation, 3, 1.0}, {Source::Constant, 0, 0.0}},
         {{Source::Deviation, 1, 2.0}, {Source::Deviation, 2, 1.0}, {Source::Constant, 0, 0.1}},
@@ -160,7 +160,7 @@ MethodTuning acrobotTuning(const PlantInfo& info) {
 }
 
 // Planar aircraft: rudder left turns left; throttle speeds up (paper V.B, Fig. 4, 5).
-// The tuned values come from `tune_aircraft prisca|pgsd|pd 600` (README "Results", Fig. 4):
+// The tuned values come from `tune_aircraft prisca|pgsd|pd 600` (docs/results.md, Fig. 4):
 // equal budgets of random settings scored on tuning seed sets 100 and 101.
 MethodTuning aircraftTuning(const PlantInfo& info) {
     MethodTuning p;

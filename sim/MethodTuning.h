@@ -64,7 +64,7 @@ struct MethodTuning {
     std::optional<core::FeatureMap> priscaFeatures;
     Eigen::VectorXd priscaCostWeights;
     /// PRISCA's model B (m x n): the fit B_v (.) B~, or the signs B~ alone where the fit is not
-    /// to be trusted (a demonstration flown in closed loop confounds eq. 8; see README).
+    /// to be trusted (a demonstration flown in closed loop confounds eq. 8; see docs/decisions.md).
     /// FittedWithDrift fits eq. 5 in full on the demonstration (A with B, so the closed-loop
     /// gradient propagates through the state's own drift too).
     enum class PriscaModel { Fitted, Signs, FittedWithDrift };

@@ -18,13 +18,9 @@ std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count) {
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                                        const MethodTuning& profile) {
     const QString& plant = profile.info.name;
-    for (const QString& style : settings.styles) {
-        if (!DemonstrationStyles::contains(plant, style)) {
-            throw std::invalid_argument(QStringLiteral("unknown %1 style '%2' (one of: %3)")
-                                            .arg(plant, style,
-                                                 DemonstrationStyles::names(plant).join(' '))
-                                            .toStdString());
-        }
+    if (const QString unknown = DemonstrationStyles::unknownStyleIn(plant, settings.styles);
+        !unknown.isEmpty()) {
+        throw std::invalid_argument(unknown.toStdString());
     }
     if (settings.styles.isEmpty() || settings.seedSets.empty()) {
         throw std::invalid_argument("the protocol needs at least one style and one seed set");

@@ -1,6 +1,6 @@
 // ablation_table: PRISCA's changes one at a time against the product default, the paper's
 // form, the best baseline and the oracle, on every slide-car demonstration style x the given
-// seed sets (Table I's protocol: 16 training trials, then the evaluation trials). For README's
+// seed sets (Table I's protocol: 16 training trials, then the evaluation trials). For docs/results.md's
 // ablation table; run it on seed sets that no decision was made on.
 //
 //     ablation_table [--seed S] [--sets N] [--trials T] [--oracle]

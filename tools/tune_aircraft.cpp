@@ -1,5 +1,5 @@
 // tune_aircraft: the equal-budget random search behind the aircraft profile's tuned values
-// (README "Results", Fig. 4). Each method gets the same number of settings, scored on tuning
+// (docs/results.md, Fig. 4). Each method gets the same number of settings, scored on tuning
 // seeds the evaluation never uses (seed sets 100 and 101): 4 runs of 5 trials in a row (learners
 // keep learning across the trials, warm start), score = mean time-aligned tracking RMS [m] of
 // trials 2-5 (the paper's Fig. 4 shows PRISCA after its online learning has started). The five

@@ -1,5 +1,5 @@
 // tune_table1: the equal-budget random search behind the slide-car profile's tuned values
-// (README "Results"). Each method gets the same number of settings, drawn at random and scored on
+// (docs/results.md). Each method gets the same number of settings, drawn at random and scored on
 // the TUNING cells only: six of the ten demonstration styles (the other four are never tuned on)
 // x tuning seed sets 100 and 101 (each the demonstration's hand and the trials' perturbations),
 // 10 evaluation trials per cell after the usual training trials. Score per cell: position MAE +

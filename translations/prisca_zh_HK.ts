@@ -311,32 +311,32 @@
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="695"/>
+        <location filename="../sim/MethodCatalog.cpp" line="697"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="697"/>
+        <location filename="../sim/MethodCatalog.cpp" line="699"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="715"/>
+        <location filename="../sim/MethodCatalog.cpp" line="720"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="717"/>
+        <location filename="../sim/MethodCatalog.cpp" line="722"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="729"/>
+        <location filename="../sim/MethodCatalog.cpp" line="737"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="730"/>
+        <location filename="../sim/MethodCatalog.cpp" line="738"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
@@ -456,74 +456,74 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="206"/>
+        <location filename="../app/ControllerPanel.cpp" line="214"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="207"/>
+        <location filename="../app/ControllerPanel.cpp" line="215"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="208"/>
+        <location filename="../app/ControllerPanel.cpp" line="216"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="210"/>
+        <location filename="../app/ControllerPanel.cpp" line="218"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="221"/>
+        <location filename="../app/ControllerPanel.cpp" line="229"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="221"/>
+        <location filename="../app/ControllerPanel.cpp" line="229"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="227"/>
+        <location filename="../app/ControllerPanel.cpp" line="235"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="293"/>
+        <location filename="../app/ControllerPanel.cpp" line="318"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="307"/>
+        <location filename="../app/ControllerPanel.cpp" line="332"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="346"/>
+        <location filename="../app/ControllerPanel.cpp" line="371"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="367"/>
+        <location filename="../app/ControllerPanel.cpp" line="395"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="368"/>
+        <location filename="../app/ControllerPanel.cpp" line="396"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="369"/>
+        <location filename="../app/ControllerPanel.cpp" line="397"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="347"/>
-        <source>PRISCA, or a comparison method of Table I (PD family, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
-        <translation>PRISCA，或表 I 的比較方法（PD 系列、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
+        <location filename="../app/ControllerPanel.cpp" line="372"/>
+        <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
+        <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
 </context>
 <context>
@@ -726,114 +726,94 @@
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="76"/>
-        <source>&apos;%1&apos; must be a list of %2 numbers</source>
-        <translation>「%1」必須是含 %2 個數字的列表</translation>
-    </message>
-    <message>
-        <location filename="../app/LabSession.cpp" line="82"/>
-        <source>&apos;%1&apos; entry %2 must be a number &gt;= 0</source>
-        <translation>「%1」第 %2 項必須是 &gt;= 0 的數字</translation>
-    </message>
-    <message>
-        <location filename="../app/LabSession.cpp" line="112"/>
+        <location filename="../app/LabSession.cpp" line="90"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="118"/>
+        <location filename="../app/LabSession.cpp" line="96"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="126"/>
+        <location filename="../app/LabSession.cpp" line="104"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="164"/>
+        <location filename="../app/LabSession.cpp" line="142"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="171"/>
+        <location filename="../app/LabSession.cpp" line="149"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="182"/>
+        <location filename="../app/LabSession.cpp" line="160"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="194"/>
+        <location filename="../app/LabSession.cpp" line="172"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="295"/>
+        <location filename="../app/LabSession.cpp" line="273"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="301"/>
+        <location filename="../app/LabSession.cpp" line="279"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="307"/>
+        <location filename="../app/LabSession.cpp" line="285"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="310"/>
+        <location filename="../app/LabSession.cpp" line="288"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="315"/>
+        <location filename="../app/LabSession.cpp" line="293"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="322"/>
+        <location filename="../app/LabSession.cpp" line="300"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="326"/>
+        <location filename="../app/LabSession.cpp" line="304"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="335"/>
+        <location filename="../app/LabSession.cpp" line="313"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="372"/>
-        <source>&apos;fromPd&apos; must be true or false</source>
-        <translation>「fromPd」必須為 true 或 false</translation>
+        <location filename="../app/LabSession.cpp" line="336"/>
+        <source>&apos;%1&apos;: %2</source>
+        <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="378"/>
-        <source>&apos;automatic&apos; must be true or false</source>
-        <translation>「automatic」必須為 true 或 false</translation>
+        <location filename="../app/LabSession.cpp" line="403"/>
+        <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
+        <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="389"/>
-        <source>&apos;gradient&apos; must be &quot;one-step&quot; or &quot;closed-loop&quot;</source>
-        <translation>「gradient」必須為「one-step」或「closed-loop」</translation>
-    </message>
-    <message>
-        <location filename="../app/LabSession.cpp" line="405"/>
+        <location filename="../app/LabSession.cpp" line="408"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
-    </message>
-    <message>
-        <location filename="../app/LabSession.cpp" line="412"/>
-        <source>&apos;parameters&apos;: %1</source>
-        <translation>「parameters」：%1</translation>
     </message>
     <message>
         <location filename="../app/LabSession.cpp" line="430"/>
@@ -846,27 +826,27 @@
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="474"/>
+        <location filename="../app/LabSession.cpp" line="468"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="478"/>
+        <location filename="../app/LabSession.cpp" line="472"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="485"/>
+        <location filename="../app/LabSession.cpp" line="479"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="490"/>
+        <location filename="../app/LabSession.cpp" line="484"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="510"/>
+        <location filename="../app/LabSession.cpp" line="504"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>

@@ -100,19 +100,7 @@ int curveCommand(const QStringList& arguments) {
                                             "take --demo or --demo-seed"));
         }
         plant = checkedPlant(line.value("plant"));
-        styles = line.value("styles") == QLatin1String("all")
-                     ? sim::DemonstrationStyles::names(plant)
-                     : line.value("styles").split(QLatin1Char(','), Qt::SkipEmptyParts);
-        if (styles.isEmpty()) {
-            throw UsageError(QStringLiteral("--styles: no style given"));
-        }
-        for (const QString& style : styles) {
-            if (!sim::DemonstrationStyles::contains(plant, style)) {
-                throw UsageError(
-                    QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
-                        .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
-            }
-        }
+        styles = stylesOption(line, plant);
         sim::LearningCurveProtocolSettings protocol;
         protocol.curves = settings;
         protocol.styles = styles;

@@ -69,20 +69,7 @@ int table1ProtocolCommand(const CommandLine& line) {
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));
     }
     sim::Table1ProtocolSettings settings;
-    const QString styles = line.value("styles");
-    settings.styles = styles == QLatin1String("all")
-                          ? sim::DemonstrationStyles::names(plant)
-                          : styles.split(QLatin1Char(','), Qt::SkipEmptyParts);
-    if (settings.styles.isEmpty()) {
-        throw UsageError(QStringLiteral("--styles: no style given"));
-    }
-    for (const QString& style : settings.styles) {
-        if (!sim::DemonstrationStyles::contains(plant, style)) {
-            throw UsageError(
-                QStringLiteral("--styles: unknown %1 style '%2' (one of: %3)")
-                    .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
-        }
-    }
+    settings.styles = stylesOption(line, plant);
     settings.table.methods = checkedMethods(line, settings.table.methods);
     const int seedSets = static_cast<int>(line.integer("seed-sets", 1, 10000));
     const auto first = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
@@ -148,7 +135,7 @@ int table1Command(const QStringList& arguments) {
                           "Training trials: PD (selected) selects its gains on them, the learners "
                           "(PRISCA, PGSD, ILC) learn on them before evaluation.");
     line.addValue("methods",
-                  "Comma-separated methods (default: the paper's rows, PGSD, ILC and the "
+                  "Comma-separated methods (default: the paper's rows, LQR, PGSD, ILC and the "
                   "oracle, the limit).",
                   "list");
     addMethodParameterOptions(line);

@@ -98,6 +98,21 @@ Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed
                            QStringLiteral("%1 %2 seed %3").arg(plant, style).arg(seed));
 }
 
+QStringList stylesOption(const CommandLine& line, const QString& plant) {
+    const QString value = line.value("styles");
+    const QStringList styles = value == QLatin1String("all")
+                                   ? sim::DemonstrationStyles::names(plant)
+                                   : value.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (styles.isEmpty()) {
+        throw UsageError(QStringLiteral("--styles: no style given"));
+    }
+    if (const QString unknown = sim::DemonstrationStyles::unknownStyleIn(plant, styles);
+        !unknown.isEmpty()) {
+        throw UsageError(QStringLiteral("--styles: %1").arg(unknown));
+    }
+    return styles;
+}
+
 void addMethodParameterOptions(CommandLine& line) {
     line.addValue("param",
                   "Set a method parameter, NAME=VALUE (repeatable; one value per control, "

@@ -43,6 +43,10 @@ Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
 /// file would be); UsageError for an unknown plant or style.
 Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
 
+/// The styles --styles names for the plant ('all', or a comma-separated list); UsageError for
+/// none or an unknown one.
+QStringList stylesOption(const CommandLine& line, const QString& plant);
+
 /// Adds --param NAME=VALUE (repeatable): a method parameter as the catalog declares it
 /// (sim::MethodCatalog::parameters()).
 void addMethodParameterOptions(CommandLine& line);

@@ -64,6 +64,15 @@ namespace prisca::test {
 
 using namespace prisca::app;
 
+/// Once per test executable: settings and files in the test's own places (named `name`), and the
+/// application kept alive when its windows close.
+inline void initGuiTestCase(const char* name) {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
+    QCoreApplication::setApplicationName(QString::fromLatin1(name));
+    QApplication::setQuitOnLastWindowClosed(false);
+}
+
 
 inline constexpr int kRunTimeoutMs = 60000;
 

@@ -8,12 +8,7 @@ using namespace prisca::test;
 class TestGuiExperiments : public QObject {
     Q_OBJECT
   private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_gui_experiments"));
-        QApplication::setQuitOnLastWindowClosed(false);
-    }
+    void initTestCase() { initGuiTestCase("test_gui_experiments"); }
     void init() { QSettings().clear(); }
 
     void experiments_table1InTheBackgroundThenExportedAndReadBack() {

@@ -8,12 +8,7 @@ using namespace prisca::test;
 class TestGuiRecord : public QObject {
     Q_OBJECT
   private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_gui_record"));
-        QApplication::setQuitOnLastWindowClosed(false);
-    }
+    void initTestCase() { initGuiTestCase("test_gui_record"); }
     void init() { QSettings().clear(); }
 
     void record_drivingWithTheKeyboardMakesTheDemonstration() {

@@ -8,12 +8,7 @@ using namespace prisca::test;
 class TestGuiRun : public QObject {
     Q_OBJECT
   private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_gui_run"));
-        QApplication::setQuitOnLastWindowClosed(false);
-    }
+    void initTestCase() { initGuiTestCase("test_gui_run"); }
     void init() { QSettings().clear(); }
 
     void decimation_keepsEverySpikeWithBoundedPoints() {

@@ -8,12 +8,7 @@ using namespace prisca::test;
 class TestGuiSession : public QObject {
     Q_OBJECT
   private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("PRISCA Lab Tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_gui_session"));
-        QApplication::setQuitOnLastWindowClosed(false);
-    }
+    void initTestCase() { initGuiTestCase("test_gui_session"); }
     void init() { QSettings().clear(); }
 
     void session_fullDiskRefusedAndThePreviousFileKept() {
@@ -64,7 +59,12 @@ class TestGuiSession : public QObject {
             QCOMPARE(w.window.session().method(), QStringLiteral("pgsd"));
             // The panel shows the method's own parameters, as its catalog entry declares them.
             QVERIFY(!w.find<QSpinBox>("prisca.H"));
+            // An edit changes that value alone: a value finer than its box shows is kept.
+            prisca::sim::MethodTuning fine = w.window.session().profile();
+            prisca::sim::MethodCatalog::setParameter(fine, "pgsd.alpha=0.1234567");
+            w.window.session().setProfile(fine);
             w.find<QSpinBox>("pgsd.H")->setValue(7);
+            QCOMPARE(w.window.session().profile().pgsd.stepSize, 0.1234567);
             QVERIFY(w.window.saveSession(path));
         }
         Window w;
@@ -358,7 +358,7 @@ class TestGuiSession : public QObject {
             "\"prisca\": {\"automatic\": \"yes\"} }");
         f3.close();
         text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
-        QVERIFY2(text.contains("'automatic'"), qPrintable(text));
+        QVERIFY2(text.contains("'prisca.automatic'") && text.contains("on | off"), qPrintable(text));
 
         const QString notJson = dir.filePath("not.json");
         QFile g(notJson);

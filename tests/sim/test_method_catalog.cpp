@@ -230,7 +230,7 @@ class TestMethodCatalog : public QObject {
             }
             return false;
         };
-        QVERIFY(refused("prisca.H=0", "prisca.H: 0 is outside 1 .. 200"));
+        QVERIFY(refused("prisca.H=0", "prisca.H: 0 is outside 1 .. 1000"));
         QVERIFY(refused("prisca.H=2.5", "outside"));
         QVERIFY(refused("prisca.gamma=nan", "outside 0 .. 1"));
         QVERIFY(refused("prisca.gradient=sideways", "one-step | closed-loop"));
