@@ -35,6 +35,9 @@ struct RigSession::Loop {
     bool running = false;
     double trialSeconds = 0.0;
     std::int64_t trialStartNs = -1;  ///< its first frame; -1 before it
+    /// When the trial was started: a frame taken before it (the virtual car not yet back at its
+    /// start, or a real car's stale pose still in the pipeline) does not drive the loop.
+    std::int64_t startedNs = 0;
     std::int64_t lastFrameNs = -1;
     long long frames = 0;
     long long framesWithPose = 0;
@@ -276,6 +279,7 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     const core::Demonstration& demo = *setup.task().demonstration;
     l.trialSeconds = demo.length() * demo.dt + setup.profile().settleTime;
     l.trialStartNs = -1;
+    l.startedNs = devices::steadyNowNs();  // after the virtual car's reset was asked for
     l.lastFrameNs = -1;
     l.frames = 0;
     l.framesWithPose = 0;
@@ -339,7 +343,7 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         Loop& l = *loop_;
-        if (l.running && l.loop) {
+        if (l.running && l.loop && frame.steadyNs >= l.startedNs) {
             // The closed loop: pose -> controller -> link, on this thread, no queue between.
             const devices::RigStep step = l.loop->onFrame(frame);
             pose = step.pose;
