@@ -76,7 +76,7 @@ class TestTransmitterLink : public QObject {
         QTimer feeder;
         connect(&feeder, &QTimer::timeout, this, [&] { link.setCommand(pulses(1700, 1300)); });
         feeder.start(10);
-        capture(pty, decoder, 300);  // settle
+        capture(pty, decoder, 1000);  // settle: the link at its steady rate before it is counted
         const Capture c = capture(pty, decoder, 1000);
         feeder.stop();
         // 50 Hz: 50 frames a second, give or take a few for a shared machine's scheduling.
