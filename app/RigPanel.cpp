@@ -288,7 +288,7 @@ bool RigPanel::runTrial() {
         missing =
             tr("The oracle plans on copies of a simulated plant; a real car has none. "
                "Run it in simulation, or choose another method.");
-    } else if (sim::trainsOffline(session_.method())) {
+    } else if (sim::MethodCatalog::get(session_.method()).trainsOffline()) {
         missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
                       .arg(session_.method());
     }

@@ -137,8 +137,4 @@ std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count) {
     return seeds;
 }
 
-bool trainsOffline(const QString& method) {
-    return MethodCatalog::get(method).trainsOffline();
-}
-
 }  // namespace prisca::sim

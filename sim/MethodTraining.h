@@ -46,7 +46,5 @@ PegasusTraining trainPegasus(const RunSetup& setup, int iterations,
 /// evaluation seeds (mixSeed(seed, i)).
 std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count);
 
-/// Whether `method` trains offline before it runs (PD (selected), PEGASUS).
-bool trainsOffline(const QString& method);
 
 }  // namespace prisca::sim

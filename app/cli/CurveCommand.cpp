@@ -56,10 +56,7 @@ int curveCommand(const QStringList& arguments) {
     line.addValue("methods", "Comma-separated methods.", "list", "prisca,pgsd,pegasus");
     line.addValue("runs", "Independent runs per method (and cell).", "N", "20");
     line.addValue("budget", "Simulated control steps each run may consume.", "steps", "64000");
-    line.addValue("seed", "Seed of the runs.", "N", "1");
-    line.addValue("jobs", "Worker threads.", "N", "2");
-    line.addValue("perturbation", "Plant perturbation level.", "level", "1");
-    line.addValue("sensor", "Sensor noise level.", "level", "1");
+    addRunSettingsOptions(line, QString());  // the curves train nothing before they start
     line.addValue("out", "CSV of the curves: method, steps, time, mean, lower, upper, runs.",
                   "file");
     line.addValue("plot", "Also draw the curves (Fig. 3b) to this .png or .svg file.", "file");
@@ -82,11 +79,8 @@ int curveCommand(const QStringList& arguments) {
     }
     settings.runs = static_cast<int>(line.integer("runs", 1, 100000));
     settings.budgetSteps = line.integer("budget", 1, 1LL << 40);
-    const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
-    settings.run.seed = seed;
-    settings.run.threads = static_cast<int>(line.integer("jobs", 1, 256));
-    settings.run.perturbation = line.number("perturbation", 0.0, 10.0);
-    settings.run.sensor = line.number("sensor", 0.0, 10.0);
+    readRunSettings(line, settings.run, false);
+    const std::uint64_t seed = settings.run.seed;
     installInterruptHandler();
     settings.cancelled = [] { return interrupted(); };
 

@@ -139,15 +139,20 @@ void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
                   QString::number(defaults.perturbation));
     line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level",
                   QString::number(defaults.sensor));
-    line.addValue("training-trials", trainingHelp, "N", QString::number(defaults.trainingTrials));
+    if (!trainingHelp.isEmpty()) {
+        line.addValue("training-trials", trainingHelp, "N",
+                      QString::number(defaults.trainingTrials));
+    }
     line.addValue("jobs", "Worker threads.", "N", QString::number(defaults.threads));
 }
 
-void readRunSettings(const CommandLine& line, sim::RunSettings& settings) {
+void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool training) {
     settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
-    settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
+    if (training) {
+        settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
+    }
     settings.threads = static_cast<int>(line.integer("jobs", 1, 256));
 }
 

@@ -55,9 +55,10 @@ void addMethodParameterOptions(CommandLine& line);
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
-/// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`), --jobs.
+/// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`; none for an
+/// empty one), --jobs.
 void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp);
-/// Reads them; UsageError naming an option out of its range.
-void readRunSettings(const CommandLine& line, sim::RunSettings& settings);
+/// Reads them (--training-trials only if `training`); UsageError naming an option out of range.
+void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool training = true);
 
 }  // namespace prisca::app::cli
