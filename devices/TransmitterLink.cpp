@@ -1,5 +1,6 @@
 #include "devices/TransmitterLink.h"
 
+#include "devices/ProcessFailsafe.h"
 #include "devices/ThreadHandOff.h"
 #include "devices/ThreadPriority.h"
 
@@ -74,6 +75,10 @@ void TransmitterLink::stop() {
     postTo(worker_, [w = worker_] { w->stop(); });
 }
 
+void TransmitterLink::stopAndWait() {
+    QMetaObject::invokeMethod(worker_, &TransmitterLinkWorker::stop, Qt::BlockingQueuedConnection);
+}
+
 void TransmitterLink::setCommand(const ChannelPulses& pulses) {
     worker_->setCommand(pulses);
     if (worker_->sendOnCommand.load()) {
@@ -114,7 +119,9 @@ long long TransmitterLink::framesSent() const {
 
 TransmitterLinkWorker::TransmitterLinkWorker(QObject* parent) : QObject(parent) {}
 
-TransmitterLinkWorker::~TransmitterLinkWorker() = default;
+TransmitterLinkWorker::~TransmitterLinkWorker() {
+    unregisterFailsafe();  // before the port (a child) closes its descriptor
+}
 
 void TransmitterLinkWorker::setCommand(const ChannelPulses& pulses) {
     std::lock_guard<std::mutex> lock(commandMutex_);
@@ -187,6 +194,9 @@ bool TransmitterLinkWorker::openPort() {
         qCInfo(lcLink) << "DTR/RTS not set on" << settings_.port << "(a pseudo-terminal?)";
     }
     port_->clearError();
+    // The last resort's copy: however the process ends, failsafe goes out on this port.
+    failsafeSlot_ = processfailsafe::registerPort(static_cast<int>(port_->handle()),
+                                                  encode(settings_.failsafe, true));
     status_.connected = true;
     status_.lastError.clear();
     qCInfo(lcLink) << "sending" << protocolName(settings_.protocol) << "on" << settings_.port;
@@ -196,6 +206,7 @@ bool TransmitterLinkWorker::openPort() {
 void TransmitterLinkWorker::closePort(const QString& error) {
     if (port_ && port_->isOpen()) {
         qCWarning(lcLink) << "lost" << settings_.port << ":" << error;
+        unregisterFailsafe();
         port_->close();
     }
     status_.connected = false;
@@ -213,13 +224,26 @@ void TransmitterLinkWorker::stop() {
         timer_->stop();
     }
     if (port_ && port_->isOpen()) {
-        // The last frame out is failsafe.
-        port_->write(encode(settings_.failsafe, true));
-        port_->waitForBytesWritten(50);
+        // The last frame out is failsafe, counted like any other once the device has taken it.
+        const QByteArray frame = encode(settings_.failsafe, true);
+        if (port_->write(frame) == frame.size()) {
+            port_->flush();
+            if (port_->bytesToWrite() == 0 || port_->waitForBytesWritten(50)) {
+                framesSent.fetch_add(1);
+                status_.framesSent = framesSent.load();
+                processfailsafe::noteFailsafeEnding();
+            }
+        }
+        unregisterFailsafe();
         port_->close();
     }
     status_.connected = false;
     emit statusChanged(status_);
+}
+
+void TransmitterLinkWorker::unregisterFailsafe() {
+    processfailsafe::unregisterPort(failsafeSlot_);
+    failsafeSlot_ = -1;
 }
 
 QByteArray TransmitterLinkWorker::encode(const ChannelPulses& pulses, bool failsafe) const {
@@ -264,7 +288,7 @@ void TransmitterLinkWorker::tick() {
             reason = FailsafeReason::Stale;
         }
     }
-    if (emergency.load()) {
+    if (emergency.load() || processfailsafe::ending()) {
         reason = FailsafeReason::EmergencyStop;
     } else if (fault.load()) {
         reason = FailsafeReason::ControllerFault;

@@ -67,7 +67,10 @@ class TransmitterLink : public QObject {
 
     /// Opens the port and starts sending (failsafe until the first command).
     void start(const LinkSettings& settings);
+    /// Ends with a failsafe frame and closes the port (queued; returns at once).
     void stop();
+    /// stop(), returning once the failsafe frame is out and the port closed.
+    void stopAndWait();
     /// The command to send, as 16 pulses [us]; stamped now.
     void setCommand(const ChannelPulses& pulses);
     /// Latches E-STOP: failsafe from the next frame on, whatever commands arrive.
@@ -124,6 +127,7 @@ class TransmitterLinkWorker : public QObject {
     bool openPort();
     void closePort(const QString& error);
     QByteArray encode(const ChannelPulses& pulses, bool failsafe) const;
+    void unregisterFailsafe();
 
     LinkSettings settings_;
     QSerialPort* port_ = nullptr;
@@ -138,6 +142,7 @@ class TransmitterLinkWorker : public QObject {
     QElapsedTimer commandAge_;    ///< invalid until the first command
     std::int64_t commandNs_ = 0;  ///< steady time of the last setCommand()
     bool running_ = false;
+    int failsafeSlot_ = -1;  ///< this port's slot in the process failsafe (-1: none)
 };
 
 }  // namespace prisca::devices

@@ -1,11 +1,11 @@
 #include "app/cli/CliSupport.h"
 
 #include "core/DemonstrationCsv.h"
+#include "devices/ProcessFailsafe.h"
 
 #include <QJsonDocument>
 
 #include <unistd.h>
-#include <atomic>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -99,23 +99,22 @@ long long CommandLine::integer(const QString& name, long long minimum, long long
     return value;
 }
 
-namespace {
-// Lock-free, so the signal handler may set it (std::atomic<bool> is on every target we build).
-std::atomic<bool> interruptRequested{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void onInterrupt(int) {
-    interruptRequested.store(true);
-}
-}  // namespace
-
 void installInterruptHandler() {
-    std::signal(SIGINT, onInterrupt);
-    std::signal(SIGTERM, onInterrupt);
+    devices::processfailsafe::acceptGracefulStop();
 }
 
 bool interrupted() {
-    return interruptRequested.load();
+    return devices::processfailsafe::stopSignal() != 0;
+}
+
+QString interruptionName() {
+    return QString::fromLatin1(
+        devices::processfailsafe::signalName(devices::processfailsafe::stopSignal()));
+}
+
+int interruptedExitCode() {
+    const int signal = devices::processfailsafe::stopSignal();
+    return 128 + (signal != 0 ? signal : SIGINT);
 }
 
 core::Demonstration readDemonstration(const QString& path) {
@@ -140,6 +139,9 @@ void printJson(const QJsonObject& object) {
 
 void printText(const QString& text) {
     std::printf("%s", text.toLocal8Bit().constData());
+    // A line as soon as it is known (a trial's result), also into a pipe: a reader that closes
+    // the pipe (head) stops the command at once (SIGPIPE), not at its end.
+    std::fflush(stdout);
 }
 
 void printProgress(const QString& text) {

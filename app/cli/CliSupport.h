@@ -62,13 +62,17 @@ class CommandLine {
     QStringList formats_;
 };
 
-/// Makes Ctrl-C (SIGINT) and SIGTERM ask long commands to stop: interrupted() turns true, the
-/// command finishes the step it is on, keeps what finished and exits with kExitInterrupted.
+/// Makes Ctrl-C (SIGINT), SIGTERM, SIGHUP, SIGQUIT and SIGPIPE ask a long command to stop:
+/// interrupted() turns true, the command finishes the step it is on, ends its links in failsafe,
+/// keeps what finished and exits with interruptedExitCode(). Until a command calls this, those
+/// signals end the process at once (in failsafe: devices/ProcessFailsafe.h); a second one does.
 void installInterruptHandler();
-/// Whether Ctrl-C was pressed. Any thread.
+/// Whether a stopping signal arrived. Any thread.
 bool interrupted();
-/// Exit code after an interruption (128 + SIGINT, as shells report it).
-constexpr int kExitInterrupted = 130;
+/// The signal that stopped the command, for a message ("SIGTERM").
+QString interruptionName();
+/// Exit code after an interruption: 128 + the signal, as shells report it (130 for Ctrl-C).
+int interruptedExitCode();
 
 /// Reads a demonstration CSV; UsageError with "file:line:column: message" if bad.
 core::Demonstration readDemonstration(const QString& path);

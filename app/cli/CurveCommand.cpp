@@ -219,7 +219,7 @@ int curveCommand(const QStringList& arguments) {
     } else {
         printText(text + QStringLiteral("wrote %1\n").arg(out));
     }
-    return interrupted() ? kExitInterrupted : 0;
+    return interrupted() ? interruptedExitCode() : 0;
 }
 
 }  // namespace prisca::app::cli

@@ -2,6 +2,7 @@
 // link, the protocol and the channel wiring, with no camera and no controller).
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
+#include "devices/ProcessFailsafe.h"
 #include "devices/TransmitterLink.h"
 
 #include <QCoreApplication>
@@ -10,6 +11,7 @@
 #include <QThread>
 
 #include <cmath>
+#include <cstdio>
 
 namespace prisca::app::cli {
 
@@ -73,10 +75,15 @@ int linkCommand(const QStringList& arguments) {
     link.start(settings);
     QElapsedTimer clock;
     clock.start();
+    bool faultInjected = false;
     while (clock.elapsed() < duration * 1000.0 && !interrupted()) {
         link.setCommand(pulses);  // fresh, so the link never sees it as stale
         QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
         QThread::msleep(5);
+        if (!faultInjected && link.framesSent() >= 10) {
+            faultInjected = true;
+            devices::processfailsafe::injectFaultForTesting();  // the tests' faults; else nothing
+        }
         if (clock.elapsed() >= 1000 && status.framesSent == 0 && !status.lastError.isEmpty()) {
             break;  // the port never opened: say why below
         }
@@ -84,10 +91,18 @@ int linkCommand(const QStringList& arguments) {
     const long long beforeFailsafe = link.framesSent();
     link.emergencyStop();  // the last frames out are failsafe, if the port is there to take them
     QThread::msleep(static_cast<unsigned long>(std::ceil(2000.0 / settings.rateHz)));
-    const long long failsafeFrames = link.framesSent() - beforeFailsafe;
-    link.stop();
+    link.stopAndWait();  // and the closing frame, failsafe too
     QCoreApplication::processEvents();
     const long long frames = link.framesSent();
+    const long long failsafeFrames = frames - beforeFailsafe;
+    if (interrupted()) {
+        std::fprintf(stderr, "prisca-cli: link: stopped by %s; %s\n",
+                     interruptionName().toLatin1().constData(),
+                     failsafeFrames > 0
+                         ? qPrintable(QStringLiteral("ended in failsafe (%1 frames)")
+                                          .arg(failsafeFrames))
+                         : "no failsafe frame could go out (the port was gone)");
+    }
     const double seconds = clock.elapsed() / 1000.0;
     if (frames == 0) {
         throw UsageError(status.lastError.isEmpty()
@@ -122,7 +137,7 @@ int linkCommand(const QStringList& arguments) {
                                ? QString()
                                : QStringLiteral("; last error: %1").arg(status.lastError)));
     }
-    return interrupted() ? kExitInterrupted : 0;
+    return interrupted() ? interruptedExitCode() : 0;
 }
 
 }  // namespace prisca::app::cli

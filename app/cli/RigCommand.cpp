@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace prisca::app::cli {
 
@@ -91,15 +92,17 @@ int rigCommand(const QStringList& arguments) {
     link.sendOnCommand = true;  // a camera frame's command goes out at once
     rig.connectLink(link);
     installInterruptHandler();
-    // Waits until `done` holds, the user interrupts, or the camera fails (its message).
+    // Waits until `done` holds, the user interrupts (unless the wait is the closing one, which
+    // must see the link closed), or the camera fails (its message).
     QString cameraError;
     QObject::connect(&rig, &rig::RigSession::cameraFailed,
                      [&cameraError](const QString& message) { cameraError = message; });
-    auto waitFor = [&](const std::function<bool()>& done, int timeoutMs) {
+    auto waitFor = [&](const std::function<bool()>& done, int timeoutMs,
+                       bool untilInterrupted = true) {
         QEventLoop loop;
         QTimer poll;
         QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
-            if (done() || interrupted() || !cameraError.isEmpty()) {
+            if (done() || (untilInterrupted && interrupted()) || !cameraError.isEmpty()) {
                 loop.quit();
             }
         });
@@ -197,9 +200,16 @@ int rigCommand(const QStringList& arguments) {
     // The link's last frame is failsafe; once it has closed, what the car's receiver holds is
     // what the car was left with (an interrupt included).
     rig.disconnectLink();
-    const bool closed = waitFor([&] { return !rig.linkStatus().connected; }, 5000);
+    const bool closed = waitFor([&] { return !rig.linkStatus().connected; }, 5000, false);
     const Eigen::VectorXd held = rig.virtualReceivedCommand().value_or(Eigen::VectorXd());
     const bool neutral = closed && held.size() > 0 && held.cwiseAbs().maxCoeff() <= kNeutralSlack;
+    if (interrupted()) {
+        // On stderr: stdout may be the pipe whose closing (SIGPIPE) stopped the command.
+        std::fprintf(stderr, "prisca-cli: rig: stopped by %s; the link %s\n",
+                     interruptionName().toLatin1().constData(),
+                     neutral ? "ended in failsafe (the car's receiver holds neutral)"
+                             : "closed, but the car's receiver does NOT hold neutral");
+    }
     QJsonArray heldJson;
     for (double u : held) {
         heldJson.append(u);
@@ -220,7 +230,7 @@ int rigCommand(const QStringList& arguments) {
                       .arg(values.join(", "), neutral ? QStringLiteral("neutral (failsafe)")
                                                       : QStringLiteral("NOT neutral")));
     }
-    return interrupted() ? kExitInterrupted : 0;
+    return interrupted() ? interruptedExitCode() : 0;
 }
 
 }  // namespace prisca::app::cli

@@ -105,7 +105,7 @@ int table1ProtocolCommand(const CommandLine& line) {
         std::fprintf(stderr,
                      "prisca-cli: table1: interrupted; kept the cells that finished (%d trials)\n",
                      result.finishedTrials);
-        return kExitInterrupted;
+        return interruptedExitCode();
     }
     return 0;
 }
@@ -210,7 +210,7 @@ int table1Command(const QStringList& arguments) {
     if (result.cancelled) {
         std::fprintf(stderr, "prisca-cli: table1: interrupted; kept the %d trials that finished\n",
                      finished);
-        return kExitInterrupted;
+        return interruptedExitCode();
     }
     return 0;
 }

@@ -130,7 +130,7 @@ int trackCommand(const QStringList& arguments) {
                       .arg(found)
                       .arg(out));
     }
-    return interrupted() ? kExitInterrupted : 0;
+    return interrupted() ? interruptedExitCode() : 0;
 }
 
 }  // namespace prisca::app::cli

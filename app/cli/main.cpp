@@ -2,6 +2,7 @@
 #include "app/cli/CliSupport.h"
 #include "app/cli/CommandTable.h"
 #include "core/FileIo.h"
+#include "devices/ProcessFailsafe.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -44,6 +45,9 @@ QString describeCommands() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+    // First of all: however this process ends short of SIGKILL, an open transmitter link's last
+    // frames are failsafe, and stderr says so (devices/ProcessFailsafe.h).
+    prisca::devices::processfailsafe::install("prisca-cli");
     // A write past a file-size limit fails with an error (exit 2 naming the file) instead of
     // killing the process with SIGXFSZ and leaving a temporary file behind.
     std::signal(SIGXFSZ, SIG_IGN);
@@ -107,11 +111,19 @@ int main(int argc, char* argv[]) {
     }
     // Bad arguments and files surface as UsageError; anything else thrown below is a bad
     // argument combination that a layer refused (std::invalid_argument): one line, exit 2.
+    // A link the command had open has closed by the time the error is caught (its destructor
+    // sends failsafe last): the message says so.
+    const auto failsafeNote = [] {
+        const int links = prisca::devices::processfailsafe::failsafeEndings();
+        return links > 0 ? QStringLiteral(" (the link ended in failsafe)") : QString();
+    };
     try {
         return command->run(positional.mid(1));
     } catch (const prisca::app::cli::UsageError& error) {
-        return fail(QStringLiteral("%1: %2").arg(name, QString::fromStdString(error.what())));
+        return fail(QStringLiteral("%1: %2%3")
+                        .arg(name, QString::fromStdString(error.what()), failsafeNote()));
     } catch (const std::exception& error) {
-        return fail(QStringLiteral("%1: %2").arg(name, QString::fromStdString(error.what())));
+        return fail(QStringLiteral("%1: %2%3")
+                        .arg(name, QString::fromStdString(error.what()), failsafeNote()));
     }
 }
