@@ -4,7 +4,11 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <charconv>
 
 namespace prisca::core {
@@ -37,12 +41,12 @@ QString printable(const QString& text) {
     return out;
 }
 
-std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, FileError* error) {
+bool checkRegularFile(const QString& path, qint64 maxBytes, FileError* error) {
     const auto fail = [&](const QString& message) {
         if (error) {
             *error = FileError{path, 0, 0, message};
         }
-        return std::nullopt;
+        return false;
     };
     if (path.isEmpty()) {
         return fail(QStringLiteral("no file name given"));
@@ -58,6 +62,25 @@ std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, 
         return fail(
             QStringLiteral("is not a regular file (a device, FIFO or socket); save the "
                            "data to a file first"));
+    }
+    if (maxBytes >= 0 && info.size() > maxBytes) {
+        return fail(QStringLiteral("%1 bytes, more than the %2 bytes this reader accepts")
+                        .arg(info.size())
+                        .arg(maxBytes));
+    }
+    return true;
+}
+
+std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, FileError* error) {
+    const auto fail = [&](const QString& message) {
+        if (error) {
+            *error = FileError{path, 0, 0, message};
+        }
+        return std::nullopt;
+    };
+    // Refused before it is opened: what is not a regular file, or is too big already.
+    if (!checkRegularFile(path, maxBytes, error)) {
+        return std::nullopt;
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
@@ -105,6 +128,19 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
     if (path.isEmpty()) {
         return fail(QStringLiteral("no file name given"));
     }
+    // Only a regular file is replaced: a device (/dev/null as root), a FIFO, a socket or a folder
+    // is left alone. A replaced file keeps its permissions, read-only included.
+    struct stat existing {};
+    const QByteArray native = QFile::encodeName(path);
+    const bool exists = ::stat(native.constData(), &existing) == 0;
+    if (exists && S_ISDIR(existing.st_mode)) {
+        return fail(QStringLiteral("is a folder; give a file name"));
+    }
+    if (exists && !S_ISREG(existing.st_mode)) {
+        return fail(
+            QStringLiteral("exists and is not a regular file (a device, FIFO or socket); not "
+                           "replaced"));
+    }
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         return fail(QStringLiteral("cannot open for writing: %1").arg(file.errorString()));
@@ -125,6 +161,11 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
         }
         file.cancelWriting();
         return fail(QStringLiteral("cannot write: %1; the previous file is kept").arg(reason));
+    }
+    if (exists && ::fchmod(file.handle(), existing.st_mode & 07777) != 0) {
+        file.cancelWriting();
+        return fail(QStringLiteral("cannot keep the previous file's permissions: %1")
+                        .arg(QString::fromLocal8Bit(std::strerror(errno))));
     }
     if (!file.commit()) {
         return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));

@@ -26,7 +26,11 @@ struct FileError {
 /// sequence to a terminal. Any thread.
 QString printable(const QString& text);
 
-/// Reads a whole regular file of at most maxBytes. Devices, FIFOs, sockets and folders are
+/// Whether path is an existing regular file of at most maxBytes (< 0: any size), decided from
+/// its metadata without opening it (a FIFO would block). On failure *error (if given) says why.
+bool checkRegularFile(const QString& path, qint64 maxBytes, FileError* error);
+
+/// Reads a whole regular file of at most maxBytes (its size checked before reading). Devices, FIFOs, sockets and folders are
 /// refused before they are opened (a FIFO would block, /dev/zero never ends), and the size is
 /// capped while reading, not taken from stat, so a file growing under the reader cannot exhaust
 /// memory either. On failure nullopt with *error (if given) naming the path. Any thread.
@@ -38,7 +42,8 @@ void appendCsvNumber(QByteArray& out, double value);
 
 /// Writes bytes to path atomically: a temporary file renamed over the target only when
 /// complete and flushed, so a crash or a full disk never leaves a half-written file or damages
-/// the old one.
+/// the old one. Only a regular file (or none) at path is replaced, keeping its permissions; a
+/// device, FIFO, socket or folder there is refused.
 /// On failure returns false and fills *error (if given) naming the path. Any thread.
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError* error);
 

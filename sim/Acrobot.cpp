@@ -168,10 +168,9 @@ Eigen::VectorXd Acrobot::reset(std::uint64_t seed, const Perturbation& perturbat
 }
 
 Eigen::VectorXd Acrobot::resetTo(const Eigen::VectorXd& s) {
-    if (s.size() != 4 || !s.allFinite()) {
-        throw std::invalid_argument(
-            "Acrobot::resetTo: the state needs 4 finite values "
-            "(theta1, theta2, dtheta1, dtheta2)");
+    // Checked before it reaches the physics engine, which asserts on what it cannot hold.
+    if (const QString problem = info().stateProblem(s); !problem.isEmpty()) {
+        throw std::invalid_argument(problem.toStdString());
     }
     trialEquations_.constants = parameters_.links;
     trialJointDamping_ = parameters_.jointDamping;

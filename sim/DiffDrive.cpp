@@ -85,9 +85,9 @@ Eigen::VectorXd DiffDrive::reset(std::uint64_t seed, const Perturbation& perturb
 }
 
 Eigen::VectorXd DiffDrive::resetTo(const Eigen::VectorXd& s) {
-    if (s.size() != 6 || !s.allFinite()) {
-        throw std::invalid_argument(
-            "DiffDrive::resetTo: the state needs 6 finite values (x, y, psi, vx, vy, r)");
+    // Checked before it reaches the physics engine, which asserts on what it cannot hold.
+    if (const QString problem = info().stateProblem(s); !problem.isEmpty()) {
+        throw std::invalid_argument(problem.toStdString());
     }
     wheelGain_ = {1.0, 1.0};
     frictionScale_ = 1.0;

@@ -162,9 +162,9 @@ Eigen::VectorXd PlanarAircraft::reset(std::uint64_t seed, const Perturbation& pe
 }
 
 Eigen::VectorXd PlanarAircraft::resetTo(const Eigen::VectorXd& s) {
-    if (s.size() != 6 || !s.allFinite()) {
-        throw std::invalid_argument(
-            "PlanarAircraft::resetTo: the state needs 6 finite values (x, y, psi, u, v, r)");
+    // Checked before it reaches the physics engine, which asserts on what it cannot hold.
+    if (const QString problem = info().stateProblem(s); !problem.isEmpty()) {
+        throw std::invalid_argument(problem.toStdString());
     }
     thrustScale_ = 1.0;
     dragScale_ = 1.0;

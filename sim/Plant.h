@@ -54,6 +54,15 @@ struct PlantInfo {
     int actionDimension() const { return static_cast<int>(actionNames.size()); }
     /// The tracking-error model of this plant (body frame for vehicles, wrapped angles).
     core::DeviationModel deviationModel() const;
+
+    /// The largest magnitude a state component may start from, by its unit: 10 km and 10^4 rad
+    /// for positions and angles, 1000 m/s and 1000 rad/s for rates. Far beyond any lab, and
+    /// well inside what the physics engine's single-precision bodies hold.
+    double stateBound(int component) const;
+    /// Empty when the state has n components, each finite and within stateBound; else what is
+    /// wrong, naming the component, its value and its range ("psi = 1e+300 rad is outside
+    /// [-10000, 10000] rad"). Every plant's resetTo() checks its state with it.
+    QString stateProblem(const Eigen::VectorXd& state) const;
 };
 
 /// One simulated robot (OMPL-style narrow interface). Built on Box2D; SI units inside.

@@ -109,10 +109,9 @@ Eigen::VectorXd SlideCar::reset(std::uint64_t seed, const Perturbation& perturba
 }
 
 Eigen::VectorXd SlideCar::resetTo(const Eigen::VectorXd& s) {
-    if (s.size() != 6 || !s.allFinite()) {
-        throw std::invalid_argument(
-            "SlideCar::resetTo: the state needs 6 finite values "
-            "(x, y, psi, vx, vy, r)");
+    // Checked before it reaches the physics engine, which asserts on what it cannot hold.
+    if (const QString problem = info().stateProblem(s); !problem.isEmpty()) {
+        throw std::invalid_argument(problem.toStdString());
     }
     frictionScale_ = 1.0;
     throttleGain_ = 1.0;

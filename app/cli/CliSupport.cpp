@@ -3,6 +3,7 @@
 #include "core/DemonstrationCsv.h"
 #include "devices/ProcessFailsafe.h"
 
+#include <QFileInfo>
 #include <QJsonDocument>
 
 #include <unistd.h>
@@ -131,6 +132,31 @@ void writeDemonstration(const core::Demonstration& demonstration, const QString&
     if (!core::writeDemonstrationCsv(demonstration, path, &error)) {
         throw UsageError(error.toString());
     }
+}
+
+QString partialPath(const QString& path) {
+    const QFileInfo info(path);
+    const QString suffix = info.suffix().toLower();
+    if (suffix == QLatin1String("png") || suffix == QLatin1String("svg")) {
+        return path.left(path.size() - suffix.size() - 1) + QStringLiteral(".partial.") +
+               info.suffix();
+    }
+    return path + QStringLiteral(".partial");
+}
+
+QString writeOutput(const QString& path, const QByteArray& bytes, bool complete) {
+    const QString target = complete ? path : partialPath(path);
+    core::FileError error;
+    if (!core::writeFileAtomically(target, bytes, &error)) {
+        throw UsageError(error.toString());
+    }
+    return target;
+}
+
+QString saveFigureOutput(const plot::Figure& figure, const QString& path, bool complete) {
+    const QString target = complete ? path : partialPath(path);
+    saveFigureOrThrow(figure, target);
+    return target;
 }
 
 void printJson(const QJsonObject& object) {

@@ -79,6 +79,16 @@ core::Demonstration readDemonstration(const QString& path);
 /// Writes a demonstration CSV atomically; UsageError if it cannot.
 void writeDemonstration(const core::Demonstration& demonstration, const QString& path);
 
+/// Writes a command's output atomically: to path when the work is complete; when it was
+/// interrupted, to partialPath(path), leaving a complete previous file at path as it was.
+/// @return the path written. UsageError naming the file if it cannot.
+QString writeOutput(const QString& path, const QByteArray& bytes, bool complete);
+/// Where an interrupted command's output goes: NAME.partial; a figure keeps its extension last,
+/// since it names the format (curve.png -> curve.partial.png).
+QString partialPath(const QString& path);
+/// Saves a figure like writeOutput() (a .png or .svg file); returns the path written.
+QString saveFigureOutput(const plot::Figure& figure, const QString& path, bool complete);
+
 /// Prints a JSON object on stdout (indented).
 void printJson(const QJsonObject& object);
 /// Prints text on stdout.

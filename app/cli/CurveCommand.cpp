@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace prisca::app::cli {
 
@@ -199,27 +200,33 @@ int curveCommand(const QStringList& arguments) {
         }
         summary.append(entry);
     }
-    core::FileError error;
-    if (!core::writeFileAtomically(out, csv, &error)) {
-        throw UsageError(error.toString());
-    }
+    // Interrupted: what finished goes to NAME.partial, and a complete previous file stays.
+    const bool complete = !interrupted();
+    const QString written = writeOutput(out, csv, complete);
     if (line.isSet("plot")) {
         const QString yLabel = sim::PlantCatalog::describe(plant).pose
                                    ? QStringLiteral("mean squared position error [m\u00b2]")
                                    : QStringLiteral("mean squared joint-angle error [rad\u00b2]");
-        saveFigureOrThrow(learningCurveFigure(plotted, plottedSeconds, plottedBands, yLabel),
-                          line.value("plot"));
+        saveFigureOutput(learningCurveFigure(plotted, plottedSeconds, plottedBands, yLabel),
+                         line.value("plot"), complete);
     }
     if (line.format() == QLatin1String("json")) {
         printJson({{"plant", plant},
                    {"budgetSteps", static_cast<double>(settings.budgetSteps)},
                    {"cells", result.cells},
                    {"methods", summary},
-                   {"out", out}});
+                   {"out", written}});
     } else {
-        printText(text + QStringLiteral("wrote %1\n").arg(out));
+        printText(text + QStringLiteral("wrote %1\n").arg(written));
     }
-    return interrupted() ? interruptedExitCode() : 0;
+    if (!complete) {
+        std::fprintf(stderr,
+                     "prisca-cli: curve: stopped by %s; kept the runs that finished in %s (the "
+                     "previous --out file is left as it was)\n",
+                     interruptionName().toLatin1().constData(), qPrintable(written));
+        return interruptedExitCode();
+    }
+    return 0;
 }
 
 }  // namespace prisca::app::cli

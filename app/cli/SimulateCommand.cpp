@@ -92,6 +92,10 @@ int simulateCommand(const QStringList& arguments) {
                         .arg(fields[i].trimmed(), info.stateNames[i]));
             }
         }
+        // Within the plant's bounds (sim::PlantInfo::stateProblem), before the physics sees it.
+        if (const QString problem = info.stateProblem(state); !problem.isEmpty()) {
+            throw UsageError(QStringLiteral("--initial: %1").arg(problem));
+        }
         state = plant->resetTo(state);
     } else {
         state = plant->reset(0, sim::Perturbation::none());

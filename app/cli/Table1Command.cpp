@@ -14,6 +14,7 @@
 
 
 #include <cmath>
+#include <cstdio>
 
 namespace prisca::app::cli {
 
@@ -39,16 +40,26 @@ QStringList checkedMethods(const CommandLine& line, const QStringList& defaults)
     return methods;
 }
 
-// The table to --out (atomically) or to standard output.
-void writeTable(const CommandLine& line, const QString& table) {
+// The table to --out (atomically; an interrupted table to NAME.partial, so a complete previous
+// table stays) or to standard output. Returns where it went ("" for stdout).
+QString writeTable(const CommandLine& line, const QString& table, bool complete) {
     if (line.isSet("out")) {
-        core::FileError error;
-        if (!core::writeFileAtomically(line.value("out"), table.toUtf8(), &error)) {
-            throw UsageError(error.toString());
-        }
-    } else {
-        printText(table);
+        return writeOutput(line.value("out"), table.toUtf8(), complete);
     }
+    printText(table);
+    return QString();
+}
+
+// After an interruption: what was kept and where.
+int reportInterrupted(const QString& kept, const QString& written) {
+    std::fprintf(stderr, "prisca-cli: table1: stopped by %s; kept %s%s\n",
+                 interruptionName().toLatin1().constData(), kept.toLocal8Bit().constData(),
+                 written.isEmpty()
+                     ? ""
+                     : qPrintable(QStringLiteral(" in %1 (the previous --out file is left as "
+                                                 "it was)")
+                                      .arg(written)));
+    return interruptedExitCode();
 }
 
 // table1 --styles: every method on every (style, seed set) cell.
@@ -100,12 +111,12 @@ int table1ProtocolCommand(const CommandLine& line) {
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
-    writeTable(line, core::formatProtocol(result.summary, *format, caption));
+    const QString written =
+        writeTable(line, core::formatProtocol(result.summary, *format, caption), !result.cancelled);
     if (result.cancelled) {
-        std::fprintf(stderr,
-                     "prisca-cli: table1: interrupted; kept the cells that finished (%d trials)\n",
-                     result.finishedTrials);
-        return interruptedExitCode();
+        return reportInterrupted(
+            QStringLiteral("the cells that finished (%1 trials)").arg(result.finishedTrials),
+            written);
     }
     return 0;
 }
@@ -202,15 +213,16 @@ int table1Command(const QStringList& arguments) {
                        .arg(finished)
                        .arg(settings.trials * static_cast<int>(settings.methods.size()));
     }
-    writeTable(line, core::formatTable1(rows, *format, caption));
+    const QString written =
+        writeTable(line, core::formatTable1(rows, *format, caption), !result.cancelled);
     if (line.isSet("plot")) {
         const sim::SlideCarParameters car;  // the car's own outline
-        saveFigureOrThrow(parkingFigure(result, car.length, car.width), line.value("plot"));
+        saveFigureOutput(parkingFigure(result, car.length, car.width), line.value("plot"),
+                         !result.cancelled);
     }
     if (result.cancelled) {
-        std::fprintf(stderr, "prisca-cli: table1: interrupted; kept the %d trials that finished\n",
-                     finished);
-        return interruptedExitCode();
+        return reportInterrupted(QStringLiteral("the %1 trials that finished").arg(finished),
+                                 written);
     }
     return 0;
 }

@@ -62,8 +62,10 @@ int trackCommand(const QStringList& arguments) {
     if (!calibration) {
         throw UsageError(error);
     }
-    if (!QFileInfo::exists(videoPath)) {
-        throw UsageError(QStringLiteral("%1: no such file").arg(videoPath));
+    // A video file only: a FIFO or a device would block the decoder in its open.
+    core::FileError videoError;
+    if (!core::checkRegularFile(videoPath, -1, &videoError)) {
+        throw UsageError(videoError.toString());
     }
     // OpenCV's own log lines (backends it tries and drops) would break the one-line error rule.
     cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
@@ -112,10 +114,9 @@ int trackCommand(const QStringList& arguments) {
     if (frames == 0) {
         throw UsageError(QStringLiteral("%1: no frame could be read").arg(videoPath));
     }
-    core::FileError fileError;
-    if (!core::writeFileAtomically(out, csv, &fileError)) {
-        throw UsageError(fileError.toString());
-    }
+    // Interrupted: the frames tracked go to NAME.partial, and a complete previous file stays.
+    const bool complete = !interrupted();
+    const QString written = writeOutput(out, csv, complete);
     if (found == 0) {
         std::fprintf(stderr,
                      "prisca-cli: track: warning: none of the %d frames gave a pose; check "
@@ -123,14 +124,19 @@ int trackCommand(const QStringList& arguments) {
                      frames);
     }
     if (line.format() == QLatin1String("json")) {
-        printJson({{"frames", frames}, {"withPose", found}, {"out", out}});
+        printJson({{"frames", frames}, {"withPose", found}, {"out", written}});
     } else {
         printText(QStringLiteral("%1 frames, %2 with a pose; wrote %3\n")
                       .arg(frames)
                       .arg(found)
-                      .arg(out));
+                      .arg(written));
     }
-    return interrupted() ? interruptedExitCode() : 0;
+    if (!complete) {
+        std::fprintf(stderr, "prisca-cli: track: stopped by %s; kept %d frames in %s\n",
+                     interruptionName().toLatin1().constData(), frames, qPrintable(written));
+        return interruptedExitCode();
+    }
+    return 0;
 }
 
 }  // namespace prisca::app::cli

@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "core/FileIo.h"
 #include "devices/PseudoTerminal.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -553,7 +554,7 @@ class TestCliCommands : public QObject {
             }
             return;
         }
-        QCOMPARE(process.exitCode(), 130);
+        QCOMPARE(process.exitCode(), 128 + signal);
         if (unplugFirst) {
             QVERIFY2(out.contains("no failsafe frame could go out"), qPrintable(out));
             return;
@@ -607,7 +608,7 @@ class TestCliCommands : public QObject {
         QCOMPARE(static_cast<unsigned char>(resumed[at + 24]), 0x00);  // an SBUS frame's end
         ::kill(static_cast<pid_t>(process.processId()), SIGTERM);
         QVERIFY(process.waitForFinished(30000));
-        QCOMPARE(process.exitCode(), 130);
+        QCOMPARE(process.exitCode(), 128 + SIGTERM);
     }
 
     // SIGTERM or SIGINT in the middle of a trial of prisca-cli rig --virtual: the trial ends
@@ -637,7 +638,7 @@ class TestCliCommands : public QObject {
         QVERIFY2(process.state() == QProcess::Running, err.constData());
         ::kill(static_cast<pid_t>(process.processId()), signal);
         QVERIFY(process.waitForFinished(30000));
-        QCOMPARE(process.exitCode(), 130);
+        QCOMPARE(process.exitCode(), 128 + signal);
         const QJsonObject out = QJsonDocument::fromJson(process.readAllStandardOutput()).object();
         const QJsonObject trial = out["trials"].toArray().at(0).toObject();
         QVERIFY2(trial["stopped"].toBool(), qPrintable(QJsonDocument(out).toJson()));
@@ -1037,12 +1038,17 @@ class TestCliCommands : public QObject {
                  2);
     }
 
+    // An interrupted table goes to NAME.partial; a complete previous table at NAME stays.
     void table1_interruptKeepsWhatFinished() {
+        const QString out = dir_.filePath("interrupted-table.md");
+        const QString partial = out + ".partial";
+        QFile::remove(partial);
+        QVERIFY(prisca::core::writeFileAtomically(out, "a complete previous table\n", nullptr));
         QProcess process;
         process.setWorkingDirectory(dir_.path());
         process.start(QStringLiteral(PRISCA_CLI),
                       {"table1", "--trials", "2000", "--training-trials", "0", "--methods", "pd",
-                       "--jobs", "1"});
+                       "--jobs", "1", "--out", out});
         QVERIFY(process.waitForStarted());
         // Interrupt once some trials have finished (its progress line, every 5 %, says so).
         QByteArray progress;
@@ -1054,11 +1060,17 @@ class TestCliCommands : public QObject {
             60000));
         process.terminate();  // SIGTERM, handled like Ctrl-C
         QVERIFY(process.waitForFinished(60000));
-        QCOMPARE(process.exitCode(), 130);
-        const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
+        QCOMPARE(process.exitCode(), 128 + SIGTERM);
         const QString err = QString::fromLocal8Bit(process.readAllStandardError());
-        QVERIFY2(out.contains("interrupted:") && out.contains("| PD |"), qPrintable(out));
-        QVERIFY2(err.contains("kept the"), qPrintable(err));
+        QVERIFY2(err.contains("stopped by SIGTERM; kept the") && err.contains(partial),
+                 qPrintable(err));
+        QFile previous(out);
+        QVERIFY(previous.open(QIODevice::ReadOnly));
+        QCOMPARE(previous.readAll(), QByteArray("a complete previous table\n"));
+        QFile kept(partial);
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        const QString table = QString::fromUtf8(kept.readAll());
+        QVERIFY2(table.contains("interrupted:") && table.contains("| PD |"), qPrintable(table));
     }
 
     // Every method's parameters come from its catalog entry, and docs/methods.md is what

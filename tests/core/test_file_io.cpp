@@ -11,6 +11,7 @@
 #include <QtTest>
 
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 using namespace prisca::core;
 
@@ -63,6 +64,50 @@ class TestFileIo : public QObject {
         QCOMPARE(contents(path), QByteArray("previous\n"));
     }
 
+    void write_replacesOnlyARegularFileAndKeepsItsMode() {
+        QTemporaryDir dir;
+        FileError error;
+        // A FIFO (opening it to write would block, replacing it would lose it).
+        const QString fifo = dir.filePath("fifo");
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        QVERIFY(!writeFileAtomically(fifo, "data\n", &error));
+        QCOMPARE(error.path, fifo);
+        QVERIFY2(error.message.contains("not a regular file"), qPrintable(error.toString()));
+        struct stat after {};
+        QCOMPARE(::stat(QFile::encodeName(fifo).constData(), &after), 0);
+        QVERIFY(S_ISFIFO(after.st_mode));
+        // A character device like /dev/null, made here (only root may make one).
+        const QString device = dir.filePath("null");
+        if (::mknod(QFile::encodeName(device).constData(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
+            QVERIFY(!writeFileAtomically(device, "data\n", &error));
+            QVERIFY2(error.message.contains("not a regular file"), qPrintable(error.toString()));
+            QCOMPARE(::stat(QFile::encodeName(device).constData(), &after), 0);
+            QVERIFY(S_ISCHR(after.st_mode));
+        }
+        // A folder.
+        QVERIFY(!writeFileAtomically(dir.path(), "data\n", &error));
+        QVERIFY2(error.message.contains("folder"), qPrintable(error.toString()));
+        // A replaced file keeps its permissions.
+        const QString shared = dir.filePath("shared.csv");
+        QVERIFY(writeFileAtomically(shared, "old\n", nullptr));
+        QCOMPARE(::chmod(QFile::encodeName(shared).constData(), 0640), 0);
+        QVERIFY(writeFileAtomically(shared, "new\n", &error));
+        QCOMPARE(contents(shared), QByteArray("new\n"));
+        QCOMPARE(::stat(QFile::encodeName(shared).constData(), &after), 0);
+        QCOMPARE(after.st_mode & 07777, 0640u);
+        // A read-only file: replaced only where the user may (root), and then still read-only.
+        const QString locked = dir.filePath("locked.csv");
+        QVERIFY(writeFileAtomically(locked, "old\n", nullptr));
+        QCOMPARE(::chmod(QFile::encodeName(locked).constData(), 0444), 0);
+        if (writeFileAtomically(locked, "new\n", &error)) {
+            QCOMPARE(contents(locked), QByteArray("new\n"));
+        } else {
+            QCOMPARE(contents(locked), QByteArray("old\n"));
+        }
+        QCOMPARE(::stat(QFile::encodeName(locked).constData(), &after), 0);
+        QCOMPARE(after.st_mode & 07777, 0444u);
+    }
+
     void read_isBoundedAndRefusesWhatWouldNotEnd() {
         QTemporaryDir dir;
         FileError error;
@@ -80,6 +125,17 @@ class TestFileIo : public QObject {
         QVERIFY(writeFileAtomically(big, QByteArray(1001, 'x'), nullptr));
         QVERIFY(!readFileBounded(big, 1000, &error));
         QVERIFY2(error.message.contains("1000 bytes"), qPrintable(error.toString()));
+        // Its size is known before reading: an 8 GiB file (sparse, nothing on disk) is refused
+        // without a byte read.
+        const QString huge = dir.filePath("huge");
+        {
+            QFile file(huge);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            QVERIFY(file.resize(qint64(8) << 30));
+        }
+        QVERIFY(!readFileBounded(huge, 1 << 20, &error));
+        QVERIFY2(error.message.contains("8589934592 bytes, more than"),
+                 qPrintable(error.toString()));
         const auto exact = readFileBounded(big, 1001, &error);
         QVERIFY(exact);
         QCOMPARE(exact->size(), 1001);

@@ -7,12 +7,41 @@
 #include <QSet>
 #include <QtTest>
 #include <cstring>
+#include <limits>
 
 using namespace prisca::sim;
 
 class TestPlantCatalog : public QObject {
     Q_OBJECT
   private slots:
+    // A start state outside what a plant holds is refused by name before the physics engine
+    // sees it (which would abort on an assertion); the bound itself is accepted.
+    void resetTo_refusesStatesOutsideThePlantsBounds() {
+        for (const PlantEntry& entry : PlantCatalog::all()) {
+            auto plant = PlantCatalog::create(entry.name);
+            const PlantInfo info = plant->info();
+            const int n = info.stateDimension();
+            for (int i = 0; i < n; ++i) {
+                for (double bad : {1e300, -1e300, 1.01 * info.stateBound(i),
+                                   std::numeric_limits<double>::quiet_NaN()}) {
+                    Eigen::VectorXd state = Eigen::VectorXd::Zero(n);
+                    state[i] = bad;
+                    const QString problem = info.stateProblem(state);
+                    QVERIFY2(problem.startsWith(info.stateNames[i] + " = "),
+                             qPrintable(entry.name + ": " + problem));
+                    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, plant->resetTo(state));
+                }
+                Eigen::VectorXd edge = Eigen::VectorXd::Zero(n);
+                edge[i] = info.stateBound(i) * 0.5;
+                QVERIFY2(info.stateProblem(edge).isEmpty(), qPrintable(entry.name));
+                const Eigen::VectorXd started = plant->resetTo(edge);
+                QVERIFY(started.allFinite());
+                QVERIFY(plant->step(Eigen::VectorXd::Zero(info.actionDimension())).allFinite());
+            }
+            QVERIFY(!info.stateProblem(Eigen::VectorXd::Zero(n + 1)).isEmpty());
+        }
+    }
+
     void everyEntry_isConsistentWithItsTuningAndStyles() {
         QSet<QString> names;
         QVERIFY(PlantCatalog::all().size() >= 3);
