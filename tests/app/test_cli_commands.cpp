@@ -851,6 +851,16 @@ class TestCliCommands : public QObject {
             << (QStringList{"curve", "--methods", "prisca,pd-selected"} + out)
             << "'pd-selected' has no learning curve";
         QTest::newRow("curve: no out") << QStringList{"curve"} << "--out is required";
+        QTest::newRow("lemma41: a grid of more than a minute")
+            << (QStringList{"lemma41", "--max-h", "1000", "--gamma-steps", "10000"} + out)
+            << "--gamma-steps must lie in [2, 1498] with --max-h 1000, got 10000: the grid "
+               "evaluates gamma-steps x max-h x (max-h + 1) terms";
+        QTest::newRow("lemma41: gamma finer than the figure")
+            << (QStringList{"lemma41", "--gamma-steps", "100000"} + out)
+            << "--gamma-steps must lie in [2, 10001], got 100000: a gamma step of 1e-4";
+        QTest::newRow("lemma41: horizon too long")
+            << (QStringList{"lemma41", "--max-h", "20000"} + out)
+            << "--max-h must lie in [1, 10000], got 20000: the grid's time grows";
         QTest::newRow("run: trials not a number")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
                             "--trials", "two"} +
