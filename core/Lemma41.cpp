@@ -32,7 +32,9 @@ double inverseDepreciationVariance(int horizon, double gamma, int tauPrime) {
     return std::max(0.0, (squares - residual * residual / tauPrime) / tauPrime);
 }
 
-std::vector<Lemma41Cell> lemma41Grid(int maxHorizon, int gammaSteps) {
+std::vector<Lemma41Cell> lemma41Grid(
+    int maxHorizon, int gammaSteps,
+    const std::function<void(long long done, long long total)>& progress) {
     if (maxHorizon < 1) {
         throw std::invalid_argument("lemma41Grid: maxHorizon must be >= 1");
     }
@@ -50,6 +52,9 @@ std::vector<Lemma41Cell> lemma41Grid(int maxHorizon, int gammaSteps) {
             cell.variance = inverseDepreciationVariance(h, cell.gamma, lemma41TauPrime(h));
             cell.satisfied = cell.variance < 1.0;
             cells.push_back(cell);
+        }
+        if (progress) {
+            progress(lemma41Terms(h, gammaSteps), lemma41Terms(maxHorizon, gammaSteps));
         }
     }
     return cells;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 namespace prisca::core {
@@ -37,13 +38,24 @@ struct Lemma41Cell {
     bool satisfied = false;  ///< variance < 1: the lemma's inequality holds (a gray cell in Fig. 2)
 };
 
+/// The terms D_i that lemma41Grid(maxHorizon, gammaSteps) evaluates, what its time grows with:
+/// tau' = 2H of them per cell, gammaSteps * maxHorizon * (maxHorizon + 1) in all (quadratic in
+/// the largest horizon).
+constexpr long long lemma41Terms(int maxHorizon, int gammaSteps) {
+    return static_cast<long long>(gammaSteps) * maxHorizon * (maxHorizon + 1LL);
+}
+
 /// The Fig. 2 grid: H = 1 .. maxHorizon, gamma = g / (gammaSteps - 1) for g = 0 .. gammaSteps-1
 /// (so both 0 and 1 are included exactly). maxHorizon * gammaSteps cells, ordered by H first
 /// (outer) and gamma second: cell (H, g) is at index (H - 1) * gammaSteps + g.
 /// @param maxHorizon  >= 1, default 50 as in the paper
 /// @param gammaSteps  >= 2, default 101 (gamma step 0.01)
+/// @param progress    if set, called on the calling thread after each H with the terms
+///                    evaluated so far and lemma41Terms(maxHorizon, gammaSteps)
 /// Throws std::invalid_argument when an argument is out of range.
-std::vector<Lemma41Cell> lemma41Grid(int maxHorizon = 50, int gammaSteps = 101);
+std::vector<Lemma41Cell> lemma41Grid(
+    int maxHorizon = 50, int gammaSteps = 101,
+    const std::function<void(long long done, long long total)>& progress = {});
 
 /// Number of cells of a grid in which the lemma's inequality holds.
 int lemma41SatisfiedCount(const std::vector<Lemma41Cell>& cells);

@@ -84,6 +84,9 @@ class EpisodeStepper {
     const Eigen::VectorXd& state() const { return state_; }
     /// Control steps taken so far.
     int stepCount() const { return k_; }
+    /// Control steps the trial takes at most (its duration over the control period); it may end
+    /// sooner at rest.
+    int maxSteps() const { return maxSteps_; }
     /// The trial so far (steps only if settings.recordSteps).
     EpisodeResult result() const;
     /// The same, moving the recorded steps out (the stepper keeps none afterwards).

@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 
 namespace prisca::sim {
 
@@ -27,27 +28,24 @@ double trackedError(const PlantInfo& info, const core::Demonstration& demonstrat
 
 double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstration, double x,
                       double y) {
+    if (std::isnan(x) || std::isnan(y)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
     const auto& p = *info.pose;
     const int T = demonstration.length();
     double best = std::numeric_limits<double>::infinity();
     for (int j = 0; j < T; ++j) {
-        const double ax = demonstration.states(j, p.x), ay = demonstration.states(j, p.y);
-        if (j + 1 == T) {
-            best = std::min(best, std::hypot(x - ax, y - ay));
-            break;
-        }
-        const double dx = demonstration.states(j + 1, p.x) - ax;
-        const double dy = demonstration.states(j + 1, p.y) - ay;
-        const double length2 = dx * dx + dy * dy;
-        const double s =
-            length2 > 0.0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / length2, 0.0, 1.0) : 0.0;
-        best = std::min(best, std::hypot(x - ax - s * dx, y - ay - s * dy));
+        const int next = std::min(j + 1, T - 1);  // the last term is the last sample alone
+        best = std::min(
+            best, distanceToSegment(demonstration.states(j, p.x), demonstration.states(j, p.y),
+                                    demonstration.states(next, p.x),
+                                    demonstration.states(next, p.y), x, y));
     }
     return best;
 }
 
-ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration,
-                          double x, double y, double heading) {
+ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration, double x,
+                          double y, double heading) {
     if (!info.pose || demonstration.length() == 0) {
         throw std::invalid_argument("parkingError: a planar vehicle and a demonstration needed");
     }
@@ -82,13 +80,17 @@ TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& de
         summary.pathRms = nan;
     } else {
         double sum = 0.0, pathSum = 0.0;
+        // Indexed once: the brute force per step made scoring quadratic in the demonstration.
+        std::optional<PathDistance> path;
+        if (info.pose) {
+            path.emplace(info, demonstration);
+        }
         for (size_t k = 0; k < result.steps.size(); ++k) {
             const Eigen::VectorXd& state = result.steps[k].state;
             const double e = trackedError(info, demonstration, state, static_cast<int>(k));
             sum += e * e;
             if (info.pose) {
-                const double d =
-                    distanceToPath(info, demonstration, state[info.pose->x], state[info.pose->y]);
+                const double d = path->distance(state[info.pose->x], state[info.pose->y]);
                 pathSum += d * d;
             }
         }

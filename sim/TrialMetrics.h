@@ -1,6 +1,7 @@
 #pragma once
 
 #include "EpisodeRunner.h"
+#include "PathDistance.h"
 #include "Plant.h"
 #include "core/Demonstration.h"
 
@@ -30,12 +31,11 @@ struct TrialSummary {
 double trackedError(const PlantInfo& info, const core::Demonstration& demonstration,
                     const Eigen::VectorXd& state, int step);
 
-/// Distance [m] from (x, y) to the polyline through the demonstration's positions.
-/// Requires a planar vehicle (info.pose).
+/// Distance [m] from (x, y) to the polyline through the demonstration's positions, by brute
+/// force over every segment (PathDistance gives the same bits from an index): +infinity for an
+/// empty demonstration, NaN if x or y is NaN. Requires a planar vehicle (info.pose).
 double distanceToPath(const PlantInfo& info, const core::Demonstration& demonstration, double x,
                       double y);
-/// Summary of a trial against the demonstration (the lot is its final pose).
-/// The result must have its steps recorded for trackingRms (else it is NaN).
 /// How far a vehicle's final pose is from the lot (the demonstration's final pose): the
 /// distance [m] and the heading difference's magnitude [rad], Table I's two errors. Wherever a
 /// trial is scored (simulation, the rig, the virtual rig) it is scored by this.
@@ -46,6 +46,9 @@ struct ParkingError {
 ParkingError parkingError(const PlantInfo& info, const core::Demonstration& demonstration, double x,
                           double y, double heading);
 
+/// Summary of a trial against the demonstration (the lot is its final pose).
+/// The result must have its steps recorded for trackingRms and pathRms (else they are NaN).
+/// Costs O(T log T + K log T) for T demonstration samples and K steps (PathDistance).
 TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& demonstration,
                             const EpisodeResult& result);
 

@@ -29,6 +29,29 @@ QJsonValue finiteOrNull(double value) {
     return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
 }
 
+// A trial of at least this many control steps reports its progress every tenth of them (at
+// ~40 us a step on the slide-car, a second or more).
+constexpr int kLongTrialSteps = 20000;
+
+// One trial, stepped here rather than by runEpisode (the same trial bit for bit: runEpisode is
+// this stepper run to its end) so that a long one can say how far it is. Sets `reported` when it
+// printed a progress line.
+sim::EpisodeResult runTrial(sim::Plant& plant, core::Controller& controller,
+                            const sim::EpisodeSettings& episode, const QString& label,
+                            bool& reported) {
+    sim::EpisodeStepper stepper(plant, controller, episode);
+    const int tenth = stepper.maxSteps() >= kLongTrialSteps ? stepper.maxSteps() / 10 : 0;
+    while (!stepper.finished()) {
+        stepper.step();
+        if (tenth > 0 && stepper.stepCount() % tenth == 0 && !stepper.finished()) {
+            printProgress(
+                QStringLiteral("%1, %2%").arg(label).arg(10 * (stepper.stepCount() / tenth)));
+            reported = true;
+        }
+    }
+    return stepper.takeResult();
+}
+
 }  // namespace
 
 int runCommand(const QStringList& arguments) {
@@ -112,11 +135,15 @@ int runCommand(const QStringList& arguments) {
         }
         return path;
     };
+    bool reported = false;  // a progress line is open on stderr
     for (int trial = 0; trial < trials; ++trial) {
         const sim::EpisodeSettings episode = setup.trial(trial);
+        const QString trialLabel = QStringLiteral("run: trial %1/%2").arg(trial + 1).arg(trials);
         if (comparison) {
             // The same trial (seed, perturbation, sensor noise) for the other method.
-            const sim::EpisodeResult other = sim::runEpisode(*plant, *comparison, episode);
+            const sim::EpisodeResult other =
+                runTrial(*plant, *comparison, episode,
+                         trialLabel + QStringLiteral(" (%1)").arg(compareMethod), reported);
             const sim::TrialSummary otherSummary = sim::summarizeTrial(info, demo, other);
             compareRms.push_back(otherSummary.trackingRms);
             comparePathRms.push_back(otherSummary.pathRms);
@@ -138,7 +165,8 @@ int runCommand(const QStringList& arguments) {
                                     .arg(compareMethod)
                                     .arg(otherSummary.trackingRms, 0, 'f', 4);
         }
-        const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, episode);
+        const sim::EpisodeResult result =
+            runTrial(*plant, *controller, episode, trialLabel, reported);
         sim::appendRunLogTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
         rms.push_back(summary.trackingRms);
@@ -176,10 +204,11 @@ int runCommand(const QStringList& arguments) {
                         .arg(core::formatCpuMicroseconds(summary.controllerMicrosecondsPerStep));
         }
         if (trials > 1) {
-            printProgress(QStringLiteral("run: trial %1/%2").arg(trial + 1).arg(trials));
+            printProgress(trialLabel);
+            reported = true;
         }
     }
-    if (trials > 1) {
+    if (reported) {
         printProgress(QString());
     }
     core::FileError error;

@@ -375,6 +375,32 @@ class TestCliCommands : public QObject {
         QVERIFY(file.readAll() == again.readAll());
     }
 
+    void run_longTrialReportsItsProgressOnStderr() {
+        // A 20,000-sample drive (500 s at 40 Hz): the trial says every tenth how far it is, on
+        // stderr only; stdout is the usual one line per trial.
+        QByteArray actions("throttle,steering\n");
+        for (int k = 0; k < 20000; ++k) {
+            const double t = 0.025 * k;
+            actions += QByteArray::number(std::min(1.0, t / 2.0) * 0.25) + ',' +
+                       QByteArray::number(0.35 * std::sin(2.0 * M_PI * t / 23.0)) + '\n';
+        }
+        writeFile(path("long-actions.csv"), actions);
+        QCOMPARE(cli({"simulate", "--plant", "slidecar", "--actions", "long-actions.csv", "--dt",
+                      "0.025", "--out", "long.csv"})
+                     .exitCode,
+                 0);
+        const CliResult r = cli({"run", "--plant", "slidecar", "--demo", "long.csv", "--method",
+                                 "playback", "--out", "long-log.csv"});
+        QCOMPARE(r.exitCode, 0);
+        for (int percent = 10; percent <= 90; percent += 10) {
+            QVERIFY2(r.err.contains(QStringLiteral("run: trial 1/1, %1%").arg(percent)),
+                     qPrintable(r.err));
+        }
+        QVERIFY2(r.out.startsWith("trial 0: final position error ") &&
+                     r.out.endsWith("wrote long-log.csv\n") && r.out.count(u'\n') == 2,
+                 qPrintable(r.out));
+    }
+
     void rig_virtualRunsTheWholeChainHeadless() {
         // Camera -> tracker -> estimator -> PRISCA -> link -> pseudo-terminal -> car, in real
         // time: one trial of the scripted demonstration (about 6 s).
@@ -826,6 +852,16 @@ class TestCliCommands : public QObject {
             << (QStringList{"curve", "--methods", "prisca,pd-selected"} + out)
             << "'pd-selected' has no learning curve";
         QTest::newRow("curve: no out") << QStringList{"curve"} << "--out is required";
+        QTest::newRow("lemma41: a grid of more than a minute")
+            << (QStringList{"lemma41", "--max-h", "1000", "--gamma-steps", "10000"} + out)
+            << "--gamma-steps must lie in [2, 1498] with --max-h 1000, got 10000: the grid "
+               "evaluates gamma-steps x max-h x (max-h + 1) terms";
+        QTest::newRow("lemma41: gamma finer than the figure")
+            << (QStringList{"lemma41", "--gamma-steps", "100000"} + out)
+            << "--gamma-steps must lie in [2, 10001], got 100000: a gamma step of 1e-4";
+        QTest::newRow("lemma41: horizon too long")
+            << (QStringList{"lemma41", "--max-h", "20000"} + out)
+            << "--max-h must lie in [1, 10000], got 20000: the grid's time grows";
         QTest::newRow("run: trials not a number")
             << (QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "prisca",
                             "--trials", "two"} +

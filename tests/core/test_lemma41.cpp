@@ -60,6 +60,7 @@ class TestLemma41 : public QObject {
     void grid_gammaZeroColumnSatisfiedExactlyUpToHorizonEight();
     void grid_isNonTrivial();
     void grid_rejectsInvalidSizes();
+    void grid_reportsItsTermsAfterEachHorizon();
 };
 
 void TestLemma41::variance_matchesBruteForce() {
@@ -185,6 +186,21 @@ void TestLemma41::grid_rejectsInvalidSizes() {
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, lemma41Grid(0, 101));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, lemma41Grid(50, 1));
     QCOMPARE(lemma41SatisfiedCount({}), 0);
+}
+
+void TestLemma41::grid_reportsItsTermsAfterEachHorizon() {
+    // tau' = 2H terms per cell: after horizon h, gammaSteps * h * (h + 1) terms in all.
+    std::vector<long long> done;
+    long long total = 0;
+    const auto cells = lemma41Grid(7, 5, [&](long long d, long long t) {
+        done.push_back(d);
+        total = t;
+    });
+    QCOMPARE(cells.size(), std::size_t{35});
+    QCOMPARE(done, (std::vector<long long>{10, 30, 60, 100, 150, 210, 280}));
+    QCOMPARE(total, 280LL);
+    QCOMPARE(lemma41Terms(7, 5), 280LL);
+    QCOMPARE(lemma41Terms(10000, 10001), 1000200010000LL);  // beyond an int
 }
 
 QTEST_GUILESS_MAIN(TestLemma41)

@@ -1,0 +1,122 @@
+// Linear time in the demonstration's length (make bench): one PRISCA trial on the slide-car,
+// set up, run, logged and scored as `prisca-cli run` does it (sim::makeTask, sim::RunSetup,
+// runEpisode, the run log, summarizeTrial), over demonstrations of 1,000, 10,000 and 100,000
+// samples. Fails if a sample of the longest costs more than 3x a sample of the shortest.
+#include "core/RunLogCsv.h"
+#include "sim/DemonstrationRecorder.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/MethodTuning.h"
+#include "sim/PlantCatalog.h"
+#include "sim/RunLogBuilder.h"
+#include "sim/RunSetup.h"
+#include "sim/Task.h"
+#include "sim/TrialMetrics.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+using namespace prisca;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr double kFlatnessLimit = 3.0;  // 100k per-sample time over 1k per-sample time
+
+double seconds(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// A long drive of the slide-car at 40 Hz under smooth actions: gentle throttle, slow steering
+// waves, so the path loops about a ten-metre area and passes the same places again and again
+// (as a long demonstration in a lab arena does). `samples` rows, recorded from the simulator.
+core::Demonstration longDrive(int samples) {
+    sim::SimulationTiming timing;
+    timing.controlPeriod = 0.025;
+    auto plant = sim::PlantCatalog::create("slidecar", timing);
+    sim::DemonstrationRecorder recorder(plant->info(), timing.controlPeriod);
+    Eigen::VectorXd state = plant->reset(0, sim::Perturbation::none());
+    Eigen::VectorXd action = Eigen::VectorXd::Zero(plant->info().actionDimension());
+    for (int k = 0; k + 1 < samples; ++k) {
+        const double t = k * timing.controlPeriod;
+        const double ramp = std::min(1.0, t / 2.0);
+        action[0] = ramp * (0.25 + 0.05 * std::sin(2.0 * M_PI * t / 37.0));
+        action[1] =
+            ramp * (0.35 * std::sin(2.0 * M_PI * t / 23.0) + 0.1 * std::sin(2.0 * M_PI * t / 7.3));
+        recorder.record(state, action);
+        state = plant->step(action);
+    }
+    recorder.record(state, action);
+    return recorder.demonstration();
+}
+
+struct Timing {
+    double total = 0.0;    // [s] set-up, trial, run log and summary
+    double scoring = 0.0;  // [s] summarizeTrial alone
+};
+
+// One trial as `prisca-cli run` takes it, from the demonstration in memory to its summary.
+Timing runOnce(const std::shared_ptr<const core::Demonstration>& demonstration) {
+    Timing timing;
+    const auto start = Clock::now();
+    const sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::RunSetup setup(sim::makeTask(profile, demonstration), "prisca");
+    auto plant = setup.makePlant();
+    auto controller = setup.makeController();
+    core::RunLog log = setup.startRunLog(*controller, 1, QStringLiteral("in memory"));
+    const sim::EpisodeResult result = sim::runEpisode(*plant, *controller, setup.trial(0));
+    sim::appendRunLogTrial(log, 0, result, demonstration->dt);
+    const auto scoring = Clock::now();
+    const sim::TrialSummary summary = sim::summarizeTrial(plant->info(), *demonstration, result);
+    timing.scoring = seconds(scoring);
+    timing.total = seconds(start);
+    if (!std::isfinite(summary.pathRms)) {
+        std::printf("the trial diverged (path RMS %g)\n", summary.pathRms);
+        std::exit(1);
+    }
+    return timing;
+}
+
+}  // namespace
+
+int main() {
+    struct Size {
+        int samples;
+        int repeats;  // enough for a second or more of trials at each size
+    };
+    std::vector<double> perSample;
+    for (const Size size : {Size{1000, 31}, Size{10000, 5}, Size{100000, 3}}) {
+        const auto demonstration =
+            std::make_shared<const core::Demonstration>(longDrive(size.samples));
+        std::vector<double> totals, scorings;
+        for (int repeat = 0; repeat < size.repeats; ++repeat) {
+            const Timing t = runOnce(demonstration);
+            totals.push_back(t.total);
+            scorings.push_back(t.scoring);
+        }
+        const double total = median(totals), scoring = median(scorings);
+        perSample.push_back(total / size.samples);
+        std::printf(
+            "one PRISCA trial on a %d-sample slide-car demonstration: median %.1f ms, "
+            "%.2f us per sample (scoring %.2f us per sample), %d runs\n",
+            size.samples, 1e3 * total, 1e6 * perSample.back(), 1e6 * scoring / size.samples,
+            size.repeats);
+    }
+    const double ratio = perSample.back() / perSample.front();
+    std::printf("per-sample time, 100,000 over 1,000 samples: %.2fx (limit %.0fx)\n", ratio,
+                kFlatnessLimit);
+    if (!(ratio <= kFlatnessLimit)) {
+        std::printf("FAIL: the time per sample grows with the demonstration's length\n");
+        return 1;
+    }
+    return 0;
+}
