@@ -112,7 +112,7 @@ Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
         return (1.0 - w) * knots.col(j - 1) + w * knots.col(j);
     };
     const PlantInfo& info = copy->info();
-    if (parameters_.objective == OracleParameters::Objective::FinalPose) {
+    if (finalPoseNow_) {
         int t = k;
         while (t < parameters_.trialSteps &&
                !(parameters_.restAfterStep >= 0 && t >= parameters_.restAfterStep &&
@@ -154,9 +154,9 @@ Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
 
 void OracleController::plan(int k) {
     const int m = static_cast<int>(halfRange_.size());
-    const int end = parameters_.objective == OracleParameters::Objective::FinalPose
-                        ? std::max(parameters_.trialSteps, k + 1)
-                        : k + parameters_.horizon;
+    finalPoseNow_ = parameters_.objective == OracleParameters::Objective::FinalPose &&
+                    parameters_.trialSteps - k <= parameters_.finalPoseWindow;
+    const int end = finalPoseNow_ ? std::max(parameters_.trialSteps, k + 1) : k + parameters_.horizon;
     const int remaining = end - k;
     const int spacing =
         std::max(parameters_.knotSpacing,

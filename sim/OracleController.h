@@ -31,6 +31,11 @@ struct OracleParameters {
     int knotSpacing = 10;  ///< control steps between knots of the correction (at least)
     int maxKnots = 8;      ///< knots per channel (>= 2); they spread out over a long remainder
     int horizon = 40;      ///< Tracking: control steps simulated ahead
+    /// FinalPose: the final pose is planned for once the trial's end is at most this many
+    /// control steps ahead; before that the plan tracks (the Tracking objective over `horizon`),
+    /// so a long demonstration costs linear, not quadratic, time. Longer than any parking
+    /// manoeuvre (20 s at 40 Hz), so the Table I trials plan for the final pose throughout.
+    int finalPoseWindow = 800;
     /// FinalPose: the trial's longest length [control steps] and the step from which it ends
     /// once the plant is at rest (EpisodeSettings::duration and stopAtRestAfter).
     int trialSteps = 0;
@@ -96,6 +101,7 @@ class OracleController : public core::Controller, public PlantAware {
     core::ControlStep record_;
     int step_ = 0;
     long long simulatedSteps_ = 0;
+    bool finalPoseNow_ = false;  ///< this plan aims at the final pose (else it tracks)
 };
 
 }  // namespace prisca::sim

@@ -129,6 +129,35 @@ class TestOracle : public QObject {
         QVERIFY(oracle.simulatedSteps() > demo->length());
     }
 
+    // A long demonstration: the plan tracks until the end is within finalPoseWindow, then aims
+    // at the final pose, so the work per control step does not grow with the length (it did:
+    // every plan simulated to the trial's end), and it still parks.
+    void finalPose_onALongDemonstrationCostsTheSamePerStep() {
+        auto perStep = [](int T, double* miss) {
+            auto demo = demonstration(T);
+            GainPoint plant(Eigen::Vector2d(1.3, 0.75));
+            OracleParameters parameters;
+            parameters.objective = OracleParameters::Objective::FinalPose;
+            parameters.trialSteps = demo->length();
+            parameters.finalPoseWindow = 100;
+            OracleController oracle(problemFor(demo, plant.info()), parameters);
+            EpisodeSettings episode;
+            episode.duration = demo->length() * demo->dt;
+            const EpisodeResult result = runEpisode(plant, oracle, episode);
+            const Eigen::Vector2d lot = demo->states.row(demo->length() - 1).head<2>().transpose();
+            *miss = (result.finalState.head<2>() - lot).norm();
+            return static_cast<double>(oracle.simulatedSteps()) / demo->length();
+        };
+        double shortMiss = 0.0, longMiss = 0.0;
+        const double shortCost = perStep(400, &shortMiss);
+        const double longCost = perStep(3200, &longMiss);
+        QVERIFY2(longCost < 1.5 * shortCost,
+                 qPrintable(QStringLiteral("%1 vs %2 simulated steps per step")
+                                .arg(longCost)
+                                .arg(shortCost)));
+        QVERIFY2(longMiss < 1e-2, qPrintable(QString::number(longMiss)));
+    }
+
     void tracking_followsTheTimedPathOfAPlantWithWrongGains() {
         auto demo = demonstration(160);
         GainPoint plant(Eigen::Vector2d(0.8, 1.25));
