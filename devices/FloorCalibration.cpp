@@ -23,6 +23,60 @@ cv::Point2d apply(const cv::Matx33d& h, const cv::Point2d& p) {
 
 }  // namespace
 
+namespace {
+
+// Whether the points determine a homography: the direct linear system (on points normalised to
+// mean 0 and mean distance sqrt(2), which makes its conditioning scale free) has a one-
+// dimensional null space, i.e. its eighth singular value is clearly above zero and above the
+// ninth. Four points in
+// general position give that; points on one line, or all but one on a line, do not.
+bool determined(const std::vector<cv::Point2d>& image, const std::vector<cv::Point2d>& floor) {
+    const auto normalised = [](const std::vector<cv::Point2d>& q) {
+        cv::Point2d mean(0.0, 0.0);
+        for (const cv::Point2d& p : q) {
+            mean += p;
+        }
+        mean *= 1.0 / static_cast<double>(q.size());
+        double spread = 0.0;
+        for (const cv::Point2d& p : q) {
+            spread += cv::norm(p - mean);
+        }
+        spread /= static_cast<double>(q.size());
+        const double scale = spread > 0.0 ? std::sqrt(2.0) / spread : 1.0;
+        std::vector<cv::Point2d> out;
+        for (const cv::Point2d& p : q) {
+            out.push_back((p - mean) * scale);
+        }
+        return out;
+    };
+    const std::vector<cv::Point2d> a = normalised(image), b = normalised(floor);
+    const int n = static_cast<int>(a.size());
+    cv::Mat system(2 * n, 9, CV_64F);
+    for (int i = 0; i < n; ++i) {
+        const double x = a[i].x, y = a[i].y, u = b[i].x, v = b[i].y;
+        const double rows[2][9] = {{-x, -y, -1, 0, 0, 0, u * x, u * y, u},
+                                   {0, 0, 0, -x, -y, -1, v * x, v * y, v}};
+        for (int r = 0; r < 2; ++r) {
+            for (int c = 0; c < 9; ++c) {
+                system.at<double>(2 * i + r, c) = rows[r][c];
+            }
+        }
+    }
+    cv::Mat singular;
+    cv::SVD::compute(system, singular, cv::SVD::NO_UV);
+    if (singular.rows < 8) {
+        return false;
+    }
+    // Determined: the eighth above 0.5 % of the first, and clearly above the ninth. A 4 x 3 grid
+    // of points gives about 30 %, a 20:1 strip 3 %; four of five on a line clicked half a
+    // pixel off give 0.15 % (what is left there is only the clicking noise).
+    const double eighth = singular.at<double>(7);
+    const double ninth = singular.rows > 8 ? singular.at<double>(8) : 0.0;
+    return eighth > 5e-3 * singular.at<double>(0) && eighth > 10.0 * ninth;
+}
+
+}  // namespace
+
 std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<CalibrationPoint>& points,
                                                       QString* error) {
     if (points.size() < 4) {
@@ -31,10 +85,29 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
         return std::nullopt;
     }
     std::vector<cv::Point2d> image, floor;
-    for (const CalibrationPoint& p : points) {
+    for (size_t i = 0; i < points.size(); ++i) {
+        const CalibrationPoint& p = points[i];
         if (!std::isfinite(p.image.x) || !std::isfinite(p.image.y) || !std::isfinite(p.floor.x) ||
             !std::isfinite(p.floor.y)) {
-            *error = QStringLiteral("a calibration point is not a finite number");
+            *error = QStringLiteral("calibration point %1 is not a finite number").arg(i + 1);
+            return std::nullopt;
+        }
+        if (std::abs(p.floor.x) > kMaxFloorMetres || std::abs(p.floor.y) > kMaxFloorMetres) {
+            *error = QStringLiteral("calibration point %1: floor (%2, %3) m is beyond the +-%4 m "
+                                    "a floor can span")
+                         .arg(i + 1)
+                         .arg(p.floor.x, 0, 'g', 4)
+                         .arg(p.floor.y, 0, 'g', 4)
+                         .arg(kMaxFloorMetres);
+            return std::nullopt;
+        }
+        if (std::abs(p.image.x) > kMaxImagePixels || std::abs(p.image.y) > kMaxImagePixels) {
+            *error = QStringLiteral("calibration point %1: image (%2, %3) px is beyond the +-%4 "
+                                    "px of any camera frame")
+                         .arg(i + 1)
+                         .arg(p.image.x, 0, 'g', 4)
+                         .arg(p.image.y, 0, 'g', 4)
+                         .arg(kMaxImagePixels);
             return std::nullopt;
         }
         image.push_back(p.image);
@@ -55,6 +128,13 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
     if (degenerate(image) || degenerate(floor)) {
         *error =
             QStringLiteral("the calibration points lie on one line; spread them over the floor");
+        return std::nullopt;
+    }
+    if (!determined(image, floor)) {
+        *error = QStringLiteral(
+            "the calibration points do not determine the homography: it needs four of them "
+            "with no three on one line (on the floor and in the image); spread them over the "
+            "floor");
         return std::nullopt;
     }
     const cv::Mat h = cv::findHomography(image, floor, 0);
@@ -90,9 +170,6 @@ QString FloorCalibration::homographyProblem() const {
     }
     // Scale-free: a homography is defined up to a factor, so judge it with its largest entry 1.
     const cv::Matx33d h = imageToFloor * (1.0 / largest);
-    if (std::abs(cv::determinant(h)) < 1e-12) {
-        return QStringLiteral("is singular (it folds the image onto a line)");
-    }
     // The image it must map: a VGA frame and the calibration points' extent.
     double u0 = 0.0, v0 = 0.0, u1 = 640.0, v1 = 480.0;
     for (const CalibrationPoint& p : points) {
@@ -124,6 +201,11 @@ QString FloorCalibration::homographyProblem() const {
                 .arg(y, 0, 'g', 3)
                 .arg(kMaxFloorMetres);
         }
+    }
+    // Only now: a huge offset (the image mapped kilometres away) also makes the scaled
+    // determinant tiny, and is the clearer message above.
+    if (std::abs(cv::determinant(h)) < 1e-12) {
+        return QStringLiteral("is singular (it folds the image onto a line)");
     }
     return {};
 }
@@ -161,10 +243,16 @@ QByteArray FloorCalibration::toJson() const {
 std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& json, QString* error) {
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
+    if (parseError.error != QJsonParseError::NoError) {
         *error = QStringLiteral("not valid JSON at byte %1 (%2)")
                      .arg(parseError.offset)
                      .arg(parseError.errorString());
+        return std::nullopt;
+    }
+    if (!doc.isObject()) {
+        *error = QStringLiteral(
+            "valid JSON, but not a floor calibration: it must be an object such as "
+            "{\"homography\": [9 numbers], \"points\": [...]}");
         return std::nullopt;
     }
     const QJsonObject root = doc.object();

@@ -26,7 +26,8 @@ struct FloorCalibration {
                              ///< image point mapped to the floor [m]
 
     /// Fits the homography to the points (least squares over all of them). Needs four or more
-    /// points, no three of the first four on one line. On failure returns nullopt and *error says
+    /// points within kMaxFloorMetres and kMaxImagePixels that determine it (four with no three
+    /// on one line). On failure returns nullopt and *error says
     /// why.
     static std::optional<FloorCalibration> fit(const std::vector<CalibrationPoint>& points,
                                                QString* error);
@@ -34,6 +35,8 @@ struct FloorCalibration {
     /// How far from the origin a floor point may lie [m]; a lab floor is tens of metres, so 1 km
     /// is only a corrupt file.
     static constexpr double kMaxFloorMetres = 1000.0;
+    /// How far from the origin an image point may lie [px]: larger than any sensor.
+    static constexpr double kMaxImagePixels = 100000.0;
     /// Empty when imageToFloor is a homography a ceiling camera can have: finite, not singular,
     /// the image (a 640 x 480 frame and the points' extent) on one side of the
     /// horizon and mapped within kMaxFloorMetres; else what is wrong, for a message.

@@ -50,6 +50,34 @@ class TestLedTracker : public QObject {
             line.push_back({{10.0 * i, 10.0 * i}, {0.1 * i, 0.1 * i}});
         QVERIFY(!FloorCalibration::fit(line, &error));
         QVERIFY(error.contains("one line"));
+        // Four of five on one floor line, clicked half a pixel off in the image: the fit would
+        // be a guess along that line; refused.
+        std::vector<CalibrationPoint> fourOnALine;
+        for (double x : {0.0, 1.0, 2.0, 3.0}) {
+            fourOnALine.push_back({camera.toImage({x, 0.5}), {x, 0.5}});
+        }
+        fourOnALine.push_back({camera.toImage({1.5, 1.5}), {1.5, 1.5}});
+        for (int i = 0; i < 4; ++i) {
+            fourOnALine[i].image.y += (i % 2) ? 0.5 : -0.5;
+        }
+        QVERIFY(!FloorCalibration::fit(fourOnALine, &error));
+        QVERIFY2(error.contains("do not determine"), qPrintable(error));
+        // A narrow strip (4 m x 0.2 m) still determines it.
+        std::vector<CalibrationPoint> strip;
+        for (double x : {0.0, 1.0, 2.0, 3.0, 4.0})
+            for (double y : {0.0, 0.2}) {
+                strip.push_back({camera.toImage({x, y}), {x, y}});
+            }
+        QVERIFY2(FloorCalibration::fit(strip, &error), qPrintable(error));
+        // A point on the floor at 1e300 m, or in the image at 1e300 px: refused by number.
+        std::vector<CalibrationPoint> far = points;
+        far[3].floor.x = 1e300;
+        QVERIFY(!FloorCalibration::fit(far, &error));
+        QVERIFY2(error.contains("calibration point 4: floor (1e+300"), qPrintable(error));
+        far = points;
+        far[2].image.y = -1e300;
+        QVERIFY(!FloorCalibration::fit(far, &error));
+        QVERIFY2(error.contains("calibration point 3: image"), qPrintable(error));
     }
 
     void calibration_jsonRoundTripAndBadFiles() {
@@ -65,7 +93,8 @@ class TestLedTracker : public QObject {
         QVERIFY(error.contains("9 numbers"));
         QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0,0,0,0,0,0,0,0,0]}", &error));
         QVERIFY2(error.contains("all zeros"), qPrintable(error));
-        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [1,2,3,2,4,6,0,0,1]}", &error));
+        QVERIFY(!FloorCalibration::fromJson(
+            "{\"homography\": [0.01,0.02,0,0.02,0.04,0,0,0,1]}", &error));
         QVERIFY2(error.contains("singular"), qPrintable(error));
         // Finite but meaningless: 1e300 m per pixel, a horizon across the image, a negative rms,
         // points that are not numbers.
@@ -87,6 +116,13 @@ class TestLedTracker : public QObject {
         QVERIFY2(error.contains("beyond"), qPrintable(error));
         QVERIFY(!FloorCalibration::fromJson("nonsense", &error));
         QVERIFY(error.contains("not valid JSON"));
+        // Valid JSON that is not an object: said so, not "invalid JSON (no error occurred)".
+        QVERIFY(!FloorCalibration::fromJson("[]", &error));
+        QVERIFY2(error.contains("valid JSON, but not a floor calibration"), qPrintable(error));
+        // An offset of 1e12 m maps the image far away; that is what is said, not "singular".
+        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0.01,0,1e12,0,0.01,0,0,0,1]}",
+                                            &error));
+        QVERIFY2(error.contains("beyond") && !error.contains("singular"), qPrintable(error));
         QTemporaryDir dir;
         QVERIFY(camera.save(dir.filePath("cal.json"), &error));
         QVERIFY(FloorCalibration::load(dir.filePath("cal.json"), &error));
