@@ -109,11 +109,18 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
     const int first = 1;
     const int last = T - 1 - R - d;
     const int K = last - first + 1;
-    if (K < 1) {
+    // As few pairs as the reader accepts samples (4), and more than the unknowns of one state's
+    // regression (its m gains, and its drift with eq. 5 in full): fewer are no fit.
+    const int needed = std::max(4, m + (options.drift ? n : 0) + 1);
+    if (K < needed) {
         throw std::invalid_argument(
-            QStringLiteral("the demonstration has %1 samples, too few to fit with latency %2")
+            QStringLiteral("the demonstration has %1 samples: with latency %2 and response %3 "
+                           "that leaves %4 pairs to fit on, at least %5 are needed")
                 .arg(T)
                 .arg(d)
+                .arg(R)
+                .arg(std::max(K, 0))
+                .arg(needed)
                 .toStdString());
     }
     const double dt = demonstration.dt;

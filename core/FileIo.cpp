@@ -150,9 +150,12 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
     const qint64 written = file.write(bytes);
     if (written != bytes.size() || !file.flush()) {
         // A short write (a full disk, a file-size limit) sets no error string of its own.
+        // A full disk and a file-size limit are worded one way, whichever call noticed them.
         QString reason = file.errorString();
         if (written != bytes.size() || reason.isEmpty() ||
-            reason == QLatin1String("Unknown error")) {
+            reason == QLatin1String("Unknown error") ||
+            reason.contains(QLatin1String("No space left")) ||
+            reason.contains(QLatin1String("File too large"))) {
             reason = written >= 0 && written < bytes.size()
                          ? QStringLiteral("the disk is full (%1 of %2 bytes written)")
                                .arg(written)

@@ -4,6 +4,7 @@
 #include "devices/ThreadHandOff.h"
 #include "devices/ThreadPriority.h"
 
+#include <QFileInfo>
 #include <QLoggingCategory>
 #include <QMetaObject>
 #include <QSerialPort>
@@ -172,12 +173,45 @@ void TransmitterLinkWorker::start(const LinkSettings& settings) {
     emit statusChanged(status_);
 }
 
+QString serialPortPath(const QString& port) {
+    if (port.contains(QLatin1Char('/'))) {
+        return port;
+    }
+    // A bare name: a file of that name here is meant (as for any other path); else the device
+    // of that name, as the serial port library reads it (ttyUSB0 is /dev/ttyUSB0).
+    if (QFileInfo::exists(port)) {
+        return QFileInfo(port).absoluteFilePath();
+    }
+    return QStringLiteral("/dev/") + port;
+}
+
+QString serialPortProblem(const QString& port) {
+    const QString path = serialPortPath(port);
+    const QFileInfo info(path);
+    if (!info.exists()) {
+        return QStringLiteral("%1: no such device (is the transmitter plugged in?)").arg(path);
+    }
+    if (info.isDir()) {
+        return QStringLiteral("%1: is a folder, not a serial device").arg(path);
+    }
+    if (info.isFile()) {
+        return QStringLiteral("%1: is a regular file, not a serial device").arg(path);
+    }
+    return QString();
+}
+
 bool TransmitterLinkWorker::openPort() {
     reconnectClock_.restart();
-    port_->setPortName(settings_.port);
+    const QString path = serialPortPath(settings_.port);
+    if (const QString problem = serialPortProblem(path); !problem.isEmpty()) {
+        status_.connected = false;
+        status_.lastError = problem;
+        return false;
+    }
+    port_->setPortName(path);
     if (!port_->open(QIODevice::ReadWrite)) {
         status_.connected = false;
-        status_.lastError = QStringLiteral("%1: %2").arg(settings_.port, port_->errorString());
+        status_.lastError = QStringLiteral("%1: %2").arg(path, port_->errorString());
         return false;
     }
     const SerialFormat format = defaultSerialFormat(settings_.protocol);

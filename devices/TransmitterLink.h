@@ -36,6 +36,13 @@ struct LinkSettings {
     bool sendOnCommand = false;
 };
 
+/// The device a port name means: a path as given; a bare name is a file of that name in the
+/// working folder if there is one, else /dev/NAME.
+QString serialPortPath(const QString& port);
+/// Empty when the port is something a serial link can open; else why not, naming the path
+/// (missing, a folder, a regular file).
+QString serialPortProblem(const QString& port);
+
 /// Why failsafe is being sent (None: the command is).
 enum class FailsafeReason { None, NoCommand, Stale, EmergencyStop, PoseLost, ControllerFault };
 QString failsafeReasonText(FailsafeReason reason);

@@ -45,6 +45,12 @@ Task fitTask(const CommandLine& line, const QString& demoPath,
              const core::ActionMappingFitOptions& options) {
     const QString plant = line.value("plant");
     core::Demonstration demonstration = readDemonstration(demoPath);
+    if (actionsNeverChange(demonstration)) {
+        throw UsageError(QStringLiteral("%1: the actions never change; B_v is fitted from how "
+                                        "the state answers changes of the actions, so there is "
+                                        "nothing to fit")
+                             .arg(demoPath));
+    }
     const QString named = plant.isEmpty() ? demonstration.plant : plant;
     if (sim::PlantCatalog::contains(named) && !line.isSet("angles") && !line.isSet("pose")) {
         return loadTask(plant, demoPath, line.value("mask"), options);

@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonObject>
 #include <QThread>
 
@@ -67,6 +68,11 @@ int linkCommand(const QStringList& arguments) {
         pulses[c] = us;
     }
 
+    // What cannot be a serial device is said at once (an unplugged device is waited for).
+    if (const QString problem = devices::serialPortProblem(settings.port);
+        !problem.isEmpty() && QFileInfo::exists(devices::serialPortPath(settings.port))) {
+        throw UsageError(problem);
+    }
     installInterruptHandler();
     devices::TransmitterLink link;
     devices::LinkStatus status;

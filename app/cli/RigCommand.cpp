@@ -161,9 +161,19 @@ int rigCommand(const QStringList& arguments) {
             throw UsageError(QStringLiteral("the camera failed: %1").arg(cameraError));
         }
         const rig::RigTrialResult& trial = *last;
+        // Frame-to-command latency: the median, the 99th percentile (nearest rank) and the worst.
         std::vector<double> latency = trial.latencyMs;
         std::sort(latency.begin(), latency.end());
-        const double medianLatency = latency.empty() ? -1.0 : latency[latency.size() / 2];
+        const auto percentile = [&latency](double p) {
+            if (latency.empty()) {
+                return -1.0;
+            }
+            const auto rank = static_cast<size_t>(std::ceil(p / 100.0 * latency.size()));
+            return latency[std::clamp<size_t>(rank, 1, latency.size()) - 1];
+        };
+        const double medianLatency = percentile(50.0);
+        const double p99Latency = percentile(99.0);
+        const double worstLatency = latency.empty() ? -1.0 : latency.back();
         const long long decoded = rig.virtualFramesDecoded() - decodedBefore;
         QJsonObject row{{"trial", t + 1},
                         {"seconds", trial.seconds},
@@ -172,7 +182,9 @@ int rigCommand(const QStringList& arguments) {
                         {"frames", static_cast<double>(trial.frames)},
                         {"framesWithPose", static_cast<double>(trial.framesWithPose)},
                         {"linkFramesDecoded", static_cast<double>(decoded)},
-                        {"medianFrameToCommandMs", medianLatency}};
+                        {"medianFrameToCommandMs", medianLatency},
+                        {"p99FrameToCommandMs", p99Latency},
+                        {"worstFrameToCommandMs", worstLatency}};
         if (trial.parked) {
             row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
             row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
@@ -185,7 +197,7 @@ int rigCommand(const QStringList& arguments) {
                                    .arg(trial.parked->heading * 180.0 / core::kPi, 0, 'f', 1)
                              : QStringLiteral("no pose seen");
             printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
-                                     "frames decoded; frame -> command median %7 ms\n")
+                                     "frames decoded; frame -> command median %7 ms, p99 %8 ms, worst %9 ms\n")
                           .arg(t + 1)
                           .arg(where, trial.stopped ? QStringLiteral(" (stopped early)")
                                       : trial.fault ? QStringLiteral(" (failsafe)")
@@ -193,7 +205,9 @@ int rigCommand(const QStringList& arguments) {
                           .arg(trial.framesWithPose)
                           .arg(trial.frames)
                           .arg(decoded)
-                          .arg(medianLatency, 0, 'f', 2));
+                          .arg(medianLatency, 0, 'f', 2)
+                          .arg(p99Latency, 0, 'f', 2)
+                          .arg(worstLatency, 0, 'f', 2));
         }
     }
     rig.stopCamera();

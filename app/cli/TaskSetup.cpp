@@ -7,6 +7,8 @@
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
 
+#include <cstdio>
+
 namespace prisca::app::cli {
 
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
@@ -60,6 +62,13 @@ Task taskFor(const QString& plant, core::Demonstration demonstration,
         }
         profile.mapping = *parsed;
     }
+    if (actionsNeverChange(demonstration)) {
+        // Playback or PD of it is legitimate; learning from it is not (no stick moved).
+        std::fprintf(stderr,
+                     "prisca-cli: warning: %s: the actions never change, so B_v is fitted from "
+                     "nothing (PRISCA keeps only the signs of B~)\n",
+                     qPrintable(core::printable(demonstrationPath)));
+    }
     try {
         // Checked and fitted as the window's session is (sim::makeTask).
         return sim::makeTask(profile,
@@ -69,6 +78,11 @@ Task taskFor(const QString& plant, core::Demonstration demonstration,
         throw UsageError(
             QStringLiteral("%1: %2").arg(demonstrationPath, QString::fromStdString(e.what())));
     }
+}
+
+bool actionsNeverChange(const core::Demonstration& demonstration) {
+    const Eigen::MatrixXd& u = demonstration.actions;
+    return u.rows() > 0 && (u.rowwise() - u.row(0)).cwiseAbs().maxCoeff() == 0.0;
 }
 
 QString checkedPlant(const QString& name) {

@@ -21,6 +21,9 @@ using Task = sim::Task;
 Task loadTask(const QString& plant, const QString& demonstrationPath, const QString& mask,
               const core::ActionMappingFitOptions& options = {});
 
+/// Whether every sample's action is the first one (nothing to fit B_v on).
+bool actionsNeverChange(const core::Demonstration& demonstration);
+
 /// loadTask() on a demonstration already read (`demonstrationPath` names it in messages).
 Task taskFor(const QString& plant, core::Demonstration demonstration,
              const QString& demonstrationPath, const QString& mask,

@@ -11,10 +11,12 @@
 
 #include "core/FileIo.h"
 #include "devices/PseudoTerminal.h"
+#include "devices/SyntheticCamera.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <pty.h>
 #include <termios.h>
 #include <unistd.h>
@@ -669,6 +671,12 @@ class TestCliCommands : public QObject {
         const QJsonObject trial = out["trials"].toArray().at(0).toObject();
         QVERIFY2(trial["stopped"].toBool(), qPrintable(QJsonDocument(out).toJson()));
         QVERIFY(trial["linkFramesDecoded"].toDouble() > 0);
+        // The frame-to-command latency's median, 99th percentile and worst, in order.
+        const double median = trial["medianFrameToCommandMs"].toDouble(-2.0);
+        const double p99 = trial["p99FrameToCommandMs"].toDouble(-2.0);
+        const double worst = trial["worstFrameToCommandMs"].toDouble(-2.0);
+        QVERIFY2(median >= 0.0 && median <= p99 && p99 <= worst,
+                 qPrintable(QJsonDocument(trial).toJson()));
         const QJsonArray held = out["receiverLastCommand"].toArray();
         QCOMPARE(held.size(), 2);  // steering, throttle
         for (const QJsonValue& u : held) {
@@ -676,6 +684,94 @@ class TestCliCommands : public QObject {
                      qPrintable(QJsonDocument(out).toJson()));
         }
         QVERIFY(out["receiverNeutral"].toBool());
+    }
+
+    // Input that means nothing is refused by name, and every message names the right culprit
+    // (issue 23's probes, each by its own command).
+    void reliability_meaninglessInputIsRefusedByName() {
+        // A start state the physics cannot hold: refused before it reaches it (it aborted).
+        CliResult r = cli({"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1",
+                           "--initial", "0,0,1e300,0,0,0", "--out", "s.csv"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--initial: psi = 1e+300 rad is outside [-10000, 10000] rad"),
+                 qPrintable(r.err));
+        for (const QString plant : {"acrobot", "diffdrive"}) {
+            const QString initial = plant == "acrobot" ? "0,0,1e300,0" : "0,0,1e300,0,0,0";
+            r = cli({"simulate", "--plant", plant, "--zero-action", "--duration", "1", "--initial",
+                     initial, "--out", "s.csv"});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains("--initial:"), qPrintable(r.err));
+        }
+        // A position far off is blamed on --initial, not on the output file.
+        r = cli({"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1",
+                 "--initial", "1e7,0,0,0,0,0", "--out", "s.csv"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--initial: x = 1e+07 m") && !r.err.contains("s.csv"),
+                 qPrintable(r.err));
+        // A latency shift that leaves one pair to fit on (T samples give T - 2 - d pairs).
+        QFile demoFile(path("car.csv"));
+        QVERIFY(demoFile.open(QIODevice::ReadOnly));
+        int samples = 0;
+        for (const QByteArray& row : demoFile.readAll().split('\n')) {
+            samples += !row.isEmpty() && !row.startsWith('#') && !row.startsWith('t') ? 1 : 0;
+        }
+        const QString latency = QString::number(samples - 3);
+        r = cli({"fit", "--demo", "car.csv", "--latency", latency});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("latency " + latency + " and response 1 that leaves 1 pairs") &&
+                     r.err.contains("at least 4 are needed"),
+                 qPrintable(r.err));
+        // A demonstration whose actions never change: no fit; a run says so.
+        QFile source(path("car.csv"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QByteArray constant;
+        for (const QByteArray& row : source.readAll().split('\n')) {
+            if (row.isEmpty() || row.startsWith('#') || row.startsWith('t')) {
+                constant += row + '\n';
+                continue;
+            }
+            QList<QByteArray> fields = row.split(',');
+            fields[fields.size() - 2] = "0.3";  // throttle held
+            fields[fields.size() - 1] = "0";    // steering centred
+            constant += fields.join(',') + '\n';
+        }
+        QVERIFY(prisca::core::writeFileAtomically(path("held.csv"), constant, nullptr));
+        r = cli({"fit", "--demo", "held.csv"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("held.csv: the actions never change"), qPrintable(r.err));
+        r = cli({"run", "--plant", "slidecar", "--demo", "held.csv", "--method", "playback",
+                 "--out", "held-run.csv"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("warning: held.csv: the actions never change"), qPrintable(r.err));
+        // Outputs never replace what is not a regular file.
+        const QString fifo = path("out.fifo");
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        r = cli({"demo", "--plant", "slidecar", "--out", fifo});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(fifo) && r.err.contains("not a regular file"), qPrintable(r.err));
+        QFileInfo stillFifo(fifo);
+        QVERIFY(stillFifo.exists() && !stillFifo.isFile());
+        // A FIFO as the video: refused at once instead of blocking in the decoder's open.
+        const prisca::devices::FloorCalibration floor = prisca::devices::syntheticCeilingCamera();
+        QString error;
+        QVERIFY(floor.save(path("floor.json"), &error));
+        r = cli({"track", "--video", fifo, "--calibration", "floor.json", "--out", "p.csv"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("not a regular file"), qPrintable(r.err));
+        // Valid JSON that is not a calibration.
+        QVERIFY(prisca::core::writeFileAtomically(path("list.json"), "[]", nullptr));
+        r = cli({"track", "--video", "car.csv", "--calibration", "list.json", "--out", "p.csv"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("valid JSON, but not a floor calibration") &&
+                     !r.err.contains("no error occurred"),
+                 qPrintable(r.err));
+        // A bare port name is the file of that name here, and a regular file is no port.
+        QVERIFY(prisca::core::writeFileAtomically(path("A"), "not a device", nullptr));
+        r = cli({"link", "--port", "A", "--channels", "1500"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QDir(dir_.path()).absoluteFilePath("A") +
+                                ": is a regular file, not a serial device"),
+                 qPrintable(r.err));
     }
 
     void link_badInputGivesOneLineAndExitTwo() {
