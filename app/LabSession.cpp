@@ -26,7 +26,7 @@ namespace {
 // are not applied (they would make the new form run away: development cells 3.83 -> 6.01 cm).
 // 3: method parameters as the catalog declares them ("parameters": {"prisca.H": "10", ...});
 // 2 and 1 kept them in per-method objects, still read.
-constexpr int kSessionVersion = 3;
+constexpr int kSessionVersion = 4;
 
 QJsonArray vectorToJson(const Eigen::VectorXd& v) {
     QJsonArray a;
@@ -116,21 +116,53 @@ bool readScales(const QJsonObject& object, const QString& key, core::FeatureMap*
 
 }  // namespace
 
+namespace {
+
+// The scripted operator's demonstration, recorded on the session's car.
+std::shared_ptr<const core::Demonstration> scripted(const QString& plant, const QString& style,
+                                                     std::uint64_t seed,
+                                                     const sim::PlantParameters* parameters) {
+    sim::RecordingConditions conditions;
+    conditions.parameters = parameters;
+    return std::make_shared<core::Demonstration>(
+        sim::DemonstrationStyles::record(plant, style, seed, {}, conditions));
+}
+
+}  // namespace
+
 LabSession::LabSession(QObject* parent) : QObject(parent) {}
+
+void LabSession::setPlantParameters(std::shared_ptr<const sim::PlantParameters> parameters) {
+    if (parameters && parameters->plant != task_.plant) {
+        throw std::invalid_argument(tr("the plant file %1 describes a %2, not a %3")
+                                        .arg(parameters->source, parameters->plant, task_.plant)
+                                        .toStdString());
+    }
+    const bool rerecord = demonstrationSource_.isEmpty();
+    auto demonstration =
+        rerecord ? scripted(task_.plant, scriptedStyle_, scriptedSeed_, parameters.get())
+                 : task_.demonstration;
+    task_ = sim::makeTask(task_.profile, std::move(demonstration), fitOptions_,
+                          std::move(parameters));
+    emit plantParametersChanged();
+    if (rerecord) {
+        emit demonstrationChanged();
+    }
+    emit fitChanged();
+}
 
 void LabSession::setPlant(const QString& plant) {
     if (!sim::PlantCatalog::names().contains(plant)) {
         throw std::invalid_argument(QStringLiteral("unknown plant '%1'").arg(plant).toStdString());
     }
     const QString style = sim::DemonstrationStyles::classic(plant);
-    task_ = sim::makeTask(
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)),
-        std::make_shared<core::Demonstration>(sim::DemonstrationStyles::record(plant, style, 1)),
-        fitOptions_);
+    task_ = sim::makeTask(sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)),
+                          scripted(plant, style, 1, nullptr), fitOptions_);
     scriptedStyle_ = style;
     scriptedSeed_ = 1;
     demonstrationSource_.clear();
     emit plantChanged(task_.plant);
+    emit plantParametersChanged();
     emit demonstrationChanged();
     emit fitChanged();
     emit controllerChanged();
@@ -144,7 +176,8 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     // Checked and fitted before anything changes, as the CLI makes its task (sim::makeTask): a
     // demonstration that is refused leaves the session as it was (its own with its fit).
     try {
-        task_ = sim::makeTask(task_.profile, std::move(demonstration), fitOptions_);
+        task_ = sim::makeTask(task_.profile, std::move(demonstration), fitOptions_,
+                              task_.plantParameters);
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(tr("the demonstration does not fit the %1: %2")
                                         .arg(task_.plant, QString::fromStdString(e.what()))
@@ -172,9 +205,8 @@ void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t se
             tr("the %1 has no demonstration style '%2'").arg(task_.plant, style).toStdString());
     }
     task_ = sim::makeTask(task_.profile,
-                          std::make_shared<core::Demonstration>(
-                              sim::DemonstrationStyles::record(task_.plant, style, seed)),
-                          fitOptions_);
+                          scripted(task_.plant, style, seed, task_.plantParameters.get()),
+                          fitOptions_, task_.plantParameters);
     demonstrationSource_.clear();
     scriptedStyle_ = style;
     scriptedSeed_ = seed;
@@ -188,7 +220,7 @@ void LabSession::setProfile(const sim::MethodTuning& profile) {
         profile.mapping.signs.cols() != task_.profile.mapping.signs.cols() ||
         profile.mapping.signs != task_.profile.mapping.signs;
     if (mappingChanged) {
-        task_ = sim::makeTask(profile, task_.demonstration, fitOptions_);
+        task_ = sim::makeTask(profile, task_.demonstration, fitOptions_, task_.plantParameters);
         emit fitChanged();
     } else {
         task_.profile = profile;
@@ -197,7 +229,7 @@ void LabSession::setProfile(const sim::MethodTuning& profile) {
 }
 
 void LabSession::setFitOptions(const core::ActionMappingFitOptions& options) {
-    task_ = sim::makeTask(task_.profile, task_.demonstration, options);
+    task_ = sim::makeTask(task_.profile, task_.demonstration, options, task_.plantParameters);
     fitOptions_ = options;
     emit fitChanged();
 }
@@ -244,6 +276,15 @@ QByteArray LabSession::toJson() const {
                                {"upper", vectorToJson(task_.profile.info.actionUpper)}}}};
     if (task_.profile.priscaFeatures) {
         root.insert("priscaFeatureScales", scalesToJson(*task_.profile.priscaFeatures));
+    }
+    if (task_.plantParameters) {
+        // The plant file's values themselves, so the session holds the car even when the file
+        // moves; its path names where they came from.
+        root.insert("plantParameters",
+                    QJsonObject{{"source", task_.plantParameters->source},
+                                {"file", QJsonDocument::fromJson(sim::plantParametersJson(
+                                                                     *task_.plantParameters))
+                                             .object()}});
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -456,6 +497,22 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     fitOptions.nonNegative = fit.value("nonNegative").toBool(true);
     fitOptions.robust = fit.value("robust").toBool(true);
 
+    // The plant's physical parameters, as saved (every value checked again).
+    std::shared_ptr<const sim::PlantParameters> plantParameters;
+    if (root.contains("plantParameters")) {
+        const QJsonObject saved = root.value("plantParameters").toObject();
+        const QString savedSource = saved.value("source").toString();
+        QString problem;
+        auto parsed = sim::parsePlantParameters(
+            QJsonDocument(saved.value("file").toObject()).toJson(),
+            savedSource.isEmpty() ? QStringLiteral("plantParameters") : savedSource, plant,
+            &problem);
+        if (!parsed) {
+            return fail(tr("'plantParameters': %1").arg(problem));
+        }
+        plantParameters = std::make_shared<const sim::PlantParameters>(std::move(*parsed));
+    }
+
     // The demonstration: the file the session names, else the plant's scripted one.
     std::shared_ptr<const core::Demonstration> demonstration;
     QString scriptedStyle = sim::DemonstrationStyles::classic(plant);
@@ -484,14 +541,13 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
             return fail(tr("'scriptedSeed' must be a whole number from 0 to 9e15"));
         }
         scriptedSeed = static_cast<std::uint64_t>(seed);
-        demonstration = std::make_shared<core::Demonstration>(
-            sim::DemonstrationStyles::record(plant, scriptedStyle, scriptedSeed));
+        demonstration = scripted(plant, scriptedStyle, scriptedSeed, plantParameters.get());
     }
 
     // The task made as every task is (checked and fitted); only then does the session change.
     sim::Task task;
     try {
-        task = sim::makeTask(profile, std::move(demonstration), fitOptions);
+        task = sim::makeTask(profile, std::move(demonstration), fitOptions, plantParameters);
     } catch (const std::invalid_argument& e) {
         return fail(QString::fromStdString(e.what()));
     }
@@ -505,6 +561,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
                            "tuned for an earlier PRISCA, so today's defaults are used instead.")
                       : QString();
     emit plantChanged(task_.plant);
+    emit plantParametersChanged();
     emit demonstrationChanged();
     emit fitChanged();
     emit controllerChanged();

@@ -32,6 +32,15 @@ class LabSession : public QObject {
     /// demonstration, and fits B_v. Throws std::invalid_argument for an unknown plant.
     void setPlant(const QString& plant);
 
+    /// The plant's physical parameters (a plant file), or null for the catalog's plant.
+    std::shared_ptr<const sim::PlantParameters> plantParameters() const {
+        return task_.plantParameters;
+    }
+    /// Runs on a plant of these physical parameters (null: the catalog's). A scripted
+    /// demonstration is recorded again on it; a demonstration from a file stays. Throws
+    /// std::invalid_argument for another plant's parameters (the session is then unchanged).
+    void setPlantParameters(std::shared_ptr<const sim::PlantParameters> parameters);
+
     /// The demonstration being repeated (never null once a plant is set).
     std::shared_ptr<const core::Demonstration> demonstration() const { return task_.demonstration; }
     /// Where the demonstration came from: a file path, or empty for the scripted one.
@@ -89,6 +98,8 @@ class LabSession : public QObject {
   signals:
     /// The plant changed (everything else changed with it).
     void plantChanged(const QString& plant);
+    /// The plant's physical parameters changed (a plant file loaded or cleared).
+    void plantParametersChanged();
     /// The demonstration changed.
     void demonstrationChanged();
     /// The same demonstration is now named by another file (saved as).

@@ -150,8 +150,9 @@ void RecordPanel::beginRecording() {
                                  .arg(session_.plant(), QDateTime::currentDateTime().toString(
                                                             QStringLiteral("yyyyMMdd-HHmmss")));
     emit recordingStarted();
-    devices::postTo(worker_, [w = worker_, plant = session_.plant(), path = streamPath_] {
-        w->start(plant, path);
+    devices::postTo(worker_, [w = worker_, plant = session_.plant(),
+                              parameters = session_.plantParameters(), path = streamPath_] {
+        w->start(plant, path, parameters);
     });
     recordingClock_.start();
     lastReadoutMs_ = -1000;

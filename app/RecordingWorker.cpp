@@ -23,12 +23,14 @@ RecordingWorker::RecordingWorker(QObject* parent) : QObject(parent), timer_(new 
 
 RecordingWorker::~RecordingWorker() = default;  // the stream flushes and closes itself
 
-void RecordingWorker::start(const QString& plant, const QString& streamPath) {
+void RecordingWorker::start(const QString& plant, const QString& streamPath,
+                            std::shared_ptr<const sim::PlantParameters> parameters) {
     if (active_) {
         stop();
     }
     try {
-        plant_ = sim::PlantCatalog::create(plant);
+        plant_ = parameters ? sim::PlantCatalog::create(*parameters)
+                            : sim::PlantCatalog::create(plant);
     } catch (const std::exception& e) {
         emit failed(QString::fromStdString(e.what()));
         return;

@@ -3,6 +3,7 @@
 #include "app/RunWorker.h"
 #include "core/Demonstration.h"
 #include "core/DemonstrationStream.h"
+#include "sim/PlantParameters.h"
 
 #include <Eigen/Core>
 #include <QElapsedTimer>
@@ -38,7 +39,8 @@ class RecordingWorker : public QObject {
 
   public slots:
     /// Starts driving `plant` from its nominal start, streaming to `streamPath`.
-    void start(const QString& plant, const QString& streamPath);
+    void start(const QString& plant, const QString& streamPath,
+               std::shared_ptr<const sim::PlantParameters> parameters = nullptr);
     /// The operator's input (size m; clamped to the plant's limits).
     void setInput(const Eigen::VectorXd& input);
     /// Ends the recording: flushes and closes the stream, then emits finished().

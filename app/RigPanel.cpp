@@ -438,6 +438,11 @@ void RigPanel::startCamera() {
         const auto demo = session_.demonstration();
         const double dt = demo && demo->dt > 0.0 ? demo->dt : sim::SimulationTiming{}.controlPeriod;
         request.virtualFps = 1.0 / dt;
+        // The virtual car is the session's car (a slide-car's plant file, if one is loaded).
+        if (const auto parameters = session_.plantParameters();
+            parameters && parameters->plant == QLatin1String("slidecar")) {
+            request.virtualPlant = parameters;
+        }
     } else if (source == Source::Device) {
         request.device.device = sourcePath_->text();
         request.device.width = width_->value();

@@ -4,9 +4,11 @@
 #include "core/DemonstrationCsv.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
+#include "sim/PlantParameters.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -33,7 +35,11 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
       styleLabel_(new QLabel(this)),
       style_(new QComboBox(this)),
       seed_(new QSpinBox(this)),
-      scripted_(new QPushButton(this)) {
+      scripted_(new QPushButton(this)),
+      plantFileLabel_(new QLabel(this)),
+      plantFile_(new QLabel(this)),
+      openPlantFile_(new QPushButton(this)),
+      clearPlantFile_(new QPushButton(this)) {
     setObjectName(QStringLiteral("taskPanel"));
     target_->setObjectName(QStringLiteral("target"));
     for (const QString& name : sim::PlantCatalog::names()) {
@@ -49,8 +55,19 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     seed_->setRange(0, 999999);
     seed_->setValue(1);
 
+    plantFile_->setObjectName(QStringLiteral("plantFileInfo"));
+    plantFile_->setWordWrap(true);
+    plantFile_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    openPlantFile_->setObjectName(QStringLiteral("openPlantFile"));
+    clearPlantFile_->setObjectName(QStringLiteral("clearPlantFile"));
+
     auto* form = new QFormLayout;
     form->addRow(targetLabel_, target_);
+    auto* plantFile = new QHBoxLayout;
+    plantFile->addWidget(plantFile_, 1);
+    plantFile->addWidget(openPlantFile_);
+    plantFile->addWidget(clearPlantFile_);
+    form->addRow(plantFileLabel_, plantFile);
     auto* scripted = new QHBoxLayout;
     scripted->addWidget(style_, 1);
     scripted->addWidget(seed_);
@@ -75,6 +92,12 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     connect(open_, &QPushButton::clicked, this, &TaskPanel::askOpen);
     connect(save_, &QPushButton::clicked, this, &TaskPanel::askSave);
     connect(scripted_, &QPushButton::clicked, this, &TaskPanel::useScripted);
+    connect(openPlantFile_, &QPushButton::clicked, this, &TaskPanel::askOpenPlantParameters);
+    connect(clearPlantFile_, &QPushButton::clicked, this, [this] {
+        session_.setPlantParameters(nullptr);
+    });
+    connect(&session_, &LabSession::plantParametersChanged, this,
+            &TaskPanel::showPlantParameters);
     connect(&session_, &LabSession::plantChanged, this, [this](const QString& plant) {
         target_->setCurrentIndex(target_->findData(plant));
         fillStyles();
@@ -170,6 +193,49 @@ bool TaskPanel::openDemonstration(const QString& path) {
     return true;
 }
 
+bool TaskPanel::openPlantParameters(const QString& path) {
+    QString error;
+    auto parameters = sim::readPlantParameters(path, session_.plant(), &error);
+    if (!parameters) {
+        QMessageBox::warning(this, tr("Open plant file"),
+                             tr("The plant file could not be used.\n\n%1").arg(error));
+        return false;
+    }
+    try {
+        session_.setPlantParameters(
+            std::make_shared<const sim::PlantParameters>(std::move(*parameters)));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Open plant file"),
+                             tr("%1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    QSettings().setValue(QStringLiteral("task/plantFileDirectory"),
+                         QFileInfo(path).absolutePath());
+    return true;
+}
+
+void TaskPanel::askOpenPlantParameters() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open plant file"), QSettings().value("task/plantFileDirectory").toString(),
+        tr("Plant files (*.json);;All files (*)"));
+    if (!path.isEmpty()) {
+        openPlantParameters(path);
+    }
+}
+
+void TaskPanel::showPlantParameters() {
+    const auto parameters = session_.plantParameters();
+    clearPlantFile_->setEnabled(parameters != nullptr);
+    if (!parameters) {
+        plantFile_->setText(tr("the catalog's"));
+        plantFile_->setToolTip(QString());
+        return;
+    }
+    plantFile_->setText(QFileInfo(parameters->source).fileName());
+    plantFile_->setToolTip(QStringLiteral("%1\n\n%2").arg(
+        QDir::toNativeSeparators(parameters->source), sim::plantParametersText(*parameters)));
+}
+
 void TaskPanel::askOpen() {
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open demonstration"), QSettings().value("task/lastDirectory").toString(),
@@ -241,6 +307,14 @@ void TaskPanel::retranslateUi() {
            "how far and how fast (hover over a style for its description)"));
     seed_->setToolTip(tr("Seed of the operator's hand variation"));
     seed_->setPrefix(tr("seed "));
+    plantFileLabel_->setText(tr("Physical parameters:"));
+    openPlantFile_->setText(tr("Load..."));
+    openPlantFile_->setToolTip(
+        tr("Load a plant file: the car's mass, wheelbase, grip, motor, steering and servo "
+           "(prisca-cli plant --plant NAME --print-params --format json writes one to edit)"));
+    clearPlantFile_->setText(tr("Catalog"));
+    clearPlantFile_->setToolTip(tr("Go back to the catalog's plant"));
+    showPlantParameters();
     scripted_->setText(tr("Use scripted"));
     scripted_->setToolTip(
         tr("Use the scripted operator's demonstration in the chosen style and seed"));

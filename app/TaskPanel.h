@@ -11,7 +11,8 @@ namespace prisca::app {
 
 class LabSession;
 
-/// The target (simulated slide-car, acrobot or aircraft) and the demonstration to repeat:
+/// The target (simulated slide-car, acrobot or aircraft), its physical parameters (the
+/// catalog's or a plant file's) and the demonstration to repeat:
 /// which one is loaded, open one from a CSV file, save it, or take the scripted operator's in
 /// one of the plant's styles (keyboard or stick, left or right, ...) with a seed.
 /// A file that cannot be used gets a message box naming the file and the problem.
@@ -23,6 +24,9 @@ class TaskPanel : public QWidget {
     /// Opens a demonstration CSV into the session; on failure shows a message box and leaves
     /// the session as it was. Returns whether it was loaded.
     bool openDemonstration(const QString& path);
+    /// Loads a plant file (the plant's physical parameters) into the session; on failure shows
+    /// a message box naming the file, the key and the range, and leaves the session as it was.
+    bool openPlantParameters(const QString& path);
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -36,6 +40,8 @@ class TaskPanel : public QWidget {
     /// A demonstration style's name as shown in the window's language.
     static QString styleLabel(const QString& name);
     void useScripted();
+    void showPlantParameters();
+    void askOpenPlantParameters();
 
     LabSession& session_;
     QLabel* targetLabel_;
@@ -47,6 +53,10 @@ class TaskPanel : public QWidget {
     QComboBox* style_;
     QSpinBox* seed_;
     QPushButton* scripted_;
+    QLabel* plantFileLabel_;
+    QLabel* plantFile_;
+    QPushButton* openPlantFile_;
+    QPushButton* clearPlantFile_;
 };
 
 }  // namespace prisca::app

@@ -141,6 +141,16 @@ bool RigSession::startCamera(const CameraRequest& request, QString* error) {
                 }
                 car_ = car;
             }
+            if (car_->plant() != request.virtualPlant) {
+                try {
+                    car_->usePlant(request.virtualPlant);
+                } catch (const std::exception& e) {
+                    if (error) {
+                        *error = QString::fromUtf8(e.what());
+                    }
+                    return false;
+                }
+            }
             car_->reset(1);
             source = devices::makeSyntheticSource(
                 [car = car_](double t) {

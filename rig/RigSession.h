@@ -8,6 +8,7 @@
 #include "devices/FloorCalibration.h"
 #include "devices/TransmitterLink.h"
 #include "sim/Plant.h"
+#include "sim/PlantParameters.h"
 #include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
@@ -45,6 +46,8 @@ struct CameraRequest {
     /// rate, one frame per control step).
     double virtualFps = 0.0;
     double virtualPerturbation = 1.0;  ///< the virtual car's (start offsets, friction, gains)
+    /// The virtual car's physical parameters (a plant file); null: the catalog's slide-car.
+    std::shared_ptr<const sim::PlantParameters> virtualPlant;
 };
 
 /// One trial on the rig.

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace prisca::rigsim {
 
@@ -39,6 +40,23 @@ bool VirtualCar::open(QString* error) {
     fcntl(master_, F_SETFL, fcntl(master_, F_GETFL) | O_NONBLOCK);
     path_ = QString::fromLocal8Bit(name);
     return true;
+}
+
+void VirtualCar::usePlant(std::shared_ptr<const sim::PlantParameters> parameters) {
+    if (parameters && parameters->plant != QLatin1String("slidecar")) {
+        throw std::invalid_argument("the virtual rig drives a slide-car");
+    }
+    auto car = parameters ? sim::PlantCatalog::create(*parameters)
+                          : sim::PlantCatalog::create(QStringLiteral("slidecar"));
+    std::lock_guard<std::mutex> lock(mutex_);
+    car_ = std::move(car);
+    parameters_ = std::move(parameters);
+    resetLocked(1);
+}
+
+std::shared_ptr<const sim::PlantParameters> VirtualCar::plant() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return parameters_;
 }
 
 void VirtualCar::reset(std::uint64_t seed) {

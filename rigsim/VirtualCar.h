@@ -4,6 +4,7 @@
 #include "devices/LedTracker.h"
 #include "devices/RcProtocols.h"
 #include "sim/Plant.h"
+#include "sim/PlantParameters.h"
 
 #include <QString>
 
@@ -26,6 +27,12 @@ class VirtualCar {
     ~VirtualCar();
     VirtualCar(const VirtualCar&) = delete;
     VirtualCar& operator=(const VirtualCar&) = delete;
+
+    /// Drives a car of these physical parameters from the next reset on (null: the catalog's
+    /// slide-car). std::invalid_argument for another plant's parameters. Any thread.
+    void usePlant(std::shared_ptr<const sim::PlantParameters> parameters);
+    /// The parameters of the car driven (null: the catalog's). Any thread.
+    std::shared_ptr<const sim::PlantParameters> plant() const;
 
     /// Opens the pseudo-terminal; false with *error on failure.
     bool open(QString* error);
@@ -59,6 +66,7 @@ class VirtualCar {
     devices::ChannelMap channels_;
     double perturbation_;
     std::unique_ptr<sim::Plant> car_;
+    std::shared_ptr<const sim::PlantParameters> parameters_;
     devices::RcFrameDecoder decoder_;
     Eigen::VectorXd state_;
     Eigen::VectorXd action_;

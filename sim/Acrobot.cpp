@@ -7,6 +7,7 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 
@@ -153,13 +154,19 @@ Eigen::VectorXd Acrobot::reset(std::uint64_t seed, const Perturbation& perturbat
 
     AcrobotConstants c = parameters_.links;
     // Clamped so that a wild draw at a large level still leaves a physical arm.
+    // Session model: the day's payload and joint friction, the same every trial of the day.
+    std::optional<SessionDay> day;
+    if (perturbation.session()) {
+        day.emplace(perturbation);
+    }
+    auto draw1 = [&] { return day ? day->normal() : normal(draw); };
     const double massScale =
-        std::clamp(1.0 + kLink2MassStd * perturbation.parameters * normal(draw), 0.5, 1.5);
+        std::clamp(1.0 + kLink2MassStd * perturbation.parameters * draw1(), 0.5, 1.5);
     c.m2 *= massScale;
     c.I2 *= massScale;
     trialEquations_.constants = c;
     trialJointDamping_ = parameters_.jointDamping +
-                         kJointFrictionScale * std::abs(perturbation.parameters * normal(draw));
+                         kJointFrictionScale * std::abs(perturbation.parameters * draw1());
     actuatorNoise_ = kActuatorNoiseFraction * parameters_.torqueLimit *
                      std::max(0.0, perturbation.actuatorNoise);
     noise_.seed(mixSeed(seed, 1));

@@ -43,9 +43,10 @@ core::Demonstration AcrobotDemonstrator::record(std::uint64_t seed,
 
 core::Demonstration AcrobotDemonstrator::record(std::uint64_t seed, const Script& script,
                                                 const SimulationTiming& timing,
-                                                const AcrobotParameters& arm) {
+                                                const AcrobotParameters& arm,
+    const Perturbation& conditions) {
     Acrobot plant(arm, timing);
-    plant.reset(seed, Perturbation::none());
+    plant.reset(seed, conditions);
     DemonstrationRecorder recorder(plant.info(), timing.controlPeriod);
 
     const double omega = 2.0 * kPi / script.period;

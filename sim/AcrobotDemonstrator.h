@@ -40,7 +40,8 @@ class AcrobotDemonstrator {
     /// The same with a given script and arm.
     static core::Demonstration record(std::uint64_t seed, const Script& script,
                                       const SimulationTiming& timing = {},
-                                      const AcrobotParameters& arm = {});
+                                      const AcrobotParameters& arm = {},
+                                      const Perturbation& conditions = Perturbation::none());
 };
 
 }  // namespace prisca::sim

@@ -39,7 +39,8 @@ enum class Phase { Straight, Turn, FinalStraight };
 
 core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,
-                                                 const PlanarAircraftParameters& parameters) {
+                                                 const PlanarAircraftParameters& parameters,
+    const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;
@@ -67,7 +68,7 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
     HandTremor throttleTremor(0.015 * j, 1.0, dt, mixSeed(seed, 102));
 
     PlanarAircraft aircraft(parameters, timing);
-    Eigen::VectorXd state = aircraft.reset(seed, Perturbation::none());
+    Eigen::VectorXd state = aircraft.reset(seed, conditions);
     DemonstrationRecorder recorder(aircraft.info(), dt);
 
     const double trim = PlanarAircraft::trimThrottle(parameters, script.cruiseSpeed);

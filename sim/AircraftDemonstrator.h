@@ -45,7 +45,8 @@ class AircraftDemonstrator {
     /// variation. The nominal start: origin, heading 0, 17 m/s.
     static core::Demonstration record(std::uint64_t seed, const Script& script,
                                       const SimulationTiming& timing = {},
-                                      const PlanarAircraftParameters& aircraft = {});
+                                      const PlanarAircraftParameters& aircraft = {},
+                                      const Perturbation& conditions = Perturbation::none());
     static core::Demonstration record(std::uint64_t seed, const SimulationTiming& timing = {}) {
         return record(seed, Script{}, timing);
     }

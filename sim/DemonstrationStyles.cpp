@@ -1,5 +1,7 @@
 #include "DemonstrationStyles.h"
 
+#include "PlantParameters.h"
+
 #include "core/DeviationModel.h"
 
 #include "PlantCatalog.h"
@@ -208,53 +210,65 @@ QString DemonstrationStyles::classic(const QString& plant) {
 namespace {
 
 // The script of a style, recorded by its plant's demonstrator.
-template <class Demonstrator, class Script>
+template <class Demonstrator, class Script, class Typed>
 core::Demonstration recordStyle(const std::vector<Style<Script>>& styles, const QString& plant,
                                 const QString& style, std::uint64_t seed,
-                                const SimulationTiming& timing) {
+                                const SimulationTiming& timing,
+                                const RecordingConditions& conditions,
+                                Typed (*typed)(const PlantParameters&)) {
     const Style<Script>* s = find(styles, style);
     if (!s) {
         unknownStyle(plant, style);
     }
     Script script;
     s->adjust(script);
-    return Demonstrator::record(seed, script, timing);
+    return Demonstrator::record(seed, script, timing,
+                                conditions.parameters ? typed(*conditions.parameters) : Typed{},
+                                conditions.perturbation);
 }
 
 }  // namespace
 
 StyleSet slideCarStyles() {
     return {[] { return describe(carStyles()); },
-            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
+               const RecordingConditions& conditions) {
                 return recordStyle<SlideCarDemonstrator>(carStyles(), QStringLiteral("slidecar"),
-                                                         style, seed, timing);
+                                                         style, seed, timing, conditions, &slideCarParameters);
             }};
 }
 
 StyleSet acrobotStyles() {
     return {[] { return describe(armStyles()); },
-            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
+               const RecordingConditions& conditions) {
                 return recordStyle<AcrobotDemonstrator>(armStyles(), QStringLiteral("acrobot"),
-                                                        style, seed, timing);
+                                                        style, seed, timing, conditions, &acrobotParameters);
             }};
 }
 
 StyleSet aircraftStyles() {
     return {[] { return describe(pilotStyles()); },
-            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+            [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
+               const RecordingConditions& conditions) {
                 return recordStyle<AircraftDemonstrator>(pilotStyles(), QStringLiteral("aircraft"),
-                                                         style, seed, timing);
+                                                         style, seed, timing, conditions, &aircraftParameters);
             }};
 }
 
 core::Demonstration DemonstrationStyles::record(const QString& plant, const QString& style,
-                                                std::uint64_t seed,
-                                                const SimulationTiming& timing) {
+                                                std::uint64_t seed, const SimulationTiming& timing,
+                                                const RecordingConditions& conditions) {
     const PlantEntry* entry = PlantCatalog::find(plant);
     if (!entry || !entry->styles.record) {
         unknownStyle(plant, style);
     }
-    core::Demonstration demonstration = entry->styles.record(style, seed, timing);
+    if (conditions.parameters && conditions.parameters->plant != plant) {
+        throw std::invalid_argument(QStringLiteral("a %1 demonstration recorded with %2 parameters")
+                                        .arg(plant, conditions.parameters->plant)
+                                        .toStdString());
+    }
+    core::Demonstration demonstration = entry->styles.record(style, seed, timing, conditions);
     demonstration.metadata.insert(QStringLiteral("style"), style);
     return demonstration;
 }

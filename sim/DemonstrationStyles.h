@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Plant.h"
+#include "PlantParameters.h"
 #include "core/Demonstration.h"
 
 #include <QString>
@@ -17,11 +18,21 @@ struct DemonstrationStyle {
     QString description;  ///< one line for the operator
 };
 
+/// The plant a demonstration is recorded on, beyond its operator's script. Plain data.
+struct RecordingConditions {
+    /// The plant's physical parameters (a plant file); null: the catalog's plant.
+    const PlantParameters* parameters = nullptr;
+    /// What the plant meets while recorded: none (the nominal plant) or a session day's
+    /// mismatch (Perturbation::dayOf), so the demonstration is the day's car's.
+    Perturbation perturbation;
+};
+
 /// One plant's styles: their list and how one is recorded (PlantCatalog holds one per plant).
 struct StyleSet {
     std::vector<DemonstrationStyle> (*list)() = nullptr;
     core::Demonstration (*record)(const QString& style, std::uint64_t seed,
-                                  const SimulationTiming& timing) = nullptr;
+                                  const SimulationTiming& timing,
+                                  const RecordingConditions& conditions) = nullptr;
 };
 
 /// The slide-car's, the acrobot's and the aircraft's styles (their scripted operators).
@@ -50,7 +61,8 @@ class DemonstrationStyles {
     /// Records the demonstration of this style with this seed's hand variation. Throws
     /// std::invalid_argument naming the known styles for an unknown plant or style.
     static core::Demonstration record(const QString& plant, const QString& style,
-                                      std::uint64_t seed, const SimulationTiming& timing = {});
+                                      std::uint64_t seed, const SimulationTiming& timing = {},
+                                      const RecordingConditions& conditions = {});
 };
 
 }  // namespace prisca::sim

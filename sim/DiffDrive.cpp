@@ -75,9 +75,24 @@ Eigen::VectorXd DiffDrive::reset(std::uint64_t seed, const Perturbation& perturb
     const double y = 0.02 * s0 * normal(draw);
     const double psi = 0.0349 * s0 * normal(draw);
     const double sp = perturbation.parameters;
-    wheelGain_[0] = std::clamp(1.0 + 0.05 * sp * normal(draw), 0.5, 1.5);
-    wheelGain_[1] = std::clamp(1.0 + 0.05 * sp * normal(draw), 0.5, 1.5);
-    frictionScale_ = std::clamp(1.0 + 0.10 * sp * normal(draw), 0.5, 1.5);
+    if (perturbation.session()) {
+        // The day's robot: unequal wheels and the floor's grip drawn once, the battery sagging
+        // (both wheels' gain falling 0.2 % per trial), the grip varying 3 % per trial.
+        SessionDay day(perturbation);
+        const double left = 0.05 * sp * day.normal();
+        const double right = 0.05 * sp * day.normal();
+        const double friction = 0.10 * sp * day.normal();
+        const double sag = day.drift(0.002 * sp);
+        std::mt19937_64 trialDraw(mixSeed(seed, 3));
+        wheelGain_[0] = std::clamp((1.0 + left) * (1.0 - sag), 0.5, 1.5);
+        wheelGain_[1] = std::clamp((1.0 + right) * (1.0 - sag), 0.5, 1.5);
+        frictionScale_ =
+            std::clamp((1.0 + friction) * (1.0 + 0.03 * sp * normal(trialDraw)), 0.5, 1.5);
+    } else {
+        wheelGain_[0] = std::clamp(1.0 + 0.05 * sp * normal(draw), 0.5, 1.5);
+        wheelGain_[1] = std::clamp(1.0 + 0.05 * sp * normal(draw), 0.5, 1.5);
+        frictionScale_ = std::clamp(1.0 + 0.10 * sp * normal(draw), 0.5, 1.5);
+    }
     actuatorNoise_ = 0.02 * perturbation.actuatorNoise;
     noise_.seed(mixSeed(seed, 1));
     build(x, y, psi, 0, 0, 0);

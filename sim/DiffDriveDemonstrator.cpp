@@ -1,6 +1,7 @@
 #include "DiffDriveDemonstrator.h"
 
 #include "DemonstrationRecorder.h"
+#include "PlantParameters.h"
 #include "ScriptedInput.h"
 
 #include <algorithm>
@@ -63,7 +64,8 @@ const std::vector<Style>& styles() {
 
 core::Demonstration DiffDriveDemonstrator::record(std::uint64_t seed, const Script& script,
                                                   const SimulationTiming& timing,
-                                                  const DiffDriveParameters& parameters) {
+                                                  const DiffDriveParameters& parameters,
+    const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;
@@ -80,7 +82,7 @@ core::Demonstration DiffDriveDemonstrator::record(std::uint64_t seed, const Scri
     const double anticipation = 0.8 * turnRate * (script.turnSpeed > 0.0 ? 1.0 : 0.6);
 
     DiffDrive robot(parameters, timing);
-    robot.reset(seed, Perturbation::none());
+    robot.reset(seed, conditions);
     DemonstrationRecorder recorder(robot.info(), dt);
 
     // Phases: 0 straight, 1 turn, 2 turn back (S-bend), 3 last straight, 4 stop.
@@ -161,12 +163,17 @@ StyleSet diffDriveStyles() {
             }
             return out;
         },
-        [](const QString& style, std::uint64_t seed, const SimulationTiming& timing) {
+        [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
+           const RecordingConditions& conditions) {
             for (const Style& s : styles()) {
                 if (style == QLatin1String(s.name)) {
                     DiffDriveDemonstrator::Script script;
                     s.adjust(script);
-                    return DiffDriveDemonstrator::record(seed, script, timing);
+                    return DiffDriveDemonstrator::record(
+                        seed, script, timing,
+                        conditions.parameters ? diffDriveParameters(*conditions.parameters)
+                                              : DiffDriveParameters{},
+                        conditions.perturbation);
                 }
             }
             QStringList known;

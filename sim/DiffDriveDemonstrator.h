@@ -41,7 +41,8 @@ class DiffDriveDemonstrator {
     /// Records one demonstration on a nominal robot with this seed's hand variation.
     static core::Demonstration record(std::uint64_t seed, const Script& script,
                                       const SimulationTiming& timing = {},
-                                      const DiffDriveParameters& robot = {});
+                                      const DiffDriveParameters& robot = {},
+                                      const Perturbation& conditions = Perturbation::none());
 };
 
 /// The differential-drive robot's demonstration styles (its PlantCatalog entry holds them).

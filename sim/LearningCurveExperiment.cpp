@@ -90,6 +90,7 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
                                                     &theta);
                 EpisodeSettings episode = setup.episode();
                 episode.seed = mixSeed(runSeed, 1000 + scenario);
+                episode.perturbation.trialIndex = scenario;
                 const EpisodeResult result =
                     runEpisode(*plant, *policy, episode, settings.cancelled);
                 return core::EpisodeOutcome{result.meanCost, result.stepCount};
@@ -111,6 +112,7 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
                                                     &pegasus.theta());
                 EpisodeSettings episode = setup.episode();
                 episode.seed = mixSeed(runSeed, 5000 + static_cast<std::uint64_t>(curve.size()));
+                episode.perturbation.trialIndex = static_cast<int>(curve.size());
                 const EpisodeResult evaluation =
                     runEpisode(*plant, *policy, episode, settings.cancelled);
                 const double mean = meanSquaredTracking(info, *demonstration, evaluation);
@@ -127,6 +129,7 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
                 }
                 EpisodeSettings episode = setup.episode();
                 setTrial(episode, runSeed, trial);
+                episode.perturbation.trialIndex = trial;
                 const EpisodeResult result =
                     runEpisode(*plant, *controller, episode, settings.cancelled);
                 if (result.cancelled) {
@@ -197,11 +200,13 @@ LearningCurveProtocolResult runLearningCurveProtocol(
             if (cellStarted) {
                 cellStarted(result.cells + 1, cellCount, settings.styles[s], set);
             }
-            const Task task =
-                makeTask(profile,
-                         std::make_shared<core::Demonstration>(
-                             DemonstrationStyles::record(plant, settings.styles[s], set)),
-                         settings.fit);
+            const Task task = makeTask(
+                profile,
+                std::make_shared<core::Demonstration>(DemonstrationStyles::record(
+                    plant, settings.styles[s], set, {},
+                    demonstrationConditions(settings.curves.run, profile,
+                                            settings.plantParameters.get(), set))),
+                settings.fit, settings.plantParameters);
             LearningCurveSettings cell = settings.curves;
             cell.run.seed = set;
             const std::vector<MethodCurves> curves = runLearningCurves(cell, task);

@@ -60,6 +60,8 @@ struct LearningCurveProtocolSettings {
     QStringList styles;            ///< demonstration styles of the profile's plant
     std::vector<std::uint64_t> seedSets;
     core::ActionMappingFitOptions fit;  ///< how B_v is fitted on each demonstration
+    /// The plant's physical parameters (a plant file); null: the catalog's plant.
+    std::shared_ptr<const PlantParameters> plantParameters;
 };
 
 /// What the protocol produced: every cell's runs pooled per method, and per style.

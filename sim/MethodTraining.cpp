@@ -41,8 +41,8 @@ core::PdParameters selectPdGains(const RunSetup& setup, const TrainingHooks& hoo
         auto plant = setup.makePlant();
         auto controller = MethodCatalog::create(QStringLiteral("pd"), profile, task.demonstration,
                                                 task.fit.b);
-        EpisodeSettings episode = setup.episode();
-        episode.seed = seedList[index % seeds];
+        EpisodeSettings episode = setup.trainingTrial(index % seeds);
+        episode.resetMode = core::ResetMode::Cold;
         episode.recordSteps = false;
         const EpisodeResult result = runEpisode(*plant, *controller, episode, hooks.cancelled);
         return tuningScore(plant->info(), summarizeTrial(plant->info(), *task.demonstration, result));
@@ -99,8 +99,8 @@ PegasusTraining trainPegasus(const RunSetup& setup, int iterations, const Traini
         auto plant = setup.makePlant();
         auto policy = MethodCatalog::create(QStringLiteral("pegasus"), task.profile,
                                             task.demonstration, task.fit.b, &theta);
-        EpisodeSettings episode = setup.episode();
-        episode.seed = seeds[scenario];
+        EpisodeSettings episode = setup.trainingTrial(scenario);
+        episode.resetMode = core::ResetMode::Cold;
         episode.recordSteps = false;
         const EpisodeResult result = runEpisode(*plant, *policy, episode, hooks.cancelled);
         return core::EpisodeOutcome{result.meanCost, result.stepCount};

@@ -142,6 +142,18 @@ Eigen::VectorXd PlanarAircraft::reset(std::uint64_t seed, const Perturbation& pe
     // Clamped so that a large level still leaves an aircraft that can fly.
     thrustScale_ = std::clamp(1.0 + kThrustDragSpan * sp * uniform(draw), 0.5, 1.5);
     dragScale_ = std::clamp(1.0 + kThrustDragSpan * sp * uniform(draw), 0.5, 1.5);
+    if (perturbation.session()) {
+        // The day's aircraft: its propeller and airframe drawn once for the day (the same span
+        // as a trial's, from the day's normals clamped to it), the battery sagging 0.2 % of
+        // thrust per trial; the wind stays the trial's weather.
+        SessionDay day(perturbation);
+        const double thrust = std::clamp(day.normal() / 1.7320508, -1.0, 1.0);
+        const double drag = std::clamp(day.normal() / 1.7320508, -1.0, 1.0);
+        thrustScale_ = std::clamp((1.0 + kThrustDragSpan * sp * thrust) *
+                                      (1.0 - day.drift(0.002 * sp)),
+                                  0.5, 1.5);
+        dragScale_ = std::clamp(1.0 + kThrustDragSpan * sp * drag, 0.5, 1.5);
+    }
     throttleNoise_ = kActuatorNoise * (info_.actionUpper[0] - info_.actionLower[0]) *
                      std::max(0.0, perturbation.actuatorNoise);
     rudderNoise_ = kActuatorNoise * (info_.actionUpper[1] - info_.actionLower[1]) *

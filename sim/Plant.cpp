@@ -1,5 +1,6 @@
 #include "Plant.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace prisca::sim {
@@ -48,6 +49,37 @@ std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t stream) {
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
+}
+
+QString perturbationModelName(Perturbation::Model model) {
+    return model == Perturbation::Model::Session ? QStringLiteral("session")
+                                                 : QStringLiteral("trial");
+}
+
+std::optional<Perturbation::Model> perturbationModelFromName(const QString& name) {
+    if (name == QLatin1String("session")) {
+        return Perturbation::Model::Session;
+    }
+    if (name == QLatin1String("trial")) {
+        return Perturbation::Model::Trial;
+    }
+    return std::nullopt;
+}
+
+SessionDay::SessionDay(const Perturbation& perturbation)
+    : state_(mixSeed(perturbation.day, 0x5E55)), trialIndex_(std::max(0, perturbation.trialIndex)) {}
+
+double SessionDay::normal() {
+    // Box-Muller on two splitmix64 draws: a fixed, library-independent sequence per day.
+    state_ = mixSeed(state_, 1);
+    const double u1 = (static_cast<double>(state_ >> 11) + 0.5) * 0x1.0p-53;
+    state_ = mixSeed(state_, 2);
+    const double u2 = (static_cast<double>(state_ >> 11) + 0.5) * 0x1.0p-53;
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
+}
+
+double SessionDay::drift(double perTrial) const {
+    return std::min(0.5, std::max(0.0, perTrial) * trialIndex_);
 }
 
 }  // namespace prisca::sim

@@ -27,12 +27,57 @@ struct SimulationTiming {
 /// "realistic lab" level (documented by each plant): 0 is the nominal plant, 1 the realistic
 /// level, 2 twice that. Everything drawn from it comes from the trial seed.
 struct Perturbation {
+    /// How the parameter variation is spread over a run's trials.
+    enum class Model {
+        /// Every trial draws its own variation, mean zero: nothing persists from trial to trial.
+        Trial,
+        /// A lab session (one day at the rig): the mismatch between the nominal and the real
+        /// plant (steering trim, throttle gain, floor friction, ...) is drawn once for the day,
+        /// a drift (the battery sagging) moves it trial by trial, and each trial adds a little
+        /// variation of its own. The initial offsets and actuator noise stay per trial. Each
+        /// plant documents its magnitudes.
+        Session
+    };
     double initialState = 0.0;   ///< initial pose / state offsets
     double parameters = 0.0;     ///< parameter variation (friction, gains, trim, wind, ...)
     double actuatorNoise = 0.0;  ///< per-step noise on the applied action
+    Model model = Model::Trial;
+    std::uint64_t day = 0;  ///< Session: the day's seed (a run's seed), drawing its mismatch
+    int trialIndex = 0;     ///< Session: the trial's place in the day, 0 first (the drift)
 
     static Perturbation none() { return {}; }
     static Perturbation realistic() { return {1.0, 1.0, 1.0}; }
+    /// What a demonstration recorded on a session day's plant meets: the day's mismatch at
+    /// `parameters` level before its first trial, no offset, no actuator noise.
+    static Perturbation dayOf(std::uint64_t day, double parameters = 1.0) {
+        Perturbation p;
+        p.parameters = parameters;
+        p.model = Model::Session;
+        p.day = day;
+        return p;
+    }
+    bool session() const { return model == Model::Session; }
+};
+
+/// "session" or "trial", as the command line and files spell the models.
+QString perturbationModelName(Perturbation::Model model);
+/// The model of a name; nullopt for another name.
+std::optional<Perturbation::Model> perturbationModelFromName(const QString& name);
+
+/// The day's draws of a Session perturbation: unit normals from the day's own stream, the same
+/// sequence for every trial of the day (and a plant's draws from it in a fixed order).
+class SessionDay {
+  public:
+    explicit SessionDay(const Perturbation& perturbation);
+    /// The next unit-normal draw of the day.
+    double normal();
+    /// The fraction a quantity has fallen by at this trial when it falls by `perTrial` (per
+    /// trial, >= 0) from the day's first trial on: perTrial * trialIndex, at most 0.5.
+    double drift(double perTrial) const;
+
+  private:
+    std::uint64_t state_;
+    int trialIndex_;
 };
 
 /// What a plant is: names and units of its state and action, limits, and how its tracking

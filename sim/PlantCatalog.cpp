@@ -22,6 +22,12 @@ std::unique_ptr<Plant> make(const SimulationTiming& timing) {
     return std::make_unique<P>(Parameters{}, timing);
 }
 
+template <class P, auto typed>
+std::unique_ptr<Plant> makeWith(const PlantParameters& parameters,
+                                const SimulationTiming& timing) {
+    return std::make_unique<P>(typed(parameters), timing);
+}
+
 std::vector<PlantEntry> makeCatalog() {
     std::vector<PlantEntry> all;
     PlantEntry e;
@@ -29,6 +35,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated slide-car");
     e.drawing = PlantEntry::Drawing::Car;
     e.create = &make<SlideCar, SlideCarParameters>;
+    e.createWith = &makeWith<SlideCar, &slideCarParameters>;
     e.describe = &SlideCar::describe;
     e.profile = &slideCarTuning;
     e.styles = slideCarStyles();
@@ -39,6 +46,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated acrobot");
     e.drawing = PlantEntry::Drawing::Arm;
     e.create = &make<Acrobot, AcrobotParameters>;
+    e.createWith = &makeWith<Acrobot, &acrobotParameters>;
     e.describe = [] { return Acrobot::describe(); };
     e.profile = &acrobotTuning;
     e.styles = acrobotStyles();
@@ -49,6 +57,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated aircraft");
     e.drawing = PlantEntry::Drawing::Aircraft;
     e.create = &make<PlanarAircraft, PlanarAircraftParameters>;
+    e.createWith = &makeWith<PlanarAircraft, &aircraftParameters>;
     e.describe = &PlanarAircraft::describe;
     e.profile = &aircraftTuning;
     e.styles = aircraftStyles();
@@ -59,6 +68,7 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated differential-drive robot");
     e.drawing = PlantEntry::Drawing::Vehicle;
     e.create = &make<DiffDrive, DiffDriveParameters>;
+    e.createWith = &makeWith<DiffDrive, &diffDriveParameters>;
     e.describe = &DiffDrive::describe;
     e.profile = &diffDriveTuning;
     e.styles = diffDriveStyles();
@@ -107,6 +117,16 @@ QStringList PlantCatalog::names() {
 
 std::unique_ptr<Plant> PlantCatalog::create(const QString& name, const SimulationTiming& timing) {
     return get(name).create(timing);
+}
+
+std::unique_ptr<Plant> PlantCatalog::create(const PlantParameters& parameters,
+                                            const SimulationTiming& timing) {
+    const PlantEntry& entry = get(parameters.plant);
+    if (const QString problem = plantParametersProblem(parameters.plant, parameters.values);
+        !problem.isEmpty()) {
+        throw std::invalid_argument(problem.toStdString());
+    }
+    return entry.createWith(parameters, timing);
 }
 
 PlantInfo PlantCatalog::describe(const QString& name) {

@@ -8,6 +8,18 @@
 
 namespace prisca::sim {
 
+RecordingConditions demonstrationConditions(const RunSettings& settings,
+                                            const MethodTuning& profile,
+                                            const PlantParameters* parameters, std::uint64_t day) {
+    RecordingConditions conditions;
+    conditions.parameters = parameters;
+    if (settings.perturbationModel == Perturbation::Model::Session) {
+        conditions.perturbation = Perturbation::dayOf(
+            day, settings.perturbation * profile.perturbationShares.parameters);
+    }
+    return conditions;
+}
+
 RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings)
     : task_(std::move(task)), method_(&MethodCatalog::get(method)), settings_(settings) {
     if (!task_.demonstration) {
@@ -22,15 +34,30 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
     task_.timing.controlPeriod = task_.demonstration->dt;
     episode_ = task_.profile.episode(*task_.demonstration, settings_.perturbation,
                                      settings_.sensor);
+    episode_.perturbation.model = settings_.perturbationModel;
+    episode_.perturbation.day = settings_.seed;
 }
 
 std::unique_ptr<Plant> RunSetup::makePlant() const {
+    if (task_.plantParameters) {
+        return PlantCatalog::create(*task_.plantParameters, task_.timing);
+    }
     return PlantCatalog::create(task_.plant, task_.timing);
 }
 
-EpisodeSettings RunSetup::trial(int trial) const {
+EpisodeSettings RunSetup::trial(int trial, int trialsBefore) const {
     EpisodeSettings episode = episode_;
     setTrial(episode, settings_.seed, trial);
+    episode.perturbation.trialIndex = trialsBefore + trial;
+    return episode;
+}
+
+EpisodeSettings RunSetup::trainingTrial(int trial) const {
+    EpisodeSettings episode = episode_;
+    const std::vector<std::uint64_t> seeds = trainingSeeds();
+    episode.seed = seeds.at(static_cast<size_t>(trial));
+    episode.resetMode = resetForTrial(trial);
+    episode.perturbation.trialIndex = trial;
     return episode;
 }
 
@@ -73,6 +100,11 @@ core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trial
     log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
     log.metadata.insert(QStringLiteral("perturbation"), QString::number(settings_.perturbation));
     log.metadata.insert(QStringLiteral("sensor"), QString::number(settings_.sensor));
+    log.metadata.insert(QStringLiteral("perturbation-model"),
+                        perturbationModelName(settings_.perturbationModel));
+    if (task_.plantParameters && !task_.plantParameters->source.isEmpty()) {
+        log.metadata.insert(QStringLiteral("plant-parameters"), task_.plantParameters->source);
+    }
     log.metadata.insert(QStringLiteral("demonstration"), demonstrationSource);
     return log;
 }

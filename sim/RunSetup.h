@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DemonstrationStyles.h"
 #include "EpisodeRunner.h"
 #include "MethodCatalog.h"
 #include "Plant.h"
@@ -22,12 +23,22 @@ struct RunSettings {
     std::uint64_t seed = 1;
     double perturbation = 1.0;  ///< plant perturbation level (0 nominal, 1 realistic)
     double sensor = 1.0;        ///< sensor level (0 perfect state, 1 realistic)
+    /// How the plant's parameter variation spreads over the run's trials: a lab session (the
+    /// day's mismatch persists and drifts; the day is the seed) or each trial its own.
+    Perturbation::Model perturbationModel = Perturbation::Model::Session;
     /// Trials a method trains on before it is evaluated: PD (selected) scores its gain grid on
     /// them; in Table I the online learners warm up on them. PEGASUS takes its fixed scenarios
     /// from the first PegasusParameters::scenarios of them.
     int trainingTrials = 16;
     int threads = 2;  ///< worker threads for training and parallel trials
 };
+
+/// The conditions a run's scripted demonstration is recorded in: on the plant of `parameters`
+/// (null: the catalog's) and, under the session model, with the day's mismatch (the day being
+/// `day`, at the run's parameter level); under the trial model, the nominal plant.
+RecordingConditions demonstrationConditions(const RunSettings& settings,
+                                            const MethodTuning& profile,
+                                            const PlantParameters* parameters, std::uint64_t day);
 
 /// One run set up from a Task, a method and the run's settings: the plant at the task's own
 /// control period (the demonstration's dt), the trials' episode settings, the method's
@@ -45,14 +56,19 @@ class RunSetup {
     const MethodSpec& method() const { return *method_; }
     const RunSettings& settings() const { return settings_; }
 
-    /// A new plant of the task's kind at the task's control period.
+    /// A new plant of the task's kind at the task's control period, with the task's physical
+    /// parameters.
     std::unique_ptr<Plant> makePlant() const;
     /// Every trial's settings but its seed and reset: perturbation and sensor at the run's
     /// levels, the demonstration's length plus the settle time, latency compensation.
     const EpisodeSettings& episode() const { return episode_; }
     /// Evaluation trial `trial` (0-based) of the run: seed mixSeed(seed, trial), a cold start
-    /// for the first and warm starts after (setTrial).
-    EpisodeSettings trial(int trial) const;
+    /// for the first and warm starts after (setTrial). `trialsBefore`: how many trials of the
+    /// day came before the first evaluation trial (the session's drift counts them).
+    EpisodeSettings trial(int trial, int trialsBefore = 0) const;
+    /// Training trial `trial` (0-based): its seed from trainingSeeds(), the day's trial `trial`,
+    /// a cold start for the first and warm starts after.
+    EpisodeSettings trainingTrial(int trial) const;
     /// The training trials' seeds (settings.trainingTrials of them, their own stream).
     std::vector<std::uint64_t> trainingSeeds() const;
 

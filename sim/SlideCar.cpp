@@ -98,10 +98,26 @@ Eigen::VectorXd SlideCar::reset(std::uint64_t seed, const Perturbation& perturba
     const double y = 0.03 * s0 * normal(draw);
     const double psi = 0.0349 * s0 * normal(draw);
     const double sp = perturbation.parameters;
-    // Clamped so that a wild draw at a large level still leaves a drivable car.
-    frictionScale_ = std::clamp(1.0 + 0.10 * sp * normal(draw), 0.5, 1.5);
-    throttleGain_ = std::clamp(1.0 + 0.08 * sp * normal(draw), 0.5, 1.5);
-    steeringTrim_ = std::clamp(0.03 * sp * normal(draw), -0.3, 0.3);
+    if (perturbation.session()) {
+        // The day's car: its mismatch drawn once for the day, the battery sagging trial by
+        // trial, a little variation per trial (magnitudes in the class comment).
+        SessionDay day(perturbation);
+        const double friction = 0.10 * sp * day.normal();
+        const double gain = 0.08 * sp * day.normal();
+        const double trim = 0.03 * sp * day.normal();
+        const double sag = day.drift(0.002 * sp * std::max(0.0, 1.0 + 0.25 * day.normal()));
+        std::mt19937_64 trialDraw(mixSeed(seed, 3));
+        const double trialFriction = 0.03 * sp * normal(trialDraw);
+        const double trialTrim = 0.005 * sp * normal(trialDraw);
+        frictionScale_ = std::clamp((1.0 + friction) * (1.0 + trialFriction), 0.5, 1.5);
+        throttleGain_ = std::clamp((1.0 + gain) * (1.0 - sag), 0.5, 1.5);
+        steeringTrim_ = std::clamp(trim + trialTrim, -0.3, 0.3);
+    } else {
+        // Clamped so that a wild draw at a large level still leaves a drivable car.
+        frictionScale_ = std::clamp(1.0 + 0.10 * sp * normal(draw), 0.5, 1.5);
+        throttleGain_ = std::clamp(1.0 + 0.08 * sp * normal(draw), 0.5, 1.5);
+        steeringTrim_ = std::clamp(0.03 * sp * normal(draw), -0.3, 0.3);
+    }
     actuatorNoise_ = 0.02 * perturbation.actuatorNoise;
     noise_.seed(mixSeed(seed, 1));
     build(x, y, psi, 0, 0, 0);
@@ -196,8 +212,10 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
     const Eigen::Vector2d carLeft(-std::sin(psi), std::cos(psi));
 
     // Axle geometry: 0 front (steered), 1 rear.
-    std::array<Eigen::Vector2d, 2> arm = {carForward * (p.wheelbase / 2),
-                                          -carForward * (p.wheelbase / 2)};
+    // Axle geometry about the centre of mass: front a = L/2 - cg ahead, rear b = L/2 + cg behind.
+    const double toFront = p.wheelbase / 2 - p.cgForward;
+    const double toRear = p.wheelbase / 2 + p.cgForward;
+    std::array<Eigen::Vector2d, 2> arm = {carForward * toFront, -carForward * toRear};
     std::array<Eigen::Vector2d, 2> forward;
     std::array<Eigen::Vector2d, 2> lateral;
     forward[0] = Eigen::Vector2d(std::cos(psi + steeringAngle_), std::sin(psi + steeringAngle_));
@@ -208,8 +226,8 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
     // Normal loads with longitudinal load transfer (accelerating unloads the front).
     const double transfer = mass * longitudinalAcceleration_ * p.cgHeight / p.wheelbase;
     std::array<double, 2> load;
-    load[0] = std::max(0.0, mass * p.gravity / 2 - transfer);
-    load[1] = std::max(0.0, mass * p.gravity / 2 + transfer);
+    load[0] = std::max(0.0, mass * p.gravity * (toRear / p.wheelbase) - transfer);
+    load[1] = std::max(0.0, mass * p.gravity * (toFront / p.wheelbase) + transfer);
 
     // Longitudinal forces per axle: the motor (half the traction each) and rolling losses.
     std::array<double, 2> longitudinal{};
@@ -243,9 +261,9 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
     std::array<double, 2> lateralForce{};
     auto limit = [&](int a, double wanted) {
         const double demand = std::hypot(longitudinal[a], wanted);
-        const double grip = frictionScale_ * load[a] * (a == 1 ? p.rearGripRatio : 1.0);
-        const double muS = p.staticFriction * grip;
-        const double muK = p.kineticFriction * grip;
+        const double grip = frictionScale_ * load[a];
+        const double muS = (a == 0 ? p.staticFriction : p.rearStaticFriction) * grip;
+        const double muK = (a == 0 ? p.kineticFriction : p.rearKineticFriction) * grip;
         if (!sliding_[a] && demand > muS) {
             sliding_[a] = true;
         } else if (sliding_[a] && demand <= muK) {

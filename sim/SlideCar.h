@@ -28,12 +28,17 @@ struct SlideCarParameters {
     double throttleDelay = 0.01;       ///< dead time of the speed controller [s]
     double maxDriveForce = 9.0;    ///< traction of all four wheels at standstill, full throttle [N]
     double topSpeed = 6.0;         ///< speed at which full throttle gives no more force [m/s]
-    double staticFriction = 0.65;  ///< tyre-floor static coefficient mu_s
-    double kineticFriction = 0.45;  ///< sliding coefficient mu_k (< mu_s: the "snap" into a slide)
-    /// Rear tyres' friction relative to the front's (harder or narrower rear tyres). Below about
-    /// mu_k / mu_s the rear lets go once the front slides, which is what makes the car yaw into a
-    /// slide when steered hard at speed rather than plough straight on.
-    double rearGripRatio = 0.75;
+    /// Centre of mass ahead of the wheelbase's midpoint [m] (negative: behind it). It sets the
+    /// static load on each axle and each axle's lever arm about the centre of mass; the state's
+    /// x, y are the centre of mass.
+    double cgForward = 0.0;
+    double staticFriction = 0.65;   ///< front tyres' static coefficient mu_s
+    double kineticFriction = 0.45;  ///< front tyres' sliding coefficient mu_k (< mu_s: the "snap")
+    /// The rear tyres' coefficients (harder or narrower rear tyres): 0.75 of the front's. Below
+    /// about mu_k / mu_s of the front's the rear lets go once the front slides, which is what
+    /// makes the car yaw into a slide when steered hard at speed rather than plough straight on.
+    double rearStaticFriction = 0.65 * 0.75;
+    double rearKineticFriction = 0.45 * 0.75;
     double rollingResistance = 0.03;  ///< coefficient of rolling resistance
     double drivelineDrag = 0.5;       ///< viscous drag of motor and gears when coasting [N s/m]
     double gravity = 9.81;            ///< [m/s^2]
@@ -57,6 +62,14 @@ struct SlideCarParameters {
 /// Perturbation at level 1 (all from the seed): initial offset 3 cm per axis and 2 deg heading;
 /// friction x (1 + 0.1 N(0,1)), throttle gain x (1 + 0.08 N(0,1)), steering trim 0.03 N(0,1);
 /// actuator noise 0.02 N(0,1) per step on both channels.
+///
+/// Session model (Perturbation::Session, level 1): the same three mismatches drawn once for the
+/// day (a floor's grip 10 %, an ESC and battery 8 %, a trim of 0.03 of full lock, about 1 deg
+/// of wheel angle: what an operator who trimmed by eye leaves); the battery sags, the throttle
+/// gain falling 0.2 % x (1 + 0.25 N(0,1)) per trial (a 2S pack loses about 7 % of its voltage
+/// over the first half of its charge, some 35 trials of a few seconds' driving and the drive
+/// back); and each trial its own friction x (1 + 0.03 N(0,1)) (dust, tyre temperature) and
+/// trim 0.005 N(0,1) (the servo's centring repeatability). Offsets and noise as above.
 class SlideCar : public Plant {
   public:
     explicit SlideCar(SlideCarParameters parameters = {}, SimulationTiming timing = {});
@@ -79,6 +92,11 @@ class SlideCar : public Plant {
     /// Whether the front (0) or rear (1) axle is sliding.
     bool sliding(int axle) const { return sliding_[axle]; }
     const SlideCarParameters& parameters() const { return parameters_; }
+    /// This trial's perturbed throttle gain, steering trim and friction scale (as reset drew
+    /// them; 1, 0, 1 for the nominal car).
+    double throttleGain() const { return throttleGain_; }
+    double steeringTrim() const { return steeringTrim_; }
+    double frictionScale() const { return frictionScale_; }
 
     /// The plant description shared by every slide-car.
     static PlantInfo describe();

@@ -11,7 +11,8 @@ namespace prisca::sim {
 
 core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,
-                                                 const SlideCarParameters& parameters) {
+                                                 const SlideCarParameters& parameters,
+    const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;
@@ -37,7 +38,7 @@ core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Scrip
                           script.stickJitter * normal(shakeDraw));
 
     SlideCar car(parameters, timing);
-    car.reset(seed, Perturbation::none());
+    car.reset(seed, conditions);
     DemonstrationRecorder recorder(car.info(), dt);
 
     double releaseStart = -1.0;

@@ -55,7 +55,8 @@ class SlideCarDemonstrator {
     /// variation.
     static core::Demonstration record(std::uint64_t seed, const Script& script,
                                       const SimulationTiming& timing = {},
-                                      const SlideCarParameters& car = {});
+                                      const SlideCarParameters& car = {},
+                                      const Perturbation& conditions = Perturbation::none());
     static core::Demonstration record(std::uint64_t seed, const SimulationTiming& timing = {}) {
         return record(seed, Script{}, timing);
     }

@@ -52,27 +52,37 @@ Table1Result runTable1(const Table1Settings& settings, const Task& task) {
             learners.push_back(static_cast<int>(m));
         }
     }
-    const std::function<std::shared_ptr<const core::Controller>(int)> warmUp = [&](int i) {
+    struct WarmUp {
+        std::shared_ptr<const core::Controller> controller;
+        std::vector<TrialSummary> trials;  // each training trial, in order
+    };
+    const std::function<WarmUp(int)> warmUp = [&](int i) {
         const RunSetup& setup = setups[learners[i]];
         auto plant = setup.makePlant();
         std::shared_ptr<core::Controller> controller = setup.makeController();
         const std::vector<std::uint64_t> seeds = setup.trainingSeeds();
+        WarmUp out;
         for (size_t t = 0; t < seeds.size(); ++t) {
-            EpisodeSettings episode = setup.episode();
-            episode.seed = seeds[t];
+            EpisodeSettings episode = setup.trainingTrial(static_cast<int>(t));
             episode.recordSteps = false;
-            episode.resetMode = resetForTrial(static_cast<int>(t));
-            runEpisode(*plant, *controller, episode, settings.cancelled);
+            const EpisodeResult run = runEpisode(*plant, *controller, episode, settings.cancelled);
+            if (run.cancelled) {
+                break;
+            }
+            out.trials.push_back(summarizeTrial(plant->info(), *demonstration, run));
         }
         say(QStringLiteral("table1: %1 learned on %2 training trials")
                 .arg(setup.method().id)
                 .arg(seeds.size()));
-        return std::shared_ptr<const core::Controller>(controller);
+        out.controller = controller;
+        return out;
     };
-    const auto warmed = runParallel<std::shared_ptr<const core::Controller>>(
-        static_cast<int>(learners.size()), settings.run.threads, warmUp, settings.cancelled);
+    const auto warmed = runParallel<WarmUp>(static_cast<int>(learners.size()),
+                                            settings.run.threads, warmUp, settings.cancelled);
+    std::vector<std::vector<TrialSummary>> trainingTrials(setups.size());
     for (size_t i = 0; i < learners.size(); ++i) {
-        trained[learners[i]] = warmed[i];
+        trained[learners[i]] = warmed[i].controller;
+        trainingTrials[learners[i]] = warmed[i].trials;
     }
 
     // Evaluation: every (method, trial) pair is an independent job.
@@ -88,7 +98,8 @@ Table1Result runTable1(const Table1Settings& settings, const Task& task) {
         const int trial = job % trials;
         auto plant = setup.makePlant();
         std::unique_ptr<core::Controller> controller;
-        EpisodeSettings episode = setup.trial(trial);
+        // The day's trials: the training trials first, then these.
+        EpisodeSettings episode = setup.trial(trial, setup.settings().trainingTrials);
         episode.recordSteps = settings.keepPaths;
         if (const auto& learned = trained[job / trials]) {
             controller = learned->clone();
@@ -124,6 +135,7 @@ Table1Result runTable1(const Table1Settings& settings, const Task& task) {
     for (int m = 0; m < methods; ++m) {
         MethodTrials rows;
         rows.method = settings.methods[m];
+        rows.training = trainingTrials[m];
         for (int t = 0; t < trials; ++t) {
             const int job = m * trials + t;
             // Kept only if it ran to its end: a cancelled trial's pose means nothing.

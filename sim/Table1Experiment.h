@@ -39,6 +39,9 @@ struct MethodTrials {
     std::vector<TrialSummary> trials;  ///< one per evaluation trial (completed ones only valid)
     std::vector<bool> completed;       ///< false where cancelled before it finished
     std::vector<std::vector<Eigen::Vector3d>> paths;  ///< (x, y, heading) per step, if kept
+    /// An online learner's training trials, in the order it learned on them (empty for the
+    /// others): with the evaluation trials after them, its learning curve.
+    std::vector<TrialSummary> training;
 };
 
 /// Everything Table I and Fig. 7 need.

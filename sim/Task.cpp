@@ -7,9 +7,23 @@
 namespace prisca::sim {
 
 Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstration> demonstration,
-              const core::ActionMappingFitOptions& options) {
+              const core::ActionMappingFitOptions& options,
+              std::shared_ptr<const PlantParameters> plantParameters) {
     if (!demonstration) {
         throw std::invalid_argument("no demonstration");
+    }
+    if (plantParameters) {
+        if (plantParameters->plant != profile.info.name) {
+            throw std::invalid_argument(QStringLiteral("the plant file %1 describes a %2, not a %3")
+                                            .arg(plantParameters->source, plantParameters->plant,
+                                                 profile.info.name)
+                                            .toStdString());
+        }
+        if (const QString problem =
+                plantParametersProblem(plantParameters->plant, plantParameters->values);
+            !problem.isEmpty()) {
+            throw std::invalid_argument(problem.toStdString());
+        }
     }
     checkDemonstrationFor(*demonstration, profile.info);
     if (profile.mapping.controls() != profile.info.actionDimension() ||
@@ -30,6 +44,7 @@ Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstra
     task.fit = core::fitActionMapping(*demonstration, profile.mapping,
                                       profile.info.deviationModel(), options);
     task.demonstration = std::move(demonstration);
+    task.plantParameters = std::move(plantParameters);
     return task;
 }
 

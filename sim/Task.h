@@ -1,6 +1,7 @@
 #pragma once
 
 #include "MethodTuning.h"
+#include "PlantParameters.h"
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 
@@ -16,12 +17,16 @@ struct Task {
     SimulationTiming timing;  ///< control period = the demonstration's dt
     std::shared_ptr<const core::Demonstration> demonstration;  ///< S*, U*
     core::ActionMappingFit fit;                                ///< B_v, B and diagnostics
+    /// The plant's physical parameters where they are not the catalog's (a plant file); null:
+    /// the catalog's plant.
+    std::shared_ptr<const PlantParameters> plantParameters;
 };
 
 /// The one way a task is made, for the window and the CLI alike: the demonstration is checked
 /// against the profile's plant (checkDemonstrationFor) and fitted with the profile's B~ and
 /// `options`. Throws std::invalid_argument saying what does not fit; nothing is half-made.
 Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstration> demonstration,
-              const core::ActionMappingFitOptions& options = {});
+              const core::ActionMappingFitOptions& options = {},
+              std::shared_ptr<const PlantParameters> plantParameters = nullptr);
 
 }  // namespace prisca::sim

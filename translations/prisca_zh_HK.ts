@@ -344,22 +344,22 @@
 <context>
     <name>PlantCatalog</name>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="29"/>
+        <location filename="../sim/PlantCatalog.cpp" line="35"/>
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="39"/>
+        <location filename="../sim/PlantCatalog.cpp" line="46"/>
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="49"/>
+        <location filename="../sim/PlantCatalog.cpp" line="57"/>
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="59"/>
+        <location filename="../sim/PlantCatalog.cpp" line="68"/>
         <source>Simulated differential-drive robot</source>
         <translation>模擬差速驅動機械人</translation>
     </message>
@@ -741,112 +741,122 @@
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="142"/>
+        <location filename="../app/LabSession.cpp" line="137"/>
+        <source>the plant file %1 describes a %2, not a %3</source>
+        <translation>機型檔 %1 描述的是 %2，不是 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="174"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="149"/>
+        <location filename="../app/LabSession.cpp" line="182"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="160"/>
+        <location filename="../app/LabSession.cpp" line="193"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="172"/>
+        <location filename="../app/LabSession.cpp" line="205"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="273"/>
+        <location filename="../app/LabSession.cpp" line="314"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="279"/>
+        <location filename="../app/LabSession.cpp" line="320"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="285"/>
+        <location filename="../app/LabSession.cpp" line="326"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="288"/>
+        <location filename="../app/LabSession.cpp" line="329"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="293"/>
+        <location filename="../app/LabSession.cpp" line="334"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="300"/>
+        <location filename="../app/LabSession.cpp" line="341"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="304"/>
+        <location filename="../app/LabSession.cpp" line="345"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="313"/>
+        <location filename="../app/LabSession.cpp" line="354"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="336"/>
+        <location filename="../app/LabSession.cpp" line="377"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="403"/>
+        <location filename="../app/LabSession.cpp" line="444"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="408"/>
+        <location filename="../app/LabSession.cpp" line="449"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="430"/>
+        <location filename="../app/LabSession.cpp" line="471"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="444"/>
+        <location filename="../app/LabSession.cpp" line="485"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="468"/>
+        <location filename="../app/LabSession.cpp" line="511"/>
+        <source>&apos;plantParameters&apos;: %1</source>
+        <translation>「plantParameters」：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="525"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="472"/>
+        <location filename="../app/LabSession.cpp" line="529"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="479"/>
+        <location filename="../app/LabSession.cpp" line="536"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="484"/>
+        <location filename="../app/LabSession.cpp" line="541"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="504"/>
+        <location filename="../app/LabSession.cpp" line="560"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1273,133 +1283,133 @@
     <name>prisca::app::RecordPanel</name>
     <message>
         <location filename="../app/RecordPanel.cpp" line="92"/>
-        <location filename="../app/RecordPanel.cpp" line="349"/>
+        <location filename="../app/RecordPanel.cpp" line="350"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="158"/>
+        <location filename="../app/RecordPanel.cpp" line="159"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="165"/>
+        <location filename="../app/RecordPanel.cpp" line="166"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="201"/>
+        <location filename="../app/RecordPanel.cpp" line="202"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="206"/>
+        <location filename="../app/RecordPanel.cpp" line="207"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="217"/>
+        <location filename="../app/RecordPanel.cpp" line="218"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="249"/>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="251"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="260"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="262"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="275"/>
+        <location filename="../app/RecordPanel.cpp" line="276"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="282"/>
+        <location filename="../app/RecordPanel.cpp" line="283"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="291"/>
-        <location filename="../app/RecordPanel.cpp" line="302"/>
+        <location filename="../app/RecordPanel.cpp" line="292"/>
+        <location filename="../app/RecordPanel.cpp" line="303"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="293"/>
+        <location filename="../app/RecordPanel.cpp" line="294"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="306"/>
+        <location filename="../app/RecordPanel.cpp" line="307"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="317"/>
+        <location filename="../app/RecordPanel.cpp" line="318"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="339"/>
+        <location filename="../app/RecordPanel.cpp" line="340"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="344"/>
+        <location filename="../app/RecordPanel.cpp" line="345"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="346"/>
+        <location filename="../app/RecordPanel.cpp" line="347"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="347"/>
+        <location filename="../app/RecordPanel.cpp" line="348"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="348"/>
+        <location filename="../app/RecordPanel.cpp" line="349"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="350"/>
+        <location filename="../app/RecordPanel.cpp" line="351"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="351"/>
+        <location filename="../app/RecordPanel.cpp" line="352"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="352"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="354"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="354"/>
+        <location filename="../app/RecordPanel.cpp" line="355"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1407,12 +1417,12 @@
 <context>
     <name>prisca::app::RecordingWorker</name>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="42"/>
+        <location filename="../app/RecordingWorker.cpp" line="44"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="115"/>
+        <location filename="../app/RecordingWorker.cpp" line="117"/>
         <source>Writing the recording failed: %1 (the take so far is in %2)</source>
         <translation>寫入錄製失敗：%1（目前錄得的內容在 %2）</translation>
     </message>
@@ -1522,23 +1532,23 @@
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="459"/>
+        <location filename="../app/RigPanel.cpp" line="464"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="476"/>
+        <location filename="../app/RigPanel.cpp" line="481"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="497"/>
-        <location filename="../app/RigPanel.cpp" line="509"/>
+        <location filename="../app/RigPanel.cpp" line="502"/>
+        <location filename="../app/RigPanel.cpp" line="514"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="498"/>
+        <location filename="../app/RigPanel.cpp" line="503"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1547,197 +1557,197 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="519"/>
+        <location filename="../app/RigPanel.cpp" line="524"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="558"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="561"/>
+        <location filename="../app/RigPanel.cpp" line="566"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="563"/>
+        <location filename="../app/RigPanel.cpp" line="568"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="595"/>
+        <location filename="../app/RigPanel.cpp" line="600"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="596"/>
+        <location filename="../app/RigPanel.cpp" line="601"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="597"/>
+        <location filename="../app/RigPanel.cpp" line="602"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="598"/>
+        <location filename="../app/RigPanel.cpp" line="603"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="604"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="610"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="616"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="619"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="615"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="621"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="622"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
+        <location filename="../app/RigPanel.cpp" line="623"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="622"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="628"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="629"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="631"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="632"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="628"/>
+        <location filename="../app/RigPanel.cpp" line="633"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="630"/>
+        <location filename="../app/RigPanel.cpp" line="635"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="631"/>
+        <location filename="../app/RigPanel.cpp" line="636"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="633"/>
+        <location filename="../app/RigPanel.cpp" line="638"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="639"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="635"/>
+        <location filename="../app/RigPanel.cpp" line="640"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="642"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="639"/>
+        <location filename="../app/RigPanel.cpp" line="644"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="641"/>
+        <location filename="../app/RigPanel.cpp" line="646"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="648"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
@@ -2017,14 +2027,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="158"/>
-        <location filename="../app/TaskPanel.cpp" line="165"/>
-        <location filename="../app/TaskPanel.cpp" line="175"/>
+        <location filename="../app/TaskPanel.cpp" line="181"/>
+        <location filename="../app/TaskPanel.cpp" line="188"/>
+        <location filename="../app/TaskPanel.cpp" line="241"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="159"/>
+        <location filename="../app/TaskPanel.cpp" line="182"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -2033,208 +2043,260 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="166"/>
+        <location filename="../app/TaskPanel.cpp" line="189"/>
+        <location filename="../app/TaskPanel.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="176"/>
+        <location filename="../app/TaskPanel.cpp" line="242"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="184"/>
-        <location filename="../app/TaskPanel.cpp" line="191"/>
+        <location filename="../app/TaskPanel.cpp" line="250"/>
+        <location filename="../app/TaskPanel.cpp" line="257"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="185"/>
+        <location filename="../app/TaskPanel.cpp" line="251"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="149"/>
+        <location filename="../app/TaskPanel.cpp" line="172"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="96"/>
+        <location filename="../app/TaskPanel.cpp" line="119"/>
         <source>figure-eight</source>
         <translation>8 字形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="96"/>
+        <location filename="../app/TaskPanel.cpp" line="119"/>
         <source>s-turn</source>
         <translation>S 形轉彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <location filename="../app/TaskPanel.cpp" line="120"/>
         <source>u-turn</source>
         <translation>掉頭</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="97"/>
+        <location filename="../app/TaskPanel.cpp" line="120"/>
         <source>s-bend</source>
         <translation>S 形彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="99"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>stick</source>
         <translation>搖桿</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="99"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>keyboard</source>
         <translation>鍵盤</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="99"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>standstill</source>
         <translation>靜止起步</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="99"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>fast</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>slow</source>
         <translation>慢速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>blip</source>
         <translation>點油</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>jitter</source>
         <translation>抖動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="100"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>coast</source>
         <translation>滑行</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>left</source>
         <translation>左</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>right</source>
         <translation>右</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>swing</source>
         <translation>擺動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="101"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>medium</source>
         <translation>中</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>small</source>
         <translation>小</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>large</source>
         <translation>大</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>circle</source>
         <translation>圓形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="102"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>wide</source>
         <translation>寬</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>dock</source>
         <translation>泊位</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="103"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>spin</source>
         <translation>原地轉</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/TaskPanel.cpp" line="144"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="204"/>
+        <location filename="../app/TaskPanel.cpp" line="200"/>
+        <location filename="../app/TaskPanel.cpp" line="208"/>
+        <location filename="../app/TaskPanel.cpp" line="219"/>
+        <source>Open plant file</source>
+        <translation>開啟機型檔</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="201"/>
+        <source>The plant file could not be used.
+
+%1</source>
+        <translation>無法使用此機型檔。
+
+%1</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="220"/>
+        <source>Plant files (*.json);;All files (*)</source>
+        <translation>機型檔 (*.json);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="230"/>
+        <source>the catalog&apos;s</source>
+        <translation>目錄預設</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="270"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="208"/>
+        <location filename="../app/TaskPanel.cpp" line="274"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="223"/>
+        <location filename="../app/TaskPanel.cpp" line="289"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="234"/>
+        <location filename="../app/TaskPanel.cpp" line="300"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="235"/>
+        <location filename="../app/TaskPanel.cpp" line="301"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="236"/>
+        <location filename="../app/TaskPanel.cpp" line="302"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="237"/>
+        <location filename="../app/TaskPanel.cpp" line="303"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="238"/>
+        <location filename="../app/TaskPanel.cpp" line="304"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="240"/>
+        <location filename="../app/TaskPanel.cpp" line="306"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="242"/>
+        <location filename="../app/TaskPanel.cpp" line="308"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="243"/>
+        <location filename="../app/TaskPanel.cpp" line="309"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="244"/>
+        <location filename="../app/TaskPanel.cpp" line="310"/>
+        <source>Physical parameters:</source>
+        <translation>物理參數：</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="311"/>
+        <source>Load...</source>
+        <translation>載入...</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="313"/>
+        <source>Load a plant file: the car&apos;s mass, wheelbase, grip, motor, steering and servo (prisca-cli plant --plant NAME --print-params --format json writes one to edit)</source>
+        <translation>載入機型檔：車的質量、軸距、抓地力、馬達、轉向及伺服器（prisca-cli plant --plant NAME --print-params --format json 可寫出一份供編輯）</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="315"/>
+        <source>Catalog</source>
+        <translation>目錄預設</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="316"/>
+        <source>Go back to the catalog&apos;s plant</source>
+        <translation>回到目錄預設的機型</translation>
+    </message>
+    <message>
+        <location filename="../app/TaskPanel.cpp" line="318"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="246"/>
+        <location filename="../app/TaskPanel.cpp" line="320"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>
@@ -2242,62 +2304,62 @@
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="128"/>
+        <location filename="../rig/RigSession.cpp" line="131"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="221"/>
+        <location filename="../rig/RigSession.cpp" line="234"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="224"/>
+        <location filename="../rig/RigSession.cpp" line="237"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="241"/>
+        <location filename="../rig/RigSession.cpp" line="254"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="246"/>
+        <location filename="../rig/RigSession.cpp" line="259"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="249"/>
+        <location filename="../rig/RigSession.cpp" line="262"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="259"/>
+        <location filename="../rig/RigSession.cpp" line="272"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="410"/>
+        <location filename="../rig/RigSession.cpp" line="424"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="413"/>
+        <location filename="../rig/RigSession.cpp" line="427"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="422"/>
+        <location filename="../rig/RigSession.cpp" line="436"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="480"/>
+        <location filename="../rig/RigSession.cpp" line="494"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="488"/>
+        <location filename="../rig/RigSession.cpp" line="502"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>

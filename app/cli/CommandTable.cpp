@@ -14,6 +14,8 @@ const std::vector<CliCommand>& commandTable() {
         {"fit", "Fit the action mapping B_v to a demonstration (eq. 8)", fitCommand},
         {"methods", "List the methods and their parameters (units, ranges, defaults)",
          methodsCommand},
+        {"plant", "A plant's physical parameters: print them, write a plant file, check one",
+         plantCommand},
         {"run", "Run PRISCA or a baseline on a plant and log the trial", runCommand},
         {"table1", "Run batches of trials and report the paper's Table I metrics", table1Command},
         {"curve", "Learning curves of several methods over many runs", curveCommand},

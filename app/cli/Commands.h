@@ -16,5 +16,6 @@ int linkCommand(const QStringList& arguments);
 int trackCommand(const QStringList& arguments);
 int rigCommand(const QStringList& arguments);
 int methodsCommand(const QStringList& arguments);
+int plantCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

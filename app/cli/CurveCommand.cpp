@@ -58,6 +58,7 @@ int curveCommand(const QStringList& arguments) {
     line.addValue("runs", "Independent runs per method (and cell).", "N", "20");
     line.addValue("budget", "Simulated control steps each run may consume.", "steps", "64000");
     addRunSettingsOptions(line, QString());  // the curves train nothing before they start
+    addPlantParametersOption(line);
     line.addValue("out", "CSV of the curves: method, steps, time, mean, lower, upper, runs.",
                   "file");
     line.addValue("plot", "Also draw the curves (Fig. 3b) to this .png or .svg file.", "file");
@@ -101,6 +102,7 @@ int curveCommand(const QStringList& arguments) {
         protocol.styles = styles;
         protocol.seedSets =
             sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
+        protocol.plantParameters = plantParametersOption(line, plant);
         sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
         applyMethodParameters(line, profile);
         int cellNow = 0, cellsAll = 0;
@@ -126,9 +128,15 @@ int curveCommand(const QStringList& arguments) {
         if (line.isSet("seed-sets")) {
             throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
         }
+        const QString plantName = checkedPlant(line.value("plant"));
+        const auto parameters = plantParametersOption(line, plantName);
         Task task = loadOrDemonstrate(
-            line.value("plant"), line.value("demo"),
-            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
+            plantName, line.value("demo"),
+            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
+            sim::demonstrationConditions(
+                settings.run, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName)),
+                parameters.get(), seed));
+        task.plantParameters = parameters;
         applyMethodParameters(line, task.profile);
         plant = task.plant;
         settings.progress = [](const QString& text) { printProgress(text); };

@@ -21,6 +21,12 @@ int demoCommand(const QStringList& arguments) {
                   "Control rate of the recording [Hz]: one sample per control step, as a camera "
                   "take at this frame rate gives (default 40).",
                   "Hz", "40");
+    addPlantParametersOption(line);
+    line.addValue("day",
+                  "Record on a lab-session day's car: the mismatch that day N's trials meet under "
+                  "the session perturbation model (run, table1 and curve with --seed N). Default: "
+                  "the nominal car.",
+                  "N");
     line.addValue("out", "Output demonstration CSV.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
@@ -57,13 +63,26 @@ int demoCommand(const QStringList& arguments) {
     sim::SimulationTiming timing;
     const double rate = line.number("rate", 5.0, 1000.0);
     timing.controlPeriod = 1.0 / rate;
+    const auto parameters = plantParametersOption(line, plantName);
+    sim::RecordingConditions conditions;
+    conditions.parameters = parameters.get();
+    if (line.isSet("day")) {
+        conditions.perturbation = sim::Perturbation::dayOf(
+            static_cast<std::uint64_t>(line.integer("day", 0, 1LL << 62)));
+    }
     core::Demonstration demonstration =
-        sim::DemonstrationStyles::record(plantName, style, seed, timing);
+        sim::DemonstrationStyles::record(plantName, style, seed, timing, conditions);
     demonstration.metadata.insert(QStringLiteral("source"),
                                   QStringLiteral("prisca-cli demo, style %1, seed %2, %3 Hz")
                                       .arg(style)
                                       .arg(seed)
                                       .arg(rate));
+    if (parameters) {
+        demonstration.metadata.insert(QStringLiteral("plant-parameters"), parameters->source);
+    }
+    if (line.isSet("day")) {
+        demonstration.metadata.insert(QStringLiteral("day"), line.value("day"));
+    }
     writeDemonstration(demonstration, out);
     const int T = demonstration.length();
     if (line.format() == QLatin1String("json")) {

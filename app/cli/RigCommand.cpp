@@ -44,6 +44,7 @@ int rigCommand(const QStringList& arguments) {
                   "N", "3");
     line.addValue("seed", "Seed of the trials (the car's start, friction, gains).", "N", "1");
     line.addValue("perturbation", "The simulated car's perturbation level.", "level", "1");
+    addPlantParametersOption(line);
     addMethodParameterOptions(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
@@ -65,9 +66,14 @@ int rigCommand(const QStringList& arguments) {
                                               ? QStringLiteral("it plans on the simulator itself")
                                               : QStringLiteral("it trains offline first")));
     }
+    const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
+    sim::RecordingConditions conditions;  // the scripted operator drives the same car
+    conditions.parameters = parameters.get();
     Task task =
         loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
-                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)));
+                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
+                          conditions);
+    task.plantParameters = parameters;
     applyMethodParameters(line, task.profile);
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
@@ -82,6 +88,7 @@ int rigCommand(const QStringList& arguments) {
     rig::CameraRequest camera;
     camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
     camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
+    camera.virtualPlant = parameters;
     QString error;
     if (!rig.startCamera(camera, &error)) {
         throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));

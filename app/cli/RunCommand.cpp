@@ -66,6 +66,7 @@ int runCommand(const QStringList& arguments) {
                   "1");
     addRunSettingsOptions(line, "Training trials for PEGASUS and PD (selected).");
     line.addValue("mask", "Intuitive mapping B~ (default: the plant's), as for 'fit'.", "signs");
+    addPlantParametersOption(line);
     addMethodParameterOptions(line);
     line.addValue("out", "Run log CSV.", "file");
     line.addValue("compare", "Also run this method on the same trials and report it beside.",
@@ -85,7 +86,9 @@ int runCommand(const QStringList& arguments) {
                              .arg(method, sim::MethodCatalog::ids().join(' ')));
     }
     const QString out = line.required("out");
+    const auto parameters = plantParametersOption(line, checkedPlant(plantName));
     Task task = loadTask(plantName, line.required("demo"), line.value("mask"));
+    task.plantParameters = parameters;
     sim::MethodTuning& profile = task.profile;
     applyMethodParameters(line, profile);
     const int trials = static_cast<int>(line.integer("trials", 1, 100000));

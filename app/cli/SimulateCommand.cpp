@@ -29,6 +29,7 @@ int simulateCommand(const QStringList& arguments) {
     line.addValue("duration", "Simulated time [s] (default: one step per action row).", "seconds");
     line.addValue("dt", "Control period [s].", "seconds", "0.025");
     line.addValue("substeps", "Physics steps per control period.", "count", "10");
+    addPlantParametersOption(line);
     line.addValue("out", "Output CSV of states and applied actions.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
@@ -39,7 +40,9 @@ int simulateCommand(const QStringList& arguments) {
     sim::SimulationTiming timing;
     timing.controlPeriod = line.number("dt", 1e-4, 1.0);
     timing.physicsSubsteps = static_cast<int>(line.integer("substeps", 1, 1000));
-    auto plant = sim::PlantCatalog::create(plantName, timing);
+    const auto parameters = plantParametersOption(line, plantName);
+    auto plant = parameters ? sim::PlantCatalog::create(*parameters, timing)
+                            : sim::PlantCatalog::create(plantName, timing);
     const sim::PlantInfo& info = plant->info();
     const int n = info.stateDimension();
     const int m = info.actionDimension();

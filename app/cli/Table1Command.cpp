@@ -4,6 +4,7 @@
 #include "app/cli/TaskSetup.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
+#include "core/ProtocolReport.h"
 #include "core/Table1Report.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
@@ -12,6 +13,8 @@
 #include "sim/Table1Experiment.h"
 #include "sim/Table1Protocol.h"
 
+
+#include <QDir>
 
 #include <cmath>
 #include <cstdio>
@@ -62,6 +65,59 @@ int reportInterrupted(const QString& kept, const QString& written) {
     return interruptedExitCode();
 }
 
+// --variants DIR: every plant file (*.json) in the folder, by name; UsageError if there is none
+// or one is not a plant file of the plant.
+std::vector<std::shared_ptr<const sim::PlantParameters>> variantsOption(const QString& folder,
+                                                                        const QString& plant) {
+    const QDir dir(folder);
+    if (!dir.exists()) {
+        throw UsageError(QStringLiteral("--variants: %1 is not a folder").arg(folder));
+    }
+    const QStringList files =
+        dir.entryList({QStringLiteral("*.json")}, QDir::Files | QDir::Readable, QDir::Name);
+    if (files.isEmpty()) {
+        throw UsageError(QStringLiteral("--variants: no plant file (*.json) in %1").arg(folder));
+    }
+    std::vector<std::shared_ptr<const sim::PlantParameters>> variants;
+    for (const QString& file : files) {
+        QString error;
+        auto parameters = sim::readPlantParameters(dir.filePath(file), plant, &error);
+        if (!parameters) {
+            throw UsageError(QStringLiteral("--variants: %1").arg(error));
+        }
+        variants.push_back(std::make_shared<const sim::PlantParameters>(std::move(*parameters)));
+    }
+    return variants;
+}
+
+// The trials by their place in the day, per method: mean and 95% interval over the cells.
+QByteArray learningCurveCsv(const std::vector<sim::TrialCurve>& curves) {
+    QByteArray csv(
+        "method,trial,phase,cells,position_cm,position_lower,position_upper,orientation_deg,"
+        "orientation_lower,orientation_upper\n");
+    for (const sim::TrialCurve& curve : curves) {
+        for (size_t i = 0; i < curve.position.size(); ++i) {
+            const core::MeanInterval p = core::meanInterval(curve.position[i]);
+            const core::MeanInterval o = core::meanInterval(curve.orientation[i]);
+            csv += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
+                       .arg(curve.method)
+                       .arg(i + 1)
+                       .arg(static_cast<int>(i) < curve.trainingTrials
+                                ? QStringLiteral("training")
+                                : QStringLiteral("evaluation"))
+                       .arg(p.count)
+                       .arg(p.mean, 0, 'g', 8)
+                       .arg(p.lower, 0, 'g', 8)
+                       .arg(p.upper, 0, 'g', 8)
+                       .arg(o.mean, 0, 'g', 8)
+                       .arg(o.lower, 0, 'g', 8)
+                       .arg(o.upper, 0, 'g', 8)
+                       .toUtf8();
+        }
+    }
+    return csv;
+}
+
 // table1 --styles: every method on every (style, seed set) cell.
 int table1ProtocolCommand(const CommandLine& line) {
     if (line.isSet("demo") || line.isSet("demo-seed")) {
@@ -80,6 +136,13 @@ int table1ProtocolCommand(const CommandLine& line) {
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));
     }
     sim::Table1ProtocolSettings settings;
+    settings.plantParameters = plantParametersOption(line, plant);
+    if (line.isSet("variants")) {
+        if (settings.plantParameters) {
+            throw UsageError(QStringLiteral("give --plant-params or --variants, not both"));
+        }
+        settings.variants = variantsOption(line.value("variants"), plant);
+    }
     settings.styles = stylesOption(line, plant);
     settings.table.methods = checkedMethods(line, settings.table.methods);
     const int seedSets = static_cast<int>(line.integer("seed-sets", 1, 10000));
@@ -108,8 +171,21 @@ int table1ProtocolCommand(const CommandLine& line) {
                           .arg(settings.table.run.trainingTrials)
                           .arg(settings.table.run.perturbation)
                           .arg(settings.table.run.sensor);
+    caption += QStringLiteral(", %1 perturbation model")
+                   .arg(sim::perturbationModelName(settings.table.run.perturbationModel));
+    if (!settings.variants.empty()) {
+        caption += QStringLiteral(", %1 plant variants from %2 (the breakdown is per variant)")
+                       .arg(settings.variants.size())
+                       .arg(line.value("variants"));
+    } else if (settings.plantParameters) {
+        caption += QStringLiteral(", plant file %1").arg(settings.plantParameters->source);
+    }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
+    }
+    if (line.isSet("learning-out")) {
+        writeOutput(line.value("learning-out"), learningCurveCsv(result.curves),
+                    !result.cancelled);
     }
     const QString written =
         writeTable(line, core::formatProtocol(result.summary, *format, caption), !result.cancelled);
@@ -141,6 +217,14 @@ int table1Command(const QStringList& arguments) {
                   "With --styles: how many seed sets, --seed, --seed + 1, ... (each gives the "
                   "demonstration's hand variation and the trials' perturbations).",
                   "N", "1");
+    line.addValue("variants",
+                  "With --styles: the new-car protocol, every plant file (*.json) in this folder "
+                  "in turn on every style and seed set; the breakdown is per variant.",
+                  "folder");
+    line.addValue("learning-out",
+                  "With --styles: write each method's trials by their place in the day (training "
+                  "trials first, then evaluation) as CSV: mean and 95% interval over the cells.",
+                  "file");
     line.addValue("trials", "Evaluation trials per method.", "N", "20");
     addRunSettingsOptions(line,
                           "Training trials: PD (selected) selects its gains on them, the learners "
@@ -149,6 +233,7 @@ int table1Command(const QStringList& arguments) {
                   "Comma-separated methods (default: the paper's rows, LQR, PGSD, ILC and the "
                   "oracle, the limit).",
                   "list");
+    addPlantParametersOption(line);
     addMethodParameterOptions(line);
     line.addValue("out", "Write the table here instead of standard output.", "file");
     line.addValue("plot",
@@ -162,31 +247,37 @@ int table1Command(const QStringList& arguments) {
     if (line.isSet("styles")) {
         return table1ProtocolCommand(line);
     }
-    if (line.isSet("seed-sets")) {
-        throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
-    }
-    Task task =
-        line.isSet("demo") ? loadTask(line.value("plant"), line.value("demo"), QString()) : Task{};
-    if (!line.isSet("demo")) {
-        const QString plant = line.value("plant");
-        if (!sim::PlantCatalog::contains(plant)) {
-            throw UsageError(QStringLiteral("unknown plant '%1' (one of: %2)")
-                                 .arg(plant, sim::PlantCatalog::names().join(' ')));
+    for (const char* option : {"seed-sets", "variants", "learning-out"}) {
+        if (line.isSet(QLatin1String(option))) {
+            throw UsageError(QStringLiteral("--%1 goes with --styles").arg(QLatin1String(option)));
         }
-        // The scripted demonstration goes through the same checks as a file would.
+    }
+    sim::Table1Settings settings;
+    readRunSettings(line, settings.run);
+    const QString plantName = checkedPlant(line.value("plant"));
+    const auto parameters = plantParametersOption(line, plantName);
+    Task task = line.isSet("demo") ? loadTask(plantName, line.value("demo"), QString()) : Task{};
+    if (!line.isSet("demo")) {
+        // The scripted demonstration goes through the same checks as a file would, recorded on
+        // the run's car and (session model) its day's mismatch.
         const auto seed = static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62));
         task = scriptedTaskFor(
-            plant, sim::PlantCatalog::demonstrate(plant, seed),
-            QStringLiteral("%1 scripted demonstration seed %2").arg(plant).arg(seed));
+            plantName,
+            sim::DemonstrationStyles::record(
+                plantName, sim::DemonstrationStyles::classic(plantName), seed, {},
+                sim::demonstrationConditions(
+                    settings.run,
+                    sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName)),
+                    parameters.get(), settings.run.seed)),
+            QStringLiteral("%1 scripted demonstration seed %2").arg(plantName).arg(seed));
     }
+    task.plantParameters = parameters;
     if (!task.profile.info.pose) {
         throw UsageError(
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(task.plant));
     }
-    sim::Table1Settings settings;
     settings.methods = checkedMethods(line, settings.methods);
     settings.trials = static_cast<int>(line.integer("trials", 1, 100000));
-    readRunSettings(line, settings.run);
     applyMethodParameters(line, task.profile);
     const auto format = core::parseTableFormat(line.format());
 

@@ -94,22 +94,45 @@ QString checkedPlant(const QString& name) {
 }
 
 Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
-                       std::uint64_t demoSeed) {
+                       std::uint64_t demoSeed, const sim::RecordingConditions& conditions) {
     if (!demonstrationPath.isEmpty()) {
         return loadTask(plant, demonstrationPath, QString());
     }
     checkedPlant(plant);
-    return scriptedTask(plant, sim::DemonstrationStyles::classic(plant), demoSeed);
+    return scriptedTask(plant, sim::DemonstrationStyles::classic(plant), demoSeed, conditions);
 }
 
-Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed) {
+Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed,
+                  const sim::RecordingConditions& conditions) {
     checkedPlant(plant);
     if (!sim::DemonstrationStyles::contains(plant, style)) {
         throw UsageError(QStringLiteral("unknown %1 style '%2' (one of: %3)")
                              .arg(plant, style, sim::DemonstrationStyles::names(plant).join(' ')));
     }
-    return scriptedTaskFor(plant, sim::DemonstrationStyles::record(plant, style, seed),
+    return scriptedTaskFor(plant,
+                           sim::DemonstrationStyles::record(plant, style, seed, {}, conditions),
                            QStringLiteral("%1 %2 seed %3").arg(plant, style).arg(seed));
+}
+
+void addPlantParametersOption(CommandLine& line) {
+    line.addValue("plant-params",
+                  "The plant's physical parameters from this plant file (JSON; `prisca-cli plant "
+                  "--plant NAME --print-params --format json` writes one to edit). Default: the "
+                  "catalog's plant.",
+                  "file");
+}
+
+std::shared_ptr<const sim::PlantParameters> plantParametersOption(const CommandLine& line,
+                                                                  const QString& plant) {
+    if (!line.isSet("plant-params")) {
+        return nullptr;
+    }
+    QString error;
+    auto parameters = sim::readPlantParameters(line.value("plant-params"), plant, &error);
+    if (!parameters) {
+        throw UsageError(QStringLiteral("--plant-params: %1").arg(error));
+    }
+    return std::make_shared<const sim::PlantParameters>(std::move(*parameters));
 }
 
 QStringList stylesOption(const CommandLine& line, const QString& plant) {
@@ -151,6 +174,11 @@ void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
                   "N", QString::number(defaults.seed));
     line.addValue("perturbation", "Plant perturbation level (0 nominal, 1 realistic).", "level",
                   QString::number(defaults.perturbation));
+    line.addValue("perturbation-model",
+                  "How the plant's variation spreads over the trials: 'session' (a lab day: the "
+                  "car's mismatch drawn once for the day, a battery drift trial by trial, a little "
+                  "variation per trial) or 'trial' (each trial draws its own).",
+                  "session|trial", sim::perturbationModelName(defaults.perturbationModel));
     line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level",
                   QString::number(defaults.sensor));
     if (!trainingHelp.isEmpty()) {
@@ -164,6 +192,13 @@ void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool t
     settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
+    const QString model = line.value("perturbation-model");
+    if (const auto parsed = sim::perturbationModelFromName(model)) {
+        settings.perturbationModel = *parsed;
+    } else {
+        throw UsageError(QStringLiteral("--perturbation-model: '%1' is not one of session, trial")
+                             .arg(model));
+    }
     if (training) {
         settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
     }

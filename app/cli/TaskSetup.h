@@ -2,7 +2,9 @@
 
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/Plant.h"
+#include "sim/PlantParameters.h"
 #include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
@@ -38,13 +40,22 @@ Task scriptedTaskFor(const QString& plant, const core::Demonstration& scripted,
 QString checkedPlant(const QString& name);
 
 /// The task from a demonstration file if one is given, else from the plant's scripted
-/// demonstration with this seed (checked the same way as a file).
+/// demonstration with this seed (checked the same way as a file), recorded in `conditions`
+/// (the plant file's car, the session day's mismatch).
 Task loadOrDemonstrate(const QString& plant, const QString& demonstrationPath,
-                       std::uint64_t demoSeed);
+                       std::uint64_t demoSeed, const sim::RecordingConditions& conditions = {});
 
 /// The task of a scripted demonstration in a style with a seed's hand variation (checked as a
-/// file would be); UsageError for an unknown plant or style.
-Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed);
+/// file would be), recorded in `conditions`; UsageError for an unknown plant or style.
+Task scriptedTask(const QString& plant, const QString& style, std::uint64_t seed,
+                  const sim::RecordingConditions& conditions = {});
+
+/// Adds --plant-params FILE (a plant file: the plant's physical parameters).
+void addPlantParametersOption(CommandLine& line);
+/// The plant file --plant-params names, read and checked against `plant`; null when not given.
+/// UsageError naming the file and what is wrong (an unknown key, a value out of its range).
+std::shared_ptr<const sim::PlantParameters> plantParametersOption(const CommandLine& line,
+                                                                  const QString& plant);
 
 /// The styles --styles names for the plant ('all', or a comma-separated list); UsageError for
 /// none or an unknown one.
@@ -58,8 +69,8 @@ void addMethodParameterOptions(CommandLine& line);
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
-/// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`; none for an
-/// empty one), --jobs.
+/// --seed, --perturbation, --perturbation-model, --sensor, --training-trials (described by
+/// `trainingHelp`; none for an empty one), --jobs.
 void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp);
 /// Reads them (--training-trials only if `training`); UsageError naming an option out of range.
 void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool training = true);

@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QRegularExpression>
 #include <QtTest>
 
 #include "core/FileIo.h"
@@ -147,6 +148,97 @@ class TestCliCommands : public QObject {
         QVERIFY(bad.err.contains("moonwalk") && bad.err.contains("stick-180-left"));
     }
 
+    // A plant file: printed with every key's unit and range, written, edited, loaded by
+    // demo, simulate, run and table1 (the car drives differently), and refused by name.
+    void plantFiles_printWriteLoadAndRefuse() {
+        const CliResult text = cli({"plant", "--plant", "slidecar", "--print-params"});
+        QCOMPARE(text.exitCode, 0);
+        QVERIFY2(text.out.contains(QRegularExpression("mass +1.5 kg +\\[0.3, 10\\]")),
+                 qPrintable(text.out));
+        QCOMPARE(cli({"plant", "--plant", "slidecar", "--print-params", "--format", "json",
+                      "--out", "mycar.json"})
+                     .exitCode,
+                 0);
+        // Edited: a heavier car with a weaker motor.
+        QFile file(path("mycar.json"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+        file.close();
+        QJsonObject parameters = root.value("parameters").toObject();
+        QJsonObject mass = parameters.value("mass").toObject();
+        mass.insert("value", 2.4);
+        parameters.insert("mass", mass);
+        parameters.insert("maxDriveForce", 6.0);
+        root.insert("parameters", parameters);
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(QJsonDocument(root).toJson());
+        file.close();
+        const CliResult checked =
+            cli({"plant", "--plant", "slidecar", "--plant-params", "mycar.json"});
+        QVERIFY2(checked.exitCode == 0 && checked.out.contains(QRegularExpression("mass +2.4 kg")),
+                 qPrintable(checked.out + checked.err));
+        // The same drive on both cars: the heavier one covers less ground.
+        const auto coast = [&](const QStringList& extra) {
+            const CliResult r = cli(QStringList{"simulate", "--plant", "slidecar", "--initial",
+                                                "0,0,0,0,0,0", "--actions", "full.csv", "--out",
+                                                "s.csv", "--format", "json"} +
+                                    extra);
+            return QJsonDocument::fromJson(r.out.toUtf8())
+                .object()
+                .value("finalState")
+                .toArray()
+                .at(0)
+                .toDouble();
+        };
+        QFile actions(path("full.csv"));
+        QVERIFY(actions.open(QIODevice::WriteOnly));
+        actions.write("throttle,steering\n");
+        for (int k = 0; k < 40; ++k) {
+            actions.write("1,0\n");
+        }
+        actions.close();
+        const double nominal = coast({});
+        const double heavy = coast({"--plant-params", "mycar.json"});
+        QVERIFY2(nominal > 0.5 && heavy < 0.8 * nominal,
+                 qPrintable(QString("%1 vs %2").arg(heavy).arg(nominal)));
+        const CliResult demo = cli({"demo", "--plant", "slidecar", "--plant-params", "mycar.json",
+                                    "--out", "heavy.csv"});
+        QCOMPARE(demo.exitCode, 0);
+        const CliResult run = cli({"run", "--plant", "slidecar", "--demo", "heavy.csv", "--method",
+                                   "pd-h-lsd", "--plant-params", "mycar.json", "--out",
+                                   "heavy-log.csv"});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QFile log(path("heavy-log.csv"));
+        QVERIFY(log.open(QIODevice::ReadOnly));
+        QVERIFY(log.readAll().contains("# plant-parameters: mycar.json"));
+        // Refusals: exit 2, the key, the value and the range; nothing written.
+        QFile bad(path("bad.json"));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write(R"({"plant": "slidecar", "parameters": {"servoRate": 500}})");
+        bad.close();
+        for (const QStringList& command :
+             {QStringList{"run", "--plant", "slidecar", "--demo", "car.csv", "--method", "pd",
+                          "--plant-params", "bad.json", "--out", "bad-log.csv"},
+              QStringList{"table1", "--plant-params", "bad.json", "--trials", "1", "--out",
+                          "bad-log.csv"},
+              QStringList{"demo", "--plant", "slidecar", "--plant-params", "bad.json", "--out",
+                          "bad-log.csv"}}) {
+            const CliResult r = cli(command);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains("bad.json: servoRate = 500 rad/s is outside [0.5, 50] rad/s"),
+                     qPrintable(r.err));
+            QVERIFY(!QFile::exists(path("bad-log.csv")));
+        }
+        const CliResult missing =
+            cli({"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1",
+                 "--plant-params", "nope.json", "--out", "bad-log.csv"});
+        QCOMPARE(missing.exitCode, 2);
+        QVERIFY2(missing.err.contains("nope.json"), qPrintable(missing.err));
+        const CliResult model = cli({"table1", "--perturbation-model", "daily", "--trials", "1"});
+        QCOMPARE(model.exitCode, 2);
+        QVERIFY2(model.err.contains("'daily' is not one of session, trial"), qPrintable(model.err));
+    }
+
     void table1_stylesAndSeedSetsGiveMeansIntervalsAndABreakdown() {
         const CliResult r =
             cli({"table1", "--styles", "stick-90-left,fast-180-right", "--seed-sets", "2", "--seed",
@@ -179,8 +271,10 @@ class TestCliCommands : public QObject {
             }
             QVERIFY(std::abs(sum / 2.0 - mean) < 1e-9);
         }
+        // (Under the trial model, where this trial leaves the oracle a measurable error.)
         const CliResult md = cli({"table1", "--styles", "stick-90-left", "--trials", "1",
-                                  "--training-trials", "1", "--methods", "pd,oracle"});
+                                  "--training-trials", "1", "--methods", "pd,oracle",
+                                  "--perturbation-model", "trial"});
         QVERIFY2(md.exitCode == 0, qPrintable(md.err));
         QVERIFY2(md.out.contains("| LIMIT (oracle) | 1 | 1 |") && md.out.contains("| 1.0x |"),
                  qPrintable(md.out));

@@ -1,6 +1,8 @@
 // The Task and Controller panels and the session file driven offscreen: sessions saved and
 // opened with their parameters, scripted demonstrations, feature scales and limits, bad files.
 #include "GuiTestSupport.h"
+#include "sim/RunSetup.h"
+#include "sim/SlideCar.h"
 
 using namespace prisca::app;
 using namespace prisca::test;
@@ -91,6 +93,64 @@ class TestGuiSession : public QObject {
         QCOMPARE(w.window.session().demonstrationSource(), path);
         QVERIFY2(w.find<QLabel>("demonstrationInfo")->text().contains(QLatin1String("kept.csv")),
                  qPrintable(w.find<QLabel>("demonstrationInfo")->text()));
+    }
+
+    // A plant file loaded by the Task panel's button: shown by name, the scripted demonstration
+    // recorded again on that car, the runs' plant built from it, saved with the session and
+    // read back without the file; a bad file is refused by key and range, changing nothing.
+    void task_plantFileLoadedShownSavedAndRefused() {
+        QTemporaryDir dir;
+        const QString carPath = dir.filePath("mycar.json");
+        QFile car(carPath);
+        QVERIFY(car.open(QIODevice::WriteOnly));
+        car.write(R"({"plant": "slidecar", "parameters": {"mass": 2.3, "maxDriveForce": 7}})");
+        car.close();
+        const QString sessionPath = dir.filePath("with-car.json");
+        {
+            Window w;
+            auto& session = w.window.session();
+            QVERIFY(!session.plantParameters());
+            QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("the catalog's"));
+            QVERIFY(!w.find<QAbstractButton>("clearPlantFile")->isEnabled());
+            const auto demoBefore = session.demonstration();
+            answerFileDialog(this, carPath,
+                             [&] { w.find<QAbstractButton>("openPlantFile")->click(); });
+            QVERIFY(session.plantParameters());
+            QCOMPARE(session.plantParameters()->value("mass"), 2.3);
+            QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("mycar.json"));
+            QVERIFY(w.find<QAbstractButton>("clearPlantFile")->isEnabled());
+            // The scripted operator drove the heavier car: another demonstration.
+            QVERIFY(session.demonstration() != demoBefore);
+            QVERIFY(session.demonstration()->states.bottomRows(1) !=
+                    demoBefore->states.bottomRows(1));
+            const prisca::sim::RunSetup setup(session.task(), QStringLiteral("pd"));
+            auto plant = setup.makePlant();
+            auto* slideCar = dynamic_cast<prisca::sim::SlideCar*>(plant.get());
+            QVERIFY(slideCar);
+            QCOMPARE(slideCar->parameters().mass, 2.3);
+            QString error;
+            QVERIFY2(session.save(sessionPath, &error), qPrintable(error));
+            // A bad file: the message names the key, the value and the range.
+            QFile bad(dir.filePath("bad.json"));
+            QVERIFY(bad.open(QIODevice::WriteOnly));
+            bad.write(R"({"plant": "slidecar", "parameters": {"wheelbase": 3}})");
+            bad.close();
+            const QString text = answerMessageBox(this, [&] {
+                QVERIFY(!w.find<TaskPanel>("taskPanel")->openPlantParameters(bad.fileName()));
+            });
+            QVERIFY2(text.contains("wheelbase = 3 m is outside [0.08, 0.8] m"), qPrintable(text));
+            QCOMPARE(session.plantParameters()->value("mass"), 2.3);
+        }
+        QVERIFY(QFile::remove(carPath));  // the session holds the values themselves
+        Window w;
+        QString error;
+        QVERIFY2(w.window.session().open(sessionPath, &error), qPrintable(error));
+        QVERIFY(w.window.session().plantParameters());
+        QCOMPARE(w.window.session().plantParameters()->value("maxDriveForce"), 7.0);
+        QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("mycar.json"));
+        w.find<QAbstractButton>("clearPlantFile")->click();
+        QVERIFY(!w.window.session().plantParameters());
+        QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("the catalog's"));
     }
 
     void task_scriptedStyleAndSeedAreUsedShownAndSaved() {

@@ -1,0 +1,519 @@
+#include "PlantParameters.h"
+
+#include "Acrobot.h"
+#include "DiffDrive.h"
+#include "PlanarAircraft.h"
+#include "PlantCatalog.h"
+#include "SlideCar.h"
+#include "core/FileIo.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QJsonValue>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+// One declared parameter of a plant's typed parameters struct P.
+template <class P>
+struct Field {
+    const char* key;
+    const char* unit;
+    double lower;
+    double upper;
+    const char* description;
+    double& (*ref)(P&);
+};
+
+// The slide-car's parameters: a 1:10 to 1:8 car. The ranges keep the model physical (positive
+// masses and lengths, a friction below 2) and Box2D's single-precision body well conditioned.
+const std::vector<Field<SlideCarParameters>>& slideCarFields() {
+    using P = SlideCarParameters;
+    static const std::vector<Field<P>> fields = {
+        {"mass", "kg", 0.3, 10.0, "mass of the car, battery included",
+         [](P& p) -> double& { return p.mass; }},
+        {"yawInertia", "kg m^2", 0.0, 2.0,
+         "moment of inertia about the vertical axis through the centre of mass (0: a uniform box "
+         "of the body's length and width)",
+         [](P& p) -> double& { return p.yawInertia; }},
+        {"length", "m", 0.1, 1.0, "body length (drawing, the uniform-box inertia)",
+         [](P& p) -> double& { return p.length; }},
+        {"width", "m", 0.05, 0.6, "body width, about the track (drawing, the uniform-box inertia)",
+         [](P& p) -> double& { return p.width; }},
+        {"wheelbase", "m", 0.08, 0.8, "front to rear axle",
+         [](P& p) -> double& { return p.wheelbase; }},
+        {"cgForward", "m", -0.3, 0.3,
+         "centre of mass ahead of the wheelbase's midpoint (negative: behind it)",
+         [](P& p) -> double& { return p.cgForward; }},
+        {"cgHeight", "m", 0.0, 0.3, "centre of mass above the floor (load transfer)",
+         [](P& p) -> double& { return p.cgHeight; }},
+        {"staticFriction", "1", 0.05, 2.0, "front tyres' static friction coefficient",
+         [](P& p) -> double& { return p.staticFriction; }},
+        {"kineticFriction", "1", 0.05, 2.0, "front tyres' sliding friction coefficient",
+         [](P& p) -> double& { return p.kineticFriction; }},
+        {"rearStaticFriction", "1", 0.05, 2.0, "rear tyres' static friction coefficient",
+         [](P& p) -> double& { return p.rearStaticFriction; }},
+        {"rearKineticFriction", "1", 0.05, 2.0, "rear tyres' sliding friction coefficient",
+         [](P& p) -> double& { return p.rearKineticFriction; }},
+        {"maxDriveForce", "N", 0.5, 100.0,
+         "traction of all four wheels at standstill and full throttle",
+         [](P& p) -> double& { return p.maxDriveForce; }},
+        {"topSpeed", "m/s", 0.5, 40.0, "speed at which full throttle gives no more force",
+         [](P& p) -> double& { return p.topSpeed; }},
+        {"maxSteeringAngle", "rad", 0.05, 1.0, "front-wheel angle at full steering (steering lock)",
+         [](P& p) -> double& { return p.maxSteeringAngle; }},
+        {"servoRate", "rad/s", 0.5, 50.0, "slew rate of the front-wheel angle",
+         [](P& p) -> double& { return p.servoRate; }},
+        {"servoDelay", "s", 0.0, 0.2, "dead time of steering commands",
+         [](P& p) -> double& { return p.servoDelay; }},
+        {"throttleDelay", "s", 0.0, 0.2, "dead time of the speed controller",
+         [](P& p) -> double& { return p.throttleDelay; }},
+        {"rollingResistance", "1", 0.0, 0.5, "coefficient of rolling resistance",
+         [](P& p) -> double& { return p.rollingResistance; }},
+        {"drivelineDrag", "N s/m", 0.0, 10.0, "viscous drag of motor and gears when coasting",
+         [](P& p) -> double& { return p.drivelineDrag; }},
+    };
+    return fields;
+}
+
+// The acrobot's arm: the book's constants by default.
+const std::vector<Field<AcrobotParameters>>& acrobotFields() {
+    using P = AcrobotParameters;
+    static const std::vector<Field<P>> fields = {
+        {"m1", "kg", 0.05, 20.0, "mass of link 1", [](P& p) -> double& { return p.links.m1; }},
+        {"m2", "kg", 0.05, 20.0, "mass of link 2", [](P& p) -> double& { return p.links.m2; }},
+        {"l1", "m", 0.1, 5.0, "length of link 1, shoulder to elbow",
+         [](P& p) -> double& { return p.links.l1; }},
+        {"l2", "m", 0.1, 5.0, "length of link 2, elbow to tip",
+         [](P& p) -> double& { return p.links.l2; }},
+        {"lc1", "m", 0.01, 5.0, "shoulder to link 1's centre of mass",
+         [](P& p) -> double& { return p.links.lc1; }},
+        {"lc2", "m", 0.01, 5.0, "elbow to link 2's centre of mass",
+         [](P& p) -> double& { return p.links.lc2; }},
+        {"I1", "kg m^2", 0.001, 50.0, "link 1's moment of inertia about its centre of mass",
+         [](P& p) -> double& { return p.links.I1; }},
+        {"I2", "kg m^2", 0.001, 50.0, "link 2's moment of inertia about its centre of mass",
+         [](P& p) -> double& { return p.links.I2; }},
+        {"torqueLimit", "N m", 0.1, 200.0, "limit on each joint's torque",
+         [](P& p) -> double& { return p.torqueLimit; }},
+        {"jointDamping", "N m s/rad", 0.0, 10.0, "viscous friction in each joint",
+         [](P& p) -> double& { return p.jointDamping; }},
+    };
+    return fields;
+}
+
+// The aircraft: a small fixed-wing UAV.
+const std::vector<Field<PlanarAircraftParameters>>& aircraftFields() {
+    using P = PlanarAircraftParameters;
+    static const std::vector<Field<P>> fields = {
+        {"mass", "kg", 0.2, 50.0, "mass", [](P& p) -> double& { return p.mass; }},
+        {"yawInertia", "kg m^2", 0.005, 20.0, "moment of inertia about the vertical axis",
+         [](P& p) -> double& { return p.yawInertia; }},
+        {"wingArea", "m^2", 0.02, 5.0, "reference wing area S",
+         [](P& p) -> double& { return p.wingArea; }},
+        {"wingSpan", "m", 0.2, 10.0, "reference span b", [](P& p) -> double& { return p.wingSpan; }},
+        {"airDensity", "kg/m^3", 0.5, 1.5, "air density rho",
+         [](P& p) -> double& { return p.airDensity; }},
+        {"zeroLiftDrag", "1", 0.005, 0.3, "zero-lift drag coefficient CD0",
+         [](P& p) -> double& { return p.zeroLiftDrag; }},
+        {"oswaldEfficiency", "1", 0.3, 1.0, "Oswald efficiency e (induced drag)",
+         [](P& p) -> double& { return p.oswaldEfficiency; }},
+        {"maxLiftCoefficient", "1", 0.3, 3.0, "lift coefficient cap below the stall speed",
+         [](P& p) -> double& { return p.maxLiftCoefficient; }},
+        {"sideslipDrag", "1", 0.0, 2.0, "extra drag coefficient per rad^2 of sideslip",
+         [](P& p) -> double& { return p.sideslipDrag; }},
+        {"sideForceSideslip", "1/rad", -5.0, -0.01, "side force from sideslip CY_beta (< 0)",
+         [](P& p) -> double& { return p.sideForceSideslip; }},
+        {"sideForceRudder", "1/rad", -2.0, 0.0, "side force from the rudder CY_delta_r",
+         [](P& p) -> double& { return p.sideForceRudder; }},
+        {"yawMomentSideslip", "1/rad", 0.0, 1.0, "weathercock stability Cn_beta (> 0)",
+         [](P& p) -> double& { return p.yawMomentSideslip; }},
+        {"yawMomentRudder", "1/rad", 0.001, 1.0, "rudder authority Cn_delta_r (> 0)",
+         [](P& p) -> double& { return p.yawMomentRudder; }},
+        {"yawDamping", "1", -5.0, 0.0, "yaw damping Cn_r (< 0)",
+         [](P& p) -> double& { return p.yawDamping; }},
+        {"maxRudderDeflection", "rad", 0.05, 1.0, "rudder angle at full deflection",
+         [](P& p) -> double& { return p.maxRudderDeflection; }},
+        {"staticThrust", "N", 0.5, 500.0, "thrust at full throttle and zero airspeed",
+         [](P& p) -> double& { return p.staticThrust; }},
+        {"propellerPitchSpeed", "m/s", 5.0, 150.0, "airspeed at which the thrust has fallen to 0",
+         [](P& p) -> double& { return p.propellerPitchSpeed; }},
+    };
+    return fields;
+}
+
+// The differential-drive robot.
+const std::vector<Field<DiffDriveParameters>>& diffDriveFields() {
+    using P = DiffDriveParameters;
+    static const std::vector<Field<P>> fields = {
+        {"mass", "kg", 0.2, 50.0, "mass", [](P& p) -> double& { return p.mass; }},
+        {"yawInertia", "kg m^2", 0.0005, 10.0, "moment of inertia about the centre",
+         [](P& p) -> double& { return p.yawInertia; }},
+        {"length", "m", 0.05, 2.0, "body length", [](P& p) -> double& { return p.length; }},
+        {"width", "m", 0.05, 2.0, "body width", [](P& p) -> double& { return p.width; }},
+        {"track", "m", 0.05, 2.0, "distance between the two wheels",
+         [](P& p) -> double& { return p.track; }},
+        {"maxWheelSpeed", "m/s", 0.05, 10.0, "wheel rim speed at a command of 1",
+         [](P& p) -> double& { return p.maxWheelSpeed; }},
+        {"motorTimeConstant", "s", 0.005, 2.0, "first-order lag of each wheel's speed",
+         [](P& p) -> double& { return p.motorTimeConstant; }},
+        {"friction", "1", 0.05, 2.0, "tyre-floor friction coefficient",
+         [](P& p) -> double& { return p.friction; }},
+        {"tractionStiffness", "1", 0.01, 1.0, "share of the slip a wheel removes per physics step",
+         [](P& p) -> double& { return p.tractionStiffness; }},
+        {"casterDrag", "N s/m", 0.0, 20.0, "viscous drag of the caster",
+         [](P& p) -> double& { return p.casterDrag; }},
+    };
+    return fields;
+}
+
+template <class P>
+std::vector<PlantParameterSpec> specsOf(const std::vector<Field<P>>& fields) {
+    std::vector<PlantParameterSpec> specs;
+    P defaults{};
+    for (const Field<P>& f : fields) {
+        specs.push_back({QString::fromLatin1(f.key), QString::fromUtf8(f.unit), f.lower, f.upper,
+                         f.ref(defaults), QString::fromUtf8(f.description)});
+    }
+    return specs;
+}
+
+template <class P>
+P typedFrom(const std::vector<Field<P>>& fields, const PlantParameters& parameters,
+            const char* plant) {
+    if (parameters.plant != QLatin1String(plant) || parameters.values.size() != fields.size()) {
+        throw std::invalid_argument(
+            QStringLiteral("plant parameters of '%1' (%2 values) given to the %3")
+                .arg(parameters.plant)
+                .arg(parameters.values.size())
+                .arg(QLatin1String(plant))
+                .toStdString());
+    }
+    P typed{};
+    for (size_t i = 0; i < fields.size(); ++i) {
+        fields[i].ref(typed) = parameters.values[i];
+    }
+    return typed;
+}
+
+QString number(double v) {
+    return QString::number(v, 'g', 10);
+}
+
+QString withUnit(double v, const QString& unit) {
+    return unit == QLatin1String("1") ? number(v) : number(v) + QLatin1Char(' ') + unit;
+}
+
+int indexOf(const std::vector<PlantParameterSpec>& specs, const char* key) {
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].key == QLatin1String(key)) {
+            return static_cast<int>(i);
+        }
+    }
+    throw std::logic_error("plant parameter not declared");
+}
+
+// The relations between a plant's values that no single range can say.
+QString relationProblem(const QString& plant, const std::vector<PlantParameterSpec>& specs,
+                        const std::vector<double>& v) {
+    auto at = [&](const char* key) { return v[static_cast<size_t>(indexOf(specs, key))]; };
+    if (plant == QLatin1String("slidecar")) {
+        if (at("kineticFriction") > at("staticFriction")) {
+            return QStringLiteral("kineticFriction = %1 is above staticFriction = %2 (a sliding "
+                                  "tyre grips less than a rolling one)")
+                .arg(number(at("kineticFriction")), number(at("staticFriction")));
+        }
+        if (at("rearKineticFriction") > at("rearStaticFriction")) {
+            return QStringLiteral("rearKineticFriction = %1 is above rearStaticFriction = %2 (a "
+                                  "sliding tyre grips less than a rolling one)")
+                .arg(number(at("rearKineticFriction")), number(at("rearStaticFriction")));
+        }
+        if (std::abs(at("cgForward")) >= 0.45 * at("wheelbase")) {
+            return QStringLiteral("cgForward = %1 m puts the centre of mass over an axle of the "
+                                  "%2 m wheelbase (|cgForward| must stay below 0.45 wheelbase)")
+                .arg(number(at("cgForward")), number(at("wheelbase")));
+        }
+        if (at("wheelbase") > at("length")) {
+            return QStringLiteral("wheelbase = %1 m is longer than the body (length = %2 m)")
+                .arg(number(at("wheelbase")), number(at("length")));
+        }
+    } else if (plant == QLatin1String("acrobot")) {
+        if (at("lc1") > at("l1")) {
+            return QStringLiteral("lc1 = %1 m lies beyond link 1 (l1 = %2 m)")
+                .arg(number(at("lc1")), number(at("l1")));
+        }
+        if (at("lc2") > at("l2")) {
+            return QStringLiteral("lc2 = %1 m lies beyond link 2 (l2 = %2 m)")
+                .arg(number(at("lc2")), number(at("l2")));
+        }
+    } else if (plant == QLatin1String("diffdrive")) {
+        if (at("track") > at("width") * 1.5) {
+            return QStringLiteral("track = %1 m is far wider than the body (width = %2 m)")
+                .arg(number(at("track")), number(at("width")));
+        }
+    }
+    return {};
+}
+
+const QString kFormat = QStringLiteral("prisca-plant-parameters");
+
+}  // namespace
+
+const std::vector<PlantParameterSpec>& plantParameterSpecs(const QString& plant) {
+    static const std::vector<PlantParameterSpec> car = specsOf(slideCarFields());
+    static const std::vector<PlantParameterSpec> arm = specsOf(acrobotFields());
+    static const std::vector<PlantParameterSpec> aircraft = specsOf(aircraftFields());
+    static const std::vector<PlantParameterSpec> robot = specsOf(diffDriveFields());
+    PlantCatalog::get(plant);  // an unknown plant is named with the known ones
+    if (plant == QLatin1String("slidecar")) {
+        return car;
+    }
+    if (plant == QLatin1String("acrobot")) {
+        return arm;
+    }
+    if (plant == QLatin1String("aircraft")) {
+        return aircraft;
+    }
+    if (plant == QLatin1String("diffdrive")) {
+        return robot;
+    }
+    throw std::invalid_argument(
+        QStringLiteral("the plant '%1' declares no physical parameters").arg(plant).toStdString());
+}
+
+bool PlantParameters::isCatalogPlant() const {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(plant);
+    if (specs.size() != values.size()) {
+        return false;
+    }
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].value != values[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+double PlantParameters::value(const QString& key) const {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(plant);
+    for (size_t i = 0; i < specs.size() && i < values.size(); ++i) {
+        if (specs[i].key == key) {
+            return values[i];
+        }
+    }
+    throw std::invalid_argument(
+        QStringLiteral("the %1 has no parameter '%2'").arg(plant, key).toStdString());
+}
+
+PlantParameters defaultPlantParameters(const QString& plant) {
+    PlantParameters p;
+    p.plant = plant;
+    for (const PlantParameterSpec& spec : plantParameterSpecs(plant)) {
+        p.values.push_back(spec.value);
+    }
+    return p;
+}
+
+QString plantParametersProblem(const QString& plant, const std::vector<double>& values) {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(plant);
+    if (values.size() != specs.size()) {
+        return QStringLiteral("the %1 has %2 parameters, %3 given")
+            .arg(plant)
+            .arg(specs.size())
+            .arg(values.size());
+    }
+    for (size_t i = 0; i < specs.size(); ++i) {
+        const PlantParameterSpec& s = specs[i];
+        if (!std::isfinite(values[i]) || values[i] < s.lower || values[i] > s.upper) {
+            return QStringLiteral("%1 = %2 is outside [%3, %4]%5")
+                .arg(s.key, withUnit(values[i], s.unit), number(s.lower), number(s.upper),
+                     s.unit == QLatin1String("1") ? QString() : QLatin1Char(' ') + s.unit);
+        }
+    }
+    return relationProblem(plant, specs, values);
+}
+
+std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
+                                                    const QString& sourceName,
+                                                    const QString& plant, QString* error) {
+    auto fail = [&](const QString& why) -> std::optional<PlantParameters> {
+        if (error) {
+            *error = QStringLiteral("%1: %2").arg(sourceName, why);
+        }
+        return std::nullopt;
+    };
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        return fail(QStringLiteral("not valid JSON at byte %1 (%2)")
+                        .arg(parseError.offset)
+                        .arg(parseError.errorString()));
+    }
+    if (!document.isObject()) {
+        return fail(QStringLiteral("valid JSON, but not a plant file (an object with \"plant\" "
+                                   "and \"parameters\" is expected)"));
+    }
+    const QJsonObject root = document.object();
+    for (auto it = root.begin(); it != root.end(); ++it) {
+        const QString key = it.key();
+        if (key != QLatin1String("plant") && key != QLatin1String("parameters") &&
+            key != QLatin1String("format") && key != QLatin1String("version") &&
+            key != QLatin1String("description")) {
+            return fail(QStringLiteral("unknown key \"%1\" (a plant file has \"plant\", "
+                                       "\"parameters\" and optionally \"format\", \"version\", "
+                                       "\"description\")")
+                            .arg(key));
+        }
+    }
+    if (root.contains(QLatin1String("format")) &&
+        root.value(QLatin1String("format")).toString() != kFormat) {
+        return fail(QStringLiteral("\"format\" is \"%1\", not \"%2\"")
+                        .arg(root.value(QLatin1String("format")).toString(), kFormat));
+    }
+    if (root.contains(QLatin1String("version")) &&
+        root.value(QLatin1String("version")).toInt(-1) != 1) {
+        return fail(QStringLiteral("version %1 is not one this build reads (1)")
+                        .arg(root.value(QLatin1String("version")).toVariant().toString()));
+    }
+    const QJsonValue plantValue = root.value(QLatin1String("plant"));
+    if (!plantValue.isString()) {
+        return fail(QStringLiteral("\"plant\" is missing (one of: %1)")
+                        .arg(PlantCatalog::names().join(QStringLiteral(", "))));
+    }
+    const QString filePlant = plantValue.toString();
+    if (!PlantCatalog::contains(filePlant)) {
+        return fail(QStringLiteral("unknown plant \"%1\" (one of: %2)")
+                        .arg(filePlant, PlantCatalog::names().join(QStringLiteral(", "))));
+    }
+    if (!plant.isEmpty() && filePlant != plant) {
+        return fail(QStringLiteral("is a plant file for the %1, not the %2").arg(filePlant, plant));
+    }
+    const QJsonValue parametersValue = root.value(QLatin1String("parameters"));
+    if (!parametersValue.isObject()) {
+        return fail(QStringLiteral("\"parameters\" is missing or not an object"));
+    }
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(filePlant);
+    PlantParameters result = defaultPlantParameters(filePlant);
+    result.source = sourceName;
+    const QJsonObject parameters = parametersValue.toObject();
+    for (auto it = parameters.begin(); it != parameters.end(); ++it) {
+        int index = -1;
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == it.key()) {
+                index = static_cast<int>(i);
+            }
+        }
+        if (index < 0) {
+            QStringList known;
+            for (const PlantParameterSpec& s : specs) {
+                known << s.key;
+            }
+            return fail(QStringLiteral("unknown %1 parameter \"%2\" (known: %3)")
+                            .arg(filePlant, it.key(), known.join(QStringLiteral(", "))));
+        }
+        const PlantParameterSpec& spec = specs[static_cast<size_t>(index)];
+        QJsonValue value = it.value();
+        if (value.isObject()) {
+            const QJsonObject entry = value.toObject();
+            if (entry.contains(QLatin1String("unit")) &&
+                entry.value(QLatin1String("unit")).toString() != spec.unit) {
+                return fail(QStringLiteral("%1 is given in \"%2\"; its unit is \"%3\"")
+                                .arg(spec.key, entry.value(QLatin1String("unit")).toString(),
+                                     spec.unit));
+            }
+            value = entry.value(QLatin1String("value"));
+        }
+        if (!value.isDouble()) {
+            return fail(QStringLiteral("%1 is not a number").arg(spec.key));
+        }
+        result.values[static_cast<size_t>(index)] = value.toDouble();
+    }
+    if (const QString problem = plantParametersProblem(filePlant, result.values);
+        !problem.isEmpty()) {
+        return fail(problem);
+    }
+    return result;
+}
+
+std::optional<PlantParameters> readPlantParameters(const QString& path, const QString& plant,
+                                                   QString* error) {
+    core::FileError fileError;
+    // A plant file is a few kilobytes; a megabyte is far beyond any.
+    const std::optional<QByteArray> bytes = core::readFileBounded(path, 1 << 20, &fileError);
+    if (!bytes) {
+        if (error) {
+            *error = fileError.toString();
+        }
+        return std::nullopt;
+    }
+    return parsePlantParameters(*bytes, path, plant, error);
+}
+
+QByteArray plantParametersJson(const PlantParameters& parameters) {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(parameters.plant);
+    QJsonObject values;
+    for (size_t i = 0; i < specs.size() && i < parameters.values.size(); ++i) {
+        const PlantParameterSpec& s = specs[i];
+        values.insert(s.key, QJsonObject{{"value", parameters.values[i]},
+                                         {"unit", s.unit},
+                                         {"min", s.lower},
+                                         {"max", s.upper},
+                                         {"description", s.description}});
+    }
+    QJsonObject root{{"format", kFormat},
+                     {"version", 1},
+                     {"plant", parameters.plant},
+                     {"parameters", values}};
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+QString plantParametersText(const PlantParameters& parameters) {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(parameters.plant);
+    int width = 0;
+    int rangeWidth = 0;
+    for (const PlantParameterSpec& s : specs) {
+        width = std::max(width, static_cast<int>(s.key.size()));
+        rangeWidth = std::max(rangeWidth, static_cast<int>(number(s.lower).size() +
+                                                           number(s.upper).size() + 4));
+    }
+    QString text = QStringLiteral("%1 parameters%2\n")
+                       .arg(parameters.plant,
+                            parameters.source.isEmpty()
+                                ? QStringLiteral(" (the catalog's)")
+                                : QStringLiteral(" from %1").arg(parameters.source));
+    for (size_t i = 0; i < specs.size() && i < parameters.values.size(); ++i) {
+        const PlantParameterSpec& s = specs[i];
+        text += QStringLiteral("  %1  %2  %3  %4\n")
+                    .arg(s.key, -width)
+                    .arg(withUnit(parameters.values[i], s.unit), -16)
+                    .arg(QStringLiteral("[%1, %2]").arg(number(s.lower), number(s.upper)),
+                         -rangeWidth)
+                    .arg(s.description);
+    }
+    return text;
+}
+
+SlideCarParameters slideCarParameters(const PlantParameters& parameters) {
+    return typedFrom(slideCarFields(), parameters, "slidecar");
+}
+
+AcrobotParameters acrobotParameters(const PlantParameters& parameters) {
+    return typedFrom(acrobotFields(), parameters, "acrobot");
+}
+
+PlanarAircraftParameters aircraftParameters(const PlantParameters& parameters) {
+    return typedFrom(aircraftFields(), parameters, "aircraft");
+}
+
+DiffDriveParameters diffDriveParameters(const PlantParameters& parameters) {
+    return typedFrom(diffDriveFields(), parameters, "diffdrive");
+}
+
+}  // namespace prisca::sim
