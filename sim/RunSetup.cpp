@@ -22,6 +22,22 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
     task_.timing.controlPeriod = task_.demonstration->dt;
     episode_ = task_.profile.episode(*task_.demonstration, settings_.perturbation,
                                      settings_.sensor);
+    if (settings_.poseFilter) {
+        const PlantInfo& info = task_.profile.info;
+        if (!info.pose || !info.bodyVelocity) {
+            throw std::invalid_argument(
+                QStringLiteral("the pose filter needs a planar vehicle; '%1' is not one")
+                    .arg(info.name)
+                    .toStdString());
+        }
+        episode_.poseFilter = true;
+        // The input term from the demonstration's own fit (B's velocity columns).
+        if (task_.fit.b.rows() == info.actionDimension() &&
+            task_.fit.b.cols() == info.stateDimension()) {
+            episode_.poseFilterParameters.inputGain =
+                core::inputGainFromFit(task_.fit.b, *info.bodyVelocity);
+        }
+    }
 }
 
 std::unique_ptr<Plant> RunSetup::makePlant() const {
@@ -73,6 +89,9 @@ core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trial
     log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
     log.metadata.insert(QStringLiteral("perturbation"), QString::number(settings_.perturbation));
     log.metadata.insert(QStringLiteral("sensor"), QString::number(settings_.sensor));
+    if (settings_.poseFilter) {
+        log.metadata.insert(QStringLiteral("pose-filter"), QStringLiteral("on"));
+    }
     log.metadata.insert(QStringLiteral("demonstration"), demonstrationSource);
     return log;
 }

@@ -22,6 +22,9 @@ struct RunSettings {
     std::uint64_t seed = 1;
     double perturbation = 1.0;  ///< plant perturbation level (0 nominal, 1 realistic)
     double sensor = 1.0;        ///< sensor level (0 perfect state, 1 realistic)
+    /// Pass the sensor's observations through the pose filter (EpisodeSettings::poseFilter;
+    /// planar vehicles only). Off by default.
+    bool poseFilter = false;
     /// Trials a method trains on before it is evaluated: PD (selected) scores its gain grid on
     /// them; in Table I the online learners warm up on them. PEGASUS takes its fixed scenarios
     /// from the first PegasusParameters::scenarios of them.

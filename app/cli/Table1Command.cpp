@@ -108,6 +108,9 @@ int table1ProtocolCommand(const CommandLine& line) {
                           .arg(settings.table.run.trainingTrials)
                           .arg(settings.table.run.perturbation)
                           .arg(settings.table.run.sensor);
+    if (settings.table.run.poseFilter) {
+        caption += QStringLiteral("; pose filter on");
+    }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
@@ -208,6 +211,9 @@ int table1Command(const QStringList& arguments) {
                           .arg(settings.run.trainingTrials)
                           .arg(settings.run.perturbation)
                           .arg(settings.run.sensor);
+    if (settings.run.poseFilter) {
+        caption += QStringLiteral(", pose filter on");
+    }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: %1 of %2 trials finished)")
                        .arg(finished)

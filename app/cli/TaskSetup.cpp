@@ -153,6 +153,11 @@ void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
                   QString::number(defaults.perturbation));
     line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level",
                   QString::number(defaults.sensor));
+    line.addValue("pose-filter",
+                  "Pass the sensor's observations through the pose filter (an extended Kalman "
+                  "filter predicting across the latency, bridging dropped samples, gating "
+                  "outliers) before the controller: on or off. Planar vehicles only.",
+                  "on|off", defaults.poseFilter ? QStringLiteral("on") : QStringLiteral("off"));
     if (!trainingHelp.isEmpty()) {
         line.addValue("training-trials", trainingHelp, "N",
                       QString::number(defaults.trainingTrials));
@@ -164,6 +169,11 @@ void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool t
     settings.seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
+    const QString filter = line.value("pose-filter");
+    if (filter != QLatin1String("on") && filter != QLatin1String("off")) {
+        throw UsageError(QStringLiteral("--pose-filter: '%1' is neither 'on' nor 'off'").arg(filter));
+    }
+    settings.poseFilter = filter == QLatin1String("on");
     if (training) {
         settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
     }

@@ -58,7 +58,7 @@ void addMethodParameterOptions(CommandLine& line);
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
-/// --seed, --perturbation, --sensor, --training-trials (described by `trainingHelp`; none for an
+/// --seed, --perturbation, --sensor, --pose-filter, --training-trials (described by `trainingHelp`; none for an
 /// empty one), --jobs.
 void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp);
 /// Reads them (--training-trials only if `training`); UsageError naming an option out of range.
