@@ -127,6 +127,15 @@ void PoseFilterParameters::validate() const {
                  std::to_string(accelerationDensity[i]) + " (finite and >= 0 needed)");
         }
     }
+    for (int i = 0; i < 3; ++i) {
+        if (!(jerkDensity[i] >= 0.0) || !std::isfinite(jerkDensity[i])) {
+            fail("jerk density of the " + std::string(kComponentNames[3 + i]) + " = " +
+                 std::to_string(jerkDensity[i]) + " (finite and >= 0 needed)");
+        }
+    }
+    if (!(initialAccelerationStd.array() > 0.0).all() || !initialAccelerationStd.allFinite()) {
+        fail("initial acceleration std must be finite and > 0");
+    }
     if (!(controlPeriod > 0.0) || !std::isfinite(controlPeriod)) {
         fail("control period " + std::to_string(controlPeriod) + " s (> 0 needed)");
     }
@@ -199,6 +208,40 @@ Eigen::Vector3d accelerationDensityFromStates(const Eigen::MatrixXd& states,
     return density;
 }
 
+Eigen::Vector3d jerkDensityFromStates(const Eigen::MatrixXd& states,
+                                      const BodyVelocityIndices& velocity, double dt,
+                                      double floor) {
+    if (states.rows() < 4) {
+        throw std::invalid_argument("jerkDensityFromStates: " + std::to_string(states.rows()) +
+                                    " samples (4 or more needed)");
+    }
+    if (!(dt > 0.0)) {
+        throw std::invalid_argument("jerkDensityFromStates: dt = " + std::to_string(dt) +
+                                    " (> 0 needed)");
+    }
+    const int columns[3] = {velocity.forward, velocity.lateral, velocity.yawRate};
+    Eigen::Vector3d density;
+    std::vector<double> changes(static_cast<std::size_t>(states.rows() - 2));
+    for (int i = 0; i < 3; ++i) {
+        if (columns[i] < 0 || columns[i] >= states.cols()) {
+            throw std::invalid_argument("jerkDensityFromStates: velocity index " +
+                                        std::to_string(columns[i]) + " is outside the state");
+        }
+        for (Eigen::Index k = 0; k + 2 < states.rows(); ++k) {
+            const double second = states(k + 2, columns[i]) - 2.0 * states(k + 1, columns[i]) +
+                                  states(k, columns[i]);
+            changes[static_cast<std::size_t>(k)] = std::abs(second) / dt;  // change of a per step
+        }
+        const std::size_t rank = static_cast<std::size_t>(
+            std::ceil(0.99 * static_cast<double>(changes.size()))) - 1;
+        std::nth_element(changes.begin(), changes.begin() + static_cast<long>(rank),
+                         changes.end());
+        const double change = changes[rank];
+        density[i] = std::max(change * change / dt, floor);
+    }
+    return density;
+}
+
 PoseFilter::PoseFilter(PoseFilterParameters parameters, int actionDimension)
     : parameters_(std::move(parameters)) {
     parameters_.validate();
@@ -233,6 +276,9 @@ void PoseFilter::reset() {
     time_ = 0.0;
     xNow_.setZero();
     pNow_.setIdentity();
+    refreshViews();
+    now6_ = lagged6_;
+    nowP6_ = laggedP6_;
     output_.setZero();
     headingBranch_ = 0.0;
     haveReference_ = false;
@@ -307,6 +353,55 @@ PoseFilter::Matrix6 PoseFilter::processNoise(const Vector6& x, double tau,
     return out;
 }
 
+PoseFilter::Vector9 PoseFilter::propagateFull(const Vector9& x, double tau, Matrix9* f) {
+    // The pose along the arc at the span's mid velocities (exact for constant accelerations in
+    // the heading, psi + r tau + ar tau^2 / 2), the velocities integrating the accelerations.
+    Vector6 mid = x.head<6>();
+    mid.tail<3>() += 0.5 * tau * x.tail<3>();
+    Matrix6 f6;
+    const Vector6 moved = propagate(mid, tau, f ? &f6 : nullptr);
+    Vector9 out = x;
+    out.head<3>() = moved.head<3>();
+    out.segment<3>(3) = x.segment<3>(3) + tau * x.tail<3>();
+    if (f) {
+        f->setIdentity();
+        f->topLeftCorner<6, 6>() = f6;
+        f->block<3, 3>(0, 6) = 0.5 * tau * f6.block<3, 3>(0, 3);
+        f->block<3, 3>(3, 6) = tau * Eigen::Matrix3d::Identity();
+    }
+    return out;
+}
+
+PoseFilter::Matrix9 PoseFilter::processNoiseFull(const Vector9& x, double tau,
+                                                 const Eigen::Vector3d& density,
+                                                 const Eigen::Vector3d& jerk) {
+    // Per body axis (position or heading, rate, acceleration): white acceleration q on the rate
+    // [tau^3/3, tau^2/2, 0; tau^2/2, tau, 0; 0 0 0] q plus white jerk j on the acceleration
+    // [tau^5/20, tau^4/8, tau^3/6; tau^4/8, tau^3/3, tau^2/2; tau^3/6, tau^2/2, tau] j; the
+    // position rows rotated into the world at the start heading.
+    const double t1 = tau, t2 = tau * tau / 2.0, t3 = tau * tau * tau / 3.0;
+    const double t4 = tau * tau * tau * tau / 8.0, t5 = tau * tau * tau * tau * tau / 20.0;
+    const double t3j = tau * tau * tau / 6.0;
+    Matrix9 body = Matrix9::Zero();
+    for (int i = 0; i < 3; ++i) {
+        const int p = i, v = 3 + i, a = 6 + i;
+        const double q = density[i], j = jerk[i];
+        body(p, p) = t3 * q + t5 * j;
+        body(p, v) = body(v, p) = t2 * q + t4 * j;
+        body(v, v) = t1 * q + t3 * j;
+        body(p, a) = body(a, p) = t3j * j;
+        body(v, a) = body(a, v) = t2 * j;
+        body(a, a) = t1 * j;
+    }
+    Matrix9 rotate = Matrix9::Identity();
+    const double sp = std::sin(x[2]), cp = std::cos(x[2]);
+    rotate(0, 0) = cp;
+    rotate(0, 1) = -sp;
+    rotate(1, 0) = sp;
+    rotate(1, 1) = cp;
+    return rotate * body * rotate.transpose();
+}
+
 int PoseFilter::slot(int age) const {
     return (actionHead_ - age + kActionCapacity) % kActionCapacity;
 }
@@ -320,16 +415,17 @@ int PoseFilter::actionInForce(double t) const {
     return -1;
 }
 
-void PoseFilter::predictSpan(Vector6& x, Matrix6& p, double t0, double t1) const {
+void PoseFilter::predictSpan(Vector9& x, Matrix9& p, double t0, double t1) const {
     const bool input = parameters_.inputGain.size() > 0 && haveReference_;
-    Matrix6 f;
+    Matrix9 f;
     // One stretch of tau under the action `age` places back (-1: none known).
     auto stretch = [&](double tau, int age) {
         if (tau <= kTimeTolerance) {
             return;
         }
-        const Matrix6 q = processNoise(x, tau, parameters_.accelerationDensity);
-        x = propagate(x, tau, &f);
+        const Matrix9 q = processNoiseFull(x, tau, parameters_.accelerationDensity,
+                                           parameters_.jerkDensity);
+        x = propagateFull(x, tau, &f);
         p = f * p * f.transpose() + q;
         if (input && age >= 0) {
             scratch_ = actions_.col(slot(age)) - reference_;
@@ -381,11 +477,18 @@ void PoseFilter::initialise(const Eigen::Ref<const Eigen::VectorXd>& observation
                             double takenAt) {
     const bool first = !status_.initialised;
     p_.setZero();
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < 9; ++i) {
         if (first) {
             x_[i] = 0.0;
         }
-        p_(i, i) = parameters_.initialStd[i] * parameters_.initialStd[i];
+        if (i < 6) {
+            p_(i, i) = parameters_.initialStd[i] * parameters_.initialStd[i];
+        } else if (parameters_.jerkDensity[i - 6] > 0.0) {
+            p_(i, i) = parameters_.initialAccelerationStd[i - 6] *
+                       parameters_.initialAccelerationStd[i - 6];
+        } else {
+            x_[i] = 0.0;  // no acceleration state on this axis
+        }
     }
     for (int i = 0; i < measuredCount_; ++i) {
         const int component = measuredComponent_[i];
@@ -396,6 +499,7 @@ void PoseFilter::initialise(const Eigen::Ref<const Eigen::VectorXd>& observation
     }
     x_[kHeading] = wrapAngle(x_[kHeading]);
     time_ = takenAt;
+    refreshViews();
     output_ = observation;
     if (headingMeasured_) {
         headingBranch_ = observation[index_[kHeading]];
@@ -444,23 +548,24 @@ void PoseFilter::measure(const Eigen::Ref<const Eigen::VectorXd>& observation) {
     }
     consecutiveGated_ = 0;
     // K = P H^T S^-1 (6 x m), Joseph-form covariance update.
-    GainMatrix pht(6, measuredCount_);
+    GainMatrix pht(9, measuredCount_);
     for (int j = 0; j < measuredCount_; ++j) {
         pht.col(j) = p_.col(measuredComponent_[j]);
     }
     const GainMatrix gain = llt.solve(pht.transpose()).transpose();
     x_.noalias() += gain * innovation;
     x_[kHeading] = wrapAngle(x_[kHeading]);
-    Matrix6 ikh = Matrix6::Identity();
+    Matrix9 ikh = Matrix9::Identity();
     for (int j = 0; j < measuredCount_; ++j) {
         ikh.col(measuredComponent_[j]) -= gain.col(j);
     }
-    Matrix6 kr = Matrix6::Zero();
+    Matrix9 kr = Matrix9::Zero();
     for (int j = 0; j < measuredCount_; ++j) {
         const double std = parameters_.measurementStd[index_[measuredComponent_[j]]];
         kr.noalias() += (std * std) * gain.col(j) * gain.col(j).transpose();
     }
     p_ = ikh * p_ * ikh.transpose() + kr;
+    refreshViews();
 }
 
 void PoseFilter::update(const Eigen::Ref<const Eigen::VectorXd>& observation, double takenAt) {
@@ -482,6 +587,7 @@ void PoseFilter::update(const Eigen::Ref<const Eigen::VectorXd>& observation, do
     }
     predictSpan(x_, p_, time_, takenAt);
     time_ = takenAt;
+    refreshViews();
     const int age = actionInForce(takenAt - 2.0 * kTimeTolerance);
     haveReference_ = age >= 0;
     if (haveReference_) {
@@ -526,6 +632,8 @@ const Eigen::VectorXd& PoseFilter::predictTo(double now) {
     xNow_ = x_;
     pNow_ = p_;
     predictSpan(xNow_, pNow_, time_, time_ + span);
+    now6_ = xNow_.head<6>();
+    nowP6_ = pNow_.topLeftCorner<6, 6>();
     writeOutput(xNow_);
     return output_;
 }
@@ -553,7 +661,12 @@ void PoseFilter::commanded(const Eigen::Ref<const Eigen::VectorXd>& action) {
     ++stepIndex_;
 }
 
-void PoseFilter::writeOutput(const Vector6& x) {
+void PoseFilter::refreshViews() {
+    lagged6_ = x_.head<6>();
+    laggedP6_ = p_.topLeftCorner<6, 6>();
+}
+
+void PoseFilter::writeOutput(const Vector9& x) {
     for (int i = 0; i < 6; ++i) {
         output_[index_[i]] = x[i];
     }

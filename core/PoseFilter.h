@@ -55,6 +55,18 @@ struct PoseFilterParameters {
     /// returns the estimate predicted that many steps ahead, to now, through the actions
     /// commanded since.
     int latencySteps = 0;
+    /// Spectral densities of white jerks that drive body accelerations (ax, ay, ar) as random
+    /// walks: forward and lateral [m^2/s^5], yaw [rad^2/s^5]. Zero (the default): no
+    /// acceleration states, the velocities are pure random walks. Positive: the filter also
+    /// estimates each velocity's trend (a constant-acceleration model per body axis: v' = v + a tau,
+    /// the pose along the arc at the span's mid velocity) and so predicts the velocities, not
+    /// only the pose, across the latency. A manoeuvre whose body velocities keep changing over
+    /// the latency (a car yawing into a slide: its body-frame velocity turns with the frame)
+    /// needs it; without it the estimate of now pairs the pose of now with the velocity of then.
+    Eigen::Vector3d jerkDensity = Eigen::Vector3d::Zero();
+    /// Standard deviation of the accelerations at (re-)initialisation (with jerkDensity only):
+    /// forward, lateral [m/s^2], yaw [rad/s^2]. Default 5, 5, 20.
+    Eigen::Vector3d initialAccelerationStd{5.0, 5.0, 20.0};
     /// Optional input term G (3 x m; empty: none): the body accelerations [vx, vy, r] per unit of
     /// action. The velocity random walk is taken as balanced (zero mean acceleration) under the
     /// action in force when the estimate being propagated was last measured, u_ref; an action
@@ -109,6 +121,15 @@ Eigen::MatrixXd inputGainFromFit(const Eigen::MatrixXd& b, const BodyVelocityInd
 Eigen::Vector3d accelerationDensityFromStates(const Eigen::MatrixXd& states,
                                               const BodyVelocityIndices& velocity, double dt,
                                               double floor = 1e-4);
+
+/// The jerk densities of PoseFilterParameters from a demonstration's states (T x n) sampled
+/// every dt, by the same rule one derivative up: the 99th percentile of each body velocity's
+/// per-step change of its per-step change, |dv_{k+1} - dv_k| / dt, is one standard deviation of
+/// the acceleration's change per step, density = (that / dt)^2 dt, never below `floor`.
+/// Throws std::invalid_argument for fewer than 4 samples, a bad index or dt <= 0.
+Eigen::Vector3d jerkDensityFromStates(const Eigen::MatrixXd& states,
+                                      const BodyVelocityIndices& velocity, double dt,
+                                      double floor = 1e-4);
 
 /// What the last measurement did.
 struct PoseFilterStatus {
@@ -177,12 +198,15 @@ class PoseFilter {
 
     /// The estimate at the newest measurement's time (six components, filter order), its
     /// covariance and that time [s].
-    const Vector6& laggedEstimate() const { return x_; }
-    const Matrix6& laggedCovariance() const { return p_; }
+    const Vector6& laggedEstimate() const { return lagged6_; }
+    const Matrix6& laggedCovariance() const { return laggedP6_; }
     double laggedTime() const { return time_; }
     /// The six components of the latest estimate handed out, and their covariance.
-    const Vector6& nowEstimate() const { return xNow_; }
-    const Matrix6& nowCovariance() const { return pNow_; }
+    const Vector6& nowEstimate() const { return now6_; }
+    const Matrix6& nowCovariance() const { return nowP6_; }
+    /// The body accelerations (ax, ay, ar) of the latest estimate handed out (zero without
+    /// jerkDensity).
+    Eigen::Vector3d nowAcceleration() const { return xNow_.tail<3>(); }
 
     const PoseFilterStatus& status() const { return status_; }
     int gatedCount() const { return gatedCount_; }          ///< measurements set aside so far
@@ -200,19 +224,26 @@ class PoseFilter {
     static Matrix6 processNoise(const Vector6& x, double tau, const Eigen::Vector3d& density);
 
   private:
+    using Vector9 = Eigen::Matrix<double, 9, 1>;
+    using Matrix9 = Eigen::Matrix<double, 9, 9>;
+    /// The model with the acceleration states (x, y, psi, vx, vy, r, ax, ay, ar).
+    static Vector9 propagateFull(const Vector9& x, double tau, Matrix9* f);
+    static Matrix9 processNoiseFull(const Vector9& x, double tau, const Eigen::Vector3d& density,
+                                    const Eigen::Vector3d& jerk);
     using MeasurementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
     using MeasurementMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-    using GainMatrix = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+    using GainMatrix = Eigen::Matrix<double, 9, Eigen::Dynamic, 0, 9, 6>;
 
     void checkObservation(const Eigen::Ref<const Eigen::VectorXd>& observation) const;
     void initialise(const Eigen::Ref<const Eigen::VectorXd>& observation, double takenAt);
     void measure(const Eigen::Ref<const Eigen::VectorXd>& observation);
     /// Propagates (x, p) from t0 to t1 through the actions in force, relative to `reference`.
-    void predictSpan(Vector6& x, Matrix6& p, double t0, double t1) const;
+    void predictSpan(Vector9& x, Matrix9& p, double t0, double t1) const;
     /// The newest action starting no later than t (+ a tolerance); -1 if none.
     int actionInForce(double t) const;
     int slot(int age) const;  ///< ring slot of the action `age` places back from the newest
-    void writeOutput(const Vector6& x);
+    void writeOutput(const Vector9& x);
+    void refreshViews();  ///< the six-component views of the lagged and now estimates
 
     PoseFilterParameters parameters_;
     std::array<int, 6> index_{};
@@ -222,11 +253,15 @@ class PoseFilter {
     double gate_ = 0.0;
     int actionDimension_ = 0;
 
-    Vector6 x_ = Vector6::Zero();
-    Matrix6 p_ = Matrix6::Identity();
+    Vector9 x_ = Vector9::Zero();
+    Matrix9 p_ = Matrix9::Identity();
     double time_ = 0.0;
-    Vector6 xNow_ = Vector6::Zero();
-    Matrix6 pNow_ = Matrix6::Identity();
+    Vector9 xNow_ = Vector9::Zero();
+    Matrix9 pNow_ = Matrix9::Identity();
+    Vector6 lagged6_ = Vector6::Zero();
+    Matrix6 laggedP6_ = Matrix6::Identity();
+    Vector6 now6_ = Vector6::Zero();
+    Matrix6 nowP6_ = Matrix6::Identity();
     Eigen::VectorXd output_;         ///< n, pass-through components from the newest measurement
     double headingBranch_ = 0.0;     ///< the newest measured heading, unwrapped as the plant has it
     Eigen::VectorXd reference_;      ///< u_ref, m

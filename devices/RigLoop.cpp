@@ -57,7 +57,7 @@ void RigLoop::startTrial(core::ResetMode mode) {
 }
 
 void RigLoop::usePoseFilter(std::optional<core::PoseFilterParameters> parameters,
-                            double cameraLatencySeconds) {
+                            double cameraLatencySeconds, bool predict) {
     if (!parameters) {
         filter_.reset();
         return;
@@ -75,6 +75,7 @@ void RigLoop::usePoseFilter(std::optional<core::PoseFilterParameters> parameters
     }
     filter_.emplace(p, p.inputGain.size() ? static_cast<int>(p.inputGain.cols()) : 2);
     cameraLatency_ = cameraLatencySeconds;
+    predict_ = predict;
 }
 
 Eigen::VectorXd RigLoop::estimate(const PlanarPose& pose, std::int64_t frameNs) {
@@ -91,7 +92,7 @@ Eigen::VectorXd RigLoop::estimate(const PlanarPose& pose, std::int64_t frameNs) 
         filter_->reset();
         filter_->update(measurement_, arrived - cameraLatency_);
     }
-    return filter_->predictTo(arrived);
+    return filter_->predictTo(predict_ ? arrived : arrived - cameraLatency_);
 }
 
 RigStep RigLoop::onFrame(const CameraFrame& frame) {

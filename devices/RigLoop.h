@@ -68,9 +68,11 @@ class RigLoop {
     /// commanded), and the controller sees the estimate predicted to the frame's arrival. The
     /// car's state layout is forced (n = 6, x y psi vx vy r, pose measured); the noise, densities,
     /// input gain and gate are the caller's. Tell the controller latency 0 then: the filter has
-    /// predicted to now. Off (std::nullopt) by default. Takes effect from the next trial.
+    /// predicted to now. With `predict` false the controller sees the estimate of the frame's
+    /// exposure instead (and compensates the latency itself). Off (std::nullopt) by default.
+    /// Takes effect from the next trial.
     void usePoseFilter(std::optional<core::PoseFilterParameters> parameters,
-                       double cameraLatencySeconds = 0.0);
+                       double cameraLatencySeconds = 0.0, bool predict = true);
     /// The pose filter, if in use (for its counters).
     const core::PoseFilter* poseFilter() const { return filter_ ? &*filter_ : nullptr; }
     core::Controller& controller() { return *controller_; }
@@ -84,6 +86,7 @@ class RigLoop {
     PoseStateEstimator estimator_;
     std::optional<core::PoseFilter> filter_;
     double cameraLatency_ = 0.0;  ///< [s]
+    bool predict_ = true;         ///< hand out the estimate of the frame's arrival
     Eigen::VectorXd measurement_ = Eigen::VectorXd::Zero(6);
     std::unique_ptr<core::Controller> controller_;
     core::LostTrackGuard guard_;

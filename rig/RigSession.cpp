@@ -255,7 +255,7 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     // One loop per method: learners keep what they learnt from trial to trial (warm start).
     const sim::RunSetup& setup = *request.setup;
     const QString& method = setup.method().id;
-    const bool poseFilter = setup.settings().poseFilter;
+    const bool poseFilter = setup.settings().poseFilter;  // (its mode is fixed per method loop)
     if (!l.loop || l.stale || l.method != method || l.poseFilter != poseFilter) {
         std::unique_ptr<core::Controller> controller;
         try {
@@ -276,7 +276,8 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
             try {
                 l.loop->usePoseFilter(setup.episode().poseFilterParameters,
                                       setup.episode().measurement.latencySteps *
-                                          setup.task().demonstration->dt);
+                                          setup.task().demonstration->dt,
+                                      setup.episode().poseFilterPredicts);
             } catch (const std::exception& e) {
                 l.loop.reset();
                 return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));

@@ -34,6 +34,11 @@ struct EpisodeSettings {
     /// bridged by prediction, outliers gated). The controller is then told latency 0
     /// (compensatedLatencySteps()). Off by default.
     bool poseFilter = false;
+    /// With the pose filter: hand the controller the estimate predicted to now and tell it
+    /// latency 0 (true, the default), or the estimate at the measurement's own time and let the
+    /// controller compensate the latency as without the filter (false: the filter only filters,
+    /// bridges and gates).
+    bool poseFilterPredicts = true;
     /// The filter's parameters (MethodTuning::episode fills them from the sensor and the
     /// demonstration). The stepper sets the state dimension, the pose and velocity indices, the
     /// control period and the latency from the plant and the sensor itself.
@@ -47,7 +52,8 @@ struct EpisodeSettings {
     /// The latency the controller compensates [control steps]: the sensor's, if compensated
     /// and no pose filter has already predicted the observation to now.
     int compensatedLatencySteps() const {
-        return compensateLatency && !poseFilter ? measurement.latencySteps : 0;
+        return compensateLatency && !(poseFilter && poseFilterPredicts) ? measurement.latencySteps
+                                                                        : 0;
     }
 };
 

@@ -266,8 +266,8 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
     }
     episode.compensateLatency = compensateLatency;
     if (info.pose && info.bodyVelocity) {
-        // Ready for a run that turns the pose filter on: the sensor's noise and latency, and a
-        // velocity random walk as quick as the demonstration's sharpest changes.
+        // Ready for a run that turns the pose filter on: the sensor's noise and latency, and
+        // velocities and accelerations as quick as the demonstration's sharpest changes.
         episode.poseFilterParameters =
             poseFilterFor(info, episode.measurement, demonstration.dt);
         if (demonstration.length() >= 3 &&
@@ -275,6 +275,12 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
             episode.poseFilterParameters.accelerationDensity =
                 core::accelerationDensityFromStates(demonstration.states, *info.bodyVelocity,
                                                     demonstration.dt);
+        }
+        if (demonstration.length() >= 4 &&
+            demonstration.stateDimension() == info.stateDimension()) {
+            // The velocities' trend too, so that the estimate of now has the velocity of now.
+            episode.poseFilterParameters.jerkDensity = core::jerkDensityFromStates(
+                demonstration.states, *info.bodyVelocity, demonstration.dt);
         }
     }
     episode.lostTrackDistance = lostTrackDistance;

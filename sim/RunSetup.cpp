@@ -31,6 +31,7 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
                     .toStdString());
         }
         episode_.poseFilter = true;
+        episode_.poseFilterPredicts = settings_.poseFilterPredicts;
         // The input term from the demonstration's own fit (B's velocity columns).
         if (task_.fit.b.rows() == info.actionDimension() &&
             task_.fit.b.cols() == info.stateDimension()) {
@@ -90,7 +91,9 @@ core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trial
     log.metadata.insert(QStringLiteral("perturbation"), QString::number(settings_.perturbation));
     log.metadata.insert(QStringLiteral("sensor"), QString::number(settings_.sensor));
     if (settings_.poseFilter) {
-        log.metadata.insert(QStringLiteral("pose-filter"), QStringLiteral("on"));
+        log.metadata.insert(QStringLiteral("pose-filter"), settings_.poseFilterPredicts
+                                                               ? QStringLiteral("on")
+                                                               : QStringLiteral("lagged"));
     }
     log.metadata.insert(QStringLiteral("demonstration"), demonstrationSource);
     return log;

@@ -25,6 +25,9 @@ struct RunSettings {
     /// Pass the sensor's observations through the pose filter (EpisodeSettings::poseFilter;
     /// planar vehicles only). Off by default.
     bool poseFilter = false;
+    /// With it: the controller sees the estimate of now (true) or of the measurement's time,
+    /// compensating the latency itself (false); EpisodeSettings::poseFilterPredicts.
+    bool poseFilterPredicts = true;
     /// Trials a method trains on before it is evaluated: PD (selected) scores its gain grid on
     /// them; in Table I the online learners warm up on them. PEGASUS takes its fixed scenarios
     /// from the first PegasusParameters::scenarios of them.

@@ -109,7 +109,8 @@ int table1ProtocolCommand(const CommandLine& line) {
                           .arg(settings.table.run.perturbation)
                           .arg(settings.table.run.sensor);
     if (settings.table.run.poseFilter) {
-        caption += QStringLiteral("; pose filter on");
+        caption += settings.table.run.poseFilterPredicts ? QStringLiteral("; pose filter on")
+                                                         : QStringLiteral("; pose filter lagged");
     }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
@@ -212,7 +213,8 @@ int table1Command(const QStringList& arguments) {
                           .arg(settings.run.perturbation)
                           .arg(settings.run.sensor);
     if (settings.run.poseFilter) {
-        caption += QStringLiteral(", pose filter on");
+        caption += settings.run.poseFilterPredicts ? QStringLiteral(", pose filter on")
+                                                   : QStringLiteral(", pose filter lagged");
     }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: %1 of %2 trials finished)")

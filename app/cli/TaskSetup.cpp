@@ -155,9 +155,12 @@ void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
                   QString::number(defaults.sensor));
     line.addValue("pose-filter",
                   "Pass the sensor's observations through the pose filter (an extended Kalman "
-                  "filter predicting across the latency, bridging dropped samples, gating "
-                  "outliers) before the controller: on or off. Planar vehicles only.",
-                  "on|off", defaults.poseFilter ? QStringLiteral("on") : QStringLiteral("off"));
+                  "filter bridging dropped samples and gating outliers) before the controller: "
+                  "'on' hands it the estimate predicted across the latency to now (it is told "
+                  "latency 0), 'lagged' the estimate at the measurement's time (it compensates "
+                  "the latency itself), 'off' the raw observation. Planar vehicles only.",
+                  "on|lagged|off",
+                  defaults.poseFilter ? QStringLiteral("on") : QStringLiteral("off"));
     if (!trainingHelp.isEmpty()) {
         line.addValue("training-trials", trainingHelp, "N",
                       QString::number(defaults.trainingTrials));
@@ -170,10 +173,13 @@ void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool t
     settings.perturbation = line.number("perturbation", 0.0, 10.0);
     settings.sensor = line.number("sensor", 0.0, 10.0);
     const QString filter = line.value("pose-filter");
-    if (filter != QLatin1String("on") && filter != QLatin1String("off")) {
-        throw UsageError(QStringLiteral("--pose-filter: '%1' is neither 'on' nor 'off'").arg(filter));
+    if (filter != QLatin1String("on") && filter != QLatin1String("lagged") &&
+        filter != QLatin1String("off")) {
+        throw UsageError(
+            QStringLiteral("--pose-filter: '%1' is none of on, lagged, off").arg(filter));
     }
-    settings.poseFilter = filter == QLatin1String("on");
+    settings.poseFilter = filter != QLatin1String("off");
+    settings.poseFilterPredicts = filter == QLatin1String("on");
     if (training) {
         settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
     }

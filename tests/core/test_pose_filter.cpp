@@ -314,6 +314,65 @@ class TestPoseFilter : public QObject {
         QVERIFY2(filteredHeading < 0.25 * rawHeading, qPrintable(report));
     }
 
+    void accelerationStates_predictTheVelocityAcrossLatency() {
+        // A car yawing up and speeding up (body accelerations 2 m/s^2 forward, 4 rad/s^2 of yaw),
+        // seen 3 steps late: with jerk densities the filter estimates the trend and its velocity
+        // of now is far closer than the random walk's, which is the velocity of then.
+        PoseFilterParameters plain;
+        plain.latencySteps = 3;
+        plain.accelerationDensity = {0.05, 0.05, 0.2};
+        PoseFilterParameters trend = plain;
+        trend.jerkDensity = {0.5, 0.5, 2.0};
+        PoseFilter a(plain), b(trend);
+        std::deque<Vector6> past;
+        std::mt19937_64 noise(31);
+        double plainError = 0.0, trendError = 0.0;
+        const double dt = plain.controlPeriod;
+        Vector6 truth;
+        truth << 0.0, 0.0, 0.0, 0.5, 0.0, 0.0;
+        for (int k = 0; k < 80; ++k) {
+            past.push_back(truth);
+            if (static_cast<int>(past.size()) > plain.latencySteps + 1) {
+                past.pop_front();
+            }
+            const Eigen::VectorXd z = measure(past.front(), plain, noise);
+            a.step(z);
+            b.step(z);
+            a.commanded(Eigen::Vector2d::Zero());
+            b.commanded(Eigen::Vector2d::Zero());
+            if (k >= 30) {
+                plainError += (a.nowEstimate().segment<3>(3) - truth.segment<3>(3)).squaredNorm();
+                trendError += (b.nowEstimate().segment<3>(3) - truth.segment<3>(3)).squaredNorm();
+            }
+            // Constant body accelerations, integrated finely.
+            for (int s = 0; s < 50; ++s) {
+                Vector6 mid = truth;
+                mid[3] += 2.0 * dt / 100.0;
+                mid[5] += 4.0 * dt / 100.0;
+                truth.head<3>() = PoseFilter::propagate(mid, dt / 50.0).head<3>();
+                truth[3] += 2.0 * dt / 50.0;
+                truth[5] += 4.0 * dt / 50.0;
+            }
+        }
+        const QString report = QStringLiteral("velocity RMS error of now: random walk %1, with "
+                                              "accelerations %2; acceleration estimate %3, %4")
+                                   .arg(std::sqrt(plainError / 50)).arg(std::sqrt(trendError / 50))
+                                   .arg(b.nowAcceleration()[0]).arg(b.nowAcceleration()[2]);
+        qInfo("%s", qPrintable(report));
+        QVERIFY2(trendError < 0.25 * plainError, qPrintable(report));
+        QVERIFY2(std::abs(b.nowAcceleration()[0] - 2.0) < 0.5, qPrintable(report));
+        QVERIFY2(std::abs(b.nowAcceleration()[2] - 4.0) < 1.0, qPrintable(report));
+        QVERIFY(a.nowAcceleration().isZero());
+        // From a demonstration's states: a velocity ramp's second difference is zero but at its
+        // corners.
+        Eigen::MatrixXd states = Eigen::MatrixXd::Zero(200, 6);
+        for (int k = 0; k < 200; ++k) {
+            states(k, 3) = k < 100 ? 0.05 * k : 5.0;
+        }
+        const Eigen::Vector3d j = core::jerkDensityFromStates(states, {}, 0.025);
+        QVERIFY(j[0] >= 1e-4 && j[1] == 1e-4 && j[2] == 1e-4);
+    }
+
     void droppedFrames_bridgedAndFlagged() {
         PoseFilterParameters parameters;
         parameters.measurePoseOnly();

@@ -199,6 +199,27 @@ class TestEpisodeRunner : public QObject {
         qInfo("observation's position RMS error against the true state of now: raw %g m, "
               "filtered %g m", raw, filtered);
         QVERIFY2(filtered < 0.5 * raw, qPrintable(QStringLiteral("%1 %2").arg(filtered).arg(raw)));
+        // Lagged: the estimate of the measurement's time, the controller compensating the latency
+        // as without the filter; closer to the delayed true state than the raw observation.
+        EpisodeSettings lagged = on;
+        lagged.poseFilterPredicts = false;
+        QCOMPARE(lagged.compensatedLatencySteps(), setup.profile.measurement.latencySteps);
+        {
+            SlideCar car;
+            auto controller = MethodCatalog::create("pd", setup.profile, setup.demo, setup.fittedB);
+            const EpisodeResult result = runEpisode(car, *controller, lagged);
+            const int d = lagged.measurement.latencySteps;
+            double filteredThen = 0.0, rawNoise = 0.0;
+            for (std::size_t k = d; k < result.steps.size(); ++k) {
+                filteredThen += (result.steps[k].observation.head<2>() -
+                                 result.steps[k - d].state.head<2>())
+                                    .squaredNorm();
+            }
+            rawNoise = std::pow(lagged.measurement.noise[0], 2) * 2;  // per sample, x and y
+            filteredThen /= static_cast<double>(result.steps.size() - d);
+            QVERIFY2(filteredThen < rawNoise,
+                     qPrintable(QStringLiteral("%1 %2").arg(filteredThen).arg(rawNoise)));
+        }
         // Only planar vehicles have a pose to filter.
         PlantInfo arm;
         arm.name = QStringLiteral("acrobot");
