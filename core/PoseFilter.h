@@ -149,8 +149,11 @@ struct PoseFilterStatus {
 /// S = sin(r tau) / r, C = (1 - cos(r tau)) / r (their limits as r tau -> 0), heading wrapped to
 /// (-pi, pi]; velocities are random walks driven by white accelerations (densities
 /// accelerationDensity; the discrete noise is the exact constant-velocity one per body axis,
-/// rotated into the world) plus the optional input term. Measurement: the measured components
-/// with their noise, heading innovation wrapped; gated by chi-square.
+/// rotated into the world) plus the optional input term. With jerkDensity the state also holds
+/// the body accelerations (random walks driven by white jerk; nine components inside, the six
+/// above handed out): the velocities integrate them and the pose follows the arc at the span's
+/// mid velocities. Measurement: the measured components with their noise, heading innovation
+/// wrapped, Joseph-form update; gated by chi-square.
 ///
 /// Latency: the filter keeps the estimate at the time of the newest measurement (the lagged
 /// estimate) and the actions commanded since, and hands out that estimate predicted to now.
