@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 
 Q_LOGGING_CATEGORY(lcRig, "prisca.devices.rig")
 
@@ -49,7 +50,49 @@ void RigLoop::startTrial(core::ResetMode mode) {
     controller_->reset(mode);
     guard_.reset();
     estimator_.reset();
+    if (filter_) {
+        filter_->reset();
+    }
     tracker_.reset();
+}
+
+void RigLoop::usePoseFilter(std::optional<core::PoseFilterParameters> parameters,
+                            double cameraLatencySeconds, bool predict) {
+    if (!parameters) {
+        filter_.reset();
+        return;
+    }
+    if (!(cameraLatencySeconds >= 0.0)) {
+        throw std::invalid_argument("RigLoop: camera latency must be >= 0 s");
+    }
+    core::PoseFilterParameters p = *parameters;
+    p.stateDimension = 6;
+    p.pose = core::PlanarPoseIndices{};
+    p.velocity = core::BodyVelocityIndices{};
+    p.measurePoseOnly();
+    if (p.measurementStd.size() != 6) {
+        p.measurementStd = core::PoseFilterParameters{}.measurementStd;
+    }
+    filter_.emplace(p, p.inputGain.size() ? static_cast<int>(p.inputGain.cols()) : 2);
+    cameraLatency_ = cameraLatencySeconds;
+    predict_ = predict;
+}
+
+Eigen::VectorXd RigLoop::estimate(const PlanarPose& pose, std::int64_t frameNs) {
+    if (!filter_) {
+        return estimator_.update(pose, frameNs);
+    }
+    const double arrived = static_cast<double>(frameNs) * 1e-9;
+    measurement_ << pose.x, pose.y, pose.heading, 0.0, 0.0, 0.0;
+    try {
+        filter_->update(measurement_, arrived - cameraLatency_);
+    } catch (const std::invalid_argument& e) {
+        // A frame stamped before the previous one (a clock step): start afresh from it.
+        qCWarning(lcRig) << "pose filter restarted:" << e.what();
+        filter_->reset();
+        filter_->update(measurement_, arrived - cameraLatency_);
+    }
+    return filter_->predictTo(predict_ ? arrived : arrived - cameraLatency_);
 }
 
 RigStep RigLoop::onFrame(const CameraFrame& frame) {
@@ -60,9 +103,14 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
     if (!tracked.pose) {
         link_.setPoseLost(true);  // failsafe from the link's next frame
         estimator_.reset();
+        if (filter_ && filter_->status().initialised) {
+            // Failsafe: throttle neutral, steering centred, i.e. the zero action.
+            filter_->commandedAt(Eigen::VectorXd::Zero(filter_->actionDimension()),
+                                 static_cast<double>(frame.steadyNs) * 1e-9);
+        }
         return step;
     }
-    step.state = estimator_.update(*tracked.pose, frame.steadyNs);
+    step.state = estimate(*tracked.pose, frame.steadyNs);
     if (guard_.tripped()) {  // left the demonstration earlier in this trial: failsafe stays
         link_.reportControllerFault();
         step.fault = true;
@@ -86,6 +134,9 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
     }
     link_.setCommand(channels_.command(step.action));
     link_.setPoseLost(false);
+    if (filter_ && step.action.size() == filter_->actionDimension()) {
+        filter_->commandedAt(step.action, static_cast<double>(frame.steadyNs) * 1e-9);
+    }
     step.commandNs = steadyNowNs();
     return step;
 }

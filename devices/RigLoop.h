@@ -6,6 +6,7 @@
 
 #include "core/Controller.h"
 #include "core/LostTrackGuard.h"
+#include "core/PoseFilter.h"
 
 #include <Eigen/Core>
 
@@ -60,12 +61,33 @@ class RigLoop {
     void setLostTrackDistance(double metres) {
         guard_ = core::LostTrackGuard(metres, core::PlanarPoseIndices{});
     }
+    /// Estimate the state with a pose filter (core::PoseFilter, time-stamped, pose only) in
+    /// place of the finite-difference estimator: each frame's pose is a measurement taken
+    /// `cameraLatencySeconds` before the frame arrived, a frame with no pose is bridged by
+    /// prediction (the link is in failsafe meanwhile, which the filter takes as the zero action
+    /// commanded), and the controller sees the estimate predicted to the frame's arrival. The
+    /// car's state layout is forced (n = 6, x y psi vx vy r, pose measured); the noise, densities,
+    /// input gain and gate are the caller's. Tell the controller latency 0 then: the filter has
+    /// predicted to now. With `predict` false the controller sees the estimate of the frame's
+    /// exposure instead (and compensates the latency itself). Off (std::nullopt) by default.
+    /// Takes effect from the next trial.
+    void usePoseFilter(std::optional<core::PoseFilterParameters> parameters,
+                       double cameraLatencySeconds = 0.0, bool predict = true);
+    /// The pose filter, if in use (for its counters).
+    const core::PoseFilter* poseFilter() const { return filter_ ? &*filter_ : nullptr; }
     core::Controller& controller() { return *controller_; }
 
   private:
+    /// The state for this frame's pose: the filter's estimate or the finite differences.
+    Eigen::VectorXd estimate(const PlanarPose& pose, std::int64_t frameNs);
+
     FloorCalibration calibration_;
     LedTracker tracker_;
     PoseStateEstimator estimator_;
+    std::optional<core::PoseFilter> filter_;
+    double cameraLatency_ = 0.0;  ///< [s]
+    bool predict_ = true;         ///< hand out the estimate of the frame's arrival
+    Eigen::VectorXd measurement_ = Eigen::VectorXd::Zero(6);
     std::unique_ptr<core::Controller> controller_;
     core::LostTrackGuard guard_;
     ChannelMap channels_;

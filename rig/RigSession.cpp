@@ -29,6 +29,7 @@ struct RigSession::Loop {
     // The closed loop, kept from trial to trial for one method.
     std::unique_ptr<devices::RigLoop> loop;
     QString method;
+    bool poseFilter = false;  ///< the loop estimates with the pose filter
     bool stale = false;  ///< the calibration or channels changed: rebuild before the next trial
     int trials = 0;
     // The trial under way.
@@ -264,7 +265,8 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     // One loop per method: learners keep what they learnt from trial to trial (warm start).
     const sim::RunSetup& setup = *request.setup;
     const QString& method = setup.method().id;
-    if (!l.loop || l.stale || l.method != method) {
+    const bool poseFilter = setup.settings().poseFilter;  // (its mode is fixed per method loop)
+    if (!l.loop || l.stale || l.method != method || l.poseFilter != poseFilter) {
         std::unique_ptr<core::Controller> controller;
         try {
             controller = setup.makeUntrainedController();
@@ -277,6 +279,21 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
                                                     std::move(controller), channels_, link_);
         l.loop->setLostTrackDistance(setup.profile().lostTrackDistance);
+        if (poseFilter) {
+            // Pose-only frames, as old as the sensor latency the profile assumes for the camera;
+            // the controller was told latency 0 (compensatedLatencySteps) since the filter
+            // predicts to each frame's arrival.
+            try {
+                l.loop->usePoseFilter(setup.episode().poseFilterParameters,
+                                      setup.episode().measurement.latencySteps *
+                                          setup.task().demonstration->dt,
+                                      setup.episode().poseFilterPredicts);
+            } catch (const std::exception& e) {
+                l.loop.reset();
+                return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));
+            }
+        }
+        l.poseFilter = poseFilter;
         l.method = method;
         l.stale = false;
         l.trials = 0;

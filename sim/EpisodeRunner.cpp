@@ -2,7 +2,9 @@
 
 #include "OracleController.h"
 
+#include <algorithm>
 #include <ctime>
+#include <stdexcept>
 
 namespace prisca::sim {
 
@@ -17,6 +19,30 @@ double threadCpuSeconds() {
 
 }  // namespace
 
+core::PoseFilterParameters poseFilterFor(const PlantInfo& info,
+                                         const MeasurementParameters& measurement,
+                                         double controlPeriod) {
+    if (!info.pose || !info.bodyVelocity) {
+        throw std::invalid_argument(
+            QStringLiteral("the pose filter needs a planar vehicle (pose and body velocities); "
+                           "'%1' has none")
+                .arg(info.name)
+                .toStdString());
+    }
+    core::PoseFilterParameters parameters;
+    parameters.stateDimension = info.stateDimension();
+    parameters.pose = *info.pose;
+    parameters.velocity = *info.bodyVelocity;
+    parameters.measureFullState();
+    parameters.measurementStd = Eigen::VectorXd::Constant(parameters.stateDimension, 1e-6);
+    if (measurement.noise.size() == parameters.stateDimension) {
+        parameters.measurementStd = measurement.noise.cwiseMax(1e-6);
+    }
+    parameters.latencySteps = measurement.latencySteps;
+    parameters.controlPeriod = controlPeriod;
+    return parameters;
+}
+
 EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
                                const EpisodeSettings& settings)
     : plant_(plant),
@@ -25,6 +51,21 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
       // The sensor's noise stream is its own, so changing the plant's draws never shifts it.
       guard_(settings.lostTrackDistance, plant.info().pose),
       sensor_(settings.measurement, mixSeed(settings.seed, 7)) {
+    if (settings_.poseFilter) {
+        // The plant and the sensor say where the pose is, how often and how late it comes.
+        core::PoseFilterParameters parameters = settings_.poseFilterParameters;
+        const core::PoseFilterParameters own =
+            poseFilterFor(plant_.info(), settings_.measurement, plant_.timing().controlPeriod);
+        parameters.stateDimension = own.stateDimension;
+        parameters.pose = own.pose;
+        parameters.velocity = own.velocity;
+        parameters.controlPeriod = own.controlPeriod;
+        parameters.latencySteps = own.latencySteps;
+        if (parameters.measurementStd.size() != own.stateDimension) {
+            parameters.measurementStd = own.measurementStd;
+        }
+        filter_.emplace(parameters, plant_.info().actionDimension());
+    }
     state_ = plant_.reset(settings_.seed, settings_.perturbation);
     sensor_.reset(state_);
     if (auto* aware = dynamic_cast<PlantAware*>(&controller_)) {
@@ -49,6 +90,15 @@ const StepRecord& EpisodeStepper::step() {
     last_.time = t;
     last_.state = state_;
     last_.observation = sensor_.observe(state_);
+    if (filter_) {
+        last_.observation = filter_->step(last_.observation, sensor_.lastDropped());
+        if (!settings_.poseFilterPredicts) {
+            // The estimate of the measurement's own time; the controller compensates the latency.
+            last_.observation = filter_->predictTo(
+                static_cast<double>(k_ - settings_.measurement.latencySteps) *
+                plant_.timing().controlPeriod);
+        }
+    }
     if (!guard_.tripped()) {
         const double before = threadCpuSeconds();
         const core::ControlStep& control = controller_.step(last_.observation);
@@ -62,6 +112,9 @@ const StepRecord& EpisodeStepper::step() {
     }
     if (guard_.tripped()) {
         last_.action.setZero();  // failsafe from the step that saw it on; the controller rests
+    }
+    if (filter_) {
+        filter_->commanded(last_.action);  // the action the plant is given from now on
     }
     costSum_ += last_.cost;
     if (const Eigen::MatrixXd* theta = controller_.learnedParameters()) {

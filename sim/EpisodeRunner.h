@@ -4,10 +4,12 @@
 #include "Plant.h"
 #include "core/Controller.h"
 #include "core/LostTrackGuard.h"
+#include "core/PoseFilter.h"
 
 #include <Eigen/Core>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace prisca::sim {
@@ -26,17 +28,43 @@ struct EpisodeSettings {
     /// latency), so that trackers compensate it (Controller::setLatencyCompensation). Off: they
     /// are told 0.
     bool compensateLatency = false;
+    /// Pose filter (core::PoseFilter, planar vehicles only): the sensor's observation passes
+    /// through an extended Kalman filter before the controller sees it, and what the controller
+    /// sees is the estimate predicted across the sensor's latency to now (dropped samples
+    /// bridged by prediction, outliers gated). The controller is then told latency 0
+    /// (compensatedLatencySteps()). Off by default.
+    bool poseFilter = false;
+    /// With the pose filter: hand the controller the estimate predicted to now and tell it
+    /// latency 0 (true, the default), or the estimate at the measurement's own time and let the
+    /// controller compensate the latency as without the filter (false: the filter only filters,
+    /// bridges and gates).
+    bool poseFilterPredicts = true;
+    /// The filter's parameters (MethodTuning::episode fills them from the sensor and the
+    /// demonstration). The stepper sets the state dimension, the pose and velocity indices, the
+    /// control period and the latency from the plant and the sensor itself.
+    core::PoseFilterParameters poseFilterParameters;
     /// Position deviation [m] past which the robot has left the demonstration and the trial
     /// ends in failsafe: zero action (throttle neutral, steering centred) for the rest of it,
     /// the controller no longer stepped (core::LostTrackGuard). 0: never.
     double lostTrackDistance = 0.0;
     bool recordSteps = true;                            ///< keep a StepRecord per control step
 
-    /// The latency the controller compensates [control steps]: the sensor's, if compensated.
+    /// The latency the controller compensates [control steps]: the sensor's, if compensated
+    /// and no pose filter has already predicted the observation to now.
     int compensatedLatencySteps() const {
-        return compensateLatency ? measurement.latencySteps : 0;
+        return compensateLatency && !(poseFilter && poseFilterPredicts) ? measurement.latencySteps
+                                                                        : 0;
     }
 };
+
+/// The pose filter's parameters for a plant behind a sensor: full-state measurement with the
+/// sensor's noise (each std at least 1e-6 of its unit, so a perfect sensor is simply believed),
+/// its latency, the control period, and the plant's pose and velocity indices; the other fields
+/// keep core::PoseFilterParameters' defaults. Throws std::invalid_argument for a plant without a
+/// planar pose and body velocities.
+core::PoseFilterParameters poseFilterFor(const PlantInfo& info,
+                                         const MeasurementParameters& measurement,
+                                         double controlPeriod);
 
 /// One control step of a trial.
 struct StepRecord {
@@ -98,6 +126,7 @@ class EpisodeStepper {
     EpisodeSettings settings_;
     core::LostTrackGuard guard_;
     MeasurementModel sensor_;
+    std::optional<core::PoseFilter> filter_;  ///< settings.poseFilter
     Eigen::VectorXd state_;
     StepRecord last_;
     std::vector<StepRecord> steps_;

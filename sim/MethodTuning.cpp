@@ -265,6 +265,24 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
         episode.measurement.dropProbability = 0.0;
     }
     episode.compensateLatency = compensateLatency;
+    if (info.pose && info.bodyVelocity) {
+        // Ready for a run that turns the pose filter on: the sensor's noise and latency, and
+        // velocities and accelerations as quick as the demonstration's sharpest changes.
+        episode.poseFilterParameters =
+            poseFilterFor(info, episode.measurement, demonstration.dt);
+        if (demonstration.length() >= 3 &&
+            demonstration.stateDimension() == info.stateDimension()) {
+            episode.poseFilterParameters.accelerationDensity =
+                core::accelerationDensityFromStates(demonstration.states, *info.bodyVelocity,
+                                                    demonstration.dt);
+        }
+        if (demonstration.length() >= 4 &&
+            demonstration.stateDimension() == info.stateDimension()) {
+            // The velocities' trend too, so that the estimate of now has the velocity of now.
+            episode.poseFilterParameters.jerkDensity = core::jerkDensityFromStates(
+                demonstration.states, *info.bodyVelocity, demonstration.dt);
+        }
+    }
     episode.lostTrackDistance = lostTrackDistance;
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;

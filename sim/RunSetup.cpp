@@ -36,6 +36,23 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
                                      settings_.sensor);
     episode_.perturbation.model = settings_.perturbationModel;
     episode_.perturbation.day = settings_.seed;
+    if (settings_.poseFilter) {
+        const PlantInfo& info = task_.profile.info;
+        if (!info.pose || !info.bodyVelocity) {
+            throw std::invalid_argument(
+                QStringLiteral("the pose filter needs a planar vehicle; '%1' is not one")
+                    .arg(info.name)
+                    .toStdString());
+        }
+        episode_.poseFilter = true;
+        episode_.poseFilterPredicts = settings_.poseFilterPredicts;
+        // The input term from the demonstration's own fit (B's velocity columns).
+        if (task_.fit.b.rows() == info.actionDimension() &&
+            task_.fit.b.cols() == info.stateDimension()) {
+            episode_.poseFilterParameters.inputGain =
+                core::inputGainFromFit(task_.fit.b, *info.bodyVelocity);
+        }
+    }
 }
 
 std::unique_ptr<Plant> RunSetup::makePlant() const {
@@ -104,6 +121,11 @@ core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trial
                         perturbationModelName(settings_.perturbationModel));
     if (task_.plantParameters && !task_.plantParameters->source.isEmpty()) {
         log.metadata.insert(QStringLiteral("plant-parameters"), task_.plantParameters->source);
+    }
+    if (settings_.poseFilter) {
+        log.metadata.insert(QStringLiteral("pose-filter"), settings_.poseFilterPredicts
+                                                               ? QStringLiteral("on")
+                                                               : QStringLiteral("lagged"));
     }
     log.metadata.insert(QStringLiteral("demonstration"), demonstrationSource);
     return log;

@@ -26,6 +26,12 @@ struct RunSettings {
     /// How the plant's parameter variation spreads over the run's trials: a lab session (the
     /// day's mismatch persists and drifts; the day is the seed) or each trial its own.
     Perturbation::Model perturbationModel = Perturbation::Model::Session;
+    /// Pass the sensor's observations through the pose filter (EpisodeSettings::poseFilter;
+    /// planar vehicles only). Off by default.
+    bool poseFilter = false;
+    /// With it: the controller sees the estimate of now (true) or of the measurement's time,
+    /// compensating the latency itself (false); EpisodeSettings::poseFilterPredicts.
+    bool poseFilterPredicts = true;
     /// Trials a method trains on before it is evaluated: PD (selected) scores its gain grid on
     /// them; in Table I the online learners warm up on them. PEGASUS takes its fixed scenarios
     /// from the first PegasusParameters::scenarios of them.

@@ -180,6 +180,10 @@ int table1ProtocolCommand(const CommandLine& line) {
     } else if (settings.plantParameters) {
         caption += QStringLiteral(", plant file %1").arg(settings.plantParameters->source);
     }
+    if (settings.table.run.poseFilter) {
+        caption += settings.table.run.poseFilterPredicts ? QStringLiteral("; pose filter on")
+                                                         : QStringLiteral("; pose filter lagged");
+    }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
@@ -299,6 +303,10 @@ int table1Command(const QStringList& arguments) {
                           .arg(settings.run.trainingTrials)
                           .arg(settings.run.perturbation)
                           .arg(settings.run.sensor);
+    if (settings.run.poseFilter) {
+        caption += settings.run.poseFilterPredicts ? QStringLiteral(", pose filter on")
+                                                   : QStringLiteral(", pose filter lagged");
+    }
     if (result.cancelled) {
         caption += QStringLiteral(" (interrupted: %1 of %2 trials finished)")
                        .arg(finished)

@@ -181,6 +181,14 @@ void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp) {
                   "session|trial", sim::perturbationModelName(defaults.perturbationModel));
     line.addValue("sensor", "Sensor noise level (0 perfect, 1 realistic).", "level",
                   QString::number(defaults.sensor));
+    line.addValue("pose-filter",
+                  "Pass the sensor's observations through the pose filter (an extended Kalman "
+                  "filter bridging dropped samples and gating outliers) before the controller: "
+                  "'on' hands it the estimate predicted across the latency to now (it is told "
+                  "latency 0), 'lagged' the estimate at the measurement's time (it compensates "
+                  "the latency itself), 'off' the raw observation. Planar vehicles only.",
+                  "on|lagged|off",
+                  defaults.poseFilter ? QStringLiteral("on") : QStringLiteral("off"));
     if (!trainingHelp.isEmpty()) {
         line.addValue("training-trials", trainingHelp, "N",
                       QString::number(defaults.trainingTrials));
@@ -199,6 +207,14 @@ void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool t
         throw UsageError(QStringLiteral("--perturbation-model: '%1' is not one of session, trial")
                              .arg(model));
     }
+    const QString filter = line.value("pose-filter");
+    if (filter != QLatin1String("on") && filter != QLatin1String("lagged") &&
+        filter != QLatin1String("off")) {
+        throw UsageError(
+            QStringLiteral("--pose-filter: '%1' is none of on, lagged, off").arg(filter));
+    }
+    settings.poseFilter = filter != QLatin1String("off");
+    settings.poseFilterPredicts = filter == QLatin1String("on");
     if (training) {
         settings.trainingTrials = static_cast<int>(line.integer("training-trials", 0, 100000));
     }

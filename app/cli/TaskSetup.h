@@ -69,8 +69,8 @@ void addMethodParameterOptions(CommandLine& line);
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
-/// --seed, --perturbation, --perturbation-model, --sensor, --training-trials (described by
-/// `trainingHelp`; none for an empty one), --jobs.
+/// --seed, --perturbation, --perturbation-model, --sensor, --pose-filter, --training-trials
+/// (described by `trainingHelp`; none for an empty one), --jobs.
 void addRunSettingsOptions(CommandLine& line, const QString& trainingHelp);
 /// Reads them (--training-trials only if `training`); UsageError naming an option out of range.
 void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool training = true);

@@ -169,6 +169,64 @@ class TestEpisodeRunner : public QObject {
         QCOMPARE(stepped.meanCost, whole.meanCost);
     }
 
+    void poseFilter_controllerSeesTheEstimateOfNow() {
+        // The profile's episode carries the filter's parameters (the sensor's noise and latency,
+        // densities from the demonstration); off by default. On, the controller is told latency
+        // 0 and sees the estimate predicted to now: closer to the true state of now than the
+        // raw observation, which is a step late.
+        const SlideCarSetup setup;
+        EpisodeSettings off = setup.profile.episode(*setup.demo, 1.0, 1.0);
+        off.seed = 3;
+        QVERIFY(!off.poseFilter);
+        QCOMPARE(off.compensatedLatencySteps(), setup.profile.measurement.latencySteps);
+        QVERIFY(off.compensatedLatencySteps() > 0);
+        QCOMPARE(off.poseFilterParameters.latencySteps, setup.profile.measurement.latencySteps);
+        QVERIFY((off.poseFilterParameters.accelerationDensity.array() > 0.0).all());
+        EpisodeSettings on = off;
+        on.poseFilter = true;
+        QCOMPARE(on.compensatedLatencySteps(), 0);
+        auto positionError = [&](const EpisodeSettings& settings) {
+            SlideCar car;
+            auto controller = MethodCatalog::create("pd", setup.profile, setup.demo, setup.fittedB);
+            const EpisodeResult result = runEpisode(car, *controller, settings);
+            double sum = 0.0;
+            for (const StepRecord& step : result.steps) {
+                sum += (step.observation.head<2>() - step.state.head<2>()).squaredNorm();
+            }
+            return std::sqrt(sum / static_cast<double>(result.steps.size()));
+        };
+        const double raw = positionError(off), filtered = positionError(on);
+        qInfo("observation's position RMS error against the true state of now: raw %g m, "
+              "filtered %g m", raw, filtered);
+        QVERIFY2(filtered < 0.5 * raw, qPrintable(QStringLiteral("%1 %2").arg(filtered).arg(raw)));
+        // Lagged: the estimate of the measurement's time, the controller compensating the latency
+        // as without the filter; closer to the delayed true state than the raw observation.
+        EpisodeSettings lagged = on;
+        lagged.poseFilterPredicts = false;
+        QCOMPARE(lagged.compensatedLatencySteps(), setup.profile.measurement.latencySteps);
+        {
+            SlideCar car;
+            auto controller = MethodCatalog::create("pd", setup.profile, setup.demo, setup.fittedB);
+            const EpisodeResult result = runEpisode(car, *controller, lagged);
+            const int d = lagged.measurement.latencySteps;
+            double filteredThen = 0.0, rawNoise = 0.0;
+            for (std::size_t k = d; k < result.steps.size(); ++k) {
+                filteredThen += (result.steps[k].observation.head<2>() -
+                                 result.steps[k - d].state.head<2>())
+                                    .squaredNorm();
+            }
+            rawNoise = std::pow(lagged.measurement.noise[0], 2) * 2;  // per sample, x and y
+            filteredThen /= static_cast<double>(result.steps.size() - d);
+            QVERIFY2(filteredThen < rawNoise,
+                     qPrintable(QStringLiteral("%1 %2").arg(filteredThen).arg(rawNoise)));
+        }
+        // Only planar vehicles have a pose to filter.
+        PlantInfo arm;
+        arm.name = QStringLiteral("acrobot");
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 poseFilterFor(arm, MeasurementParameters{}, 0.025));
+    }
+
     void episode_stopsAtRestAfterTheDemonstrationAndOnCancel() {
         const SlideCarSetup setup;
         SlideCar car;
