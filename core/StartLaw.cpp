@@ -9,6 +9,7 @@
 #include <complex>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace prisca::core {
 
@@ -78,6 +79,10 @@ StartLaw deriveStartLaw(const Demonstration& demonstration, const Eigen::MatrixX
         (options.structure.rows() != m || options.structure.cols() != n)) {
         throw std::invalid_argument("deriveStartLaw: the structure must be m x n");
     }
+    if (options.proportional.size() != 0 &&
+        (options.proportional.rows() != m || options.proportional.cols() != n)) {
+        throw std::invalid_argument("deriveStartLaw: the proportional gains must be m x n");
+    }
     if (options.drift.size() != 0 && (options.drift.rows() != n || options.drift.cols() != n)) {
         throw std::invalid_argument("deriveStartLaw: the drift A must be n x n");
     }
@@ -124,9 +129,52 @@ StartLaw deriveStartLaw(const Demonstration& demonstration, const Eigen::MatrixX
         rDiagonal[l] = 1.0 / (half * half);
     }
 
+    // Components the action sets: their effect through A-bar moves into B, and they leave the
+    // loop's state (no weight, no dynamics, no gain).
+    Eigen::MatrixXd model = out.meanDynamics;
+    Eigen::MatrixXd effect = b;
+    std::vector<bool> set(static_cast<size_t>(n), false);
+    if (options.proportional.size() != 0) {
+        std::vector<bool> candidate(static_cast<size_t>(n), false);
+        for (int i = 0; i < n; ++i) {
+            candidate[static_cast<size_t>(i)] =
+                options.proportional.col(i).cwiseAbs().maxCoeff() > 0.0;
+        }
+        // A candidate that integrates another (A-bar links them: the heading integrates the
+        // yaw rate) is driven through it, not set: it stays a state.
+        for (int j = 0; j < n; ++j) {
+            bool integrates = false;
+            for (int i = 0; i < n; ++i) {
+                integrates = integrates || (i != j && candidate[static_cast<size_t>(i)] &&
+                                            model(j, i) != 0.0);
+            }
+            set[static_cast<size_t>(j)] = candidate[static_cast<size_t>(j)] && !integrates;
+        }
+        for (int i = 0; i < n; ++i) {
+            if (!set[static_cast<size_t>(i)]) {
+                continue;
+            }
+            for (int j = 0; j < n; ++j) {
+                if (!set[static_cast<size_t>(j)]) {
+                    effect.col(j) += model(j, i) * options.proportional.col(i);
+                }
+            }
+        }
+        for (int i = 0; i < n; ++i) {
+            if (set[static_cast<size_t>(i)]) {
+                model.row(i).setZero();
+                model.col(i).setZero();
+                effect.col(i).setZero();
+                qDiagonal[i] = 0.0;
+            }
+        }
+    }
+    out.reducedModel = model;
+    out.reducedEffect = effect;
+
     const double dt = demonstration.dt;
-    const Eigen::MatrixXd ad = Eigen::MatrixXd::Identity(n, n) + dt * out.meanDynamics;
-    const Eigen::MatrixXd bd = dt * b.transpose();
+    const Eigen::MatrixXd ad = Eigen::MatrixXd::Identity(n, n) + dt * model;
+    const Eigen::MatrixXd bd = dt * effect.transpose();
     out.gain = stationaryLqrGain(ad, bd, qDiagonal.asDiagonal(), rDiagonal.asDiagonal(), 200000,
                                  &out.riccatiIterations);
     // The delay's limit: a channel whose own loop (the others open) has a mode faster than
@@ -151,6 +199,11 @@ StartLaw deriveStartLaw(const Demonstration& demonstration, const Eigen::MatrixX
             }
             out.gain = stationaryLqrGain(ad, bd, qDiagonal.asDiagonal(), rDiagonal.asDiagonal(),
                                          200000, &out.riccatiIterations);
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        if (set[static_cast<size_t>(i)]) {
+            out.gain.col(i).setZero();
         }
     }
     out.effort = rDiagonal;

@@ -27,6 +27,14 @@ struct StartLawOptions {
     /// B~, so that control l feeds back the components its row of B~ names, as the PD
     /// family's error combination c_l does. The LQR gain is computed in full, then restricted.
     Eigen::MatrixXd structure;
+    /// Components the action sets rather than drives (m x n; empty: none): a non-zero column i
+    /// says that error component i follows the controls' level, e_i = G[:, i]^T (u - u*), within
+    /// a step (a car's yaw rate follows its steering), instead of integrating them as eq. 5's
+    /// model has it. Such a component is not a state of the loop: what it drives through A-bar
+    /// moves into B (B[:, j] += A-bar(j, i) G[:, i]), and the law gets no gain on it. A
+    /// component given here that integrates another one given here (A-bar(j, i) != 0: the
+    /// heading integrates the yaw rate) is driven through it and stays a state.
+    Eigen::MatrixXd proportional;
 };
 
 /// The phase a dead time may take from the loop at its fastest mode [rad]: pi/6, half of the
@@ -43,6 +51,8 @@ struct StartLaw {
     Eigen::VectorXd errorScale;     ///< sigma_i (n) [state units]
     Eigen::VectorXd actionScale;    ///< half the actuator range per control (m) [action units]
     Eigen::MatrixXd meanDynamics;   ///< A-bar (n x n) [1/s]: drift + mean kinematics
+    Eigen::MatrixXd reducedModel;   ///< A-bar without the components the action sets (n x n)
+    Eigen::MatrixXd reducedEffect;  ///< B with their effect moved in (m x n)
     Eigen::VectorXd effort;         ///< R per control, after the delay's limit
     double fastestMode = 0.0;       ///< |s| of the closed loop's fastest mode [1/s]
     int riccatiIterations = 0;      ///< iterations the stationary Riccati equation took
@@ -73,6 +83,8 @@ Eigen::MatrixXd stationaryLqrGain(const Eigen::MatrixXd& ad, const Eigen::Matrix
 ///      has a mode faster than kDelayPhase / delay, that control's R (or every R) is doubled
 ///      and K found again (the delay takes at most 30 of the LQR's 60 degrees of phase margin);
 ///   5. the law u = u* - K e with K restricted to `structure` (B~), smoothed over `horizon`.
+/// With `proportional` set, the model of step 1 is first reduced by the components the action
+/// sets (see StartLawOptions::proportional).
 /// A component that never moves in the demonstration (sigma ~ 0) or that no control and no
 /// kinematics reaches gets no weight. Throws std::invalid_argument on shapes that do not match
 /// or a demonstration too short for the scale lag.

@@ -31,9 +31,9 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     if (profile.priscaFromPd) {
         const int horizon =
             profile.priscaPriorHorizon >= 0 ? profile.priscaPriorHorizon : profile.pdHorizon;
-        // The law derived from the demonstration smooths over PRISCA's own horizon H.
-        parameters.prior = profile.startLaw(*demonstration, fittedB,
-                                            demoStart ? profile.prisca.horizon : horizon);
+        // The law derived from the demonstration is a state feedback with no derivative to
+        // smooth: unsmoothed (a smoothing would only add its lag to the loop's delay).
+        parameters.prior = profile.startLaw(*demonstration, fittedB, demoStart ? 0 : horizon);
     }
     // A start no one tuned takes the automatic step and scales too.
     const bool automatic = profile.priscaAutomatic || demoStart;
@@ -166,7 +166,8 @@ Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
     const bool smoothed = spec.id == QLatin1String("pd-h") || spec.id == QLatin1String("pd-h-lsd");
     const bool lsd = spec.id == QLatin1String("pd-lsd") || spec.id == QLatin1String("pd-h-lsd");
     const bool demoStart = in.profile.start == MethodTuning::Start::Demonstration;
-    // The law derived from the demonstration smooths over PRISCA's horizon H (no tuned pd.H).
+    // The law derived from the demonstration smooths over PRISCA's horizon H (no tuned pd.H),
+    // its lag counted in the loop's delay.
     const int horizon = !smoothed ? 0 : demoStart ? in.profile.prisca.horizon : in.profile.pdHorizon;
     core::PdParameters gains = in.profile.startLaw(*in.demonstration, in.fittedB, horizon);
     return std::make_unique<core::PdController>(
@@ -451,9 +452,8 @@ const MethodParameter& start() {
                               "demonstration, the fit and the actuator limits alone (a "
                               "stationary LQR gain on the fitted model with weights from the "
                               "demonstration's own scales, no faster than the fitted dead time "
-                              "allows, on the errors B~ names per control, smoothed over "
-                              "PRISCA's H); PRISCA then also takes its automatic step and "
-                              "scales."));
+                              "allows, on the errors B~ names per control but those the action "
+                              "sets); PRISCA then also takes its automatic step and scales."));
         p.kind = Kind::Choice;
         p.choices = {"tuned", "demo"};
         p.get = [](const MethodTuning& f) {

@@ -644,6 +644,43 @@ class TestPriscaController : public QObject {
                                                 ActionLimits::symmetric(1, 1.0), options));
     }
 
+    // A component the action sets (a rate that follows the control's level within a step)
+    // leaves the loop: heading psi' = r with r = g u is, for the law, the integrator psi' = g u,
+    // so the gain on psi is the scalar Riccati optimum of that integrator and r gets none. The
+    // heading, given as set too, integrates the rate and stays a state.
+    void demoStart_aComponentTheActionSetsLeavesTheLoop() {
+        const double dt = 0.02, g = 4.0;
+        const int T = 400, lag = 50;
+        Demonstration demo = prisca::test::namedDemonstration(T, 2, 1, dt);
+        for (int k = 0; k < T; ++k) {
+            demo.states(k, 0) = 0.5 * std::sin(0.9 * k * dt);        // heading
+            demo.states(k, 1) = 0.45 * std::cos(0.9 * k * dt);       // its rate
+            demo.actions(k, 0) = demo.states(k, 1) / g;
+        }
+        StartLawOptions options;
+        options.scaleLag = lag;
+        options.drift = (Eigen::MatrixXd(2, 2) << 0.0, 1.0, 0.0, 0.0).finished();
+        options.proportional = (Eigen::MatrixXd(1, 2) << 0.0, g).finished();
+        const Eigen::MatrixXd B = (Eigen::MatrixXd(1, 2) << 0.0, 7.0).finished();  // ignored
+        const ActionLimits limits = ActionLimits::symmetric(1, 1.0);
+        const StartLaw law =
+            deriveStartLaw(demo, B, DeviationModel::euclidean(2), limits, options);
+        const double q = 1.0 / std::pow(law.errorScale[0], 2), r = 1.0, bd = dt * g;
+        const double c1 = -q * bd * bd;
+        const double P = (-c1 + std::sqrt(c1 * c1 + 4.0 * bd * bd * q * r)) / (2.0 * bd * bd);
+        const double expected = bd * P / (r + bd * bd * P);
+        QVERIFY2(std::abs(law.gain(0, 0) - expected) < 1e-9 * expected,
+                 qPrintable(QStringLiteral("K %1, closed form %2").arg(law.gain(0, 0)).arg(expected)));
+        QCOMPARE(law.gain(0, 1), 0.0);
+        QCOMPARE(law.reducedEffect(0, 0), g);
+        // Both given as set: the heading integrates the rate, so only the rate leaves.
+        options.proportional(0, 0) = 1.0;
+        const StartLaw both =
+            deriveStartLaw(demo, B, DeviationModel::euclidean(2), limits, options);
+        QCOMPARE(both.gain(0, 0), law.gain(0, 0));
+        QCOMPARE(both.gain(0, 1), 0.0);
+    }
+
     void construction_rejectsInconsistentShapes() {
         std::mt19937 rng(61);
         auto demo = randomDemonstration(10, 2, 1, 0.05, rng);
