@@ -247,13 +247,24 @@ void ControllerPanel::showSession() {
 }
 
 void ControllerPanel::enableScales() {
-    const bool derived =
-        session_.profile().priscaAutomatic && session_.method() == QLatin1String("prisca");
+    // A start from the demonstration derives the PD law (its gains and smoothing are not
+    // used) and makes PRISCA take its automatic scales.
+    const bool startsFromLaw = std::any_of(editors_.begin(), editors_.end(), [](const Editor& e) {
+        return QLatin1String(e.parameter->name) == QLatin1String("start");
+    });
+    const bool demoStart =
+        startsFromLaw && session_.profile().start == sim::MethodTuning::Start::Demonstration;
+    const bool derived = (session_.profile().priscaAutomatic || demoStart) &&
+                         session_.method() == QLatin1String("prisca");
     for (const Editor& editor : editors_) {
-        if (QLatin1String(editor.parameter->name) == QLatin1String("prisca.alpha0")) {
-            for (QWidget* field : editor.fields) {
-                field->setEnabled(!derived);
-            }
+        const QLatin1String name(editor.parameter->name);
+        const bool unused =
+            name == QLatin1String("prisca.alpha0")
+                ? derived
+                : demoStart && (name == QLatin1String("pd.kp") || name == QLatin1String("pd.kd") ||
+                                name == QLatin1String("pd.H"));
+        for (QWidget* field : editor.fields) {
+            field->setEnabled(!unused);
         }
     }
     features_->setEnabled(!derived);

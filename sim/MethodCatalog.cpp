@@ -27,11 +27,16 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     const auto& demonstration = in.demonstration;
     const Eigen::MatrixXd& fittedB = in.fittedB;
     core::PriscaParameters parameters = profile.prisca;
+    const bool demoStart = profile.start == MethodTuning::Start::Demonstration;
     if (profile.priscaFromPd) {
-        parameters.prior = profile.pd;
-        parameters.prior.horizon =
+        const int horizon =
             profile.priscaPriorHorizon >= 0 ? profile.priscaPriorHorizon : profile.pdHorizon;
+        // The law derived from the demonstration is a state feedback with no derivative to
+        // smooth: unsmoothed (a smoothing would only add its lag to the loop's delay).
+        parameters.prior = profile.startLaw(*demonstration, fittedB, demoStart ? 0 : horizon);
     }
+    // A start no one tuned takes the automatic step and scales too.
+    const bool automatic = profile.priscaAutomatic || demoStart;
     Eigen::MatrixXd model = fittedB;
     std::optional<Eigen::MatrixXd> drift;
     if (profile.priscaModel == MethodTuning::PriscaModel::Signs) {
@@ -45,17 +50,17 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
         model = fit.b;
         drift = fit.a;
     }
-    if (profile.priscaAutomatic) {
+    if (automatic) {
         parameters.stepSize.normalised = true;
         parameters.stepSize.scale = MethodTuning::automaticStep;
     }
     core::TrackingProblem problem = profile.priscaProblem(demonstration);
-    if (profile.priscaAutomatic) {
+    if (automatic) {
         problem.matching.window = MethodTuning::automaticWindow(*demonstration);
     }
     auto prisca = std::make_unique<core::PriscaController>(
         std::move(problem),
-        profile.priscaAutomatic ? profile.automaticFeatures(method, *demonstration)
+        automatic ? profile.automaticFeatures(method, *demonstration)
                                 : profile.featuresOf(method),
         model, parameters);
     if (drift) {
@@ -160,8 +165,11 @@ Made makePlayback(const MethodSpec&, const MethodInput& in) {
 Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
     const bool smoothed = spec.id == QLatin1String("pd-h") || spec.id == QLatin1String("pd-h-lsd");
     const bool lsd = spec.id == QLatin1String("pd-lsd") || spec.id == QLatin1String("pd-h-lsd");
-    core::PdParameters gains = in.profile.pd;
-    gains.horizon = smoothed ? in.profile.pdHorizon : 0;
+    const bool demoStart = in.profile.start == MethodTuning::Start::Demonstration;
+    // The law derived from the demonstration smooths over PRISCA's horizon H (no tuned pd.H),
+    // its lag counted in the loop's delay.
+    const int horizon = !smoothed ? 0 : demoStart ? in.profile.prisca.horizon : in.profile.pdHorizon;
+    core::PdParameters gains = in.profile.startLaw(*in.demonstration, in.fittedB, horizon);
     return std::make_unique<core::PdController>(
         in.profile.trackingProblem(in.demonstration,
                                    lsd ? Mode::LeastStateDeviation : Mode::TimeDriven),
@@ -428,6 +436,31 @@ const MethodParameter& priscaExplainedOnly() {
         };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.priscaLearnWhereExplained = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& start() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "start", QT_TRANSLATE_NOOP("MethodParameter", "Start"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The feedback law the PD family and PRISCA (its prior) start from. "
+                              "tuned: the plant profile's PD gains; demo: derived from the "
+                              "demonstration, the fit and the actuator limits alone (a "
+                              "stationary LQR gain on the fitted model with weights from the "
+                              "demonstration's own scales, no faster than the fitted dead time "
+                              "allows, on the errors B~ names per control but those the action "
+                              "sets); PRISCA then also takes its automatic step and scales."));
+        p.kind = Kind::Choice;
+        p.choices = {"tuned", "demo"};
+        p.get = [](const MethodTuning& f) {
+            return one(f.start == MethodTuning::Start::Demonstration ? 1 : 0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.start = v[0] != 0.0 ? MethodTuning::Start::Demonstration : MethodTuning::Start::Tuned;
         };
         return p;
     }();
@@ -792,8 +825,8 @@ std::vector<MethodSpec> makeCatalog() {
     s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
                     priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
                     priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
-                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), pdKp(),
-                    pdKd(),          pdHorizon()};
+                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), start(),
+                    pdKp(),          pdKd(),          pdHorizon()};
     all.push_back(s);
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);
     s.learnsOnline = true;
@@ -804,7 +837,7 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd", "PD", &makePdFamily);
     s.summary = "proportional-derivative feedback around the demonstration, time-driven";
-    s.parameters = {pdKp(), pdKd()};
+    s.parameters = {start(), pdKp(), pdKd()};
     all.push_back(s);
     s = entry("pd-selected", "PD (SELECTED)", &makePdFamily);
     s.training = MethodSpec::Training::SelectPdGains;
@@ -814,15 +847,15 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd-h", "PD+H", &makePdFamily);
     s.summary = "PD on the error smoothed over H steps";
-    s.parameters = {pdKp(), pdKd(), pdHorizon()};
+    s.parameters = {start(), pdKp(), pdKd(), pdHorizon()};
     all.push_back(s);
     s = entry("pd-lsd", "PD+LSD", &makePdFamily);
     s.summary = "PD with the least-state-deviation reference";
-    s.parameters = {pdKp(), pdKd(), matchingWindow()};
+    s.parameters = {start(), pdKp(), pdKd(), matchingWindow()};
     all.push_back(s);
     s = entry("pd-h-lsd", "PD+H+LSD", &makePdFamily);
     s.summary = "PD with both";
-    s.parameters = {pdKp(), pdKd(), pdHorizon(), matchingWindow()};
+    s.parameters = {start(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
     all.push_back(s);
     s = entry("lqr", "LQR", &makeLqr);
     s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5)";

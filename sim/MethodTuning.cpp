@@ -2,9 +2,12 @@
 
 #include "MethodCatalog.h"
 #include "PlantCatalog.h"
+#include "core/NestedExpectation.h"
+#include "core/StartLaw.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace prisca::sim {
@@ -300,6 +303,84 @@ core::IlcParameters MethodTuning::ilcParameters() const {
     parameters.lead = ilcLead;
     parameters.cutoff = ilcCutoff;
     return parameters;
+}
+
+int MethodTuning::fittedDeadTime(const core::Demonstration& demonstration) const {
+    // The latency shift at which the fit explains the demonstration best (mean R^2 over the
+    // states it models), searched over a quarter of a second.
+    const int longest = std::max(1, static_cast<int>(std::lround(0.25 / demonstration.dt)));
+    int best = 0;
+    double bestScore = -std::numeric_limits<double>::infinity();
+    for (int d = 0; d <= longest; ++d) {
+        core::ActionMappingFitOptions options;
+        options.latency = d;
+        double sum = 0.0;
+        int count = 0;
+        try {
+            const core::ActionMappingFit fit =
+                core::fitActionMapping(demonstration, mapping, info.deviationModel(), options);
+            for (Eigen::Index i = 0; i < fit.rSquared.size(); ++i) {
+                if (std::isfinite(fit.rSquared[i])) {
+                    sum += fit.rSquared[i];
+                    ++count;
+                }
+            }
+        } catch (const std::invalid_argument&) {
+            break;  // too short for this shift
+        }
+        if (count > 0 && sum / count > bestScore) {
+            bestScore = sum / count;
+            best = d;
+        }
+    }
+    return best;
+}
+
+core::PdParameters MethodTuning::startLaw(const core::Demonstration& demonstration,
+                                          const Eigen::MatrixXd& fittedB, int horizon) const {
+    if (start == Start::Tuned) {
+        core::PdParameters law = pd;
+        law.horizon = horizon;
+        return law;
+    }
+    core::StartLawOptions options;
+    options.scaleLag = automaticWindow(demonstration);
+    options.horizon = horizon;
+    options.structure = mapping.asDouble();
+    // Components the action sets rather than drives: those whose one-step change follows the
+    // action's change (eq. 8 read literally, the state-change target) better than their rate's
+    // change does (the default target), by R^2 on the demonstration; e.g. the car's yaw rate.
+    {
+        const core::ActionMappingFit rate =
+            core::fitActionMapping(demonstration, mapping, info.deviationModel());
+        core::ActionMappingFitOptions levelOptions;
+        levelOptions.target = core::ActionMappingFitOptions::Target::StateChange;
+        const core::ActionMappingFit level =
+            core::fitActionMapping(demonstration, mapping, info.deviationModel(), levelOptions);
+        options.proportional = Eigen::MatrixXd::Zero(level.b.rows(), level.b.cols());
+        for (Eigen::Index i = 0; i < level.b.cols(); ++i) {
+            const double byLevel = level.rSquared[i], byRate = rate.rSquared[i];
+            if (std::isfinite(byLevel) && byLevel > 0.0 &&
+                (!std::isfinite(byRate) || byLevel > byRate)) {
+                options.proportional.col(i) = level.b.col(i) * demonstration.dt;
+            }
+        }
+    }
+    // The loop's dead time: the actuators' (what the fit's latency shift finds in the
+    // demonstration), the sensor's age and the control period the action is held for.
+    const int deadTime = fittedDeadTime(demonstration);
+    // The smoothing's own lag: the mean age of its nested-expectation weights.
+    double smoothingAge = 0.0;
+    if (horizon > 0) {
+        const Eigen::VectorXd w = core::nestedExpectationWeights(horizon + 1);
+        for (int t = 0; t <= horizon; ++t) {
+            smoothingAge += w[t] * (horizon - t);
+        }
+    }
+    options.delay = (deadTime + measurement.latencySteps + 1 + smoothingAge) * demonstration.dt;
+    return core::deriveStartLaw(demonstration, fittedB, info.deviationModel(),
+                                core::ActionLimits{info.actionLower, info.actionUpper}, options)
+        .law;
 }
 
 core::TrackingProblem MethodTuning::priscaProblem(

@@ -82,6 +82,21 @@ struct MethodTuning {
     static constexpr double automaticWindowSeconds = 1.0;
     /// The closed-loop gradient learns only where a robust fit explains the demonstration.
     bool priscaLearnWhereExplained = false;
+    /// Where the feedback law PRISCA (its prior) and the PD family start from: the profile's
+    /// tuned gains (pd, pdHorizon), or a law derived from the demonstration, the fit and the
+    /// actuator limits alone (core::deriveStartLaw), for a robot no one tuned on. With the
+    /// demonstration start PRISCA also takes its automatic defaults (priscaAutomatic).
+    enum class Start { Tuned, Demonstration };
+    Start start = Start::Tuned;
+    /// The law PRISCA's prior and the PD family use under `start`: the profile's tuned PD with
+    /// the given smoothing horizon, or the law derived from the demonstration and the fit B
+    /// (m x n) with the same horizon. std::invalid_argument where the derivation cannot be made.
+    core::PdParameters startLaw(const core::Demonstration& demonstration,
+                                const Eigen::MatrixXd& fittedB, int horizon) const;
+    /// The dead time [steps] between an action and its effect that explains the demonstration
+    /// best: the fit's latency shift (ActionMappingFitOptions::latency) with the highest mean
+    /// R^2 over the states it models, searched over a quarter of a second.
+    int fittedDeadTime(const core::Demonstration& demonstration) const;
     core::PgsdParameters pgsd;        ///< PGSD defaults
     core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]

@@ -44,6 +44,16 @@
         <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
     </message>
     <message>
+        <location filename="../sim/MethodCatalog.cpp" line="451"/>
+        <source>Start</source>
+        <translation>起點</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="452"/>
+        <source>The feedback law the PD family and PRISCA (its prior) start from. tuned: the plant profile&apos;s PD gains; demo: derived from the demonstration, the fit and the actuator limits alone (a stationary LQR gain on the fitted model with weights from the demonstration&apos;s own scales, no faster than the fitted dead time allows, on the errors B~ names per control but those the action sets); PRISCA then also takes its automatic step and scales.</source>
+        <translation>PD 系列及 PRISCA（其先驗）起始的回饋律。tuned：設備設定檔中調校好的 PD 增益；demo：只由示範、擬合及致動器限制推導（以示範本身的尺度為權重、在擬合模型上求得的穩態 LQR 增益，速度不超過擬合死區時間所容許，只用 B~ 為每個控制指明、而非由動作直接設定的誤差）；PRISCA 亦隨之採用自動步長及比例。</translation>
+    </message>
+    <message>
         <location filename="../sim/MethodCatalog.cpp" line="267"/>
         <source>Step scale α_0</source>
         <translation>步長比例 α_0</translation>

@@ -156,9 +156,23 @@ void addMethodParameterOptions(CommandLine& line) {
                   "comma-separated, where it has one per control). 'prisca-cli methods' lists "
                   "every method's parameters with units, ranges and each plant's default.",
                   "NAME=VALUE");
+    line.addValue("start",
+                  "The feedback law PRISCA and the PD family start from: 'tuned' (the plant "
+                  "profile's PD gains; the default on catalog plants) or 'demo' (derived from "
+                  "the demonstration, the fit and the actuator limits alone). The same as "
+                  "--param start=VALUE, applied before every --param.",
+                  "demo|tuned");
 }
 
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile) {
+    if (line.isSet("start")) {
+        const QString start = line.value("start");
+        if (start != QLatin1String("demo") && start != QLatin1String("tuned")) {
+            throw UsageError(
+                QStringLiteral("--start: '%1' is not one of: demo tuned").arg(start));
+        }
+        sim::MethodCatalog::setParameter(profile, QStringLiteral("start=") + start);
+    }
     for (const QString& assignment : line.values("param")) {
         try {
             sim::MethodCatalog::setParameter(profile, assignment);

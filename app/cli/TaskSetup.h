@@ -62,9 +62,10 @@ std::shared_ptr<const sim::PlantParameters> plantParametersOption(const CommandL
 QStringList stylesOption(const CommandLine& line, const QString& plant);
 
 /// Adds --param NAME=VALUE (repeatable): a method parameter as the catalog declares it
-/// (sim::MethodCatalog::parameters()).
+/// (sim::MethodCatalog::parameters()); and --start demo|tuned, the law PRISCA and the PD
+/// family start from (the parameter `start`).
 void addMethodParameterOptions(CommandLine& line);
-/// Applies every --param to the profile, in order; UsageError naming the parameter, the value
+/// Applies --start, then every --param to the profile, in order; UsageError naming the parameter, the value
 /// and what is allowed.
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
 

@@ -1337,6 +1337,47 @@ class TestCliCommands : public QObject {
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     }
 
+    // --start demo: PRISCA and the PD family start from the law derived from the demonstration
+    // alone, on every catalog plant, in run, table1 and curve; a value that is neither is refused.
+    void start_demoRunsOnEveryPlantInRunTable1AndCurve_data() {
+        QTest::addColumn<QString>("plant");
+        for (const QString& plant : prisca::sim::PlantCatalog::names()) {
+            QTest::newRow(qPrintable(plant)) << plant;
+        }
+    }
+    void start_demoRunsOnEveryPlantInRunTable1AndCurve() {
+        QFETCH(QString, plant);
+        const QString demo = plant + "-start-demo.csv";
+        QCOMPARE(cli({"demo", "--plant", plant, "--out", demo}).exitCode, 0);
+        for (const char* method : {"prisca", "pd-h-lsd"}) {
+            const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
+                                     "--start", "demo", "--trials", "2", "--out",
+                                     plant + "-start.csv", "--format", "json"});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QJsonArray trials = parseJson(r.out).value("trials").toArray();
+            QCOMPARE(trials.size(), 2);
+            for (const QJsonValue& trial : trials) {
+                const double rms = trial.toObject().value("trackingRms").toDouble(-1);
+                QVERIFY2(rms >= 0.0 && std::isfinite(rms), qPrintable(r.out));
+            }
+        }
+        if (prisca::sim::PlantCatalog::describe(plant).pose) {  // table1 is for vehicles
+            const CliResult table =
+                cli({"table1", "--plant", plant, "--demo", demo, "--trials", "1",
+                     "--training-trials", "1", "--methods", "prisca,pd", "--start", "demo",
+                     "--format", "json"});
+            QVERIFY2(table.exitCode == 0, qPrintable(table.err));
+        }
+        const CliResult curve = cli({"curve", "--plant", plant, "--demo", demo, "--methods",
+                                     "prisca", "--runs", "1", "--budget", "400", "--start",
+                                     "demo", "--out", plant + "-start-curve.csv"});
+        QVERIFY2(curve.exitCode == 0, qPrintable(curve.err));
+        const CliResult bad = cli({"run", "--plant", plant, "--demo", demo, "--method", "prisca",
+                                   "--start", "guess", "--out", plant + "-bad.csv"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--start"), qPrintable(bad.err));
+    }
+
     void help_documentsEachCommandsOptions() {
         for (const char* command :
              {"simulate", "demo", "fit", "methods", "run", "table1", "curve", "lemma41"}) {

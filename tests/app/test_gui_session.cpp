@@ -243,6 +243,22 @@ class TestGuiSession : public QObject {
             QVERIFY(!w.window.session().profile().priscaAutomatic);
             QVERIFY(features->isEnabled());
             QVERIFY(w.find<QDoubleSpinBox>("prisca.alpha0")->isEnabled());
+            // A start from the demonstration derives the law and the scales: the PD gains and
+            // alpha_0 are not the operator's then.
+            auto* start = w.find<QComboBox>("start");
+            QVERIFY(w.find<QDoubleSpinBox>("pd.kp[0]")->isEnabled());
+            start->setCurrentIndex(1);
+            emit start->activated(1);
+            QVERIFY(w.window.session().profile().start ==
+                    prisca::sim::MethodTuning::Start::Demonstration);
+            QVERIFY(!w.find<QDoubleSpinBox>("pd.kp[0]")->isEnabled());
+            QVERIFY(!w.find<QDoubleSpinBox>("prisca.alpha0")->isEnabled());
+            QVERIFY(!features->isEnabled());
+            start->setCurrentIndex(0);
+            emit start->activated(0);
+            QVERIFY(w.window.session().profile().start == prisca::sim::MethodTuning::Start::Tuned);
+            QVERIFY(w.find<QDoubleSpinBox>("pd.kp[0]")->isEnabled());
+            QVERIFY(w.find<QDoubleSpinBox>("prisca.alpha0")->isEnabled());
             // PRISCA (the method shown) has features of its own: those are the ones edited.
             auto edited = [&w] {
                 const auto& profile = w.window.session().profile();
