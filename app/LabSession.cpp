@@ -142,13 +142,18 @@ void LabSession::setPlantParameters(std::shared_ptr<const sim::PlantParameters> 
     auto demonstration =
         rerecord ? scripted(task_.plant, scriptedStyle_, scriptedSeed_, parameters.get())
                  : task_.demonstration;
-    task_ = sim::makeTask(task_.profile, std::move(demonstration), fitOptions_,
-                          std::move(parameters));
+    // Nobody tuned a car described by a file: the controllers start from its demonstration
+    // (the operator may choose the tuned start again in the Controller panel).
+    sim::MethodTuning profile = task_.profile;
+    sim::MethodCatalog::setParameter(
+        profile, parameters ? QStringLiteral("start=demo") : QStringLiteral("start=tuned"));
+    task_ = sim::makeTask(profile, std::move(demonstration), fitOptions_, std::move(parameters));
     emit plantParametersChanged();
     if (rerecord) {
         emit demonstrationChanged();
     }
     emit fitChanged();
+    emit controllerChanged();
 }
 
 void LabSession::setPlant(const QString& plant) {

@@ -58,10 +58,12 @@ const std::vector<Field<SlideCarParameters>>& slideCarFields() {
          [](P& p) -> double& { return p.staticFriction; }},
         {"kineticFriction", "1", 0.05, 2.0, "front tyres' sliding friction coefficient",
          [](P& p) -> double& { return p.kineticFriction; }},
-        {"rearStaticFriction", "1", 0.05, 2.0, "rear tyres' static friction coefficient",
-         [](P& p) -> double& { return p.rearStaticFriction; }},
-        {"rearKineticFriction", "1", 0.05, 2.0, "rear tyres' sliding friction coefficient",
-         [](P& p) -> double& { return p.rearKineticFriction; }},
+        {"rearStaticGrip", "1", 0.2, 2.0,
+         "rear tyres' static friction as a share of the front's",
+         [](P& p) -> double& { return p.rearGripRatio; }},
+        {"rearKineticGrip", "1", 0.2, 2.0,
+         "rear tyres' sliding friction as a share of the front's",
+         [](P& p) -> double& { return p.rearKineticGripRatio; }},
         {"maxDriveForce", "N", 0.5, 100.0,
          "traction of all four wheels at standstill and full throttle",
          [](P& p) -> double& { return p.maxDriveForce; }},
@@ -230,10 +232,14 @@ QString relationProblem(const QString& plant, const std::vector<PlantParameterSp
                                   "tyre grips less than a rolling one)")
                 .arg(number(at("kineticFriction")), number(at("staticFriction")));
         }
-        if (at("rearKineticFriction") > at("rearStaticFriction")) {
-            return QStringLiteral("rearKineticFriction = %1 is above rearStaticFriction = %2 (a "
-                                  "sliding tyre grips less than a rolling one)")
-                .arg(number(at("rearKineticFriction")), number(at("rearStaticFriction")));
+        const double rearStatic = at("staticFriction") * at("rearStaticGrip");
+        const double rearKinetic = at("kineticFriction") * at("rearKineticGrip");
+        if (rearKinetic > rearStatic) {
+            return QStringLiteral("the rear tyres' sliding friction (kineticFriction x "
+                                  "rearKineticGrip = %1) is above their static friction "
+                                  "(staticFriction x rearStaticGrip = %2): a sliding tyre grips "
+                                  "less than a rolling one")
+                .arg(number(rearKinetic), number(rearStatic));
         }
         if (std::abs(at("cgForward")) >= 0.45 * at("wheelbase")) {
             return QStringLiteral("cgForward = %1 m puts the centre of mass over an axle of the "

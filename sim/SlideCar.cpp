@@ -262,8 +262,8 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
     auto limit = [&](int a, double wanted) {
         const double demand = std::hypot(longitudinal[a], wanted);
         const double grip = frictionScale_ * load[a];
-        const double muS = (a == 0 ? p.staticFriction : p.rearStaticFriction) * grip;
-        const double muK = (a == 0 ? p.kineticFriction : p.rearKineticFriction) * grip;
+        const double muS = p.staticFriction * (a == 1 ? grip * p.rearGripRatio : grip);
+        const double muK = p.kineticFriction * (a == 1 ? grip * p.rearKineticGripRatio : grip);
         if (!sliding_[a] && demand > muS) {
             sliding_[a] = true;
         } else if (sliding_[a] && demand <= muK) {

@@ -34,11 +34,12 @@ struct SlideCarParameters {
     double cgForward = 0.0;
     double staticFriction = 0.65;   ///< front tyres' static coefficient mu_s
     double kineticFriction = 0.45;  ///< front tyres' sliding coefficient mu_k (< mu_s: the "snap")
-    /// The rear tyres' coefficients (harder or narrower rear tyres): 0.75 of the front's. Below
-    /// about mu_k / mu_s of the front's the rear lets go once the front slides, which is what
-    /// makes the car yaw into a slide when steered hard at speed rather than plough straight on.
-    double rearStaticFriction = 0.65 * 0.75;
-    double rearKineticFriction = 0.45 * 0.75;
+    /// The rear tyres' static and sliding coefficients as shares of the front's (harder or
+    /// narrower rear tyres). Below about mu_k / mu_s the rear lets go once the front slides,
+    /// which is what makes the car yaw into a slide when steered hard at speed rather than
+    /// plough straight on.
+    double rearGripRatio = 0.75;
+    double rearKineticGripRatio = 0.75;
     double rollingResistance = 0.03;  ///< coefficient of rolling resistance
     double drivelineDrag = 0.5;       ///< viscous drag of motor and gears when coasting [N s/m]
     double gravity = 9.81;            ///< [m/s^2]

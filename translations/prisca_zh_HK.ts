@@ -4,349 +4,349 @@
 <context>
     <name>MethodParameter</name>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="211"/>
+        <location filename="../sim/MethodCatalog.cpp" line="219"/>
         <source>Horizon H</source>
         <translation>時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="212"/>
+        <location filename="../sim/MethodCatalog.cpp" line="220"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="226"/>
+        <location filename="../sim/MethodCatalog.cpp" line="234"/>
         <source>Depreciation γ</source>
         <translation>折舊 γ</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="227"/>
+        <location filename="../sim/MethodCatalog.cpp" line="235"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="239"/>
+        <location filename="../sim/MethodCatalog.cpp" line="247"/>
         <source>Step rate β</source>
         <translation>步長速率 β</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="240"/>
+        <location filename="../sim/MethodCatalog.cpp" line="248"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="252"/>
+        <location filename="../sim/MethodCatalog.cpp" line="260"/>
         <source>Automatic scales</source>
         <translation>自動比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="253"/>
+        <location filename="../sim/MethodCatalog.cpp" line="261"/>
         <source>Feature scales, α_0 and matching window derived from the demonstration and the fit when PRISCA starts; off: the step scale and feature scales set here.</source>
         <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="451"/>
+        <location filename="../sim/MethodCatalog.cpp" line="448"/>
         <source>Start</source>
         <translation>起點</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="452"/>
+        <location filename="../sim/MethodCatalog.cpp" line="449"/>
         <source>The feedback law the PD family and PRISCA (its prior) start from. tuned: the plant profile&apos;s PD gains; demo: derived from the demonstration, the fit and the actuator limits alone (a stationary LQR gain on the fitted model with weights from the demonstration&apos;s own scales, no faster than the fitted dead time allows, on the errors B~ names per control but those the action sets); PRISCA then also takes its automatic step and scales.</source>
         <translation>PD 系列及 PRISCA（其先驗）起始的回饋律。tuned：設備設定檔中調校好的 PD 增益；demo：只由示範、擬合及致動器限制推導（以示範本身的尺度為權重、在擬合模型上求得的穩態 LQR 增益，速度不超過擬合死區時間所容許，只用 B~ 為每個控制指明、而非由動作直接設定的誤差）；PRISCA 亦隨之採用自動步長及比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="267"/>
+        <location filename="../sim/MethodCatalog.cpp" line="275"/>
         <source>Step scale α_0</source>
         <translation>步長比例 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="268"/>
+        <location filename="../sim/MethodCatalog.cpp" line="276"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B). Not used with automatic scales.</source>
         <translation>式 3 的 α_0（論文用 1；合適大小取決於 e、φ 及 B 的單位）。使用自動比例時不採用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="281"/>
+        <location filename="../sim/MethodCatalog.cpp" line="289"/>
         <source>θ bound</source>
         <translation>θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="282"/>
+        <location filename="../sim/MethodCatalog.cpp" line="290"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent).</source>
         <translation>若大於 0，每次更新後 θ 保持在 |θ_i| ≤ 界限內（投影下降）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="284"/>
-        <location filename="../sim/MethodCatalog.cpp" line="335"/>
-        <location filename="../sim/MethodCatalog.cpp" line="530"/>
+        <location filename="../sim/MethodCatalog.cpp" line="292"/>
+        <location filename="../sim/MethodCatalog.cpp" line="343"/>
+        <location filename="../sim/MethodCatalog.cpp" line="563"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="295"/>
+        <location filename="../sim/MethodCatalog.cpp" line="303"/>
         <source>Start from the PD law</source>
         <translation>由 PD 控制律開始</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="296"/>
+        <location filename="../sim/MethodCatalog.cpp" line="304"/>
         <source>The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds the robot on the path; off: θ = 0 is no feedback (Algorithm 1).</source>
         <translation>策略為 u = u* + PD 控制律 + θᵀφ，因此 θ = 0 已能讓機械人保持在路徑上；關閉：θ = 0 即無回饋（演算法 1）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="309"/>
+        <location filename="../sim/MethodCatalog.cpp" line="317"/>
         <source>Gradient</source>
         <translation>梯度</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="310"/>
+        <location filename="../sim/MethodCatalog.cpp" line="318"/>
         <source>one-step: eq. 14 as printed; closed-loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
         <translation>one-step：照印出的式 14；closed-loop：式 4 的連鎖律經擬合模型及策略本身的回饋在窗口內傳遞。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="331"/>
+        <location filename="../sim/MethodCatalog.cpp" line="339"/>
         <source>Effort weight R</source>
         <translation>施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="332"/>
+        <location filename="../sim/MethodCatalog.cpp" line="340"/>
         <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound.</source>
         <translation>成本亦計入修正的施力，每個控制量 R (θᵀφ)²：令學習在無 θ 界限下收斂。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="354"/>
+        <location filename="../sim/MethodCatalog.cpp" line="362"/>
         <source>Local optimal baseline</source>
         <translation>局部最優基線</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="355"/>
+        <location filename="../sim/MethodCatalog.cpp" line="363"/>
         <source>Subtract the local optimal baseline b (eq. 15) from the gradient; off: b = 0.</source>
         <translation>從梯度減去局部最優基線 b（式 15）；關閉：b = 0。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="370"/>
+        <location filename="../sim/MethodCatalog.cpp" line="378"/>
         <source>Inverse depreciation</source>
         <translation>逆折舊</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="371"/>
+        <location filename="../sim/MethodCatalog.cpp" line="379"/>
         <source>Weigh the window&apos;s gradients by the inverse depreciation D (eq. 10); off: D = 1.</source>
         <translation>以逆折舊 D（式 10）加權窗口內的梯度；關閉：D = 1。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="388"/>
+        <location filename="../sim/MethodCatalog.cpp" line="396"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="389"/>
+        <location filename="../sim/MethodCatalog.cpp" line="397"/>
         <source>fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; drift: eq. 5 in full, the state&apos;s own drift A fitted with B.</source>
         <translation>fitted：擬合得出的 B = B_v (.) B~（式 8）；signs：只用 B~；drift：完整的式 5，狀態本身的漂移 A 與 B 一併擬合。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="406"/>
+        <location filename="../sim/MethodCatalog.cpp" line="414"/>
         <source>Model delay d</source>
         <translation>模型延遲 d</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="408"/>
+        <location filename="../sim/MethodCatalog.cpp" line="416"/>
         <source>The measurement&apos;s age d in the closed-loop gradient&apos;s model.</source>
         <translation>閉環梯度模型中量測的時延 d。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="422"/>
+        <location filename="../sim/MethodCatalog.cpp" line="430"/>
         <source>Learn where explained</source>
         <translation>只在可解釋處學習</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="423"/>
+        <location filename="../sim/MethodCatalog.cpp" line="431"/>
         <source>The closed-loop gradient learns only on the samples a robust fit explains.</source>
         <translation>閉環梯度只在穩健擬合能解釋的樣本上學習。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="440"/>
+        <location filename="../sim/MethodCatalog.cpp" line="473"/>
         <source>Matching window</source>
         <translation>匹配窗口</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="442"/>
+        <location filename="../sim/MethodCatalog.cpp" line="475"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="457"/>
+        <location filename="../sim/MethodCatalog.cpp" line="490"/>
         <source>PD gain Kp</source>
         <translation>PD 增益 Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="458"/>
+        <location filename="../sim/MethodCatalog.cpp" line="491"/>
         <source>Proportional gain per control on its error combination c_l · e (u = u* − Kp ε − Kd dε/dt).</source>
         <translation>每個控制量對其誤差組合 c_l · e 的比例增益（u = u* − Kp ε − Kd dε/dt）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="471"/>
+        <location filename="../sim/MethodCatalog.cpp" line="504"/>
         <source>PD gain Kd</source>
         <translation>PD 增益 Kd</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="472"/>
+        <location filename="../sim/MethodCatalog.cpp" line="505"/>
         <source>Derivative gain per control on the rate of its error combination.</source>
         <translation>每個控制量對其誤差組合變化率的微分增益。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="485"/>
+        <location filename="../sim/MethodCatalog.cpp" line="518"/>
         <source>PD smoothing H</source>
         <translation>PD 平滑 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="486"/>
+        <location filename="../sim/MethodCatalog.cpp" line="519"/>
         <source>PD+H and PD+H+LSD smooth the error over this many steps (the weights of eq. 9).</source>
         <translation>PD+H 及 PD+H+LSD 在這麼多步上平滑誤差（式 9 的權重）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="500"/>
+        <location filename="../sim/MethodCatalog.cpp" line="533"/>
         <source>PGSD horizon H</source>
         <translation>PGSD 時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="501"/>
+        <location filename="../sim/MethodCatalog.cpp" line="534"/>
         <source>PGSD&apos;s smoothing horizon H (eq. 9).</source>
         <translation>PGSD 的平滑時域 H（式 9）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="514"/>
+        <location filename="../sim/MethodCatalog.cpp" line="547"/>
         <source>PGSD step α</source>
         <translation>PGSD 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="515"/>
+        <location filename="../sim/MethodCatalog.cpp" line="548"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="526"/>
+        <location filename="../sim/MethodCatalog.cpp" line="559"/>
         <source>PGSD θ bound</source>
         <translation>PGSD θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="528"/>
+        <location filename="../sim/MethodCatalog.cpp" line="561"/>
         <source>If above 0, PGSD&apos;s θ is kept in |θ_i| ≤ bound after each update.</source>
         <translation>若大於 0，每次更新後 PGSD 的 θ 保持在 |θ_i| ≤ 界限內。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="541"/>
+        <location filename="../sim/MethodCatalog.cpp" line="574"/>
         <source>PEGASUS iterations</source>
         <translation>PEGASUS 迭代次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="543"/>
+        <location filename="../sim/MethodCatalog.cpp" line="576"/>
         <source>Gradient steps PEGASUS takes on its fixed scenarios before a run.</source>
         <translation>PEGASUS 在運行前於其固定情境上所作的梯度步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="557"/>
+        <location filename="../sim/MethodCatalog.cpp" line="590"/>
         <source>PEGASUS scenarios</source>
         <translation>PEGASUS 情境數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="559"/>
+        <location filename="../sim/MethodCatalog.cpp" line="592"/>
         <source>Fixed scenarios (start, perturbation, noise) each evaluation averages.</source>
         <translation>每次評估所平均的固定情境（起點、擾動、雜訊）數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="573"/>
+        <location filename="../sim/MethodCatalog.cpp" line="606"/>
         <source>PEGASUS step α</source>
         <translation>PEGASUS 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="574"/>
+        <location filename="../sim/MethodCatalog.cpp" line="607"/>
         <source>Gradient-descent step on the mean episode cost.</source>
         <translation>對平均回合成本的梯度下降步長。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="585"/>
+        <location filename="../sim/MethodCatalog.cpp" line="618"/>
         <source>ILC learning Γ/Kp</source>
         <translation>ILC 學習 Γ/Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="587"/>
+        <location filename="../sim/MethodCatalog.cpp" line="620"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="600"/>
+        <location filename="../sim/MethodCatalog.cpp" line="633"/>
         <source>ILC lead</source>
         <translation>ILC 超前</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="601"/>
+        <location filename="../sim/MethodCatalog.cpp" line="634"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="615"/>
+        <location filename="../sim/MethodCatalog.cpp" line="648"/>
         <source>ILC Q cutoff</source>
         <translation>ILC Q 截止頻率</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="616"/>
+        <location filename="../sim/MethodCatalog.cpp" line="649"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="628"/>
+        <location filename="../sim/MethodCatalog.cpp" line="661"/>
         <source>ILC feedback scale</source>
         <translation>ILC 回饋比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="630"/>
+        <location filename="../sim/MethodCatalog.cpp" line="663"/>
         <source>The PD gains in ILC&apos;s loop, scaled by this.</source>
         <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="641"/>
+        <location filename="../sim/MethodCatalog.cpp" line="674"/>
         <source>Oracle samples</source>
         <translation>理想控制器樣本數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="642"/>
+        <location filename="../sim/MethodCatalog.cpp" line="675"/>
         <source>Candidate plans the oracle simulates at each planning.</source>
         <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="656"/>
+        <location filename="../sim/MethodCatalog.cpp" line="689"/>
         <source>Oracle replanning</source>
         <translation>理想控制器重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="658"/>
+        <location filename="../sim/MethodCatalog.cpp" line="691"/>
         <source>Control steps between two plans of the oracle.</source>
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="697"/>
+        <location filename="../sim/MethodCatalog.cpp" line="730"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="699"/>
+        <location filename="../sim/MethodCatalog.cpp" line="732"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="720"/>
+        <location filename="../sim/MethodCatalog.cpp" line="753"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="722"/>
+        <location filename="../sim/MethodCatalog.cpp" line="755"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="737"/>
+        <location filename="../sim/MethodCatalog.cpp" line="770"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="738"/>
+        <location filename="../sim/MethodCatalog.cpp" line="771"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
@@ -501,37 +501,37 @@
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="318"/>
+        <location filename="../app/ControllerPanel.cpp" line="329"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="332"/>
+        <location filename="../app/ControllerPanel.cpp" line="343"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="371"/>
+        <location filename="../app/ControllerPanel.cpp" line="382"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="395"/>
+        <location filename="../app/ControllerPanel.cpp" line="406"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="396"/>
+        <location filename="../app/ControllerPanel.cpp" line="407"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="397"/>
+        <location filename="../app/ControllerPanel.cpp" line="408"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="372"/>
+        <location filename="../app/ControllerPanel.cpp" line="383"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -756,117 +756,117 @@
         <translation>機型檔 %1 描述的是 %2，不是 %3</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="174"/>
+        <location filename="../app/LabSession.cpp" line="179"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="182"/>
+        <location filename="../app/LabSession.cpp" line="187"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="193"/>
+        <location filename="../app/LabSession.cpp" line="198"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="205"/>
+        <location filename="../app/LabSession.cpp" line="210"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="314"/>
+        <location filename="../app/LabSession.cpp" line="319"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="320"/>
+        <location filename="../app/LabSession.cpp" line="325"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="326"/>
+        <location filename="../app/LabSession.cpp" line="331"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="329"/>
+        <location filename="../app/LabSession.cpp" line="334"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="334"/>
+        <location filename="../app/LabSession.cpp" line="339"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="341"/>
+        <location filename="../app/LabSession.cpp" line="346"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="345"/>
+        <location filename="../app/LabSession.cpp" line="350"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="354"/>
+        <location filename="../app/LabSession.cpp" line="359"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="377"/>
+        <location filename="../app/LabSession.cpp" line="382"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="444"/>
+        <location filename="../app/LabSession.cpp" line="449"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="449"/>
+        <location filename="../app/LabSession.cpp" line="454"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="471"/>
+        <location filename="../app/LabSession.cpp" line="476"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="485"/>
+        <location filename="../app/LabSession.cpp" line="490"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="511"/>
+        <location filename="../app/LabSession.cpp" line="516"/>
         <source>&apos;plantParameters&apos;: %1</source>
         <translation>「plantParameters」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="525"/>
+        <location filename="../app/LabSession.cpp" line="530"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="529"/>
+        <location filename="../app/LabSession.cpp" line="534"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="536"/>
+        <location filename="../app/LabSession.cpp" line="541"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="541"/>
+        <location filename="../app/LabSession.cpp" line="546"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="560"/>
+        <location filename="../app/LabSession.cpp" line="565"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -2314,62 +2314,63 @@
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="131"/>
+        <location filename="../rig/RigSession.cpp" line="132"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="234"/>
+        <location filename="../rig/RigSession.cpp" line="235"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="237"/>
+        <location filename="../rig/RigSession.cpp" line="238"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="254"/>
+        <location filename="../rig/RigSession.cpp" line="255"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="259"/>
+        <location filename="../rig/RigSession.cpp" line="260"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="262"/>
+        <location filename="../rig/RigSession.cpp" line="263"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="272"/>
+        <location filename="../rig/RigSession.cpp" line="274"/>
+        <location filename="../rig/RigSession.cpp" line="293"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="424"/>
+        <location filename="../rig/RigSession.cpp" line="441"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="427"/>
+        <location filename="../rig/RigSession.cpp" line="444"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="436"/>
+        <location filename="../rig/RigSession.cpp" line="453"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="494"/>
+        <location filename="../rig/RigSession.cpp" line="511"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="502"/>
+        <location filename="../rig/RigSession.cpp" line="519"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>

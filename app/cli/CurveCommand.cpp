@@ -104,7 +104,7 @@ int curveCommand(const QStringList& arguments) {
             sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
         protocol.plantParameters = plantParametersOption(line, plant);
         sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
-        applyMethodParameters(line, profile);
+        applyMethodParameters(line, profile, protocol.plantParameters != nullptr);
         int cellNow = 0, cellsAll = 0;
         QString cellStyle;
         std::uint64_t cellSeed = 0;
@@ -137,7 +137,7 @@ int curveCommand(const QStringList& arguments) {
                 settings.run, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName)),
                 parameters.get(), seed));
         task.plantParameters = parameters;
-        applyMethodParameters(line, task.profile);
+        applyMethodParameters(line, task.profile, parameters != nullptr);
         plant = task.plant;
         settings.progress = [](const QString& text) { printProgress(text); };
         result.pooled = sim::runLearningCurves(settings, task);

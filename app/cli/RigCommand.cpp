@@ -74,7 +74,7 @@ int rigCommand(const QStringList& arguments) {
                           static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
                           conditions);
     task.plantParameters = parameters;
-    applyMethodParameters(line, task.profile);
+    applyMethodParameters(line, task.profile, parameters != nullptr);
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     // The run as the simulation sets it up: the rig's loop takes its controller, settle time,

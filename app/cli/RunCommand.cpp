@@ -90,7 +90,7 @@ int runCommand(const QStringList& arguments) {
     Task task = loadTask(plantName, line.required("demo"), line.value("mask"));
     task.plantParameters = parameters;
     sim::MethodTuning& profile = task.profile;
-    applyMethodParameters(line, profile);
+    applyMethodParameters(line, profile, parameters != nullptr);
     const int trials = static_cast<int>(line.integer("trials", 1, 100000));
     sim::RunSettings settings;
     readRunSettings(line, settings);

@@ -150,7 +150,8 @@ int table1ProtocolCommand(const CommandLine& line) {
     settings.seedSets = sim::consecutiveSeedSets(first, seedSets);
     settings.table.trials = static_cast<int>(line.integer("trials", 1, 100000));
     readRunSettings(line, settings.table.run);
-    applyMethodParameters(line, profile);
+    applyMethodParameters(line, profile,
+                          settings.plantParameters != nullptr || !settings.variants.empty());
     const auto format = core::parseTableFormat(line.format());
     installInterruptHandler();
     settings.table.cancelled = [] { return interrupted(); };
@@ -282,7 +283,7 @@ int table1Command(const QStringList& arguments) {
     }
     settings.methods = checkedMethods(line, settings.methods);
     settings.trials = static_cast<int>(line.integer("trials", 1, 100000));
-    applyMethodParameters(line, task.profile);
+    applyMethodParameters(line, task.profile, parameters != nullptr);
     const auto format = core::parseTableFormat(line.format());
 
     settings.keepPaths = line.isSet("plot");

@@ -159,12 +159,18 @@ void addMethodParameterOptions(CommandLine& line) {
     line.addValue("start",
                   "The feedback law PRISCA and the PD family start from: 'tuned' (the plant "
                   "profile's PD gains; the default on catalog plants) or 'demo' (derived from "
-                  "the demonstration, the fit and the actuator limits alone). The same as "
+                  "the demonstration, the fit and the actuator limits alone; the default with "
+                  "--plant-params or --variants). The same as "
                   "--param start=VALUE, applied before every --param.",
                   "demo|tuned");
 }
 
-void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile) {
+void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
+                           bool plantFromFile) {
+    if (!line.isSet("start") && plantFromFile) {
+        // Nobody tuned a car described by a file: start from its demonstration.
+        sim::MethodCatalog::setParameter(profile, QStringLiteral("start=demo"));
+    }
     if (line.isSet("start")) {
         const QString start = line.value("start");
         if (start != QLatin1String("demo") && start != QLatin1String("tuned")) {

@@ -67,7 +67,10 @@ QStringList stylesOption(const CommandLine& line, const QString& plant);
 void addMethodParameterOptions(CommandLine& line);
 /// Applies --start, then every --param to the profile, in order; UsageError naming the parameter, the value
 /// and what is allowed.
-void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile);
+/// A plant from a file (`plantFromFile`) starts from the demonstration unless --start says
+/// otherwise.
+void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
+                           bool plantFromFile = false);
 
 /// Adds the run settings every simulated run shares (sim::RunSettings, with its defaults):
 /// --seed, --perturbation, --perturbation-model, --sensor, --pose-filter, --training-trials

@@ -119,6 +119,8 @@ class TestGuiSession : public QObject {
             QCOMPARE(session.plantParameters()->value("mass"), 2.3);
             QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("mycar.json"));
             QVERIFY(w.find<QAbstractButton>("clearPlantFile")->isEnabled());
+            // Nobody tuned this car: the controllers start from the demonstration.
+            QCOMPARE(session.profile().start, prisca::sim::MethodTuning::Start::Demonstration);
             // The scripted operator drove the heavier car: another demonstration.
             QVERIFY(session.demonstration() != demoBefore);
             QVERIFY(session.demonstration()->states.bottomRows(1) !=
@@ -148,8 +150,11 @@ class TestGuiSession : public QObject {
         QVERIFY(w.window.session().plantParameters());
         QCOMPARE(w.window.session().plantParameters()->value("maxDriveForce"), 7.0);
         QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("mycar.json"));
+        QCOMPARE(w.window.session().profile().start,
+                 prisca::sim::MethodTuning::Start::Demonstration);
         w.find<QAbstractButton>("clearPlantFile")->click();
         QVERIFY(!w.window.session().plantParameters());
+        QCOMPARE(w.window.session().profile().start, prisca::sim::MethodTuning::Start::Tuned);
         QCOMPARE(w.find<QLabel>("plantFileInfo")->text(), QStringLiteral("the catalog's"));
     }
 

@@ -110,7 +110,7 @@ class TestPlantParameters : public QObject {
         }
         for (const char* key :
              {"mass", "yawInertia", "wheelbase", "cgForward", "cgHeight", "width",
-              "staticFriction", "kineticFriction", "rearStaticFriction", "rearKineticFriction",
+              "staticFriction", "kineticFriction", "rearStaticGrip", "rearKineticGrip",
               "maxDriveForce", "topSpeed", "maxSteeringAngle", "servoDelay", "servoRate",
               "rollingResistance", "drivelineDrag"}) {
             QVERIFY2(keys.contains(QLatin1String(key)), key);
