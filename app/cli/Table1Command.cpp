@@ -16,6 +16,7 @@
 
 #include <QDir>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -118,6 +119,65 @@ QByteArray learningCurveCsv(const std::vector<sim::TrialCurve>& curves) {
     return csv;
 }
 
+// The trials by their place in the day as a figure: per method the mean position and
+// orientation error over the cells with its 95% band, the training trials left of the dashed
+// line and the evaluation trials right of it.
+plot::Figure learningCurvePlot(const std::vector<sim::TrialCurve>& curves) {
+    plot::Figure figure;
+    figure.title = QStringLiteral(
+        "Each trial of the day, mean over the cells (95% band): training trials, then evaluation");
+    figure.columns = 2;
+    int training = 0;
+    for (const sim::TrialCurve& curve : curves) {
+        training = std::max(training, curve.trainingTrials);
+    }
+    for (int panel = 0; panel < 2; ++panel) {
+        plot::Axes axes;
+        axes.title = panel == 0 ? QStringLiteral("Final position error")
+                                : QStringLiteral("Final orientation error");
+        axes.xLabel = QStringLiteral("trial of the day");
+        axes.yLabel = panel == 0 ? QStringLiteral("error [cm]") : QStringLiteral("error [deg]");
+        double top = 0.0;
+        for (size_t m = 0; m < curves.size(); ++m) {
+            const sim::TrialCurve& curve = curves[m];
+            const auto& values = panel == 0 ? curve.position : curve.orientation;
+            const QString label = sim::MethodCatalog::get(curve.method).label;
+            plot::Line line;
+            line.label = label;
+            line.color = plot::paletteColor(static_cast<int>(m));
+            line.markers = true;
+            plot::Band band;
+            band.label = label;
+            // A method that does not learn has evaluation trials only: placed after the
+            // training trials, where the learners' evaluation trials are.
+            const int offset = training - curve.trainingTrials;
+            for (size_t i = 0; i < values.size(); ++i) {
+                const core::MeanInterval mi = core::meanInterval(values[i]);
+                if (mi.count == 0) {
+                    continue;
+                }
+                const double x = static_cast<double>(offset + static_cast<int>(i) + 1);
+                line.points.emplace_back(x, mi.mean);
+                band.x.push_back(x);
+                band.lower.push_back(mi.lower);
+                band.upper.push_back(mi.upper);
+                top = std::max(top, mi.upper);
+            }
+            axes.bands.push_back(band);
+            axes.lines.push_back(line);
+        }
+        if (training > 0) {
+            plot::Line boundary;
+            boundary.points = {QPointF(training + 0.5, 0.0), QPointF(training + 0.5, top)};
+            boundary.color = Qt::darkGray;
+            boundary.style = Qt::DashLine;
+            axes.lines.push_back(boundary);
+        }
+        figure.panels.push_back(axes);
+    }
+    return figure;
+}
+
 // table1 --styles: every method on every (style, seed set) cell.
 int table1ProtocolCommand(const CommandLine& line) {
     if (line.isSet("demo") || line.isSet("demo-seed")) {
@@ -192,6 +252,10 @@ int table1ProtocolCommand(const CommandLine& line) {
         writeOutput(line.value("learning-out"), learningCurveCsv(result.curves),
                     !result.cancelled);
     }
+    if (line.isSet("learning-plot")) {
+        saveFigureOutput(learningCurvePlot(result.curves), line.value("learning-plot"),
+                         !result.cancelled);
+    }
     const QString written =
         writeTable(line, core::formatProtocol(result.summary, *format, caption), !result.cancelled);
     if (result.cancelled) {
@@ -230,6 +294,10 @@ int table1Command(const QStringList& arguments) {
                   "With --styles: write each method's trials by their place in the day (training "
                   "trials first, then evaluation) as CSV: mean and 95% interval over the cells.",
                   "file");
+    line.addValue("learning-plot",
+                  "With --styles: draw the same (the trials by their place in the day, per "
+                  "method) to this .png or .svg file.",
+                  "file");
     line.addValue("trials", "Evaluation trials per method.", "N", "20");
     addRunSettingsOptions(line,
                           "Training trials: PD (selected) selects its gains on them, the learners "
@@ -252,7 +320,7 @@ int table1Command(const QStringList& arguments) {
     if (line.isSet("styles")) {
         return table1ProtocolCommand(line);
     }
-    for (const char* option : {"seed-sets", "variants", "learning-out"}) {
+    for (const char* option : {"seed-sets", "variants", "learning-out", "learning-plot"}) {
         if (line.isSet(QLatin1String(option))) {
             throw UsageError(QStringLiteral("--%1 goes with --styles").arg(QLatin1String(option)));
         }

@@ -1,5 +1,6 @@
 // prisca-cli simulate, demo, fit and run end to end on real files, and every bad-input path:
 // one line on stderr naming the problem, exit code 2, nothing written.
+#include <QDir>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QJsonArray>
@@ -237,6 +238,51 @@ class TestCliCommands : public QObject {
         const CliResult model = cli({"table1", "--perturbation-model", "daily", "--trials", "1"});
         QCOMPARE(model.exitCode, 2);
         QVERIFY2(model.err.contains("'daily' is not one of session, trial"), qPrintable(model.err));
+    }
+
+    // The new-car protocol: every plant file of a folder on every style and seed set, the
+    // breakdown per variant, each method's trials by their place in the day as CSV and figure.
+    void table1_variantsGiveAPerVariantBreakdownAndLearningCurves() {
+        QDir(dir_.path()).mkpath("variants");
+        for (const auto& [name, json] :
+             std::vector<std::pair<QString, QByteArray>>{
+                 {"heavy", R"({"plant": "slidecar", "parameters": {"mass": 2.2}})"},
+                 {"grip", R"({"plant": "slidecar", "parameters": {"staticFriction": 0.55,
+                             "kineticFriction": 0.4}})"}}) {
+            QFile f(path("variants/" + name + ".json"));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(json);
+        }
+        const CliResult r = cli({"table1", "--styles", "stick-90-left", "--trials", "2",
+                                 "--training-trials", "3", "--variants", "variants", "--methods",
+                                 "prisca,pd", "--learning-out", "learning.csv", "--learning-plot",
+                                 "learning.png", "--format", "md"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("| method | grip | heavy |"), qPrintable(r.out));
+        QVERIFY(r.out.contains("2 plant variants from variants"));
+        QVERIFY(r.out.contains("session perturbation model"));
+        QFile csv(path("learning.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+        // PRISCA: 3 training + 2 evaluation trials; PD: 2 evaluation trials; and the header.
+        QCOMPARE(lines.size(), 1 + 5 + 2);
+        QVERIFY2(lines[1].startsWith("prisca,1,training,2,"), qPrintable(lines[1]));
+        QVERIFY2(lines[4].startsWith("prisca,4,evaluation,2,"), qPrintable(lines[4]));
+        QVERIFY2(lines[6].startsWith("pd,1,evaluation,2,"), qPrintable(lines[6]));
+        QVERIFY(!QImage(path("learning.png")).isNull());
+        // Refused: a folder with no plant file, a bad one, both --plant-params and --variants.
+        QDir(dir_.path()).mkpath("empty");
+        CliResult bad = cli({"table1", "--styles", "stick-90-left", "--variants", "empty"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("no plant file"), qPrintable(bad.err));
+        QFile f(path("variants/zz-bad.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"plant": "slidecar", "parameters": {"topSpeed": -1}})");
+        f.close();
+        bad = cli({"table1", "--styles", "stick-90-left", "--variants", "variants"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("zz-bad.json: topSpeed = -1 m/s is outside"), qPrintable(bad.err));
+        QCOMPARE(cli({"table1", "--variants", "variants"}).exitCode, 2);  // needs --styles
     }
 
     void table1_stylesAndSeedSetsGiveMeansIntervalsAndABreakdown() {
