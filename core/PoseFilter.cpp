@@ -174,28 +174,39 @@ Eigen::MatrixXd inputGainFromFit(const Eigen::MatrixXd& b, const BodyVelocityInd
     return g;
 }
 
-Eigen::Vector3d accelerationDensityFromStates(const Eigen::MatrixXd& states,
-                                              const BodyVelocityIndices& velocity, double dt,
-                                              double floor) {
-    if (states.rows() < 3) {
-        throw std::invalid_argument("accelerationDensityFromStates: " +
-                                    std::to_string(states.rows()) + " samples (3 or more needed)");
+namespace {
+
+// The random-walk density of each body velocity's `order`-th difference per step (1: the
+// velocity's change, an acceleration density; 2: the change of that change per step, a jerk
+// density): the nearest-rank 99th percentile of the differences' size over the demonstration,
+// squared, per dt, and at least `floor`. `name` names the caller in messages.
+Eigen::Vector3d differenceDensity(const Eigen::MatrixXd& states,
+                                  const BodyVelocityIndices& velocity, double dt, double floor,
+                                  int order, const char* name) {
+    if (states.rows() < order + 2) {
+        throw std::invalid_argument(std::string(name) + ": " + std::to_string(states.rows()) +
+                                    " samples (" + std::to_string(order + 2) +
+                                    " or more needed)");
     }
     if (!(dt > 0.0)) {
-        throw std::invalid_argument("accelerationDensityFromStates: dt = " + std::to_string(dt) +
+        throw std::invalid_argument(std::string(name) + ": dt = " + std::to_string(dt) +
                                     " (> 0 needed)");
     }
     const int columns[3] = {velocity.forward, velocity.lateral, velocity.yawRate};
     Eigen::Vector3d density;
-    std::vector<double> changes(static_cast<std::size_t>(states.rows() - 1));
+    std::vector<double> changes(static_cast<std::size_t>(states.rows() - order));
     for (int i = 0; i < 3; ++i) {
         if (columns[i] < 0 || columns[i] >= states.cols()) {
-            throw std::invalid_argument("accelerationDensityFromStates: velocity index " +
+            throw std::invalid_argument(std::string(name) + ": velocity index " +
                                         std::to_string(columns[i]) + " is outside the state");
         }
-        for (Eigen::Index k = 0; k + 1 < states.rows(); ++k) {
+        const int c = columns[i];
+        for (Eigen::Index k = 0; k + order < states.rows(); ++k) {
             changes[static_cast<std::size_t>(k)] =
-                std::abs(states(k + 1, columns[i]) - states(k, columns[i]));
+                order == 1 ? std::abs(states(k + 1, c) - states(k, c))
+                           // the change of a per-step change, per step
+                           : std::abs(states(k + 2, c) - 2.0 * states(k + 1, c) + states(k, c)) /
+                                 dt;
         }
         // Nearest-rank 99th percentile.
         const std::size_t rank = static_cast<std::size_t>(
@@ -208,38 +219,18 @@ Eigen::Vector3d accelerationDensityFromStates(const Eigen::MatrixXd& states,
     return density;
 }
 
+}  // namespace
+
+Eigen::Vector3d accelerationDensityFromStates(const Eigen::MatrixXd& states,
+                                              const BodyVelocityIndices& velocity, double dt,
+                                              double floor) {
+    return differenceDensity(states, velocity, dt, floor, 1, "accelerationDensityFromStates");
+}
+
 Eigen::Vector3d jerkDensityFromStates(const Eigen::MatrixXd& states,
                                       const BodyVelocityIndices& velocity, double dt,
                                       double floor) {
-    if (states.rows() < 4) {
-        throw std::invalid_argument("jerkDensityFromStates: " + std::to_string(states.rows()) +
-                                    " samples (4 or more needed)");
-    }
-    if (!(dt > 0.0)) {
-        throw std::invalid_argument("jerkDensityFromStates: dt = " + std::to_string(dt) +
-                                    " (> 0 needed)");
-    }
-    const int columns[3] = {velocity.forward, velocity.lateral, velocity.yawRate};
-    Eigen::Vector3d density;
-    std::vector<double> changes(static_cast<std::size_t>(states.rows() - 2));
-    for (int i = 0; i < 3; ++i) {
-        if (columns[i] < 0 || columns[i] >= states.cols()) {
-            throw std::invalid_argument("jerkDensityFromStates: velocity index " +
-                                        std::to_string(columns[i]) + " is outside the state");
-        }
-        for (Eigen::Index k = 0; k + 2 < states.rows(); ++k) {
-            const double second = states(k + 2, columns[i]) - 2.0 * states(k + 1, columns[i]) +
-                                  states(k, columns[i]);
-            changes[static_cast<std::size_t>(k)] = std::abs(second) / dt;  // change of a per step
-        }
-        const std::size_t rank = static_cast<std::size_t>(
-            std::ceil(0.99 * static_cast<double>(changes.size()))) - 1;
-        std::nth_element(changes.begin(), changes.begin() + static_cast<long>(rank),
-                         changes.end());
-        const double change = changes[rank];
-        density[i] = std::max(change * change / dt, floor);
-    }
-    return density;
+    return differenceDensity(states, velocity, dt, floor, 2, "jerkDensityFromStates");
 }
 
 PoseFilter::PoseFilter(PoseFilterParameters parameters, int actionDimension)
