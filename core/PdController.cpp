@@ -34,7 +34,7 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
     record_.referenceAction =
         demo.actions.row(std::min(j + std::min(latency_, step_), demo.length() - 1)).transpose();
     record_.action = record_.referenceAction;
-    feedback_.apply(record_.action);
+    feedback_.apply(record_.action, j);
     problem_.limits.saturate(record_.action);
     record_.cost = problem_.cost(record_.deviation);
     ++step_;

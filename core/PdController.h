@@ -31,6 +31,9 @@ class PdController : public Controller {
     }
 
     const PdParameters& parameters() const { return feedback_.parameters(); }
+    /// Per demonstration sample, the share of the feedback acting at that reference
+    /// (PdFeedback::setReferenceGate).
+    void setFeedbackGate(std::vector<double> gate) { feedback_.setReferenceGate(std::move(gate)); }
 
   private:
     TrackingProblem problem_;

@@ -51,9 +51,13 @@ void PdFeedback::update(const Eigen::Ref<const Eigen::VectorXd>& error) {
     ++step_;
 }
 
-void PdFeedback::apply(Eigen::Ref<Eigen::VectorXd> action) const {
-    action -= parameters_.kp.cwiseProduct(signal_);
-    action -= parameters_.kd.cwiseProduct(rate_);
+void PdFeedback::apply(Eigen::Ref<Eigen::VectorXd> action, int referenceIndex) const {
+    const double g =
+        referenceIndex >= 0 && referenceIndex < static_cast<int>(gate_.size())
+            ? gate_[static_cast<std::size_t>(referenceIndex)]
+            : 1.0;
+    action -= g * parameters_.kp.cwiseProduct(signal_);
+    action -= g * parameters_.kd.cwiseProduct(rate_);
 }
 
 }  // namespace prisca::core

@@ -33,8 +33,12 @@ class PdFeedback {
     void reset();
     /// Takes the step's tracking error e_k (n).
     void update(const Eigen::Ref<const Eigen::VectorXd>& error);
-    /// action -= Kp eps, then action -= Kd d(eps)/dt (in that order).
-    void apply(Eigen::Ref<Eigen::VectorXd> action) const;
+    /// action -= g (Kp eps), then action -= g (Kd d(eps)/dt) (in that order), g the gate of
+    /// the reference sample (1 without a gate or a reference).
+    void apply(Eigen::Ref<Eigen::VectorXd> action, int referenceIndex = -1) const;
+    /// Per demonstration sample, the share of the feedback that acts while that sample is the
+    /// reference (0 to 1); empty: all of it everywhere.
+    void setReferenceGate(std::vector<double> gate) { gate_ = std::move(gate); }
 
     /// eps of the last update, after smoothing (m).
     const Eigen::VectorXd& signal() const { return signal_; }
@@ -49,6 +53,7 @@ class PdFeedback {
     Eigen::VectorXd previous_;
     Eigen::VectorXd rate_;
     int step_ = 0;
+    std::vector<double> gate_;
 };
 
 }  // namespace prisca::core

@@ -349,7 +349,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     if (parameters_.prior.kp.size() != 0) {
         prior_.update(e);  // the PD law the policy starts from, as PdController forms it
-        prior_.apply(record_.action);
+        prior_.apply(record_.action, j);
     }
     problem_.limits.saturate(record_.action);
     record_.step = k;

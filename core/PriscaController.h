@@ -109,6 +109,9 @@ class PriscaController : public Controller {
     /// the model explains, and its sensitivities start afresh after one it does not (a car
     /// sliding on saturated tyres answers its controls otherwise). Empty: everywhere.
     void setModelValidity(std::vector<bool> valid);
+    /// Per demonstration sample, the share of the prior's feedback acting at that reference
+    /// (PdFeedback::setReferenceGate).
+    void setPriorGate(std::vector<double> gate) { prior_.setReferenceGate(std::move(gate)); }
     /// The identified drift A (n x n, eq. 5) the closed-loop gradient propagates through; zero
     /// (no drift, the state moves only as the actions push it) unless set.
     void setDrift(const Eigen::MatrixXd& a);

@@ -21,6 +21,16 @@ namespace {
 using Mode = core::MatchingParameters::Mode;
 using Made = std::unique_ptr<core::Controller>;
 
+// Per demonstration sample: 1 where the robust fit explains it, else 0 (the feedback gate of
+// MethodTuning::feedbackWhereExplained).
+std::vector<double> explainedGate(const MethodTuning& profile,
+                                  const core::Demonstration& demonstration) {
+    const std::vector<bool> explained =
+        core::fitActionMapping(demonstration, profile.mapping, profile.info.deviationModel())
+            .explained;
+    return std::vector<double>(explained.begin(), explained.end());
+}
+
 Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     const QString& method = spec.id;
     const MethodTuning& profile = in.profile;
@@ -65,6 +75,9 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
         model, parameters);
     if (drift) {
         prisca->setDrift(*drift);
+    }
+    if (profile.feedbackWhereExplained() && profile.priscaFromPd) {
+        prisca->setPriorGate(explainedGate(profile, *demonstration));
     }
     if (profile.priscaLearnWhereExplained) {
         prisca->setModelValidity(
@@ -170,10 +183,14 @@ Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
     // its lag counted in the loop's delay.
     const int horizon = !smoothed ? 0 : demoStart ? in.profile.prisca.horizon : in.profile.pdHorizon;
     core::PdParameters gains = in.profile.startLaw(*in.demonstration, in.fittedB, horizon);
-    return std::make_unique<core::PdController>(
+    auto pd = std::make_unique<core::PdController>(
         in.profile.trackingProblem(in.demonstration,
                                    lsd ? Mode::LeastStateDeviation : Mode::TimeDriven),
         gains, spec.id);
+    if (in.profile.feedbackWhereExplained()) {
+        pd->setFeedbackGate(explainedGate(in.profile, *in.demonstration));
+    }
+    return pd;
 }
 
 
@@ -436,6 +453,32 @@ const MethodParameter& priscaExplainedOnly() {
         };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.priscaLearnWhereExplained = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& feedbackExplainedOnly() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "feedback.explained-only", QT_TRANSLATE_NOOP("MethodParameter", "Feedback where explained"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The feedback law (the PD family's, PRISCA's prior) acts only while "
+                              "the reference is a sample the robust fit explains: not in a slide, "
+                              "where the linear model the gains stand on does not hold. auto: with "
+                              "the demonstration start, not with the tuned one."));
+        p.kind = Kind::Choice;
+        p.choices = {"auto", "on", "off"};
+        p.get = [](const MethodTuning& f) {
+            return one(f.feedbackGate == MethodTuning::FeedbackGate::On    ? 1
+                       : f.feedbackGate == MethodTuning::FeedbackGate::Off ? 2
+                                                                           : 0);
+        };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.feedbackGate = v[0] == 1.0   ? MethodTuning::FeedbackGate::On
+                             : v[0] == 2.0 ? MethodTuning::FeedbackGate::Off
+                                           : MethodTuning::FeedbackGate::Auto;
         };
         return p;
     }();
@@ -825,7 +868,7 @@ std::vector<MethodSpec> makeCatalog() {
     s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
                     priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
                     priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
-                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), start(),
+                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), start(), feedbackExplainedOnly(),
                     pdKp(),          pdKd(),          pdHorizon()};
     all.push_back(s);
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);
@@ -837,7 +880,7 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd", "PD", &makePdFamily);
     s.summary = "proportional-derivative feedback around the demonstration, time-driven";
-    s.parameters = {start(), pdKp(), pdKd()};
+    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd()};
     all.push_back(s);
     s = entry("pd-selected", "PD (SELECTED)", &makePdFamily);
     s.training = MethodSpec::Training::SelectPdGains;
@@ -847,15 +890,15 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd-h", "PD+H", &makePdFamily);
     s.summary = "PD on the error smoothed over H steps";
-    s.parameters = {start(), pdKp(), pdKd(), pdHorizon()};
+    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), pdHorizon()};
     all.push_back(s);
     s = entry("pd-lsd", "PD+LSD", &makePdFamily);
     s.summary = "PD with the least-state-deviation reference";
-    s.parameters = {start(), pdKp(), pdKd(), matchingWindow()};
+    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), matchingWindow()};
     all.push_back(s);
     s = entry("pd-h-lsd", "PD+H+LSD", &makePdFamily);
     s.summary = "PD with both";
-    s.parameters = {start(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
+    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
     all.push_back(s);
     s = entry("lqr", "LQR", &makeLqr);
     s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5)";

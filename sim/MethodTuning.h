@@ -82,6 +82,16 @@ struct MethodTuning {
     static constexpr double automaticWindowSeconds = 1.0;
     /// The closed-loop gradient learns only where a robust fit explains the demonstration.
     bool priscaLearnWhereExplained = false;
+    /// Whether the PD family's feedback and PRISCA's prior act only while the reference is a
+    /// sample the robust fit explains (not in a slide, where the linear model the gains stand
+    /// on does not hold). Auto: with the demonstration start (whose gains come from that linear
+    /// model), not with the tuned one (whose gains were tuned through the slides).
+    enum class FeedbackGate { Auto, On, Off };
+    FeedbackGate feedbackGate = FeedbackGate::Auto;
+    bool feedbackWhereExplained() const {
+        return feedbackGate == FeedbackGate::On ||
+               (feedbackGate == FeedbackGate::Auto && start == Start::Demonstration);
+    }
     /// Where the feedback law PRISCA (its prior) and the PD family start from: the profile's
     /// tuned gains (pd, pdHorizon), or a law derived from the demonstration, the fit and the
     /// actuator limits alone (core::deriveStartLaw), for a robot no one tuned on. With the

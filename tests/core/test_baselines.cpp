@@ -131,6 +131,31 @@ class TestBaselines : public QObject {
         }
     }
 
+    // A feedback gate per reference sample: the feedback acts in full where the gate is 1, not
+    // at all where it is 0 (the demonstration's action alone), in proportion in between.
+    void pd_feedbackGateScalesTheFeedbackByTheReferenceSample() {
+        auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(2, 2), 50, 0.1);
+        PdParameters gains;
+        gains.errorCombination = Eigen::MatrixXd::Identity(2, 2);
+        gains.kp = Eigen::Vector2d(2.0, 3.0);
+        gains.kd = Eigen::Vector2d::Zero();
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven), gains, "pd");
+        std::vector<double> gate(50, 1.0);
+        for (int k = 10; k < 20; ++k) {
+            gate[static_cast<size_t>(k)] = 0.0;
+        }
+        gate[20] = 0.5;
+        pd.setFeedbackGate(gate);
+        for (int k = 0; k < 25; ++k) {
+            const Eigen::Vector2d e(0.1, -0.05);
+            const ControlStep& out = pd.step(demo->states.row(k).transpose() + e);
+            const double g = gate[static_cast<size_t>(k)];
+            QVERIFY2(std::abs(out.action[0] - (demo->actions(k, 0) - g * 2.0 * 0.1)) <= 1e-12,
+                     qPrintable(QString::number(k)));
+            QVERIFY(std::abs(out.action[1] - (demo->actions(k, 1) + g * 3.0 * 0.05)) <= 1e-12);
+        }
+    }
+
     void pdH_smoothsTheErrorWithTheNestedWeights() {
         auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(1, 1), 40, 0.1);
         PdParameters gains;
