@@ -130,12 +130,13 @@ int curveCommand(const QStringList& arguments) {
         }
         const QString plantName = checkedPlant(line.value("plant"));
         const auto parameters = plantParametersOption(line, plantName);
+        // Recorded on the plant's car, as the window records its own (the protocol, --styles,
+        // records each cell on its day's car).
+        sim::RecordingConditions conditions;
+        conditions.parameters = parameters.get();
         Task task = loadOrDemonstrate(
             plantName, line.value("demo"),
-            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
-            sim::demonstrationConditions(
-                settings.run, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName)),
-                parameters.get(), seed));
+            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
         task.plantParameters = parameters;
         applyMethodParameters(line, task.profile, parameters != nullptr);
         plant = task.plant;

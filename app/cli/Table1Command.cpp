@@ -329,21 +329,13 @@ int table1Command(const QStringList& arguments) {
     readRunSettings(line, settings.run);
     const QString plantName = checkedPlant(line.value("plant"));
     const auto parameters = plantParametersOption(line, plantName);
-    Task task = line.isSet("demo") ? loadTask(plantName, line.value("demo"), QString()) : Task{};
-    if (!line.isSet("demo")) {
-        // The scripted demonstration goes through the same checks as a file would, recorded on
-        // the run's car and (session model) its day's mismatch.
-        const auto seed = static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62));
-        task = scriptedTaskFor(
-            plantName,
-            sim::DemonstrationStyles::record(
-                plantName, sim::DemonstrationStyles::classic(plantName), seed, {},
-                sim::demonstrationConditions(
-                    settings.run,
-                    sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName)),
-                    parameters.get(), settings.run.seed)),
-            QStringLiteral("%1 scripted demonstration seed %2").arg(plantName).arg(seed));
-    }
+    // The scripted demonstration (checked as a file would be) is recorded on the plant's car, as
+    // the window records its own; the protocol (--styles) records each cell on its day's car.
+    sim::RecordingConditions conditions;
+    conditions.parameters = parameters.get();
+    Task task = loadOrDemonstrate(
+        plantName, line.value("demo"),
+        static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
     task.plantParameters = parameters;
     if (!task.profile.info.pose) {
         throw UsageError(

@@ -53,6 +53,15 @@ CameraFrame frameAt(const std::optional<PlanarPose>& pose, std::int64_t ns) {
     return frame;
 }
 
+// A link on `port` that sends each command as it comes; one command holds for the whole test.
+LinkSettings heldCommandLink(const QString& port) {
+    LinkSettings settings;
+    settings.port = port;
+    settings.sendOnCommand = true;
+    settings.staleAfter = 30.0;
+    return settings;
+}
+
 }  // namespace
 
 class TestRigLoop : public QObject {
@@ -94,11 +103,7 @@ class TestRigLoop : public QObject {
         Pty pty;
         QVERIFY(!pty.path.isEmpty());
         TransmitterLink link;
-        LinkSettings settings;
-        settings.port = pty.path;
-        settings.sendOnCommand = true;
-        settings.staleAfter = 30.0;  // one command holds for the whole test
-        link.start(settings);
+        link.start(heldCommandLink(pty.path));
         LinkStatus status;
         connect(&link, &TransmitterLink::statusChanged,
                 [&status](const LinkStatus& s) { status = s; });
@@ -170,11 +175,7 @@ class TestRigLoop : public QObject {
         Pty pty;
         QVERIFY(!pty.path.isEmpty());
         TransmitterLink link;
-        LinkSettings settings;
-        settings.port = pty.path;
-        settings.sendOnCommand = true;
-        settings.staleAfter = 30.0;
-        link.start(settings);
+        link.start(heldCommandLink(pty.path));
 
         auto ownedPlain = std::make_unique<Recorder>();
         auto ownedFiltered = std::make_unique<Recorder>();
