@@ -410,6 +410,7 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                             if (recorder_) {
                                 QString ignored;  // retried at the next flush; told at the end
                                 recorder_->stream.append(t, state, action, &ignored);
+                                writtenSeconds_.store(t);
                             }
                         });
                     }
@@ -452,7 +453,11 @@ bool RigSession::startRecording(const sim::PlantInfo& plant, const QString& path
     if (!recorder->stream.open(path, header, plant.angleIndices, &openError)) {
         return fail(tr("Cannot record to %1").arg(openError));
     }
-    onWorker([this, r = recorder.release()] { recorder_.reset(r); });
+    writtenSeconds_.store(-1.0);
+    onWorker([this, r = recorder.release()] {
+        recorder_.reset(r);
+        writtenSeconds_.store(-1.0);  // after any sample of an earlier take still queued
+    });
     {
         std::lock_guard<std::mutex> lock(mutex_);
         Loop& l = *loop_;
@@ -486,7 +491,7 @@ bool RigSession::recording() const {
 
 double RigSession::recordedSeconds() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return loop_->recording ? loop_->lastTime : -1.0;
+    return loop_->recording ? writtenSeconds_.load() : -1.0;
 }
 
 void RigSession::stopRecording() {

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -154,7 +155,8 @@ class RigSession : public QObject {
     void stopRecording();
     bool recording() const;
     /// How long the take being recorded is so far [s, the frames' clock, from its first frame
-    /// with a pose]: its newest sample, handed to the writer; -1 before the first.
+    /// with a pose]: the newest sample the writer has taken (on its way to disk within a
+    /// quarter second); -1 before the first.
     double recordedSeconds() const;
 
     /// E-STOP: failsafe on the link (latched until reset), the trial and recording end.
@@ -188,6 +190,7 @@ class RigSession : public QObject {
     QThread workerThread_;
     QObject* worker_;  ///< lives on workerThread_: the recorder's disk writes and the scoring
     std::unique_ptr<Recorder> recorder_;  ///< touched on the worker thread only
+    std::atomic<double> writtenSeconds_{-1.0};  ///< the recorder's newest sample [s]
 
     /// Shared by the camera thread and commands; held only for in-memory work, never disk I/O.
     mutable std::mutex mutex_;
