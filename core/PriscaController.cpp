@@ -76,6 +76,14 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
         windowWeights_.push_back(nestedExpectationWeights(c));
     }
     theta_.setZero(p, m);
+    feedbackMask_.setZero(p, m);
+    for (int l = 0; l < m; ++l) {
+        for (int i = 0; i < p; ++i) {
+            const bool phase = featureMap_.terms()[l][i].source == FeatureTerm::Source::Phase;
+            feedbackMask_(i, l) = phase ? 0.0 : 1.0;
+            hasPhases_ = hasPhases_ || phase;
+        }
+    }
     previousTheta_.setZero(p, m);
     initialTheta_.setZero(p, m);
     phi_.setZero(p, m);
@@ -139,7 +147,7 @@ void PriscaController::closedLoopTerms(int k, int count) {
     for (int l = 0; l < m; ++l) {
         const auto& terms = featureMap_.terms()[l];
         for (int i = 0; i < p; ++i) {
-            if (terms[i].source != FeatureTerm::Source::Constant) {
+            if (terms[i].isFeedback()) {
                 feedbackGain_(l, terms[i].index) += theta_(i, l) * terms[i].scale;
             }
         }
@@ -186,10 +194,14 @@ void PriscaController::closedLoopTerms(int k, int count) {
             // u_l - u*_l = theta_l^T phi_l(e_t): its change with theta is phi_l in block l,
             // plus K S_t through the errors theta moved.
             actionSensitivity_.noalias() = feedbackGain_ * sensitivity_[t - first];
+            // The effort charged is the feedback's: a phase feature's correction of u* is the
+            // demonstration's action made right for this car, not effort.
             for (int l = 0; l < m; ++l) {
                 const auto phi = featureHistory_.col(slot).segment(l * p, p);
-                actionSensitivity_.row(l).segment(l * p, p) += phi.transpose();
-                effort_[l] = parameters_.effortWeights[l] * theta_.col(l).dot(phi);
+                const auto mask = feedbackMask_.col(l);
+                actionSensitivity_.row(l).segment(l * p, p) += phi.cwiseProduct(mask).transpose();
+                effort_[l] =
+                    parameters_.effortWeights[l] * theta_.col(l).cwiseProduct(mask).dot(phi);
             }
             sample_.noalias() += 2.0 * actionSensitivity_.transpose() * effort_;
         }
@@ -205,7 +217,18 @@ void PriscaController::closedLoopTerms(int k, int count) {
                           parameters_.effortWeights.array())
                              .sum();
         }
-        addCurvature(curvature);
+        double parameters = static_cast<double>(theta_.size());
+        if (hasPhases_) {
+            // Averaged over the parameters this step moves: the phase features idle here do
+            // not dilute the curvature of the ones at work (which would inflate their step).
+            Eigen::ArrayXXd moved = S.array().square().colwise().sum();
+            if (effort) {
+                moved += actionSensitivity_.array().square().colwise().sum();
+            }
+            const Eigen::Index active = (moved > 0.0).count();
+            parameters = active > 0 ? static_cast<double>(active) : parameters;
+        }
+        addCurvature(curvature, parameters);
     }
 }
 
@@ -221,9 +244,9 @@ void PriscaController::heldEffect(int j, int steps) {
     }
 }
 
-void PriscaController::addCurvature(double curvature) {
+void PriscaController::addCurvature(double curvature, double parameters) {
     if (std::isfinite(curvature)) {
-        curvatureSum_ += curvature / static_cast<double>(theta_.size());
+        curvatureSum_ += curvature / parameters;
         curvatureSteps_ += 1.0;
     }
 }
@@ -259,7 +282,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     const int j = matcher_.match(observation);
     problem_.deviation.deviation(observation, referenceStates_.col(j), record_.deviation);
     const Eigen::VectorXd& e = record_.deviation;
-    featureMap_.evaluate(e, observation, phi_);
+    featureMap_.evaluate(e, observation, phi_, j);
 
     // 2. a_k: column l is phi_l scaled by how much control l moves the weighted error (the
     // paper's one step), or every a_t of the window through the closed loop.
@@ -296,7 +319,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
                     phi_.col(l).squaredNorm() *
                     (effectSum_.col(l).array().square() * problem_.costWeights.array()).sum();
             }
-            addCurvature(curvature);
+            addCurvature(curvature, static_cast<double>(theta_.size()));
         }
     }
 

@@ -133,7 +133,8 @@ class PriscaController : public Controller {
 
   private:
     void closedLoopTerms(int k, int count);
-    void addCurvature(double curvature);
+    /// Adds a step's curvature, averaged over `parameters` of theta.
+    void addCurvature(double curvature, double parameters);
     /// What holding each control for `steps` steps from reference sample j does to the error.
     void heldEffect(int j, int steps);
     /// stepTransition_ = I + dt (A + the error's own kinematics at demonstration sample j).
@@ -169,6 +170,8 @@ class PriscaController : public Controller {
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
+    Eigen::MatrixXd feedbackMask_;  // p x m: 1 where a term is charged as effort (not a phase)
+    bool hasPhases_ = false;         // any Phase term in the feature map
     Eigen::MatrixXd initialTheta_;  // what a cold reset returns to
     Eigen::MatrixXd previousTheta_;  // before the last update (restored if it overflowed)
     Eigen::MatrixXd phi_;

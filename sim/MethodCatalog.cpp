@@ -62,17 +62,22 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     }
     if (automatic) {
         parameters.stepSize.normalised = true;
-        parameters.stepSize.scale = MethodTuning::automaticStep;
+        parameters.stepSize.scale = profile.priscaAutomaticStep;
     }
     core::TrackingProblem problem = profile.priscaProblem(demonstration);
     if (automatic) {
         problem.matching.window = MethodTuning::automaticWindow(*demonstration);
     }
-    auto prisca = std::make_unique<core::PriscaController>(
-        std::move(problem),
-        automatic ? profile.automaticFeatures(method, *demonstration)
-                                : profile.featuresOf(method),
-        model, parameters);
+    core::FeatureMap features = automatic ? profile.automaticFeatures(method, *demonstration)
+                                          : profile.featuresOf(method);
+    if (profile.priscaPhaseSeconds > 0.0) {
+        features = features.withPhases(
+            demonstration->length(),
+            std::max(1, static_cast<int>(std::lround(profile.priscaPhaseSeconds /
+                                                      demonstration->dt))));
+    }
+    auto prisca = std::make_unique<core::PriscaController>(std::move(problem), std::move(features),
+                                                           model, parameters);
     if (drift) {
         prisca->setDrift(*drift);
     }
@@ -286,6 +291,21 @@ const MethodParameter& priscaAutomatic() {
     return p;
 }
 
+const MethodParameter& priscaAutomaticStep() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.automatic-alpha0", QT_TRANSLATE_NOOP("MethodParameter", "Automatic α_0"), "",
+            0, 1, 5,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "α_0 of the automatic scales: the fraction of a Newton step on the "
+                              "cost's curvature taken per control step."));
+        p.get = [](const MethodTuning& f) { return one(f.priscaAutomaticStep); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.priscaAutomaticStep = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& priscaStepScale() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
@@ -436,6 +456,21 @@ const MethodParameter& priscaModelDelay() {
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.prisca.modelDelay = static_cast<int>(v[0]);
         };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& priscaPhase() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "prisca.phase", QT_TRANSLATE_NOOP("MethodParameter", "Phase features"), "s", 0, 60, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Length of the stretches of the demonstration over which PRISCA "
+                              "learns a correction of the demonstration's action (one feature "
+                              "per stretch and control); 0: none."));
+        p.get = [](const MethodTuning& f) { return one(f.priscaPhaseSeconds); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.priscaPhaseSeconds = v[0]; };
         return p;
     }();
     return p;
@@ -866,9 +901,9 @@ std::vector<MethodSpec> makeCatalog() {
     s.usesFeatures = true;
     s.summary = "the product's PRISCA: from the PD law, closed-loop gradient, automatic scales";
     s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
-                    priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
+                    priscaAutomaticStep(), priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
                     priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
-                    priscaModelDelay(), priscaExplainedOnly(), matchingWindow(), start(), feedbackExplainedOnly(),
+                    priscaModelDelay(), priscaExplainedOnly(), priscaPhase(), matchingWindow(), start(), feedbackExplainedOnly(),
                     pdKp(),          pdKd(),          pdHorizon()};
     all.push_back(s);
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);

@@ -78,10 +78,16 @@ struct MethodTuning {
     /// Newton step taken per control step (StepSize::normalised), from sweeps on development
     /// cells (docs/decisions.md, "What the profiles' numbers rest on").
     static constexpr double automaticStep = 0.0003;
+    double priscaAutomaticStep = automaticStep;  ///< the one in use (a method parameter)
     /// The automatic matching window: this much of the demonstration's time [s].
     static constexpr double automaticWindowSeconds = 1.0;
     /// The closed-loop gradient learns only where a robust fit explains the demonstration.
     bool priscaLearnWhereExplained = false;
+    /// PRISCA's phase features [s] (0: none): on every channel, one feature per stretch of the
+    /// demonstration this long, 1 while the reference is in it (core::FeatureTerm::Phase), so
+    /// theta also learns a correction of u* along the manoeuvre, what a lab day's persistent
+    /// mismatch (trim, throttle gain, grip) asks of it.
+    double priscaPhaseSeconds = 0.0;
     /// Whether the PD family's feedback and PRISCA's prior act only while the reference is a
     /// sample the robust fit explains (not in a slide, where the linear model the gains stand
     /// on does not hold). Auto: with the demonstration start (whose gains come from that linear

@@ -408,6 +408,58 @@ class TestPriscaController : public QObject {
                  qPrintable(QString::number(oneStep.back())));
     }
 
+    void phaseFeatures_learnAPersistentBiasAlongTheManoeuvre() {
+        // An integrator s_{k+1} = s_k + dt b (u_k + bias) whose actuator carries a bias the
+        // demonstration (at rest, u* = 0) did not have: a lab day's steering trim. PRISCA with a
+        // feedback gain and one phase feature per half of the demonstration learns a correction
+        // of u* that cancels the bias, with the effort charged on the feedback only.
+        const double b = 2.0, dt = 0.05, bias = 0.3;
+        const int T = 80;
+        auto demo = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, 1, 1, dt));
+        demo->states.setZero();
+        demo->actions.setZero();
+        const FeatureMap features = FeatureMap::deviationFeatures(1, {0}).withPhases(T, T / 2);
+        QCOMPARE(features.featureCount(), 3);
+        Eigen::MatrixXd phi(3, 1);
+        features.evaluate(Eigen::VectorXd::Constant(1, 0.5), Eigen::VectorXd::Zero(1), phi,
+                          T / 2 + 1);
+        QCOMPARE(phi(0, 0), 0.5);  // the feedback term
+        QCOMPARE(phi(1, 0), 0.0);  // the first half is not where the reference is
+        QCOMPARE(phi(2, 0), 1.0);
+        PriscaParameters parameters;
+        parameters.horizon = 10;
+        parameters.gamma = 0.95;
+        parameters.useBaseline = false;
+        parameters.stepSize.scale = 0.003;
+        parameters.stepSize.beta = 1e9;
+        parameters.stepSize.normalised = true;
+        parameters.gradient = PriscaParameters::Gradient::ClosedLoop;
+        parameters.effortWeights = Eigen::VectorXd::Constant(1, 1.0);
+        PriscaController prisca(problemFor(demo, MatchingParameters::Mode::TimeDriven, 1e12),
+                                features, Eigen::MatrixXd::Constant(1, 1, b), parameters);
+        std::vector<double> costs;
+        for (int trial = 0; trial < 60; ++trial) {
+            prisca.reset(trial == 0 ? ResetMode::Cold : ResetMode::WarmStart);
+            double s = 0.0, cost = 0.0;
+            for (int k = 0; k < T; ++k) {
+                const double u = prisca.step(Eigen::VectorXd::Constant(1, s)).action[0];
+                s += dt * b * (u + bias);
+                cost += s * s;
+            }
+            costs.push_back(cost);
+        }
+        const Eigen::MatrixXd& theta = prisca.theta();
+        for (int half = 1; half <= 2; ++half) {
+            QVERIFY2(std::abs(theta(half, 0) + bias) < 0.1 * bias,
+                     qPrintable(QStringLiteral("phase %1: %2").arg(half).arg(theta(half, 0))));
+        }
+        QVERIFY2(costs.back() < 0.05 * costs.front(),
+                 qPrintable(QStringLiteral("%1 -> %2").arg(costs.front()).arg(costs.back())));
+        // A phase needs a span: the feature map refuses one without.
+        FeatureMap broken({{{FeatureTerm::Source::Phase, 0, 1.0, 0}}});
+        QVERIFY(!broken.validate(1).isEmpty());
+    }
+
     void normalisedStep_isFreeOfTheActionsAndTheCostsUnits() {
         // The same delayed integrator and policy, once as is and once with the action measured
         // in units ten times smaller (u' = 10 u, so B' = B / 10, theta' = 10 theta) and the cost
