@@ -85,7 +85,7 @@ const ControlStep& IlcController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     const int seen = std::clamp(k - latency_, 0, demo.length() - 1);
     problem_.deviation.deviation(observation, demo.states.row(seen).transpose(),
                                  record_.deviation);
-    feedback_.update(record_.deviation);
+    feedback_.update(record_.deviation, seen);
     signals_.push_back(feedback_.signal());
 
     record_.step = k;

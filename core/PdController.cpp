@@ -27,7 +27,7 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
     const Demonstration& demo = *problem_.demonstration;
     const int j = matcher_.match(observation);
     record_.deviation = problem_.deviation.deviation(observation, demo.states.row(j).transpose());
-    feedback_.update(record_.deviation);
+    feedback_.update(record_.deviation, j);
 
     record_.step = step_;
     record_.referenceIndex = j;

@@ -34,6 +34,10 @@ class PdController : public Controller {
     /// Per demonstration sample, the share of the feedback acting at that reference
     /// (PdFeedback::setReferenceGate).
     void setFeedbackGate(std::vector<double> gate) { feedback_.setReferenceGate(std::move(gate)); }
+    /// Per demonstration sample, a factor on each error component (PdFeedback::setErrorSchedule).
+    void setErrorSchedule(Eigen::MatrixXd schedule) {
+        feedback_.setErrorSchedule(std::move(schedule));
+    }
 
   private:
     TrackingProblem problem_;

@@ -32,10 +32,16 @@ void PdFeedback::reset() {
     step_ = 0;
 }
 
-void PdFeedback::update(const Eigen::Ref<const Eigen::VectorXd>& error) {
+void PdFeedback::update(const Eigen::Ref<const Eigen::VectorXd>& error, int referenceIndex) {
     const int ring = static_cast<int>(raw_.cols());
     const int k = step_;
-    raw_.col(k % ring).noalias() = parameters_.errorCombination * error;
+    if (referenceIndex >= 0 && referenceIndex < schedule_.cols() &&
+        schedule_.rows() == error.size()) {
+        scheduled_ = error.cwiseProduct(schedule_.col(referenceIndex));
+        raw_.col(k % ring).noalias() = parameters_.errorCombination * scheduled_;
+    } else {
+        raw_.col(k % ring).noalias() = parameters_.errorCombination * error;
+    }
     const int samples = std::min(k, ring - 1) + 1;
     const Eigen::VectorXd& w = weights_[samples - 1];
     signal_.setZero();

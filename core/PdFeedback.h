@@ -31,14 +31,19 @@ class PdFeedback {
 
     /// Back to no history (the next update() is a first step).
     void reset();
-    /// Takes the step's tracking error e_k (n).
-    void update(const Eigen::Ref<const Eigen::VectorXd>& error);
+    /// Takes the step's tracking error e_k (n) and the reference's demonstration sample (-1:
+    /// none; with an error schedule, its column for that sample scales e_k first).
+    void update(const Eigen::Ref<const Eigen::VectorXd>& error, int referenceIndex = -1);
     /// action -= g (Kp eps), then action -= g (Kd d(eps)/dt) (in that order), g the gate of
     /// the reference sample (1 without a gate or a reference).
     void apply(Eigen::Ref<Eigen::VectorXd> action, int referenceIndex = -1) const;
     /// Per demonstration sample, the share of the feedback that acts while that sample is the
     /// reference (0 to 1); empty: all of it everywhere.
     void setReferenceGate(std::vector<double> gate) { gate_ = std::move(gate); }
+    /// Per demonstration sample (n x T): a factor on each error component while that sample
+    /// is the reference, before the combination (e.g. -1 on a vehicle's heading and yaw rate
+    /// while the demonstration drives backwards); empty: none.
+    void setErrorSchedule(Eigen::MatrixXd schedule) { schedule_ = std::move(schedule); }
 
     /// eps of the last update, after smoothing (m).
     const Eigen::VectorXd& signal() const { return signal_; }
@@ -54,6 +59,8 @@ class PdFeedback {
     Eigen::VectorXd rate_;
     int step_ = 0;
     std::vector<double> gate_;
+    Eigen::MatrixXd schedule_;  // n x T, or empty
+    Eigen::VectorXd scheduled_;  // n scratch
 };
 
 }  // namespace prisca::core

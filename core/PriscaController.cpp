@@ -371,7 +371,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     if (parameters_.prior.kp.size() != 0) {
-        prior_.update(e);  // the PD law the policy starts from, as PdController forms it
+        prior_.update(e, j);  // the PD law the policy starts from, as PdController forms it
         prior_.apply(record_.action, j);
     }
     problem_.limits.saturate(record_.action);

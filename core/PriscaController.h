@@ -112,6 +112,11 @@ class PriscaController : public Controller {
     /// Per demonstration sample, the share of the prior's feedback acting at that reference
     /// (PdFeedback::setReferenceGate).
     void setPriorGate(std::vector<double> gate) { prior_.setReferenceGate(std::move(gate)); }
+    /// Per demonstration sample, a factor on each error component the prior sees
+    /// (PdFeedback::setErrorSchedule).
+    void setPriorErrorSchedule(Eigen::MatrixXd schedule) {
+        prior_.setErrorSchedule(std::move(schedule));
+    }
     /// The identified drift A (n x n, eq. 5) the closed-loop gradient propagates through; zero
     /// (no drift, the state moves only as the actions push it) unless set.
     void setDrift(const Eigen::MatrixXd& a);

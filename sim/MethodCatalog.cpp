@@ -31,6 +31,29 @@ std::vector<double> explainedGate(const MethodTuning& profile,
     return std::vector<double>(explained.begin(), explained.end());
 }
 
+// Per demonstration sample, -1 on a planar vehicle's heading and yaw-rate errors where the
+// demonstration drives backwards, else 1 (n x T); empty for other plants or when switched off.
+// The heading error turns into lateral error at the signed speed, and the steering turns the
+// heading at the signed speed: in reverse both change sign, so a law derived for forward travel
+// keeps its lateral term and must turn its heading terms round (docs/decisions.md).
+Eigen::MatrixXd reverseSchedule(const MethodTuning& profile,
+                                const core::Demonstration& demonstration) {
+    const auto& pose = profile.info.pose;
+    const auto& body = profile.info.bodyVelocity;
+    if (!profile.feedbackReverseAware || !pose || !body) {
+        return {};
+    }
+    Eigen::MatrixXd schedule =
+        Eigen::MatrixXd::Ones(demonstration.stateDimension(), demonstration.length());
+    for (int j = 0; j < demonstration.length(); ++j) {
+        if (demonstration.states(j, body->forward) < 0.0) {
+            schedule(pose->heading, j) = -1.0;
+            schedule(body->yawRate, j) = -1.0;
+        }
+    }
+    return schedule;
+}
+
 Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     const QString& method = spec.id;
     const MethodTuning& profile = in.profile;
@@ -83,6 +106,9 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     }
     if (profile.feedbackWhereExplained() && profile.priscaFromPd) {
         prisca->setPriorGate(explainedGate(profile, *demonstration));
+    }
+    if (profile.priscaFromPd) {
+        prisca->setPriorErrorSchedule(reverseSchedule(profile, *demonstration));
     }
     if (profile.priscaLearnWhereExplained) {
         prisca->setModelValidity(
@@ -195,6 +221,7 @@ Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
     if (in.profile.feedbackWhereExplained()) {
         pd->setFeedbackGate(explainedGate(in.profile, *in.demonstration));
     }
+    pd->setErrorSchedule(reverseSchedule(in.profile, *in.demonstration));
     return pd;
 }
 
@@ -488,6 +515,24 @@ const MethodParameter& priscaExplainedOnly() {
         };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.priscaLearnWhereExplained = v[0] != 0.0;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& feedbackReverseAware() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "feedback.reverse", QT_TRANSLATE_NOOP("MethodParameter", "Heading feedback reversed"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "For a vehicle, the feedback law (the PD family's, PRISCA's prior) "
+                              "turns the sign of its heading and yaw-rate terms where the "
+                              "demonstration drives backwards, where steering turns the car the "
+                              "other way; off: the same law in both directions."));
+        p.get = [](const MethodTuning& f) { return one(f.feedbackReverseAware ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.feedbackReverseAware = v[0] != 0.0;
         };
         return p;
     }();
@@ -903,7 +948,7 @@ std::vector<MethodSpec> makeCatalog() {
     s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
                     priscaAutomaticStep(), priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
                     priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
-                    priscaModelDelay(), priscaExplainedOnly(), priscaPhase(), matchingWindow(), start(), feedbackExplainedOnly(),
+                    priscaModelDelay(), priscaExplainedOnly(), priscaPhase(), matchingWindow(), start(), feedbackExplainedOnly(), feedbackReverseAware(),
                     pdKp(),          pdKd(),          pdHorizon()};
     all.push_back(s);
     s = entry("prisca-paper", "PRISCA (paper)", &makePriscaPaper);
@@ -915,7 +960,7 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd", "PD", &makePdFamily);
     s.summary = "proportional-derivative feedback around the demonstration, time-driven";
-    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd()};
+    s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd()};
     all.push_back(s);
     s = entry("pd-selected", "PD (SELECTED)", &makePdFamily);
     s.training = MethodSpec::Training::SelectPdGains;
@@ -925,15 +970,15 @@ std::vector<MethodSpec> makeCatalog() {
     all.push_back(s);
     s = entry("pd-h", "PD+H", &makePdFamily);
     s.summary = "PD on the error smoothed over H steps";
-    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), pdHorizon()};
+    s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), pdHorizon()};
     all.push_back(s);
     s = entry("pd-lsd", "PD+LSD", &makePdFamily);
     s.summary = "PD with the least-state-deviation reference";
-    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), matchingWindow()};
+    s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), matchingWindow()};
     all.push_back(s);
     s = entry("pd-h-lsd", "PD+H+LSD", &makePdFamily);
     s.summary = "PD with both";
-    s.parameters = {start(), feedbackExplainedOnly(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
+    s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
     all.push_back(s);
     s = entry("lqr", "LQR", &makeLqr);
     s.summary = "time-varying LQR on the model fitted from the demonstration (eq. 5)";

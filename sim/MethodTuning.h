@@ -93,6 +93,9 @@ struct MethodTuning {
     /// on does not hold). Auto: with the demonstration start (whose gains come from that linear
     /// model), not with the tuned one (whose gains were tuned through the slides).
     enum class FeedbackGate { Auto, On, Off };
+    /// For planar vehicles: the feedback's heading and yaw-rate terms change sign where the
+    /// demonstration drives backwards (the steering turns the car the other way there).
+    bool feedbackReverseAware = true;
     FeedbackGate feedbackGate = FeedbackGate::Auto;
     bool feedbackWhereExplained() const {
         return feedbackGate == FeedbackGate::On ||

@@ -156,6 +156,43 @@ class TestBaselines : public QObject {
         }
     }
 
+    // A car's lateral error in its linearised kinematics, e_lat' = v e_psi, e_psi' = (v / L) d:
+    // a law derived for forward travel, d = -(k1 e_lat + k2 e_psi), is stable for v > 0 and
+    // unstable in reverse (both signs turn, the closed loop's trace becomes +k2 v / L); with the
+    // heading's sign turned where the demonstration reverses (the error schedule) it holds.
+    void pd_errorScheduleTurnsTheHeadingTermRoundInReverse() {
+        const double dt = 0.02, wheelbase = 0.26, k1 = 2.0, k2 = 0.8;
+        const int T = 300;
+        auto demo = std::make_shared<Demonstration>(prisca::test::namedDemonstration(T, 2, 1, dt));
+        demo->states.setZero();
+        demo->actions.setZero();
+        PdParameters law;
+        law.errorCombination = (Eigen::MatrixXd(1, 2) << k1, k2).finished();
+        law.kp = Eigen::VectorXd::Ones(1);
+        law.kd = Eigen::VectorXd::Zero(1);
+        auto finalError = [&](double speed, bool schedule) {
+            TrackingProblem problem = problemFor(demo, MatchingParameters::Mode::TimeDriven);
+            problem.limits = ActionLimits::symmetric(1, 1e9);
+            PdController pd(problem, law, "pd");
+            if (schedule) {
+                Eigen::MatrixXd factors = Eigen::MatrixXd::Ones(2, T);
+                factors.row(1).setConstant(speed < 0.0 ? -1.0 : 1.0);
+                pd.setErrorSchedule(factors);
+            }
+            Eigen::Vector2d e(0.1, 0.0);
+            for (int k = 0; k < T && e.allFinite(); ++k) {
+                const double d = pd.step(e).action[0];
+                e += dt * Eigen::Vector2d(speed * e[1], speed / wheelbase * d);
+            }
+            return e.norm();
+        };
+        QVERIFY2(finalError(1.0, false) < 0.01, qPrintable(QString::number(finalError(1.0, false))));
+        QVERIFY2(finalError(1.0, true) == finalError(1.0, false), "forward: nothing changes");
+        QVERIFY2(!(finalError(-1.0, false) < 1.0),
+                 qPrintable(QString::number(finalError(-1.0, false))));
+        QVERIFY2(finalError(-1.0, true) < 0.01, qPrintable(QString::number(finalError(-1.0, true))));
+    }
+
     void pdH_smoothsTheErrorWithTheNestedWeights() {
         auto demo = integratorDemonstration(Eigen::MatrixXd::Identity(1, 1), 40, 0.1);
         PdParameters gains;
