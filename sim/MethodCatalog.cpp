@@ -31,8 +31,9 @@ std::vector<double> explainedGate(const MethodTuning& profile,
     return std::vector<double>(explained.begin(), explained.end());
 }
 
-// Per demonstration sample, -1 on a planar vehicle's heading and yaw-rate errors where the
-// demonstration drives backwards, else 1 (n x T); empty for other plants or when switched off.
+// Per demonstration sample, -1 on a car-like vehicle's heading and yaw-rate errors where the
+// demonstration drives backwards, else 1 (n x T); empty for other plants (a differential drive
+// turns on its own command, in either direction) or when switched off.
 // The heading error turns into lateral error at the signed speed, and the steering turns the
 // heading at the signed speed: in reverse both change sign, so a law derived for forward travel
 // keeps its lateral term and must turn its heading terms round (docs/decisions.md).
@@ -40,7 +41,7 @@ Eigen::MatrixXd reverseSchedule(const MethodTuning& profile,
                                 const core::Demonstration& demonstration) {
     const auto& pose = profile.info.pose;
     const auto& body = profile.info.bodyVelocity;
-    if (!profile.feedbackReverseAware || !pose || !body) {
+    if (!profile.feedbackReverseAware || !pose || !body || !profile.info.steersThroughTravel) {
         return {};
     }
     Eigen::MatrixXd schedule =

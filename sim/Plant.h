@@ -94,6 +94,9 @@ struct PlantInfo {
     std::vector<int> angleIndices;                ///< state components that are angles
     std::optional<core::PlanarPoseIndices> pose;  ///< planar vehicles: x, y, heading
     std::optional<core::BodyVelocityIndices> bodyVelocity;  ///< and their body velocities
+    /// Car-like steering: the steering turns the heading at the signed forward speed (so the
+    /// other way in reverse), unlike a differential drive, whose turn rate is its own command.
+    bool steersThroughTravel = false;
 
     int stateDimension() const { return static_cast<int>(stateNames.size()); }
     int actionDimension() const { return static_cast<int>(actionNames.size()); }

@@ -37,6 +37,7 @@ PlantInfo SlideCar::describe() {
     info.angleIndices = {2};
     info.pose = core::PlanarPoseIndices{0, 1, 2};
     info.bodyVelocity = core::BodyVelocityIndices{3, 4, 5};
+    info.steersThroughTravel = true;
     return info;
 }
 
