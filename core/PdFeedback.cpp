@@ -32,11 +32,18 @@ void PdFeedback::reset() {
     step_ = 0;
 }
 
+void PdFeedback::setErrorSchedule(Eigen::MatrixXd schedule) {
+    if (schedule.size() != 0 && schedule.rows() != parameters_.errorCombination.cols()) {
+        throw std::invalid_argument("PdFeedback::setErrorSchedule: one row per error component");
+    }
+    schedule_ = std::move(schedule);
+    scheduled_.setZero(schedule_.rows());  // the step's scratch, sized once
+}
+
 void PdFeedback::update(const Eigen::Ref<const Eigen::VectorXd>& error, int referenceIndex) {
     const int ring = static_cast<int>(raw_.cols());
     const int k = step_;
-    if (referenceIndex >= 0 && referenceIndex < schedule_.cols() &&
-        schedule_.rows() == error.size()) {
+    if (referenceIndex >= 0 && referenceIndex < schedule_.cols()) {
         scheduled_ = error.cwiseProduct(schedule_.col(referenceIndex));
         raw_.col(k % ring).noalias() = parameters_.errorCombination * scheduled_;
     } else {

@@ -42,8 +42,9 @@ class PdFeedback {
     void setReferenceGate(std::vector<double> gate) { gate_ = std::move(gate); }
     /// Per demonstration sample (n x T): a factor on each error component while that sample
     /// is the reference, before the combination (e.g. -1 on a vehicle's heading and yaw rate
-    /// while the demonstration drives backwards); empty: none.
-    void setErrorSchedule(Eigen::MatrixXd schedule) { schedule_ = std::move(schedule); }
+    /// while the demonstration drives backwards); empty: none. std::invalid_argument unless
+    /// it has n rows.
+    void setErrorSchedule(Eigen::MatrixXd schedule);
 
     /// eps of the last update, after smoothing (m).
     const Eigen::VectorXd& signal() const { return signal_; }

@@ -84,6 +84,7 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
             hasPhases_ = hasPhases_ || phase;
         }
     }
+    moved_.setZero(1, p * m);
     previousTheta_.setZero(p, m);
     initialTheta_.setZero(p, m);
     phi_.setZero(p, m);
@@ -221,11 +222,11 @@ void PriscaController::closedLoopTerms(int k, int count) {
         if (hasPhases_) {
             // Averaged over the parameters this step moves: the phase features idle here do
             // not dilute the curvature of the ones at work (which would inflate their step).
-            Eigen::ArrayXXd moved = S.array().square().colwise().sum();
+            moved_ = S.array().square().colwise().sum();
             if (effort) {
-                moved += actionSensitivity_.array().square().colwise().sum();
+                moved_ += actionSensitivity_.array().square().colwise().sum();
             }
-            const Eigen::Index active = (moved > 0.0).count();
+            const Eigen::Index active = (moved_ > 0.0).count();
             parameters = active > 0 ? static_cast<double>(active) : parameters;
         }
         addCurvature(curvature, parameters);

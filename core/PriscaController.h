@@ -177,6 +177,7 @@ class PriscaController : public Controller {
     Eigen::MatrixXd theta_;
     Eigen::MatrixXd feedbackMask_;  // p x m: 1 where a term is charged as effort (not a phase)
     bool hasPhases_ = false;         // any Phase term in the feature map
+    Eigen::ArrayXXd moved_;          // 1 x (p*m) scratch: how much each parameter moves the step
     Eigen::MatrixXd initialTheta_;  // what a cold reset returns to
     Eigen::MatrixXd previousTheta_;  // before the last update (restored if it overflowed)
     Eigen::MatrixXd phi_;
