@@ -78,7 +78,8 @@ bool determined(const std::vector<cv::Point2d>& image, const std::vector<cv::Poi
 }  // namespace
 
 std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<CalibrationPoint>& points,
-                                                      QString* error) {
+                                                      QString* error,
+                                                      const std::optional<CameraLens>& lens) {
     if (points.size() < 4) {
         *error = QStringLiteral("a floor calibration needs at least 4 points, %1 given")
                      .arg(points.size());
@@ -110,7 +111,7 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
                          .arg(kMaxImagePixels);
             return std::nullopt;
         }
-        image.push_back(p.image);
+        image.push_back(lens ? lens->undistort(p.image) : p.image);
         floor.push_back(p.floor);
     }
     // Three of the points on one line (in the image or on the floor) leave it undetermined.
@@ -145,6 +146,7 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
     FloorCalibration c;
     c.imageToFloor = cv::Matx33d(h.ptr<double>());
     c.points = points;
+    c.lens = lens;
     double sum = 0.0;
     for (double r : c.residuals()) {
         sum += r * r;
@@ -179,9 +181,14 @@ QString FloorCalibration::homographyProblem() const {
         v1 = std::max(v1, p.image.y);
     }
     double sign = 0.0;
+    if (lens) {
+        u1 = std::max(u1, double(lens->imageSize.width));
+        v1 = std::max(v1, double(lens->imageSize.height));
+    }
     for (const cv::Point2d corner :
          {cv::Point2d(u0, v0), cv::Point2d(u1, v0), cv::Point2d(u0, v1), cv::Point2d(u1, v1)}) {
-        const cv::Vec3d q = h * cv::Vec3d(corner.x, corner.y, 1.0);
+        const cv::Point2d ideal = lens ? lens->undistort(corner) : corner;
+        const cv::Vec3d q = h * cv::Vec3d(ideal.x, ideal.y, 1.0);
         if (sign == 0.0) {
             sign = q[2] > 0.0 ? 1.0 : -1.0;
         }
@@ -211,11 +218,29 @@ QString FloorCalibration::homographyProblem() const {
 }
 
 cv::Point2d FloorCalibration::toFloor(const cv::Point2d& image) const {
-    return apply(imageToFloor, image);
+    return apply(imageToFloor, lens ? lens->undistort(image) : image);
 }
 
 cv::Point2d FloorCalibration::toImage(const cv::Point2d& floor) const {
-    return apply(imageToFloor.inv(), floor);
+    const cv::Point2d ideal = apply(imageToFloor.inv(), floor);
+    return lens ? lens->distort(ideal) : ideal;
+}
+
+QString FloorCalibration::accuracyProblem() const {
+    if (rmsMetres <= kMaxRmsMetres) {
+        return {};
+    }
+    const std::vector<double> r = residuals();
+    const auto worst = std::max_element(r.begin(), r.end());
+    return QStringLiteral("the floor calibration fits its points to %1 mm RMS (point %2 is %3 mm "
+                          "off), more than the %4 mm the tracker tolerates; %5")
+        .arg(rmsMetres * 1000.0, 0, 'f', 1)
+        .arg(worst - r.begin() + 1)
+        .arg(*worst * 1000.0, 0, 'f', 1)
+        .arg(kMaxRmsMetres * 1000.0, 0, 'f', 0)
+        .arg(lens ? QStringLiteral("check the points (a mistyped coordinate, a swapped pair)")
+                  : QStringLiteral("a wide lens's distortion? calibrate the camera and give "
+                                   "its intrinsics (--camera)"));
 }
 
 std::vector<double> FloorCalibration::residuals() const {
@@ -236,8 +261,11 @@ QByteArray FloorCalibration::toJson() const {
         pts.append(QJsonObject{{"image", QJsonArray{p.image.x, p.image.y}},
                                {"floor", QJsonArray{p.floor.x, p.floor.y}}});
     }
-    return QJsonDocument(QJsonObject{{"homography", h}, {"points", pts}, {"rms_m", rmsMetres}})
-        .toJson(QJsonDocument::Indented);
+    QJsonObject root{{"homography", h}, {"points", pts}, {"rms_m", rmsMetres}};
+    if (lens) {
+        root.insert("camera", lens->toJsonObject());
+    }
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
 std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& json, QString* error) {
@@ -298,6 +326,18 @@ std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& jso
             return std::nullopt;
         }
         c.rmsMetres = rms.toDouble();
+    }
+    if (root.contains("camera")) {
+        if (!root.value("camera").isObject()) {
+            *error = QStringLiteral("'camera' must be an object (the camera's intrinsics)");
+            return std::nullopt;
+        }
+        QString lensError;
+        c.lens = CameraLens::fromJsonObject(root.value("camera").toObject(), &lensError);
+        if (!c.lens) {
+            *error = QStringLiteral("'camera': %1").arg(lensError);
+            return std::nullopt;
+        }
     }
     if (const QString problem = c.homographyProblem(); !problem.isEmpty()) {
         *error = QStringLiteral("'homography' %1").arg(problem);

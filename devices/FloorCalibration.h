@@ -1,5 +1,7 @@
 #pragma once
 
+#include "devices/CameraLens.h"
+
 #include <QByteArray>
 #include <QString>
 
@@ -18,10 +20,15 @@ struct CalibrationPoint {
 
 /// The floor calibration: the homography from image pixels to floor metres, fitted to four or
 /// more points the operator clicked, and how well it fits them. JSON as docs/architecture.md gives it:
-/// {"homography": [h00..h22 row-major, image px -> floor m], "points": [...], "rms_m": ...}.
+/// {"homography": [h00..h22 row-major, image px -> floor m], "points": [...], "rms_m": ...,
+///  "camera": {the lens, CameraLens's JSON; absent: none}}.
+/// With a lens the homography maps the ideal (undistorted) image to the floor, and toFloor()
+/// and toImage() take the lens's distortion off and put it back; the points keep the pixels as
+/// clicked in the real image, so the calibration can be fitted again under another lens.
 struct FloorCalibration {
     cv::Matx33d imageToFloor = cv::Matx33d::eye();
     std::vector<CalibrationPoint> points;
+    std::optional<CameraLens> lens;
     double rmsMetres = 0.0;  ///< RMS distance between each point's floor position and its
                              ///< image point mapped to the floor [m]
 
@@ -30,7 +37,20 @@ struct FloorCalibration {
     /// on one line). On failure returns nullopt and *error says
     /// why.
     static std::optional<FloorCalibration> fit(const std::vector<CalibrationPoint>& points,
-                                               QString* error);
+                                               QString* error,
+                                               const std::optional<CameraLens>& lens = {});
+    /// The same points fitted again under `lens` (none: the homography alone).
+    std::optional<FloorCalibration> withLens(const std::optional<CameraLens>& lens,
+                                             QString* error) const {
+        return fit(points, error, lens);
+    }
+    /// The largest RMS residual a calibration to track with may have [m]: the tracker's own
+    /// tolerance for the LED triangle's misfit (20 mm); a floor mapped worse than that breaks
+    /// the triangle.
+    static constexpr double kMaxRmsMetres = 0.02;
+    /// Empty when the fit is good enough to track with; else the figure (RMS, the worst point)
+    /// and what to do.
+    QString accuracyProblem() const;
 
     /// How far from the origin a floor point may lie [m]; a lab floor is tens of metres, so 1 km
     /// is only a corrupt file.

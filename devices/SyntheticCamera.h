@@ -6,6 +6,8 @@
 #include <opencv2/core.hpp>
 
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace prisca::devices {
 
@@ -33,5 +35,33 @@ cv::Mat renderLeds(const PlanarPose& pose, const FloorCalibration& calibration,
 /// (640 x 480) sees x in about [-0.6, 5.0] m and y in [-1.6, 2.6] m (the slide-park and its lot),
 /// slightly tilted (a true perspective homography), calibrated from its corners and centre.
 FloorCalibration syntheticCeilingCamera();
+
+/// A ceiling camera with a wide lens over the same floor, as the truth for lens tests: 640 x
+/// 480, focal length 600 px, 4.2 m above (2.2, 0.55) m tilted 2 degrees, radial distortion
+/// k1 = `k1` (barrel for k1 < 0: a point at the image's corner is seen about 20 % nearer the
+/// centre than a pinhole would put it for k1 = -0.3), k2 = 0.05, a little tangential. Its floor
+/// calibration is exact (no fit): toImage() is the camera's projection of a floor point.
+FloorCalibration syntheticWideLensCamera(double k1 = -0.3);
+
+/// Renders views of a chessboard held before a camera with a lens: the image a real camera
+/// would give (distortion, anti-aliased edges, blur and noise), for lens calibration tests and
+/// demonstrations. The ideal position of every pixel is computed once per lens.
+class BoardViewRenderer {
+  public:
+    explicit BoardViewRenderer(const CameraLens& lens);
+    /// The board (its first inner corner at the origin, x along the rows) at rotation `rvec`
+    /// (Rodrigues) and translation `tvec` [m] in the camera frame; 8-bit grey.
+    cv::Mat render(const BoardSpec& board, const cv::Vec3d& rvec, const cv::Vec3d& tvec,
+                   double noise, std::uint64_t seed) const;
+    /// `count` poses that show the whole board, spread over the image (its centre, edges and
+    /// corners) and tilted up to about 30 degrees, drawn from `seed`.
+    std::vector<std::pair<cv::Vec3d, cv::Vec3d>> poses(const BoardSpec& board, int count,
+                                                       std::uint64_t seed) const;
+    const CameraLens& lens() const { return lens_; }
+
+  private:
+    CameraLens lens_;
+    cv::Mat idealX_, idealY_;  ///< per pixel, where the ideal pinhole camera sees it [px]
+};
 
 }  // namespace prisca::devices

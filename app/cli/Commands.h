@@ -14,6 +14,8 @@ int curveCommand(const QStringList& arguments);
 int lemma41Command(const QStringList& arguments);
 int linkCommand(const QStringList& arguments);
 int trackCommand(const QStringList& arguments);
+int calibrateCameraCommand(const QStringList& arguments);
+int calibrateFloorCommand(const QStringList& arguments);
 int rigCommand(const QStringList& arguments);
 int methodsCommand(const QStringList& arguments);
 int plantCommand(const QStringList& arguments);

@@ -23,6 +23,10 @@ int trackCommand(const QStringList& arguments) {
                                     "without three credible LEDs have no pose."));
     line.addValue("video", "Video file of the ceiling camera.", "file");
     line.addValue("calibration", "Floor calibration JSON (image px -> floor m).", "file");
+    line.addValue("camera",
+                  "Camera intrinsics JSON (calibrate-camera): the LEDs are undistorted through "
+                  "it, the floor calibration fitted again under it from its own points.",
+                  "file");
     line.addValue("out", "CSV: frame, t, x, y, psi, found, misfit_m, blobs.", "file");
     line.addValue("threshold", "Grey level above which a pixel is lit.", "0..255", "180");
     line.addValue("leds",
@@ -58,9 +62,29 @@ int trackCommand(const QStringList& arguments) {
         }
     }
     QString error;
-    const auto calibration = devices::FloorCalibration::load(line.required("calibration"), &error);
+    auto calibration = devices::FloorCalibration::load(line.required("calibration"), &error);
     if (!calibration) {
         throw UsageError(error);
+    }
+    if (line.isSet("camera")) {
+        const auto lens = devices::CameraLens::load(line.value("camera"), &error);
+        if (!lens) {
+            throw UsageError(error);
+        }
+        if (!calibration->lens || !calibration->lens->sameModel(*lens)) {
+            if (calibration->points.size() < 4) {
+                throw UsageError(QStringLiteral("--camera: %1 keeps no points to fit again "
+                                                "under the lens; run calibrate-floor --camera")
+                                     .arg(line.value("calibration")));
+            }
+            calibration = calibration->withLens(lens, &error);
+            if (!calibration) {
+                throw UsageError(QStringLiteral("--camera: %1").arg(error));
+            }
+        }
+    }
+    if (const QString problem = calibration->accuracyProblem(); !problem.isEmpty()) {
+        std::fprintf(stderr, "prisca-cli: track: warning: %s\n", qPrintable(problem));
     }
     // A video file only: a FIFO or a device would block the decoder in its open.
     core::FileError videoError;
