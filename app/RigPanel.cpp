@@ -404,7 +404,11 @@ void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
     if (result.stopped) {
         lastResult_ += tr(" (stopped after %1 s)").arg(result.seconds, 0, 'f', 1);
     } else if (result.fault) {
-        lastResult_ += tr(" (failsafe after %1 s)").arg(result.seconds, 0, 'f', 1);
+        lastResult_ += result.reason.isEmpty()
+                           ? tr(" (failsafe after %1 s)").arg(result.seconds, 0, 'f', 1)
+                           : tr(" (failsafe after %1 s: %2)")
+                                 .arg(result.seconds, 0, 'f', 1)
+                                 .arg(result.reason);
     }
     trialInfo_->setText(lastResult_);
     runTrial_->setEnabled(true);

@@ -49,6 +49,8 @@ RigLoop::RigLoop(FloorCalibration calibration, TrackerSettings tracker,
 void RigLoop::startTrial(core::ResetMode mode) {
     controller_->reset(mode);
     guard_.reset();
+    tripped_.clear();
+    lostSinceNs_ = -1;
     estimator_.reset();
     if (filter_) {
         filter_->reset();
@@ -100,7 +102,32 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
     step.frameNs = frame.steadyNs;
     const TrackResult tracked = tracker_.track(frame.image, calibration_);
     step.pose = tracked.pose;
+    // Once tripped the trial is over: failsafe whatever comes.
+    const auto trip = [&](const QString& reason) {
+        if (tripped_.isEmpty()) {
+            qCWarning(lcRig) << "failsafe:" << reason;
+            tripped_ = reason;
+        }
+        link_.reportControllerFault();
+        step.fault = true;
+        step.stopReason = tripped_;
+        return step;
+    };
+    if (!tripped_.isEmpty()) {
+        if (tracked.pose) {
+            step.state = estimate(*tracked.pose, frame.steadyNs);
+        }
+        return trip(tripped_);
+    }
     if (!tracked.pose) {
+        if (lostSinceNs_ < 0) {
+            lostSinceNs_ = frame.steadyNs;
+        }
+        if (const QString why = fence_.breach(std::nullopt, 0.0,
+                                              (frame.steadyNs - lostSinceNs_) * 1e-9);
+            !why.isEmpty()) {
+            return trip(why);
+        }
         link_.setPoseLost(true);  // failsafe from the link's next frame
         estimator_.reset();
         if (filter_ && filter_->status().initialised) {
@@ -110,27 +137,28 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
         }
         return step;
     }
+    lostSinceNs_ = -1;
     step.state = estimate(*tracked.pose, frame.steadyNs);
-    if (guard_.tripped()) {  // left the demonstration earlier in this trial: failsafe stays
-        link_.reportControllerFault();
-        step.fault = true;
-        return step;
+    if (fence_.enabled()) {
+        const double speed = std::hypot(step.state[3], step.state[4]);
+        if (const QString why = fence_.breach(tracked.pose, speed, 0.0); !why.isEmpty()) {
+            return trip(why);
+        }
     }
+    bool offTrack = false;
     try {
         const core::ControlStep& control = controller_->step(step.state);
         step.action = control.action;
         if (!step.action.allFinite()) {
-            throw std::runtime_error("the controller's action is not finite");
+            throw std::runtime_error("its action is not finite");
         }
-        if (guard_.check(control.deviation)) {
-            throw std::runtime_error("the car left the demonstration (position deviation over " +
-                                     std::to_string(guard_.distance()) + " m)");
-        }
+        offTrack = guard_.check(control.deviation);
     } catch (const std::exception& e) {
-        qCWarning(lcRig) << "controller fault:" << e.what();
-        link_.reportControllerFault();
-        step.fault = true;
-        return step;
+        return trip(QStringLiteral("the controller failed: %1").arg(QString::fromUtf8(e.what())));
+    }
+    if (offTrack) {
+        return trip(QStringLiteral("the car left the demonstration (more than %1 m from it)")
+                        .arg(guard_.distance()));
     }
     link_.setCommand(channels_.command(step.action));
     link_.setPoseLost(false);

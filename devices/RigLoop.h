@@ -2,6 +2,7 @@
 
 #include "devices/CameraSource.h"
 #include "devices/ChannelMap.h"
+#include "devices/Geofence.h"
 #include "devices/LedTracker.h"
 
 #include "core/Controller.h"
@@ -40,6 +41,9 @@ struct RigStep {
     Eigen::VectorXd state;           ///< the observation given to the controller (if a pose)
     Eigen::VectorXd action;          ///< the controller's action (if a pose)
     bool fault = false;              ///< the controller failed (failsafe latched)
+    /// Why the trial must end in failsafe now (the fence breached, the car off the
+    /// demonstration, the controller failed); empty while it may go on.
+    QString stopReason;
     std::int64_t frameNs = 0;        ///< when the frame arrived
     std::int64_t commandNs = 0;      ///< when the command was handed to the link
 };
@@ -61,6 +65,11 @@ class RigLoop {
     void setLostTrackDistance(double metres) {
         guard_ = core::LostTrackGuard(metres, core::PlanarPoseIndices{});
     }
+    /// The trial's fence: a pose outside it, a speed over its limit or a track lost longer
+    /// than it allows latches failsafe in that frame and ends the trial (RigStep::fault with
+    /// the reason). Takes effect at once.
+    void setGeofence(Geofence fence) { fence_ = std::move(fence); }
+    const Geofence& geofence() const { return fence_; }
     /// Estimate the state with a pose filter (core::PoseFilter, time-stamped, pose only) in
     /// place of the finite-difference estimator: each frame's pose is a measurement taken
     /// `cameraLatencySeconds` before the frame arrived, a frame with no pose is bridged by
@@ -90,6 +99,9 @@ class RigLoop {
     Eigen::VectorXd measurement_ = Eigen::VectorXd::Zero(6);
     std::unique_ptr<core::Controller> controller_;
     core::LostTrackGuard guard_;
+    Geofence fence_;
+    QString tripped_;            ///< why the trial ended in failsafe (latched until startTrial)
+    std::int64_t lostSinceNs_ = -1;  ///< when the pose was lost (-1: tracked)
     ChannelMap channels_;
     TransmitterLink& link_;
 };

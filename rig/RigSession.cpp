@@ -25,6 +25,7 @@ constexpr int kShutdownWaitMs = 3000;
 /// What the camera thread and the commands share (under mutex_).
 struct RigSession::Loop {
     devices::FloorCalibration calibration;  ///< the tracker's, outside trials
+    devices::Geofence fence;                ///< every trial's (RigLoop::setGeofence)
     devices::LedTracker tracker;
     // The closed loop, kept from trial to trial for one method.
     std::unique_ptr<devices::RigLoop> loop;
@@ -203,6 +204,19 @@ void RigSession::setCalibration(const devices::FloorCalibration& calibration) {
     loop_->stale = true;  // the loop tracks with its own copy: rebuilt for the next trial
 }
 
+void RigSession::setGeofence(const devices::Geofence& fence) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    loop_->fence = fence;
+    if (loop_->loop) {
+        loop_->loop->setGeofence(fence);  // at once, in a trial under way too
+    }
+}
+
+devices::Geofence RigSession::geofence() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->fence;
+}
+
 bool RigSession::loadCalibration(const QString& path, QString* error) {
     const auto loaded = devices::FloorCalibration::load(path, error);
     if (!loaded) {
@@ -298,6 +312,7 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         l.stale = false;
         l.trials = 0;
     }
+    l.loop->setGeofence(l.fence);
     l.loop->startTrial(sim::resetForTrial(l.trials));
     if (car_) {  // back at the start
         car_->requestReset(request.virtualSeed != 0 ? request.virtualSeed
@@ -329,7 +344,7 @@ bool RigSession::trialRunning() const {
     return loop_->running;
 }
 
-RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault) {
+RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QString& reason) {
     Loop& l = *loop_;
     l.running = false;
     // Outside a trial the pose drives nothing: the link's failsafe is the stale command's now,
@@ -339,6 +354,7 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault) {
     result.trial = l.trials;
     result.stopped = stopped;
     result.fault = fault;
+    result.reason = reason;
     result.seconds = l.trialStartNs >= 0 ? (l.lastFrameNs - l.trialStartNs) * 1e-9 : 0.0;
     result.frames = l.frames;
     result.framesWithPose = l.framesWithPose;
@@ -387,7 +403,7 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
             // A trial lasts its length by the camera's own frame clock, whatever the frame rate.
             const double elapsed = (frame.steadyNs - l.trialStartNs) * 1e-9;
             if (elapsed >= l.trialSeconds || step.fault) {
-                finished = finishTrialLocked(false, step.fault);
+                finished = finishTrialLocked(false, step.fault, step.stopReason);
             }
         } else {
             pose = l.tracker.track(frame.image, l.calibration).pose;

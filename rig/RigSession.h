@@ -6,6 +6,7 @@
 #include "devices/CameraWorker.h"
 #include "devices/ChannelMap.h"
 #include "devices/FloorCalibration.h"
+#include "devices/Geofence.h"
 #include "devices/TransmitterLink.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
@@ -66,7 +67,8 @@ struct TrialRequest {
 struct RigTrialResult {
     int trial = 0;         ///< 1, 2, ... since the loop was built
     bool stopped = false;  ///< ended early by Stop or E-STOP
-    bool fault = false;    ///< ended by a controller fault or the lost-track failsafe
+    bool fault = false;    ///< ended in failsafe: the fence, the lost-track guard, a fault
+    QString reason;        ///< why, when `fault`
     double seconds = 0.0;  ///< its length by the camera's frame clock [s]
     long long frames = 0;  ///< frames it saw
     long long framesWithPose = 0;
@@ -123,6 +125,11 @@ class RigSession : public QObject {
     bool loadCalibration(const QString& path, QString* error);
     bool saveCalibration(const QString& path, QString* error) const;
 
+    /// The fence every trial runs in (a breach ends it in failsafe, RigTrialResult::reason
+    /// says why); takes effect at once. Empty by default.
+    void setGeofence(const devices::Geofence& fence);
+    devices::Geofence geofence() const;
+
     // The transmitter link.
     void connectLink(const devices::LinkSettings& settings);
     void disconnectLink();
@@ -177,7 +184,7 @@ class RigSession : public QObject {
   private:
     struct Recorder;
     void onFrame(const devices::CameraFrame& frame);
-    RigTrialResult finishTrialLocked(bool stopped, bool fault);
+    RigTrialResult finishTrialLocked(bool stopped, bool fault, const QString& reason = {});
     template <typename F>
     void onWorker(F&& f);
 

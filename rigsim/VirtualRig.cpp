@@ -17,6 +17,7 @@ VirtualRig::VirtualRig(VirtualRigSettings settings, std::unique_ptr<core::Contro
     loop_ = std::make_unique<devices::RigLoop>(calibration_, settings_.tracker,
                                                std::move(controller), settings_.channels, *link_);
     loop_->setLostTrackDistance(settings_.lostTrackDistance);
+    loop_->setGeofence(settings_.fence);
 }
 
 VirtualRig::~VirtualRig() {
@@ -69,7 +70,22 @@ VirtualRig::Trial VirtualRig::runTrial(double seconds, core::ResetMode mode, std
         frame.index = k;
         const devices::RigStep step = loop_->onFrame(frame);
         ++trial.frames;
-        if (step.pose) {
+        if (step.fault && trial.stopFrame < 0) {
+            trial.stopFrame = k;
+            trial.stopReason = step.stopReason;
+            // The link's next frame after the fault is failsafe: wait for it, at most one
+            // camera frame.
+            const long long sent = link_->framesSent();
+            const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                     std::chrono::duration<double>(dt));
+            while (link_->framesSent() <= sent + 1 && Clock::now() < deadline) {
+                std::this_thread::sleep_for(std::chrono::microseconds(50));
+            }
+            if (link_->framesSent() > sent + 1) {
+                trial.receivedAtStop = car_->receivedCommand();
+            }
+        }
+        if (step.pose && !step.fault) {
             ++trial.framesWithPose;
             // Wait (briefly) for the link to write this frame's command, and time it.
             const auto deadline = Clock::now() + std::chrono::milliseconds(15);

@@ -4,6 +4,7 @@
 #include "core/Controller.h"
 #include "core/Demonstration.h"
 #include "devices/ChannelMap.h"
+#include "devices/Geofence.h"
 #include "devices/LedTracker.h"
 #include "devices/RcProtocols.h"
 #include "devices/SyntheticCamera.h"
@@ -13,6 +14,7 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -32,6 +34,7 @@ struct VirtualRigSettings {
     devices::TrackerSettings tracker;
     double perturbation = 1.0;  ///< of the simulated car (start offsets, friction, gains, trim)
     double lostTrackDistance = 0.0;  ///< [m], the loop's lost-track failsafe (0: none)
+    devices::Geofence fence;         ///< the loop's fence (off by default)
 };
 
 /// The whole real-rig loop with no hardware: a simulated slide-car is driven by the bytes the
@@ -55,6 +58,16 @@ class VirtualRig {
         int framesWithPose = 0;           ///< frames the tracker found the car in
         std::vector<double> latencyMs;    ///< camera frame -> its command's bytes written
         long long linkFramesDecoded = 0;  ///< frames the far end decoded
+        /// The frame in which the loop ended the trial in failsafe (the fence, the lost-track
+        /// guard, a controller fault), and why; -1 and empty if it ran its length. The car is
+        /// simulated on to the trial's length (it coasts, in failsafe), so `path` shows where
+        /// it came to rest.
+        int stopFrame = -1;
+        QString stopReason;
+        /// What the car's receiver held once the link had written two frames after the stop
+        /// (the first may have been on its way), within one camera frame of it; empty if they
+        /// did not come by then.
+        std::optional<Eigen::VectorXd> receivedAtStop;
     };
     /// One trial: the car starts from its (perturbed) start, the controller resets with
     /// `mode`, and the loop runs for `seconds` of real time (or until `cancelled`).

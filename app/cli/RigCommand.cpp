@@ -44,6 +44,14 @@ int rigCommand(const QStringList& arguments) {
                   "N", "3");
     line.addValue("seed", "Seed of the trials (the car's start, friction, gains).", "N", "1");
     line.addValue("perturbation", "The simulated car's perturbation level.", "level", "1");
+    line.addValue("fence",
+                  "A fence on the floor, its corners in order: \"x,y;x,y;x,y...\" [m]. A car "
+                  "outside it ends the trial in failsafe.",
+                  "polygon");
+    line.addValue("max-speed", "A speed over this ends the trial in failsafe (0: no limit).",
+                  "m/s", "0");
+    line.addValue("max-lost", "A track lost for longer ends the trial in failsafe (0: no limit).",
+                  "s", "0");
     addPlantParametersOption(line);
     addMethodParameterOptions(line);
     line.addFormat({"text", "json"});
@@ -75,6 +83,20 @@ int rigCommand(const QStringList& arguments) {
                           conditions);
     task.plantParameters = parameters;
     applyMethodParameters(line, task.profile, parameters != nullptr);
+    devices::Geofence fence;
+    if (line.isSet("fence")) {
+        QString fenceError;
+        const auto polygon = devices::Geofence::parsePolygon(line.value("fence"), &fenceError);
+        if (!polygon) {
+            throw UsageError(QStringLiteral("--fence: %1").arg(fenceError));
+        }
+        fence.polygon = *polygon;
+    }
+    fence.maxSpeed = line.number("max-speed", 0.0, 100.0);
+    fence.maxLostSeconds = line.number("max-lost", 0.0, 3600.0);
+    if (const QString problem = fence.problem(); !problem.isEmpty()) {
+        throw UsageError(QStringLiteral("--fence: %1").arg(problem));
+    }
     const int trials = static_cast<int>(line.integer("trials", 1, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     // The run as the simulation sets it up: the rig's loop takes its controller, settle time,
@@ -85,6 +107,7 @@ int rigCommand(const QStringList& arguments) {
     // demonstration's control rate, the link on the car's pseudo-terminal.
     const core::Demonstration& demo = *task.demonstration;
     rig::RigSession rig;
+    rig.setGeofence(fence);
     rig::CameraRequest camera;
     camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
     camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
@@ -186,6 +209,7 @@ int rigCommand(const QStringList& arguments) {
                         {"seconds", trial.seconds},
                         {"stopped", trial.stopped},
                         {"failsafe", trial.fault},
+                        {"failsafeReason", trial.reason},
                         {"frames", static_cast<double>(trial.frames)},
                         {"framesWithPose", static_cast<double>(trial.framesWithPose)},
                         {"linkFramesDecoded", static_cast<double>(decoded)},
@@ -207,7 +231,7 @@ int rigCommand(const QStringList& arguments) {
                                      "frames decoded; frame -> command median %7 ms, p99 %8 ms, worst %9 ms\n")
                           .arg(t + 1)
                           .arg(where, trial.stopped ? QStringLiteral(" (stopped early)")
-                                      : trial.fault ? QStringLiteral(" (failsafe)")
+                                      : trial.fault ? QStringLiteral(" (failsafe: %1)").arg(trial.reason)
                                                     : QString())
                           .arg(trial.framesWithPose)
                           .arg(trial.frames)

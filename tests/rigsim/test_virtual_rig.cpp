@@ -105,6 +105,65 @@ class TestVirtualRig : public QObject {
                  qPrintable(QString::number(travelled[1])));
     }
 
+    void virtualRig_carLeavingTheFenceIsInFailsafeWithinOneFrame() {
+        // Full throttle straight ahead out of a fence 1.2 m ahead of the start: the trial ends
+        // in failsafe in the frame whose pose is first outside, and the receiver is neutral
+        // before the next frame.
+        rigsim::VirtualRigSettings settings;
+        settings.perturbation = 0.0;
+        settings.fence.polygon = {{-0.8, -1.0}, {1.2, -1.0}, {1.2, 1.0}, {-0.8, 1.0}};
+        QVERIFY(settings.fence.problem().isEmpty());
+        rigsim::VirtualRig rig(settings, std::make_unique<Runaway>());
+        QString error;
+        QVERIFY2(rig.open(&error), qPrintable(error));
+        const rigsim::VirtualRig::Trial t = rig.runTrial(3.0, core::ResetMode::Cold, 5);
+        int firstOutside = -1;
+        for (size_t k = 0; k < t.path.size() && firstOutside < 0; ++k) {
+            if (!settings.fence.contains({t.path[k].x, t.path[k].y})) {
+                firstOutside = static_cast<int>(k);
+            }
+        }
+        qInfo("first frame outside %d, trial ended in frame %d: %s", firstOutside, t.stopFrame,
+              qPrintable(t.stopReason));
+        QVERIFY(firstOutside > 0);
+        QVERIFY(t.stopFrame >= firstOutside && t.stopFrame <= firstOutside + 1);
+        QVERIFY2(t.stopReason.contains("left the fence"), qPrintable(t.stopReason));
+        QVERIFY(t.receivedAtStop.has_value());
+        QVERIFY2(t.receivedAtStop->cwiseAbs().maxCoeff() < 0.02,
+                 qPrintable(QString::number(t.receivedAtStop->cwiseAbs().maxCoeff())));
+        // A speed limit alone trips on the same run, earlier; a lost track too.
+        rigsim::VirtualRigSettings fast;
+        fast.perturbation = 0.0;
+        fast.fence.maxSpeed = 1.0;
+        rigsim::VirtualRig limited(fast, std::make_unique<Runaway>());
+        QVERIFY2(limited.open(&error), qPrintable(error));
+        const rigsim::VirtualRig::Trial s = limited.runTrial(3.0, core::ResetMode::Cold, 5);
+        QVERIFY2(s.stopReason.contains("m/s"), qPrintable(s.stopReason));
+        QVERIFY(s.stopFrame > 0 && s.stopFrame < t.stopFrame);
+    }
+
+    void geofence_refusesWhatIsNoFence() {
+        devices::Geofence f;
+        QVERIFY(f.problem().isEmpty() && !f.enabled());
+        f.polygon = {{0, 0}, {1, 0}};
+        QVERIFY(f.problem().contains("at least 3"));
+        f.polygon = {{0, 0}, {1, 0}, {2, 0}};
+        QVERIFY(f.problem().contains("one line"));
+        f.polygon = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};  // a bow tie
+        QVERIFY2(f.problem().contains("cross"), qPrintable(f.problem()));
+        f.polygon = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        QVERIFY(f.problem().isEmpty());
+        QVERIFY(f.contains({0.5, 0.5}) && !f.contains({1.5, 0.5}));
+        f.maxLostSeconds = 0.5;
+        QVERIFY(f.breach(std::nullopt, 0.0, 0.4).isEmpty());
+        QVERIFY(f.breach(std::nullopt, 0.0, 0.6).contains("lost"));
+        QString error;
+        QVERIFY(!devices::Geofence::parsePolygon("0,0;1,x", &error));
+        QVERIFY(error.contains("corner 2"));
+        const auto back = devices::Geofence::fromJson(f.toJson(), &error);
+        QVERIFY(back && back->polygon.size() == 4 && back->maxLostSeconds == 0.5);
+    }
+
     void virtualRig_emergencyStopLeavesTheCarNeutral() {
         std::shared_ptr<const core::Demonstration> demo;
         rigsim::VirtualRig rig({}, makeController(QStringLiteral("playback"), &demo));
