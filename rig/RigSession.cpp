@@ -26,6 +26,8 @@ constexpr int kShutdownWaitMs = 3000;
 struct RigSession::Loop {
     devices::FloorCalibration calibration;  ///< the tracker's, outside trials
     devices::Geofence fence;                ///< every trial's (RigLoop::setGeofence)
+    std::optional<devices::LatencyProbe> probe;  ///< a latency measurement under way
+    std::optional<double> loopLatency;           ///< measured [s], for the compensation
     devices::LedTracker tracker;
     // The closed loop, kept from trial to trial for one method.
     std::unique_ptr<devices::RigLoop> loop;
@@ -65,6 +67,7 @@ RigSession::RigSession(QObject* parent)
     : QObject(parent), worker_(new QObject), loop_(std::make_unique<Loop>()) {
     qRegisterMetaType<RigTrialResult>();
     qRegisterMetaType<RigRecording>();
+    qRegisterMetaType<LatencyMeasurement>();
     qRegisterMetaType<std::optional<devices::PlanarPose>>();
     workerThread_.setObjectName(QStringLiteral("prisca-rig"));
     worker_->moveToThread(&workerThread_);
@@ -154,6 +157,14 @@ bool RigSession::startCamera(const CameraRequest& request, QString* error) {
                 }
             }
             car_->reset(1);
+            try {
+                car_->setCameraDelay(request.virtualCameraDelay);
+            } catch (const std::exception& e) {
+                if (error) {
+                    *error = QString::fromUtf8(e.what());
+                }
+                return false;
+            }
             source = devices::makeSyntheticSource(
                 [car = car_](double t) {
                     return std::optional<devices::PlanarPose>(car->poseAt(t));
@@ -273,6 +284,9 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     if (l.running) {
         return fail(tr("A trial is already running."));
     }
+    if (l.probe) {
+        return fail(tr("The latency is being measured."));
+    }
     if (l.recording) {
         return fail(tr("Stop driving first."));
     }
@@ -289,7 +303,11 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         }
         // Latency compensation as in simulation (EpisodeStepper does the same), from the run's
         // set-up: the sensor latency the profile assumes for the camera.
-        controller->setLatencyCompensation(setup.episode().compensatedLatencySteps());
+        controller->setLatencyCompensation(
+            l.loopLatency ? std::clamp(static_cast<int>(std::lround(
+                                           *l.loopLatency / setup.task().demonstration->dt)),
+                                       0, 40)
+                          : setup.episode().compensatedLatencySteps());
         l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
                                                     std::move(controller), channels_, link_);
         l.loop->setLostTrackDistance(setup.profile().lostTrackDistance);
@@ -383,10 +401,31 @@ void RigSession::stopTrial() {
 void RigSession::onFrame(const devices::CameraFrame& frame) {
     std::optional<devices::PlanarPose> pose;
     std::optional<RigTrialResult> finished;
+    std::optional<LatencyMeasurement> measured;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         Loop& l = *loop_;
-        if (l.running && l.loop && frame.steadyNs >= l.startedNs) {
+        if (l.probe) {
+            pose = l.tracker.track(frame.image, l.calibration).pose;
+            const Eigen::VectorXd action = l.probe->onFrame(frame.steadyNs, pose);
+            link_.setPoseLost(false);
+            link_.setCommand(channels_.command(action));
+            if (l.probe->finished()) {
+                LatencyMeasurement m;
+                m.error = QString::fromStdString(l.probe->failure());
+                if (m.error.isEmpty()) {
+                    for (const devices::LatencyStep& step : l.probe->steps()) {
+                        m.stepsSeconds.push_back(step.latency);
+                    }
+                    m.median = l.probe->medianSeconds();
+                    m.min = l.probe->minSeconds();
+                    m.max = l.probe->maxSeconds();
+                    m.spread = l.probe->spreadSeconds();
+                }
+                l.probe.reset();
+                measured = m;
+            }
+        } else if (l.running && l.loop && frame.steadyNs >= l.startedNs) {
             // The closed loop: pose -> controller -> link, on this thread, no queue between.
             const devices::RigStep step = l.loop->onFrame(frame);
             pose = step.pose;
@@ -440,6 +479,9 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
     }
     if (finished) {
         emit trialFinished(*finished);
+    }
+    if (measured) {
+        emit latencyMeasured(*measured);
     }
 }
 
@@ -550,6 +592,64 @@ void RigSession::emergencyStop() {
     link_.emergencyStop();  // failsafe from the link's next frame, latched
     stopRecording();
     stopTrial();
+    cancelLatencyMeasurement();
+}
+
+bool RigSession::measureLatency(const devices::LatencyProbeSettings& settings, QString* error) {
+    const auto fail = [error](const QString& message) {
+        if (error) {
+            *error = message;
+        }
+        return false;
+    };
+    if (const QString missing = notReady(); !missing.isEmpty()) {
+        return fail(missing);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    Loop& l = *loop_;
+    if (l.running) {
+        return fail(tr("A trial is running."));
+    }
+    if (l.recording) {
+        return fail(tr("Stop driving first."));
+    }
+    if (l.probe) {
+        return fail(tr("The latency is being measured already."));
+    }
+    l.probe.emplace(settings);
+    return true;
+}
+
+void RigSession::cancelLatencyMeasurement() {
+    std::optional<LatencyMeasurement> cancelled;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (loop_->probe) {
+            loop_->probe.reset();
+            cancelled = LatencyMeasurement{};
+            cancelled->error = tr("cancelled");
+        }
+    }
+    if (cancelled) {
+        link_.setCommand(channels_.command(Eigen::VectorXd::Zero(2)));  // the step ends
+        emit latencyMeasured(*cancelled);
+    }
+}
+
+bool RigSession::measuringLatency() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->probe.has_value();
+}
+
+void RigSession::setLoopLatency(std::optional<double> seconds) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    loop_->loopLatency = seconds;
+    loop_->stale = true;  // the compensation is set when the loop is built
+}
+
+std::optional<double> RigSession::loopLatency() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->loopLatency;
 }
 
 void RigSession::resetEmergencyStop() {

@@ -7,6 +7,7 @@
 #include "devices/ChannelMap.h"
 #include "devices/FloorCalibration.h"
 #include "devices/Geofence.h"
+#include "devices/LatencyProbe.h"
 #include "devices/TransmitterLink.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
@@ -50,6 +51,16 @@ struct CameraRequest {
     double virtualPerturbation = 1.0;  ///< the virtual car's (start offsets, friction, gains)
     /// The virtual car's physical parameters (a plant file); null: the catalog's slide-car.
     std::shared_ptr<const sim::PlantParameters> virtualPlant;
+    /// Source::Virtual: the camera shows the car as it was this long ago [s] (an injected
+    /// camera latency, for what measures it).
+    double virtualCameraDelay = 0.0;
+};
+
+/// A measurement of the loop's latency (RigSession::measureLatency).
+struct LatencyMeasurement {
+    std::vector<double> stepsSeconds;  ///< each step's command-to-response latency [s]
+    double median = -1.0, min = -1.0, max = -1.0, spread = 0.0;  ///< [s]; spread: std
+    QString error;  ///< why it failed (then no figures)
 };
 
 /// One trial on the rig.
@@ -166,6 +177,18 @@ class RigSession : public QObject {
     /// quarter second); -1 before the first.
     double recordedSeconds() const;
 
+    // The loop's latency.
+    /// With the car at rest in view, steps the throttle (alternating forward and back) and
+    /// times the response in the camera (devices::LatencyProbe); latencyMeasured() follows.
+    /// False and *error if the camera is off, the link is down, or a trial or recording runs.
+    bool measureLatency(const devices::LatencyProbeSettings& settings, QString* error);
+    void cancelLatencyMeasurement();
+    bool measuringLatency() const;
+    /// The loop latency the controllers compensate on the next trials [s] (rounded to control
+    /// periods); empty: the profile's assumption (the camera's latency in simulation).
+    void setLoopLatency(std::optional<double> seconds);
+    std::optional<double> loopLatency() const;
+
     /// E-STOP: failsafe on the link (latched until reset), the trial and recording end.
     void emergencyStop();
     void resetEmergencyStop();
@@ -179,6 +202,7 @@ class RigSession : public QObject {
     void cameraRunningChanged(bool running);
     void linkStatusChanged(const prisca::devices::LinkStatus& status);
     void trialFinished(const prisca::rig::RigTrialResult& result);
+    void latencyMeasured(const prisca::rig::LatencyMeasurement& result);
     void recordingFinished(const prisca::rig::RigRecording& recording);
 
   private:
@@ -211,4 +235,5 @@ class RigSession : public QObject {
 
 Q_DECLARE_METATYPE(prisca::rig::RigTrialResult)
 Q_DECLARE_METATYPE(prisca::rig::RigRecording)
+Q_DECLARE_METATYPE(prisca::rig::LatencyMeasurement)
 Q_DECLARE_METATYPE(std::optional<prisca::devices::PlanarPose>)

@@ -68,6 +68,16 @@ void VirtualCar::resetLocked(std::uint64_t seed) {
     state_ = car_->reset(seed, sim::Perturbation{perturbation_, perturbation_, perturbation_});
     action_ = Eigen::VectorXd::Zero(car_->info().actionDimension());
     time_ = 0.0;
+    history_.clear();
+    history_.push_back({time_, {state_[0], state_[1], state_[2]}});
+}
+
+void VirtualCar::setCameraDelay(double seconds) {
+    if (!(seconds >= 0.0 && seconds <= 2.0)) {
+        throw std::invalid_argument("the virtual camera's delay must be from 0 to 2 s");
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    cameraDelay_ = seconds;
 }
 
 void VirtualCar::readCommands() {
@@ -108,8 +118,22 @@ devices::PlanarPose VirtualCar::poseAt(double t) {
     while (time_ + dt <= t + 1e-9) {
         state_ = car_->step(action_);
         time_ += dt;
+        history_.push_back({time_, {state_[0], state_[1], state_[2]}});
     }
-    return {state_[0], state_[1], state_[2]};
+    // What the camera shows: the car as it was cameraDelay_ ago (linear between the physics
+    // steps; the heading along the shorter way round).
+    const double seen = t - cameraDelay_;
+    while (history_.size() > 2 && history_[1].first <= seen) {
+        history_.pop_front();
+    }
+    const auto& [t0, p0] = history_.front();
+    if (history_.size() < 2 || seen <= t0) {
+        return p0;
+    }
+    const auto& [t1, p1] = history_[1];
+    const double w = std::clamp((seen - t0) / (t1 - t0), 0.0, 1.0);
+    return {p0.x + w * (p1.x - p0.x), p0.y + w * (p1.y - p0.y),
+            p0.heading + w * std::remainder(p1.heading - p0.heading, 2.0 * M_PI)};
 }
 
 }  // namespace prisca::rigsim

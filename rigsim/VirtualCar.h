@@ -9,6 +9,7 @@
 #include <QString>
 
 #include <atomic>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -47,6 +48,9 @@ class VirtualCar {
     /// just sent its last frame and closed is heard) and returns the action [-1, 1] decoded
     /// from the newest frame (zeros before any frame). Any thread.
     Eigen::VectorXd receivedCommand();
+    /// The camera sees the car as it was `seconds` ago (a camera's exposure-to-arrival
+    /// latency, injected to test what measures it). 0 by default. Any thread.
+    void setCameraDelay(double seconds);
     /// Puts the car back at its start (a new trial), with a new seed.
     void reset(std::uint64_t seed);
     /// Any thread: the car goes back to its start at the next poseAt() (a new trial on the
@@ -71,6 +75,8 @@ class VirtualCar {
     Eigen::VectorXd state_;
     Eigen::VectorXd action_;
     double time_ = 0.0;
+    double cameraDelay_ = 0.0;
+    std::deque<std::pair<double, devices::PlanarPose>> history_;  ///< time, pose per step
     std::atomic<bool> resetRequested_{false};
     std::atomic<std::uint64_t> resetSeed_{1};
     std::atomic<long long> decoded_{0};

@@ -44,6 +44,17 @@ int rigCommand(const QStringList& arguments) {
                   "N", "3");
     line.addValue("seed", "Seed of the trials (the car's start, friction, gains).", "N", "1");
     line.addValue("perturbation", "The simulated car's perturbation level.", "level", "1");
+    line.addFlag("measure-latency",
+                  "First measure the loop's latency (throttle steps with the car at rest, the "
+                  "response timed in the camera); the trials then compensate it.");
+    line.addValue("latency-steps", "Steps the latency measurement times.", "N", "5");
+    line.addValue("loop-latency",
+                  "The loop's latency for the controllers to compensate (a measured value; "
+                  "default: the profile's assumption).",
+                  "ms");
+    line.addValue("inject-camera-delay",
+                  "The virtual camera shows the car this much later (to check the measurement).",
+                  "ms", "0");
     line.addValue("fence",
                   "A fence on the floor, its corners in order: \"x,y;x,y;x,y...\" [m]. A car "
                   "outside it ends the trial in failsafe.",
@@ -97,7 +108,7 @@ int rigCommand(const QStringList& arguments) {
     if (const QString problem = fence.problem(); !problem.isEmpty()) {
         throw UsageError(QStringLiteral("--fence: %1").arg(problem));
     }
-    const int trials = static_cast<int>(line.integer("trials", 1, 1000));
+    const int trials = static_cast<int>(line.integer("trials", 0, 1000));
     const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
     // The run as the simulation sets it up: the rig's loop takes its controller, settle time,
     // lost-track distance and latency compensation from here.
@@ -112,6 +123,11 @@ int rigCommand(const QStringList& arguments) {
     camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
     camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
     camera.virtualPlant = parameters;
+    camera.virtualCameraDelay = line.number("inject-camera-delay", 0.0, 2000.0) / 1000.0;
+    if (line.isSet("loop-latency")) {
+        rig.setLoopLatency(line.number("loop-latency", 0.0, 1000.0) / 1000.0);
+    }
+    const int latencySteps = static_cast<int>(line.integer("latency-steps", 2, 50));
     QString error;
     if (!rig.startCamera(camera, &error)) {
         throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
@@ -147,6 +163,55 @@ int rigCommand(const QStringList& arguments) {
                                   : !rig.linkStatus().connected
                                       ? QStringLiteral("the link did not connect")
                                       : QStringLiteral("the camera saw no car")));
+    }
+    QJsonObject latencyJson;
+    if (line.isSet("measure-latency") && !interrupted()) {
+        std::optional<rig::LatencyMeasurement> measured;
+        QObject::connect(&rig, &rig::RigSession::latencyMeasured,
+                         [&measured](const rig::LatencyMeasurement& m) { measured = m; });
+        devices::LatencyProbeSettings probe;
+        probe.steps = latencySteps;
+        if (!rig.measureLatency(probe, &error)) {
+            throw UsageError(QStringLiteral("the latency measurement could not start: %1")
+                                 .arg(error));
+        }
+        printProgress(QStringLiteral("rig: measuring the loop's latency (%1 steps)")
+                          .arg(latencySteps));
+        waitFor([&] { return measured.has_value(); }, 20000 * latencySteps);
+        printProgress(QString());
+        if (!measured) {
+            rig.cancelLatencyMeasurement();
+            if (!interrupted()) {
+                throw UsageError(QStringLiteral("the latency measurement did not finish"));
+            }
+        } else if (!measured->error.isEmpty()) {
+            throw UsageError(
+                QStringLiteral("the latency measurement failed: %1").arg(measured->error));
+        } else {
+            rig.setLoopLatency(measured->median);
+            QJsonArray steps;
+            QStringList stepText;
+            for (double s : measured->stepsSeconds) {
+                steps.append(s * 1000.0);
+                stepText << QString::number(s * 1000.0, 'f', 1);
+            }
+            latencyJson = {{"medianMs", measured->median * 1000.0},
+                           {"minMs", measured->min * 1000.0},
+                           {"maxMs", measured->max * 1000.0},
+                           {"spreadMs", measured->spread * 1000.0},
+                           {"stepsMs", steps}};
+            if (line.format() == QLatin1String("text")) {
+                printText(QStringLiteral("loop latency (command -> response seen): median %1 ms, "
+                                         "from %2 to %3 ms, std %4 ms over %5 steps (%6 ms); "
+                                         "the trials compensate %1 ms\n")
+                              .arg(measured->median * 1000.0, 0, 'f', 1)
+                              .arg(measured->min * 1000.0, 0, 'f', 1)
+                              .arg(measured->max * 1000.0, 0, 'f', 1)
+                              .arg(measured->spread * 1000.0, 0, 'f', 1)
+                              .arg(measured->stepsSeconds.size())
+                              .arg(stepText.join(", ")));
+            }
+        }
     }
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
@@ -264,6 +329,7 @@ int rigCommand(const QStringList& arguments) {
                               {"method", method},
                               {"seed", static_cast<double>(seed)},
                               {"trials", rows},
+                              {"latency", latencyJson},
                               {"receiverLastCommand", heldJson},
                               {"receiverNeutral", neutral}});
     } else {
