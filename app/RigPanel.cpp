@@ -114,6 +114,9 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
                                   devices::RcProtocol::Multiprotocol}) {
         protocol_->addItem(devices::protocolName(p).toUpper(), static_cast<int>(p));
     }
+    // The trainer-port bridge (devices/firmware): SBUS on the wire, PPM to the transmitter.
+    protocol_->addItem(tr("PPM bridge (trainer port)"),
+                       static_cast<int>(devices::RcProtocol::PpmBridge));
     linkInfo_->setWordWrap(true);
     baud_->setObjectName(QStringLiteral("linkBaud"));
     baud_->setRange(0, 4000000);

@@ -23,12 +23,15 @@ QString protocolName(RcProtocol protocol) {
             return QStringLiteral("sbus");
         case RcProtocol::Multiprotocol:
             return QStringLiteral("multiprotocol");
+        case RcProtocol::PpmBridge:
+            return QStringLiteral("ppm-bridge");
     }
     return {};
 }
 
 std::optional<RcProtocol> parseProtocol(const QString& name) {
-    for (RcProtocol p : {RcProtocol::Crsf, RcProtocol::Sbus, RcProtocol::Multiprotocol}) {
+    for (RcProtocol p : {RcProtocol::Crsf, RcProtocol::Sbus, RcProtocol::Multiprotocol,
+                         RcProtocol::PpmBridge}) {
         if (name.compare(protocolName(p), Qt::CaseInsensitive) == 0) {
             return p;
         }
@@ -42,6 +45,7 @@ SerialFormat defaultSerialFormat(RcProtocol protocol) {
             return {420000, false, false};  // the handset-to-module rate ExpressLRS modules use
         case RcProtocol::Sbus:
         case RcProtocol::Multiprotocol:
+        case RcProtocol::PpmBridge:
             return {100000, true, true};  // 100000 baud 8E2
     }
     return {};
@@ -179,12 +183,12 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
             }
             start += length + 2;
         } else {
-            const int size = protocol_ == RcProtocol::Sbus ? kSbusFrameSize : kMultiFrameSize;
+            const int size = sbusFraming(protocol_) ? kSbusFrameSize : kMultiFrameSize;
             if (available < size) {
                 break;
             }
             const auto* frame = reinterpret_cast<const std::uint8_t*>(buffer_.constData()) + start;
-            const bool ok = protocol_ == RcProtocol::Sbus
+            const bool ok = sbusFraming(protocol_)
                                 ? frame[0] == kSbusHeader && frame[24] == 0x00
                                 : (frame[0] == 0x55 || frame[0] == 0x54);
             if (!ok) {
@@ -202,7 +206,7 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
                     break;  // wait for the next frame's first byte
                 }
                 const std::uint8_t next = frame[size];
-                const bool nextOk = protocol_ == RcProtocol::Sbus ? next == kSbusHeader
+                const bool nextOk = sbusFraming(protocol_) ? next == kSbusHeader
                                                                   : (next == 0x55 || next == 0x54);
                 if (!nextOk) {
                     ++start;
@@ -211,7 +215,7 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
                 }
                 locked_ = true;
             }
-            if (protocol_ == RcProtocol::Sbus) {
+            if (sbusFraming(protocol_)) {
                 lastFailsafe_ = (frame[23] & 0x08) != 0;
                 frames.push_back(unpackChannels(frame + 1));
             } else {

@@ -14,9 +14,17 @@ enum class RcProtocol {
     Crsf,           ///< CRSF RC_CHANNELS_PACKED (ExpressLRS / Crossfire TX modules)
     Sbus,           ///< Futaba SBUS (25-byte frame)
     Multiprotocol,  ///< the DIY Multiprotocol TX module's serial protocol (26-byte frame)
+    /// The trainer-port bridge (devices/firmware): SBUS frames on the wire, not inverted, which
+    /// the bridge turns into 8-channel PPM for a transmitter's trainer port.
+    PpmBridge,
 };
 
-/// "crsf", "sbus", "multiprotocol" (command-line and settings names).
+/// Whether a protocol's frames are SBUS's (SBUS itself and the PPM bridge).
+inline bool sbusFraming(RcProtocol protocol) {
+    return protocol == RcProtocol::Sbus || protocol == RcProtocol::PpmBridge;
+}
+
+/// "crsf", "sbus", "multiprotocol", "ppm-bridge" (command-line and settings names).
 QString protocolName(RcProtocol protocol);
 std::optional<RcProtocol> parseProtocol(const QString& name);
 

@@ -289,6 +289,7 @@ QByteArray TransmitterLinkWorker::encode(const ChannelPulses& pulses, bool fails
         case RcProtocol::Crsf:
             return encodeCrsf(values);
         case RcProtocol::Sbus:
+        case RcProtocol::PpmBridge:
             return encodeSbus(values, failsafe);
         case RcProtocol::Multiprotocol:
             return encodeMultiprotocol(values, settings_.multiprotocol);

@@ -23,7 +23,7 @@ int linkCommand(const QStringList& arguments) {
                        "rate, then failsafe (throttle neutral, steering centred) and close. "
                        "Ctrl-C stops at once, in failsafe."));
     line.addValue("port", "Serial device path (e.g. /dev/ttyUSB0, or a pseudo-terminal).", "path");
-    line.addValue("protocol", "crsf, sbus or multiprotocol.", "name", "crsf");
+    line.addValue("protocol", "crsf, sbus, multiprotocol or ppm-bridge (SBUS to the trainer-port bridge).", "name", "crsf");
     line.addValue("baud",
                   "Baud rate (default: the protocol's: crsf 420000, sbus and "
                   "multiprotocol 100000 8E2).",
@@ -42,7 +42,7 @@ int linkCommand(const QStringList& arguments) {
     settings.port = line.required("port");
     const auto protocol = devices::parseProtocol(line.value("protocol"));
     if (!protocol) {
-        throw UsageError(QStringLiteral("--protocol: '%1' is not crsf, sbus or multiprotocol")
+        throw UsageError(QStringLiteral("--protocol: '%1' is not crsf, sbus, multiprotocol or ppm-bridge")
                              .arg(line.value("protocol")));
     }
     settings.protocol = *protocol;
