@@ -31,6 +31,21 @@ void CameraView::setTask(const QVector<QPointF>& path, const QPointF& lot, doubl
     update();
 }
 
+void CameraView::setClickHint(const QString& hint) {
+    clickHint_ = hint;
+    update();
+}
+
+void CameraView::setFence(const QVector<QPointF>& corners) {
+    fence_ = corners;
+    update();
+}
+
+void CameraView::setBoardCorners(const std::vector<cv::Point2f>& corners) {
+    boardCorners_ = corners;
+    update();
+}
+
 void CameraView::setCalibrating(bool on) {
     calibrating_ = on;
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
@@ -93,12 +108,35 @@ void CameraView::paintEvent(QPaintEvent*) {
             painter.drawLine(floorToWidget(pose_->x, pose_->y),
                              floorToWidget(pose_->x + 0.25 * c, pose_->y + 0.25 * s));
         }
+        if (!fence_.isEmpty()) {
+            QPolygonF fence;
+            for (const QPointF& p : fence_) {
+                fence << floorToWidget(p.x(), p.y());
+            }
+            painter.setPen(QPen(QColor(0xe0, 0x30, 0x30), 2));
+            if (fence_.size() >= 3) {
+                painter.drawPolygon(fence);
+            } else {
+                painter.drawPolyline(fence);
+            }
+            for (const QPointF& w : fence) {
+                painter.drawEllipse(w, 3, 3);
+            }
+        }
         painter.setPen(QPen(Qt::yellow, 1.5));
         for (const devices::CalibrationPoint& p : calibration_.points) {
             const QPointF w = toWidget(p.image);
             painter.drawLine(w - QPointF(6, 0), w + QPointF(6, 0));
             painter.drawLine(w - QPointF(0, 6), w + QPointF(0, 6));
         }
+    }
+    if (!boardCorners_.empty()) {
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(0x2c, 0xd0, 0x2c, 160));
+        for (const cv::Point2f& c : boardCorners_) {
+            painter.drawEllipse(toWidget({c.x, c.y}), 2.5, 2.5);
+        }
+        painter.setBrush(Qt::NoBrush);
     }
     painter.setPen(pose_ ? QColor(0xff, 0x8c, 0x1a) : QColor(0xe0, 0x40, 0x40));
     painter.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
@@ -110,7 +148,9 @@ void CameraView::paintEvent(QPaintEvent*) {
     if (calibrating_) {
         painter.setPen(Qt::yellow);
         painter.drawText(QRectF(8, height() - 26, width() - 16, 20), Qt::AlignLeft,
-                         tr("Calibrating: click a floor point whose position you know"));
+                         clickHint_.isEmpty()
+                             ? tr("Calibrating: click a floor point whose position you know")
+                             : clickHint_);
     }
 }
 

@@ -9,6 +9,7 @@
 #include <QWidget>
 
 #include <optional>
+#include <vector>
 
 namespace prisca::app {
 
@@ -26,6 +27,12 @@ class CameraView : public QWidget {
     /// The demonstration's path and lot on the floor [m] (x, y) and the lot's heading [rad].
     void setTask(const QVector<QPointF>& path, const QPointF& lot, double lotHeading);
     void setCalibrating(bool on);
+    /// Clicks report image points (setCalibrating's mode) with this hint shown at the bottom.
+    void setClickHint(const QString& hint);
+    /// The fence on the floor [m], drawn through the calibration (closed from 3 corners).
+    void setFence(const QVector<QPointF>& corners);
+    /// Board corners captured for the lens calibration [px]: the image's coverage.
+    void setBoardCorners(const std::vector<cv::Point2f>& corners);
 
     QSize sizeHint() const override { return {640, 480}; }
 
@@ -49,6 +56,9 @@ class CameraView : public QWidget {
     QPointF lot_;
     double lotHeading_ = 0.0;
     bool calibrating_ = false;
+    QString clickHint_;
+    QVector<QPointF> fence_;
+    std::vector<cv::Point2f> boardCorners_;
 };
 
 }  // namespace prisca::app

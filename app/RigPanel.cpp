@@ -26,7 +26,9 @@
 #include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSettings>
+#include <QDoubleSpinBox>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -82,8 +84,42 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       drive_(new QPushButton(this)),
       runTrial_(new QPushButton(this)),
       stopTrial_(new QPushButton(this)),
-      trialInfo_(new QLabel(this)) {
+      trialInfo_(new QLabel(this)),
+      lensInfo_(new QLabel(this)),
+      captureBoard_(new QPushButton(this)),
+      fitLens_(new QPushButton(this)),
+      loadLens_(new QPushButton(this)),
+      latencyInfo_(new QLabel(this)),
+      measureLatency_(new QPushButton(this)),
+      fenceInfo_(new QLabel(this)),
+      drawFence_(new QPushButton(this)),
+      clearFence_(new QPushButton(this)),
+      maxSpeed_(new QDoubleSpinBox(this)),
+      maxLost_(new QDoubleSpinBox(this)) {
     setObjectName(QStringLiteral("rigPanel"));
+    lensInfo_->setObjectName(QStringLiteral("lensInfo"));
+    lensInfo_->setWordWrap(true);
+    captureBoard_->setObjectName(QStringLiteral("captureBoard"));
+    fitLens_->setObjectName(QStringLiteral("fitLens"));
+    loadLens_->setObjectName(QStringLiteral("loadLens"));
+    latencyInfo_->setObjectName(QStringLiteral("latencyInfo"));
+    latencyInfo_->setWordWrap(true);
+    measureLatency_->setObjectName(QStringLiteral("measureLatency"));
+    fenceInfo_->setObjectName(QStringLiteral("fenceInfo"));
+    fenceInfo_->setWordWrap(true);
+    drawFence_->setObjectName(QStringLiteral("drawFence"));
+    drawFence_->setCheckable(true);
+    clearFence_->setObjectName(QStringLiteral("clearFence"));
+    maxSpeed_->setObjectName(QStringLiteral("fenceMaxSpeed"));
+    maxSpeed_->setRange(0.0, 20.0);
+    maxSpeed_->setDecimals(1);
+    maxSpeed_->setSingleStep(0.5);
+    maxSpeed_->setSuffix(QStringLiteral(" m/s"));
+    maxLost_->setObjectName(QStringLiteral("fenceMaxLost"));
+    maxLost_->setRange(0.0, 10.0);
+    maxLost_->setDecimals(2);
+    maxLost_->setSingleStep(0.1);
+    maxLost_->setSuffix(QStringLiteral(" s"));
     source_->setObjectName(QStringLiteral("cameraSource"));
     sourcePath_->setObjectName(QStringLiteral("cameraPath"));
     width_->setObjectName(QStringLiteral("cameraWidth"));
@@ -181,9 +217,42 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     controls->addLayout(trialButtons);
     controls->addWidget(trialInfo_);
     controls->addStretch(1);
+    // The set-up a lab does once per rig: the lens, the loop's latency, the fence.
+    auto* setup = new QVBoxLayout;
+    setup->addWidget(lensInfo_);
+    auto* lensButtons = new QHBoxLayout;
+    lensButtons->addWidget(captureBoard_);
+    lensButtons->addWidget(fitLens_);
+    lensButtons->addWidget(loadLens_);
+    setup->addLayout(lensButtons);
+    setup->addSpacing(12);
+    setup->addWidget(latencyInfo_);
+    setup->addWidget(measureLatency_);
+    setup->addSpacing(12);
+    setup->addWidget(fenceInfo_);
+    auto* fenceButtons = new QHBoxLayout;
+    fenceButtons->addWidget(drawFence_);
+    fenceButtons->addWidget(clearFence_);
+    setup->addLayout(fenceButtons);
+    auto* fenceLimits = new QFormLayout;
+    maxSpeedLabel_ = new QLabel(this);
+    maxLostLabel_ = new QLabel(this);
+    fenceLimits->addRow(maxSpeedLabel_, maxSpeed_);
+    fenceLimits->addRow(maxLostLabel_, maxLost_);
+    setup->addLayout(fenceLimits);
+    setup->addStretch(1);
+    tabs_ = new QTabWidget(this);
+    tabs_->setObjectName(QStringLiteral("rigTabs"));
+    auto* runPage = new QWidget(tabs_);
+    runPage->setLayout(controls);
+    auto* setupPage = new QWidget(tabs_);
+    setupPage->setObjectName(QStringLiteral("rigSetup"));
+    setupPage->setLayout(setup);
+    tabs_->addTab(runPage, QString());
+    tabs_->addTab(setupPage, QString());
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(view_, 3);
-    layout->addLayout(controls, 2);
+    layout->addWidget(tabs_, 2);
 
     connect(&rig_, &rig::RigSession::frameReady, this, &RigPanel::showFrame);
     connect(&rig_, &rig::RigSession::cameraFailed, this,
@@ -214,10 +283,56 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(calibrate_, &QPushButton::toggled, this, [this](bool on) {
         if (on) {
             clicked_.clear();
+            drawFence_->setChecked(false);
         }
+        view_->setClickHint(QString());
         view_->setCalibrating(on);
     });
+    connect(drawFence_, &QPushButton::toggled, this, [this](bool on) {
+        if (on) {
+            calibrate_->setChecked(false);
+        }
+        view_->setClickHint(on ? tr("Fence: click its corners in order around the floor; "
+                                    "click Draw fence again to finish")
+                               : QString());
+        view_->setCalibrating(on);
+    });
+    connect(clearFence_, &QPushButton::clicked, this, &RigPanel::clearFence);
+    connect(maxSpeed_, &QDoubleSpinBox::valueChanged, this, &RigPanel::applyFence);
+    connect(maxLost_, &QDoubleSpinBox::valueChanged, this, &RigPanel::applyFence);
+    connect(captureBoard_, &QPushButton::clicked, this, &RigPanel::captureBoardView);
+    connect(fitLens_, &QPushButton::clicked, this, &RigPanel::fitLens);
+    connect(loadLens_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open camera intrinsics"),
+                                                          QString(), tr("Camera (*.json)"));
+        if (!path.isEmpty()) {
+            loadLens(path);
+        }
+    });
+    connect(measureLatency_, &QPushButton::clicked, this, &RigPanel::measureLatency);
+    connect(&rig_, &rig::RigSession::latencyMeasured, this,
+            [this](const rig::LatencyMeasurement& m) {
+                measureLatency_->setEnabled(true);
+                if (!m.error.isEmpty()) {
+                    latencyInfo_->setText(tr("Loop latency: not measured (%1)").arg(m.error));
+                    return;
+                }
+                rig_.setLoopLatency(m.median);
+                latencyInfo_->setText(
+                    tr("Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 "
+                       "ms); the trials compensate it")
+                        .arg(m.median * 1000.0, 0, 'f', 1)
+                        .arg(m.stepsSeconds.size())
+                        .arg(m.min * 1000.0, 0, 'f', 1)
+                        .arg(m.max * 1000.0, 0, 'f', 1)
+                        .arg(m.spread * 1000.0, 0, 'f', 1));
+            });
     connect(view_, &CameraView::imagePointClicked, this, [this](const QPointF& image) {
+        if (drawFence_->isChecked()) {
+            const cv::Point2d floor = rig_.calibration().toFloor({image.x(), image.y()});
+            addFenceCorner(QPointF(floor.x, floor.y));
+            return;
+        }
         bool ok = false;
         const QString text = QInputDialog::getText(
             this, tr("Floor point"),
@@ -532,7 +647,7 @@ void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
         return;
     }
     QString error;
-    const auto fit = devices::FloorCalibration::fit(clicked_, &error);
+    const auto fit = devices::FloorCalibration::fit(clicked_, &error, lens_);
     if (!fit) {
         calibrationInfo_->setText(error);
         return;
@@ -544,6 +659,7 @@ void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
 
 void RigPanel::showFrame(const devices::CameraFrame& frame,
                          const std::optional<devices::PlanarPose>& pose) {
+    lastFrame_ = frame.image;
     view_->setFrame(toImage(frame.image), pose);
     if (pose && session_.profile().info.name == QLatin1String("slidecar")) {
         Eigen::VectorXd state = Eigen::VectorXd::Zero(6);
@@ -653,6 +769,183 @@ void RigPanel::retranslateUi() {
         tr("The session's method drives the car through the link, with the "
            "camera's pose as its state"));
     stopTrial_->setText(tr("Stop the trial"));
+    tabs_->setTabText(0, tr("Camera, link, trials"));
+    tabs_->setTabText(1, tr("Lens, latency, fence"));
+    captureBoard_->setText(tr("Capture board view"));
+    captureBoard_->setToolTip(tr("Find the 9 x 6 chessboard (40 mm squares) in the camera's "
+                                 "image and keep its corners; capture views over the whole "
+                                 "image, tilted, its corners too"));
+    fitLens_->setText(tr("Fit lens"));
+    fitLens_->setToolTip(tr("Fit the camera's intrinsics and distortion to the views captured; "
+                            "the floor calibration is fitted again through them"));
+    loadLens_->setText(tr("Load lens..."));
+    loadLens_->setToolTip(tr("Camera intrinsics from a file (prisca-cli calibrate-camera)"));
+    measureLatency_->setText(tr("Measure latency"));
+    measureLatency_->setToolTip(tr("With the car at rest in view and the link connected: step "
+                                   "the throttle forward and back and time the response in "
+                                   "the camera"));
+    drawFence_->setText(tr("Draw fence"));
+    clearFence_->setText(tr("Clear fence"));
+    maxSpeedLabel_->setText(tr("Speed limit:"));
+    maxSpeed_->setSpecialValueText(tr("none"));
+    maxLostLabel_->setText(tr("Longest lost track:"));
+    maxLost_->setSpecialValueText(tr("none"));
+    showLensInfo();
+    if (latencyInfo_->text().isEmpty() || !rig_.loopLatency()) {
+        latencyInfo_->setText(tr("Loop latency: not measured (the controllers assume the "
+                                 "camera's latency)."));
+    }
+    applyFence();
+}
+
+}  // namespace prisca::app
+
+namespace prisca::app {
+
+bool RigPanel::captureBoardView() {
+    if (lastFrame_.empty()) {
+        lensInfo_->setText(tr("Lens: no camera image to capture a board view from."));
+        return false;
+    }
+    std::vector<cv::Point2f> corners = devices::findBoardCorners(lastFrame_, devices::BoardSpec{});
+    if (corners.empty()) {
+        lensInfo_->setText(tr("Lens: no whole 9 x 6 board in this view (%1 captured). Hold the "
+                              "board so all of it is seen, still, and try again.")
+                               .arg(boardViews_.size()));
+        return false;
+    }
+    boardViews_.push_back(std::move(corners));
+    lensImageSize_ = lastFrame_.size();
+    std::vector<cv::Point2f> all;
+    for (const auto& v : boardViews_) {
+        all.insert(all.end(), v.begin(), v.end());
+    }
+    view_->setBoardCorners(all);
+    showLensInfo();
+    return true;
+}
+
+bool RigPanel::fitLens() {
+    QString error;
+    auto lens = devices::calibrateLensFromCorners(boardViews_, devices::BoardSpec{},
+                                                  lensImageSize_, &error);
+    if (lens) {
+        if (const QString problem = lens->plausibilityProblem(); !problem.isEmpty()) {
+            error = tr("refused: %1").arg(problem);
+            lens.reset();
+        }
+    }
+    if (!lens) {
+        lensInfo_->setText(tr("Lens: %1").arg(error));
+        return false;
+    }
+    lens_ = lens;
+    boardViews_.clear();
+    view_->setBoardCorners({});
+    // The floor calibration's own points, fitted again through the lens.
+    if (rig_.calibration().points.size() >= 4) {
+        if (const auto refit = rig_.calibration().withLens(lens_, &error)) {
+            rig_.setCalibration(*refit);
+            view_->setCalibration(rig_.calibration());
+        }
+    }
+    showLensInfo();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save camera intrinsics"),
+                                                      QStringLiteral("camera.json"),
+                                                      tr("Camera (*.json)"));
+    if (!path.isEmpty() && !lens_->save(path, &error)) {
+        QMessageBox::warning(this, tr("Save camera intrinsics"), error);
+    }
+    retranslateUi();
+    return true;
+}
+
+bool RigPanel::loadLens(const QString& path) {
+    QString error;
+    const auto lens = devices::CameraLens::load(path, &error);
+    if (!lens) {
+        QMessageBox::warning(this, tr("Open camera intrinsics"), error);
+        return false;
+    }
+    lens_ = lens;
+    if (rig_.calibration().points.size() >= 4) {
+        if (const auto refit = rig_.calibration().withLens(lens_, &error)) {
+            rig_.setCalibration(*refit);
+            view_->setCalibration(rig_.calibration());
+        }
+    }
+    showLensInfo();
+    retranslateUi();
+    return true;
+}
+
+void RigPanel::showLensInfo() {
+    QString text;
+    if (lens_) {
+        text = tr("Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.")
+                   .arg(lens_->matrix(0, 0), 0, 'f', 1)
+                   .arg(lens_->distortion[0], 0, 'f', 3)
+                   .arg(lens_->distortion[1], 0, 'f', 3)
+                   .arg(lens_->rmsPixels, 0, 'f', 3);
+    } else {
+        text = tr("Lens: none (the floor calibration is a homography alone).");
+    }
+    if (!boardViews_.empty()) {
+        text += QLatin1Char(' ') +
+                tr("%1 board view(s) captured (at least %2; move the board over the whole "
+                   "image, its corners too).")
+                    .arg(boardViews_.size())
+                    .arg(devices::kMinLensViews);
+    }
+    lensInfo_->setText(text);
+}
+
+bool RigPanel::measureLatency() {
+    QString error;
+    if (!rig_.measureLatency({}, &error)) {
+        latencyInfo_->setText(tr("Loop latency: %1").arg(error));
+        return false;
+    }
+    measureLatency_->setEnabled(false);
+    latencyInfo_->setText(tr("Loop latency: measuring (keep the car at rest in view)..."));
+    return true;
+}
+
+void RigPanel::addFenceCorner(const QPointF& floor) {
+    fenceCorners_.push_back(floor);
+    applyFence();
+}
+
+void RigPanel::clearFence() {
+    fenceCorners_.clear();
+    drawFence_->setChecked(false);
+    applyFence();
+}
+
+void RigPanel::applyFence() {
+    devices::Geofence fence;
+    for (const QPointF& p : fenceCorners_) {
+        fence.polygon.emplace_back(p.x(), p.y());
+    }
+    fence.maxSpeed = maxSpeed_->value();
+    fence.maxLostSeconds = maxLost_->value();
+    view_->setFence(fenceCorners_);
+    QString problem = fence.problem();
+    if (fence.polygon.size() < 3) {
+        problem.clear();
+        fence.polygon.clear();  // not a fence yet: the limits alone
+    }
+    if (!problem.isEmpty()) {
+        fenceInfo_->setText(tr("Fence: %1").arg(problem));
+        fence.polygon.clear();
+    } else if (fenceCorners_.size() >= 3) {
+        fenceInfo_->setText(tr("Fence: %1 corners; a car outside it ends the trial in failsafe.")
+                                .arg(fenceCorners_.size()));
+    } else {
+        fenceInfo_->setText(tr("Fence: none (%1 corner(s) clicked; 3 or more make one).")
+                                .arg(fenceCorners_.size()));
+    }
+    rig_.setGeofence(fence);
 }
 
 }  // namespace prisca::app

@@ -14,7 +14,9 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
+class QDoubleSpinBox;
 class QTimer;
+class QTabWidget;
 
 namespace prisca::app {
 
@@ -47,6 +49,30 @@ class RigPanel : public QWidget {
     bool saveCalibration(const QString& path);
     /// Adds a calibration point (image px, floor m); fits once there are four or more.
     void addCalibrationPoint(const QPointF& image, const QPointF& floor);
+
+    // The lens (camera intrinsics).
+    /// Finds the chessboard in the newest camera frame and keeps its corners; false (and the
+    /// lens line says why) if there is no frame or no whole board in it.
+    bool captureBoardView();
+    /// Fits the lens to the views captured; the floor calibration is fitted again under it.
+    bool fitLens();
+    bool loadLens(const QString& path);
+    int boardViewsCaptured() const { return static_cast<int>(boardViews_.size()); }
+    const std::optional<devices::CameraLens>& lens() const { return lens_; }
+
+    // The loop's latency.
+    /// Starts the measurement (the car at rest in view, the link up); the result is shown and
+    /// the trials compensate it.
+    bool measureLatency();
+    bool measuringLatency() const { return rig_.measuringLatency(); }
+    std::optional<double> loopLatency() const { return rig_.loopLatency(); }
+
+    // The fence.
+    /// Adds a corner [m] (a click on the camera in fence mode does it through the
+    /// calibration); from three corners the fence is in force.
+    void addFenceCorner(const QPointF& floor);
+    void clearFence();
+    devices::Geofence geofence() const { return rig_.geofence(); }
 
     const devices::FloorCalibration& calibration() const { return rig_.calibration(); }
     std::optional<devices::PlanarPose> lastPose() const { return rig_.lastPose(); }
@@ -102,10 +128,20 @@ class RigPanel : public QWidget {
     void showTrialResult(const rig::RigTrialResult& result);
     void useRecording(const rig::RigRecording& recording);
     void driveTick();
+    void applyFence();
+    void showLensInfo();
 
     LabSession& session_;
     rig::RigSession rig_;
     std::vector<devices::CalibrationPoint> clicked_;
+    cv::Mat lastFrame_;  ///< the newest frame shown (for capturing board views)
+    std::vector<std::vector<cv::Point2f>> boardViews_;
+    std::optional<devices::CameraLens> lens_;
+    QVector<QPointF> fenceCorners_;
+    QLabel* maxSpeedLabel_ = nullptr;
+    QLabel* maxLostLabel_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
+    cv::Size lensImageSize_;
 
     CameraView* view_;
     QLabel* sourceLabel_;
@@ -140,6 +176,17 @@ class RigPanel : public QWidget {
     QPushButton* runTrial_;
     QPushButton* stopTrial_;
     QLabel* trialInfo_;
+    QLabel* lensInfo_;
+    QPushButton* captureBoard_;
+    QPushButton* fitLens_;
+    QPushButton* loadLens_;
+    QLabel* latencyInfo_;
+    QPushButton* measureLatency_;
+    QLabel* fenceInfo_;
+    QPushButton* drawFence_;
+    QPushButton* clearFence_;
+    QDoubleSpinBox* maxSpeed_;
+    QDoubleSpinBox* maxLost_;
     QString lastResult_;
     bool recordingEndedByEmergency_ = false;
 };
