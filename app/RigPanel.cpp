@@ -241,6 +241,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     fenceLimits->addRow(maxLostLabel_, maxLost_);
     setup->addLayout(fenceLimits);
     setup->addStretch(1);
+    // Room for three lines each, so the buttons below do not move as the messages change.
+    for (QLabel* info : {lensInfo_, latencyInfo_, fenceInfo_}) {
+        info->setMinimumHeight(3 * info->fontMetrics().lineSpacing());
+        info->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    }
     tabs_ = new QTabWidget(this);
     tabs_->setObjectName(QStringLiteral("rigTabs"));
     auto* runPage = new QWidget(tabs_);

@@ -50,6 +50,7 @@ void RigLoop::startTrial(core::ResetMode mode) {
     controller_->reset(mode);
     guard_.reset();
     tripped_.clear();
+    fenceTripped_ = false;
     lostSinceNs_ = -1;
     estimator_.reset();
     if (filter_) {
@@ -103,12 +104,17 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
     const TrackResult tracked = tracker_.track(frame.image, calibration_);
     step.pose = tracked.pose;
     // Once tripped the trial is over: failsafe whatever comes.
-    const auto trip = [&](const QString& reason) {
+    const auto trip = [&](const QString& reason, bool fence = false) {
         if (tripped_.isEmpty()) {
             qCWarning(lcRig) << "failsafe:" << reason;
             tripped_ = reason;
+            fenceTripped_ = fence;
         }
-        link_.reportControllerFault();
+        if (fenceTripped_) {
+            link_.reportGeofenceBreach();
+        } else {
+            link_.reportControllerFault();
+        }
         step.fault = true;
         step.stopReason = tripped_;
         return step;
@@ -126,7 +132,7 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
         if (const QString why = fence_.breach(std::nullopt, 0.0,
                                               (frame.steadyNs - lostSinceNs_) * 1e-9);
             !why.isEmpty()) {
-            return trip(why);
+            return trip(why, true);
         }
         link_.setPoseLost(true);  // failsafe from the link's next frame
         estimator_.reset();
@@ -142,7 +148,7 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
     if (fence_.enabled()) {
         const double speed = std::hypot(step.state[3], step.state[4]);
         if (const QString why = fence_.breach(tracked.pose, speed, 0.0); !why.isEmpty()) {
-            return trip(why);
+            return trip(why, true);
         }
     }
     bool offTrack = false;

@@ -101,6 +101,7 @@ class RigLoop {
     core::LostTrackGuard guard_;
     Geofence fence_;
     QString tripped_;            ///< why the trial ended in failsafe (latched until startTrial)
+    bool fenceTripped_ = false;  ///< ... and whether that was the fence
     std::int64_t lostSinceNs_ = -1;  ///< when the pose was lost (-1: tracked)
     ChannelMap channels_;
     TransmitterLink& link_;

@@ -42,6 +42,8 @@ QString failsafeReasonText(FailsafeReason reason) {
             return QStringLiteral("camera pose lost");
         case FailsafeReason::ControllerFault:
             return QStringLiteral("controller fault");
+        case FailsafeReason::Geofence:
+            return QStringLiteral("fence breached");
     }
     return {};
 }
@@ -101,6 +103,7 @@ void TransmitterLink::emergencyStop() {
 
 void TransmitterLink::resetEmergencyStop() {
     worker_->fault.store(false);
+    worker_->fenceBreached.store(false);
     worker_->emergency.store(false);
 }
 
@@ -109,6 +112,11 @@ void TransmitterLink::setPoseLost(bool lost) {
 }
 
 void TransmitterLink::reportControllerFault() {
+    worker_->fault.store(true);
+}
+
+void TransmitterLink::reportGeofenceBreach() {
+    worker_->fenceBreached.store(true);
     worker_->fault.store(true);
 }
 
@@ -326,7 +334,7 @@ void TransmitterLinkWorker::tick() {
     if (emergency.load() || processfailsafe::ending()) {
         reason = FailsafeReason::EmergencyStop;
     } else if (fault.load()) {
-        reason = FailsafeReason::ControllerFault;
+        reason = fenceBreached.load() ? FailsafeReason::Geofence : FailsafeReason::ControllerFault;
     } else if (poseLost.load()) {
         reason = FailsafeReason::PoseLost;
     }

@@ -44,7 +44,15 @@ QString serialPortPath(const QString& port);
 QString serialPortProblem(const QString& port);
 
 /// Why failsafe is being sent (None: the command is).
-enum class FailsafeReason { None, NoCommand, Stale, EmergencyStop, PoseLost, ControllerFault };
+enum class FailsafeReason {
+    None,
+    NoCommand,
+    Stale,
+    EmergencyStop,
+    PoseLost,
+    ControllerFault,
+    Geofence,  ///< the trial breached its fence (RigLoop)
+};
 QString failsafeReasonText(FailsafeReason reason);
 
 /// What the link is doing, for the status line.
@@ -87,6 +95,8 @@ class TransmitterLink : public QObject {
     void setPoseLost(bool lost);
     /// The controller failed (latched like E-STOP until resetEmergencyStop()).
     void reportControllerFault();
+    /// The trial breached its fence (latched the same way; the status says so).
+    void reportGeofenceBreach();
 
     /// Frames written so far (any thread).
     long long framesSent() const;
@@ -115,6 +125,7 @@ class TransmitterLinkWorker : public QObject {
     std::atomic<bool> emergency{false};
     std::atomic<bool> poseLost{false};
     std::atomic<bool> fault{false};
+    std::atomic<bool> fenceBreached{false};  ///< with `fault`: the fault was the fence
     std::atomic<long long> framesSent{0};
     std::atomic<std::int64_t> lastCommandNs{0};
     std::atomic<std::int64_t> lastWriteNs{0};

@@ -4,389 +4,389 @@
 <context>
     <name>MethodParameter</name>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="268"/>
+        <location filename="../sim/MethodCatalog.cpp" line="269"/>
         <source>Horizon H</source>
         <translation>時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="269"/>
+        <location filename="../sim/MethodCatalog.cpp" line="270"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="283"/>
+        <location filename="../sim/MethodCatalog.cpp" line="284"/>
         <source>Depreciation γ</source>
         <translation>折舊 γ</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="284"/>
+        <location filename="../sim/MethodCatalog.cpp" line="285"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="296"/>
+        <location filename="../sim/MethodCatalog.cpp" line="297"/>
         <source>Step rate β</source>
         <translation>步長速率 β</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="297"/>
+        <location filename="../sim/MethodCatalog.cpp" line="298"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="309"/>
+        <location filename="../sim/MethodCatalog.cpp" line="310"/>
         <source>Automatic scales</source>
         <translation>自動比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="310"/>
+        <location filename="../sim/MethodCatalog.cpp" line="311"/>
         <source>Feature scales, α_0 and matching window derived from the demonstration and the fit when PRISCA starts; off: the step scale and feature scales set here.</source>
         <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="571"/>
+        <location filename="../sim/MethodCatalog.cpp" line="572"/>
         <source>Start</source>
         <translation>起點</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="572"/>
+        <location filename="../sim/MethodCatalog.cpp" line="573"/>
         <source>The feedback law the PD family and PRISCA (its prior) start from. tuned: the plant profile&apos;s PD gains; demo: derived from the demonstration, the fit and the actuator limits alone (a stationary LQR gain on the fitted model with weights from the demonstration&apos;s own scales, no faster than the fitted dead time allows, on the errors B~ names per control but those the action sets); PRISCA then also takes its automatic step and scales.</source>
         <translation>PD 系列及 PRISCA（其先驗）起始的回饋律。tuned：設備設定檔中調校好的 PD 增益；demo：只由示範、擬合及致動器限制推導（以示範本身的尺度為權重、在擬合模型上求得的穩態 LQR 增益，速度不超過擬合死區時間所容許，只用 B~ 為每個控制指明、而非由動作直接設定的誤差）；PRISCA 亦隨之採用自動步長及比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="339"/>
+        <location filename="../sim/MethodCatalog.cpp" line="340"/>
         <source>Step scale α_0</source>
         <translation>步長比例 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="324"/>
+        <location filename="../sim/MethodCatalog.cpp" line="325"/>
         <source>Automatic α_0</source>
         <translation>自動 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="326"/>
+        <location filename="../sim/MethodCatalog.cpp" line="327"/>
         <source>α_0 of the automatic scales: the fraction of a Newton step on the cost&apos;s curvature taken per control step.</source>
         <translation>自動尺度的 α_0：每個控制步按成本曲率所走的牛頓步比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="340"/>
+        <location filename="../sim/MethodCatalog.cpp" line="341"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B). Not used with automatic scales.</source>
         <translation>式 3 的 α_0（論文用 1；合適大小取決於 e、φ 及 B 的單位）。使用自動比例時不採用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="353"/>
+        <location filename="../sim/MethodCatalog.cpp" line="354"/>
         <source>θ bound</source>
         <translation>θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="354"/>
+        <location filename="../sim/MethodCatalog.cpp" line="355"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent).</source>
         <translation>若大於 0，每次更新後 θ 保持在 |θ_i| ≤ 界限內（投影下降）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="356"/>
-        <location filename="../sim/MethodCatalog.cpp" line="407"/>
-        <location filename="../sim/MethodCatalog.cpp" line="686"/>
+        <location filename="../sim/MethodCatalog.cpp" line="357"/>
+        <location filename="../sim/MethodCatalog.cpp" line="408"/>
+        <location filename="../sim/MethodCatalog.cpp" line="687"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="367"/>
+        <location filename="../sim/MethodCatalog.cpp" line="368"/>
         <source>Start from the PD law</source>
         <translation>由 PD 控制律開始</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="368"/>
+        <location filename="../sim/MethodCatalog.cpp" line="369"/>
         <source>The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds the robot on the path; off: θ = 0 is no feedback (Algorithm 1).</source>
         <translation>策略為 u = u* + PD 控制律 + θᵀφ，因此 θ = 0 已能讓機械人保持在路徑上；關閉：θ = 0 即無回饋（演算法 1）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="381"/>
+        <location filename="../sim/MethodCatalog.cpp" line="382"/>
         <source>Gradient</source>
         <translation>梯度</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="382"/>
+        <location filename="../sim/MethodCatalog.cpp" line="383"/>
         <source>one-step: eq. 14 as printed; closed-loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
         <translation>one-step：照印出的式 14；closed-loop：式 4 的連鎖律經擬合模型及策略本身的回饋在窗口內傳遞。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="403"/>
+        <location filename="../sim/MethodCatalog.cpp" line="404"/>
         <source>Effort weight R</source>
         <translation>施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="404"/>
+        <location filename="../sim/MethodCatalog.cpp" line="405"/>
         <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound.</source>
         <translation>成本亦計入修正的施力，每個控制量 R (θᵀφ)²：令學習在無 θ 界限下收斂。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="426"/>
+        <location filename="../sim/MethodCatalog.cpp" line="427"/>
         <source>Local optimal baseline</source>
         <translation>局部最優基線</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="427"/>
+        <location filename="../sim/MethodCatalog.cpp" line="428"/>
         <source>Subtract the local optimal baseline b (eq. 15) from the gradient; off: b = 0.</source>
         <translation>從梯度減去局部最優基線 b（式 15）；關閉：b = 0。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="442"/>
+        <location filename="../sim/MethodCatalog.cpp" line="443"/>
         <source>Inverse depreciation</source>
         <translation>逆折舊</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="443"/>
+        <location filename="../sim/MethodCatalog.cpp" line="444"/>
         <source>Weigh the window&apos;s gradients by the inverse depreciation D (eq. 10); off: D = 1.</source>
         <translation>以逆折舊 D（式 10）加權窗口內的梯度；關閉：D = 1。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="460"/>
+        <location filename="../sim/MethodCatalog.cpp" line="461"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="461"/>
+        <location filename="../sim/MethodCatalog.cpp" line="462"/>
         <source>fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; drift: eq. 5 in full, the state&apos;s own drift A fitted with B.</source>
         <translation>fitted：擬合得出的 B = B_v (.) B~（式 8）；signs：只用 B~；drift：完整的式 5，狀態本身的漂移 A 與 B 一併擬合。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="478"/>
+        <location filename="../sim/MethodCatalog.cpp" line="479"/>
         <source>Model delay d</source>
         <translation>模型延遲 d</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="480"/>
+        <location filename="../sim/MethodCatalog.cpp" line="481"/>
         <source>The measurement&apos;s age d in the closed-loop gradient&apos;s model.</source>
         <translation>閉環梯度模型中量測的時延 d。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="494"/>
+        <location filename="../sim/MethodCatalog.cpp" line="495"/>
         <source>Phase features</source>
         <translation>階段特徵</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="495"/>
+        <location filename="../sim/MethodCatalog.cpp" line="496"/>
         <source>Length of the stretches of the demonstration over which PRISCA learns a correction of the demonstration&apos;s action (one feature per stretch and control); 0: none.</source>
         <translation>PRISCA 在示範中學習示範動作修正的每段長度（每段每個控制一個特徵）；0：不用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="509"/>
+        <location filename="../sim/MethodCatalog.cpp" line="510"/>
         <source>Learn where explained</source>
         <translation>只在可解釋處學習</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="510"/>
+        <location filename="../sim/MethodCatalog.cpp" line="511"/>
         <source>The closed-loop gradient learns only on the samples a robust fit explains.</source>
         <translation>閉環梯度只在穩健擬合能解釋的樣本上學習。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="527"/>
+        <location filename="../sim/MethodCatalog.cpp" line="528"/>
         <source>Heading feedback reversed</source>
         <translation>倒車時反轉航向回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="528"/>
+        <location filename="../sim/MethodCatalog.cpp" line="529"/>
         <source>For a vehicle, the feedback law (the PD family&apos;s, PRISCA&apos;s prior) turns the sign of its heading and yaw-rate terms where the demonstration drives backwards, where steering turns the car the other way; off: the same law in both directions.</source>
         <translation>對車輛而言，回饋律（PD 系列的、PRISCA 先驗的）在示範倒車之處反轉其航向及偏航率項的符號，因為該處轉向令車向另一邊轉；關閉：前進與倒車用同一回饋律。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="545"/>
+        <location filename="../sim/MethodCatalog.cpp" line="546"/>
         <source>Feedback where explained</source>
         <translation>只在可解釋處回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="546"/>
+        <location filename="../sim/MethodCatalog.cpp" line="547"/>
         <source>The feedback law (the PD family&apos;s, PRISCA&apos;s prior) acts only while the reference is a sample the robust fit explains: not in a slide, where the linear model the gains stand on does not hold. auto: with the demonstration start, not with the tuned one.</source>
         <translation>回饋律（PD 系列的、PRISCA 先驗的）只在參考樣本可被穩健擬合解釋時作用：滑行中不作用，因為增益所依據的線性模型在那裏不成立。auto：以示範起始時啟用，以調校起始時不啟用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="596"/>
+        <location filename="../sim/MethodCatalog.cpp" line="597"/>
         <source>Matching window</source>
         <translation>匹配窗口</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="598"/>
+        <location filename="../sim/MethodCatalog.cpp" line="599"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="613"/>
+        <location filename="../sim/MethodCatalog.cpp" line="614"/>
         <source>PD gain Kp</source>
         <translation>PD 增益 Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="614"/>
+        <location filename="../sim/MethodCatalog.cpp" line="615"/>
         <source>Proportional gain per control on its error combination c_l · e (u = u* − Kp ε − Kd dε/dt).</source>
         <translation>每個控制量對其誤差組合 c_l · e 的比例增益（u = u* − Kp ε − Kd dε/dt）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="627"/>
+        <location filename="../sim/MethodCatalog.cpp" line="628"/>
         <source>PD gain Kd</source>
         <translation>PD 增益 Kd</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="628"/>
+        <location filename="../sim/MethodCatalog.cpp" line="629"/>
         <source>Derivative gain per control on the rate of its error combination.</source>
         <translation>每個控制量對其誤差組合變化率的微分增益。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="641"/>
+        <location filename="../sim/MethodCatalog.cpp" line="642"/>
         <source>PD smoothing H</source>
         <translation>PD 平滑 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="642"/>
+        <location filename="../sim/MethodCatalog.cpp" line="643"/>
         <source>PD+H and PD+H+LSD smooth the error over this many steps (the weights of eq. 9).</source>
         <translation>PD+H 及 PD+H+LSD 在這麼多步上平滑誤差（式 9 的權重）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="656"/>
+        <location filename="../sim/MethodCatalog.cpp" line="657"/>
         <source>PGSD horizon H</source>
         <translation>PGSD 時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="657"/>
+        <location filename="../sim/MethodCatalog.cpp" line="658"/>
         <source>PGSD&apos;s smoothing horizon H (eq. 9).</source>
         <translation>PGSD 的平滑時域 H（式 9）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="670"/>
+        <location filename="../sim/MethodCatalog.cpp" line="671"/>
         <source>PGSD step α</source>
         <translation>PGSD 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="671"/>
+        <location filename="../sim/MethodCatalog.cpp" line="672"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="682"/>
+        <location filename="../sim/MethodCatalog.cpp" line="683"/>
         <source>PGSD θ bound</source>
         <translation>PGSD θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="684"/>
+        <location filename="../sim/MethodCatalog.cpp" line="685"/>
         <source>If above 0, PGSD&apos;s θ is kept in |θ_i| ≤ bound after each update.</source>
         <translation>若大於 0，每次更新後 PGSD 的 θ 保持在 |θ_i| ≤ 界限內。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="697"/>
+        <location filename="../sim/MethodCatalog.cpp" line="698"/>
         <source>PEGASUS iterations</source>
         <translation>PEGASUS 迭代次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="699"/>
+        <location filename="../sim/MethodCatalog.cpp" line="700"/>
         <source>Gradient steps PEGASUS takes on its fixed scenarios before a run.</source>
         <translation>PEGASUS 在運行前於其固定情境上所作的梯度步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="713"/>
+        <location filename="../sim/MethodCatalog.cpp" line="714"/>
         <source>PEGASUS scenarios</source>
         <translation>PEGASUS 情境數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="715"/>
+        <location filename="../sim/MethodCatalog.cpp" line="716"/>
         <source>Fixed scenarios (start, perturbation, noise) each evaluation averages.</source>
         <translation>每次評估所平均的固定情境（起點、擾動、雜訊）數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="729"/>
+        <location filename="../sim/MethodCatalog.cpp" line="730"/>
         <source>PEGASUS step α</source>
         <translation>PEGASUS 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="730"/>
+        <location filename="../sim/MethodCatalog.cpp" line="731"/>
         <source>Gradient-descent step on the mean episode cost.</source>
         <translation>對平均回合成本的梯度下降步長。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="741"/>
+        <location filename="../sim/MethodCatalog.cpp" line="742"/>
         <source>ILC learning Γ/Kp</source>
         <translation>ILC 學習 Γ/Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="743"/>
+        <location filename="../sim/MethodCatalog.cpp" line="744"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="756"/>
+        <location filename="../sim/MethodCatalog.cpp" line="757"/>
         <source>ILC lead</source>
         <translation>ILC 超前</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="757"/>
+        <location filename="../sim/MethodCatalog.cpp" line="758"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="771"/>
+        <location filename="../sim/MethodCatalog.cpp" line="772"/>
         <source>ILC Q cutoff</source>
         <translation>ILC Q 截止頻率</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="772"/>
+        <location filename="../sim/MethodCatalog.cpp" line="773"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="784"/>
+        <location filename="../sim/MethodCatalog.cpp" line="785"/>
         <source>ILC feedback scale</source>
         <translation>ILC 回饋比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="786"/>
+        <location filename="../sim/MethodCatalog.cpp" line="787"/>
         <source>The PD gains in ILC&apos;s loop, scaled by this.</source>
         <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="797"/>
+        <location filename="../sim/MethodCatalog.cpp" line="798"/>
         <source>Oracle samples</source>
         <translation>理想控制器樣本數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="798"/>
+        <location filename="../sim/MethodCatalog.cpp" line="799"/>
         <source>Candidate plans the oracle simulates at each planning.</source>
         <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="812"/>
+        <location filename="../sim/MethodCatalog.cpp" line="813"/>
         <source>Oracle replanning</source>
         <translation>理想控制器重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="814"/>
+        <location filename="../sim/MethodCatalog.cpp" line="815"/>
         <source>Control steps between two plans of the oracle.</source>
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="853"/>
+        <location filename="../sim/MethodCatalog.cpp" line="854"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="855"/>
+        <location filename="../sim/MethodCatalog.cpp" line="856"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="876"/>
+        <location filename="../sim/MethodCatalog.cpp" line="877"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="878"/>
+        <location filename="../sim/MethodCatalog.cpp" line="879"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="893"/>
+        <location filename="../sim/MethodCatalog.cpp" line="894"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="894"/>
+        <location filename="../sim/MethodCatalog.cpp" line="895"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
@@ -445,22 +445,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="59"/>
+        <location filename="../app/CameraView.cpp" line="74"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="105"/>
+        <location filename="../app/CameraView.cpp" line="143"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="109"/>
+        <location filename="../app/CameraView.cpp" line="147"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="113"/>
+        <location filename="../app/CameraView.cpp" line="152"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -1480,125 +1480,162 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="198"/>
+        <location filename="../app/RigPanel.cpp" line="275"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="199"/>
-        <location filename="../app/RigPanel.cpp" line="206"/>
+        <location filename="../app/RigPanel.cpp" line="276"/>
+        <location filename="../app/RigPanel.cpp" line="283"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="205"/>
+        <location filename="../app/RigPanel.cpp" line="282"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="220"/>
-        <location filename="../app/RigPanel.cpp" line="231"/>
+        <location filename="../app/RigPanel.cpp" line="343"/>
+        <location filename="../app/RigPanel.cpp" line="354"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="221"/>
+        <location filename="../app/RigPanel.cpp" line="344"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="232"/>
+        <location filename="../app/RigPanel.cpp" line="355"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="289"/>
+        <location filename="../app/RigPanel.cpp" line="412"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="292"/>
+        <location filename="../app/RigPanel.cpp" line="415"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="306"/>
+        <location filename="../app/RigPanel.cpp" line="429"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="334"/>
+        <location filename="../app/RigPanel.cpp" line="457"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374"/>
+        <location filename="../app/RigPanel.cpp" line="497"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="369"/>
+        <location filename="../app/RigPanel.cpp" line="492"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="284"/>
+        <location filename="../app/RigPanel.cpp" line="154"/>
+        <source>PPM bridge (trainer port)</source>
+        <translation>PPM 橋接（教練接口）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="300"/>
+        <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
+        <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="311"/>
+        <location filename="../app/RigPanel.cpp" line="872"/>
+        <source>Open camera intrinsics</source>
+        <translation>開啟攝影機內參</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="312"/>
+        <location filename="../app/RigPanel.cpp" line="860"/>
+        <source>Camera (*.json)</source>
+        <translation>攝影機 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="322"/>
+        <source>Loop latency: not measured (%1)</source>
+        <translation>迴路延遲：未量度（%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="327"/>
+        <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
+        <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="407"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="353"/>
+        <location filename="../app/RigPanel.cpp" line="476"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="362"/>
+        <location filename="../app/RigPanel.cpp" line="485"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="388"/>
+        <location filename="../app/RigPanel.cpp" line="511"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="397"/>
+        <location filename="../app/RigPanel.cpp" line="520"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="402"/>
+        <location filename="../app/RigPanel.cpp" line="525"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="405"/>
+        <location filename="../app/RigPanel.cpp" line="528"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="407"/>
+        <location filename="../app/RigPanel.cpp" line="531"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="464"/>
+        <location filename="../app/RigPanel.cpp" line="532"/>
+        <source> (failsafe after %1 s: %2)</source>
+        <translation>（%1 秒後失效保護：%2）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="591"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="481"/>
+        <location filename="../app/RigPanel.cpp" line="608"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="502"/>
-        <location filename="../app/RigPanel.cpp" line="514"/>
+        <location filename="../app/RigPanel.cpp" line="629"/>
+        <location filename="../app/RigPanel.cpp" line="641"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="503"/>
+        <location filename="../app/RigPanel.cpp" line="630"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1607,199 +1644,346 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="524"/>
+        <location filename="../app/RigPanel.cpp" line="651"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="563"/>
+        <location filename="../app/RigPanel.cpp" line="691"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="566"/>
+        <location filename="../app/RigPanel.cpp" line="694"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="568"/>
+        <location filename="../app/RigPanel.cpp" line="696"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="600"/>
+        <location filename="../app/RigPanel.cpp" line="728"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="601"/>
+        <location filename="../app/RigPanel.cpp" line="729"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="602"/>
+        <location filename="../app/RigPanel.cpp" line="730"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="603"/>
+        <location filename="../app/RigPanel.cpp" line="731"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="737"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="610"/>
+        <location filename="../app/RigPanel.cpp" line="738"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="739"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="612"/>
+        <location filename="../app/RigPanel.cpp" line="740"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="741"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="742"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="616"/>
+        <location filename="../app/RigPanel.cpp" line="744"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
+        <location filename="../app/RigPanel.cpp" line="746"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="619"/>
+        <location filename="../app/RigPanel.cpp" line="747"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="748"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="749"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="622"/>
+        <location filename="../app/RigPanel.cpp" line="750"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="751"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="752"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="755"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="628"/>
+        <location filename="../app/RigPanel.cpp" line="756"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629"/>
+        <location filename="../app/RigPanel.cpp" line="757"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="631"/>
+        <location filename="../app/RigPanel.cpp" line="759"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="760"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="633"/>
+        <location filename="../app/RigPanel.cpp" line="761"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="762"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="635"/>
+        <location filename="../app/RigPanel.cpp" line="763"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="636"/>
+        <location filename="../app/RigPanel.cpp" line="764"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="765"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="638"/>
+        <location filename="../app/RigPanel.cpp" line="766"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="639"/>
+        <location filename="../app/RigPanel.cpp" line="767"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="640"/>
+        <location filename="../app/RigPanel.cpp" line="768"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="770"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="644"/>
+        <location filename="../app/RigPanel.cpp" line="772"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="646"/>
+        <location filename="../app/RigPanel.cpp" line="774"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="648"/>
+        <location filename="../app/RigPanel.cpp" line="776"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="777"/>
+        <source>Camera, link, trials</source>
+        <translation>攝影機、連結、試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="778"/>
+        <source>Lens, latency, fence</source>
+        <translation>鏡頭、延遲、圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="779"/>
+        <source>Capture board view</source>
+        <translation>擷取棋盤視圖</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="780"/>
+        <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
+        <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="783"/>
+        <source>Fit lens</source>
+        <translation>擬合鏡頭</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="784"/>
+        <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
+        <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="786"/>
+        <source>Load lens...</source>
+        <translation>載入鏡頭...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="787"/>
+        <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
+        <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="788"/>
+        <source>Measure latency</source>
+        <translation>量度延遲</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="789"/>
+        <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
+        <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="792"/>
+        <source>Draw fence</source>
+        <translation>繪畫圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="793"/>
+        <source>Clear fence</source>
+        <translation>清除圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="794"/>
+        <source>Speed limit:</source>
+        <translation>速度上限：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="795"/>
+        <location filename="../app/RigPanel.cpp" line="797"/>
+        <source>none</source>
+        <translation type="unfinished">無</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="796"/>
+        <source>Longest lost track:</source>
+        <translation>最長失去追蹤：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="800"/>
+        <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
+        <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="812"/>
+        <source>Lens: no camera image to capture a board view from.</source>
+        <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="817"/>
+        <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
+        <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="839"/>
+        <source>refused: %1</source>
+        <translation>已拒絕：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="844"/>
+        <source>Lens: %1</source>
+        <translation>鏡頭：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="858"/>
+        <location filename="../app/RigPanel.cpp" line="862"/>
+        <source>Save camera intrinsics</source>
+        <translation>儲存攝影機內參</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="890"/>
+        <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
+        <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="896"/>
+        <source>Lens: none (the floor calibration is a homography alone).</source>
+        <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="900"/>
+        <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
+        <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="911"/>
+        <source>Loop latency: %1</source>
+        <translation>迴路延遲：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="915"/>
+        <source>Loop latency: measuring (keep the car at rest in view)...</source>
+        <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="944"/>
+        <source>Fence: %1</source>
+        <translation>圍欄：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="947"/>
+        <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
+        <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="950"/>
+        <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
+        <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
 </context>
 <context>
@@ -2354,65 +2538,86 @@
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="132"/>
+        <location filename="../rig/RigSession.cpp" line="136"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="235"/>
+        <location filename="../rig/RigSession.cpp" line="260"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="238"/>
+        <location filename="../rig/RigSession.cpp" line="263"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="255"/>
+        <location filename="../rig/RigSession.cpp" line="280"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="260"/>
+        <location filename="../rig/RigSession.cpp" line="285"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="263"/>
+        <location filename="../rig/RigSession.cpp" line="288"/>
+        <source>The latency is being measured.</source>
+        <translation>正在量度延遲。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="291"/>
+        <location filename="../rig/RigSession.cpp" line="614"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="274"/>
-        <location filename="../rig/RigSession.cpp" line="293"/>
+        <location filename="../rig/RigSession.cpp" line="302"/>
+        <location filename="../rig/RigSession.cpp" line="325"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="442"/>
+        <location filename="../rig/RigSession.cpp" line="500"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="445"/>
+        <location filename="../rig/RigSession.cpp" line="503"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="454"/>
+        <location filename="../rig/RigSession.cpp" line="512"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="516"/>
+        <location filename="../rig/RigSession.cpp" line="574"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="524"/>
+        <location filename="../rig/RigSession.cpp" line="582"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="611"/>
+        <source>A trial is running.</source>
+        <translation>試驗正在進行。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="617"/>
+        <source>The latency is being measured already.</source>
+        <translation>已在量度延遲。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="630"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 </TS>
