@@ -115,6 +115,15 @@ void TransmitterLink::reportControllerFault() {
     worker_->fault.store(true);
 }
 
+void TransmitterLink::clearFault() {
+    worker_->fault.store(false);
+    worker_->fenceBreached.store(false);
+}
+
+bool TransmitterLink::emergencyLatched() const {
+    return worker_->emergency.load();
+}
+
 void TransmitterLink::reportGeofenceBreach() {
     worker_->fenceBreached.store(true);
     worker_->fault.store(true);

@@ -97,6 +97,10 @@ class TransmitterLink : public QObject {
     void reportControllerFault();
     /// The trial breached its fence (latched the same way; the status says so).
     void reportGeofenceBreach();
+    /// Clears a controller fault or fence breach (a new trial), not E-STOP.
+    void clearFault();
+    /// Whether E-STOP is latched (any thread).
+    bool emergencyLatched() const;
 
     /// Frames written so far (any thread).
     long long framesSent() const;

@@ -9,7 +9,11 @@
 #include "sim/DemonstrationRecorder.h"
 #include "sim/EpisodeRunner.h"
 
+#include <QDateTime>
+#include <QDir>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QMetaObject>
 
 #include <chrono>
@@ -28,6 +32,9 @@ struct RigSession::Loop {
     devices::Geofence fence;                ///< every trial's (RigLoop::setGeofence)
     std::optional<devices::LatencyProbe> probe;  ///< a latency measurement under way
     std::optional<double> loopLatency;           ///< measured [s], for the compensation
+    QString bundleParent;                        ///< where trial bundles go (empty: none)
+    double bundleFps = 10.0;                     ///< their video's frame rate
+    double lastBundleFrameT = -1.0;              ///< the trial's newest frame stored [s]
     devices::LedTracker tracker;
     // The closed loop, kept from trial to trial for one method.
     std::unique_ptr<devices::RigLoop> loop;
@@ -287,6 +294,9 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     if (l.probe) {
         return fail(tr("The latency is being measured."));
     }
+    if (link_.emergencyLatched()) {
+        return fail(tr("E-STOP is latched: reset it before a trial."));
+    }
     if (l.recording) {
         return fail(tr("Stop driving first."));
     }
@@ -332,6 +342,34 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     }
     l.loop->setGeofence(l.fence);
     l.loop->startTrial(sim::resetForTrial(l.trials));
+    link_.clearFault();  // the last trial's fault or fence breach ended that trial, not this one
+    l.lastBundleFrameT = -1.0;
+    if (!l.bundleParent.isEmpty()) {
+        QJsonObject header{{"kind", QStringLiteral("rig")},
+                           {"method", method},
+                           {"plant", setup.profile().info.name},
+                           {"trial", l.trials + 1},
+                           {"seed", static_cast<double>(request.virtualSeed)},
+                           {"started", QDateTime::currentDateTime().toString(Qt::ISODate)},
+                           {"calibration", QJsonDocument::fromJson(l.calibration.toJson()).object()},
+                           {"fence", l.fence.toJson()},
+                           {"videoFps", l.bundleFps}};
+        if (l.loopLatency) {
+            header.insert("loopLatencyMs", *l.loopLatency * 1000.0);
+        }
+        const QString folder = QDir(l.bundleParent).filePath(
+            QStringLiteral("trial-%1-%2")
+                .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")))
+                .arg(l.trials + 1));
+        onWorker([this, folder, header, demo = setup.task().demonstration] {
+            bundle_ = std::make_unique<TrialBundleWriter>();
+            QString error;
+            if (!bundle_->open(folder, header, *demo, &error)) {
+                bundle_.reset();
+                emit bundleSaved(folder, error);
+            }
+        });
+    }
     if (car_) {  // back at the start
         car_->requestReset(request.virtualSeed != 0 ? request.virtualSeed
                                                     : static_cast<std::uint64_t>(l.trials + 1));
@@ -381,6 +419,27 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
     if (l.lastTrackedPose && l.demonstration && l.plant.pose) {
         result.parked = sim::parkingError(l.plant, *l.demonstration, l.lastTrackedPose->x,
                                           l.lastTrackedPose->y, l.lastTrackedPose->heading);
+    }
+    if (!l.bundleParent.isEmpty()) {
+        QJsonObject r{{"stopped", stopped},
+                      {"failsafe", fault},
+                      {"reason", reason},
+                      {"seconds", result.seconds},
+                      {"frames", static_cast<double>(result.frames)},
+                      {"framesWithPose", static_cast<double>(result.framesWithPose)}};
+        if (result.parked) {
+            r.insert("finalPositionErrorCm", result.parked->position * 100.0);
+            r.insert("finalHeadingErrorDeg", result.parked->heading * 180.0 / M_PI);
+        }
+        onWorker([this, r] {
+            if (bundle_) {
+                QString error;
+                bundle_->finish(r, &error);
+                const QString folder = bundle_->folder();
+                bundle_.reset();
+                emit bundleSaved(folder, error);
+            }
+        });
     }
     return result;
 }
@@ -439,6 +498,37 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                 l.trialStartNs = frame.steadyNs;
             }
             l.lastFrameNs = frame.steadyNs;
+            if (!l.bundleParent.isEmpty()) {
+                BundleSample sample;
+                sample.t = (frame.steadyNs - l.trialStartNs) * 1e-9;
+                sample.frame = frame.index;
+                sample.found = pose.has_value();
+                if (pose) {
+                    sample.x = pose->x;
+                    sample.y = pose->y;
+                    sample.psi = pose->heading;
+                    sample.state.assign(step.state.data(), step.state.data() + step.state.size());
+                }
+                if (!step.fault && step.action.size() > 0) {
+                    sample.action.assign(step.action.data(),
+                                         step.action.data() + step.action.size());
+                }
+                sample.failsafe = step.fault || !pose;
+                cv::Mat image;
+                if (l.bundleFps > 0.0 &&
+                    (l.lastBundleFrameT < 0.0 || sample.t - l.lastBundleFrameT >= 1.0 / l.bundleFps - 1e-6)) {
+                    l.lastBundleFrameT = sample.t;
+                    image = frame.image.clone();
+                }
+                onWorker([this, sample = std::move(sample), image] {
+                    if (bundle_) {
+                        bundle_->append(sample);
+                        if (!image.empty()) {
+                            bundle_->addFrame(sample.frame, image);
+                        }
+                    }
+                });
+            }
             // A trial lasts its length by the camera's own frame clock, whatever the frame rate.
             const double elapsed = (frame.steadyNs - l.trialStartNs) * 1e-9;
             if (elapsed >= l.trialSeconds || step.fault) {
@@ -639,6 +729,17 @@ void RigSession::cancelLatencyMeasurement() {
 bool RigSession::measuringLatency() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return loop_->probe.has_value();
+}
+
+void RigSession::setBundles(const QString& parent, double videoFps) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    loop_->bundleParent = parent;
+    loop_->bundleFps = std::max(0.0, videoFps);
+}
+
+QString RigSession::bundleParent() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->bundleParent;
 }
 
 void RigSession::setLoopLatency(std::optional<double> seconds) {

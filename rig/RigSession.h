@@ -8,6 +8,7 @@
 #include "devices/FloorCalibration.h"
 #include "devices/Geofence.h"
 #include "devices/LatencyProbe.h"
+#include "rig/TrialBundle.h"
 #include "devices/TransmitterLink.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
@@ -189,6 +190,13 @@ class RigSession : public QObject {
     void setLoopLatency(std::optional<double> seconds);
     std::optional<double> loopLatency() const;
 
+    // Trial bundles.
+    /// Every trial from now on is saved as a bundle (rig::TrialBundleWriter) in a new folder
+    /// under `parent` (trial-<date>-<time>-<n>), with the camera's frames at `videoFps` (0: no
+    /// video); empty `parent`: no bundles. The folder of the newest is bundleSaved()'s.
+    void setBundles(const QString& parent, double videoFps);
+    QString bundleParent() const;
+
     /// E-STOP: failsafe on the link (latched until reset), the trial and recording end.
     void emergencyStop();
     void resetEmergencyStop();
@@ -203,6 +211,8 @@ class RigSession : public QObject {
     void linkStatusChanged(const prisca::devices::LinkStatus& status);
     void trialFinished(const prisca::rig::RigTrialResult& result);
     void latencyMeasured(const prisca::rig::LatencyMeasurement& result);
+    /// A trial's bundle is complete on disk (or could not be written: `error`).
+    void bundleSaved(const QString& folder, const QString& error);
     void recordingFinished(const prisca::rig::RigRecording& recording);
 
   private:
@@ -221,6 +231,7 @@ class RigSession : public QObject {
     QThread workerThread_;
     QObject* worker_;  ///< lives on workerThread_: the recorder's disk writes and the scoring
     std::unique_ptr<Recorder> recorder_;  ///< touched on the worker thread only
+    std::unique_ptr<TrialBundleWriter> bundle_;  ///< the trial's bundle; worker thread only
     std::atomic<double> writtenSeconds_{-1.0};  ///< the recorder's newest sample [s]
 
     /// Shared by the camera thread and commands; held only for in-memory work, never disk I/O.

@@ -39,6 +39,11 @@ void CommandLine::addFormat(const QStringList& choices) {
     formats_ = choices;
 }
 
+void CommandLine::addPositional(const QString& name, const QString& description) {
+    parser_.addPositionalArgument(name, description);
+    ++positionals_;
+}
+
 bool CommandLine::parse(const QStringList& arguments) {
     // QCommandLineParser wants the program name first.
     if (!parser_.parse(QStringList{QStringLiteral("prisca-cli %1").arg(command_)} + arguments)) {
@@ -48,9 +53,9 @@ bool CommandLine::parse(const QStringList& arguments) {
         std::printf("%s", parser_.helpText().toLocal8Bit().constData());
         return false;
     }
-    if (!parser_.positionalArguments().isEmpty()) {
+    if (parser_.positionalArguments().size() > positionals_) {
         throw UsageError(QStringLiteral("unexpected argument '%1' (see --help)")
-                             .arg(parser_.positionalArguments().first()));
+                             .arg(parser_.positionalArguments().value(positionals_)));
     }
     if (!formats_.isEmpty() && !formats_.contains(format())) {
         throw UsageError(QStringLiteral("--format must be one of %1, got '%2'")

@@ -37,6 +37,9 @@ class CommandLine {
     void addFlag(const QString& name, const QString& description);
     /// Adds --format with the given choices (the first is the default).
     void addFormat(const QStringList& choices);
+    /// Accepts one positional argument more (shown by --help).
+    void addPositional(const QString& name, const QString& description);
+    QStringList positionalArguments() const { return parser_.positionalArguments(); }
 
     /// Parses; prints help and returns false for --help; throws UsageError on bad options or
     /// unexpected positional arguments.
@@ -60,6 +63,7 @@ class CommandLine {
     QString command_;
     QCommandLineParser parser_;
     QStringList formats_;
+    int positionals_ = 0;
 };
 
 /// Makes Ctrl-C (SIGINT), SIGTERM, SIGHUP, SIGQUIT and SIGPIPE ask a long command to stop:

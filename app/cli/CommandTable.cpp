@@ -28,6 +28,7 @@ const std::vector<CliCommand>& commandTable() {
         {"link", "Send channel values to a transmitter over a serial link", linkCommand},
         {"rig", "Trials on the virtual rig: camera, tracker, controller, link and car, headless",
          rigCommand},
+        {"replay", "A trial bundle's summary and scores", replayCommand},
     };
     return table;
 }

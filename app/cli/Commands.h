@@ -17,6 +17,7 @@ int trackCommand(const QStringList& arguments);
 int calibrateCameraCommand(const QStringList& arguments);
 int calibrateFloorCommand(const QStringList& arguments);
 int rigCommand(const QStringList& arguments);
+int replayCommand(const QStringList& arguments);
 int methodsCommand(const QStringList& arguments);
 int plantCommand(const QStringList& arguments);
 

@@ -55,6 +55,11 @@ int rigCommand(const QStringList& arguments) {
     line.addValue("inject-camera-delay",
                   "The virtual camera shows the car this much later (to check the measurement).",
                   "ms", "0");
+    line.addValue("bundle-dir",
+                  "Save every trial as a bundle (poses, commands, the camera's frames) in a new "
+                  "folder under this one (prisca-cli replay reads it).",
+                  "dir");
+    line.addValue("bundle-fps", "Frame rate of the bundles' video (0: none).", "1/s", "10");
     line.addValue("fence",
                   "A fence on the floor, its corners in order: \"x,y;x,y;x,y...\" [m]. A car "
                   "outside it ends the trial in failsafe.",
@@ -119,6 +124,19 @@ int rigCommand(const QStringList& arguments) {
     const core::Demonstration& demo = *task.demonstration;
     rig::RigSession rig;
     rig.setGeofence(fence);
+    if (line.isSet("bundle-dir")) {
+        rig.setBundles(line.value("bundle-dir"), line.number("bundle-fps", 0.0, 200.0));
+    }
+    QStringList bundles;
+    QObject::connect(&rig, &rig::RigSession::bundleSaved,
+                     [&bundles](const QString& folder, const QString& error) {
+                         if (!error.isEmpty()) {
+                             std::fprintf(stderr, "prisca-cli: rig: warning: bundle %s: %s\n",
+                                          qPrintable(folder), qPrintable(error));
+                         } else {
+                             bundles << folder;
+                         }
+                     });
     rig::CameraRequest camera;
     camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
     camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
@@ -252,6 +270,9 @@ int rigCommand(const QStringList& arguments) {
         if (!last) {
             rig.stopTrial();  // interrupted, the camera failed, or no frames: ends it now
         }
+        if (line.isSet("bundle-dir")) {  // the bundle's last lines and result on disk
+            waitFor([&] { return bundles.size() > t; }, 10000, false);
+        }
         if (!cameraError.isEmpty()) {
             throw UsageError(QStringLiteral("the camera failed: %1").arg(cameraError));
         }
@@ -331,7 +352,8 @@ int rigCommand(const QStringList& arguments) {
                               {"trials", rows},
                               {"latency", latencyJson},
                               {"receiverLastCommand", heldJson},
-                              {"receiverNeutral", neutral}});
+                              {"receiverNeutral", neutral},
+                              {"bundles", QJsonArray::fromStringList(bundles)}});
     } else {
         QStringList values;
         for (double u : held) {

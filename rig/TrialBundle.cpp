@@ -1,0 +1,256 @@
+#include "rig/TrialBundle.h"
+
+#include "core/DemonstrationCsv.h"
+#include "core/FileIo.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <cmath>
+#include <unistd.h>
+
+namespace prisca::rig {
+
+namespace {
+
+constexpr char kFormat[] = "prisca-trial-bundle 1";
+
+void appendNumber(QByteArray& row, double v) {
+    row += ',';
+    if (std::isfinite(v)) {
+        core::appendCsvNumber(row, v);
+    }
+}
+
+}  // namespace
+
+TrialBundleWriter::~TrialBundleWriter() {
+    flush();
+    if (samples_) {
+        std::fclose(samples_);
+    }
+}
+
+bool TrialBundleWriter::open(const QString& folder, const QJsonObject& header,
+                             const core::Demonstration& demonstration, QString* error) {
+    QDir dir(folder);
+    if (dir.exists() && !dir.isEmpty()) {
+        *error = QStringLiteral("%1: a folder with files in it already; a bundle needs a new one")
+                     .arg(folder);
+        return false;
+    }
+    if (!QDir().mkpath(folder + QStringLiteral("/frames"))) {
+        *error = QStringLiteral("%1: cannot create the folder").arg(folder);
+        return false;
+    }
+    folder_ = folder;
+    header_ = header;
+    header_.insert("format", QString::fromLatin1(kFormat));
+    core::FileError fileError;
+    if (!core::writeFileAtomically(dir.filePath("bundle.json"),
+                                   QJsonDocument(header_).toJson(QJsonDocument::Indented),
+                                   &fileError) ||
+        !core::writeDemonstrationCsv(demonstration, dir.filePath("demonstration.csv"),
+                                     &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    samples_ = std::fopen(QFile::encodeName(dir.filePath("samples.csv")).constData(), "wb");
+    if (!samples_) {
+        *error = QStringLiteral("%1: cannot write samples.csv").arg(folder);
+        return false;
+    }
+    pending_ = "# prisca-trial-samples 1\n# t [s]; frame (-1: simulation); found; x, y [m], psi "
+               "[rad]; s0.. the controller's observation; u0.. its command; failsafe\n";
+    return flush();
+}
+
+void TrialBundleWriter::append(const BundleSample& s) {
+    QByteArray row;
+    core::appendCsvNumber(row, s.t);
+    row += ',' + QByteArray::number(s.frame) + ',' + (s.found ? '1' : '0');
+    appendNumber(row, s.found ? s.x : NAN);
+    appendNumber(row, s.found ? s.y : NAN);
+    appendNumber(row, s.found ? s.psi : NAN);
+    row += ",s";
+    for (double v : s.state) {
+        appendNumber(row, v);
+    }
+    row += ",u";
+    for (double v : s.action) {
+        appendNumber(row, v);
+    }
+    row += s.failsafe ? ",1\n" : ",0\n";
+    pending_ += row;
+    if (s.t - lastFlushT_ >= 1.0) {
+        lastFlushT_ = s.t;
+        flush();
+    }
+}
+
+bool TrialBundleWriter::addFrame(long long frame, const cv::Mat& image) {
+    if (folder_.isEmpty() || image.empty()) {
+        return false;
+    }
+    const QString path = QStringLiteral("%1/frames/%2.jpg").arg(folder_).arg(frame, 6, 10,
+                                                                            QLatin1Char('0'));
+    std::vector<uchar> bytes;
+    if (!cv::imencode(".jpg", image, bytes, {cv::IMWRITE_JPEG_QUALITY, 85})) {
+        return false;
+    }
+    core::FileError error;
+    return core::writeFileAtomically(
+        path, QByteArray(reinterpret_cast<const char*>(bytes.data()), int(bytes.size())),
+        &error);
+}
+
+bool TrialBundleWriter::flush() {
+    if (!samples_ || pending_.isEmpty()) {
+        return samples_ != nullptr;
+    }
+    const bool ok = std::fwrite(pending_.constData(), 1, size_t(pending_.size()), samples_) ==
+                        size_t(pending_.size()) &&
+                    std::fflush(samples_) == 0;
+    ::fdatasync(fileno(samples_));
+    pending_.clear();
+    return ok;
+}
+
+bool TrialBundleWriter::finish(const QJsonObject& result, QString* error) {
+    flush();
+    header_.insert("result", result);
+    core::FileError fileError;
+    if (!core::writeFileAtomically(QDir(folder_).filePath("bundle.json"),
+                                   QJsonDocument(header_).toJson(QJsonDocument::Indented),
+                                   &fileError)) {
+        *error = fileError.toString();
+        return false;
+    }
+    return true;
+}
+
+QString TrialBundle::frameAt(size_t sample) const {
+    if (sample >= samples.size() || frames.empty()) {
+        return {};
+    }
+    const long long want = samples[sample].frame;
+    QString best;
+    for (const auto& [index, path] : frames) {
+        if (index > want) {
+            break;
+        }
+        best = path;
+    }
+    return best;
+}
+
+std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* error) {
+    TrialBundle b;
+    b.folder = folder;
+    const QDir dir(folder);
+    if (!QFileInfo(folder).isDir()) {
+        *error = QStringLiteral("%1: not a trial bundle (no such folder)").arg(folder);
+        return std::nullopt;
+    }
+    core::FileError fileError;
+    const auto json = core::readFileBounded(dir.filePath("bundle.json"), 16 << 20, &fileError);
+    if (!json) {
+        *error = fileError.toString();
+        return std::nullopt;
+    }
+    QJsonParseError parse;
+    const QJsonDocument doc = QJsonDocument::fromJson(*json, &parse);
+    if (!doc.isObject() || doc.object().value("format").toString() != QLatin1String(kFormat)) {
+        *error = QStringLiteral("%1/bundle.json: not a trial bundle's (format \"%2\" expected)")
+                     .arg(folder, QString::fromLatin1(kFormat));
+        return std::nullopt;
+    }
+    b.header = doc.object();
+    auto demo = core::readDemonstrationCsv(dir.filePath("demonstration.csv"), &fileError);
+    if (!demo) {
+        *error = fileError.toString();
+        return std::nullopt;
+    }
+    b.demonstration = std::make_shared<core::Demonstration>(std::move(*demo));
+    const auto csv = core::readFileBounded(dir.filePath("samples.csv"), qint64(1) << 30,
+                                           &fileError);
+    if (!csv) {
+        *error = fileError.toString();
+        return std::nullopt;
+    }
+    // Up to the last complete line: a writer killed mid-line leaves a partial one.
+    const int end = csv->lastIndexOf('\n');
+    const QList<QByteArray> lines = csv->left(end < 0 ? 0 : end).split('\n');
+    for (int i = 0; i < lines.size(); ++i) {
+        const QByteArray& line = lines[i];
+        if (line.isEmpty() || line.startsWith('#')) {
+            continue;
+        }
+        const QList<QByteArray> f = line.split(',');
+        const int s = f.indexOf("s"), u = f.indexOf("u");
+        if (f.size() < 8 || s != 6 || u < s) {
+            *error = QStringLiteral("%1/samples.csv:%2: not a sample line").arg(folder).arg(i + 1);
+            return std::nullopt;
+        }
+        BundleSample sample;
+        sample.t = f[0].toDouble();
+        sample.frame = f[1].toLongLong();
+        sample.found = f[2] == "1";
+        sample.x = f[3].toDouble();
+        sample.y = f[4].toDouble();
+        sample.psi = f[5].toDouble();
+        for (int k = s + 1; k < u; ++k) {
+            sample.state.push_back(f[k].isEmpty() ? NAN : f[k].toDouble());
+        }
+        for (int k = u + 1; k < f.size() - 1; ++k) {
+            sample.action.push_back(f[k].isEmpty() ? NAN : f[k].toDouble());
+        }
+        sample.failsafe = f.last() == "1";
+        b.samples.push_back(std::move(sample));
+    }
+    for (const QString& name : QDir(dir.filePath("frames")).entryList({"*.jpg"}, QDir::Files,
+                                                                       QDir::Name)) {
+        b.frames.emplace_back(QFileInfo(name).baseName().toLongLong(),
+                              dir.filePath("frames/" + name));
+    }
+    return b;
+}
+
+QJsonObject summarizeBundle(const TrialBundle& bundle) {
+    QJsonObject o{{"folder", bundle.folder},
+                  {"kind", bundle.header.value("kind")},
+                  {"method", bundle.header.value("method")},
+                  {"complete", bundle.complete()},
+                  {"samples", static_cast<double>(bundle.samples.size())},
+                  {"frames", static_cast<double>(bundle.frames.size())}};
+    int found = 0, failsafe = 0;
+    const BundleSample* last = nullptr;
+    for (const BundleSample& s : bundle.samples) {
+        found += s.found;
+        failsafe += s.failsafe;
+        if (s.found) {
+            last = &s;
+        }
+    }
+    o.insert("seconds", bundle.samples.empty() ? 0.0 : bundle.samples.back().t);
+    o.insert("samplesWithPose", found);
+    o.insert("samplesInFailsafe", failsafe);
+    const core::Demonstration& d = *bundle.demonstration;
+    if (last && d.length() > 0 && d.states.cols() >= 3) {
+        const Eigen::VectorXd lot = d.states.row(d.length() - 1).transpose();
+        o.insert("finalPositionErrorCm", 100.0 * std::hypot(last->x - lot[0], last->y - lot[1]));
+        o.insert("finalHeadingErrorDeg",
+                 180.0 / M_PI * std::abs(std::remainder(last->psi - lot[2], 2.0 * M_PI)));
+    }
+    if (bundle.complete()) {
+        o.insert("result", bundle.header.value("result"));
+    }
+    return o;
+}
+
+}  // namespace prisca::rig

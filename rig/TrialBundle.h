@@ -1,0 +1,81 @@
+#pragma once
+
+#include "core/Demonstration.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <opencv2/core.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace prisca::rig {
+
+/// One sample of a trial: what was seen and what was commanded, at time t [s from the trial's
+/// first frame or step].
+struct BundleSample {
+    double t = 0.0;
+    long long frame = -1;  ///< camera frame (rig trials), -1 in simulation
+    bool found = false;    ///< a pose was tracked (always in simulation: the true state)
+    double x = 0.0, y = 0.0, psi = 0.0;          ///< tracked (rig) or true (simulation) pose
+    std::vector<double> state;                   ///< the observation the controller got
+    std::vector<double> action;                  ///< its command (empty: none, failsafe)
+    bool failsafe = false;                       ///< the link (or the loop) was in failsafe
+};
+
+/// A trial bundle: one folder with everything needed to look at a trial again.
+///   bundle.json         what ran (kind, method, plant, seed, the calibration and fence on the
+///                       rig, the loop latency) and, once the trial ended, its result
+///   demonstration.csv   the demonstration it followed
+///   samples.csv         one line per frame or step, appended and flushed every second, so a
+///                       bundle whose writer was killed reads up to its last second
+///   frames/NNNNNN.jpg   the camera's frames at the chosen rate (rig trials), each a whole file
+class TrialBundleWriter {
+  public:
+    /// Creates the folder (it must not exist yet, or be empty) and writes bundle.json and the
+    /// demonstration. False and *error on failure.
+    bool open(const QString& folder, const QJsonObject& header,
+              const core::Demonstration& demonstration, QString* error);
+    void append(const BundleSample& sample);
+    /// A camera frame (8-bit grey or BGR), stored as JPEG under its frame index.
+    bool addFrame(long long frame, const cv::Mat& image);
+    /// Appends what is buffered to samples.csv and flushes it to the disk.
+    bool flush();
+    /// Flushes, then rewrites bundle.json with `result` added (atomically).
+    bool finish(const QJsonObject& result, QString* error);
+    const QString& folder() const { return folder_; }
+    ~TrialBundleWriter();
+
+  private:
+    QString folder_;
+    QJsonObject header_;
+    std::FILE* samples_ = nullptr;
+    QByteArray pending_;
+    double lastFlushT_ = 0.0;
+};
+
+/// A bundle read back (replay). Rows end at the last complete line.
+struct TrialBundle {
+    QString folder;
+    QJsonObject header;  ///< bundle.json (with "result" once the trial ended)
+    std::shared_ptr<const core::Demonstration> demonstration;
+    std::vector<BundleSample> samples;
+    std::vector<std::pair<long long, QString>> frames;  ///< frame index, JPEG path, in order
+    bool complete() const { return header.contains("result"); }
+    /// The frame shown at sample i: the newest stored frame at or before its frame index
+    /// (empty: none).
+    QString frameAt(size_t sample) const;
+
+    static std::optional<TrialBundle> load(const QString& folder, QString* error);
+};
+
+/// The bundle's scores from its samples: duration, frames, frames with a pose, commands in
+/// failsafe, and where the last pose stopped relative to the demonstration's end (position
+/// [m], heading [rad]); what `prisca-cli replay` prints.
+QJsonObject summarizeBundle(const TrialBundle& bundle);
+
+}  // namespace prisca::rig

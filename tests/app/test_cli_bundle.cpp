@@ -1,0 +1,120 @@
+// Trial bundles end to end through the CLI: a virtual-rig trial that leaves its fence is saved
+// as a bundle and replayed (its samples, frames, the failsafe's reason, its scores); a bundle
+// whose writer is killed mid-trial reads up to its last second.
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <csignal>
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QString out, err;
+};
+
+Result cli(const QStringList& arguments, const QString& directory) {
+    QProcess process;
+    process.setWorkingDirectory(directory);
+    process.start(QStringLiteral(PRISCA_CLI), arguments);
+    process.waitForFinished(180000);
+    return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
+            QString::fromUtf8(process.readAllStandardError())};
+}
+
+int sampleLines(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        return 0;
+    }
+    int n = 0;
+    for (const QByteArray& line : f.readAll().split('\n')) {
+        n += !line.isEmpty() && !line.startsWith('#');
+    }
+    return n;
+}
+
+}  // namespace
+
+class TestCliBundle : public QObject {
+    Q_OBJECT
+  private slots:
+    void rigTrial_leavingTheFence_isBundledAndReplayed() {
+        QTemporaryDir dir;
+        Result r = cli({"rig", "--virtual", "--trials", "1", "--perturbation", "0", "--fence",
+                        "-0.8,-1.6;3.0,-1.6;3.0,2.0;-0.8,2.0", "--bundle-dir", "bundles",
+                        "--format", "json"},
+                       dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject run = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(run.value("bundles").toArray().size(), 1);
+        const QString bundle = run.value("bundles").toArray().at(0).toString();
+        QVERIFY(run.value("trials").toArray().at(0).toObject().value("failsafeReason")
+                    .toString()
+                    .contains("left the fence"));
+        r = cli({"replay", bundle, "--format", "json"}, dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject replay = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(replay.value("complete").toBool());
+        QCOMPARE(replay.value("kind").toString(), QString("rig"));
+        const int samples = replay.value("samples").toInt();
+        QCOMPARE(samples, replay.value("result").toObject().value("frames").toInt());
+        QVERIFY(samples > 20);
+        // 10 frames a second of the trial's video.
+        const double seconds = replay.value("seconds").toDouble();
+        QVERIFY(std::abs(replay.value("frames").toInt() - seconds * 10.0) <= 2.0);
+        QVERIFY(replay.value("result").toObject().value("reason").toString().contains("fence"));
+        // The replay's scores from the samples agree with the trial's own.
+        QVERIFY(std::abs(replay.value("finalPositionErrorCm").toDouble() -
+                         replay.value("result").toObject().value("finalPositionErrorCm")
+                             .toDouble()) < 0.01);
+        r = cli({"replay", bundle}, dir.path());
+        QVERIFY2(r.out.contains("ended in failsafe: the car left the fence"), qPrintable(r.out));
+        // Not a bundle: one line, exit 2.
+        r = cli({"replay", "nowhere"}, dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("nowhere"), qPrintable(r.err));
+    }
+
+    void bundle_ofAKilledWriter_readsUpToItsLastSecond() {
+        QTemporaryDir dir;
+        QProcess rig;
+        rig.setWorkingDirectory(dir.path());
+        rig.start(QStringLiteral(PRISCA_CLI),
+                  {"rig", "--virtual", "--trials", "1", "--bundle-dir", "bundles"});
+        QVERIFY(rig.waitForStarted());
+        // Wait until the bundle holds more than a second of samples (flushed each second).
+        QString samples;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                const QStringList made =
+                    QDir(dir.filePath("bundles")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+                if (made.isEmpty()) {
+                    return false;
+                }
+                samples = dir.filePath("bundles/" + made.front() + "/samples.csv");
+                return sampleLines(samples) > 40;
+            },
+            60000));
+        ::kill(static_cast<pid_t>(rig.processId()), SIGKILL);
+        QVERIFY(rig.waitForFinished(10000));
+        const int lines = sampleLines(samples);
+        const Result r = cli({"replay", QFileInfo(samples).path(), "--format", "json"},
+                             dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject replay = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(!replay.value("complete").toBool());
+        QVERIFY(replay.value("samples").toInt() >= 40);
+        QVERIFY(replay.value("samples").toInt() <= lines);
+        QVERIFY(replay.value("seconds").toDouble() >= 1.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliBundle)
+#include "test_cli_bundle.moc"
