@@ -9,6 +9,7 @@
 #include "app/LiveChartsPanel.h"
 #include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
+#include "app/ReplayDialog.h"
 #include "app/RigPanel.h"
 #include "app/RunThread.h"
 #include "app/RunPanel.h"
@@ -246,6 +247,7 @@ void MainWindow::createPanels() {
     chartsPanel_ = new LiveChartsPanel(this);
     experimentsPanel_ = new ExperimentsPanel(*session_, this);
     rigPanel_ = new RigPanel(*session_, this);
+    connect(rigPanel_, &RigPanel::replayRequested, this, [this](const QString& folder) { openReplay(folder); });
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     mappingDock_ =
@@ -383,6 +385,16 @@ void MainWindow::createMenus() {
             saveSession(path);
         }
     });
+    replayAction_ = fileMenu_->addAction(QString());
+    replayAction_->setObjectName(QStringLiteral("replayAction"));
+    replayAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    connect(replayAction_, &QAction::triggered, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(
+            this, tr("Replay a trial bundle"), rigPanel_ ? rigPanel_->bundleParent() : QString());
+        if (!folder.isEmpty()) {
+            openReplay(folder);
+        }
+    });
     fileMenu_->addSeparator();
     quitAction_ = fileMenu_->addAction(QString());
     quitAction_->setObjectName(QStringLiteral("quitAction"));
@@ -490,6 +502,7 @@ void MainWindow::retranslateUi() {
     recentMenu_->setTitle(tr("Open &recent"));
     saveSessionAction_->setText(tr("&Save session as..."));
     quitAction_->setText(tr("&Quit"));
+    replayAction_->setText(tr("&Replay a trial bundle..."));
     quitAction_->setStatusTip(tr("Close the window and leave PRISCA Lab"));
     runMenu_->setTitle(tr("&Run"));
     runToolBar_->setWindowTitle(tr("Run"));
@@ -543,6 +556,19 @@ void MainWindow::showAbout() {
                      .arg(QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion()))
                      .toHtmlEscaped());
     QMessageBox::about(this, tr("About PRISCA Lab"), text);
+}
+
+ReplayDialog* MainWindow::openReplay(const QString& folder) {
+    QString error;
+    auto bundle = rig::TrialBundle::load(folder, &error);
+    if (!bundle) {
+        QMessageBox::warning(this, tr("Replay a trial bundle"), error);
+        return nullptr;
+    }
+    auto* dialog = new ReplayDialog(std::move(*bundle), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
 }
 
 }  // namespace prisca::app

@@ -32,6 +32,9 @@ class TaskPanel;
 class MainWindow : public QMainWindow {
     Q_OBJECT
   public:
+    /// Opens a trial bundle in a replay window; a bad one gets a message box. The window, or
+    /// null.
+    class ReplayDialog* openReplay(const QString& folder);
     /// QSettings keys for the remembered window geometry and toolbar/dock state.
     static constexpr const char* kGeometryKey = "mainWindow/geometry";
     static constexpr const char* kStateKey = "mainWindow/state";
@@ -103,6 +106,7 @@ class MainWindow : public QMainWindow {
     QAction* openSessionAction_ = nullptr;
     QAction* saveSessionAction_ = nullptr;
     QAction* quitAction_ = nullptr;
+    QAction* replayAction_ = nullptr;
     QToolBar* runToolBar_ = nullptr;
     bool stateRestored_ = false;  ///< the operator's own dock layout was restored
     bool laidOut_ = false;

@@ -11,7 +11,9 @@
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QStandardPaths>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
@@ -95,7 +97,12 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
       drawFence_(new QPushButton(this)),
       clearFence_(new QPushButton(this)),
       maxSpeed_(new QDoubleSpinBox(this)),
-      maxLost_(new QDoubleSpinBox(this)) {
+      maxLost_(new QDoubleSpinBox(this)),
+      saveBundles_(new QCheckBox(this)),
+      replayLast_(new QPushButton(this)) {
+    saveBundles_->setObjectName(QStringLiteral("saveBundles"));
+    replayLast_->setObjectName(QStringLiteral("replayLastTrial"));
+    replayLast_->setEnabled(false);
     setObjectName(QStringLiteral("rigPanel"));
     lensInfo_->setObjectName(QStringLiteral("lensInfo"));
     lensInfo_->setWordWrap(true);
@@ -240,6 +247,9 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     fenceLimits->addRow(maxSpeedLabel_, maxSpeed_);
     fenceLimits->addRow(maxLostLabel_, maxLost_);
     setup->addLayout(fenceLimits);
+    setup->addSpacing(12);
+    setup->addWidget(saveBundles_);
+    setup->addWidget(replayLast_);
     setup->addStretch(1);
     // Room for three lines each, so the buttons below do not move as the messages change.
     for (QLabel* info : {lensInfo_, latencyInfo_, fenceInfo_}) {
@@ -315,6 +325,25 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         }
     });
     connect(measureLatency_, &QPushButton::clicked, this, &RigPanel::measureLatency);
+    connect(saveBundles_, &QCheckBox::toggled, this, &RigPanel::setSaveBundles);
+    connect(replayLast_, &QPushButton::clicked, this,
+            [this] { emit replayRequested(lastBundle_); });
+    connect(&rig_, &rig::RigSession::bundleSaved, this,
+            [this](const QString& folder, const QString& error) {
+                if (!error.isEmpty()) {
+                    trialInfo_->setText(trialInfo_->text() + QLatin1Char('\n') +
+                                        tr("The trial's bundle could not be written: %1")
+                                            .arg(error));
+                    return;
+                }
+                lastBundle_ = folder;
+                replayLast_->setEnabled(true);
+            });
+    {
+        QSettings settings;
+        saveBundles_->setChecked(settings.value(QStringLiteral("rig/saveBundles"), true).toBool());
+        setSaveBundles(saveBundles_->isChecked());
+    }
     connect(&rig_, &rig::RigSession::latencyMeasured, this,
             [this](const rig::LatencyMeasurement& m) {
                 measureLatency_->setEnabled(true);
@@ -790,6 +819,10 @@ void RigPanel::retranslateUi() {
                                    "the throttle forward and back and time the response in "
                                    "the camera"));
     drawFence_->setText(tr("Draw fence"));
+    saveBundles_->setText(tr("Save every trial as a bundle (poses, commands, 10 frames/s)"));
+    saveBundles_->setToolTip(tr("In %1; File > Replay a trial bundle opens one")
+                                 .arg(QDir::toNativeSeparators(defaultBundleFolder())));
+    replayLast_->setText(tr("Replay the last trial"));
     clearFence_->setText(tr("Clear fence"));
     maxSpeedLabel_->setText(tr("Speed limit:"));
     maxSpeed_->setSpecialValueText(tr("none"));
@@ -806,6 +839,20 @@ void RigPanel::retranslateUi() {
 }  // namespace prisca::app
 
 namespace prisca::app {
+
+QString RigPanel::defaultBundleFolder() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+        .filePath(QStringLiteral("trials"));
+}
+
+void RigPanel::setSaveBundles(bool on) {
+    if (saveBundles_->isChecked() != on) {
+        saveBundles_->setChecked(on);  // comes back here
+        return;
+    }
+    rig_.setBundles(on ? defaultBundleFolder() : QString(), 10.0);
+    QSettings().setValue(QStringLiteral("rig/saveBundles"), on);
+}
 
 bool RigPanel::captureBoardView() {
     if (lastFrame_.empty()) {

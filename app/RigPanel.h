@@ -9,6 +9,7 @@
 
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -74,6 +75,19 @@ class RigPanel : public QWidget {
     void clearFence();
     devices::Geofence geofence() const { return rig_.geofence(); }
 
+    // Trial bundles.
+    /// Where trial bundles go (empty: not saved).
+    QString bundleParent() const { return rig_.bundleParent(); }
+    void setSaveBundles(bool on);
+    /// The newest trial's bundle folder (empty: none yet).
+    const QString& lastBundle() const { return lastBundle_; }
+
+  signals:
+    /// Open this bundle in a replay window.
+    void replayRequested(const QString& folder);
+
+  public:
+
     const devices::FloorCalibration& calibration() const { return rig_.calibration(); }
     std::optional<devices::PlanarPose> lastPose() const { return rig_.lastPose(); }
     long long framesSeen() const { return rig_.framesSeen(); }
@@ -129,6 +143,7 @@ class RigPanel : public QWidget {
     void useRecording(const rig::RigRecording& recording);
     void driveTick();
     void applyFence();
+    static QString defaultBundleFolder();
     void showLensInfo();
 
     LabSession& session_;
@@ -187,6 +202,9 @@ class RigPanel : public QWidget {
     QPushButton* clearFence_;
     QDoubleSpinBox* maxSpeed_;
     QDoubleSpinBox* maxLost_;
+    QCheckBox* saveBundles_;
+    QPushButton* replayLast_;
+    QString lastBundle_;
     QString lastResult_;
     bool recordingEndedByEmergency_ = false;
 };

@@ -1032,51 +1032,57 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="103"/>
+        <location filename="../app/MainWindow.cpp" line="104"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="118"/>
-        <location filename="../app/MainWindow.cpp" line="495"/>
-        <location filename="../app/MainWindow.cpp" line="501"/>
+        <location filename="../app/MainWindow.cpp" line="119"/>
+        <location filename="../app/MainWindow.cpp" line="508"/>
+        <location filename="../app/MainWindow.cpp" line="514"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="281"/>
+        <location filename="../app/MainWindow.cpp" line="283"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="365"/>
-        <location filename="../app/MainWindow.cpp" line="428"/>
+        <location filename="../app/MainWindow.cpp" line="367"/>
+        <location filename="../app/MainWindow.cpp" line="440"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="366"/>
+        <location filename="../app/MainWindow.cpp" line="368"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="377"/>
-        <location filename="../app/MainWindow.cpp" line="447"/>
+        <location filename="../app/MainWindow.cpp" line="379"/>
+        <location filename="../app/MainWindow.cpp" line="459"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="378"/>
+        <location filename="../app/MainWindow.cpp" line="380"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="405"/>
+        <location filename="../app/MainWindow.cpp" line="393"/>
+        <location filename="../app/MainWindow.cpp" line="565"/>
+        <source>Replay a trial bundle</source>
+        <translation>重播試驗包</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="417"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="429"/>
+        <location filename="../app/MainWindow.cpp" line="441"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1085,137 +1091,142 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="437"/>
+        <location filename="../app/MainWindow.cpp" line="449"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="439"/>
+        <location filename="../app/MainWindow.cpp" line="451"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="452"/>
+        <location filename="../app/MainWindow.cpp" line="464"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="488"/>
+        <location filename="../app/MainWindow.cpp" line="500"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="489"/>
+        <location filename="../app/MainWindow.cpp" line="501"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="490"/>
+        <location filename="../app/MainWindow.cpp" line="502"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="491"/>
+        <location filename="../app/MainWindow.cpp" line="503"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="492"/>
+        <location filename="../app/MainWindow.cpp" line="504"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="493"/>
+        <location filename="../app/MainWindow.cpp" line="505"/>
+        <source>&amp;Replay a trial bundle...</source>
+        <translation>重播試驗包(&amp;R)...</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="506"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="494"/>
+        <location filename="../app/MainWindow.cpp" line="507"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="496"/>
+        <location filename="../app/MainWindow.cpp" line="509"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="497"/>
+        <location filename="../app/MainWindow.cpp" line="510"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="498"/>
+        <location filename="../app/MainWindow.cpp" line="511"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="499"/>
+        <location filename="../app/MainWindow.cpp" line="512"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="500"/>
+        <location filename="../app/MainWindow.cpp" line="513"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="502"/>
+        <location filename="../app/MainWindow.cpp" line="515"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="503"/>
+        <location filename="../app/MainWindow.cpp" line="516"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="504"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="505"/>
+        <location filename="../app/MainWindow.cpp" line="518"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindow.cpp" line="519"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="507"/>
+        <location filename="../app/MainWindow.cpp" line="520"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="509"/>
+        <location filename="../app/MainWindow.cpp" line="522"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="524"/>
+        <location filename="../app/MainWindow.cpp" line="537"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="536"/>
+        <location filename="../app/MainWindow.cpp" line="549"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="538"/>
+        <location filename="../app/MainWindow.cpp" line="551"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="542"/>
+        <location filename="../app/MainWindow.cpp" line="555"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="545"/>
+        <location filename="../app/MainWindow.cpp" line="558"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
@@ -1478,164 +1489,244 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::ReplayDialog</name>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="40"/>
+        <source>Replay: %1</source>
+        <translation>重播：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="77"/>
+        <source>distance from the path [m]</source>
+        <translation>與路徑的距離 [米]</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="78"/>
+        <source>now</source>
+        <translation>現在</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="81"/>
+        <source>trial time [s]</source>
+        <translation>試驗時間 [秒]</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="82"/>
+        <source>error [m]</source>
+        <translation type="unfinished">誤差 [米]</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="106"/>
+        <source>Pause</source>
+        <translation>暫停</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="106"/>
+        <location filename="../app/ReplayDialog.cpp" line="112"/>
+        <location filename="../app/ReplayDialog.cpp" line="117"/>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="120"/>
+        <source>%1 trial, %2: %3 samples, %4 frames, %5 s</source>
+        <translation>%1 試驗，%2：%3 個樣本，%4 個影格，%5 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="126"/>
+        <source>; last pose %1 cm, %2° from the lot</source>
+        <translation>；最後位姿距泊車位 %1 厘米、%2°</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="132"/>
+        <source> (incomplete: the writer stopped before the trial ended)</source>
+        <translation>（不完整：試驗結束前寫入已停止）</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="134"/>
+        <source>; ended in failsafe: %1</source>
+        <translation>；以失效保護結束：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="162"/>
+        <source>no samples</source>
+        <translation>沒有樣本</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="197"/>
+        <source>%1 s, frame %2%3</source>
+        <translation>%1 秒，影格 %2%3</translation>
+    </message>
+    <message>
+        <location filename="../app/ReplayDialog.cpp" line="200"/>
+        <source>, failsafe</source>
+        <translation>，失效保護</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="275"/>
+        <location filename="../app/RigPanel.cpp" line="285"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="276"/>
-        <location filename="../app/RigPanel.cpp" line="283"/>
+        <location filename="../app/RigPanel.cpp" line="286"/>
+        <location filename="../app/RigPanel.cpp" line="293"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="282"/>
+        <location filename="../app/RigPanel.cpp" line="292"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="343"/>
-        <location filename="../app/RigPanel.cpp" line="354"/>
+        <location filename="../app/RigPanel.cpp" line="372"/>
+        <location filename="../app/RigPanel.cpp" line="383"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="344"/>
+        <location filename="../app/RigPanel.cpp" line="373"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="355"/>
+        <location filename="../app/RigPanel.cpp" line="384"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="412"/>
+        <location filename="../app/RigPanel.cpp" line="441"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="415"/>
+        <location filename="../app/RigPanel.cpp" line="444"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="429"/>
+        <location filename="../app/RigPanel.cpp" line="458"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="457"/>
+        <location filename="../app/RigPanel.cpp" line="486"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="497"/>
+        <location filename="../app/RigPanel.cpp" line="526"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="492"/>
+        <location filename="../app/RigPanel.cpp" line="521"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="154"/>
+        <location filename="../app/RigPanel.cpp" line="161"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="300"/>
+        <location filename="../app/RigPanel.cpp" line="310"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="311"/>
-        <location filename="../app/RigPanel.cpp" line="872"/>
+        <location filename="../app/RigPanel.cpp" line="321"/>
+        <location filename="../app/RigPanel.cpp" line="919"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="312"/>
-        <location filename="../app/RigPanel.cpp" line="860"/>
+        <location filename="../app/RigPanel.cpp" line="322"/>
+        <location filename="../app/RigPanel.cpp" line="907"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="322"/>
+        <location filename="../app/RigPanel.cpp" line="335"/>
+        <source>The trial&apos;s bundle could not be written: %1</source>
+        <translation>無法寫入試驗包：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="351"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="327"/>
+        <location filename="../app/RigPanel.cpp" line="356"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="407"/>
+        <location filename="../app/RigPanel.cpp" line="436"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="476"/>
+        <location filename="../app/RigPanel.cpp" line="505"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="485"/>
+        <location filename="../app/RigPanel.cpp" line="514"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="511"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="520"/>
+        <location filename="../app/RigPanel.cpp" line="549"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="525"/>
+        <location filename="../app/RigPanel.cpp" line="554"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="528"/>
+        <location filename="../app/RigPanel.cpp" line="557"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="531"/>
+        <location filename="../app/RigPanel.cpp" line="560"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="532"/>
+        <location filename="../app/RigPanel.cpp" line="561"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="629"/>
-        <location filename="../app/RigPanel.cpp" line="641"/>
+        <location filename="../app/RigPanel.cpp" line="658"/>
+        <location filename="../app/RigPanel.cpp" line="670"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="630"/>
+        <location filename="../app/RigPanel.cpp" line="659"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1644,344 +1735,359 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="651"/>
+        <location filename="../app/RigPanel.cpp" line="680"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="691"/>
+        <location filename="../app/RigPanel.cpp" line="720"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="694"/>
+        <location filename="../app/RigPanel.cpp" line="723"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="696"/>
+        <location filename="../app/RigPanel.cpp" line="725"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="728"/>
+        <location filename="../app/RigPanel.cpp" line="757"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="729"/>
+        <location filename="../app/RigPanel.cpp" line="758"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="730"/>
+        <location filename="../app/RigPanel.cpp" line="759"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="731"/>
+        <location filename="../app/RigPanel.cpp" line="760"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="737"/>
+        <location filename="../app/RigPanel.cpp" line="766"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="738"/>
+        <location filename="../app/RigPanel.cpp" line="767"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="739"/>
+        <location filename="../app/RigPanel.cpp" line="768"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="740"/>
+        <location filename="../app/RigPanel.cpp" line="769"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="741"/>
+        <location filename="../app/RigPanel.cpp" line="770"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="742"/>
+        <location filename="../app/RigPanel.cpp" line="771"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="744"/>
+        <location filename="../app/RigPanel.cpp" line="773"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="746"/>
+        <location filename="../app/RigPanel.cpp" line="775"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="747"/>
+        <location filename="../app/RigPanel.cpp" line="776"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="748"/>
+        <location filename="../app/RigPanel.cpp" line="777"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="749"/>
+        <location filename="../app/RigPanel.cpp" line="778"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="750"/>
+        <location filename="../app/RigPanel.cpp" line="779"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="751"/>
+        <location filename="../app/RigPanel.cpp" line="780"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="752"/>
+        <location filename="../app/RigPanel.cpp" line="781"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="755"/>
+        <location filename="../app/RigPanel.cpp" line="784"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="756"/>
+        <location filename="../app/RigPanel.cpp" line="785"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="757"/>
+        <location filename="../app/RigPanel.cpp" line="786"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="759"/>
+        <location filename="../app/RigPanel.cpp" line="788"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="760"/>
+        <location filename="../app/RigPanel.cpp" line="789"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="761"/>
+        <location filename="../app/RigPanel.cpp" line="790"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="762"/>
+        <location filename="../app/RigPanel.cpp" line="791"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="763"/>
+        <location filename="../app/RigPanel.cpp" line="792"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="764"/>
+        <location filename="../app/RigPanel.cpp" line="793"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="765"/>
+        <location filename="../app/RigPanel.cpp" line="794"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="766"/>
+        <location filename="../app/RigPanel.cpp" line="795"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="767"/>
+        <location filename="../app/RigPanel.cpp" line="796"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="768"/>
+        <location filename="../app/RigPanel.cpp" line="797"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="770"/>
+        <location filename="../app/RigPanel.cpp" line="799"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="772"/>
+        <location filename="../app/RigPanel.cpp" line="801"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="774"/>
+        <location filename="../app/RigPanel.cpp" line="803"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="776"/>
+        <location filename="../app/RigPanel.cpp" line="805"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="777"/>
+        <location filename="../app/RigPanel.cpp" line="806"/>
         <source>Camera, link, trials</source>
         <translation>攝影機、連結、試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="778"/>
+        <location filename="../app/RigPanel.cpp" line="807"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="779"/>
+        <location filename="../app/RigPanel.cpp" line="808"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="780"/>
+        <location filename="../app/RigPanel.cpp" line="809"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="783"/>
+        <location filename="../app/RigPanel.cpp" line="812"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="784"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="786"/>
+        <location filename="../app/RigPanel.cpp" line="815"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="787"/>
+        <location filename="../app/RigPanel.cpp" line="816"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="788"/>
+        <location filename="../app/RigPanel.cpp" line="817"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="789"/>
+        <location filename="../app/RigPanel.cpp" line="818"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="792"/>
+        <location filename="../app/RigPanel.cpp" line="821"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="793"/>
+        <location filename="../app/RigPanel.cpp" line="822"/>
+        <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
+        <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="823"/>
+        <source>In %1; File &gt; Replay a trial bundle opens one</source>
+        <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="825"/>
+        <source>Replay the last trial</source>
+        <translation>重播上一次試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="794"/>
+        <location filename="../app/RigPanel.cpp" line="827"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="795"/>
-        <location filename="../app/RigPanel.cpp" line="797"/>
+        <location filename="../app/RigPanel.cpp" line="828"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
         <source>none</source>
         <translation type="unfinished">無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="796"/>
+        <location filename="../app/RigPanel.cpp" line="829"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="800"/>
+        <location filename="../app/RigPanel.cpp" line="833"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="812"/>
+        <location filename="../app/RigPanel.cpp" line="859"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817"/>
+        <location filename="../app/RigPanel.cpp" line="864"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="891"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="858"/>
-        <location filename="../app/RigPanel.cpp" line="862"/>
+        <location filename="../app/RigPanel.cpp" line="905"/>
+        <location filename="../app/RigPanel.cpp" line="909"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="890"/>
+        <location filename="../app/RigPanel.cpp" line="937"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="896"/>
+        <location filename="../app/RigPanel.cpp" line="943"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="900"/>
+        <location filename="../app/RigPanel.cpp" line="947"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="911"/>
+        <location filename="../app/RigPanel.cpp" line="958"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="915"/>
+        <location filename="../app/RigPanel.cpp" line="962"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="991"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="994"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="950"/>
+        <location filename="../app/RigPanel.cpp" line="997"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -2538,84 +2644,89 @@
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="136"/>
+        <location filename="../rig/RigSession.cpp" line="143"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="260"/>
+        <location filename="../rig/RigSession.cpp" line="267"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="263"/>
+        <location filename="../rig/RigSession.cpp" line="270"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="280"/>
+        <location filename="../rig/RigSession.cpp" line="287"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="285"/>
+        <location filename="../rig/RigSession.cpp" line="292"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="288"/>
+        <location filename="../rig/RigSession.cpp" line="295"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="291"/>
-        <location filename="../rig/RigSession.cpp" line="614"/>
+        <location filename="../rig/RigSession.cpp" line="298"/>
+        <source>E-STOP is latched: reset it before a trial.</source>
+        <translation>緊急停止已鎖定：試驗前請先重設。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="301"/>
+        <location filename="../rig/RigSession.cpp" line="704"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="302"/>
-        <location filename="../rig/RigSession.cpp" line="325"/>
+        <location filename="../rig/RigSession.cpp" line="312"/>
+        <location filename="../rig/RigSession.cpp" line="335"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="500"/>
+        <location filename="../rig/RigSession.cpp" line="590"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="503"/>
+        <location filename="../rig/RigSession.cpp" line="593"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="512"/>
+        <location filename="../rig/RigSession.cpp" line="602"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="574"/>
+        <location filename="../rig/RigSession.cpp" line="664"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="582"/>
+        <location filename="../rig/RigSession.cpp" line="672"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="611"/>
+        <location filename="../rig/RigSession.cpp" line="701"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="617"/>
+        <location filename="../rig/RigSession.cpp" line="707"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="630"/>
+        <location filename="../rig/RigSession.cpp" line="720"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

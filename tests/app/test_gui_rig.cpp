@@ -1,6 +1,11 @@
 // The Rig panel driven offscreen on the virtual rig: camera, link, trials, driving and
 // recording, the channel map and the floor calibration.
 #include "GuiTestSupport.h"
+#include "app/ReplayDialog.h"
+
+#include <QCheckBox>
+#include <QSlider>
+#include <QTimer>
 #include <algorithm>
 
 using namespace prisca::app;
@@ -74,6 +79,48 @@ class TestGuiRig : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(!rig->linkStatus().emergencyLatched, 3000);
         rig->stopCamera();
         rig->disconnectLink();
+    }
+
+    void rig_fenceEndsTheTrialAndItsBundleReplays() {
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        QVERIFY(w.find<QCheckBox>("saveBundles")->isChecked());  // on by default
+        // A fence across the demonstration's path, 3 m ahead: the car leaves it.
+        for (const QPointF& corner :
+             {QPointF(-0.8, -1.6), QPointF(3.0, -1.6), QPointF(3.0, 2.0), QPointF(-0.8, 2.0)}) {
+            rig->addFenceCorner(corner);
+        }
+        QCOMPARE(rig->geofence().polygon.size(), size_t(4));
+        QVERIFY(w.find<QLabel>("fenceInfo")->text().contains("4 corners"));
+        QVERIFY(startVirtualRig(w, rig));
+        QSignalSpy finished(rig, &RigPanel::trialFinished);
+        QVERIFY(rig->runTrial());
+        QVERIFY(finished.wait(20000));
+        const QString result = finished.last().at(0).toString();
+        QVERIFY2(result.contains("left the fence"), qPrintable(result));
+        QTRY_VERIFY_WITH_TIMEOUT(!rig->lastBundle().isEmpty(), 10000);
+        QVERIFY(w.find<QAbstractButton>("replayLastTrial")->isEnabled());
+        // The replay window: its slider moves the frame, the arena and the chart's cursor.
+        ReplayDialog* replay = w.window.openReplay(rig->lastBundle());
+        QVERIFY(replay);
+        QVERIFY(replay->sampleCount() > 20);
+        auto* slider = replay->findChild<QSlider*>("replaySlider");
+        QVERIFY(slider);
+        QCOMPARE(slider->maximum(), replay->sampleCount() - 1);
+        replay->showSample(replay->sampleCount() / 2);
+        QCOMPARE(slider->value(), replay->sampleCount() / 2);
+        QTest::keyClick(slider, Qt::Key_Right);
+        QCOMPARE(replay->currentSample(), replay->sampleCount() / 2 + 1);
+        replay->close();
+        // A folder that is no bundle: refused (a message box the test closes), no window.
+        QTimer::singleShot(200, [] {
+            if (QWidget* box = QApplication::activeModalWidget()) {
+                box->close();
+            }
+        });
+        QVERIFY(!w.window.openReplay(QStringLiteral("/nonexistent")));
+        rig->clearFence();
+        QVERIFY(rig->geofence().polygon.empty());
     }
 
     void rig_drivingThroughTheLinkRecordsADemonstration() {
