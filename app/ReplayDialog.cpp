@@ -90,7 +90,8 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
     }
     auto* chartView = new QChartView(chart_, this);
     chartView->setRenderHint(QPainter::Antialiasing);
-    chartView->setMinimumHeight(180);
+    chartView->setMinimumHeight(260);
+    chart_->legend()->setAlignment(Qt::AlignRight);
 
     slider_->setRange(0, std::max(0, sampleCount() - 1));
     connect(slider_, &QSlider::valueChanged, this, &ReplayDialog::showSample);
@@ -146,7 +147,7 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(summary_);
     layout->addWidget(views, 3);
-    layout->addWidget(chartView, 1);
+    layout->addWidget(chartView, 2);
     layout->addLayout(controls);
     resize(1200, 800);
     slider_->setFocus();

@@ -28,6 +28,7 @@
 #include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -343,6 +344,17 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         QSettings settings;
         saveBundles_->setChecked(settings.value(QStringLiteral("rig/saveBundles"), true).toBool());
         setSaveBundles(saveBundles_->isChecked());
+        // The fence as the operator left it (floor metres; the same floor next time).
+        QString ignored;
+        if (const auto corners = devices::Geofence::parsePolygon(
+                settings.value(QStringLiteral("rig/fence")).toString(), &ignored)) {
+            for (const cv::Point2d& p : *corners) {
+                fenceCorners_.push_back(QPointF(p.x, p.y));
+            }
+        }
+        const QSignalBlocker speed(maxSpeed_), lost(maxLost_);
+        maxSpeed_->setValue(settings.value(QStringLiteral("rig/fenceMaxSpeed"), 0.0).toDouble());
+        maxLost_->setValue(settings.value(QStringLiteral("rig/fenceMaxLost"), 0.0).toDouble());
     }
     connect(&rig_, &rig::RigSession::latencyMeasured, this,
             [this](const rig::LatencyMeasurement& m) {
@@ -998,6 +1010,14 @@ void RigPanel::applyFence() {
                                 .arg(fenceCorners_.size()));
     }
     rig_.setGeofence(fence);
+    QStringList corners;
+    for (const QPointF& p : fenceCorners_) {
+        corners << QStringLiteral("%1,%2").arg(p.x(), 0, 'g', 10).arg(p.y(), 0, 'g', 10);
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("rig/fence"), corners.join(QLatin1Char(';')));
+    settings.setValue(QStringLiteral("rig/fenceMaxSpeed"), maxSpeed_->value());
+    settings.setValue(QStringLiteral("rig/fenceMaxLost"), maxLost_->value());
 }
 
 }  // namespace prisca::app

@@ -92,6 +92,10 @@ class TestGuiRig : public QObject {
         }
         QCOMPARE(rig->geofence().polygon.size(), size_t(4));
         QVERIFY(w.find<QLabel>("fenceInfo")->text().contains("4 corners"));
+        {  // remembered: the next window has it
+            Window next;
+            QCOMPARE(next.find<RigPanel>("rigPanel")->geofence().polygon.size(), size_t(4));
+        }
         QVERIFY(startVirtualRig(w, rig));
         QSignalSpy finished(rig, &RigPanel::trialFinished);
         QVERIFY(rig->runTrial());
