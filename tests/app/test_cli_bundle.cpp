@@ -82,6 +82,28 @@ class TestCliBundle : public QObject {
         QVERIFY2(r.err.contains("nowhere"), qPrintable(r.err));
     }
 
+    void simulatedTrials_areBundledToo() {
+        QTemporaryDir dir;
+        Result r = cli({"demo", "--plant", "slidecar", "--out", "demo.csv"}, dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({"run", "--plant", "slidecar", "--demo", "demo.csv", "--method", "pd-h-lsd",
+                 "--trials", "2", "--out", "log.csv", "--bundle-dir", "sim", "--format", "json"},
+                dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject run = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const double parked =
+            run.value("trials").toArray().at(1).toObject().value("finalPositionErrorCm").toDouble();
+        r = cli({"replay", "sim/pd-h-lsd-trial-1", "--format", "json"}, dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject replay = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(replay.value("kind").toString(), QString("simulation"));
+        QVERIFY(replay.value("complete").toBool());
+        QVERIFY(replay.value("samples").toInt() > 100);
+        // The replay's last pose is where the trial ended: the same parking error.
+        QVERIFY2(std::abs(replay.value("finalPositionErrorCm").toDouble() - parked) < 1e-6,
+                 qPrintable(r.out));
+    }
+
     void bundle_ofAKilledWriter_readsUpToItsLastSecond() {
         QTemporaryDir dir;
         QProcess rig;
