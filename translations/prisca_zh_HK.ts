@@ -1513,7 +1513,7 @@
     <message>
         <location filename="../app/ReplayDialog.cpp" line="82"/>
         <source>error [m]</source>
-        <translation type="unfinished">誤差 [米]</translation>
+        <translation>誤差 [米]</translation>
     </message>
     <message>
         <location filename="../app/ReplayDialog.cpp" line="106"/>
@@ -2013,7 +2013,7 @@
         <location filename="../app/RigPanel.cpp" line="828"/>
         <location filename="../app/RigPanel.cpp" line="830"/>
         <source>none</source>
-        <translation type="unfinished">無</translation>
+        <translation>無</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="829"/>
