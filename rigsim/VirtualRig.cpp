@@ -73,11 +73,10 @@ VirtualRig::Trial VirtualRig::runTrial(double seconds, core::ResetMode mode, std
         if (step.fault && trial.stopFrame < 0) {
             trial.stopFrame = k;
             trial.stopReason = step.stopReason;
-            // The link's next frame after the fault is failsafe: wait for it, at most one
-            // camera frame.
+            // The link's next frame after the fault is failsafe: wait for two (the first may
+            // have been on its way), at most half a second (a loaded machine, a sanitizer).
             const long long sent = link_->framesSent();
-            const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                     std::chrono::duration<double>(dt));
+            const auto deadline = Clock::now() + std::chrono::milliseconds(500);
             while (link_->framesSent() <= sent + 1 && Clock::now() < deadline) {
                 std::this_thread::sleep_for(std::chrono::microseconds(50));
             }

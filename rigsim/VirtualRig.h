@@ -65,8 +65,8 @@ class VirtualRig {
         int stopFrame = -1;
         QString stopReason;
         /// What the car's receiver held once the link had written two frames after the stop
-        /// (the first may have been on its way), within one camera frame of it; empty if they
-        /// did not come by then.
+        /// (the first may have been on its way; waited for at most 0.5 s); empty if they did
+        /// not come by then.
         std::optional<Eigen::VectorXd> receivedAtStop;
     };
     /// One trial: the car starts from its (perturbed) start, the controller resets with

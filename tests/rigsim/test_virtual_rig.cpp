@@ -107,8 +107,8 @@ class TestVirtualRig : public QObject {
 
     void virtualRig_carLeavingTheFenceIsInFailsafeWithinOneFrame() {
         // Full throttle straight ahead out of a fence 1.2 m ahead of the start: the trial ends
-        // in failsafe in the frame whose pose is first outside, and the receiver is neutral
-        // before the next frame.
+        // in failsafe in the frame whose pose is first outside (the fault latched on the link
+        // in that frame), and the receiver holds neutral from the link's next frames.
         rigsim::VirtualRigSettings settings;
         settings.perturbation = 0.0;
         settings.fence.polygon = {{-0.8, -1.0}, {1.2, -1.0}, {1.2, 1.0}, {-0.8, 1.0}};
