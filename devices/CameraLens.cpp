@@ -1,6 +1,7 @@
 #include "devices/CameraLens.h"
 
 #include "core/FileIo.h"
+#include "devices/JsonFile.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -232,26 +233,11 @@ std::optional<CameraLens> CameraLens::fromJson(const QByteArray& json, QString* 
 }
 
 std::optional<CameraLens> CameraLens::load(const QString& path, QString* error) {
-    core::FileError fileError;
-    const std::optional<QByteArray> json = core::readFileBounded(path, kMaxJsonBytes, &fileError);
-    if (!json) {
-        *error = fileError.toString();
-        return std::nullopt;
-    }
-    auto lens = fromJson(*json, error);
-    if (!lens) {
-        *error = core::printable(QStringLiteral("%1: %2").arg(path, *error));
-    }
-    return lens;
+    return loadJsonFile<CameraLens>(path, error);
 }
 
 bool CameraLens::save(const QString& path, QString* error) const {
-    core::FileError fileError;
-    if (!core::writeFileAtomically(path, toJson(), &fileError)) {
-        *error = fileError.toString();
-        return false;
-    }
-    return true;
+    return saveJsonFile(*this, path, error);
 }
 
 std::vector<cv::Point2f> findBoardCorners(const cv::Mat& image, const BoardSpec& board) {

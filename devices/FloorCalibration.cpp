@@ -1,6 +1,7 @@
 #include "devices/FloorCalibration.h"
 
 #include "core/FileIo.h"
+#include "devices/JsonFile.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -347,26 +348,11 @@ std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& jso
 }
 
 std::optional<FloorCalibration> FloorCalibration::load(const QString& path, QString* error) {
-    core::FileError fileError;
-    const std::optional<QByteArray> json = core::readFileBounded(path, kMaxJsonBytes, &fileError);
-    if (!json) {
-        *error = fileError.toString();
-        return std::nullopt;
-    }
-    auto c = fromJson(*json, error);
-    if (!c) {
-        *error = core::printable(QStringLiteral("%1: %2").arg(path, *error));
-    }
-    return c;
+    return loadJsonFile<FloorCalibration>(path, error);
 }
 
 bool FloorCalibration::save(const QString& path, QString* error) const {
-    core::FileError fileError;
-    if (!core::writeFileAtomically(path, toJson(), &fileError)) {
-        *error = fileError.toString();
-        return false;
-    }
-    return true;
+    return saveJsonFile(*this, path, error);
 }
 
 }  // namespace prisca::devices

@@ -10,22 +10,16 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "support/CliProcess.h"
+
 #include <csignal>
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QString out, err;
-};
+using Result = prisca::test::CliResult;
 
 Result cli(const QStringList& arguments, const QString& directory) {
-    QProcess process;
-    process.setWorkingDirectory(directory);
-    process.start(QStringLiteral(PRISCA_CLI), arguments);
-    process.waitForFinished(180000);
-    return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
-            QString::fromUtf8(process.readAllStandardError())};
+    return prisca::test::runCli(arguments, directory);
 }
 
 int sampleLines(const QString& path) {
