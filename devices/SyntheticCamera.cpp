@@ -238,4 +238,29 @@ std::vector<std::pair<cv::Vec3d, cv::Vec3d>> BoardViewRenderer::poses(const Boar
     return out;
 }
 
+std::vector<CalibrationPoint> syntheticFloorMarkers(const FloorCalibration& camera, int nx, int ny,
+                                                    double pixelNoise, std::uint64_t seed) {
+    cv::RNG rng(seed ? seed : 1);
+    std::vector<CalibrationPoint> points;
+    for (int i = 0; i < nx; ++i) {
+        for (int j = 0; j < ny; ++j) {
+            const cv::Point2d floor(-0.1 + 4.6 * i / std::max(1, nx - 1),
+                                    -1.1 + 3.3 * j / std::max(1, ny - 1));
+            const cv::Point2d px = camera.toImage(floor) +
+                                   cv::Point2d(rng.gaussian(pixelNoise), rng.gaussian(pixelNoise));
+            points.push_back({px, floor});
+        }
+    }
+    return points;
+}
+
+QByteArray floorMarkersCsv(const std::vector<CalibrationPoint>& markers) {
+    QByteArray csv = "# u, v [px], x, y [m]\nu,v,x,y\n";
+    for (const CalibrationPoint& p : markers) {
+        csv += QByteArray::number(p.image.x, 'f', 3) + ',' + QByteArray::number(p.image.y, 'f', 3) +
+               ',' + QByteArray::number(p.floor.x) + ',' + QByteArray::number(p.floor.y) + '\n';
+    }
+    return csv;
+}
+
 }  // namespace prisca::devices

@@ -43,6 +43,14 @@ FloorCalibration syntheticCeilingCamera();
 /// calibration is exact (no fit): toImage() is the camera's projection of a floor point.
 FloorCalibration syntheticWideLensCamera(double k1 = -0.3);
 
+/// Floor markers on an nx x ny grid over x in [-0.1, 4.5] m and y in [-1.1, 2.2] m (the floor
+/// the synthetic cameras see), with their pixels through `camera` plus Gaussian noise of
+/// `pixelNoise` px (a marker clicked or detected to that precision), drawn from `seed`.
+std::vector<CalibrationPoint> syntheticFloorMarkers(const FloorCalibration& camera, int nx, int ny,
+                                                    double pixelNoise, std::uint64_t seed);
+/// The same as calibrate-floor's CSV: "u,v,x,y" per line after a comment and a header.
+QByteArray floorMarkersCsv(const std::vector<CalibrationPoint>& markers);
+
 /// Renders views of a chessboard held before a camera with a lens: the image a real camera
 /// would give (distortion, anti-aliased edges, blur and noise), for lens calibration tests and
 /// demonstrations. The ideal position of every pixel is computed once per lens.

@@ -46,17 +46,7 @@ int main(int argc, char** argv) {
         }
     }
     video.release();
-    QByteArray csv = "# u, v [px], x, y [m]\n";
-    cv::RNG rng(5);
-    for (int i = 0; i < 6; ++i) {
-        for (int j = 0; j < 5; ++j) {
-            const cv::Point2d floor(-0.1 + 4.6 * i / 5.0, -1.1 + 3.3 * j / 4.0);
-            const cv::Point2d px =
-                truth.toImage(floor) + cv::Point2d(rng.gaussian(0.25), rng.gaussian(0.25));
-            csv += QByteArray::number(px.x, 'f', 3) + ',' + QByteArray::number(px.y, 'f', 3) +
-                   ',' + QByteArray::number(floor.x) + ',' + QByteArray::number(floor.y) + '\n';
-        }
-    }
+    const QByteArray csv = floorMarkersCsv(syntheticFloorMarkers(truth, 6, 5, 0.25, 5));
     QFile f(dir + "/floor.csv");
     f.open(QIODevice::WriteOnly);
     f.write(csv);

@@ -84,18 +84,7 @@ class TestCliCalibrate : public QObject {
                  qPrintable(r.out));
 
         // Floor markers on a 6 x 5 grid, their pixels measured to a quarter of a pixel.
-        QByteArray csv = "# u, v [px], x, y [m]\nu,v,x,y\n";
-        cv::RNG rng(5);
-        for (int i = 0; i < 6; ++i) {
-            for (int j = 0; j < 5; ++j) {
-                const cv::Point2d floor(-0.1 + 4.6 * i / 5.0, -1.1 + 3.3 * j / 4.0);
-                const cv::Point2d px =
-                    truth.toImage(floor) + cv::Point2d(rng.gaussian(0.25), rng.gaussian(0.25));
-                csv += QByteArray::number(px.x, 'f', 3) + ',' + QByteArray::number(px.y, 'f', 3) +
-                       ',' + QByteArray::number(floor.x) + ',' + QByteArray::number(floor.y) +
-                       '\n';
-            }
-        }
+        const QByteArray csv = floorMarkersCsv(syntheticFloorMarkers(truth, 6, 5, 0.25, 5));
         QFile points(dir.filePath("floor.csv"));
         QVERIFY(points.open(QIODevice::WriteOnly));
         points.write(csv);

@@ -15,21 +15,9 @@ using namespace prisca::devices;
 
 namespace {
 
-// Floor points on a grid over what the camera sees, with their pixels (clicked or detected to
-// a quarter of a pixel).
 std::vector<CalibrationPoint> floorPoints(const FloorCalibration& truth, int nx, int ny,
                                           double pixelNoise, std::uint64_t seed) {
-    cv::RNG rng(seed);
-    std::vector<CalibrationPoint> points;
-    for (int i = 0; i < nx; ++i) {
-        for (int j = 0; j < ny; ++j) {
-            const cv::Point2d floor(-0.1 + 4.6 * i / (nx - 1), -1.1 + 3.3 * j / (ny - 1));
-            cv::Point2d px = truth.toImage(floor);
-            px += cv::Point2d(rng.gaussian(pixelNoise), rng.gaussian(pixelNoise));
-            points.push_back({px, floor});
-        }
-    }
-    return points;
+    return syntheticFloorMarkers(truth, nx, ny, pixelNoise, seed);
 }
 
 // The largest distance between where a calibration puts a pixel on the floor and where it is,
