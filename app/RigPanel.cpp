@@ -22,6 +22,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QInputDialog>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -462,6 +463,7 @@ bool RigPanel::runTrial() {
     }
     rig::TrialRequest request;
     request.setup = std::make_shared<const sim::RunSetup>(session_.task(), session_.method());
+    request.session = QJsonDocument::fromJson(session_.toJson()).object();
     QString error;
     if (!rig_.startTrial(request, &error)) {
         trialInfo_->setText(error);

@@ -20,6 +20,8 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSettings>
+#include <QStandardPaths>
+#include <QJsonDocument>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -257,6 +259,13 @@ void RunPanel::startRun() {
                                             .arg(session_.scriptedStyle())
                                             .arg(session_.scriptedSeed())
                                       : session_.demonstrationSource();
+    // Trials kept as bundles, as the Rig tab's "Save every trial as a bundle" says.
+    if (QSettings().value(QStringLiteral("rig/saveBundles"), true).toBool()) {
+        request.bundleParent =
+            QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                .filePath(QStringLiteral("trials"));
+        request.session = QJsonDocument::fromJson(session_.toJson()).object();
+    }
     results_->setRowCount(0);
     firstTrialRms_ = 0.0;
     divergence_->hide();

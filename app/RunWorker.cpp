@@ -1,5 +1,10 @@
 #include "app/RunWorker.h"
 
+#include "rig/TrialBundle.h"
+
+#include <QDateTime>
+#include <QDir>
+
 #include "core/Controller.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
@@ -148,6 +153,7 @@ void RunWorker::endTrial() {
     const sim::TrialSummary summary =
         sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
     sim::appendRunLogTrial(runLog_, trial_, result, request_.task.demonstration->dt);
+    saveBundle(result, summary);
     emit trialFinished(trial_, summary);
     runTimeOffset_ += result.duration;
     ++trial_;
@@ -185,6 +191,29 @@ void RunWorker::resume() {
     }
 }
 
+void RunWorker::saveBundle(const sim::EpisodeResult& result, const sim::TrialSummary& summary) {
+    if (request_.bundleParent.isEmpty()) {
+        return;
+    }
+    const QString folder = QDir(request_.bundleParent)
+                               .filePath(QStringLiteral("sim-%1-%2-trial-%3")
+                                             .arg(QDateTime::currentDateTime().toString(
+                                                      QStringLiteral("yyyyMMdd-hhmmss")),
+                                                  request_.method)
+                                             .arg(trial_ + 1));
+    QJsonObject header{{"method", request_.method},
+                       {"trial", trial_ + 1},
+                       {"seed", static_cast<double>(request_.settings.seed)},
+                       {"session", request_.session}};
+    QString error;
+    if (!rig::writeSimulationBundle(folder, header, request_.task.profile.info,
+                                    *request_.task.demonstration, result, summary, &error)) {
+        emit progress(tr("The trial's bundle could not be written: %1").arg(error));
+        return;
+    }
+    emit bundleSaved(folder);
+}
+
 void RunWorker::stop() {
     cancelTraining_.store(true);
     if (phase_ == RunPhase::Running || phase_ == RunPhase::Paused) {
@@ -195,6 +224,7 @@ void RunWorker::stop() {
             sim::TrialSummary summary =
                 sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
             summary.complete = false;  // stopped part-way: reported, and marked as such
+            saveBundle(result, summary);
             emit trialFinished(trial_, summary);
         }
         stepper_.reset();

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <QElapsedTimer>
 #include <QMetaType>
+#include <QJsonObject>
 #include <QObject>
 #include <QVector>
 
@@ -36,6 +37,10 @@ struct RunRequest {
     int trials = 5;               ///< trials in a row; learners keep learning (warm start)
     sim::RunSettings settings;    ///< seed, levels, training trials (sim::RunSetup's defaults)
     QString demonstrationSource;  ///< for the run log: the file, or the scripted style and seed
+    /// Save each trial as a bundle (rig::writeSimulationBundle) in a new folder under this one;
+    /// empty: none. `session` goes into each bundle's header.
+    QString bundleParent;
+    QJsonObject session;
 };
 
 /// One control step as the live views show it.
@@ -99,6 +104,8 @@ class RunWorker : public QObject {
     void setSpeed(double speed);
 
   signals:
+    /// A trial's bundle is on disk (RunRequest::bundleParent).
+    void bundleSaved(const QString& folder);
     void samplesReady(const QVector<prisca::app::LiveSample>& samples);
     void phaseChanged(prisca::app::RunPhase phase);
     /// One line for the status bar ("trial 2 of 5", "training PD (selected): ...").
@@ -115,6 +122,7 @@ class RunWorker : public QObject {
     void tick();
     void beginTrial();
     void endTrial();
+    void saveBundle(const sim::EpisodeResult& result, const sim::TrialSummary& summary);
     void flushSamples();
     void setPhase(RunPhase phase);
     void enterEmergencyStop();

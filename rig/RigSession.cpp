@@ -354,6 +354,9 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
                            {"calibration", QJsonDocument::fromJson(l.calibration.toJson()).object()},
                            {"fence", l.fence.toJson()},
                            {"videoFps", l.bundleFps}};
+        if (!request.session.isEmpty()) {
+            header.insert("session", request.session);
+        }
         if (l.loopLatency) {
             header.insert("loopLatencyMs", *l.loopLatency * 1000.0);
         }

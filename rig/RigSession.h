@@ -16,6 +16,7 @@
 #include "sim/TrialMetrics.h"
 
 #include <QMetaType>
+#include <QJsonObject>
 #include <QObject>
 #include <QString>
 #include <QThread>
@@ -73,6 +74,8 @@ struct TrialRequest {
     std::shared_ptr<const sim::RunSetup> setup;
     /// The virtual car's seed for this trial (its start, friction, gains); 0: the trial number.
     std::uint64_t virtualSeed = 0;
+    /// The operator's session (the window's), kept in the trial's bundle; empty: none.
+    QJsonObject session;
 };
 
 /// How a trial on the rig ended.

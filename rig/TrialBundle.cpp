@@ -221,6 +221,51 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
     return b;
 }
 
+bool writeSimulationBundle(const QString& folder, QJsonObject header, const sim::PlantInfo& info,
+                           const core::Demonstration& demonstration,
+                           const sim::EpisodeResult& result, const sim::TrialSummary& summary,
+                           QString* error) {
+    header.insert("kind", QStringLiteral("simulation"));
+    header.insert("plant", info.name);
+    TrialBundleWriter writer;
+    if (!writer.open(folder, header, demonstration, error)) {
+        return false;
+    }
+    for (const sim::StepRecord& step : result.steps) {
+        BundleSample sample;
+        sample.t = step.time;
+        sample.found = info.pose.has_value();
+        if (info.pose) {
+            sample.x = step.state[info.pose->x];
+            sample.y = step.state[info.pose->y];
+            sample.psi = step.state[info.pose->heading];
+        }
+        sample.state.assign(step.observation.data(),
+                            step.observation.data() + step.observation.size());
+        sample.action.assign(step.action.data(), step.action.data() + step.action.size());
+        writer.append(sample);
+    }
+    if (info.pose && result.finalState.size() > 2) {  // where the trial ended
+        BundleSample end;
+        end.t = summary.duration;
+        end.found = true;
+        end.x = result.finalState[info.pose->x];
+        end.y = result.finalState[info.pose->y];
+        end.psi = result.finalState[info.pose->heading];
+        writer.append(end);
+    }
+    QJsonObject r{{"failsafe", result.lostTrack},
+                  {"reason", result.lostTrack ? QStringLiteral("the robot left the demonstration")
+                                              : QString()},
+                  {"stopped", !summary.complete},
+                  {"seconds", summary.duration}};
+    if (info.pose) {
+        r.insert("finalPositionErrorCm", summary.finalPositionError * 100.0);
+        r.insert("finalHeadingErrorDeg", summary.finalHeadingError * 180.0 / M_PI);
+    }
+    return writer.finish(r, error);
+}
+
 QJsonObject summarizeBundle(const TrialBundle& bundle) {
     QJsonObject o{{"folder", bundle.folder},
                   {"kind", bundle.header.value("kind")},

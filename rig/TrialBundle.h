@@ -1,6 +1,9 @@
 #pragma once
 
 #include "core/Demonstration.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/Plant.h"
+#include "sim/TrialMetrics.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -72,6 +75,14 @@ struct TrialBundle {
 
     static std::optional<TrialBundle> load(const QString& folder, QString* error);
 };
+
+/// A simulated trial as a bundle in `folder` (new): one sample per control step (the true pose,
+/// the observation, the command) and the final state; `header` gains kind "simulation" and the
+/// result (the trial's own parking error). False and *error on failure.
+bool writeSimulationBundle(const QString& folder, QJsonObject header, const sim::PlantInfo& info,
+                           const core::Demonstration& demonstration,
+                           const sim::EpisodeResult& result, const sim::TrialSummary& summary,
+                           QString* error);
 
 /// The bundle's scores from its samples: duration, frames, frames with a pose, commands in
 /// failsafe, and where the last pose stopped relative to the demonstration's end (position

@@ -179,51 +179,14 @@ int runCommand(const QStringList& arguments) {
         sim::appendRunLogTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
         if (line.isSet("bundle-dir")) {
-            // The trial as a bundle: one sample per control step, the true pose.
-            QJsonObject header{{"kind", QStringLiteral("simulation")},
-                               {"method", method},
-                               {"plant", info.name},
-                               {"trial", trial},
-                               {"seed", static_cast<double>(seed)}};
             const QString folder = QDir(line.value("bundle-dir"))
                                        .filePath(QStringLiteral("%1-trial-%2").arg(method).arg(trial));
-            rig::TrialBundleWriter writer;
             QString bundleError;
-            if (!writer.open(folder, header, demo, &bundleError)) {
-                throw UsageError(QStringLiteral("--bundle-dir: %1").arg(bundleError));
-            }
-            for (const sim::StepRecord& step : result.steps) {
-                rig::BundleSample sample;
-                sample.t = step.time;
-                sample.found = info.pose.has_value();
-                if (info.pose) {
-                    sample.x = step.state[info.pose->x];
-                    sample.y = step.state[info.pose->y];
-                    sample.psi = step.state[info.pose->heading];
-                }
-                sample.state.assign(step.observation.data(),
-                                    step.observation.data() + step.observation.size());
-                sample.action.assign(step.action.data(), step.action.data() + step.action.size());
-                writer.append(sample);
-            }
-            if (info.pose && result.finalState.size() > 2) {  // where the trial ended
-                rig::BundleSample end;
-                end.t = summary.duration;
-                end.found = true;
-                end.x = result.finalState[info.pose->x];
-                end.y = result.finalState[info.pose->y];
-                end.psi = result.finalState[info.pose->heading];
-                writer.append(end);
-            }
-            QJsonObject r{{"failsafe", result.lostTrack},
-                          {"reason", result.lostTrack ? QStringLiteral("the robot left the demonstration")
-                                                      : QString()},
-                          {"seconds", summary.duration}};
-            if (info.pose) {
-                r.insert("finalPositionErrorCm", summary.finalPositionError * 100.0);
-                r.insert("finalHeadingErrorDeg", summary.finalHeadingError * 180.0 / M_PI);
-            }
-            if (!writer.finish(r, &bundleError)) {
+            if (!rig::writeSimulationBundle(folder,
+                                            {{"method", method},
+                                             {"trial", trial},
+                                             {"seed", static_cast<double>(seed)}},
+                                            info, demo, result, summary, &bundleError)) {
                 throw UsageError(QStringLiteral("--bundle-dir: %1").arg(bundleError));
             }
         }

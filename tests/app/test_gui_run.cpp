@@ -1,6 +1,10 @@
 // The Run panel and the live charts driven offscreen through their real widgets: runs on the
 // simulated plants, the run log (the CLI's, byte for byte), E-STOP, pause, shortcuts, layout.
 #include "GuiTestSupport.h"
+#include "rig/TrialBundle.h"
+
+#include <QDir>
+#include <QStandardPaths>
 
 using namespace prisca::app;
 using namespace prisca::test;
@@ -73,6 +77,18 @@ class TestGuiRun : public QObject {
         }
         QCOMPARE(trials, QSet<QString>({"0", "1"}));
         QVERIFY(lines.size() - at - 1 >= 2 * 158);
+        // Each trial was also kept as a bundle (the default), with the session in it.
+        const QDir bundles(
+            QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                .filePath("trials"));
+        const QStringList made =
+            bundles.entryList({"sim-*-prisca-trial-2"}, QDir::Dirs, QDir::Name);
+        QVERIFY2(!made.isEmpty(), qPrintable(bundles.path()));
+        const auto bundle = prisca::rig::TrialBundle::load(bundles.filePath(made.last()), &error);
+        QVERIFY2(bundle, qPrintable(error));
+        QVERIFY(bundle->complete());
+        QVERIFY(bundle->samples.size() >= 158);
+        QVERIFY(bundle->header.value("session").toObject().contains("format"));
     }
 
     void run_priscaOnTheSlideCarFillsTheResultsAndCharts() {
