@@ -1516,49 +1516,49 @@
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="106"/>
+        <location filename="../app/ReplayDialog.cpp" line="107"/>
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="106"/>
-        <location filename="../app/ReplayDialog.cpp" line="112"/>
-        <location filename="../app/ReplayDialog.cpp" line="117"/>
+        <location filename="../app/ReplayDialog.cpp" line="107"/>
+        <location filename="../app/ReplayDialog.cpp" line="113"/>
+        <location filename="../app/ReplayDialog.cpp" line="118"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="120"/>
+        <location filename="../app/ReplayDialog.cpp" line="121"/>
         <source>%1 trial, %2: %3 samples, %4 frames, %5 s</source>
         <translation>%1 試驗，%2：%3 個樣本，%4 個影格，%5 秒</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="126"/>
+        <location filename="../app/ReplayDialog.cpp" line="127"/>
         <source>; last pose %1 cm, %2° from the lot</source>
         <translation>；最後位姿距泊車位 %1 厘米、%2°</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="132"/>
+        <location filename="../app/ReplayDialog.cpp" line="133"/>
         <source> (incomplete: the writer stopped before the trial ended)</source>
         <translation>（不完整：試驗結束前寫入已停止）</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="134"/>
+        <location filename="../app/ReplayDialog.cpp" line="135"/>
         <source>; ended in failsafe: %1</source>
         <translation>；以失效保護結束：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="162"/>
+        <location filename="../app/ReplayDialog.cpp" line="163"/>
         <source>no samples</source>
         <translation>沒有樣本</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="197"/>
+        <location filename="../app/ReplayDialog.cpp" line="198"/>
         <source>%1 s, frame %2%3</source>
         <translation>%1 秒，影格 %2%3</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="200"/>
+        <location filename="../app/ReplayDialog.cpp" line="201"/>
         <source>, failsafe</source>
         <translation>，失效保護</translation>
     </message>
@@ -1566,167 +1566,167 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="285"/>
+        <location filename="../app/RigPanel.cpp" line="287"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="286"/>
-        <location filename="../app/RigPanel.cpp" line="293"/>
+        <location filename="../app/RigPanel.cpp" line="288"/>
+        <location filename="../app/RigPanel.cpp" line="295"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="292"/>
+        <location filename="../app/RigPanel.cpp" line="294"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="372"/>
-        <location filename="../app/RigPanel.cpp" line="383"/>
+        <location filename="../app/RigPanel.cpp" line="385"/>
+        <location filename="../app/RigPanel.cpp" line="396"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="373"/>
+        <location filename="../app/RigPanel.cpp" line="386"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="384"/>
+        <location filename="../app/RigPanel.cpp" line="397"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="441"/>
+        <location filename="../app/RigPanel.cpp" line="454"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="444"/>
+        <location filename="../app/RigPanel.cpp" line="457"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="458"/>
+        <location filename="../app/RigPanel.cpp" line="472"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="486"/>
+        <location filename="../app/RigPanel.cpp" line="500"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="526"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="521"/>
+        <location filename="../app/RigPanel.cpp" line="535"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="161"/>
+        <location filename="../app/RigPanel.cpp" line="163"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="310"/>
+        <location filename="../app/RigPanel.cpp" line="312"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="321"/>
-        <location filename="../app/RigPanel.cpp" line="919"/>
+        <location filename="../app/RigPanel.cpp" line="323"/>
+        <location filename="../app/RigPanel.cpp" line="933"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="322"/>
-        <location filename="../app/RigPanel.cpp" line="907"/>
+        <location filename="../app/RigPanel.cpp" line="324"/>
+        <location filename="../app/RigPanel.cpp" line="921"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="335"/>
+        <location filename="../app/RigPanel.cpp" line="337"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="351"/>
+        <location filename="../app/RigPanel.cpp" line="364"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="356"/>
+        <location filename="../app/RigPanel.cpp" line="369"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="436"/>
+        <location filename="../app/RigPanel.cpp" line="449"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="519"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="514"/>
+        <location filename="../app/RigPanel.cpp" line="528"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="554"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="549"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="554"/>
+        <location filename="../app/RigPanel.cpp" line="568"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="557"/>
+        <location filename="../app/RigPanel.cpp" line="571"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="560"/>
+        <location filename="../app/RigPanel.cpp" line="574"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="561"/>
+        <location filename="../app/RigPanel.cpp" line="575"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="651"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="658"/>
-        <location filename="../app/RigPanel.cpp" line="670"/>
+        <location filename="../app/RigPanel.cpp" line="672"/>
+        <location filename="../app/RigPanel.cpp" line="684"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="659"/>
+        <location filename="../app/RigPanel.cpp" line="673"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1735,359 +1735,359 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="680"/>
+        <location filename="../app/RigPanel.cpp" line="694"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="720"/>
+        <location filename="../app/RigPanel.cpp" line="734"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="723"/>
+        <location filename="../app/RigPanel.cpp" line="737"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="725"/>
+        <location filename="../app/RigPanel.cpp" line="739"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="757"/>
+        <location filename="../app/RigPanel.cpp" line="771"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="758"/>
+        <location filename="../app/RigPanel.cpp" line="772"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="759"/>
+        <location filename="../app/RigPanel.cpp" line="773"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="760"/>
+        <location filename="../app/RigPanel.cpp" line="774"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="766"/>
+        <location filename="../app/RigPanel.cpp" line="780"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="767"/>
+        <location filename="../app/RigPanel.cpp" line="781"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="768"/>
+        <location filename="../app/RigPanel.cpp" line="782"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="769"/>
+        <location filename="../app/RigPanel.cpp" line="783"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="770"/>
+        <location filename="../app/RigPanel.cpp" line="784"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="771"/>
+        <location filename="../app/RigPanel.cpp" line="785"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="773"/>
+        <location filename="../app/RigPanel.cpp" line="787"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="775"/>
+        <location filename="../app/RigPanel.cpp" line="789"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="776"/>
+        <location filename="../app/RigPanel.cpp" line="790"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="777"/>
+        <location filename="../app/RigPanel.cpp" line="791"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="778"/>
+        <location filename="../app/RigPanel.cpp" line="792"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="779"/>
+        <location filename="../app/RigPanel.cpp" line="793"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="780"/>
+        <location filename="../app/RigPanel.cpp" line="794"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="781"/>
+        <location filename="../app/RigPanel.cpp" line="795"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="784"/>
+        <location filename="../app/RigPanel.cpp" line="798"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="785"/>
+        <location filename="../app/RigPanel.cpp" line="799"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="786"/>
+        <location filename="../app/RigPanel.cpp" line="800"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="788"/>
+        <location filename="../app/RigPanel.cpp" line="802"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="789"/>
+        <location filename="../app/RigPanel.cpp" line="803"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790"/>
+        <location filename="../app/RigPanel.cpp" line="804"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="791"/>
+        <location filename="../app/RigPanel.cpp" line="805"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="792"/>
+        <location filename="../app/RigPanel.cpp" line="806"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="793"/>
+        <location filename="../app/RigPanel.cpp" line="807"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="794"/>
+        <location filename="../app/RigPanel.cpp" line="808"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="795"/>
+        <location filename="../app/RigPanel.cpp" line="809"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="796"/>
+        <location filename="../app/RigPanel.cpp" line="810"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="797"/>
+        <location filename="../app/RigPanel.cpp" line="811"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="799"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="801"/>
+        <location filename="../app/RigPanel.cpp" line="815"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="803"/>
+        <location filename="../app/RigPanel.cpp" line="817"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="805"/>
+        <location filename="../app/RigPanel.cpp" line="819"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="806"/>
+        <location filename="../app/RigPanel.cpp" line="820"/>
         <source>Camera, link, trials</source>
         <translation>攝影機、連結、試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="807"/>
+        <location filename="../app/RigPanel.cpp" line="821"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="808"/>
+        <location filename="../app/RigPanel.cpp" line="822"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="809"/>
+        <location filename="../app/RigPanel.cpp" line="823"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="812"/>
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="827"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="815"/>
+        <location filename="../app/RigPanel.cpp" line="829"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="816"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817"/>
+        <location filename="../app/RigPanel.cpp" line="831"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="818"/>
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="821"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822"/>
+        <location filename="../app/RigPanel.cpp" line="836"/>
         <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
         <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="837"/>
         <source>In %1; File &gt; Replay a trial bundle opens one</source>
         <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="825"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="840"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="827"/>
+        <location filename="../app/RigPanel.cpp" line="841"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="828"/>
-        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="842"/>
+        <location filename="../app/RigPanel.cpp" line="844"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="829"/>
+        <location filename="../app/RigPanel.cpp" line="843"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="833"/>
+        <location filename="../app/RigPanel.cpp" line="847"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="859"/>
+        <location filename="../app/RigPanel.cpp" line="873"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="864"/>
+        <location filename="../app/RigPanel.cpp" line="878"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="900"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="891"/>
+        <location filename="../app/RigPanel.cpp" line="905"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="905"/>
-        <location filename="../app/RigPanel.cpp" line="909"/>
+        <location filename="../app/RigPanel.cpp" line="919"/>
+        <location filename="../app/RigPanel.cpp" line="923"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="937"/>
+        <location filename="../app/RigPanel.cpp" line="951"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="943"/>
+        <location filename="../app/RigPanel.cpp" line="957"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="961"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="958"/>
+        <location filename="../app/RigPanel.cpp" line="972"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="962"/>
+        <location filename="../app/RigPanel.cpp" line="976"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="991"/>
+        <location filename="../app/RigPanel.cpp" line="1005"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="994"/>
+        <location filename="../app/RigPanel.cpp" line="1008"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="997"/>
+        <location filename="../app/RigPanel.cpp" line="1011"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -2095,238 +2095,238 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="159"/>
-        <location filename="../app/RunPanel.cpp" line="169"/>
+        <location filename="../app/RunPanel.cpp" line="161"/>
+        <location filename="../app/RunPanel.cpp" line="171"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="160"/>
+        <location filename="../app/RunPanel.cpp" line="162"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="173"/>
+        <location filename="../app/RunPanel.cpp" line="175"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="271"/>
+        <location filename="../app/RunPanel.cpp" line="280"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="315"/>
+        <location filename="../app/RunPanel.cpp" line="324"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="315"/>
+        <location filename="../app/RunPanel.cpp" line="324"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="305"/>
+        <location filename="../app/RunPanel.cpp" line="314"/>
         <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
         <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="231"/>
+        <location filename="../app/RunPanel.cpp" line="233"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="307"/>
+        <location filename="../app/RunPanel.cpp" line="316"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="309"/>
+        <location filename="../app/RunPanel.cpp" line="318"/>
         <source>E-STOP reset: ready to run.</source>
         <translation>緊急停止已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="317"/>
+        <location filename="../app/RunPanel.cpp" line="326"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="334"/>
+        <location filename="../app/RunPanel.cpp" line="343"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="338"/>
+        <location filename="../app/RunPanel.cpp" line="347"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="351"/>
+        <location filename="../app/RunPanel.cpp" line="360"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="379"/>
+        <location filename="../app/RunPanel.cpp" line="388"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="380"/>
+        <location filename="../app/RunPanel.cpp" line="389"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="381"/>
+        <location filename="../app/RunPanel.cpp" line="390"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="383"/>
+        <location filename="../app/RunPanel.cpp" line="392"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="385"/>
+        <location filename="../app/RunPanel.cpp" line="394"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="387"/>
+        <location filename="../app/RunPanel.cpp" line="396"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="389"/>
+        <location filename="../app/RunPanel.cpp" line="398"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="391"/>
+        <location filename="../app/RunPanel.cpp" line="400"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="393"/>
+        <location filename="../app/RunPanel.cpp" line="402"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="395"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="396"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="406"/>
+        <location filename="../app/RunPanel.cpp" line="415"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="314"/>
+        <location filename="../app/RunPanel.cpp" line="323"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="325"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="407"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="400"/>
+        <location filename="../app/RunPanel.cpp" line="409"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="412"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="413"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="408"/>
+        <location filename="../app/RunPanel.cpp" line="417"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="409"/>
+        <location filename="../app/RunPanel.cpp" line="418"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="410"/>
+        <location filename="../app/RunPanel.cpp" line="419"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="412"/>
+        <location filename="../app/RunPanel.cpp" line="421"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="413"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="416"/>
+        <location filename="../app/RunPanel.cpp" line="425"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="416"/>
+        <location filename="../app/RunPanel.cpp" line="425"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="416"/>
+        <location filename="../app/RunPanel.cpp" line="425"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="417"/>
+        <location filename="../app/RunPanel.cpp" line="426"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="417"/>
+        <location filename="../app/RunPanel.cpp" line="426"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="428"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="428"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="420"/>
+        <location filename="../app/RunPanel.cpp" line="429"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="420"/>
+        <location filename="../app/RunPanel.cpp" line="429"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -2334,32 +2334,37 @@
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="40"/>
+        <location filename="../app/RunWorker.cpp" line="45"/>
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="68"/>
+        <location filename="../app/RunWorker.cpp" line="73"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="82"/>
+        <location filename="../app/RunWorker.cpp" line="87"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="158"/>
+        <location filename="../app/RunWorker.cpp" line="164"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="202"/>
+        <location filename="../app/RunWorker.cpp" line="211"/>
+        <source>The trial&apos;s bundle could not be written: %1</source>
+        <translation>無法寫入試驗包：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RunWorker.cpp" line="232"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="219"/>
+        <location filename="../app/RunWorker.cpp" line="249"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -2680,7 +2685,7 @@
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="301"/>
-        <location filename="../rig/RigSession.cpp" line="704"/>
+        <location filename="../rig/RigSession.cpp" line="707"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
@@ -2691,42 +2696,42 @@
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="590"/>
+        <location filename="../rig/RigSession.cpp" line="593"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="593"/>
+        <location filename="../rig/RigSession.cpp" line="596"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="602"/>
+        <location filename="../rig/RigSession.cpp" line="605"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="664"/>
+        <location filename="../rig/RigSession.cpp" line="667"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="672"/>
+        <location filename="../rig/RigSession.cpp" line="675"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="701"/>
+        <location filename="../rig/RigSession.cpp" line="704"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="707"/>
+        <location filename="../rig/RigSession.cpp" line="710"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="720"/>
+        <location filename="../rig/RigSession.cpp" line="723"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
