@@ -224,9 +224,14 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
     if (key->key() == Qt::Key_Space) {
         QWidget* focus = widget;  // the key goes to the focus widget first
         const auto* combo = qobject_cast<QComboBox*>(focus);
-        if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
-            qobject_cast<QTextEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus) ||
-            (combo && combo->isEditable())) {
+        // A number field is no text field: a space is never part of a number, so there Space
+        // is E-STOP too (the Run panel is mostly spin boxes: the common case).
+        const bool numberField =
+            qobject_cast<QAbstractSpinBox*>(focus) ||
+            (focus->parentWidget() && qobject_cast<QAbstractSpinBox*>(focus->parentWidget()));
+        if (!numberField &&
+            (qobject_cast<QLineEdit*>(focus) || qobject_cast<QTextEdit*>(focus) ||
+             qobject_cast<QPlainTextEdit*>(focus) || (combo && combo->isEditable()))) {
             return false;  // a space typed into a text field
         }
     }

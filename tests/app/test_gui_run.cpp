@@ -220,6 +220,18 @@ class TestGuiRun : public QObject {
         // Esc works the same, here while idle.
         QTest::keyClick(&w.window, Qt::Key_Escape);
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        reset->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        // Space with a number field focused (the Seed box): E-STOP still, not a typed space.
+        auto* seed = w.find<QSpinBox>("seed");
+        const int seedBefore = seed->value();
+        run->click();
+        QTRY_VERIFY_WITH_TIMEOUT(worker->stepsTaken() > 100, kRunTimeoutMs);
+        seed->setFocus();
+        QTRY_VERIFY(seed->hasFocus());
+        QTest::keyClick(seed, Qt::Key_Space);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        QCOMPARE(seed->value(), seedBefore);
     }
 
     void layout_at1280x800GivesTheArenaRoomAndNoSidewaysScrolling() {
