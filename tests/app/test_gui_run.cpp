@@ -315,9 +315,16 @@ class TestGuiRun : public QObject {
         QVERIFY(w.results()->rowCount() >= 0);
         QTest::keyClick(w.find<QSpinBox>("seed"), Qt::Key_R, Qt::ControlModifier);
         QTRY_COMPARE(w.results()->rowCount(), 0);
-        // Space in a text field types; elsewhere it is E-STOP.
-        QTest::keyClick(w.find<QSpinBox>("seed"), Qt::Key_Space);
+        // Space in a text field types (the camera's path may hold one); elsewhere, a number
+        // field included, it is E-STOP.
+        auto* path = w.find<QLineEdit>("cameraPath");
+        path->setEnabled(true);
+        path->setText(QStringLiteral("my"));
+        path->setFocus();
+        path->setCursorPosition(2);
+        QTest::keyClick(path, Qt::Key_Space);
         QCOMPARE(estop.count(), 0);
+        QCOMPARE(path->text(), QStringLiteral("my "));
         QTest::keyClick(speed, Qt::Key_Space);
         QCOMPARE(estop.count(), 1);
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
