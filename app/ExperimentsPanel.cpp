@@ -40,14 +40,17 @@ QString plusMinus(const core::ErrorSummary& s) {
     if (s.count == 0) {
         return QStringLiteral("—");
     }
+    if (s.count == 1) {  // no spread from one trial
+        return QString::number(s.meanAbsoluteError, 'f', 2);
+    }
     return QStringLiteral("%1 ± %2")
         .arg(s.meanAbsoluteError, 0, 'f', 2)
         .arg(s.standardDeviation, 0, 'f', 2);
 }
 
-// A variance only where there were trials to take it from (a cancelled row has none).
+// A variance only where there were trials to take it from (a cancelled row may have one or none).
 QString variance(const core::ErrorSummary& s) {
-    return s.count == 0 || !std::isfinite(s.variance) ? QStringLiteral("—")
+    return s.count < 2 || !std::isfinite(s.variance) ? QStringLiteral("—")
                                                       : QString::number(s.variance, 'f', 2);
 }
 
@@ -230,13 +233,17 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
         caption_ += tr(" (cancelled: %1 trials finished)").arg(done);
     }
     table_->clear();
-    table_->setColumnCount(5);
+    table_->setColumnCount(6);
     table_->setRowCount(static_cast<int>(rows_.size()));
-    table_->setHorizontalHeaderLabels({tr("Method"), tr("Position [cm]"), tr("Var. [cm²]"),
-                                       tr("Orientation [deg]"), tr("Var. [deg²]")});
+    table_->setHorizontalHeaderLabels({tr("Method"), tr("N"), tr("Position [cm]"),
+                                       tr("Var. [cm²]"), tr("Orientation [deg]"),
+                                       tr("Var. [deg²]")});
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
-        const QStringList cells = {row.shownLabel(), plusMinus(row.position),
+        // A row with fewer trials than asked (a cancelled batch) says so.
+        const bool partial = result->cancelled && row.position.count < count_->value();
+        const QStringList cells = {partial ? row.shownLabel() + tr(" (partial)") : row.shownLabel(),
+                                   QString::number(row.position.count), plusMinus(row.position),
                                    variance(row.position), plusMinus(row.orientation),
                                    variance(row.orientation)};
         for (int c = 0; c < cells.size(); ++c) {

@@ -579,186 +579,196 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="152"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="182"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="155"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="185"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="183"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="186"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="198"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="201"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="207"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="210"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="230"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="235"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="236"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="236"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="240"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="223"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="260"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
+        <source> (partial)</source>
+        <translation>（部分）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="275"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="304"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="383"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="405"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="417"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="412"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="406"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="413"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="432"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="444"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="445"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="448"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="449"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="450"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="460"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="461"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="462"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="463"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -1038,51 +1048,51 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="119"/>
-        <location filename="../app/MainWindow.cpp" line="508"/>
-        <location filename="../app/MainWindow.cpp" line="514"/>
+        <location filename="../app/MainWindow.cpp" line="513"/>
+        <location filename="../app/MainWindow.cpp" line="519"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="283"/>
+        <location filename="../app/MainWindow.cpp" line="288"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="367"/>
-        <location filename="../app/MainWindow.cpp" line="440"/>
+        <location filename="../app/MainWindow.cpp" line="372"/>
+        <location filename="../app/MainWindow.cpp" line="445"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="368"/>
+        <location filename="../app/MainWindow.cpp" line="373"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="379"/>
-        <location filename="../app/MainWindow.cpp" line="459"/>
+        <location filename="../app/MainWindow.cpp" line="384"/>
+        <location filename="../app/MainWindow.cpp" line="464"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="380"/>
+        <location filename="../app/MainWindow.cpp" line="385"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="393"/>
-        <location filename="../app/MainWindow.cpp" line="565"/>
+        <location filename="../app/MainWindow.cpp" line="398"/>
+        <location filename="../app/MainWindow.cpp" line="570"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="417"/>
+        <location filename="../app/MainWindow.cpp" line="422"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="441"/>
+        <location filename="../app/MainWindow.cpp" line="446"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1091,142 +1101,142 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="449"/>
+        <location filename="../app/MainWindow.cpp" line="454"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="451"/>
+        <location filename="../app/MainWindow.cpp" line="456"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="464"/>
+        <location filename="../app/MainWindow.cpp" line="469"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="500"/>
+        <location filename="../app/MainWindow.cpp" line="505"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="501"/>
+        <location filename="../app/MainWindow.cpp" line="506"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="502"/>
+        <location filename="../app/MainWindow.cpp" line="507"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="503"/>
+        <location filename="../app/MainWindow.cpp" line="508"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="504"/>
+        <location filename="../app/MainWindow.cpp" line="509"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="505"/>
+        <location filename="../app/MainWindow.cpp" line="510"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindow.cpp" line="511"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="507"/>
+        <location filename="../app/MainWindow.cpp" line="512"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="509"/>
+        <location filename="../app/MainWindow.cpp" line="514"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="510"/>
+        <location filename="../app/MainWindow.cpp" line="515"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="511"/>
+        <location filename="../app/MainWindow.cpp" line="516"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="512"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="513"/>
+        <location filename="../app/MainWindow.cpp" line="518"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="515"/>
+        <location filename="../app/MainWindow.cpp" line="520"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindow.cpp" line="521"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="522"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="518"/>
+        <location filename="../app/MainWindow.cpp" line="523"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="519"/>
+        <location filename="../app/MainWindow.cpp" line="524"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="520"/>
+        <location filename="../app/MainWindow.cpp" line="525"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="522"/>
+        <location filename="../app/MainWindow.cpp" line="527"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="537"/>
+        <location filename="../app/MainWindow.cpp" line="542"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="549"/>
+        <location filename="../app/MainWindow.cpp" line="554"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="551"/>
+        <location filename="../app/MainWindow.cpp" line="556"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="555"/>
+        <location filename="../app/MainWindow.cpp" line="560"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="558"/>
+        <location filename="../app/MainWindow.cpp" line="563"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>

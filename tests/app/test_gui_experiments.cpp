@@ -25,7 +25,8 @@ class TestGuiExperiments : public QObject {
         auto* table = w.find<QTableWidget>("experimentTable");
         QCOMPARE(table->rowCount(), 12);  // every Table I row: PRISCA's two, LQR, PGSD, ILC, the limit
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("OURS (PRISCA)"));
-        QVERIFY(table->item(0, 1)->text().contains(QStringLiteral("±")));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("3"));  // N
+        QVERIFY(table->item(0, 2)->text().contains(QStringLiteral("±")));
         QVERIFY(!w.find<QLabel>("experimentFigure")->pixmap().isNull());
         // The result names the demonstration it is about.
         QVERIFY2(
@@ -69,6 +70,18 @@ class TestGuiExperiments : public QObject {
                 QVERIFY2(!text.contains(QLatin1String("nan"), Qt::CaseInsensitive),
                          qPrintable(QStringLiteral("row %1 col %2: %3").arg(r).arg(c).arg(text)));
                 dashes += text == QStringLiteral("—") ? 1 : 0;
+            }
+        }
+        // Each row says how many trials it has; one short of the 20 asked is "(partial)", and
+        // one trial gives no interval and no variance.
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const int n = table->item(r, 1)->text().toInt();
+            QVERIFY(n < 20);
+            QVERIFY2(table->item(r, 0)->text().endsWith(QLatin1String("(partial)")),
+                     qPrintable(table->item(r, 0)->text()));
+            if (n == 1) {
+                QVERIFY(!table->item(r, 2)->text().contains(QStringLiteral("±")));
+                QCOMPARE(table->item(r, 3)->text(), QStringLiteral("—"));
             }
         }
         if (dashes == 0) {
