@@ -215,21 +215,13 @@ QByteArray CameraLens::toJson() const {
 }
 
 std::optional<CameraLens> CameraLens::fromJson(const QByteArray& json, QString* error) {
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        *error = QStringLiteral("not valid JSON at byte %1 (%2)")
-                     .arg(parseError.offset)
-                     .arg(parseError.errorString());
-        return std::nullopt;
-    }
-    if (!doc.isObject()) {
-        *error = QStringLiteral(
-            "valid JSON, but not camera intrinsics: it must be an object such as "
-            "{\"camera_matrix\": [9 numbers], \"distortion\": [5 numbers], \"image_size\": [w, h]}");
-        return std::nullopt;
-    }
-    return fromJsonObject(doc.object(), error);
+    const auto root = parseJsonObject(
+        json,
+        QStringLiteral("valid JSON, but not camera intrinsics: it must be an object such as "
+                       "{\"camera_matrix\": [9 numbers], \"distortion\": [5 numbers], "
+                       "\"image_size\": [w, h]}"),
+        error);
+    return root ? fromJsonObject(*root, error) : std::nullopt;
 }
 
 std::optional<CameraLens> CameraLens::load(const QString& path, QString* error) {

@@ -270,21 +270,15 @@ QByteArray FloorCalibration::toJson() const {
 }
 
 std::optional<FloorCalibration> FloorCalibration::fromJson(const QByteArray& json, QString* error) {
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        *error = QStringLiteral("not valid JSON at byte %1 (%2)")
-                     .arg(parseError.offset)
-                     .arg(parseError.errorString());
+    const auto parsed = parseJsonObject(
+        json,
+        QStringLiteral("valid JSON, but not a floor calibration: it must be an object such as "
+                       "{\"homography\": [9 numbers], \"points\": [...]}"),
+        error);
+    if (!parsed) {
         return std::nullopt;
     }
-    if (!doc.isObject()) {
-        *error = QStringLiteral(
-            "valid JSON, but not a floor calibration: it must be an object such as "
-            "{\"homography\": [9 numbers], \"points\": [...]}");
-        return std::nullopt;
-    }
-    const QJsonObject root = doc.object();
+    const QJsonObject& root = *parsed;
     const QJsonArray h = root.value("homography").toArray();
     if (h.size() != 9) {
         *error = QStringLiteral(

@@ -2,11 +2,32 @@
 
 #include "core/FileIo.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QString>
 
 #include <optional>
 
 namespace prisca::devices {
+
+/// The JSON object in `json`; on failure nullopt and *error says where the JSON is broken, or
+/// `notAnObject` when it is valid JSON but no object.
+inline std::optional<QJsonObject> parseJsonObject(const QByteArray& json,
+                                                  const QString& notAnObject, QString* error) {
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        *error = QStringLiteral("not valid JSON at byte %1 (%2)")
+                     .arg(parseError.offset)
+                     .arg(parseError.errorString());
+        return std::nullopt;
+    }
+    if (!doc.isObject()) {
+        *error = notAnObject;
+        return std::nullopt;
+    }
+    return doc.object();
+}
 
 /// Reads a JSON file of at most T::kMaxJsonBytes into a T through T::fromJson; on failure
 /// nullopt and *error names the file and the problem.
