@@ -9,7 +9,7 @@ namespace prisca::app {
 
 CameraView::CameraView(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("cameraView"));
-    setMinimumSize(320, 240);
+    setMinimumSize(240, 180);  // fits the Rig dock at 1280 x 800
 }
 
 void CameraView::setFrame(const QImage& image, const std::optional<devices::PlanarPose>& pose) {
@@ -63,6 +63,12 @@ QPointF CameraView::toWidget(const cv::Point2d& p) const {
     const QRectF r = imageRect();
     const QSizeF size = image_.isNull() ? QSizeF(640, 480) : QSizeF(image_.size());
     return {r.x() + p.x * r.width() / size.width(), r.y() + p.y * r.height() / size.height()};
+}
+
+void CameraView::clearFrame() {
+    image_ = QImage();
+    pose_.reset();
+    update();
 }
 
 void CameraView::paintEvent(QPaintEvent*) {

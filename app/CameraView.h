@@ -23,6 +23,9 @@ class CameraView : public QWidget {
     explicit CameraView(QWidget* parent = nullptr);
 
     void setFrame(const QImage& image, const std::optional<devices::PlanarPose>& pose);
+    /// No image (the camera stopped): the view says so instead of keeping the last frame.
+    void clearFrame();
+    bool hasFrame() const { return !image_.isNull(); }
     void setCalibration(const devices::FloorCalibration& calibration);
     /// The demonstration's path and lot on the floor [m] (x, y) and the lot's heading [rad].
     void setTask(const QVector<QPointF>& path, const QPointF& lot, double lotHeading);

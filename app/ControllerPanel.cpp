@@ -372,6 +372,9 @@ void ControllerPanel::changeEvent(QEvent* event) {
 }
 
 void ControllerPanel::retranslateUi() {
+    if (limits_->columnCount() == 2) {
+        limits_->setHorizontalHeaderLabels({tr("lower"), tr("upper")});
+    }
     const auto label = [this](QWidget* field, QLabel* l, const QString& text, const QString& tip) {
         if (l) {
             l->setText(text);

@@ -1,5 +1,7 @@
 #include "app/ExperimentsPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/LabSession.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
@@ -152,7 +154,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     connect(worker_, &ExperimentWorker::failed, this, [this](const QString& message) {
         setRunning(false);
         status_->setText(message);
-        QMessageBox::warning(this, tr("Experiment"), message);
+        warningBox(this, tr("Experiment"), message);
         emit finished();
     });
     devices::markThreadEnd(thread_);
@@ -198,7 +200,7 @@ void ExperimentsPanel::start() {
     settings.setValue("experiments/seed", seed_->value());
     settings.setValue("experiments/budget", budget_->value());
     progress_->setRange(0, 0);  // busy until the first count arrives
-    status_->setText(tr("Starting..."));
+    showStatus(status_, tr("Experiments"), tr("Starting..."));
     setRunning(true);
     worker_->prepare();
     devices::postTo(worker_, [w = worker_, request] { w->run(request); });
@@ -207,7 +209,7 @@ void ExperimentsPanel::start() {
 void ExperimentsPanel::cancel() {
     if (running_) {
         worker_->cancel();
-        status_->setText(tr("Cancelling: the trials under way finish first..."));
+        showStatus(status_, tr("Experiments"), tr("Cancelling: the trials under way finish first..."));
     }
 }
 
@@ -221,6 +223,16 @@ void ExperimentsPanel::setRunning(bool running) {
 }
 
 void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> result) {
+    lastTable1_ = result;
+    lastCurves_.reset();
+    displayTable1(*result);
+    showStatus(status_, tr("Experiments"), caption_);
+    setRunning(false);
+    emit finished();
+}
+
+void ExperimentsPanel::displayTable1(const sim::Table1Result& table1) {
+    const sim::Table1Result* result = &table1;
     int done = 0;
     rows_ = sim::table1Rows(*result, &done);
     caption_ = tr("Slide parking in simulation (%1): %2 trials per method, seed %3; "
@@ -256,13 +268,21 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
     figure_ = figures::parkingFigure(*result, kCarLength, kCarWidth);
     hasFigure_ = true;
     showFigure();
-    status_->setText(caption_);
-    setRunning(false);
-    emit finished();
 }
 
 void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSummary>> curves,
                                   bool cancelled) {
+    lastCurves_ = curves;
+    lastCurvesCancelled_ = cancelled;
+    lastTable1_.reset();
+    displayCurves(curves, cancelled);
+    showStatus(status_, tr("Experiments"), caption_);
+    setRunning(false);
+    emit finished();
+}
+
+void ExperimentsPanel::displayCurves(
+    const std::shared_ptr<const std::vector<sim::CurveSummary>>& curves, bool cancelled) {
     rows_.clear();
     caption_ = tr("Learning curves (%1): %2 runs per method, %3 steps each, seed %4; "
                   "demonstration: %5")
@@ -313,9 +333,6 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
     figure_ = figures::learningCurveFigure(methods, seconds, bands, yLabel);
     hasFigure_ = true;
     showFigure();
-    status_->setText(caption_);
-    setRunning(false);
-    emit finished();
 }
 
 void ExperimentsPanel::showFigure() {
@@ -421,7 +438,7 @@ void ExperimentsPanel::askExportTable() {
     }
     QString error;
     if (!exportTable(path, &error)) {
-        QMessageBox::warning(this, tr("Export table"), error);
+        warningBox(this, tr("Export table"), error);
     }
 }
 
@@ -436,7 +453,7 @@ void ExperimentsPanel::askExportFigure() {
     }
     QString error;
     if (!exportFigure(path, &error)) {
-        QMessageBox::warning(this, tr("Export figure"), error);
+        warningBox(this, tr("Export figure"), error);
     }
 }
 
@@ -461,6 +478,24 @@ void ExperimentsPanel::retranslateUi() {
     cancel_->setText(tr("Cancel"));
     exportTable_->setText(tr("Export table..."));
     exportFigure_->setText(tr("Export figure..."));
+    // The result shown, its headers, caption and figure, in the new language too.
+    const QString shownCaption = caption_;
+    if (lastTable1_) {
+        displayTable1(*lastTable1_);
+    } else if (lastCurves_) {
+        displayCurves(lastCurves_, lastCurvesCancelled_);
+    }
+    if (!shownCaption.isEmpty() && status_->text() == shownCaption) {
+        status_->setText(caption_);
+    }
+}
+
+int ExperimentsPanel::progressDone() const {
+    return progress_->maximum() > 0 ? progress_->value() : 0;
+}
+
+int ExperimentsPanel::progressTotal() const {
+    return progress_->maximum();
 }
 
 }  // namespace prisca::app

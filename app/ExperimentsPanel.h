@@ -33,6 +33,9 @@ class ExperimentsPanel : public QWidget {
     /// Cancels the experiment in progress; what finished is shown.
     void cancel();
     bool isRunning() const { return running_; }
+    /// The batch's progress: trials (or runs) done and asked for (0 of 0 when not known yet).
+    int progressDone() const;
+    int progressTotal() const;
     /// The last result as a table in a format (empty before any result).
     QString tableText(core::TableFormat format) const;
     /// Writes the table (format from the suffix: .md, .csv, .tex) or the figure (.png, .svg).
@@ -50,6 +53,10 @@ class ExperimentsPanel : public QWidget {
     void retranslateUi();
     void showTable1(std::shared_ptr<const sim::Table1Result> result);
     void showCurves(std::shared_ptr<const std::vector<sim::CurveSummary>> curves, bool cancelled);
+    /// The table, caption and figure of a result (again on a language change).
+    void displayTable1(const sim::Table1Result& result);
+    void displayCurves(const std::shared_ptr<const std::vector<sim::CurveSummary>>& curves,
+                       bool cancelled);
     void showFigure();
     void setRunning(bool running);
     void askExportTable();
@@ -79,6 +86,9 @@ class ExperimentsPanel : public QWidget {
     plot::Figure figure_;
     QString demonstrationUsed_;  ///< the demonstration of the experiment under way or shown
     bool hasFigure_ = false;
+    std::shared_ptr<const sim::Table1Result> lastTable1_;
+    std::shared_ptr<const std::vector<sim::CurveSummary>> lastCurves_;
+    bool lastCurvesCancelled_ = false;
 };
 
 }  // namespace prisca::app

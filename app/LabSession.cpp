@@ -291,6 +291,9 @@ QByteArray LabSession::toJson() const {
                                                                      *task_.plantParameters))
                                              .object()}});
     }
+    if (!messages_.isEmpty()) {
+        root.insert("messages", messages_);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -562,6 +565,7 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     demonstrationSource_ = source;
     scriptedStyle_ = scriptedStyle;
     scriptedSeed_ = scriptedSeed;
+    messages_ = root.value("messages").toArray();  // not an array: none
     notice_ = earlier ? tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
                            "tuned for an earlier PRISCA, so today's defaults are used instead.")
                       : QString();

@@ -5,6 +5,7 @@
 #include "sim/MethodTuning.h"
 #include "sim/Task.h"
 
+#include <QJsonArray>
 #include <QObject>
 #include <QString>
 
@@ -95,6 +96,11 @@ class LabSession : public QObject {
     /// parameters of an earlier version were replaced by today's defaults.
     const QString& notice() const { return notice_; }
 
+    /// The window's message log as saved with the session (MessageLog::toJson()'s lines); the
+    /// session carries it and does not read it.
+    void setMessages(const QJsonArray& lines) { messages_ = lines; }
+    const QJsonArray& messages() const { return messages_; }
+
   signals:
     /// The plant changed (everything else changed with it).
     void plantChanged(const QString& plant);
@@ -115,6 +121,7 @@ class LabSession : public QObject {
     QString demonstrationSource_;
     QString scriptedStyle_;
     QString notice_;
+    QJsonArray messages_;
     std::uint64_t scriptedSeed_ = 1;
     core::ActionMappingFitOptions fitOptions_;
 };

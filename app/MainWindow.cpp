@@ -8,12 +8,15 @@
 #include "app/LanguageSwitcher.h"
 #include "app/LiveChartsPanel.h"
 #include "app/MappingPanel.h"
+#include "app/MessageLog.h"
+#include "app/MessageLogPanel.h"
 #include "app/RecordPanel.h"
 #include "app/ReplayDialog.h"
 #include "app/RigPanel.h"
 #include "app/RunThread.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"
+#include "core/RunLogCsv.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
@@ -23,7 +26,16 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QFile>
+#include <QRegularExpression>
+#include <QTextBrowser>
+#include <QVBoxLayout>
 #include <QDockWidget>
+#include <QStandardPaths>
+#include <QDir>
+#include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeyEvent>
@@ -33,6 +45,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -50,6 +63,7 @@ namespace {
 // The product name is a proper noun and stays untranslated in every language.
 const QString kProductName = QStringLiteral("PRISCA Lab");
 const QSize kDefaultSize(1280, 800);  // px, used until the operator has sized the window
+const QSize kFrameAllowance(16, 48);  // px, a window manager's borders and title bar
 constexpr int kStatusMessageMs = 4000;
 constexpr int kNoticeMs = 15000;  // what the operator must read, e.g. replaced parameters
 constexpr int kMaxRecent = 8;
@@ -80,11 +94,13 @@ QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel, Qt::
 MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     : QMainWindow(parent),
       languages_(languages),
+      log_(new MessageLog(this)),
       session_(new LabSession(this)),
       run_(new RunThread(this)),
       versionLabel_(new QLabel(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(kProductName);
+    MessageLog::captureQtMessages();  // the workers' messages (prisca.* categories) in the log
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
     // The right-hand panels run the full height; the charts sit under the arena only.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -105,26 +121,34 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     }
 
     createPanels();
+    // The panels' first lines are their initial state, not news: the log starts with the
+    // messages of before the restart instead.
+    log_->clear();
+    log_->append(session_->messages());
     createMenus();
     createToolBar();
     for (QWidget* field : findChildren<QWidget*>()) {
         noWheelFocus(field);
     }
     qApp->installEventFilter(this);
-    statusBar()->addPermanentWidget(versionLabel_);
+    createStatusBar();
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
     connect(run_, &RunThread::progress, this,
             [this](const QString& text) { statusBar()->showMessage(text); });
     connect(run_, &RunThread::failed, this,
-            [this](const QString& text) { QMessageBox::warning(this, tr("Run"), text); });
+            [this](const QString& text) { warningBox(this, tr("Run"), text); });
     retranslateUi();
     if (!session_->notice().isEmpty()) {
-        statusBar()->showMessage(session_->notice(), kNoticeMs);  // the last session's
+        say(tr("Session"), session_->notice(), kNoticeMs);  // the last session's
     }
     showScene();
 
     if (!restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
-        resize(kDefaultSize);
+        // Inside the screen's available area with room for the title bar, centred: on a
+        // 1280 x 800 screen the status bar is then on screen too.
+        const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+        resize(kDefaultSize.boundedTo(available.size() - kFrameAllowance));
+        move(available.center() - rect().center());
     }
     stateRestored_ = restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
 }
@@ -161,7 +185,8 @@ void MainWindow::shareSpace() {
     const int side = std::clamp(width() * 3 / 10, needed, std::max(needed, width() / 2));
     resizeDocks({taskDock_, runDock_}, {side, side}, Qt::Horizontal);
     resizeDocks({chartsDock_}, {height() * 2 / 5}, Qt::Vertical);
-    resizeDocks({taskDock_, runDock_}, {height() * 11 / 20, height() * 9 / 20}, Qt::Vertical);
+    // The run panel the larger share: its results table should show a whole run of five.
+    resizeDocks({taskDock_, runDock_}, {height() * 2 / 5, height() * 3 / 5}, Qt::Vertical);
 }
 
 MainWindow::~MainWindow() {
@@ -266,8 +291,12 @@ void MainWindow::createPanels() {
     experimentsDock_ =
         dock(this, QStringLiteral("experimentsDock"), experimentsPanel_, Qt::BottomDockWidgetArea);
     tabifyDockWidget(chartsDock_, experimentsDock_);
-    rigDock_ = dock(this, QStringLiteral("rigDock"), rigPanel_, Qt::BottomDockWidgetArea);
+    // The rig's pages scroll inside the panel; its buttons stay in view.
+    rigDock_ = dock(this, QStringLiteral("rigDock"), rigPanel_, Qt::BottomDockWidgetArea, false);
     tabifyDockWidget(experimentsDock_, rigDock_);
+    logPanel_ = new MessageLogPanel(*log_, this);
+    logDock_ = dock(this, QStringLiteral("logDock"), logPanel_, Qt::BottomDockWidgetArea, false);
+    tabifyDockWidget(rigDock_, logDock_);
     chartsDock_->raise();
     tabifyDockWidget(taskDock_, recordDock_);
     tabifyDockWidget(recordDock_, mappingDock_);
@@ -345,20 +374,124 @@ void MainWindow::createToolBar() {
     emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
     emergencyButton_->setFocusPolicy(Qt::NoFocus);
     emergencyButton_->setMinimumSize(240, 40);
-    emergencyButton_->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 18px;"
-        " border: 3px solid #7f0000; border-radius: 6px; padding: 2px 16px; }"
-        "QPushButton:pressed { background: #8e0000; }"));
     // On press, not release: the fastest the operator can ask.
     connect(emergencyButton_, &QPushButton::pressed, runPanel_->emergencyAction(),
             &QAction::trigger);
     runToolBar_->addWidget(emergencyButton_);
     const auto showEmergencyText = [this] {
-        emergencyButton_->setText(runPanel_->emergencyAction()->text());
+        emergencyButton_->setText(emergencyShownLatched_ ? tr("E-STOP LATCHED")
+                                                         : runPanel_->emergencyAction()->text());
         emergencyButton_->setToolTip(runPanel_->emergencyAction()->toolTip());
     };
     connect(runPanel_->emergencyAction(), &QAction::changed, this, showEmergencyText);
     showEmergencyText();
+}
+
+void MainWindow::createStatusBar() {
+    // Always at the window's foot: what runs, the link, the camera, E-STOP. Each field is a
+    // label of its own so a passing message never hides them.
+    const auto field = [this](const char* name) {
+        auto* label = new QLabel(this);
+        label->setObjectName(QLatin1String(name));
+        label->setContentsMargins(6, 0, 6, 0);
+        label->setTextFormat(Qt::PlainText);
+        statusBar()->addPermanentWidget(label);
+        return label;
+    };
+    jobStatus_ = field("jobStatus");
+    linkStatus_ = field("linkStatusField");
+    cameraStatus_ = field("cameraStatusField");
+    emergencyStatus_ = field("emergencyStatus");
+    versionLabel_->setObjectName(QStringLiteral("versionLabel"));
+    statusBar()->addPermanentWidget(versionLabel_);
+    const auto alarm = [](QLabel* label, bool on) {
+        label->setStyleSheet(on ? QStringLiteral("color: #b00020; font-weight: bold;") : QString());
+    };
+    connect(rigPanel_, &RigPanel::statusSummary, this,
+            [this, alarm](const QString& link, bool linkAlarm, const QString& camera,
+                          bool cameraAlarm) {
+                linkStatus_->setText(link);
+                alarm(linkStatus_, linkAlarm);
+                cameraStatus_->setText(camera);
+                alarm(cameraStatus_, cameraAlarm);
+            });
+    rigPanel_->emitStatus();
+    // The job's progress changes without a signal of its own in every panel: a glance a few
+    // times a second is enough for a status bar.
+    statusTimer_ = new QTimer(this);
+    statusTimer_->setInterval(250);
+    connect(statusTimer_, &QTimer::timeout, this, &MainWindow::updateStatusFields);
+    statusTimer_->start();
+    connect(run_, &RunThread::phaseChanged, this, &MainWindow::updateStatusFields);
+}
+
+void MainWindow::updateStatusFields() {
+    QString job;
+    switch (run_->phase()) {
+    case RunPhase::Training:
+        job = tr("Job: training before the run");
+        break;
+    case RunPhase::Running:
+        job = tr("Job: simulated run");
+        break;
+    case RunPhase::Paused:
+        job = tr("Job: simulated run, PAUSED");
+        break;
+    case RunPhase::Idle:
+    case RunPhase::EmergencyStopped:
+        break;
+    }
+    if (job.isEmpty() && experimentsPanel_->isRunning()) {
+        job = experimentsPanel_->progressTotal() > 0
+                  ? tr("Job: experiment, %1 of %2")
+                        .arg(experimentsPanel_->progressDone())
+                        .arg(experimentsPanel_->progressTotal())
+                  : tr("Job: experiment, starting");
+    }
+    if (job.isEmpty() && rigPanel_->isRunning()) {
+        job = tr("Job: rig trial");
+    }
+    if (job.isEmpty() && rigPanel_->measuringLatency()) {
+        job = tr("Job: measuring latency");
+    }
+    if (job.isEmpty() && (rigPanel_->isDriving() || recordPanel_->isRecording())) {
+        job = tr("Job: recording");
+    }
+    if (job.isEmpty()) {
+        job = tr("Job: none");
+    }
+    jobStatus_->setText(job);
+    jobStatus_->setStyleSheet(run_->phase() == RunPhase::Paused
+                                  ? QStringLiteral("color: #9a5600; font-weight: bold;")
+                                  : QString());
+    showEmergencyState(run_->phase() == RunPhase::EmergencyStopped);
+    quitWhenIdle();
+}
+
+void MainWindow::showEmergencyState(bool latched) {
+    emergencyStatus_->setText(latched ? tr("E-STOP LATCHED") : tr("E-STOP ready"));
+    emergencyStatus_->setStyleSheet(
+        latched ? QStringLiteral("color: white; background: #b00020; font-weight: bold;")
+                : QString());
+    const QString text = latched ? tr("E-STOP LATCHED") : runPanel_->emergencyAction()->text();
+    if (emergencyButton_->text() != text) {
+        emergencyButton_->setText(text);
+    }
+    if (latched == emergencyShownLatched_ && !emergencyButton_->styleSheet().isEmpty()) {
+        return;
+    }
+    emergencyShownLatched_ = latched;
+    // Latched, the button is pressed in: dark, sunken, and says so; Reset is next to it.
+    emergencyButton_->setStyleSheet(
+        latched ? QStringLiteral(
+                      "QPushButton { background: #5c0000; color: #ffd7d7; font-weight: bold;"
+                      " font-size: 18px; border: 3px inset #2a0000; border-radius: 6px;"
+                      " padding: 2px 16px; }")
+                : QStringLiteral(
+                      "QPushButton { background: #c62828; color: white; font-weight: bold;"
+                      " font-size: 18px; border: 3px solid #7f0000; border-radius: 6px;"
+                      " padding: 2px 16px; }"
+                      "QPushButton:pressed { background: #8e0000; }"));
 }
 
 void MainWindow::createMenus() {
@@ -419,12 +552,12 @@ void MainWindow::createMenus() {
     // The shortcuts work whatever is shown: the actions belong to the window itself.
     addActions(runPanel_->runActions());
     connect(runPanel_->resetEmergencyAction(), &QAction::triggered, this,
-            [this] { statusBar()->showMessage(tr("E-STOP reset"), kNoticeMs); });
+            [this] { say(tr("E-STOP"), tr("E-STOP reset"), kNoticeMs); });
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
     for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_,
-                           chartsDock_, experimentsDock_, rigDock_}) {
+                           chartsDock_, experimentsDock_, rigDock_, logDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -433,6 +566,16 @@ void MainWindow::createMenus() {
 
     helpMenu_ = menuBar()->addMenu(QString());
     helpMenu_->setObjectName(QStringLiteral("helpMenu"));
+    guideAction_ = helpMenu_->addAction(QString());
+    guideAction_->setObjectName(QStringLiteral("guideAction"));
+    guideAction_->setShortcut(QKeySequence::HelpContents);  // F1
+    connect(guideAction_, &QAction::triggered, this, &MainWindow::showGuide);
+    shortcutsAction_ = helpMenu_->addAction(QString());
+    shortcutsAction_->setObjectName(QStringLiteral("shortcutsAction"));
+    shortcutsAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
+    connect(shortcutsAction_, &QAction::triggered, this, &MainWindow::showShortcuts);
+    addActions({guideAction_, shortcutsAction_});
+    helpMenu_->addSeparator();
     aboutAction_ = helpMenu_->addAction(QString());
     aboutAction_->setObjectName(QStringLiteral("aboutAction"));
     aboutAction_->setMenuRole(QAction::AboutRole);
@@ -442,32 +585,45 @@ void MainWindow::createMenus() {
 bool MainWindow::openSession(const QString& path) {
     QString error;
     if (!session_->open(path, &error)) {
-        QMessageBox::warning(this, tr("Open session"),
-                             tr("The session could not be opened.\n\n%1").arg(error));
+        warningBox(this, tr("Open session"),
+                   tr("The session could not be opened.\n\n%1").arg(error));
         return false;
     }
     sessionPath_ = path;
     rememberRecent(path);
     const QString file = QFileInfo(path).fileName();
+    if (!session_->messages().isEmpty()) {
+        logMessage(tr("Session"), MessageLevel::Info,
+                   tr("The messages saved with %1 follow (%2 lines).")
+                       .arg(file)
+                       .arg(session_->messages().size()));
+        log_->append(session_->messages());
+    }
     const QString& notice = session_->notice();
     if (notice.isEmpty()) {
-        statusBar()->showMessage(tr("Opened %1").arg(file), kStatusMessageMs);
+        say(tr("Session"), tr("Opened %1").arg(file), kStatusMessageMs);
     } else {
-        statusBar()->showMessage(tr("Opened %1. %2").arg(file, notice), kNoticeMs);
+        say(tr("Session"), tr("Opened %1. %2").arg(file, notice), kNoticeMs);
     }
     return true;
 }
 
 bool MainWindow::saveSession(const QString& path) {
     QString error;
+    session_->setMessages(log_->toJson());
     if (!session_->save(path, &error)) {
-        QMessageBox::warning(this, tr("Save session"), error);
+        warningBox(this, tr("Save session"), error);
         return false;
     }
     sessionPath_ = path;
     rememberRecent(path);
-    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kStatusMessageMs);
+    say(tr("Session"), tr("Saved %1").arg(QFileInfo(path).fileName()), kStatusMessageMs);
     return true;
+}
+
+void MainWindow::say(const QString& source, const QString& text, int ms) {
+    statusBar()->showMessage(text, ms);
+    logMessage(source, MessageLevel::Info, text);
 }
 
 void MainWindow::rememberRecent(const QString& path) {
@@ -520,16 +676,144 @@ void MainWindow::retranslateUi() {
     chartsDock_->setWindowTitle(tr("Live charts"));
     experimentsDock_->setWindowTitle(tr("Experiments"));
     rigDock_->setWindowTitle(tr("Rig"));
+    logDock_->setWindowTitle(tr("Messages"));
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About PRISCA Lab"));
+    guideAction_->setText(tr("Operator &guide"));
+    shortcutsAction_->setText(tr("&Keyboard shortcuts"));
     aboutAction_->setStatusTip(tr("Show the version and what PRISCA Lab does"));
     const QString version = QCoreApplication::applicationVersion();
     versionLabel_->setText(version.isEmpty() ? QString() : tr("Version %1").arg(version));
+    if (jobStatus_) {
+        updateStatusFields();
+    }
+}
+
+QStringList MainWindow::workInProgress() const {
+    QStringList work;
+    const RunPhase phase = run_->phase();
+    if (phase == RunPhase::Running || phase == RunPhase::Paused || phase == RunPhase::Training) {
+        work << tr("a simulated run");
+    }
+    if (experimentsPanel_->isRunning()) {
+        work << tr("an experiment (%1 of %2 done)")
+                    .arg(experimentsPanel_->progressDone())
+                    .arg(experimentsPanel_->progressTotal());
+    }
+    if (rigPanel_->isRunning()) {
+        work << tr("a trial on the rig");
+    }
+    if (rigPanel_->measuringLatency()) {
+        work << tr("a latency measurement on the rig");
+    }
+    if (rigPanel_->isDriving() || recordPanel_->isRecording()) {
+        work << tr("a recording");
+    }
+    return work;
+}
+
+QString MainWindow::keptFolder() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+        .filePath(QStringLiteral("kept"));
+}
+
+void MainWindow::stopWork(bool keep) {
+    run_->stop();
+    experimentsPanel_->cancel();  // what finished comes back as a partial result
+    if (rigPanel_->isRunning()) {
+        rigPanel_->stopTrial();  // failsafe; its bundle is written as it is
+    }
+    if (rigPanel_->isDriving()) {
+        rigPanel_->stopDriving();  // the take is written and becomes the demonstration
+    }
+    if (recordPanel_->isRecording()) {
+        recordPanel_->stopRecording();
+    }
+    logMessage(tr("Quit"), MessageLevel::Info,
+               keep ? tr("Quitting: the work under way is stopped and what is done kept.")
+                    : tr("Quitting: the work under way is discarded."));
+}
+
+void MainWindow::quitWhenIdle() {
+    if (quitPlan_ == QuitPlan::None || !workInProgress().isEmpty()) {
+        return;
+    }
+    const QuitPlan plan = quitPlan_;
+    quitPlan_ = QuitPlan::None;
+    if (plan == QuitPlan::Keep || plan == QuitPlan::Finish) {
+        // What finished, where the operator can find it after the restart.
+        const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+        QDir().mkpath(keptFolder());
+        QString error;
+        const std::shared_ptr<const core::RunLog> log = run_->lastRunLog();
+        if (log && log->rows.rows() > 0) {
+            const QString path = QDir(keptFolder()).filePath(QStringLiteral("run-%1.csv").arg(stamp));
+            if (runPanel_->exportRunLog(path, &error)) {
+                logMessage(tr("Quit"), MessageLevel::Info, tr("The run's log was kept in %1").arg(path));
+            } else {
+                logMessage(tr("Quit"), MessageLevel::Error, error);
+            }
+        }
+        if (!experimentsPanel_->tableText(core::TableFormat::Markdown).isEmpty()) {
+            const QString path =
+                QDir(keptFolder()).filePath(QStringLiteral("experiment-%1.md").arg(stamp));
+            if (experimentsPanel_->exportTable(path, &error)) {
+                logMessage(tr("Quit"), MessageLevel::Info,
+                           tr("The experiment's table was kept in %1").arg(path));
+            } else {
+                logMessage(tr("Quit"), MessageLevel::Error, error);
+            }
+        }
+    }
+    quitConfirmed_ = true;
+    close();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    const QStringList work = workInProgress();
+    if (!quitConfirmed_ && !work.isEmpty()) {
+        QMessageBox box(QMessageBox::Question, tr("Quit PRISCA Lab"),
+                        tr("Work is under way:\n\n%1\n\nWhat should happen to it?")
+                            .arg(QStringLiteral("- ") + work.join(QStringLiteral("\n- "))),
+                        QMessageBox::NoButton, this);
+        box.setObjectName(QStringLiteral("quitQuestion"));
+        box.setInformativeText(
+            tr("Finish: quit once it is done. Keep: stop now, save what is done (the run's log, "
+               "the experiment's table, the recording) and quit. Discard: stop now and quit."));
+        QPushButton* finish = box.addButton(tr("Finish, then quit"), QMessageBox::AcceptRole);
+        QPushButton* keep = box.addButton(tr("Keep what is done, quit"), QMessageBox::AcceptRole);
+        QPushButton* discard = box.addButton(tr("Discard, quit"), QMessageBox::DestructiveRole);
+        QPushButton* cancel = box.addButton(QMessageBox::Cancel);
+        finish->setObjectName(QStringLiteral("quitFinish"));
+        keep->setObjectName(QStringLiteral("quitKeep"));
+        discard->setObjectName(QStringLiteral("quitDiscard"));
+        cancel->setObjectName(QStringLiteral("quitCancel"));
+        box.setDefaultButton(cancel);
+        box.setEscapeButton(cancel);
+        box.exec();
+        if (box.clickedButton() == finish) {
+            quitPlan_ = QuitPlan::Finish;
+            say(tr("Quit"), tr("PRISCA Lab quits once the work under way is done."), 0);
+            event->ignore();
+            return;
+        }
+        if (box.clickedButton() == keep) {
+            quitPlan_ = QuitPlan::Keep;
+            stopWork(true);
+            event->ignore();
+            QTimer::singleShot(0, this, &MainWindow::quitWhenIdle);  // may be idle already
+            return;
+        }
+        if (box.clickedButton() != discard) {
+            quitPlan_ = QuitPlan::None;
+            event->ignore();
+            return;
+        }
+        stopWork(false);
+    }
     run_->stop();
     QSettings settings;
+    session_->setMessages(log_->toJson());
     settings.setValue(QLatin1String(kLastSessionKey), session_->toJson());
     settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
     settings.setValue(QLatin1String(kStateKey), saveState());
@@ -539,8 +823,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 void MainWindow::announceLanguage(const QString& code) {
     for (const UiLanguage& language : LanguageSwitcher::availableLanguages()) {
         if (language.code == code) {
-            statusBar()->showMessage(tr("Interface language: %1").arg(language.nativeName),
-                                     kStatusMessageMs);
+            say(tr("Language"), tr("Interface language: %1").arg(language.nativeName),
+                kStatusMessageMs);
         }
     }
 }
@@ -563,11 +847,69 @@ void MainWindow::showAbout() {
     QMessageBox::about(this, tr("About PRISCA Lab"), text);
 }
 
+void MainWindow::showShortcuts() {
+    QList<QPair<QString, QString>> rows;
+    const auto add = [&rows](QAction* action) {
+        if (action && !action->shortcut().isEmpty()) {
+            QString name = action->text();
+            name.remove(QLatin1Char('&'));
+            name.remove(QRegularExpression(QStringLiteral("\\s*\\([^)]*\\)$")));  // "(F5)" shown beside
+            rows.append({action->shortcut().toString(QKeySequence::NativeText), name});
+        }
+    };
+    for (QAction* action : runPanel_->runActions()) {
+        add(action);
+    }
+    rows.append({tr("Space or Esc"), tr("E-STOP, whatever has the focus (Space types a space in a "
+                                        "text field; Esc first closes an open list or dialog)")});
+    for (QAction* action : {openSessionAction_, saveSessionAction_, replayAction_, quitAction_,
+                            guideAction_, shortcutsAction_}) {
+        add(action);
+    }
+    rows.append({tr("Arrow keys or W A S D"),
+                 tr("Drive while recording: throttle up/down, steer left/right")});
+    rows.append({QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText),
+                 tr("Copy the selected lines of the message log")});
+    QString html = QStringLiteral("<table cellspacing='0' cellpadding='4'>");
+    for (const auto& [keys, what] : rows) {
+        html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
+                    .arg(keys.toHtmlEscaped(), what.toHtmlEscaped());
+    }
+    html += QStringLiteral("</table>");
+    QMessageBox box(QMessageBox::NoIcon, tr("Keyboard shortcuts"), html, QMessageBox::Close, this);
+    box.setObjectName(QStringLiteral("shortcutSheet"));
+    box.setTextFormat(Qt::RichText);
+    box.exec();
+}
+
+void MainWindow::showGuide() {
+    QFile file(QStringLiteral(":/docs/operator-guide.md"));
+    if (!file.open(QIODevice::ReadOnly)) {
+        warningBox(this, tr("Operator guide"), tr("The operator guide is not built into this copy."));
+        return;
+    }
+    auto* dialog = new QDialog(this);
+    dialog->setObjectName(QStringLiteral("operatorGuide"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Operator guide"));
+    auto* text = new QTextBrowser(dialog);
+    text->setObjectName(QStringLiteral("guideText"));
+    text->setOpenExternalLinks(true);
+    text->setMarkdown(QString::fromUtf8(file.readAll()));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+    auto* layout = new QVBoxLayout(dialog);
+    layout->addWidget(text);
+    layout->addWidget(buttons);
+    dialog->resize(std::min(900, width() * 3 / 4), std::min(700, height() * 9 / 10));
+    dialog->show();
+}
+
 ReplayDialog* MainWindow::openReplay(const QString& folder) {
     QString error;
     auto bundle = rig::TrialBundle::load(folder, &error);
     if (!bundle) {
-        QMessageBox::warning(this, tr("Replay a trial bundle"), error);
+        warningBox(this, tr("Replay a trial bundle"), error);
         return nullptr;
     }
     auto* dialog = new ReplayDialog(std::move(*bundle), this);

@@ -7,6 +7,7 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 class QPushButton;
+class QTimer;
 class QToolBar;
 
 namespace prisca::app {
@@ -19,6 +20,8 @@ class LanguageSwitcher;
 class ExperimentsPanel;
 class LiveChartsPanel;
 class MappingPanel;
+class MessageLog;
+class MessageLogPanel;
 class RecordPanel;
 class RigPanel;
 class RunThread;
@@ -32,6 +35,9 @@ class TaskPanel;
 class MainWindow : public QMainWindow {
     Q_OBJECT
   public:
+    /// Where the window keeps what it saves by itself (a run's log, an experiment's table) when
+    /// the operator quits and keeps what is done.
+    static QString keptFolder();
     /// Opens a trial bundle in a replay window; a bad one gets a message box. The window, or
     /// null.
     class ReplayDialog* openReplay(const QString& folder);
@@ -45,6 +51,7 @@ class MainWindow : public QMainWindow {
     ~MainWindow() override;
 
     LabSession& session() { return *session_; }
+    MessageLog& messageLog() { return *log_; }
     RunThread& run() { return *run_; }
 
     /// Opens a session file; a bad file gets a message box and changes nothing.
@@ -69,7 +76,23 @@ class MainWindow : public QMainWindow {
     void createToolBar();
     void shareSpace();
     void retranslateUi();
+    void createStatusBar();
+    /// What would be lost or cut short by quitting now, one line each (empty: nothing).
+    QStringList workInProgress() const;
+    /// Stops every job; with `keep`, what finished is saved (the run's log, the experiment's
+    /// table) before the window closes.
+    void stopWork(bool keep);
+    /// Closes the window once a quit the operator asked for has nothing left to wait for.
+    void quitWhenIdle();
+    /// The status bar's job and E-STOP fields from the state now.
+    void updateStatusFields();
+    /// E-STOP's button and status field follow the latch.
+    void showEmergencyState(bool latched);
     void showAbout();
+    /// Help > Keyboard shortcuts: every shortcut of the window, from the actions themselves.
+    void showShortcuts();
+    /// Help > Operator guide: docs/operator-guide.md, as built into the application.
+    void showGuide();
     void announceLanguage(const QString& code);
     void showScene();
     /// Entries of theta for the session's method (what the theta chart plots).
@@ -77,7 +100,11 @@ class MainWindow : public QMainWindow {
     void rememberRecent(const QString& path);
     void updateRecentMenu();
 
+    /// A line in the status bar for `ms` (0: until replaced), and in the message log.
+    void say(const QString& source, const QString& text, int ms);
+
     LanguageSwitcher& languages_;
+    MessageLog* log_;  ///< first: the panels' first messages go to it
     LabSession* session_;
     RunThread* run_;
     ArenaView* arena_ = nullptr;
@@ -89,6 +116,8 @@ class MainWindow : public QMainWindow {
     LiveChartsPanel* chartsPanel_ = nullptr;
     ExperimentsPanel* experimentsPanel_ = nullptr;
     RigPanel* rigPanel_ = nullptr;
+    MessageLogPanel* logPanel_ = nullptr;
+    QDockWidget* logDock_ = nullptr;
     QDockWidget* taskDock_ = nullptr;
     QDockWidget* controllerDock_ = nullptr;
     QDockWidget* runDock_ = nullptr;
@@ -113,7 +142,18 @@ class MainWindow : public QMainWindow {
     bool operatorSizedDocks_ = false;  ///< the operator dragged a separator: keep their sizes
     QPushButton* emergencyButton_ = nullptr;
     QAction* aboutAction_ = nullptr;
+    QAction* shortcutsAction_ = nullptr;
+    QAction* guideAction_ = nullptr;
     QLabel* versionLabel_;
+    QLabel* jobStatus_ = nullptr;
+    QLabel* linkStatus_ = nullptr;
+    QLabel* cameraStatus_ = nullptr;
+    QLabel* emergencyStatus_ = nullptr;
+    QTimer* statusTimer_ = nullptr;
+    bool emergencyShownLatched_ = false;
+    enum class QuitPlan { None, Finish, Keep };
+    QuitPlan quitPlan_ = QuitPlan::None;
+    bool quitConfirmed_ = false;  ///< the operator answered; close without asking again
     QString sessionPath_;
 };
 

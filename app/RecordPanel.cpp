@@ -1,5 +1,7 @@
 #include "app/RecordPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/DrivingInput.h"
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
@@ -89,7 +91,7 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
         driving_->stop();
         updateButtons();
         status_->setText(message);
-        QMessageBox::warning(this, tr("Record"), message);
+        warningBox(this, tr("Record"), message);
     });
     devices::markThreadEnd(thread_);
     thread_.start();
@@ -156,13 +158,13 @@ void RecordPanel::beginRecording() {
     });
     recordingClock_.start();
     lastReadoutMs_ = -1000;
-    status_->setText(tr("Recording... drive, then press Stop."));
+    showStatus(status_, tr("Record"), [this] { return tr("Recording... drive, then press Stop."); });
     updateButtons();
 }
 
 void RecordPanel::tick() {
     if (countdownLeft_ > 0) {
-        status_->setText(
+        showStatus(status_, tr("Record"), 
             tr("Recording starts in %1 s").arg((countdownLeft_ * kTickMs + 999) / 1000));
         if (--countdownLeft_ == 0) {
             beginRecording();
@@ -206,7 +208,7 @@ void RecordPanel::tick() {
             text += QLatin1Char('\n') +
                     tr("The car has no brakes: let go of the throttle early, it slides on.");
         }
-        status_->setText(text);
+        status_->setText(text);  // live, not logged
     }
 }
 
@@ -215,7 +217,7 @@ void RecordPanel::stopRecording() {
         countdownLeft_ = 0;
         timer_->stop();
         driving_->stop();
-        status_->setText(tr("Recording cancelled."));
+        showStatus(status_, tr("Record"), tr("Recording cancelled."));
         updateButtons();
         return;
     }
@@ -245,7 +247,7 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     if (endedByEmergency_) {
         // A take cut short by E-STOP is not what the operator meant to demonstrate.
         endedByEmergency_ = false;
-        status_->setText(
+        showStatus(status_, tr("Record"), 
             demonstration.length() == 0
                 ? tr("E-STOP ended the recording; nothing was recorded.")
                 : tr("E-STOP ended the recording after %1 s; the demonstration is unchanged. The "
@@ -257,7 +259,7 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     }
     if (demonstration.length() < sim::kMinimumDemonstrationSamples) {
         QFile::remove(streamPath);
-        status_->setText(demonstration.length() == 0
+        showStatus(status_, tr("Record"), demonstration.length() == 0
                              ? tr("Nothing recorded.")
                              : tr("Too short to use (%1 samples, at least %2 are needed); the "
                                   "demonstration is unchanged.")
@@ -272,7 +274,7 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
         session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration), streamPath);
     } catch (const std::exception& e) {
         // Refused (the session keeps its demonstration); the stream file stays for the record.
-        status_->setText(
+        showStatus(status_, tr("Record"), 
             tr("The recording could not be used: %1. It is kept in %2.")
                 .arg(QString::fromStdString(e.what()), QDir::toNativeSeparators(streamPath)));
         updateButtons();
@@ -280,11 +282,15 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     }
     previous_ = previous;
     previousSource_ = previousSource;
-    status_->setText(tr("Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; "
-                        "save it or discard it.")
-                         .arg(demonstration.length())
-                         .arg(demonstration.length() * demonstration.dt, 0, 'f', 1)
-                         .arg(QDir::toNativeSeparators(streamPath)));
+    showStatus(status_, tr("Record"),
+               [this, samples = demonstration.length(),
+                seconds = demonstration.length() * demonstration.dt, streamPath] {
+                   return tr("Recorded %1 samples (%2 s), kept in %3. It is now the "
+                             "demonstration; save it or discard it.")
+                       .arg(samples)
+                       .arg(seconds, 0, 'f', 1)
+                       .arg(QDir::toNativeSeparators(streamPath));
+               });
     updateButtons();
 }
 
@@ -300,11 +306,11 @@ void RecordPanel::save() {
     }
     core::FileError error;
     if (!core::writeDemonstrationCsv(*session_.demonstration(), path, &error)) {
-        QMessageBox::warning(this, tr("Save demonstration"), error.toString());
+        warningBox(this, tr("Save demonstration"), error.toString());
         return;
     }
     session_.setDemonstrationSource(path);  // from now on it is named by its saved file
-    status_->setText(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+    showStatus(status_, tr("Record"), tr("Saved %1").arg(QDir::toNativeSeparators(path)));
 }
 
 void RecordPanel::discard() {
@@ -315,7 +321,9 @@ void RecordPanel::discard() {
     session_.setDemonstration(previous_, previousSource_);
     previous_.reset();
     streamPath_.clear();
-    status_->setText(tr("Recording discarded; the previous demonstration is back."));
+    showStatus(status_, tr("Record"), [this] {
+        return tr("Recording discarded; the previous demonstration is back.");
+    });
     updateButtons();
 }
 

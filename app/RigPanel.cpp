@@ -1,5 +1,7 @@
 #include "app/RigPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/CameraView.h"
 #include "app/ChannelMapEditor.h"
 #include "app/DrivingInput.h"
@@ -33,6 +35,8 @@
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QGridLayout>
+#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -106,6 +110,18 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     replayLast_->setObjectName(QStringLiteral("replayLastTrial"));
     replayLast_->setEnabled(false);
     setObjectName(QStringLiteral("rigPanel"));
+    cameraInfo_ = new QLabel(this);
+    cameraInfo_->setObjectName(QStringLiteral("cameraInfo"));
+    cameraInfo_->setWordWrap(true);
+    statusTimer_ = new QTimer(this);
+    statusTimer_->setInterval(1000);
+    connect(statusTimer_, &QTimer::timeout, this, [this] {
+        const long long frames = rig_.framesSeen();
+        cameraFps_ = rig_.cameraRunning() ? static_cast<double>(frames - framesAtLastTick_) : 0.0;
+        framesAtLastTick_ = frames;
+        emitStatus();
+    });
+    statusTimer_->start();
     lensInfo_->setObjectName(QStringLiteral("lensInfo"));
     lensInfo_->setWordWrap(true);
     captureBoard_->setObjectName(QStringLiteral("captureBoard"));
@@ -196,9 +212,6 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         cameraSettings->addWidget(box);
     }
     form->addRow(cameraSettingsLabel_, cameraSettings);
-    auto* cameraButtons = new QHBoxLayout;
-    cameraButtons->addWidget(startCamera_);
-    cameraButtons->addWidget(stopCamera_);
     auto* calibrationButtons = new QHBoxLayout;
     calibrationButtons->addWidget(loadCalibration_);
     calibrationButtons->addWidget(saveCalibration_);
@@ -207,25 +220,30 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     linkForm->addRow(portLabel_, port_);
     linkForm->addRow(protocolLabel_, protocol_);
     linkForm->addRow(baudLabel_, baud_);
-    auto* linkButtons = new QHBoxLayout;
-    linkButtons->addWidget(connect_);
-    linkButtons->addWidget(disconnect_);
-    auto* controls = new QVBoxLayout;
-    controls->addLayout(form);
-    controls->addLayout(cameraButtons);
-    controls->addWidget(calibrationInfo_);
-    controls->addLayout(calibrationButtons);
-    controls->addLayout(linkForm);
-    controls->addWidget(channels_);
-    controls->addLayout(linkButtons);
-    controls->addWidget(linkInfo_);
-    auto* trialButtons = new QHBoxLayout;
-    trialButtons->addWidget(drive_);
-    trialButtons->addWidget(runTrial_);
-    trialButtons->addWidget(stopTrial_);
-    controls->addLayout(trialButtons);
-    controls->addWidget(trialInfo_);
-    controls->addStretch(1);
+    // What an operator presses in a session stays in view above the tabs, whatever the height:
+    // the camera, the link, the trials.
+    auto* actions = new QGridLayout;
+    actions->addWidget(startCamera_, 0, 0);
+    actions->addWidget(stopCamera_, 0, 1);
+    actions->addWidget(connect_, 0, 2);
+    actions->addWidget(disconnect_, 0, 3);
+    actions->addWidget(drive_, 1, 0, 1, 2);
+    actions->addWidget(runTrial_, 1, 2);
+    actions->addWidget(stopTrial_, 1, 3);
+    auto* top = new QVBoxLayout;
+    top->addLayout(actions);
+    top->addWidget(trialInfo_);
+    auto* cameraPage = new QVBoxLayout;
+    cameraPage->addLayout(form);
+    cameraPage->addWidget(cameraInfo_);
+    cameraPage->addWidget(calibrationInfo_);
+    cameraPage->addLayout(calibrationButtons);
+    cameraPage->addStretch(1);
+    auto* linkPage = new QVBoxLayout;
+    linkPage->addLayout(linkForm);
+    linkPage->addWidget(channels_);
+    linkPage->addWidget(linkInfo_);
+    linkPage->addStretch(1);
     // The set-up a lab does once per rig: the lens, the loop's latency, the fence.
     auto* setup = new QVBoxLayout;
     setup->addWidget(lensInfo_);
@@ -260,22 +278,47 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     }
     tabs_ = new QTabWidget(this);
     tabs_->setObjectName(QStringLiteral("rigTabs"));
-    auto* runPage = new QWidget(tabs_);
-    runPage->setLayout(controls);
-    auto* setupPage = new QWidget(tabs_);
-    setupPage->setObjectName(QStringLiteral("rigSetup"));
-    setupPage->setLayout(setup);
-    tabs_->addTab(runPage, QString());
-    tabs_->addTab(setupPage, QString());
+    // Each page scrolls on its own, so the buttons above stay in view at any height.
+    const auto page = [this](QLayout* content, const char* name) {
+        auto* widget = new QWidget;
+        widget->setObjectName(QLatin1String(name));
+        widget->setLayout(content);
+        auto* scroll = new QScrollArea(tabs_);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(widget);
+        tabs_->addTab(scroll, QString());
+    };
+    page(cameraPage, "rigCamera");
+    page(linkPage, "rigLink");
+    page(setup, "rigSetup");
+    auto* right = new QVBoxLayout;
+    right->addLayout(top);
+    right->addWidget(tabs_, 1);
     auto* layout = new QHBoxLayout(this);
-    layout->addWidget(view_, 3);
-    layout->addWidget(tabs_, 2);
+    layout->addWidget(view_, 1);
+    layout->addLayout(right, 1);
 
     connect(&rig_, &rig::RigSession::frameReady, this, &RigPanel::showFrame);
     connect(&rig_, &rig::RigSession::cameraFailed, this,
-            [this](const QString& message) { linkInfo_->setText(message); });
+            [this](const QString& message) {
+                cameraFailed_ = true;
+                showStatus(cameraInfo_, tr("Camera"), message, MessageLevel::Error);
+                emitStatus();
+            });
     connect(&rig_, &rig::RigSession::linkStatusChanged, this, &RigPanel::showLinkStatus);
-    connect(&rig_, &rig::RigSession::cameraRunningChanged, this, &RigPanel::updateButtons);
+    connect(&rig_, &rig::RigSession::cameraRunningChanged, this, [this](bool running) {
+        updateButtons();
+        if (!running) {
+            view_->clearFrame();  // a stopped camera shows no stale image
+            lastFrame_ = cv::Mat();
+            tracking_ = false;
+            if (!cameraFailed_) {
+                showStatus(cameraInfo_, tr("Camera"), tr("Camera stopped."));
+            }
+        }
+        emitStatus();
+    });
     connect(&rig_, &rig::RigSession::trialFinished, this, &RigPanel::showTrialResult);
     connect(&rig_, &rig::RigSession::recordingFinished, this, &RigPanel::useRecording);
     connect(startCamera_, &QPushButton::clicked, this, &RigPanel::startCamera);
@@ -333,9 +376,10 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(&rig_, &rig::RigSession::bundleSaved, this,
             [this](const QString& folder, const QString& error) {
                 if (!error.isEmpty()) {
-                    trialInfo_->setText(trialInfo_->text() + QLatin1Char('\n') +
-                                        tr("The trial's bundle could not be written: %1")
-                                            .arg(error));
+                    const QString problem =
+                        tr("The trial's bundle could not be written: %1").arg(error);
+                    trialInfo_->setText(trialInfo_->text() + QLatin1Char('\n') + problem);
+                    logMessage(tr("Rig trial"), MessageLevel::Warning, problem);
                     return;
                 }
                 lastBundle_ = folder;
@@ -361,11 +405,11 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             [this](const rig::LatencyMeasurement& m) {
                 measureLatency_->setEnabled(true);
                 if (!m.error.isEmpty()) {
-                    latencyInfo_->setText(tr("Loop latency: not measured (%1)").arg(m.error));
+                    showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: not measured (%1)").arg(m.error));
                     return;
                 }
                 rig_.setLoopLatency(m.median);
-                latencyInfo_->setText(
+                showStatus(latencyInfo_, tr("Latency"), 
                     tr("Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 "
                        "ms); the trials compensate it")
                         .arg(m.median * 1000.0, 0, 'f', 1)
@@ -393,7 +437,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
         const double x = parts.value(0).trimmed().toDouble(&okX);
         const double y = parts.value(1).trimmed().toDouble(&okY);
         if (parts.size() != 2 || !okX || !okY) {
-            QMessageBox::warning(this, tr("Floor point"),
+            warningBox(this, tr("Floor point"),
                                  tr("'%1' is not two numbers \"x, y\" in metres.").arg(text));
             return;
         }
@@ -458,7 +502,7 @@ bool RigPanel::runTrial() {
                       .arg(session_.method());
     }
     if (!missing.isEmpty()) {
-        trialInfo_->setText(missing);
+        showStatus(trialInfo_, tr("Rig trial"), missing);
         return false;
     }
     rig::TrialRequest request;
@@ -466,10 +510,10 @@ bool RigPanel::runTrial() {
     request.session = QJsonDocument::fromJson(session_.toJson()).object();
     QString error;
     if (!rig_.startTrial(request, &error)) {
-        trialInfo_->setText(error);
+        showStatus(trialInfo_, tr("Rig trial"), error);
         return false;
     }
-    trialInfo_->setText(tr("Trial %1 running...").arg(rig_.trialNumber()));
+    showStatus(trialInfo_, tr("Rig trial"), tr("Trial %1 running...").arg(rig_.trialNumber()));
     runTrial_->setEnabled(false);
     return true;
 }
@@ -490,13 +534,13 @@ bool RigPanel::startDriving() {
     QDir().mkpath(RecordPanel::recordingsFolder());
     QString error;
     if (!rig_.startRecording(info, path, &error)) {
-        trialInfo_->setText(error);
+        showStatus(trialInfo_, tr("Rig trial"), error);
         return false;
     }
     driving_->start(info.actionDimension());
     drivingActive_ = true;
     driveTimer_->start();
-    trialInfo_->setText(
+    showStatus(trialInfo_, tr("Rig trial"), 
         tr("Driving and recording: arrows or WASD (or a gamepad); press Drive "
            "again to stop."));
     drive_->setChecked(true);
@@ -516,7 +560,7 @@ void RigPanel::stopDriving() {
     drivingActive_ = false;
     drive_->setChecked(false);
     rig_.stopRecording();  // useRecording() follows once the take is written
-    trialInfo_->setText(tr("Saving the recording..."));
+    showStatus(trialInfo_, tr("Rig trial"), tr("Saving the recording..."));
 }
 
 void RigPanel::useRecording(const rig::RigRecording& recording) {
@@ -542,7 +586,7 @@ void RigPanel::useRecording(const rig::RigRecording& recording) {
                                QDir::toNativeSeparators(recording.path));
         }
     }
-    trialInfo_->setText(message);
+    showStatus(trialInfo_, tr("Rig trial"), message);
     emit demonstrationRecorded(message);
 }
 
@@ -551,7 +595,9 @@ void RigPanel::emergencyStop() {
     recordingEndedByEmergency_ = drivingActive_;
     stopDriving();
     rig_.emergencyStop();
-    trialInfo_->setText(tr("E-STOP: the transmitter sends failsafe until E-STOP is reset."));
+    showStatus(trialInfo_, tr("Rig trial"), [this] {
+        return tr("E-STOP: the transmitter sends failsafe until E-STOP is reset.");
+    });
 }
 
 void RigPanel::resetEmergencyStop() {
@@ -576,7 +622,7 @@ void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
                                  .arg(result.seconds, 0, 'f', 1)
                                  .arg(result.reason);
     }
-    trialInfo_->setText(lastResult_);
+    showStatus(trialInfo_, tr("Rig trial"), lastResult_);
     runTrial_->setEnabled(true);
     emit trialFinished(lastResult_);
 }
@@ -631,9 +677,19 @@ void RigPanel::startCamera() {
     const bool hadVirtualPort = !rig_.virtualPort().isEmpty();
     QString error;
     if (!rig_.startCamera(request, &error)) {
-        QMessageBox::warning(this, tr("Camera"), error);
+        cameraFailed_ = true;
+        cameraInfo_->setText(error);
+        warningBox(this, tr("Camera"), error);
+        emitStatus();
         return;
     }
+    cameraFailed_ = false;
+    showStatus(cameraInfo_, tr("Camera"),
+               tr("Camera started: %1").arg(source_->currentText() +
+                                            (source == Source::Virtual
+                                                 ? QString()
+                                                 : QStringLiteral(" ") + sourcePath_->text())));
+    emitStatus();
     if (!hadVirtualPort && !rig_.virtualPort().isEmpty()) {
         refreshPorts();
         port_->setEditText(rig_.virtualPort());
@@ -648,7 +704,7 @@ void RigPanel::connectLink() {
     devices::LinkSettings settings;
     settings.port = port_->currentText().trimmed();
     if (settings.port.isEmpty()) {
-        linkInfo_->setText(tr("Choose or type the transmitter's port first."));
+        showStatus(linkInfo_, tr("Link"), tr("Choose or type the transmitter's port first."));
         return;
     }
     settings.protocol = static_cast<devices::RcProtocol>(protocol_->currentData().toInt());
@@ -669,7 +725,7 @@ void RigPanel::disconnectLink() {
 bool RigPanel::loadCalibration(const QString& path) {
     QString error;
     if (!rig_.loadCalibration(path, &error)) {
-        QMessageBox::warning(this, tr("Floor calibration"),
+        warningBox(this, tr("Floor calibration"),
                              tr("The calibration could not be read.\n\n%1").arg(error));
         return false;
     }
@@ -681,7 +737,7 @@ bool RigPanel::loadCalibration(const QString& path) {
 bool RigPanel::saveCalibration(const QString& path) {
     QString error;
     if (!rig_.saveCalibration(path, &error)) {
-        QMessageBox::warning(this, tr("Floor calibration"), error);
+        warningBox(this, tr("Floor calibration"), error);
         return false;
     }
     return true;
@@ -690,14 +746,14 @@ bool RigPanel::saveCalibration(const QString& path) {
 void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
     clicked_.push_back({{image.x(), image.y()}, {floor.x(), floor.y()}});
     if (clicked_.size() < 4) {
-        calibrationInfo_->setText(
+        showStatus(calibrationInfo_, tr("Floor calibration"), 
             tr("%1 point(s) clicked; at least 4 are needed.").arg(clicked_.size()));
         return;
     }
     QString error;
     const auto fit = devices::FloorCalibration::fit(clicked_, &error, lens_);
     if (!fit) {
-        calibrationInfo_->setText(error);
+        showStatus(calibrationInfo_, tr("Floor calibration"), error);
         return;
     }
     rig_.setCalibration(*fit);
@@ -708,12 +764,40 @@ void RigPanel::addCalibrationPoint(const QPointF& image, const QPointF& floor) {
 void RigPanel::showFrame(const devices::CameraFrame& frame,
                          const std::optional<devices::PlanarPose>& pose) {
     lastFrame_ = frame.image;
+    tracking_ = pose.has_value();
     view_->setFrame(toImage(frame.image), pose);
     if (pose && session_.profile().info.name == QLatin1String("slidecar")) {
         Eigen::VectorXd state = Eigen::VectorXd::Zero(6);
         state.head(3) << pose->x, pose->y, pose->heading;
         emit carTracked(state);
     }
+}
+
+void RigPanel::emitStatus() {
+    const devices::LinkStatus& link = rig_.linkStatus();
+    QString linkText;
+    bool linkAlarm = false;
+    if (!link.connected) {
+        linkText = link.lastError.isEmpty() ? tr("Link: off") : tr("Link: port error");
+        linkAlarm = !link.lastError.isEmpty();
+    } else if (link.failsafe != devices::FailsafeReason::None) {
+        linkText = tr("Link: %1 failsafe (%2)")
+                       .arg(protocol_->currentText(), devices::failsafeReasonText(link.failsafe));
+        linkAlarm = link.failsafe != devices::FailsafeReason::NoCommand;
+    } else {
+        linkText = tr("Link: %1 %2/s").arg(protocol_->currentText()).arg(link.measuredRateHz, 0, 'f', 0);
+    }
+    QString cameraText;
+    bool cameraAlarm = false;
+    if (rig_.cameraRunning()) {
+        cameraText = tracking_ ? tr("Camera: %1 fps, tracking").arg(cameraFps_, 0, 'f', 0)
+                               : tr("Camera: %1 fps, no car in view").arg(cameraFps_, 0, 'f', 0);
+        cameraAlarm = !tracking_;
+    } else {
+        cameraText = cameraFailed_ ? tr("Camera: failed") : tr("Camera: off");
+        cameraAlarm = cameraFailed_;
+    }
+    emit statusSummary(linkText, linkAlarm, cameraText, cameraAlarm);
 }
 
 void RigPanel::updateButtons() {
@@ -742,6 +826,26 @@ void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
         text += QStringLiteral("\n") + status.lastError;
     }
     linkInfo_->setText(text);
+    // The log gets the link's changes of state, not its every rate update.
+    QString state = status.connected ? tr("Link: connected") : tr("Link: not connected");
+    if (status.connected && status.failsafe != devices::FailsafeReason::None) {
+        state += tr("; failsafe (%1)").arg(devices::failsafeReasonText(status.failsafe));
+    }
+    if (!status.lastError.isEmpty()) {
+        state += QStringLiteral(": ") + status.lastError;
+    }
+    // Compared by what it means, not its words (a language switch is no change of state).
+    const QString key = QStringLiteral("%1/%2/%3")
+                            .arg(status.connected)
+                            .arg(static_cast<int>(status.connected ? status.failsafe
+                                                                   : devices::FailsafeReason::None))
+                            .arg(status.lastError);
+    if (key != loggedLinkState_) {
+        loggedLinkState_ = key;
+        logMessage(tr("Link"), status.lastError.isEmpty() ? MessageLevel::Info : MessageLevel::Warning,
+                   state);
+    }
+    emitStatus();
 }
 
 void RigPanel::showTask() {
@@ -817,8 +921,13 @@ void RigPanel::retranslateUi() {
         tr("The session's method drives the car through the link, with the "
            "camera's pose as its state"));
     stopTrial_->setText(tr("Stop the trial"));
-    tabs_->setTabText(0, tr("Camera, link, trials"));
-    tabs_->setTabText(1, tr("Lens, latency, fence"));
+    emitStatus();  // the status bar's fields in the new language
+    showLinkStatus(rig_.linkStatus());
+    protocol_->setItemText(protocol_->findData(static_cast<int>(devices::RcProtocol::PpmBridge)),
+                           tr("PPM bridge (trainer port)"));
+    tabs_->setTabText(0, tr("Camera and floor"));
+    tabs_->setTabText(1, tr("Link"));
+    tabs_->setTabText(2, tr("Lens, latency, fence"));
     captureBoard_->setText(tr("Capture board view"));
     captureBoard_->setToolTip(tr("Find the 9 x 6 chessboard (40 mm squares) in the camera's "
                                  "image and keep its corners; capture views over the whole "
@@ -870,12 +979,12 @@ void RigPanel::setSaveBundles(bool on) {
 
 bool RigPanel::captureBoardView() {
     if (lastFrame_.empty()) {
-        lensInfo_->setText(tr("Lens: no camera image to capture a board view from."));
+        showStatus(lensInfo_, tr("Lens"), tr("Lens: no camera image to capture a board view from."));
         return false;
     }
     std::vector<cv::Point2f> corners = devices::findBoardCorners(lastFrame_, devices::BoardSpec{});
     if (corners.empty()) {
-        lensInfo_->setText(tr("Lens: no whole 9 x 6 board in this view (%1 captured). Hold the "
+        showStatus(lensInfo_, tr("Lens"), tr("Lens: no whole 9 x 6 board in this view (%1 captured). Hold the "
                               "board so all of it is seen, still, and try again.")
                                .arg(boardViews_.size()));
         return false;
@@ -902,7 +1011,7 @@ bool RigPanel::fitLens() {
         }
     }
     if (!lens) {
-        lensInfo_->setText(tr("Lens: %1").arg(error));
+        showStatus(lensInfo_, tr("Lens"), tr("Lens: %1").arg(error));
         return false;
     }
     lens_ = lens;
@@ -920,7 +1029,7 @@ bool RigPanel::fitLens() {
                                                       QStringLiteral("camera.json"),
                                                       tr("Camera (*.json)"));
     if (!path.isEmpty() && !lens_->save(path, &error)) {
-        QMessageBox::warning(this, tr("Save camera intrinsics"), error);
+        warningBox(this, tr("Save camera intrinsics"), error);
     }
     retranslateUi();
     return true;
@@ -930,7 +1039,7 @@ bool RigPanel::loadLens(const QString& path) {
     QString error;
     const auto lens = devices::CameraLens::load(path, &error);
     if (!lens) {
-        QMessageBox::warning(this, tr("Open camera intrinsics"), error);
+        warningBox(this, tr("Open camera intrinsics"), error);
         return false;
     }
     lens_ = lens;
@@ -963,17 +1072,17 @@ void RigPanel::showLensInfo() {
                     .arg(boardViews_.size())
                     .arg(devices::kMinLensViews);
     }
-    lensInfo_->setText(text);
+    showStatus(lensInfo_, tr("Lens"), text);
 }
 
 bool RigPanel::measureLatency() {
     QString error;
     if (!rig_.measureLatency({}, &error)) {
-        latencyInfo_->setText(tr("Loop latency: %1").arg(error));
+        showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: %1").arg(error));
         return false;
     }
     measureLatency_->setEnabled(false);
-    latencyInfo_->setText(tr("Loop latency: measuring (keep the car at rest in view)..."));
+    showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: measuring (keep the car at rest in view)..."));
     return true;
 }
 
@@ -1002,13 +1111,13 @@ void RigPanel::applyFence() {
         fence.polygon.clear();  // not a fence yet: the limits alone
     }
     if (!problem.isEmpty()) {
-        fenceInfo_->setText(tr("Fence: %1").arg(problem));
+        showStatus(fenceInfo_, tr("Fence"), tr("Fence: %1").arg(problem));
         fence.polygon.clear();
     } else if (fenceCorners_.size() >= 3) {
-        fenceInfo_->setText(tr("Fence: %1 corners; a car outside it ends the trial in failsafe.")
+        showStatus(fenceInfo_, tr("Fence"), tr("Fence: %1 corners; a car outside it ends the trial in failsafe.")
                                 .arg(fenceCorners_.size()));
     } else {
-        fenceInfo_->setText(tr("Fence: none (%1 corner(s) clicked; 3 or more make one).")
+        showStatus(fenceInfo_, tr("Fence"), tr("Fence: none (%1 corner(s) clicked; 3 or more make one).")
                                 .arg(fenceCorners_.size()));
     }
     rig_.setGeofence(fence);

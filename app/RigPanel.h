@@ -110,6 +110,8 @@ class RigPanel : public QWidget {
     void emergencyStop();
     void resetEmergencyStop();
     bool isRunning() const { return rig_.trialRunning(); }
+    /// Sends statusSummary() with the state now (it is sent on every change, and each second).
+    void emitStatus();
 
     /// Drive the car through the link with the keyboard or a gamepad and record the camera's
     /// states and the commands as a demonstration (streamed to disk as it goes); once stopped
@@ -127,6 +129,11 @@ class RigPanel : public QWidget {
     void demonstrationRecorded(const QString& message);
     /// The car's tracked pose as a slide-car state (x, y, psi, 0, 0, 0), for the arena.
     void carTracked(const Eigen::VectorXd& state);
+    /// One line each for the window's status bar: the link (protocol, rate, failsafe) and the
+    /// camera (frames per second, tracking); `alarm` when the operator should look (failsafe,
+    /// a port error, a camera failure, the car not tracked).
+    void statusSummary(const QString& link, bool linkAlarm, const QString& camera,
+                       bool cameraAlarm);
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -206,6 +213,13 @@ class RigPanel : public QWidget {
     QPushButton* replayLast_;
     QString lastBundle_;
     QString lastResult_;
+    QLabel* cameraInfo_ = nullptr;
+    QTimer* statusTimer_ = nullptr;  ///< the camera's frame rate, once a second
+    long long framesAtLastTick_ = 0;
+    double cameraFps_ = 0.0;
+    bool tracking_ = false;  ///< the newest frame shown had the car in it
+    bool cameraFailed_ = false;
+    QString loggedLinkState_;
     bool recordingEndedByEmergency_ = false;
 };
 

@@ -1,5 +1,7 @@
 #include "app/RunPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/LabSession.h"
 #include "app/RunThread.h"
 #include "core/RunLogCsv.h"
@@ -24,6 +26,7 @@
 #include <QJsonDocument>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTime>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -168,17 +171,21 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
                                  : path + QStringLiteral(".csv");
         QString error;
         if (!exportRunLog(file, &error)) {
-            QMessageBox::warning(this, tr("Export run log"), error);
+            warningBox(this, tr("Export run log"), error);
             return;
         }
         QSettings().setValue("run/logDirectory", QFileInfo(file).absolutePath());
-        status_->setText(tr("Run log written to %1").arg(QDir::toNativeSeparators(file)));
+        showStatus(status_, tr("Run"), [this, file] {
+            return tr("Run log written to %1").arg(QDir::toNativeSeparators(file));
+        });
     });
     // Reset: stop whatever runs and start the views afresh (the next run starts cold anyway).
     connect(resetAction_, &QAction::triggered, this, [this] {
         run_.stop();
         results_->setRowCount(0);
-        status_->clear();
+        if (phase_ != RunPhase::EmergencyStopped) {
+            status_->clear();  // under E-STOP its explanation stays until it is reset
+        }
         emit runStarting();
     });
     connect(emergencyAction_, &QAction::triggered, this, &RunPanel::emergencyStop);
@@ -230,7 +237,8 @@ void RunPanel::clearResultsForNewTask() {
     }
     if (results_->rowCount() > 0) {
         results_->setRowCount(0);
-        status_->setText(tr("The task changed: the previous results were cleared."));
+        showStatus(status_, tr("Run"),
+                   [this] { return tr("The task changed: the previous results were cleared."); });
     }
     retranslateUi();  // the RMS column's unit follows the plant
 }
@@ -271,6 +279,13 @@ void RunPanel::startRun() {
     divergence_->hide();
     exportLog_->setEnabled(false);
     emit runStarting();
+    logMessage(tr("Run"), MessageLevel::Info,
+               tr("Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5")
+                   .arg(sim::MethodCatalog::get(request.method).label)
+                   .arg(request.trials)
+                   .arg(seed_->value())
+                   .arg(perturbation_->value(), 0, 'f', 2)
+                   .arg(sensor_->value(), 0, 'f', 2));
     run_.start(request);
 }
 
@@ -311,11 +326,20 @@ void RunPanel::updateButtons(RunPhase phase) {
         return;
     }
     if (phase == RunPhase::EmergencyStopped) {
-        status_->setText(tr("E-STOP engaged: the run is stopped. Reset E-STOP to run again."));
+        emergencyAt_ = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
+        showStatus(status_, tr("Run"), [this, at = emergencyAt_] {
+            return tr("E-STOP engaged at %1: the run is stopped. Reset E-STOP to run again.")
+                .arg(at);
+        });
     } else if (phase == RunPhase::Training) {
-        status_->setText(tr("Training before the run..."));
+        showStatus(status_, tr("Run"), [this] { return tr("Training before the run..."); });
     } else if (previous == RunPhase::EmergencyStopped) {
-        status_->setText(tr("E-STOP reset: ready to run."));
+        // The explanation stays until the operator runs again: what stopped the run, and when.
+        showStatus(status_, tr("Run"), [this, at = emergencyAt_] {
+            return tr("E-STOP was engaged at %1 and stopped the run; it is reset now: ready to "
+                      "run.")
+                .arg(at);
+        });
     }
 }
 
@@ -350,6 +374,15 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
     cell(2, planar ? QString::number(summary.finalHeadingError * 180.0 / M_PI, 'f', 1)
                    : QStringLiteral("—"));
     cell(3, QString::number(summary.trackingRms, 'f', 3));
+    const QString tracking = tr("tracking RMS %1 m").arg(summary.trackingRms, 0, 'f', 3);
+    logMessage(tr("Run"), MessageLevel::Info,
+               (planar ? tr("Trial %1: parked %2 cm and %3 deg off; %4")
+                             .arg(trial + 1)
+                             .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
+                             .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
+                             .arg(tracking)
+                       : tr("Trial %1: %2").arg(trial + 1).arg(tracking)) +
+                   (summary.complete ? QString() : tr(" (stopped part-way)")));
     if (row == 0 && summary.complete) {
         firstTrialRms_ = summary.trackingRms;
     } else if (diverged(summary, firstTrialRms_)) {

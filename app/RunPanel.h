@@ -93,6 +93,7 @@ class RunPanel : public QWidget {
     QPushButton* divergenceStop_;
     QPushButton* divergenceRestart_;
     double firstTrialRms_ = 0.0;
+    QString emergencyAt_;  ///< when E-STOP was last engaged (HH:mm:ss)
     bool restartPending_ = false;  ///< a new run once the stopped one is idle  ///< the run's first
                                    ///< finished trial, the yardstick
 };

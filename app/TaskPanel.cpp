@@ -1,5 +1,7 @@
 #include "app/TaskPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/LabSession.h"
 #include "core/DemonstrationCsv.h"
 #include "sim/DemonstrationStyles.h"
@@ -169,7 +171,7 @@ void TaskPanel::useScripted() {
     try {
         session_.setScriptedDemonstration(style, static_cast<std::uint64_t>(seed_->value()));
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Scripted demonstration"), QString::fromStdString(e.what()));
+        warningBox(this, tr("Scripted demonstration"), QString::fromStdString(e.what()));
     }
 }
 
@@ -177,7 +179,7 @@ bool TaskPanel::openDemonstration(const QString& path) {
     core::FileError error;
     auto demo = core::readDemonstrationCsv(path, &error);
     if (!demo) {
-        QMessageBox::warning(
+        warningBox(
             this, tr("Open demonstration"),
             tr("The demonstration could not be read.\n\n%1").arg(error.toString()));
         return false;
@@ -185,7 +187,7 @@ bool TaskPanel::openDemonstration(const QString& path) {
     try {
         session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(*demo)), path);
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Open demonstration"),
+        warningBox(this, tr("Open demonstration"),
                              tr("%1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
@@ -197,7 +199,7 @@ bool TaskPanel::openPlantParameters(const QString& path) {
     QString error;
     auto parameters = sim::readPlantParameters(path, session_.plant(), &error);
     if (!parameters) {
-        QMessageBox::warning(this, tr("Open plant file"),
+        warningBox(this, tr("Open plant file"),
                              tr("The plant file could not be used.\n\n%1").arg(error));
         return false;
     }
@@ -205,7 +207,7 @@ bool TaskPanel::openPlantParameters(const QString& path) {
         session_.setPlantParameters(
             std::make_shared<const sim::PlantParameters>(std::move(*parameters)));
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Open plant file"),
+        warningBox(this, tr("Open plant file"),
                              tr("%1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
@@ -254,7 +256,7 @@ void TaskPanel::askSave() {
     }
     core::FileError error;
     if (!core::writeDemonstrationCsv(*session_.demonstration(), path, &error)) {
-        QMessageBox::warning(this, tr("Save demonstration"), error.toString());
+        warningBox(this, tr("Save demonstration"), error.toString());
         return;
     }
     session_.setDemonstrationSource(path);  // from now on it is named by its saved file

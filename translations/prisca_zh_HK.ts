@@ -392,6 +392,59 @@
     </message>
 </context>
 <context>
+    <name>PaperFigures</name>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="38"/>
+        <source>Slide parking: every trial&apos;s path and end posture (lot dashed red)</source>
+        <translation>滑行泊車：每次試驗的路徑與最終姿態（車位為紅色虛線）</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="53"/>
+        <source>: close-up of the lot</source>
+        <translation>：車位特寫</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="55"/>
+        <source>x [cm]</source>
+        <translation>x [cm]</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="56"/>
+        <source>y [cm]</source>
+        <translation>y [cm]</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="99"/>
+        <source>Learning curves: mean and 95% band</source>
+        <translation>學習曲線：平均值與 95% 區間</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="100"/>
+        <source>simulated experience [s]</source>
+        <translation>模擬經驗 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="127"/>
+        <source>Lemma 4.1: Var(D) over τ&apos; = 2H steps</source>
+        <translation>引理 4.1：τ&apos; = 2H 步內的 Var(D)</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="161"/>
+        <source>%1: RMS %2 m in time, %3 m to the path (mean of %4)</source>
+        <translation>%1：按時間 RMS %2 m，距路徑 %3 m（%4 次的平均）</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="166"/>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <location filename="../app/figures/PaperFigures.cpp" line="167"/>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+</context>
+<context>
     <name>PlantCatalog</name>
     <message>
         <location filename="../sim/PlantCatalog.cpp" line="35"/>
@@ -445,22 +498,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="74"/>
+        <location filename="../app/CameraView.cpp" line="80"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="143"/>
+        <location filename="../app/CameraView.cpp" line="149"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="147"/>
+        <location filename="../app/CameraView.cpp" line="153"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="152"/>
+        <location filename="../app/CameraView.cpp" line="158"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -527,11 +580,13 @@
     </message>
     <message>
         <location filename="../app/ControllerPanel.cpp" line="229"/>
+        <location filename="../app/ControllerPanel.cpp" line="376"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
         <location filename="../app/ControllerPanel.cpp" line="229"/>
+        <location filename="../app/ControllerPanel.cpp" line="376"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
@@ -551,27 +606,27 @@
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="382"/>
+        <location filename="../app/ControllerPanel.cpp" line="385"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="406"/>
+        <location filename="../app/ControllerPanel.cpp" line="409"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="407"/>
+        <location filename="../app/ControllerPanel.cpp" line="410"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="408"/>
+        <location filename="../app/ControllerPanel.cpp" line="411"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="383"/>
+        <location filename="../app/ControllerPanel.cpp" line="386"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -579,196 +634,204 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="155"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="185"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="157"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="187"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="186"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="188"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="201"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="210"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="212"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="239"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="240"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="252"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="212"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="229"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="279"/>
+        <source>Experiments</source>
+        <translation>實驗</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="257"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="287"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="275"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="295"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="281"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="331"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="332"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="390"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="407"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="420"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="412"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="413"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="439"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="446"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="468"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="469"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="472"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="473"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="474"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="475"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="460"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="477"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="461"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="478"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="462"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="479"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="463"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="480"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -826,97 +889,97 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="319"/>
+        <location filename="../app/LabSession.cpp" line="322"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="325"/>
+        <location filename="../app/LabSession.cpp" line="328"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="331"/>
+        <location filename="../app/LabSession.cpp" line="334"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="334"/>
+        <location filename="../app/LabSession.cpp" line="337"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="339"/>
+        <location filename="../app/LabSession.cpp" line="342"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="346"/>
+        <location filename="../app/LabSession.cpp" line="349"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="350"/>
+        <location filename="../app/LabSession.cpp" line="353"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="359"/>
+        <location filename="../app/LabSession.cpp" line="362"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="382"/>
+        <location filename="../app/LabSession.cpp" line="385"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="449"/>
+        <location filename="../app/LabSession.cpp" line="452"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="454"/>
+        <location filename="../app/LabSession.cpp" line="457"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="476"/>
+        <location filename="../app/LabSession.cpp" line="479"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="490"/>
+        <location filename="../app/LabSession.cpp" line="493"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="516"/>
+        <location filename="../app/LabSession.cpp" line="519"/>
         <source>&apos;plantParameters&apos;: %1</source>
         <translation>「plantParameters」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="530"/>
+        <location filename="../app/LabSession.cpp" line="533"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="534"/>
+        <location filename="../app/LabSession.cpp" line="537"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="541"/>
+        <location filename="../app/LabSession.cpp" line="544"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="546"/>
+        <location filename="../app/LabSession.cpp" line="549"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="565"/>
+        <location filename="../app/LabSession.cpp" line="569"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1042,57 +1105,128 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="104"/>
+        <location filename="../app/MainWindow.cpp" line="120"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="119"/>
-        <location filename="../app/MainWindow.cpp" line="513"/>
-        <location filename="../app/MainWindow.cpp" line="519"/>
+        <location filename="../app/MainWindow.cpp" line="139"/>
+        <location filename="../app/MainWindow.cpp" line="668"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="288"/>
+        <location filename="../app/MainWindow.cpp" line="142"/>
+        <location filename="../app/MainWindow.cpp" line="595"/>
+        <location filename="../app/MainWindow.cpp" line="603"/>
+        <location filename="../app/MainWindow.cpp" line="605"/>
+        <location filename="../app/MainWindow.cpp" line="619"/>
+        <source>Session</source>
+        <translation>工作階段</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="317"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="372"/>
+        <location filename="../app/MainWindow.cpp" line="382"/>
+        <location filename="../app/MainWindow.cpp" line="471"/>
+        <location filename="../app/MainWindow.cpp" line="475"/>
+        <source>E-STOP LATCHED</source>
+        <translation>E-STOP 已鎖定</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="431"/>
+        <source>Job: training before the run</source>
+        <translation>工作：運行前訓練中</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="434"/>
+        <source>Job: simulated run</source>
+        <translation>工作：模擬運行</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="437"/>
+        <source>Job: simulated run, PAUSED</source>
+        <translation>工作：模擬運行，已暫停</translation>
+    </message>
+    <message>
         <location filename="../app/MainWindow.cpp" line="445"/>
+        <source>Job: experiment, %1 of %2</source>
+        <translation>工作：實驗，%1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="448"/>
+        <source>Job: experiment, starting</source>
+        <translation>工作：實驗，啟動中</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="451"/>
+        <source>Job: rig trial</source>
+        <translation>工作：實驗台試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="454"/>
+        <source>Job: measuring latency</source>
+        <translation>工作：量度延遲</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="457"/>
+        <source>Job: recording</source>
+        <translation>工作：錄製中</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="460"/>
+        <source>Job: none</source>
+        <translation>工作：無</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="471"/>
+        <source>E-STOP ready</source>
+        <translation>E-STOP 就緒</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="504"/>
+        <location filename="../app/MainWindow.cpp" line="587"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="373"/>
+        <location filename="../app/MainWindow.cpp" line="505"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="384"/>
-        <location filename="../app/MainWindow.cpp" line="464"/>
+        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindow.cpp" line="614"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="385"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="398"/>
-        <location filename="../app/MainWindow.cpp" line="570"/>
+        <location filename="../app/MainWindow.cpp" line="530"/>
+        <location filename="../app/MainWindow.cpp" line="911"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="422"/>
+        <location filename="../app/MainWindow.cpp" line="554"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="446"/>
+        <location filename="../app/MainWindow.cpp" line="554"/>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="588"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1101,144 +1235,308 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="454"/>
+        <location filename="../app/MainWindow.cpp" line="596"/>
+        <source>The messages saved with %1 follow (%2 lines).</source>
+        <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="603"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="456"/>
+        <location filename="../app/MainWindow.cpp" line="605"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="469"/>
+        <location filename="../app/MainWindow.cpp" line="619"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="505"/>
+        <location filename="../app/MainWindow.cpp" line="660"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindow.cpp" line="661"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="507"/>
+        <location filename="../app/MainWindow.cpp" line="662"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="508"/>
+        <location filename="../app/MainWindow.cpp" line="663"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="509"/>
+        <location filename="../app/MainWindow.cpp" line="664"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="510"/>
+        <location filename="../app/MainWindow.cpp" line="665"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="511"/>
+        <location filename="../app/MainWindow.cpp" line="666"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="512"/>
+        <location filename="../app/MainWindow.cpp" line="667"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="514"/>
+        <location filename="../app/MainWindow.cpp" line="669"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="515"/>
+        <location filename="../app/MainWindow.cpp" line="670"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindow.cpp" line="671"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="672"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="518"/>
+        <location filename="../app/MainWindow.cpp" line="673"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="520"/>
+        <location filename="../app/MainWindow.cpp" line="675"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="521"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="522"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="523"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
+        <source>Messages</source>
+        <translation>訊息</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="679"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="524"/>
+        <location filename="../app/MainWindow.cpp" line="680"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="525"/>
+        <location filename="../app/MainWindow.cpp" line="681"/>
+        <source>Operator &amp;guide</source>
+        <translation>操作指南(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="682"/>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>鍵盤快捷鍵(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="683"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="527"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="542"/>
+        <location filename="../app/MainWindow.cpp" line="695"/>
+        <source>a simulated run</source>
+        <translation>一次模擬運行</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="698"/>
+        <source>an experiment (%1 of %2 done)</source>
+        <translation>一個實驗（已完成 %1 / %2）</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="703"/>
+        <source>a trial on the rig</source>
+        <translation>一次實驗台試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="706"/>
+        <source>a latency measurement on the rig</source>
+        <translation>一次實驗台延遲量度</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="709"/>
+        <source>a recording</source>
+        <translation>一次錄製</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="731"/>
+        <location filename="../app/MainWindow.cpp" line="751"/>
+        <location filename="../app/MainWindow.cpp" line="753"/>
+        <location filename="../app/MainWindow.cpp" line="760"/>
+        <location filename="../app/MainWindow.cpp" line="763"/>
+        <location filename="../app/MainWindow.cpp" line="795"/>
+        <source>Quit</source>
+        <translation>結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="732"/>
+        <source>Quitting: the work under way is stopped and what is done kept.</source>
+        <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="733"/>
+        <source>Quitting: the work under way is discarded.</source>
+        <translation>結束中：進行中的工作已捨棄。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="751"/>
+        <source>The run&apos;s log was kept in %1</source>
+        <translation>運行記錄已保存於 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="761"/>
+        <source>The experiment&apos;s table was kept in %1</source>
+        <translation>實驗表格已保存於 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="774"/>
+        <source>Quit PRISCA Lab</source>
+        <translation>結束 PRISCA Lab</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="775"/>
+        <source>Work is under way:
+
+%1
+
+What should happen to it?</source>
+        <translation>有工作正在進行：
+
+%1
+
+要如何處理？</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="780"/>
+        <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
+        <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="782"/>
+        <source>Finish, then quit</source>
+        <translation>完成後結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="783"/>
+        <source>Keep what is done, quit</source>
+        <translation>保留已完成的部分並結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="784"/>
+        <source>Discard, quit</source>
+        <translation>捨棄並結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="795"/>
+        <source>PRISCA Lab quits once the work under way is done.</source>
+        <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="825"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="554"/>
+        <location filename="../app/MainWindow.cpp" line="825"/>
+        <source>Language</source>
+        <translation>語言</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="837"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="556"/>
+        <location filename="../app/MainWindow.cpp" line="839"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="560"/>
+        <location filename="../app/MainWindow.cpp" line="843"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="563"/>
+        <location filename="../app/MainWindow.cpp" line="846"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="862"/>
+        <source>Space or Esc</source>
+        <translation>空白鍵或 Esc</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="862"/>
+        <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
+        <translation>E-STOP，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="868"/>
+        <source>Arrow keys or W A S D</source>
+        <translation>方向鍵或 W A S D</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="869"/>
+        <source>Drive while recording: throttle up/down, steer left/right</source>
+        <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="871"/>
+        <source>Copy the selected lines of the message log</source>
+        <translation>複製訊息記錄中選取的行</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="878"/>
+        <source>Keyboard shortcuts</source>
+        <translation>鍵盤快捷鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="887"/>
+        <location filename="../app/MainWindow.cpp" line="893"/>
+        <source>Operator guide</source>
+        <translation>操作指南</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="887"/>
+        <source>The operator guide is not built into this copy.</source>
+        <translation>此版本未內置操作指南。</translation>
     </message>
 </context>
 <context>
@@ -1351,136 +1649,211 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::MessageLog</name>
+    <message>
+        <location filename="../app/MessageLog.cpp" line="94"/>
+        <source>info</source>
+        <translation>資訊</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLog.cpp" line="96"/>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLog.cpp" line="98"/>
+        <source>error</source>
+        <translation>錯誤</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::MessageLogPanel</name>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="174"/>
+        <source>All messages</source>
+        <translation>所有訊息</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="175"/>
+        <source>Warnings and errors</source>
+        <translation>警告與錯誤</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="177"/>
+        <source>Copy</source>
+        <translation>複製</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <source>Copy the selected lines, or all shown, as tab-separated text (Ctrl+C)</source>
+        <translation>以定位字元分隔的文字複製選取的行，或全部顯示的行 (Ctrl+C)</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <source>Clear</source>
+        <translation>清除</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <source>Level</source>
+        <translation>級別</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <source>Source</source>
+        <translation>來源</translation>
+    </message>
+    <message>
+        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <source>Message</source>
+        <translation>訊息</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="92"/>
-        <location filename="../app/RecordPanel.cpp" line="350"/>
+        <location filename="../app/RecordPanel.cpp" line="94"/>
+        <location filename="../app/RecordPanel.cpp" line="161"/>
+        <location filename="../app/RecordPanel.cpp" line="167"/>
+        <location filename="../app/RecordPanel.cpp" line="220"/>
+        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="262"/>
+        <location filename="../app/RecordPanel.cpp" line="277"/>
+        <location filename="../app/RecordPanel.cpp" line="285"/>
+        <location filename="../app/RecordPanel.cpp" line="313"/>
+        <location filename="../app/RecordPanel.cpp" line="324"/>
+        <location filename="../app/RecordPanel.cpp" line="358"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="159"/>
+        <location filename="../app/RecordPanel.cpp" line="161"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="166"/>
+        <location filename="../app/RecordPanel.cpp" line="168"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="202"/>
+        <location filename="../app/RecordPanel.cpp" line="204"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="207"/>
+        <location filename="../app/RecordPanel.cpp" line="209"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="218"/>
+        <location filename="../app/RecordPanel.cpp" line="220"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
+        <location filename="../app/RecordPanel.cpp" line="252"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="251"/>
+        <location filename="../app/RecordPanel.cpp" line="253"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="263"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="262"/>
+        <location filename="../app/RecordPanel.cpp" line="264"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="276"/>
+        <location filename="../app/RecordPanel.cpp" line="278"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="283"/>
+        <location filename="../app/RecordPanel.cpp" line="288"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="292"/>
-        <location filename="../app/RecordPanel.cpp" line="303"/>
+        <location filename="../app/RecordPanel.cpp" line="298"/>
+        <location filename="../app/RecordPanel.cpp" line="309"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="300"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="307"/>
+        <location filename="../app/RecordPanel.cpp" line="313"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="318"/>
+        <location filename="../app/RecordPanel.cpp" line="325"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="340"/>
+        <location filename="../app/RecordPanel.cpp" line="348"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="345"/>
+        <location filename="../app/RecordPanel.cpp" line="353"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="347"/>
+        <location filename="../app/RecordPanel.cpp" line="355"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="348"/>
+        <location filename="../app/RecordPanel.cpp" line="356"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="349"/>
+        <location filename="../app/RecordPanel.cpp" line="357"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="351"/>
+        <location filename="../app/RecordPanel.cpp" line="359"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="352"/>
+        <location filename="../app/RecordPanel.cpp" line="360"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="361"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="354"/>
+        <location filename="../app/RecordPanel.cpp" line="362"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="355"/>
+        <location filename="../app/RecordPanel.cpp" line="363"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -1576,167 +1949,212 @@
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="287"/>
+        <location filename="../app/RigPanel.cpp" line="330"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="288"/>
-        <location filename="../app/RigPanel.cpp" line="295"/>
+        <location filename="../app/RigPanel.cpp" line="331"/>
+        <location filename="../app/RigPanel.cpp" line="338"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="294"/>
+        <location filename="../app/RigPanel.cpp" line="337"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="385"/>
-        <location filename="../app/RigPanel.cpp" line="396"/>
+        <location filename="../app/RigPanel.cpp" line="429"/>
+        <location filename="../app/RigPanel.cpp" line="440"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="386"/>
+        <location filename="../app/RigPanel.cpp" line="430"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="397"/>
+        <location filename="../app/RigPanel.cpp" line="441"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="454"/>
+        <location filename="../app/RigPanel.cpp" line="498"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="457"/>
+        <location filename="../app/RigPanel.cpp" line="501"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="472"/>
+        <location filename="../app/RigPanel.cpp" line="516"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="500"/>
+        <location filename="../app/RigPanel.cpp" line="544"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="584"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="535"/>
+        <location filename="../app/RigPanel.cpp" line="579"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="163"/>
+        <location filename="../app/RigPanel.cpp" line="179"/>
+        <location filename="../app/RigPanel.cpp" line="927"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="312"/>
+        <location filename="../app/RigPanel.cpp" line="355"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="323"/>
-        <location filename="../app/RigPanel.cpp" line="933"/>
+        <location filename="../app/RigPanel.cpp" line="366"/>
+        <location filename="../app/RigPanel.cpp" line="1042"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="324"/>
-        <location filename="../app/RigPanel.cpp" line="921"/>
+        <location filename="../app/RigPanel.cpp" line="367"/>
+        <location filename="../app/RigPanel.cpp" line="1030"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="337"/>
+        <location filename="../app/RigPanel.cpp" line="380"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="364"/>
+        <location filename="../app/RigPanel.cpp" line="408"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="369"/>
+        <location filename="../app/RigPanel.cpp" line="413"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="449"/>
+        <location filename="../app/RigPanel.cpp" line="493"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="519"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="528"/>
+        <location filename="../app/RigPanel.cpp" line="572"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="554"/>
+        <location filename="../app/RigPanel.cpp" line="599"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="563"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="568"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="571"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="574"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="575"/>
+        <location filename="../app/RigPanel.cpp" line="621"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="306"/>
+        <location filename="../app/RigPanel.cpp" line="317"/>
+        <location filename="../app/RigPanel.cpp" line="682"/>
+        <location filename="../app/RigPanel.cpp" line="687"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="651"/>
+        <location filename="../app/RigPanel.cpp" line="317"/>
+        <source>Camera stopped.</source>
+        <translation>攝影機已停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="382"/>
+        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="513"/>
+        <location filename="../app/RigPanel.cpp" line="516"/>
+        <location filename="../app/RigPanel.cpp" line="537"/>
+        <location filename="../app/RigPanel.cpp" line="543"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
+        <location filename="../app/RigPanel.cpp" line="589"/>
+        <location filename="../app/RigPanel.cpp" line="598"/>
+        <location filename="../app/RigPanel.cpp" line="625"/>
+        <source>Rig trial</source>
+        <translation>實驗台試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="408"/>
+        <location filename="../app/RigPanel.cpp" line="412"/>
+        <location filename="../app/RigPanel.cpp" line="1081"/>
+        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <source>Latency</source>
+        <translation>延遲</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="688"/>
+        <source>Camera started: %1</source>
+        <translation>攝影機已啟動：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="707"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="672"/>
-        <location filename="../app/RigPanel.cpp" line="684"/>
+        <location filename="../app/RigPanel.cpp" line="707"/>
+        <location filename="../app/RigPanel.cpp" line="845"/>
+        <location filename="../app/RigPanel.cpp" line="929"/>
+        <source>Link</source>
+        <translation>鏈路</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="728"/>
+        <location filename="../app/RigPanel.cpp" line="740"/>
+        <location filename="../app/RigPanel.cpp" line="749"/>
+        <location filename="../app/RigPanel.cpp" line="756"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="673"/>
+        <location filename="../app/RigPanel.cpp" line="729"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -1745,359 +2163,421 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="694"/>
+        <location filename="../app/RigPanel.cpp" line="750"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="734"/>
+        <location filename="../app/RigPanel.cpp" line="781"/>
+        <source>Link: off</source>
+        <translation>鏈路：關閉</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="781"/>
+        <source>Link: port error</source>
+        <translation>鏈路：連接埠錯誤</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="784"/>
+        <source>Link: %1 failsafe (%2)</source>
+        <translation>鏈路：%1 失效保護（%2）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="788"/>
+        <source>Link: %1 %2/s</source>
+        <translation>鏈路：%1 %2/s</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="793"/>
+        <source>Camera: %1 fps, tracking</source>
+        <translation>攝影機：%1 fps，追蹤中</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="794"/>
+        <source>Camera: %1 fps, no car in view</source>
+        <translation>攝影機：%1 fps，視野內沒有車</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="797"/>
+        <source>Camera: failed</source>
+        <translation>攝影機：失敗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="797"/>
+        <source>Camera: off</source>
+        <translation>攝影機：關閉</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="818"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="737"/>
+        <location filename="../app/RigPanel.cpp" line="821"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="739"/>
+        <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="771"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
+        <source>Link: connected</source>
+        <translation>鏈路：已連接</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="875"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="772"/>
+        <location filename="../app/RigPanel.cpp" line="876"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="773"/>
+        <location filename="../app/RigPanel.cpp" line="877"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="774"/>
+        <location filename="../app/RigPanel.cpp" line="878"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="780"/>
+        <location filename="../app/RigPanel.cpp" line="884"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="781"/>
+        <location filename="../app/RigPanel.cpp" line="885"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="782"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="783"/>
+        <location filename="../app/RigPanel.cpp" line="887"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="784"/>
+        <location filename="../app/RigPanel.cpp" line="888"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="785"/>
+        <location filename="../app/RigPanel.cpp" line="889"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="787"/>
+        <location filename="../app/RigPanel.cpp" line="891"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="789"/>
+        <location filename="../app/RigPanel.cpp" line="893"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="790"/>
+        <location filename="../app/RigPanel.cpp" line="894"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="791"/>
+        <location filename="../app/RigPanel.cpp" line="895"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="792"/>
+        <location filename="../app/RigPanel.cpp" line="896"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="793"/>
+        <location filename="../app/RigPanel.cpp" line="897"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="794"/>
+        <location filename="../app/RigPanel.cpp" line="898"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="795"/>
+        <location filename="../app/RigPanel.cpp" line="899"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="798"/>
+        <location filename="../app/RigPanel.cpp" line="902"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="799"/>
+        <location filename="../app/RigPanel.cpp" line="903"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="800"/>
+        <location filename="../app/RigPanel.cpp" line="904"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="802"/>
+        <location filename="../app/RigPanel.cpp" line="906"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="803"/>
+        <location filename="../app/RigPanel.cpp" line="907"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="804"/>
+        <location filename="../app/RigPanel.cpp" line="908"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="805"/>
+        <location filename="../app/RigPanel.cpp" line="909"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="806"/>
+        <location filename="../app/RigPanel.cpp" line="910"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="807"/>
+        <location filename="../app/RigPanel.cpp" line="911"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="808"/>
+        <location filename="../app/RigPanel.cpp" line="912"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="809"/>
+        <location filename="../app/RigPanel.cpp" line="913"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="810"/>
+        <location filename="../app/RigPanel.cpp" line="914"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="811"/>
+        <location filename="../app/RigPanel.cpp" line="915"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="917"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="815"/>
+        <location filename="../app/RigPanel.cpp" line="919"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="817"/>
+        <location filename="../app/RigPanel.cpp" line="921"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="819"/>
+        <location filename="../app/RigPanel.cpp" line="923"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="820"/>
-        <source>Camera, link, trials</source>
-        <translation>攝影機、連結、試驗</translation>
+        <location filename="../app/RigPanel.cpp" line="928"/>
+        <source>Camera and floor</source>
+        <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="821"/>
+        <location filename="../app/RigPanel.cpp" line="930"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822"/>
+        <location filename="../app/RigPanel.cpp" line="931"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="932"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="935"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="827"/>
+        <location filename="../app/RigPanel.cpp" line="936"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="829"/>
+        <location filename="../app/RigPanel.cpp" line="938"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="939"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="831"/>
+        <location filename="../app/RigPanel.cpp" line="940"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="832"/>
+        <location filename="../app/RigPanel.cpp" line="941"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="836"/>
+        <location filename="../app/RigPanel.cpp" line="945"/>
         <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
         <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="837"/>
+        <location filename="../app/RigPanel.cpp" line="946"/>
         <source>In %1; File &gt; Replay a trial bundle opens one</source>
         <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="948"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="840"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="841"/>
+        <location filename="../app/RigPanel.cpp" line="950"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="842"/>
-        <location filename="../app/RigPanel.cpp" line="844"/>
+        <location filename="../app/RigPanel.cpp" line="951"/>
+        <location filename="../app/RigPanel.cpp" line="953"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843"/>
+        <location filename="../app/RigPanel.cpp" line="952"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="847"/>
+        <location filename="../app/RigPanel.cpp" line="956"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="873"/>
+        <location filename="../app/RigPanel.cpp" line="982"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="878"/>
+        <location filename="../app/RigPanel.cpp" line="982"/>
+        <location filename="../app/RigPanel.cpp" line="987"/>
+        <location filename="../app/RigPanel.cpp" line="1014"/>
+        <location filename="../app/RigPanel.cpp" line="1075"/>
+        <source>Lens</source>
+        <translation>鏡頭</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="987"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="900"/>
+        <location filename="../app/RigPanel.cpp" line="1009"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="905"/>
+        <location filename="../app/RigPanel.cpp" line="1014"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="919"/>
-        <location filename="../app/RigPanel.cpp" line="923"/>
+        <location filename="../app/RigPanel.cpp" line="1028"/>
+        <location filename="../app/RigPanel.cpp" line="1032"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="951"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="957"/>
+        <location filename="../app/RigPanel.cpp" line="1066"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="961"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="972"/>
+        <location filename="../app/RigPanel.cpp" line="1081"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="976"/>
+        <location filename="../app/RigPanel.cpp" line="1085"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1005"/>
+        <location filename="../app/RigPanel.cpp" line="1114"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1008"/>
+        <location filename="../app/RigPanel.cpp" line="1114"/>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
+        <location filename="../app/RigPanel.cpp" line="1120"/>
+        <source>Fence</source>
+        <translation>圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1011"/>
+        <location filename="../app/RigPanel.cpp" line="1120"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -2105,238 +2585,274 @@
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="161"/>
-        <location filename="../app/RunPanel.cpp" line="171"/>
+        <location filename="../app/RunPanel.cpp" line="164"/>
+        <location filename="../app/RunPanel.cpp" line="174"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="162"/>
+        <location filename="../app/RunPanel.cpp" line="165"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="175"/>
+        <location filename="../app/RunPanel.cpp" line="179"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="280"/>
+        <location filename="../app/RunPanel.cpp" line="295"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="324"/>
+        <location filename="../app/RunPanel.cpp" line="348"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="324"/>
+        <location filename="../app/RunPanel.cpp" line="348"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="314"/>
-        <source>E-STOP engaged: the run is stopped. Reset E-STOP to run again.</source>
-        <translation>緊急停止已啟動：運行已停止。重設緊急停止後才可再次運行。</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="233"/>
+        <location filename="../app/RunPanel.cpp" line="241"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="316"/>
+        <location filename="../app/RunPanel.cpp" line="335"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="318"/>
-        <source>E-STOP reset: ready to run.</source>
-        <translation>緊急停止已重設：可以運行。</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="326"/>
+        <location filename="../app/RunPanel.cpp" line="350"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="343"/>
+        <location filename="../app/RunPanel.cpp" line="367"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="347"/>
+        <location filename="../app/RunPanel.cpp" line="371"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="360"/>
+        <location filename="../app/RunPanel.cpp" line="393"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="388"/>
+        <location filename="../app/RunPanel.cpp" line="421"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="389"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="390"/>
+        <location filename="../app/RunPanel.cpp" line="423"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="392"/>
+        <location filename="../app/RunPanel.cpp" line="425"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="427"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="396"/>
+        <location filename="../app/RunPanel.cpp" line="429"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="431"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="400"/>
+        <location filename="../app/RunPanel.cpp" line="433"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="402"/>
+        <location filename="../app/RunPanel.cpp" line="435"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="436"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="437"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="438"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="415"/>
+        <location filename="../app/RunPanel.cpp" line="448"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="323"/>
+        <location filename="../app/RunPanel.cpp" line="347"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="325"/>
+        <location filename="../app/RunPanel.cpp" line="178"/>
+        <location filename="../app/RunPanel.cpp" line="240"/>
+        <location filename="../app/RunPanel.cpp" line="282"/>
+        <location filename="../app/RunPanel.cpp" line="330"/>
+        <location filename="../app/RunPanel.cpp" line="335"/>
+        <location filename="../app/RunPanel.cpp" line="338"/>
+        <location filename="../app/RunPanel.cpp" line="378"/>
+        <source>Run</source>
+        <translation>運行</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="283"/>
+        <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
+        <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="331"/>
+        <source>E-STOP engaged at %1: the run is stopped. Reset E-STOP to run again.</source>
+        <translation>E-STOP 於 %1 啟動：運行已停止。重設 E-STOP 後才可再運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="339"/>
+        <source>E-STOP was engaged at %1 and stopped the run; it is reset now: ready to run.</source>
+        <translation>E-STOP 曾於 %1 啟動並停止了運行；現已重設：可以運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="349"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="377"/>
+        <source>tracking RMS %1 m</source>
+        <translation>追蹤 RMS %1 m</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="379"/>
+        <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
+        <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="384"/>
+        <source>Trial %1: %2</source>
+        <translation>試驗 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="385"/>
+        <source> (stopped part-way)</source>
+        <translation>（中途停止）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="440"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="409"/>
+        <location filename="../app/RunPanel.cpp" line="442"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="412"/>
+        <location filename="../app/RunPanel.cpp" line="445"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="413"/>
+        <location filename="../app/RunPanel.cpp" line="446"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="417"/>
+        <location filename="../app/RunPanel.cpp" line="450"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="418"/>
+        <location filename="../app/RunPanel.cpp" line="451"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="419"/>
+        <location filename="../app/RunPanel.cpp" line="452"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="421"/>
+        <location filename="../app/RunPanel.cpp" line="454"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="455"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="425"/>
+        <location filename="../app/RunPanel.cpp" line="458"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="425"/>
+        <location filename="../app/RunPanel.cpp" line="458"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="425"/>
+        <location filename="../app/RunPanel.cpp" line="458"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="426"/>
+        <location filename="../app/RunPanel.cpp" line="459"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="426"/>
+        <location filename="../app/RunPanel.cpp" line="459"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="428"/>
+        <location filename="../app/RunPanel.cpp" line="461"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="428"/>
+        <location filename="../app/RunPanel.cpp" line="461"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="429"/>
+        <location filename="../app/RunPanel.cpp" line="462"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="429"/>
+        <location filename="../app/RunPanel.cpp" line="462"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -2382,14 +2898,14 @@
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="181"/>
-        <location filename="../app/TaskPanel.cpp" line="188"/>
-        <location filename="../app/TaskPanel.cpp" line="241"/>
+        <location filename="../app/TaskPanel.cpp" line="183"/>
+        <location filename="../app/TaskPanel.cpp" line="190"/>
+        <location filename="../app/TaskPanel.cpp" line="243"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="182"/>
+        <location filename="../app/TaskPanel.cpp" line="184"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -2398,156 +2914,156 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="189"/>
-        <location filename="../app/TaskPanel.cpp" line="209"/>
+        <location filename="../app/TaskPanel.cpp" line="191"/>
+        <location filename="../app/TaskPanel.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="242"/>
+        <location filename="../app/TaskPanel.cpp" line="244"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="250"/>
-        <location filename="../app/TaskPanel.cpp" line="257"/>
+        <location filename="../app/TaskPanel.cpp" line="252"/>
+        <location filename="../app/TaskPanel.cpp" line="259"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="251"/>
+        <location filename="../app/TaskPanel.cpp" line="253"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="172"/>
+        <location filename="../app/TaskPanel.cpp" line="174"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="119"/>
+        <location filename="../app/TaskPanel.cpp" line="121"/>
         <source>figure-eight</source>
         <translation>8 字形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="119"/>
+        <location filename="../app/TaskPanel.cpp" line="121"/>
         <source>s-turn</source>
         <translation>S 形轉彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="120"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>u-turn</source>
         <translation>掉頭</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="120"/>
+        <location filename="../app/TaskPanel.cpp" line="122"/>
         <source>s-bend</source>
         <translation>S 形彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>stick</source>
         <translation>搖桿</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>keyboard</source>
         <translation>鍵盤</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>standstill</source>
         <translation>靜止起步</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>fast</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>slow</source>
         <translation>慢速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>blip</source>
         <translation>點油</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>jitter</source>
         <translation>抖動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="123"/>
+        <location filename="../app/TaskPanel.cpp" line="125"/>
         <source>coast</source>
         <translation>滑行</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>left</source>
         <translation>左</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>right</source>
         <translation>右</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>swing</source>
         <translation>擺動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>medium</source>
         <translation>中</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>small</source>
         <translation>小</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>large</source>
         <translation>大</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>circle</source>
         <translation>圓形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>wide</source>
         <translation>寬</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>dock</source>
         <translation>泊位</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>spin</source>
         <translation>原地轉</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="144"/>
+        <location filename="../app/TaskPanel.cpp" line="146"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="200"/>
-        <location filename="../app/TaskPanel.cpp" line="208"/>
-        <location filename="../app/TaskPanel.cpp" line="219"/>
+        <location filename="../app/TaskPanel.cpp" line="202"/>
+        <location filename="../app/TaskPanel.cpp" line="210"/>
+        <location filename="../app/TaskPanel.cpp" line="221"/>
         <source>Open plant file</source>
         <translation>開啟機型檔</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="201"/>
+        <location filename="../app/TaskPanel.cpp" line="203"/>
         <source>The plant file could not be used.
 
 %1</source>
@@ -2556,102 +3072,102 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="220"/>
+        <location filename="../app/TaskPanel.cpp" line="222"/>
         <source>Plant files (*.json);;All files (*)</source>
         <translation>機型檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="230"/>
+        <location filename="../app/TaskPanel.cpp" line="232"/>
         <source>the catalog&apos;s</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="270"/>
+        <location filename="../app/TaskPanel.cpp" line="272"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="274"/>
+        <location filename="../app/TaskPanel.cpp" line="276"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="289"/>
+        <location filename="../app/TaskPanel.cpp" line="291"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="300"/>
+        <location filename="../app/TaskPanel.cpp" line="302"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="301"/>
+        <location filename="../app/TaskPanel.cpp" line="303"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="302"/>
+        <location filename="../app/TaskPanel.cpp" line="304"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="303"/>
+        <location filename="../app/TaskPanel.cpp" line="305"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="304"/>
+        <location filename="../app/TaskPanel.cpp" line="306"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="306"/>
+        <location filename="../app/TaskPanel.cpp" line="308"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="308"/>
+        <location filename="../app/TaskPanel.cpp" line="310"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="309"/>
+        <location filename="../app/TaskPanel.cpp" line="311"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="310"/>
+        <location filename="../app/TaskPanel.cpp" line="312"/>
         <source>Physical parameters:</source>
         <translation>物理參數：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="311"/>
+        <location filename="../app/TaskPanel.cpp" line="313"/>
         <source>Load...</source>
         <translation>載入...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="313"/>
+        <location filename="../app/TaskPanel.cpp" line="315"/>
         <source>Load a plant file: the car&apos;s mass, wheelbase, grip, motor, steering and servo (prisca-cli plant --plant NAME --print-params --format json writes one to edit)</source>
         <translation>載入機型檔：車的質量、軸距、抓地力、馬達、轉向及伺服器（prisca-cli plant --plant NAME --print-params --format json 可寫出一份供編輯）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="315"/>
+        <location filename="../app/TaskPanel.cpp" line="317"/>
         <source>Catalog</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="316"/>
+        <location filename="../app/TaskPanel.cpp" line="318"/>
         <source>Go back to the catalog&apos;s plant</source>
         <translation>回到目錄預設的機型</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="318"/>
+        <location filename="../app/TaskPanel.cpp" line="320"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="320"/>
+        <location filename="../app/TaskPanel.cpp" line="322"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>

@@ -1,5 +1,7 @@
 #include "app/figures/PaperFigures.h"
 
+#include <QCoreApplication>
+
 #include "core/Table1Report.h"
 #include "sim/MethodCatalog.h"
 
@@ -33,7 +35,7 @@ plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, do
     plot::Figure figure;
     figure.size = QSize(1500, 1000);
     figure.title =
-        QStringLiteral("Slide parking: every trial's path and end posture (lot dashed red)");
+        QCoreApplication::translate("PaperFigures", "Slide parking: every trial's path and end posture (lot dashed red)");
     const QStringList shown = {"playback", "pd", "prisca"};
     const QColor colours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e),
                               QColor(0x2c, 0xa0, 0x2c)};
@@ -48,10 +50,10 @@ plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, do
             continue;
         plot::Axes whole, close;
         whole.title = sim::MethodCatalog::get(shown[i]).label;
-        close.title = sim::MethodCatalog::get(shown[i]).label + QStringLiteral(": close-up of the lot");
+        close.title = sim::MethodCatalog::get(shown[i]).label + QCoreApplication::translate("PaperFigures", ": close-up of the lot");
         for (plot::Axes* axes : {&whole, &close}) {
-            axes->xLabel = QStringLiteral("x [cm]");
-            axes->yLabel = QStringLiteral("y [cm]");
+            axes->xLabel = QCoreApplication::translate("PaperFigures", "x [cm]");
+            axes->yLabel = QCoreApplication::translate("PaperFigures", "y [cm]");
             axes->equalAspect = true;
             axes->legend = false;
         }
@@ -94,8 +96,8 @@ plot::Figure learningCurveFigure(const std::vector<QString>& methods,
                                  const QString& yLabel) {
     plot::Figure figure;
     plot::Axes axes;
-    axes.title = QStringLiteral("Learning curves: mean and 95% band");
-    axes.xLabel = QStringLiteral("simulated experience [s]");
+    axes.title = QCoreApplication::translate("PaperFigures", "Learning curves: mean and 95% band");
+    axes.xLabel = QCoreApplication::translate("PaperFigures", "simulated experience [s]");
     axes.yLabel = yLabel;
     axes.logY = true;
     for (size_t m = 0; m < methods.size(); ++m) {
@@ -122,7 +124,7 @@ plot::Figure lemma41Figure(const std::vector<core::Lemma41Cell>& grid, int maxHo
     plot::Figure figure;
     figure.size = QSize(1000, 800);
     plot::Axes axes;
-    axes.title = QStringLiteral("Lemma 4.1: Var(D) over \u03c4' = 2H steps");
+    axes.title = QCoreApplication::translate("PaperFigures", "Lemma 4.1: Var(D) over \u03c4' = 2H steps");
     axes.xLabel = QStringLiteral("\u03b3");
     axes.yLabel = QStringLiteral("H [steps]");
     plot::Heatmap map;
@@ -156,13 +158,13 @@ plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
             }
             return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
         };
-        axes.title = QStringLiteral("%1: RMS %2 m in time, %3 m to the path (mean of %4)")
+        axes.title = QCoreApplication::translate("PaperFigures", "%1: RMS %2 m in time, %3 m to the path (mean of %4)")
                          .arg(sim::MethodCatalog::get(panel.method).label)
                          .arg(mean(panel.rms), 0, 'f', 2)
                          .arg(mean(panel.pathRms), 0, 'f', 2)
                          .arg(panel.rms.size());
-        axes.xLabel = QStringLiteral("x [m]");
-        axes.yLabel = QStringLiteral("y [m]");
+        axes.xLabel = QCoreApplication::translate("PaperFigures", "x [m]");
+        axes.yLabel = QCoreApplication::translate("PaperFigures", "y [m]");
         axes.equalAspect = true;
         plot::Line target;
         target.label = QStringLiteral("desired");

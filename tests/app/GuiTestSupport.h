@@ -92,6 +92,27 @@ inline QString answerMessageBox(QObject* context, const std::function<void()>& t
     return text;
 }
 
+// Presses the button named `button` ("quitFinish", "quitKeep", "quitDiscard", "quitCancel") of
+// the quit question while `trigger` runs; returns the question's text (empty: none was asked).
+inline QString answerQuitQuestion(QObject* context, const char* button,
+                                  const std::function<void()>& trigger) {
+    QString text;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, context, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (box && box->objectName() == QLatin1String("quitQuestion")) {
+            text = box->text();
+            if (auto* b = box->findChild<QAbstractButton*>(QLatin1String(button))) {
+                b->click();
+            }
+        }
+    });
+    poll.start(20);
+    trigger();
+    poll.stop();
+    return text;
+}
+
 // Answers the next file dialog with `path` while `trigger` runs.
 inline void answerFileDialog(QObject* context, const QString& path, const std::function<void()>& trigger) {
     QTimer poll;

@@ -171,7 +171,12 @@ class TestGuiRig : public QObject {
             QVERIFY(rig->startDriving());
             QTRY_VERIFY_WITH_TIMEOUT(rig->recordedSeconds() >= 0.4, 30000);
             QVERIFY(rig->isDriving());
-            QVERIFY(w.window.close());
+            // Closing asks first; "discard" quits at once, the recording still running.
+            bool closed = false;
+            const QString asked = answerQuitQuestion(&w.window, "quitDiscard",
+                                                     [&] { closed = w.window.close(); });
+            QVERIFY2(asked.contains(QStringLiteral("recording")), qPrintable(asked));
+            QVERIFY(closed);
         }  // the window, its session and the panel go while the recording runs: no crash
         const QDir folder(RecordPanel::recordingsFolder());
         const QStringList files =
