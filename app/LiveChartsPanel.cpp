@@ -21,6 +21,9 @@
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTimer>
+#include <QLegendMarker>
+#include <QMouseEvent>
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <QValueAxis>
 
@@ -177,6 +180,8 @@ QChartView* LiveChartsPanel::makeView(QChart* chart) {
     view->setRenderHint(QPainter::Antialiasing);
     view->setRubberBand(QChartView::RectangleRubberBand);
     view->setMinimumHeight(160);
+    view->viewport()->setMouseTracking(true);
+    view->viewport()->installEventFilter(this);  // the hover readout
     // A zoom by the operator means "hold this view": live redraws stop moving the axes.
     auto* axis = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).first());
     connect(axis, &QValueAxis::rangeChanged, this, [this] {
@@ -233,6 +238,8 @@ void LiveChartsPanel::setPlant(const sim::PlantInfo& info, int parameterCount) {
 void LiveChartsPanel::clear() {
     error_.clear();
     smooth_.clear();
+    trial_.clear();
+    trialStarts_.clear();
     theta_ = QVector<QVector<QPointF>>(thetaSeries_.size());
     action_ = QVector<QVector<QPointF>>(actionSeries_.size());
     reference_ = QVector<QVector<QPointF>>(referenceSeries_.size());
@@ -247,6 +254,10 @@ void LiveChartsPanel::addSamples(const QVector<LiveSample>& samples) {
         const double dt = error_.isEmpty() ? 0.0 : std::max(0.0, t - error_.back().x());
         const double a = error_.isEmpty() ? 1.0 : 1.0 - std::exp(-dt / kSmoothingSeconds);
         smoothed_ += a * (s.trackedError - smoothed_);
+        if (!trial_.isEmpty() && s.trial != trial_.back()) {
+            trialStarts_.push_back(t);
+        }
+        trial_.push_back(s.trial);
         error_.push_back({t, s.trackedError});
         smooth_.push_back({t, smoothed_});
         for (int i = 0; i < theta_.size() && i < s.theta.size(); ++i) {
@@ -301,8 +312,12 @@ void LiveChartsPanel::redraw() {
         }
     };
     const int tab = tabs_->currentIndex();
+    if (boundarySeries_.size() != 3) {
+        boundarySeries_.resize(3);
+    }
     if (tab == 0 || forceAll_) {
         update(errorChart_, {errorSeries_, smoothSeries_}, {&error_, &smooth_});
+        drawTrialBoundaries(errorChart_, boundarySeries_[0]);
     }
     if (tab == 1 || forceAll_) {
         QVector<const QVector<QPointF>*> data;
@@ -310,6 +325,7 @@ void LiveChartsPanel::redraw() {
             data.push_back(&d);
         }
         update(thetaChart_, thetaSeries_, data);
+        drawTrialBoundaries(thetaChart_, boundarySeries_[1]);
     }
     if (tab == 2 || forceAll_) {
         QVector<QLineSeries*> series;
@@ -319,8 +335,94 @@ void LiveChartsPanel::redraw() {
             data << &action_[l] << &reference_[l];
         }
         update(actionChart_, series, data);
+        drawTrialBoundaries(actionChart_, boundarySeries_[2]);
     }
     fitting_ = false;
+}
+
+void LiveChartsPanel::drawTrialBoundaries(QChart* chart, QVector<QLineSeries*>& lines) {
+    // A grey dashed line where each later trial began, across the chart's value range; not
+    // in the legend, and not counted when the axes are fitted (they span what is shown).
+    auto* vertical = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).first());
+    const double y0 = vertical->min(), y1 = vertical->max();
+    while (lines.size() < trialStarts_.size()) {
+        auto* line = new QLineSeries;
+        line->setPen(QPen(QColor(0x80, 0x80, 0x80), 1, Qt::DashLine));
+        chart->addSeries(line);
+        attachAxes(chart, line);
+        for (QLegendMarker* marker : chart->legend()->markers(line)) {
+            marker->setVisible(false);
+        }
+        lines.push_back(line);
+    }
+    for (int i = 0; i < lines.size(); ++i) {
+        if (i < trialStarts_.size()) {
+            lines[i]->replace(QList<QPointF>{{trialStarts_[i], y0}, {trialStarts_[i], y1}});
+        } else {
+            lines[i]->clear();
+        }
+    }
+}
+
+QString LiveChartsPanel::readoutAt(double t) const {
+    if (error_.isEmpty()) {
+        return QString();
+    }
+    // The sample at or just before t.
+    auto it = std::upper_bound(error_.begin(), error_.end(), t,
+                               [](double value, const QPointF& p) { return value < p.x(); });
+    const int k = static_cast<int>(std::max<qsizetype>(0, (it - error_.begin()) - 1));
+    const QString unit = info_.pose ? QStringLiteral("m") : QStringLiteral("rad");
+    QStringList lines;
+    lines << tr("Trial %1, run time %2 s").arg(trial_.value(k) + 1).arg(error_[k].x(), 0, 'f', 2);
+    switch (tabs_->currentIndex()) {
+    case 0:
+        lines << tr("error %1 %2, smoothed %3 %2")
+                     .arg(error_[k].y(), 0, 'g', 4)
+                     .arg(unit)
+                     .arg(smooth_[k].y(), 0, 'g', 4);
+        break;
+    case 1:
+        for (int i = 0; i < theta_.size(); ++i) {
+            if (k < theta_[i].size()) {
+                lines << QStringLiteral("θ%1 = %2").arg(i).arg(theta_[i][k].y(), 0, 'g', 4);
+            }
+        }
+        break;
+    default:
+        for (int l = 0; l < action_.size(); ++l) {
+            if (k < action_[l].size()) {
+                lines << tr("%1: u %2, u* %3 %4")
+                             .arg(info_.actionNames.value(l))
+                             .arg(action_[l][k].y(), 0, 'g', 4)
+                             .arg(reference_[l][k].y(), 0, 'g', 4)
+                             .arg(info_.actionUnits.value(l));
+            }
+        }
+        break;
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+bool LiveChartsPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::MouseMove) {
+        for (QChartView* view : {errorView_, thetaView_, actionView_}) {
+            if (watched != view->viewport()) {
+                continue;
+            }
+            const auto* move = static_cast<QMouseEvent*>(event);
+            QChart* chart = view->chart();
+            const QPointF scene = view->mapToScene(move->position().toPoint());
+            const QPointF inChart = chart->mapFromScene(scene);
+            if (chart->plotArea().contains(inChart)) {
+                const QString text = readoutAt(chart->mapToValue(inChart).x());
+                QToolTip::showText(move->globalPosition().toPoint(), text, view->viewport());
+            } else {
+                QToolTip::hideText();
+            }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
@@ -328,7 +430,20 @@ bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
     if (!caption_.isEmpty()) {
         text += "# " + caption_.toUtf8() + '\n';
     }
-    text += "t,error,error_smoothed";
+    // The run log's layout: a "# units:" line, then the columns, the trial first.
+    const QString errorUnit = info_.pose ? QStringLiteral("m") : QStringLiteral("rad");
+    QStringList units = {QStringLiteral("1"), QStringLiteral("s"), errorUnit, errorUnit};
+    for (int i = 0; i < theta_.size(); ++i) {
+        units << QStringLiteral("1");
+    }
+    for (int twice = 0; twice < 2; ++twice) {
+        for (int l = 0; l < action_.size(); ++l) {
+            const QString unit = info_.actionUnits.value(l);
+            units << (unit.isEmpty() ? QStringLiteral("1") : unit);
+        }
+    }
+    text += "# units: " + units.join(QLatin1Char(',')).toUtf8() + '\n';
+    text += "trial,t,error,error_smoothed";
     for (int i = 0; i < theta_.size(); ++i) {
         text += ",theta_" + QByteArray::number(i);
     }
@@ -340,7 +455,7 @@ bool LiveChartsPanel::exportCsv(const QString& path, QString* error) const {
     }
     text += '\n';
     for (int k = 0; k < error_.size(); ++k) {
-        QByteArray line;
+        QByteArray line = QByteArray::number(trial_.value(k)) + ',';  // 0-based, as the run log
         core::appendCsvNumber(line, error_[k].x());
         line += ',';
         core::appendCsvNumber(line, error_[k].y());

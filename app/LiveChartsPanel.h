@@ -46,7 +46,12 @@ class LiveChartsPanel : public QWidget {
     /// Points the tracking-error chart shows after decimation (tests).
     int drawnPoints() const;
 
-    /// Writes every buffered sample as CSV (time, error, smoothed error, theta..., u..., u*...).
+    /// Run times [s] at which a trial after the first began (drawn as dashed lines).
+    const QVector<double>& trialStarts() const { return trialStarts_; }
+    /// What the hover readout says at run time t [s] on the chart on show (empty: no data).
+    QString readoutAt(double t) const;
+    /// Writes every buffered sample as CSV (trial, time, error, smoothed error, theta..., u...,
+    /// u*...) with a "# units:" line.
     /// On failure returns false and sets *error.
     bool exportCsv(const QString& path, QString* error) const;
     /// Renders the three charts into one PNG. On failure returns false and sets *error.
@@ -54,6 +59,8 @@ class LiveChartsPanel : public QWidget {
 
   protected:
     void changeEvent(QEvent* event) override;
+    /// The hover readout: the mouse over a chart shows the values at that run time.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     QString caption_;
@@ -83,6 +90,10 @@ class LiveChartsPanel : public QWidget {
     QTimer* redrawTimer_;
     // Buffers (GUI thread only).
     QVector<QPointF> error_, smooth_;
+    QVector<int> trial_;            ///< each buffered sample's trial (0-based)
+    QVector<double> trialStarts_;   ///< run times where a later trial began
+    QVector<QVector<QLineSeries*>> boundarySeries_;  ///< per chart, one dashed line per boundary
+    void drawTrialBoundaries(QChart* chart, QVector<QLineSeries*>& lines);
     QVector<QVector<QPointF>> theta_, action_, reference_;
     double smoothed_ = 0.0;
     bool zoomed_ = false;
