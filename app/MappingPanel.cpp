@@ -160,7 +160,14 @@ void MappingPanel::showFit() {
     result_->clear();
     result_->setColumnCount(n);
     result_->setRowCount(m + 3);
-    result_->setHorizontalHeaderLabels(info.stateNames);
+    // Each state with its unit (B's entries, the residual RMS and the set-aside share are per
+    // state), each cell as wide as its number: nothing elided to "0.0...".
+    QStringList columns;
+    for (int i = 0; i < n; ++i) {
+        columns << QStringLiteral("%1 [%2]").arg(info.stateNames[i], info.stateUnits.value(i));
+    }
+    result_->setHorizontalHeaderLabels(columns);
+    result_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     QStringList rows = info.actionNames;
     rows << tr("R²") << tr("residual RMS") << tr("set aside");
     result_->setVerticalHeaderLabels(rows);
@@ -193,7 +200,21 @@ void MappingPanel::showFit() {
     resultLabel_->setText(tr("Fit on %1 samples:").arg(f.samples));
     warnings_->clear();
     warnings_->addItems(f.warnings);
-    warnings_->setVisible(!f.warnings.isEmpty());
+    // A negative R² is not a typo: the fit predicts that state's change worse than its mean.
+    QStringList below;
+    for (int i = 0; i < f.rSquared.size() && i < n; ++i) {
+        if (f.rSquared[i] < 0.0) {
+            below << info.stateNames[i];
+        }
+    }
+    if (!below.isEmpty()) {
+        warnings_->addItem(tr("R² below zero for %1: the fit predicts the change of that state "
+                              "worse than its average does. Check those columns' signs in B~ "
+                              "and the latency; a state the controls barely move can also "
+                              "give it.")
+                               .arg(below.join(QStringLiteral(", "))));
+    }
+    warnings_->setVisible(warnings_->count() > 0);
 }
 
 void MappingPanel::changeEvent(QEvent* event) {

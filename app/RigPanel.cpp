@@ -345,8 +345,16 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             clicked_.clear();
             drawFence_->setChecked(false);
         }
-        view_->setClickHint(QString());
+        // What to do, on the image itself and on the panel.
+        view_->setClickHint(on ? tr("Floor calibration: click a point of known floor position") : QString());
         view_->setCalibrating(on);
+        if (on) {
+            showStatus(calibrationInfo_, tr("Floor calibration"), [this] {
+                return tr("Calibrating: click a mark on the camera image whose floor position you "
+                          "know, then type it (x, y in metres). Four or more marks spread over "
+                          "the floor; the fit updates with each. Click Calibrate again when done.");
+            });
+        }
     });
     connect(drawFence_, &QPushButton::toggled, this, [this](bool on) {
         if (on) {
@@ -479,6 +487,20 @@ RigPanel::~RigPanel() {
     disconnect(&rig_, nullptr, this, nullptr);
 }
 
+bool RigPanel::virtualCalibrationOnRealCamera() const {
+    // The rig starts with the synthetic camera's calibration: right for the virtual rig, wrong
+    // for any real camera until the operator calibrates it or opens its calibration.
+    const auto source = static_cast<Source>(source_->currentData().toInt());
+    return source != Source::Virtual &&
+           rig_.calibration().toJson() == devices::syntheticCeilingCamera().toJson();
+}
+
+QString RigPanel::virtualCalibrationWarning() {
+    return tr("The floor calibration is the virtual rig's, not this camera's: calibrate this "
+              "camera (Calibrate, then click four or more floor points) or open its "
+              "calibration before driving or a trial.");
+}
+
 bool RigPanel::runTrial() {
     if (isRunning()) {
         return false;
@@ -487,6 +509,8 @@ bool RigPanel::runTrial() {
     const sim::MethodTuning& profile = session_.profile();
     if (const QString rig = rig_.notReady(); !rig.isEmpty()) {
         missing = rig;  // the camera or the link
+    } else if (virtualCalibrationOnRealCamera()) {
+        missing = virtualCalibrationWarning();
     } else if (profile.info.name != QLatin1String("slidecar")) {
         // The rig's state estimator gives the slide-car's state; any other target's
         // demonstration and controller would be read against the wrong quantities.
@@ -524,6 +548,10 @@ const Eigen::VectorXd& RigPanel::drivingInput() const {
 
 bool RigPanel::startDriving() {
     if (drivingActive_ || isRunning()) {
+        return false;
+    }
+    if (virtualCalibrationOnRealCamera()) {
+        showStatus(trialInfo_, tr("Rig trial"), virtualCalibrationWarning(), MessageLevel::Warning);
         return false;
     }
     const sim::PlantInfo& info = session_.profile().info;
@@ -684,6 +712,10 @@ void RigPanel::startCamera() {
         return;
     }
     cameraFailed_ = false;
+    if (virtualCalibrationOnRealCamera()) {
+        showStatus(calibrationInfo_, tr("Floor calibration"), virtualCalibrationWarning(),
+                   MessageLevel::Warning);
+    }
     showStatus(cameraInfo_, tr("Camera"),
                tr("Camera started: %1").arg(source_->currentText() +
                                             (source == Source::Virtual

@@ -152,6 +152,9 @@ class RigPanel : public QWidget {
     void applyFence();
     static QString defaultBundleFolder();
     void showLensInfo();
+    /// A real camera (a device or a video) with the virtual rig's calibration still in place.
+    bool virtualCalibrationOnRealCamera() const;
+    static QString virtualCalibrationWarning();
 
     LabSession& session_;
     rig::RigSession rig_;

@@ -995,109 +995,124 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="411"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="377"/>
+        <source>Trial %1, run time %2 s</source>
+        <translation>試驗 %1，運行時間 %2 s</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="380"/>
+        <source>error %1 %2, smoothed %3 %2</source>
+        <translation>誤差 %1 %2，平滑後 %3 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
+        <source>%1: u %2, u* %3 %4</source>
+        <translation>%1：u %2，u* %3 %4</translation>
+    </message>
+    <message>
+        <location filename="../app/LiveChartsPanel.cpp" line="526"/>
         <source>cannot encode the picture for %1</source>
         <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="434"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="439"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="549"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="554"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="435"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="550"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="445"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="450"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="560"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="565"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="446"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="561"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="463"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="578"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="464"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="579"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="465"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="580"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="466"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="581"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="467"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="470"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="472"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="474"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="475"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="590"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="476"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="477"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="592"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="478"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="479"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="480"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="481"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1111,17 +1126,17 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="139"/>
-        <location filename="../app/MainWindow.cpp" line="668"/>
-        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="669"/>
+        <location filename="../app/MainWindow.cpp" line="675"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="142"/>
-        <location filename="../app/MainWindow.cpp" line="595"/>
-        <location filename="../app/MainWindow.cpp" line="603"/>
-        <location filename="../app/MainWindow.cpp" line="605"/>
-        <location filename="../app/MainWindow.cpp" line="619"/>
+        <location filename="../app/MainWindow.cpp" line="596"/>
+        <location filename="../app/MainWindow.cpp" line="604"/>
+        <location filename="../app/MainWindow.cpp" line="606"/>
+        <location filename="../app/MainWindow.cpp" line="620"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
@@ -1132,101 +1147,101 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="382"/>
-        <location filename="../app/MainWindow.cpp" line="471"/>
-        <location filename="../app/MainWindow.cpp" line="475"/>
+        <location filename="../app/MainWindow.cpp" line="472"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
         <source>E-STOP LATCHED</source>
         <translation>E-STOP 已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="431"/>
+        <location filename="../app/MainWindow.cpp" line="432"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="434"/>
+        <location filename="../app/MainWindow.cpp" line="435"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="437"/>
+        <location filename="../app/MainWindow.cpp" line="438"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="445"/>
+        <location filename="../app/MainWindow.cpp" line="446"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="448"/>
+        <location filename="../app/MainWindow.cpp" line="449"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="451"/>
+        <location filename="../app/MainWindow.cpp" line="452"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="454"/>
+        <location filename="../app/MainWindow.cpp" line="455"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="457"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="460"/>
+        <location filename="../app/MainWindow.cpp" line="461"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="471"/>
+        <location filename="../app/MainWindow.cpp" line="472"/>
         <source>E-STOP ready</source>
         <translation>E-STOP 就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="504"/>
-        <location filename="../app/MainWindow.cpp" line="587"/>
+        <location filename="../app/MainWindow.cpp" line="505"/>
+        <location filename="../app/MainWindow.cpp" line="588"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="505"/>
+        <location filename="../app/MainWindow.cpp" line="506"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
-        <location filename="../app/MainWindow.cpp" line="614"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="615"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="518"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="530"/>
-        <location filename="../app/MainWindow.cpp" line="911"/>
+        <location filename="../app/MainWindow.cpp" line="531"/>
+        <location filename="../app/MainWindow.cpp" line="912"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="554"/>
+        <location filename="../app/MainWindow.cpp" line="555"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="554"/>
+        <location filename="../app/MainWindow.cpp" line="555"/>
         <source>E-STOP</source>
         <translation>E-STOP</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="588"/>
+        <location filename="../app/MainWindow.cpp" line="589"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1235,202 +1250,202 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="596"/>
+        <location filename="../app/MainWindow.cpp" line="597"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="603"/>
+        <location filename="../app/MainWindow.cpp" line="604"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="605"/>
+        <location filename="../app/MainWindow.cpp" line="606"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="619"/>
+        <location filename="../app/MainWindow.cpp" line="620"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="660"/>
+        <location filename="../app/MainWindow.cpp" line="661"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="661"/>
+        <location filename="../app/MainWindow.cpp" line="662"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="662"/>
+        <location filename="../app/MainWindow.cpp" line="663"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="663"/>
+        <location filename="../app/MainWindow.cpp" line="664"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="664"/>
+        <location filename="../app/MainWindow.cpp" line="665"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="665"/>
+        <location filename="../app/MainWindow.cpp" line="666"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="666"/>
+        <location filename="../app/MainWindow.cpp" line="667"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="667"/>
+        <location filename="../app/MainWindow.cpp" line="668"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="669"/>
+        <location filename="../app/MainWindow.cpp" line="670"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="670"/>
+        <location filename="../app/MainWindow.cpp" line="671"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="671"/>
+        <location filename="../app/MainWindow.cpp" line="672"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="672"/>
+        <location filename="../app/MainWindow.cpp" line="673"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="673"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="675"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="678"/>
+        <location filename="../app/MainWindow.cpp" line="679"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="679"/>
+        <location filename="../app/MainWindow.cpp" line="680"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="680"/>
+        <location filename="../app/MainWindow.cpp" line="681"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="681"/>
+        <location filename="../app/MainWindow.cpp" line="682"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="682"/>
+        <location filename="../app/MainWindow.cpp" line="683"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="684"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="686"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="695"/>
+        <location filename="../app/MainWindow.cpp" line="696"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="698"/>
+        <location filename="../app/MainWindow.cpp" line="699"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="703"/>
+        <location filename="../app/MainWindow.cpp" line="704"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="706"/>
+        <location filename="../app/MainWindow.cpp" line="707"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="709"/>
+        <location filename="../app/MainWindow.cpp" line="710"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="731"/>
-        <location filename="../app/MainWindow.cpp" line="751"/>
-        <location filename="../app/MainWindow.cpp" line="753"/>
-        <location filename="../app/MainWindow.cpp" line="760"/>
-        <location filename="../app/MainWindow.cpp" line="763"/>
-        <location filename="../app/MainWindow.cpp" line="795"/>
+        <location filename="../app/MainWindow.cpp" line="732"/>
+        <location filename="../app/MainWindow.cpp" line="752"/>
+        <location filename="../app/MainWindow.cpp" line="754"/>
+        <location filename="../app/MainWindow.cpp" line="761"/>
+        <location filename="../app/MainWindow.cpp" line="764"/>
+        <location filename="../app/MainWindow.cpp" line="796"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="732"/>
+        <location filename="../app/MainWindow.cpp" line="733"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="733"/>
+        <location filename="../app/MainWindow.cpp" line="734"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="751"/>
+        <location filename="../app/MainWindow.cpp" line="752"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="761"/>
+        <location filename="../app/MainWindow.cpp" line="762"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="774"/>
+        <location filename="../app/MainWindow.cpp" line="775"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="775"/>
+        <location filename="../app/MainWindow.cpp" line="776"/>
         <source>Work is under way:
 
 %1
@@ -1443,98 +1458,98 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="780"/>
+        <location filename="../app/MainWindow.cpp" line="781"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="782"/>
+        <location filename="../app/MainWindow.cpp" line="783"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="783"/>
+        <location filename="../app/MainWindow.cpp" line="784"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="785"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="795"/>
+        <location filename="../app/MainWindow.cpp" line="796"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="825"/>
+        <location filename="../app/MainWindow.cpp" line="826"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="825"/>
+        <location filename="../app/MainWindow.cpp" line="826"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="837"/>
+        <location filename="../app/MainWindow.cpp" line="838"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="839"/>
+        <location filename="../app/MainWindow.cpp" line="840"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="843"/>
+        <location filename="../app/MainWindow.cpp" line="844"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="846"/>
+        <location filename="../app/MainWindow.cpp" line="847"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="862"/>
+        <location filename="../app/MainWindow.cpp" line="863"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="862"/>
+        <location filename="../app/MainWindow.cpp" line="863"/>
         <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
         <translation>E-STOP，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="868"/>
+        <location filename="../app/MainWindow.cpp" line="869"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="869"/>
+        <location filename="../app/MainWindow.cpp" line="870"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="871"/>
+        <location filename="../app/MainWindow.cpp" line="872"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="878"/>
+        <location filename="../app/MainWindow.cpp" line="879"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="887"/>
-        <location filename="../app/MainWindow.cpp" line="893"/>
+        <location filename="../app/MainWindow.cpp" line="888"/>
+        <location filename="../app/MainWindow.cpp" line="894"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="887"/>
+        <location filename="../app/MainWindow.cpp" line="888"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -1547,103 +1562,108 @@ What should happen to it?</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="172"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="172"/>
         <source>residual RMS</source>
         <translation>殘差 RMS</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="165"/>
+        <location filename="../app/MappingPanel.cpp" line="172"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="177"/>
+        <location filename="../app/MappingPanel.cpp" line="184"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="183"/>
+        <location filename="../app/MappingPanel.cpp" line="190"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="185"/>
+        <location filename="../app/MappingPanel.cpp" line="192"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="190"/>
+        <location filename="../app/MappingPanel.cpp" line="197"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="193"/>
+        <location filename="../app/MappingPanel.cpp" line="200"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="207"/>
+        <location filename="../app/MappingPanel.cpp" line="211"/>
+        <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
+        <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="228"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="208"/>
+        <location filename="../app/MappingPanel.cpp" line="229"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="209"/>
-        <location filename="../app/MappingPanel.cpp" line="214"/>
+        <location filename="../app/MappingPanel.cpp" line="230"/>
+        <location filename="../app/MappingPanel.cpp" line="235"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211"/>
+        <location filename="../app/MappingPanel.cpp" line="232"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="213"/>
+        <location filename="../app/MappingPanel.cpp" line="234"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="216"/>
+        <location filename="../app/MappingPanel.cpp" line="237"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="218"/>
+        <location filename="../app/MappingPanel.cpp" line="239"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="219"/>
+        <location filename="../app/MappingPanel.cpp" line="240"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="220"/>
+        <location filename="../app/MappingPanel.cpp" line="241"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="222"/>
+        <location filename="../app/MappingPanel.cpp" line="243"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="224"/>
+        <location filename="../app/MappingPanel.cpp" line="245"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="225"/>
+        <location filename="../app/MappingPanel.cpp" line="246"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -1965,139 +1985,139 @@ What should happen to it?</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="429"/>
-        <location filename="../app/RigPanel.cpp" line="440"/>
+        <location filename="../app/RigPanel.cpp" line="437"/>
+        <location filename="../app/RigPanel.cpp" line="448"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="430"/>
+        <location filename="../app/RigPanel.cpp" line="438"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="441"/>
+        <location filename="../app/RigPanel.cpp" line="449"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="498"/>
+        <location filename="../app/RigPanel.cpp" line="522"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="501"/>
+        <location filename="../app/RigPanel.cpp" line="525"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="516"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="544"/>
+        <location filename="../app/RigPanel.cpp" line="572"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="584"/>
+        <location filename="../app/RigPanel.cpp" line="612"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="579"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="179"/>
-        <location filename="../app/RigPanel.cpp" line="927"/>
+        <location filename="../app/RigPanel.cpp" line="959"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="355"/>
+        <location filename="../app/RigPanel.cpp" line="363"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="366"/>
-        <location filename="../app/RigPanel.cpp" line="1042"/>
+        <location filename="../app/RigPanel.cpp" line="374"/>
+        <location filename="../app/RigPanel.cpp" line="1074"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367"/>
-        <location filename="../app/RigPanel.cpp" line="1030"/>
+        <location filename="../app/RigPanel.cpp" line="375"/>
+        <location filename="../app/RigPanel.cpp" line="1062"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="380"/>
+        <location filename="../app/RigPanel.cpp" line="388"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="408"/>
+        <location filename="../app/RigPanel.cpp" line="416"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="413"/>
+        <location filename="../app/RigPanel.cpp" line="421"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="493"/>
+        <location filename="../app/RigPanel.cpp" line="517"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="563"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="572"/>
+        <location filename="../app/RigPanel.cpp" line="600"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="599"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="642"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="645"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="648"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="621"/>
+        <location filename="../app/RigPanel.cpp" line="649"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="306"/>
         <location filename="../app/RigPanel.cpp" line="317"/>
-        <location filename="../app/RigPanel.cpp" line="682"/>
-        <location filename="../app/RigPanel.cpp" line="687"/>
+        <location filename="../app/RigPanel.cpp" line="710"/>
+        <location filename="../app/RigPanel.cpp" line="719"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
@@ -2107,54 +2127,72 @@ What should happen to it?</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="382"/>
-        <location filename="../app/RigPanel.cpp" line="505"/>
-        <location filename="../app/RigPanel.cpp" line="513"/>
-        <location filename="../app/RigPanel.cpp" line="516"/>
+        <location filename="../app/RigPanel.cpp" line="390"/>
+        <location filename="../app/RigPanel.cpp" line="529"/>
         <location filename="../app/RigPanel.cpp" line="537"/>
-        <location filename="../app/RigPanel.cpp" line="543"/>
-        <location filename="../app/RigPanel.cpp" line="563"/>
-        <location filename="../app/RigPanel.cpp" line="589"/>
-        <location filename="../app/RigPanel.cpp" line="598"/>
-        <location filename="../app/RigPanel.cpp" line="625"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="554"/>
+        <location filename="../app/RigPanel.cpp" line="565"/>
+        <location filename="../app/RigPanel.cpp" line="571"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="653"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="408"/>
-        <location filename="../app/RigPanel.cpp" line="412"/>
-        <location filename="../app/RigPanel.cpp" line="1081"/>
-        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <location filename="../app/RigPanel.cpp" line="416"/>
+        <location filename="../app/RigPanel.cpp" line="420"/>
+        <location filename="../app/RigPanel.cpp" line="1113"/>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="688"/>
+        <location filename="../app/RigPanel.cpp" line="720"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="707"/>
+        <location filename="../app/RigPanel.cpp" line="739"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="707"/>
-        <location filename="../app/RigPanel.cpp" line="845"/>
-        <location filename="../app/RigPanel.cpp" line="929"/>
+        <location filename="../app/RigPanel.cpp" line="739"/>
+        <location filename="../app/RigPanel.cpp" line="877"/>
+        <location filename="../app/RigPanel.cpp" line="961"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="728"/>
-        <location filename="../app/RigPanel.cpp" line="740"/>
-        <location filename="../app/RigPanel.cpp" line="749"/>
-        <location filename="../app/RigPanel.cpp" line="756"/>
+        <location filename="../app/RigPanel.cpp" line="352"/>
+        <location filename="../app/RigPanel.cpp" line="716"/>
+        <location filename="../app/RigPanel.cpp" line="760"/>
+        <location filename="../app/RigPanel.cpp" line="772"/>
+        <location filename="../app/RigPanel.cpp" line="781"/>
+        <location filename="../app/RigPanel.cpp" line="788"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="729"/>
+        <location filename="../app/RigPanel.cpp" line="349"/>
+        <source>Floor calibration: click a point of known floor position</source>
+        <translation>地面校準：點選一個已知地面位置的點</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="353"/>
+        <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
+        <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="499"/>
+        <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
+        <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="761"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -2163,421 +2201,421 @@ What should happen to it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="750"/>
+        <location filename="../app/RigPanel.cpp" line="782"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="781"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="781"/>
+        <location filename="../app/RigPanel.cpp" line="813"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="784"/>
+        <location filename="../app/RigPanel.cpp" line="816"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="788"/>
+        <location filename="../app/RigPanel.cpp" line="820"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="793"/>
+        <location filename="../app/RigPanel.cpp" line="825"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="794"/>
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="797"/>
+        <location filename="../app/RigPanel.cpp" line="829"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="797"/>
+        <location filename="../app/RigPanel.cpp" line="829"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="818"/>
+        <location filename="../app/RigPanel.cpp" line="850"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="821"/>
-        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="862"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="823"/>
-        <location filename="../app/RigPanel.cpp" line="832"/>
+        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="864"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="862"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="875"/>
+        <location filename="../app/RigPanel.cpp" line="907"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="876"/>
+        <location filename="../app/RigPanel.cpp" line="908"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="877"/>
+        <location filename="../app/RigPanel.cpp" line="909"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="878"/>
+        <location filename="../app/RigPanel.cpp" line="910"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="916"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="885"/>
+        <location filename="../app/RigPanel.cpp" line="917"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="918"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="887"/>
+        <location filename="../app/RigPanel.cpp" line="919"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="888"/>
+        <location filename="../app/RigPanel.cpp" line="920"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="889"/>
+        <location filename="../app/RigPanel.cpp" line="921"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="891"/>
+        <location filename="../app/RigPanel.cpp" line="923"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="893"/>
+        <location filename="../app/RigPanel.cpp" line="925"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="894"/>
+        <location filename="../app/RigPanel.cpp" line="926"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="895"/>
+        <location filename="../app/RigPanel.cpp" line="927"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="896"/>
+        <location filename="../app/RigPanel.cpp" line="928"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="897"/>
+        <location filename="../app/RigPanel.cpp" line="929"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="898"/>
+        <location filename="../app/RigPanel.cpp" line="930"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="899"/>
+        <location filename="../app/RigPanel.cpp" line="931"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="902"/>
+        <location filename="../app/RigPanel.cpp" line="934"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="903"/>
+        <location filename="../app/RigPanel.cpp" line="935"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="904"/>
+        <location filename="../app/RigPanel.cpp" line="936"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="906"/>
+        <location filename="../app/RigPanel.cpp" line="938"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="907"/>
+        <location filename="../app/RigPanel.cpp" line="939"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="908"/>
+        <location filename="../app/RigPanel.cpp" line="940"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="909"/>
+        <location filename="../app/RigPanel.cpp" line="941"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="910"/>
+        <location filename="../app/RigPanel.cpp" line="942"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="911"/>
+        <location filename="../app/RigPanel.cpp" line="943"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="912"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="913"/>
+        <location filename="../app/RigPanel.cpp" line="945"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="914"/>
+        <location filename="../app/RigPanel.cpp" line="946"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="915"/>
+        <location filename="../app/RigPanel.cpp" line="947"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="917"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="919"/>
+        <location filename="../app/RigPanel.cpp" line="951"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="921"/>
+        <location filename="../app/RigPanel.cpp" line="953"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="923"/>
+        <location filename="../app/RigPanel.cpp" line="955"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="928"/>
+        <location filename="../app/RigPanel.cpp" line="960"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="930"/>
+        <location filename="../app/RigPanel.cpp" line="962"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="931"/>
+        <location filename="../app/RigPanel.cpp" line="963"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="932"/>
+        <location filename="../app/RigPanel.cpp" line="964"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="935"/>
+        <location filename="../app/RigPanel.cpp" line="967"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="936"/>
+        <location filename="../app/RigPanel.cpp" line="968"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="938"/>
+        <location filename="../app/RigPanel.cpp" line="970"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="939"/>
+        <location filename="../app/RigPanel.cpp" line="971"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="940"/>
+        <location filename="../app/RigPanel.cpp" line="972"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="941"/>
+        <location filename="../app/RigPanel.cpp" line="973"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="976"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="945"/>
+        <location filename="../app/RigPanel.cpp" line="977"/>
         <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
         <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="946"/>
+        <location filename="../app/RigPanel.cpp" line="978"/>
         <source>In %1; File &gt; Replay a trial bundle opens one</source>
         <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="948"/>
+        <location filename="../app/RigPanel.cpp" line="980"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
+        <location filename="../app/RigPanel.cpp" line="981"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="950"/>
+        <location filename="../app/RigPanel.cpp" line="982"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="951"/>
-        <location filename="../app/RigPanel.cpp" line="953"/>
+        <location filename="../app/RigPanel.cpp" line="983"/>
+        <location filename="../app/RigPanel.cpp" line="985"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="952"/>
+        <location filename="../app/RigPanel.cpp" line="984"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="956"/>
+        <location filename="../app/RigPanel.cpp" line="988"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="982"/>
+        <location filename="../app/RigPanel.cpp" line="1014"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="982"/>
-        <location filename="../app/RigPanel.cpp" line="987"/>
         <location filename="../app/RigPanel.cpp" line="1014"/>
-        <location filename="../app/RigPanel.cpp" line="1075"/>
+        <location filename="../app/RigPanel.cpp" line="1019"/>
+        <location filename="../app/RigPanel.cpp" line="1046"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="987"/>
+        <location filename="../app/RigPanel.cpp" line="1019"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1009"/>
+        <location filename="../app/RigPanel.cpp" line="1041"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1014"/>
+        <location filename="../app/RigPanel.cpp" line="1046"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1028"/>
-        <location filename="../app/RigPanel.cpp" line="1032"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
+        <location filename="../app/RigPanel.cpp" line="1064"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
+        <location filename="../app/RigPanel.cpp" line="1092"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1066"/>
+        <location filename="../app/RigPanel.cpp" line="1098"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="1102"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1081"/>
+        <location filename="../app/RigPanel.cpp" line="1113"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1114"/>
+        <location filename="../app/RigPanel.cpp" line="1146"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1114"/>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
-        <location filename="../app/RigPanel.cpp" line="1120"/>
+        <location filename="../app/RigPanel.cpp" line="1146"/>
+        <location filename="../app/RigPanel.cpp" line="1149"/>
+        <location filename="../app/RigPanel.cpp" line="1152"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
+        <location filename="../app/RigPanel.cpp" line="1149"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1120"/>
+        <location filename="../app/RigPanel.cpp" line="1152"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>

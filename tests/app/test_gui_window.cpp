@@ -19,6 +19,8 @@
 #include <QTextBrowser>
 #include <QThread>
 
+#include <opencv2/videoio.hpp>
+
 using namespace prisca::app;
 using namespace prisca::test;
 
@@ -201,6 +203,54 @@ class TestGuiWindow : public QObject {
                                   QStringLiteral("Camera: failed"), 15000);
         QVERIFY(!w.find<QLabel>("cameraInfo")->text().isEmpty());
         QVERIFY(!w.find<QLabel>("linkStatus")->text().contains(QLatin1String("no-such-camera")));
+    }
+
+    void realCamera_withTheVirtualRigsCalibrationIsWarnedAndRefused() {
+        QTemporaryDir dir;
+        const QString video = dir.filePath(QStringLiteral("floor.avi"));
+        {
+            cv::VideoWriter writer(video.toStdString(), cv::CAP_OPENCV_MJPEG,
+                                   cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 40.0,
+                                   cv::Size(640, 480), true);
+            QVERIFY(writer.isOpened());
+            for (int k = 0; k < 400; ++k) {
+                writer.write(cv::Mat(480, 640, CV_8UC3, cv::Scalar(20, 20, 20)));
+            }
+        }
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(2);  // a video file: a real camera
+        w.find<QLineEdit>("cameraPath")->setText(video);
+        rig->startCamera();
+        auto* calibration = w.find<QLabel>("calibrationInfo");
+        QTRY_VERIFY(calibration->text().contains(QLatin1String("virtual rig's")));
+        QVERIFY(!rig->startDriving());
+        QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("virtual rig's")));
+        // This camera's own calibration: no warning, driving is no longer refused for it.
+        const std::vector<prisca::devices::CalibrationPoint> points = {
+            {{100, 100}, {0.0, 2.0}}, {{540, 100}, {3.0, 2.0}}, {{540, 380}, {3.0, 0.0}},
+            {{100, 380}, {0.0, 0.0}}, {{320, 240}, {1.5, 1.0}}};
+        QString error;
+        const auto own = prisca::devices::FloorCalibration::fit(points, &error);
+        QVERIFY2(own, qPrintable(error));
+        QVERIFY(own->save(dir.filePath(QStringLiteral("own.json")), &error));
+        QVERIFY(rig->loadCalibration(dir.filePath(QStringLiteral("own.json"))));
+        QVERIFY(!calibration->text().contains(QLatin1String("virtual rig's")));
+        rig->stopCamera();
+    }
+
+    void panels_sayWhatTheirNumbersAreAndWhatToDo() {
+        Window w;
+        // The fit's table: each state with its unit in its header, numbers not elided.
+        auto* fit = w.find<QTableWidget>("fitResult");
+        QVERIFY(fit->horizontalHeaderItem(0)->text().contains(QLatin1String("[m]")));
+        QCOMPARE(fit->horizontalHeader()->sectionResizeMode(0), QHeaderView::ResizeToContents);
+        // Calibrate says what to do on the panel, not only in a tooltip.
+        auto* calibrate = w.find<QPushButton>("calibrate");
+        QVERIFY(calibrate);
+        calibrate->click();
+        QVERIFY(w.find<QLabel>("calibrationInfo")->text().startsWith(QLatin1String("Calibrating:")));
+        calibrate->click();
     }
 
     void messageLog_collectsPanelsAndWorkersAndIsSavedWithTheSession() {
