@@ -284,7 +284,8 @@ void MainWindow::createPanels() {
         dock(this, QStringLiteral("mappingDock"), mappingPanel_, Qt::RightDockWidgetArea);
     controllerDock_ =
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
-    runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea);
+    // The run panel fits its dock without scrolling: its results table takes what is left.
+    runDock_ = dock(this, QStringLiteral("runDock"), runPanel_, Qt::RightDockWidgetArea, false);
     // The charts fill what they get (they have no natural height to scroll to).
     chartsDock_ =
         dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea, false);

@@ -29,6 +29,7 @@ MessageLogPanel::MessageLogPanel(MessageLog& log, QWidget* parent)
       table_(new QTableWidget(0, ColumnCount, this)) {
     setObjectName(QStringLiteral("messageLogPanel"));
     filter_->setObjectName(QStringLiteral("messageFilter"));
+    filter_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     copy_->setObjectName(QStringLiteral("copyMessages"));
     clear_->setObjectName(QStringLiteral("clearMessages"));
     table_->setObjectName(QStringLiteral("messageTable"));

@@ -1150,7 +1150,7 @@
         <location filename="../app/MainWindow.cpp" line="472"/>
         <location filename="../app/MainWindow.cpp" line="476"/>
         <source>E-STOP LATCHED</source>
-        <translation>E-STOP 已鎖定</translation>
+        <translation>緊急停止已鎖定</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="432"/>
@@ -1200,7 +1200,7 @@
     <message>
         <location filename="../app/MainWindow.cpp" line="472"/>
         <source>E-STOP ready</source>
-        <translation>E-STOP 就緒</translation>
+        <translation>緊急停止就緒</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="505"/>
@@ -1238,7 +1238,7 @@
     <message>
         <location filename="../app/MainWindow.cpp" line="555"/>
         <source>E-STOP</source>
-        <translation>E-STOP</translation>
+        <translation>緊急停止</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="589"/>
@@ -1520,7 +1520,7 @@ What should happen to it?</source>
     <message>
         <location filename="../app/MainWindow.cpp" line="863"/>
         <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
-        <translation>E-STOP，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
+        <translation>緊急停止，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="869"/>
@@ -2772,12 +2772,12 @@ What should happen to it?</source>
     <message>
         <location filename="../app/RunPanel.cpp" line="331"/>
         <source>E-STOP engaged at %1: the run is stopped. Reset E-STOP to run again.</source>
-        <translation>E-STOP 於 %1 啟動：運行已停止。重設 E-STOP 後才可再運行。</translation>
+        <translation>緊急停止 於 %1 啟動：運行已停止。重設 緊急停止 後才可再運行。</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="339"/>
         <source>E-STOP was engaged at %1 and stopped the run; it is reset now: ready to run.</source>
-        <translation>E-STOP 曾於 %1 啟動並停止了運行；現已重設：可以運行。</translation>
+        <translation>緊急停止 曾於 %1 啟動並停止了運行；現已重設：可以運行。</translation>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="349"/>
