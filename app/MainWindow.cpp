@@ -148,7 +148,9 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
         // 1280 x 800 screen the status bar is then on screen too.
         const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1280, 800);
         resize(kDefaultSize.boundedTo(available.size() - kFrameAllowance));
-        move(available.center() - rect().center());
+        // Centred; on a screen narrower than the panels allow, from its left edge.
+        move(available.left() + std::max(0, (available.width() - width()) / 2),
+             available.top() + std::max(0, (available.height() - height()) / 2));
     }
     stateRestored_ = restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
 }

@@ -252,7 +252,13 @@ class TestGuiRun : public QObject {
             dock->raise();
             QCoreApplication::processEvents();
             auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
-            QVERIFY(scroll != nullptr);
+            if (!scroll) {
+                // A panel that fits its dock (the Run panel): as wide as it needs, never cut.
+                QWidget* panel = dock->widget();
+                QVERIFY2(panel->width() >= panel->minimumSizeHint().width(),
+                         qPrintable(dock->objectName()));
+                continue;
+            }
             QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
                      qPrintable(dock->objectName() + QStringLiteral(" scrolls sideways")));
         }
