@@ -74,6 +74,8 @@ class LabSession : public QObject {
     const core::ActionMappingFitOptions& fitOptions() const { return fitOptions_; }
     void setFitOptions(const core::ActionMappingFitOptions& options);
     const core::ActionMappingFit& fit() const { return task_.fit; }
+    /// Fits B_v again as it is (the fit's messages in the interface's language now).
+    void refit() { setFitOptions(fitOptions_); }
 
     /// The method a run uses (sim::MethodCatalog ids).
     const QString& method() const { return method_; }

@@ -220,6 +220,9 @@ void MappingPanel::showFit() {
 void MappingPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
+        if (!session_.fit().warnings.isEmpty()) {
+            session_.refit();  // the fit's own warnings, written in the language now
+        }
     }
     QWidget::changeEvent(event);
 }

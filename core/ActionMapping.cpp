@@ -4,6 +4,8 @@
 
 #include <Eigen/QR>
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -165,7 +167,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
         if (!(meanSquare > options.excitationThreshold)) {
             excited[l] = false;
             fit.unexcitedChannels.push_back(l);
-            fit.warnings << QStringLiteral(
+            fit.warnings << QCoreApplication::translate(
+                                "ActionMappingFit",
                                 "control '%1' never changed in the demonstration: its B_v entries "
                                 "stay 0 and it will not adapt; record a demonstration that uses it")
                                 .arg(demonstration.actionNames.value(l, QString::number(l)));
@@ -205,7 +208,8 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                 Eigen::VectorXd beta = solver.solve(Wy);
                 if (report && solver.rank() < X.cols()) {
                     fit.warnings
-                        << QStringLiteral(
+                        << QCoreApplication::translate(
+                               "ActionMappingFit",
                                "state '%1': the controls acting on it moved together, so their "
                                "shares cannot be told apart (minimum-norm fit)")
                                .arg(demonstration.stateNames.value(c, QString::number(c)));
@@ -219,16 +223,19 @@ ActionMappingFit fitActionMapping(const Demonstration& demonstration,
                     if (report && beta[j] < 0.0) {
                         fit.signConflicts.emplace_back(controls[j], c);
                         fit.warnings
-                            << QStringLiteral(
+                            << QCoreApplication::translate(
+                                   "ActionMappingFit",
                                    "'%1' moved '%2' the opposite way to the intuitive mapping "
                                    "(unconstrained B_v = %3)%4")
                                    .arg(demonstration.actionNames.value(controls[j]),
                                         demonstration.stateNames.value(c))
                                    .arg(beta[j], 0, 'g', 4)
                                    .arg(options.nonNegative
-                                            ? QStringLiteral("; set to 0, check the sign or the "
-                                                             "demonstration")
-                                            : QStringLiteral(
+                                            ? QCoreApplication::translate(
+                                                  "ActionMappingFit",
+                                                  "; set to 0, check the sign or the demonstration")
+                                            : QCoreApplication::translate(
+                                                  "ActionMappingFit",
                                                   "; check the sign or the demonstration"));
                     }
                 }

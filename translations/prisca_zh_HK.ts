@@ -2,6 +2,34 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_HK">
 <context>
+    <name>ActionMappingFit</name>
+    <message>
+        <location filename="../core/ActionMapping.cpp" line="170"/>
+        <source>control &apos;%1&apos; never changed in the demonstration: its B_v entries stay 0 and it will not adapt; record a demonstration that uses it</source>
+        <translation>控制「%1」在示範中從未改變：其 B_v 項保持為 0，不會自適應；請錄製一個有使用它的示範</translation>
+    </message>
+    <message>
+        <location filename="../core/ActionMapping.cpp" line="211"/>
+        <source>state &apos;%1&apos;: the controls acting on it moved together, so their shares cannot be told apart (minimum-norm fit)</source>
+        <translation>狀態「%1」：作用於它的各控制一同變動，因此無法分辨各自的份額（最小範數擬合）</translation>
+    </message>
+    <message>
+        <location filename="../core/ActionMapping.cpp" line="226"/>
+        <source>&apos;%1&apos; moved &apos;%2&apos; the opposite way to the intuitive mapping (unconstrained B_v = %3)%4</source>
+        <translation>「%1」令「%2」向直覺映射的相反方向變化（無約束 B_v = %3）%4</translation>
+    </message>
+    <message>
+        <location filename="../core/ActionMapping.cpp" line="234"/>
+        <source>; set to 0, check the sign or the demonstration</source>
+        <translation>；已設為 0，請檢查符號或示範</translation>
+    </message>
+    <message>
+        <location filename="../core/ActionMapping.cpp" line="237"/>
+        <source>; check the sign or the demonstration</source>
+        <translation>；請檢查符號或示範</translation>
+    </message>
+</context>
+<context>
     <name>MethodParameter</name>
     <message>
         <location filename="../sim/MethodCatalog.cpp" line="269"/>
@@ -1126,122 +1154,122 @@
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="139"/>
-        <location filename="../app/MainWindow.cpp" line="669"/>
-        <location filename="../app/MainWindow.cpp" line="675"/>
+        <location filename="../app/MainWindow.cpp" line="672"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="142"/>
-        <location filename="../app/MainWindow.cpp" line="596"/>
-        <location filename="../app/MainWindow.cpp" line="604"/>
-        <location filename="../app/MainWindow.cpp" line="606"/>
-        <location filename="../app/MainWindow.cpp" line="620"/>
+        <location filename="../app/MainWindow.cpp" line="599"/>
+        <location filename="../app/MainWindow.cpp" line="607"/>
+        <location filename="../app/MainWindow.cpp" line="609"/>
+        <location filename="../app/MainWindow.cpp" line="623"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="317"/>
+        <location filename="../app/MainWindow.cpp" line="320"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="382"/>
-        <location filename="../app/MainWindow.cpp" line="472"/>
-        <location filename="../app/MainWindow.cpp" line="476"/>
+        <location filename="../app/MainWindow.cpp" line="385"/>
+        <location filename="../app/MainWindow.cpp" line="475"/>
+        <location filename="../app/MainWindow.cpp" line="479"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="432"/>
+        <location filename="../app/MainWindow.cpp" line="435"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="435"/>
+        <location filename="../app/MainWindow.cpp" line="438"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="438"/>
+        <location filename="../app/MainWindow.cpp" line="441"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="446"/>
+        <location filename="../app/MainWindow.cpp" line="449"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="449"/>
+        <location filename="../app/MainWindow.cpp" line="452"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="452"/>
+        <location filename="../app/MainWindow.cpp" line="455"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="455"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="458"/>
+        <location filename="../app/MainWindow.cpp" line="461"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="461"/>
+        <location filename="../app/MainWindow.cpp" line="464"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="472"/>
+        <location filename="../app/MainWindow.cpp" line="475"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="505"/>
-        <location filename="../app/MainWindow.cpp" line="588"/>
+        <location filename="../app/MainWindow.cpp" line="508"/>
+        <location filename="../app/MainWindow.cpp" line="591"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindow.cpp" line="509"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
-        <location filename="../app/MainWindow.cpp" line="615"/>
+        <location filename="../app/MainWindow.cpp" line="520"/>
+        <location filename="../app/MainWindow.cpp" line="618"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="518"/>
+        <location filename="../app/MainWindow.cpp" line="521"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="531"/>
-        <location filename="../app/MainWindow.cpp" line="912"/>
+        <location filename="../app/MainWindow.cpp" line="534"/>
+        <location filename="../app/MainWindow.cpp" line="915"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="555"/>
+        <location filename="../app/MainWindow.cpp" line="558"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="555"/>
+        <location filename="../app/MainWindow.cpp" line="558"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="589"/>
+        <location filename="../app/MainWindow.cpp" line="592"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1250,202 +1278,202 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="597"/>
+        <location filename="../app/MainWindow.cpp" line="600"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="604"/>
+        <location filename="../app/MainWindow.cpp" line="607"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="606"/>
+        <location filename="../app/MainWindow.cpp" line="609"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="620"/>
+        <location filename="../app/MainWindow.cpp" line="623"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="661"/>
+        <location filename="../app/MainWindow.cpp" line="664"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="662"/>
+        <location filename="../app/MainWindow.cpp" line="665"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="663"/>
+        <location filename="../app/MainWindow.cpp" line="666"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="664"/>
+        <location filename="../app/MainWindow.cpp" line="667"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="665"/>
+        <location filename="../app/MainWindow.cpp" line="668"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="666"/>
+        <location filename="../app/MainWindow.cpp" line="669"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="667"/>
+        <location filename="../app/MainWindow.cpp" line="670"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="668"/>
+        <location filename="../app/MainWindow.cpp" line="671"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="670"/>
+        <location filename="../app/MainWindow.cpp" line="673"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="671"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="672"/>
+        <location filename="../app/MainWindow.cpp" line="675"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="673"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="679"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="680"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="678"/>
+        <location filename="../app/MainWindow.cpp" line="681"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="679"/>
+        <location filename="../app/MainWindow.cpp" line="682"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="680"/>
+        <location filename="../app/MainWindow.cpp" line="683"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="681"/>
+        <location filename="../app/MainWindow.cpp" line="684"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="682"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="686"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="684"/>
+        <location filename="../app/MainWindow.cpp" line="687"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="686"/>
+        <location filename="../app/MainWindow.cpp" line="689"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="696"/>
+        <location filename="../app/MainWindow.cpp" line="699"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="699"/>
+        <location filename="../app/MainWindow.cpp" line="702"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="704"/>
+        <location filename="../app/MainWindow.cpp" line="707"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="707"/>
+        <location filename="../app/MainWindow.cpp" line="710"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="710"/>
+        <location filename="../app/MainWindow.cpp" line="713"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="732"/>
-        <location filename="../app/MainWindow.cpp" line="752"/>
-        <location filename="../app/MainWindow.cpp" line="754"/>
-        <location filename="../app/MainWindow.cpp" line="761"/>
+        <location filename="../app/MainWindow.cpp" line="735"/>
+        <location filename="../app/MainWindow.cpp" line="755"/>
+        <location filename="../app/MainWindow.cpp" line="757"/>
         <location filename="../app/MainWindow.cpp" line="764"/>
-        <location filename="../app/MainWindow.cpp" line="796"/>
+        <location filename="../app/MainWindow.cpp" line="767"/>
+        <location filename="../app/MainWindow.cpp" line="799"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="733"/>
+        <location filename="../app/MainWindow.cpp" line="736"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="734"/>
+        <location filename="../app/MainWindow.cpp" line="737"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="752"/>
+        <location filename="../app/MainWindow.cpp" line="755"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="762"/>
+        <location filename="../app/MainWindow.cpp" line="765"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="775"/>
+        <location filename="../app/MainWindow.cpp" line="778"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="776"/>
+        <location filename="../app/MainWindow.cpp" line="779"/>
         <source>Work is under way:
 
 %1
@@ -1458,98 +1486,98 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="781"/>
+        <location filename="../app/MainWindow.cpp" line="784"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="783"/>
+        <location filename="../app/MainWindow.cpp" line="786"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="787"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="785"/>
+        <location filename="../app/MainWindow.cpp" line="788"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="796"/>
+        <location filename="../app/MainWindow.cpp" line="799"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="826"/>
+        <location filename="../app/MainWindow.cpp" line="829"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="826"/>
+        <location filename="../app/MainWindow.cpp" line="829"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="838"/>
+        <location filename="../app/MainWindow.cpp" line="841"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="840"/>
+        <location filename="../app/MainWindow.cpp" line="843"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="844"/>
+        <location filename="../app/MainWindow.cpp" line="847"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="847"/>
+        <location filename="../app/MainWindow.cpp" line="850"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="863"/>
+        <location filename="../app/MainWindow.cpp" line="866"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="863"/>
+        <location filename="../app/MainWindow.cpp" line="866"/>
         <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
         <translation>緊急停止，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="869"/>
+        <location filename="../app/MainWindow.cpp" line="872"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="870"/>
+        <location filename="../app/MainWindow.cpp" line="873"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="872"/>
+        <location filename="../app/MainWindow.cpp" line="875"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="879"/>
+        <location filename="../app/MainWindow.cpp" line="882"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="888"/>
-        <location filename="../app/MainWindow.cpp" line="894"/>
+        <location filename="../app/MainWindow.cpp" line="891"/>
+        <location filename="../app/MainWindow.cpp" line="897"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="888"/>
+        <location filename="../app/MainWindow.cpp" line="891"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -1607,63 +1635,63 @@ What should happen to it?</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="228"/>
+        <location filename="../app/MappingPanel.cpp" line="231"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="229"/>
+        <location filename="../app/MappingPanel.cpp" line="232"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="230"/>
-        <location filename="../app/MappingPanel.cpp" line="235"/>
+        <location filename="../app/MappingPanel.cpp" line="233"/>
+        <location filename="../app/MappingPanel.cpp" line="238"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="232"/>
+        <location filename="../app/MappingPanel.cpp" line="235"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="234"/>
+        <location filename="../app/MappingPanel.cpp" line="237"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="237"/>
+        <location filename="../app/MappingPanel.cpp" line="240"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="239"/>
+        <location filename="../app/MappingPanel.cpp" line="242"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="240"/>
+        <location filename="../app/MappingPanel.cpp" line="243"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="241"/>
+        <location filename="../app/MappingPanel.cpp" line="244"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="243"/>
+        <location filename="../app/MappingPanel.cpp" line="246"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="245"/>
+        <location filename="../app/MappingPanel.cpp" line="248"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="246"/>
+        <location filename="../app/MappingPanel.cpp" line="249"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -1689,47 +1717,47 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLogPanel</name>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="174"/>
+        <location filename="../app/MessageLogPanel.cpp" line="175"/>
         <source>All messages</source>
         <translation>所有訊息</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="175"/>
+        <location filename="../app/MessageLogPanel.cpp" line="176"/>
         <source>Warnings and errors</source>
         <translation>警告與錯誤</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="177"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Copy</source>
         <translation>複製</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
         <source>Copy the selected lines, or all shown, as tab-separated text (Ctrl+C)</source>
         <translation>以定位字元分隔的文字複製選取的行，或全部顯示的行 (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/MessageLogPanel.cpp" line="180"/>
         <source>Clear</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <location filename="../app/MessageLogPanel.cpp" line="181"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <location filename="../app/MessageLogPanel.cpp" line="181"/>
         <source>Level</source>
         <translation>級別</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <location filename="../app/MessageLogPanel.cpp" line="181"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <location filename="../app/MessageLogPanel.cpp" line="181"/>
         <source>Message</source>
         <translation>訊息</translation>
     </message>

@@ -104,6 +104,10 @@ QMap<QString, QString> visibleTexts(QWidget* root) {
                     }
                 }
             }
+        } else if (auto* list = qobject_cast<QListWidget*>(widget)) {
+            for (int i = 0; i < list->count(); ++i) {
+                texts.insert(key(list, QStringLiteral("item%1").arg(i)), list->item(i)->text());
+            }
         } else if (auto* group = qobject_cast<QGroupBox*>(widget)) {
             texts.insert(key(group, QStringLiteral("title")), group->title());
         } else if (auto* menu = qobject_cast<QMenu*>(widget)) {
@@ -251,6 +255,29 @@ class TestGuiWindow : public QObject {
         calibrate->click();
         QVERIFY(w.find<QLabel>("calibrationInfo")->text().startsWith(QLatin1String("Calibrating:")));
         calibrate->click();
+    }
+
+    void fitWarning_followsALanguageSwitch() {
+        Window w;
+        // A demonstration whose steering never changes: the fit warns about it.
+        auto demo = std::make_shared<prisca::core::Demonstration>(*w.window.session().demonstration());
+        demo->actions.col(1).setConstant(0.0);
+        w.window.session().setDemonstration(demo, QStringLiteral("held-steering.csv"));
+        auto* warnings = w.find<QListWidget>("fitWarnings");
+        const auto shown = [&] {
+            QStringList lines;
+            for (int i = 0; i < warnings->count(); ++i) {
+                lines << warnings->item(i)->text();
+            }
+            return lines.join(QLatin1Char('\n'));
+        };
+        QVERIFY2(shown().contains(QLatin1String("never changed")), qPrintable(shown()));
+        QVERIFY(w.languages.setLanguage(QStringLiteral("zh_HK")));
+        QTRY_VERIFY2(!shown().contains(QLatin1String("never changed")) &&
+                         shown().contains(QStringLiteral("從未改變")),
+                     qPrintable(shown()));
+        QVERIFY(w.languages.setLanguage(QStringLiteral("en")));
+        QTRY_VERIFY2(shown().contains(QLatin1String("never changed")), qPrintable(shown()));
     }
 
     void messageLog_collectsPanelsAndWorkersAndIsSavedWithTheSession() {
