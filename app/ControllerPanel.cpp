@@ -1,5 +1,7 @@
 #include "app/ControllerPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/LabSession.h"
 #include "core/Table1Report.h"
 #include "sim/MethodCatalog.h"
@@ -310,7 +312,7 @@ void ControllerPanel::apply() {
         try {
             editor.parameter->assign(p, value);
         } catch (const std::invalid_argument& e) {
-            problem_->setText(QString::fromUtf8(e.what()));
+            showStatus(problem_, tr("Controller"), QString::fromUtf8(e.what()), MessageLevel::Warning);
             return;  // nothing applied
         }
     }
@@ -349,7 +351,11 @@ void ControllerPanel::apply() {
             p.info.actionUpper[l] = high;
         }
     }
-    problem_->setText(problem);
+    if (problem.isEmpty()) {
+        problem_->clear();
+    } else {
+        showStatus(problem_, tr("Controller"), problem, MessageLevel::Warning);
+    }
     if (!problem.isEmpty()) {
         return;  // nothing half-applied; the cell stays for the operator to correct
     }

@@ -1,5 +1,7 @@
 #include "app/LiveChartsPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/plot/ChartDecimation.h"
 #include "core/FileIo.h"
 
@@ -551,7 +553,7 @@ void LiveChartsPanel::askExportCsv() {
                    QStringLiteral("csv"));
     QString error;
     if (!path.isEmpty() && !exportCsv(path, &error)) {
-        QMessageBox::warning(this, tr("Export chart data"), error);
+        warningBox(this, tr("Export chart data"), error);
     }
 }
 
@@ -562,7 +564,7 @@ void LiveChartsPanel::askExportPng() {
                    QStringLiteral("png"));
     QString error;
     if (!path.isEmpty() && !exportPng(path, &error)) {
-        QMessageBox::warning(this, tr("Export charts as picture"), error);
+        warningBox(this, tr("Export charts as picture"), error);
     }
 }
 

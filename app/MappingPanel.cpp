@@ -1,5 +1,7 @@
 #include "app/MappingPanel.h"
 
+#include "app/MessageLog.h"
+
 #include "app/LabSession.h"
 
 #include <QCheckBox>
@@ -200,6 +202,11 @@ void MappingPanel::showFit() {
     resultLabel_->setText(tr("Fit on %1 samples:").arg(f.samples));
     warnings_->clear();
     warnings_->addItems(f.warnings);
+    if (!refittingForLanguage_) {
+        for (const QString& warning : f.warnings) {
+            logMessage(tr("Mapping"), MessageLevel::Warning, warning);
+        }
+    }
     // A negative R² is not a typo: the fit predicts that state's change worse than its mean.
     QStringList below;
     for (int i = 0; i < f.rSquared.size() && i < n; ++i) {
@@ -219,10 +226,12 @@ void MappingPanel::showFit() {
 
 void MappingPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {
+        refittingForLanguage_ = true;  // the same warnings: logged once, when they came
         retranslateUi();
         if (!session_.fit().warnings.isEmpty()) {
             session_.refit();  // the fit's own warnings, written in the language now
         }
+        refittingForLanguage_ = false;
     }
     QWidget::changeEvent(event);
 }

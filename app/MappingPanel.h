@@ -49,6 +49,7 @@ class MappingPanel : public QWidget {
     QLabel* resultLabel_;
     QTableWidget* result_;
     QListWidget* warnings_;
+    bool refittingForLanguage_ = false;
 };
 
 }  // namespace prisca::app

@@ -587,74 +587,80 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="214"/>
+        <location filename="../app/ControllerPanel.cpp" line="216"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="215"/>
+        <location filename="../app/ControllerPanel.cpp" line="217"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="216"/>
+        <location filename="../app/ControllerPanel.cpp" line="218"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="218"/>
+        <location filename="../app/ControllerPanel.cpp" line="220"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="229"/>
-        <location filename="../app/ControllerPanel.cpp" line="376"/>
+        <location filename="../app/ControllerPanel.cpp" line="231"/>
+        <location filename="../app/ControllerPanel.cpp" line="382"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="229"/>
-        <location filename="../app/ControllerPanel.cpp" line="376"/>
+        <location filename="../app/ControllerPanel.cpp" line="231"/>
+        <location filename="../app/ControllerPanel.cpp" line="382"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="235"/>
+        <location filename="../app/ControllerPanel.cpp" line="237"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="329"/>
+        <location filename="../app/ControllerPanel.cpp" line="315"/>
+        <location filename="../app/ControllerPanel.cpp" line="357"/>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="331"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="343"/>
+        <location filename="../app/ControllerPanel.cpp" line="345"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="385"/>
+        <location filename="../app/ControllerPanel.cpp" line="391"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="409"/>
+        <location filename="../app/ControllerPanel.cpp" line="415"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="410"/>
+        <location filename="../app/ControllerPanel.cpp" line="416"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="411"/>
+        <location filename="../app/ControllerPanel.cpp" line="417"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="386"/>
+        <location filename="../app/ControllerPanel.cpp" line="392"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -1023,124 +1029,124 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="377"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="379"/>
         <source>Trial %1, run time %2 s</source>
         <translation>試驗 %1，運行時間 %2 s</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="380"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="382"/>
         <source>error %1 %2, smoothed %3 %2</source>
         <translation>誤差 %1 %2，平滑後 %3 %2</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="395"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="397"/>
         <source>%1: u %2, u* %3 %4</source>
         <translation>%1：u %2，u* %3 %4</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="526"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="528"/>
         <source>cannot encode the picture for %1</source>
         <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="549"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="554"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="551"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="556"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="550"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="552"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="560"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="565"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="562"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="567"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="561"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="563"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="578"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="580"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="579"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="581"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="580"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="581"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="583"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="590"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="592"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="592"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1585,113 +1591,118 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="114"/>
+        <location filename="../app/MappingPanel.cpp" line="116"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="172"/>
+        <location filename="../app/MappingPanel.cpp" line="174"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="172"/>
+        <location filename="../app/MappingPanel.cpp" line="174"/>
         <source>residual RMS</source>
         <translation>殘差 RMS</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="172"/>
+        <location filename="../app/MappingPanel.cpp" line="174"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="184"/>
+        <location filename="../app/MappingPanel.cpp" line="186"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="190"/>
+        <location filename="../app/MappingPanel.cpp" line="192"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="192"/>
+        <location filename="../app/MappingPanel.cpp" line="194"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="197"/>
+        <location filename="../app/MappingPanel.cpp" line="199"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="200"/>
+        <location filename="../app/MappingPanel.cpp" line="202"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211"/>
+        <location filename="../app/MappingPanel.cpp" line="207"/>
+        <source>Mapping</source>
+        <translation>映射</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="218"/>
         <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="231"/>
+        <location filename="../app/MappingPanel.cpp" line="240"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="232"/>
+        <location filename="../app/MappingPanel.cpp" line="241"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="233"/>
-        <location filename="../app/MappingPanel.cpp" line="238"/>
+        <location filename="../app/MappingPanel.cpp" line="242"/>
+        <location filename="../app/MappingPanel.cpp" line="247"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="235"/>
+        <location filename="../app/MappingPanel.cpp" line="244"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="237"/>
+        <location filename="../app/MappingPanel.cpp" line="246"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="240"/>
+        <location filename="../app/MappingPanel.cpp" line="249"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="242"/>
+        <location filename="../app/MappingPanel.cpp" line="251"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="243"/>
+        <location filename="../app/MappingPanel.cpp" line="252"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="244"/>
+        <location filename="../app/MappingPanel.cpp" line="253"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="246"/>
+        <location filename="../app/MappingPanel.cpp" line="255"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="248"/>
+        <location filename="../app/MappingPanel.cpp" line="257"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="249"/>
+        <location filename="../app/MappingPanel.cpp" line="258"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>

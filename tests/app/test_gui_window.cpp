@@ -272,12 +272,22 @@ class TestGuiWindow : public QObject {
             return lines.join(QLatin1Char('\n'));
         };
         QVERIFY2(shown().contains(QLatin1String("never changed")), qPrintable(shown()));
+        // ... and the message log has it, once.
+        const auto logged = [&] {
+            return std::count_if(w.window.messageLog().entries().begin(),
+                                 w.window.messageLog().entries().end(), [](const LogEntry& e) {
+                                     return e.source == QLatin1String("Mapping") &&
+                                            e.level == MessageLevel::Warning;
+                                 });
+        };
+        QTRY_COMPARE(logged(), 1);
         QVERIFY(w.languages.setLanguage(QStringLiteral("zh_HK")));
         QTRY_VERIFY2(!shown().contains(QLatin1String("never changed")) &&
                          shown().contains(QStringLiteral("從未改變")),
                      qPrintable(shown()));
         QVERIFY(w.languages.setLanguage(QStringLiteral("en")));
         QTRY_VERIFY2(shown().contains(QLatin1String("never changed")), qPrintable(shown()));
+        QCOMPARE(logged(), 1);  // a language switch is no new warning
     }
 
     void messageLog_collectsPanelsAndWorkersAndIsSavedWithTheSession() {
