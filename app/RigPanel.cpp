@@ -207,11 +207,17 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(sourceLabel_, source_);
     form->addRow(QString(), sourcePath_);
+    // Two rows (size and rate; exposure and gain): the page fits a 1280-wide window.
     auto* cameraSettings = new QHBoxLayout;
-    for (QSpinBox* box : {width_, height_, fps_, exposure_, gain_}) {
+    for (QSpinBox* box : {width_, height_, fps_}) {
         cameraSettings->addWidget(box);
     }
+    auto* cameraExposure = new QHBoxLayout;
+    for (QSpinBox* box : {exposure_, gain_}) {
+        cameraExposure->addWidget(box);
+    }
     form->addRow(cameraSettingsLabel_, cameraSettings);
+    form->addRow(QString(), cameraExposure);
     auto* calibrationButtons = new QHBoxLayout;
     calibrationButtons->addWidget(loadCalibration_);
     calibrationButtons->addWidget(saveCalibration_);
