@@ -100,14 +100,15 @@ QString MessageLog::levelName(MessageLevel level) {
     return QString();
 }
 
+QString MessageLog::shownText(const LogEntry& entry) {
+    return entry.repeats > 1 ? entry.text + QStringLiteral(" (x%1)").arg(entry.repeats)
+                             : entry.text;
+}
+
 QString MessageLog::format(const LogEntry& entry) {
-    QString text = entry.text;
-    if (entry.repeats > 1) {
-        text += QStringLiteral(" (x%1)").arg(entry.repeats);
-    }
     return QStringLiteral("%1\t%2\t%3\t%4")
         .arg(entry.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
-             levelName(entry.level), entry.source, text);
+             levelName(entry.level), entry.source, shownText(entry));
 }
 
 namespace {

@@ -47,6 +47,8 @@ class MessageLog : public QObject {
     const QVector<LogEntry>& entries() const { return entries_; }
     void clear();
 
+    /// The line's text with its repeat count, "(x3)", when it came more than once.
+    static QString shownText(const LogEntry& entry);
     /// "HH:mm:ss.zzz  level  source  text" per line, tab-separated.
     static QString format(const LogEntry& entry);
     static QString levelName(MessageLevel level);

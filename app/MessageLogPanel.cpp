@@ -116,12 +116,9 @@ void MessageLogPanel::addRow(int index) {
 }
 
 void MessageLogPanel::updateRow(int row, const LogEntry& entry) {
-    QString text = entry.text;
-    if (entry.repeats > 1) {
-        text += QStringLiteral("  (x%1)").arg(entry.repeats);
-    }
     const QStringList cells = {entry.time.toString(QStringLiteral("HH:mm:ss")),
-                               MessageLog::levelName(entry.level), entry.source, text};
+                               MessageLog::levelName(entry.level), entry.source,
+                               MessageLog::shownText(entry)};
     const QColor colour = entry.level == MessageLevel::Error     ? QColor(0xb0, 0x00, 0x20)
                           : entry.level == MessageLevel::Warning ? QColor(0x9a, 0x56, 0x00)
                                                                  : QColor();

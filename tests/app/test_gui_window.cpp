@@ -394,7 +394,6 @@ class TestGuiWindow : public QObject {
         const QStringList kept =
             QDir(MainWindow::keptFolder()).entryList({QStringLiteral("run-*.csv")}, QDir::Files);
         QCOMPARE(kept.size(), 1);
-        prisca::core::FileError error;
         QFile log(QDir(MainWindow::keptFolder()).filePath(kept.first()));
         QVERIFY(log.open(QIODevice::ReadOnly));
         const QByteArray text = log.readAll();
@@ -470,7 +469,6 @@ class TestGuiWindow : public QObject {
 
     void layout_at1280x800ShowsAWholeRunsResultsAndTheRigsButtons() {
         Window w;
-        QTest::qWait(0);
         w.setSpeedIndex(2);
         w.find<QSpinBox>("trials")->setValue(5);
         w.find<RunPanel>("runPanel")->startRun();
@@ -521,11 +519,12 @@ class TestGuiWindow : public QObject {
         auto* experiments = w.find<ExperimentsPanel>("experimentsPanel");
         experiments->start();
         QTRY_VERIFY_WITH_TIMEOUT(!experiments->isRunning(), 240000);
-        QTest::qWait(300);  // the status bar's fields, refreshed a few times a second
+        auto* job = w.find<QLabel>("jobStatus");
+        QTRY_COMPARE(job->text(), QStringLiteral("Job: none"));  // the status bar has caught up
         const QMap<QString, QString> english = visibleTexts(&w.window);
 
         QVERIFY(w.languages.setLanguage(QStringLiteral("zh_HK")));
-        QTest::qWait(300);
+        QTRY_COMPARE(job->text(), QStringLiteral("工作：無"));  // the switch has reached the window
         const QMap<QString, QString> chinese = visibleTexts(&w.window);
         // Texts with English words left after the switch (names and units aside).
         static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
@@ -570,7 +569,7 @@ class TestGuiWindow : public QObject {
         }
         // Back to English: every text is the one it was.
         QVERIFY(w.languages.setLanguage(QStringLiteral("en")));
-        QTest::qWait(300);
+        QTRY_COMPARE(job->text(), QStringLiteral("Job: none"));
         const QMap<QString, QString> back = visibleTexts(&w.window);
         QStringList changed;
         for (auto it = english.begin(); it != english.end(); ++it) {

@@ -299,17 +299,17 @@ void TestMainWindow::wheel_overAnUnfocusedSettingScrollsAndLeavesIt() {
     // The rig's Link page scrolls in a short window (its buttons stay above the pages).
     for (int height = 800; height >= 500 && panel->verticalScrollBar()->maximum() == 0; height -= 50) {
         window.resize(1280, height);
-        QTest::qWait(50);
+        QCoreApplication::processEvents();  // the new layout
     }
     QVERIFY(panel->verticalScrollBar()->maximum() > 0);
     panel->verticalScrollBar()->setValue(0);
-    QTest::qWait(50);
+    QCoreApplication::processEvents();
     QVERIFY(!protocol->hasFocus());
     wheel(1);
     QCOMPARE(protocol->currentIndex(), before);
     QVERIFY(panel->verticalScrollBar()->value() > 0);
     panel->verticalScrollBar()->setValue(0);
-    QTest::qWait(50);
+    QCoreApplication::processEvents();
     // Clicked into (focused): the wheel changes it, as everywhere else.
     protocol->setFocus();
     QTRY_VERIFY(protocol->hasFocus());
