@@ -97,8 +97,12 @@ bool DemonstrationStream::append(double time, const Eigen::VectorXd& state,
     lastTime_ = time;
     lastState_ = state;
     lastAction_ = action;
-    // The first row at once, so the file is a demonstration from the first sample on.
-    if (rows() > 1 && sinceFlush_.isValid() && sinceFlush_.elapsed() < flushIntervalMs_) {
+    // The first row at once, so the file is a demonstration from the first sample on; then
+    // every interval of wall time, and every interval of the take's own time: a burst of
+    // samples (a backlog of camera frames handled at once) leaves no more of the take unwritten.
+    const double takeTime = time - firstTime_;
+    if (rows() > 1 && sinceFlush_.isValid() && sinceFlush_.elapsed() < flushIntervalMs_ &&
+        takeTime - flushedTime_ < flushIntervalMs_ * 1e-3) {
         return true;
     }
     return flush(error);
@@ -114,6 +118,7 @@ bool DemonstrationStream::flush(QString* error) {
         return false;
     }
     pending_.clear();
+    flushedTime_ = started_ ? lastTime_ - firstTime_ : 0.0;
     return true;
 }
 

@@ -22,8 +22,8 @@ namespace prisca::core {
 ///
 /// Crash safety: the rows go to partPath(path), whose header is written and flushed when it
 /// opens, the first row with its sample; rows are flushed at least every `flushIntervalMs` of
-/// wall time, so a crash or a kill
-/// loses at most that much of the take and never the header, and what is left is a readable
+/// wall time and of the take's own time (a burst of samples handed over at once included), so a
+/// crash or a kill loses at most that much of the take and never the header, and what is left is a readable
 /// demonstration. finish() renames the partial file onto `path` in one step, so an older file
 /// there is either kept whole or replaced whole. Not thread-safe; one thread at a time.
 class DemonstrationStream {
@@ -80,6 +80,7 @@ class DemonstrationStream {
     bool started_ = false;
     double firstTime_ = 0.0;
     double lastTime_ = 0.0;
+    double flushedTime_ = 0.0;  ///< the take's time [s] of the last sample flushed
     Eigen::VectorXd lastState_, lastAction_;
     std::vector<Eigen::VectorXd> rowStates_, rowActions_;
 };

@@ -95,6 +95,29 @@ class TestDemonstrationStream : public QObject {
         }
     }
 
+    void aBurstOfSamples_isFlushedByTheTakesOwnTime() {
+        // A backlog of camera frames handled at once: 1.9 s of the take handed over in far less
+        // than the quarter second of wall time. The file must still lag the take by at most a
+        // quarter second of the take, not hold only its first row.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("rec.csv");
+        const QString part = DemonstrationStream::partPath(path);
+        DemonstrationStream stream(250);
+        QString error;
+        QVERIFY(stream.open(path, header(), kAngles, &error));
+        const double last = 1.9;
+        for (int k = 0; k * 0.025 <= last + 1e-9; ++k) {
+            QVERIFY(stream.append(k * 0.025, Eigen::Vector2d(0.01 * k, 0.0),
+                                  Eigen::VectorXd::Zero(1), &error));
+        }
+        FileError readError;
+        const auto onDisk = readDemonstrationCsv(part, &readError);  // as a kill would leave it
+        QVERIFY2(onDisk, qPrintable(readError.toString()));
+        const double written = (onDisk->length() - 1) * onDisk->dt;
+        QVERIFY2(written >= last - 0.25 - 1e-9, qPrintable(QString::number(written)));
+        QVERIFY(written < last);  // and it did not flush every row
+    }
+
     void samplesAtTheirOwnTimes_becomeEvenRows() {
         // A 60 fps camera, 1 ms of jitter on every third frame, frames 10 and 11 lost, and a
         // pose-less gap from frame 50 to 69 (no samples): the rows keep the gap's length. The car
