@@ -17,6 +17,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -94,6 +95,9 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     start_->setObjectName(QStringLiteral("startExperiment"));
     cancel_->setObjectName(QStringLiteral("cancelExperiment"));
     progress_->setObjectName(QStringLiteral("experimentProgress"));
+    status_->setObjectName(QStringLiteral("experimentStatus"));
+    exportTable_->setObjectName(QStringLiteral("exportTable"));
+    exportFigure_->setObjectName(QStringLiteral("exportFigure"));
     table_->setObjectName(QStringLiteral("experimentTable"));
     table_->setMinimumHeight(60);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -180,8 +184,6 @@ void ExperimentsPanel::start() {
     }
     ExperimentRequest request;
     request.kind = static_cast<ExperimentRequest::Kind>(kind_->currentData().toInt());
-    // Which demonstration the result is about, named in its caption and every export.
-    demonstrationUsed_ = session_.demonstrationDescription();
     if (request.kind == ExperimentRequest::Kind::Table1 && !session_.profile().info.pose) {
         QMessageBox::information(
             this, tr("Experiment"),
@@ -194,6 +196,16 @@ void ExperimentsPanel::start() {
     request.settings.seed = static_cast<std::uint64_t>(seed_->value());
     request.budgetSteps = budget_->value();
     request.settings.threads = std::max(1, QThread::idealThreadCount());
+    // What the result will be about (its caption and every export say so), whatever the spin
+    // boxes show later.
+    pending_ = ExperimentRecord();
+    pending_.curves = request.kind == ExperimentRequest::Kind::LearningCurves;
+    pending_.plant = session_.plant();
+    pending_.poseTarget = session_.profile().info.pose.has_value();
+    pending_.count = count_->value();
+    pending_.seed = seed_->value();
+    pending_.budget = budget_->value();
+    pending_.demonstration = session_.demonstrationDescription();
     QSettings settings;
     settings.setValue("experiments/kind", kind_->currentIndex());
     settings.setValue("experiments/count", count_->value());
@@ -225,8 +237,12 @@ void ExperimentsPanel::setRunning(bool running) {
 void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> result) {
     lastTable1_ = result;
     lastCurves_.reset();
+    record_ = pending_;
+    record_.finished = QDateTime::currentDateTime();
+    showsKept_ = false;
     displayTable1(*result);
     showStatus(status_, tr("Experiments"), caption_);
+    keepResult();
     setRunning(false);
     emit finished();
 }
@@ -237,10 +253,10 @@ void ExperimentsPanel::displayTable1(const sim::Table1Result& table1) {
     rows_ = sim::table1Rows(*result, &done);
     caption_ = tr("Slide parking in simulation (%1): %2 trials per method, seed %3; "
                   "demonstration: %4")
-                   .arg(session_.plant())
-                   .arg(count_->value())
-                   .arg(seed_->value())
-                   .arg(demonstrationUsed_);
+                   .arg(record_.plant)
+                   .arg(record_.count)
+                   .arg(record_.seed)
+                   .arg(record_.demonstration);
     if (result->cancelled) {
         caption_ += tr(" (cancelled: %1 trials finished)").arg(done);
     }
@@ -253,7 +269,7 @@ void ExperimentsPanel::displayTable1(const sim::Table1Result& table1) {
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
         // A row with fewer trials than asked (a cancelled batch) says so.
-        const bool partial = result->cancelled && row.position.count < count_->value();
+        const bool partial = result->cancelled && row.position.count < record_.count;
         const QStringList cells = {partial ? row.shownLabel() + tr(" (partial)") : row.shownLabel(),
                                    QString::number(row.position.count), plusMinus(row.position),
                                    variance(row.position), plusMinus(row.orientation),
@@ -275,8 +291,12 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
     lastCurves_ = curves;
     lastCurvesCancelled_ = cancelled;
     lastTable1_.reset();
+    record_ = pending_;
+    record_.finished = QDateTime::currentDateTime();
+    showsKept_ = false;
     displayCurves(curves, cancelled);
     showStatus(status_, tr("Experiments"), caption_);
+    keepResult();
     setRunning(false);
     emit finished();
 }
@@ -286,11 +306,11 @@ void ExperimentsPanel::displayCurves(
     rows_.clear();
     caption_ = tr("Learning curves (%1): %2 runs per method, %3 steps each, seed %4; "
                   "demonstration: %5")
-                   .arg(session_.plant())
-                   .arg(count_->value())
-                   .arg(budget_->value())
-                   .arg(seed_->value())
-                   .arg(demonstrationUsed_);
+                   .arg(record_.plant)
+                   .arg(record_.count)
+                   .arg(record_.budget)
+                   .arg(record_.seed)
+                   .arg(record_.demonstration);
     if (cancelled) {
         caption_ += tr(" (cancelled)");
     }
@@ -327,12 +347,55 @@ void ExperimentsPanel::displayCurves(
             table_->setItem(r, col, new QTableWidgetItem(cells[col]));
         }
     }
-    const QString yLabel = session_.profile().info.pose
+    const QString yLabel = record_.poseTarget
                                ? tr("mean squared position error [m²]")
                                : tr("mean squared joint-angle error [rad²]");
     figure_ = figures::learningCurveFigure(methods, seconds, bands, yLabel);
     hasFigure_ = true;
     showFigure();
+}
+
+void ExperimentsPanel::keepResult() {
+    KeptExperiment kept;
+    kept.record = record_;
+    kept.table1 = lastTable1_;
+    kept.curves = lastCurves_;
+    kept.curvesCancelled = lastCurvesCancelled_;
+    QString error;
+    if (!saveKeptExperiment(keptExperimentPath(), kept, &error)) {
+        logMessage(tr("Experiments"), MessageLevel::Warning,
+                   tr("The result could not be kept for the next session: %1").arg(error));
+    }
+}
+
+void ExperimentsPanel::restoreKeptResult() {
+    const QString path = keptExperimentPath();
+    if (!QFileInfo::exists(path)) {
+        return;
+    }
+    QString error;
+    const auto kept = loadKeptExperiment(path, &error);
+    if (!kept) {
+        logMessage(tr("Experiments"), MessageLevel::Warning,
+                   tr("The last session's experiment could not be shown again: %1").arg(error));
+        return;
+    }
+    record_ = kept->record;
+    lastTable1_ = kept->table1;
+    lastCurves_ = kept->curves;
+    lastCurvesCancelled_ = kept->curvesCancelled;
+    showsKept_ = true;
+    const QString finished = QLocale().toString(record_.finished, QLocale::ShortFormat);
+    if (lastTable1_) {
+        displayTable1(*lastTable1_);
+    } else {
+        displayCurves(lastCurves_, lastCurvesCancelled_);
+    }
+    setRunning(running_);  // the exports of what is shown
+    showStatus(status_, tr("Experiments"), [finished] {
+        return tr("The last experiment, finished %1, is shown again; Start runs a new one.")
+            .arg(finished);
+    });
 }
 
 void ExperimentsPanel::showFigure() {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/ExperimentArchive.h"
 #include "app/ExperimentWorker.h"
 #include "app/plot/Figure.h"
 #include "core/Table1Report.h"
@@ -21,7 +22,7 @@ class LabSession;
 /// Table I (slide parking) and the learning curves (Fig. 3b) in the background on the session's
 /// target, with a progress bar and Cancel (what finished is kept); the result table and figure
 /// (Fig. 7 or Fig. 3b); export of the table as Markdown, CSV or LaTeX and of the figure as PNG or
-/// SVG.
+/// SVG. The last result is kept on disk (keptExperimentPath()) and shown again after a restart.
 class ExperimentsPanel : public QWidget {
     Q_OBJECT
   public:
@@ -41,6 +42,13 @@ class ExperimentsPanel : public QWidget {
     /// Writes the table (format from the suffix: .md, .csv, .tex) or the figure (.png, .svg).
     bool exportTable(const QString& path, QString* error) const;
     bool exportFigure(const QString& path, QString* error) const;
+    /// What the result shown is about (empty plant before any result).
+    const ExperimentRecord& shownRecord() const { return record_; }
+    /// Shows the result kept by an earlier session, if there is one (the window calls it once
+    /// its message log is ready; a damaged kept file is logged and nothing is shown).
+    void restoreKeptResult();
+    /// True while the result shown is one kept from an earlier session.
+    bool showsKeptResult() const { return showsKept_; }
 
   signals:
     void finished();
@@ -58,6 +66,8 @@ class ExperimentsPanel : public QWidget {
     void displayCurves(const std::shared_ptr<const std::vector<sim::CurveSummary>>& curves,
                        bool cancelled);
     void showFigure();
+    /// Writes the result just shown to keptExperimentPath() (a failure is logged, not fatal).
+    void keepResult();
     void setRunning(bool running);
     void askExportTable();
     void askExportFigure();
@@ -84,7 +94,9 @@ class ExperimentsPanel : public QWidget {
     std::vector<core::Table1Row> rows_;
     QString caption_;
     plot::Figure figure_;
-    QString demonstrationUsed_;  ///< the demonstration of the experiment under way or shown
+    ExperimentRecord pending_;  ///< the experiment under way
+    ExperimentRecord record_;   ///< the result shown
+    bool showsKept_ = false;
     bool hasFigure_ = false;
     std::shared_ptr<const sim::Table1Result> lastTable1_;
     std::shared_ptr<const std::vector<sim::CurveSummary>> lastCurves_;

@@ -125,6 +125,7 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
     // messages of before the restart instead.
     log_->clear();
     log_->append(session_->messages());
+    experimentsPanel_->restoreKeptResult();  // the last experiment's result, shown again
     createMenus();
     createToolBar();
     for (QWidget* field : findChildren<QWidget*>()) {

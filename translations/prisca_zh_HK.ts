@@ -422,52 +422,52 @@
 <context>
     <name>PaperFigures</name>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="38"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="42"/>
         <source>Slide parking: every trial&apos;s path and end posture (lot dashed red)</source>
         <translation>滑行泊車：每次試驗的路徑與最終姿態（車位為紅色虛線）</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="53"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="57"/>
         <source>: close-up of the lot</source>
         <translation>：車位特寫</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="55"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="59"/>
         <source>x [cm]</source>
         <translation>x [cm]</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="56"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="60"/>
         <source>y [cm]</source>
         <translation>y [cm]</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="99"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="103"/>
         <source>Learning curves: mean and 95% band</source>
         <translation>學習曲線：平均值與 95% 區間</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="100"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="104"/>
         <source>simulated experience [s]</source>
         <translation>模擬經驗 [s]</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="127"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="131"/>
         <source>Lemma 4.1: Var(D) over τ&apos; = 2H steps</source>
         <translation>引理 4.1：τ&apos; = 2H 步內的 Var(D)</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="161"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="165"/>
         <source>%1: RMS %2 m in time, %3 m to the path (mean of %4)</source>
         <translation>%1：按時間 RMS %2 m，距路徑 %3 m（%4 次的平均）</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="166"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="170"/>
         <source>x [m]</source>
         <translation>x [m]</translation>
     </message>
     <message>
-        <location filename="../app/figures/PaperFigures.cpp" line="167"/>
+        <location filename="../app/figures/PaperFigures.cpp" line="171"/>
         <source>y [m]</source>
         <translation>y [m]</translation>
     </message>
@@ -668,204 +668,222 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="157"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="187"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="161"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="189"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="188"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="215"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="212"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="261"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="252"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="238"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="254"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="212"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="229"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="279"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="215"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="244"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="298"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="366"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="379"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="395"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="250"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="257"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="273"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="287"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="295"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="315"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="301"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="331"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="351"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="332"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="352"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="407"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="367"/>
+        <source>The result could not be kept for the next session: %1</source>
+        <translation>結果未能保留至下次使用：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="380"/>
+        <source>The last session&apos;s experiment could not be shown again: %1</source>
+        <translation>上次的實驗未能再次顯示：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
+        <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
+        <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="470"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="420"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="483"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="429"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="441"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="492"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="504"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="430"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="493"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="446"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="509"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="519"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="447"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="510"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="468"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="531"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="469"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="532"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="534"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="534"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="472"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="473"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="536"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="474"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="475"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="538"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="477"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="540"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="478"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="541"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="479"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="542"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="480"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="543"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -1159,123 +1177,123 @@
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="139"/>
-        <location filename="../app/MainWindow.cpp" line="672"/>
-        <location filename="../app/MainWindow.cpp" line="678"/>
+        <location filename="../app/MainWindow.cpp" line="140"/>
+        <location filename="../app/MainWindow.cpp" line="673"/>
+        <location filename="../app/MainWindow.cpp" line="679"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="142"/>
-        <location filename="../app/MainWindow.cpp" line="599"/>
-        <location filename="../app/MainWindow.cpp" line="607"/>
-        <location filename="../app/MainWindow.cpp" line="609"/>
-        <location filename="../app/MainWindow.cpp" line="623"/>
+        <location filename="../app/MainWindow.cpp" line="143"/>
+        <location filename="../app/MainWindow.cpp" line="600"/>
+        <location filename="../app/MainWindow.cpp" line="608"/>
+        <location filename="../app/MainWindow.cpp" line="610"/>
+        <location filename="../app/MainWindow.cpp" line="624"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="320"/>
+        <location filename="../app/MainWindow.cpp" line="321"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="385"/>
-        <location filename="../app/MainWindow.cpp" line="475"/>
-        <location filename="../app/MainWindow.cpp" line="479"/>
+        <location filename="../app/MainWindow.cpp" line="386"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
+        <location filename="../app/MainWindow.cpp" line="480"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="435"/>
+        <location filename="../app/MainWindow.cpp" line="436"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="438"/>
+        <location filename="../app/MainWindow.cpp" line="439"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="441"/>
+        <location filename="../app/MainWindow.cpp" line="442"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="449"/>
+        <location filename="../app/MainWindow.cpp" line="450"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="452"/>
+        <location filename="../app/MainWindow.cpp" line="453"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="455"/>
+        <location filename="../app/MainWindow.cpp" line="456"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="458"/>
+        <location filename="../app/MainWindow.cpp" line="459"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="461"/>
+        <location filename="../app/MainWindow.cpp" line="462"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="464"/>
+        <location filename="../app/MainWindow.cpp" line="465"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="475"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="508"/>
-        <location filename="../app/MainWindow.cpp" line="591"/>
+        <location filename="../app/MainWindow.cpp" line="509"/>
+        <location filename="../app/MainWindow.cpp" line="592"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="509"/>
+        <location filename="../app/MainWindow.cpp" line="510"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="520"/>
-        <location filename="../app/MainWindow.cpp" line="618"/>
+        <location filename="../app/MainWindow.cpp" line="521"/>
+        <location filename="../app/MainWindow.cpp" line="619"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="521"/>
+        <location filename="../app/MainWindow.cpp" line="522"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="534"/>
-        <location filename="../app/MainWindow.cpp" line="915"/>
+        <location filename="../app/MainWindow.cpp" line="535"/>
+        <location filename="../app/MainWindow.cpp" line="916"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="558"/>
+        <location filename="../app/MainWindow.cpp" line="559"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="558"/>
+        <location filename="../app/MainWindow.cpp" line="559"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="592"/>
+        <location filename="../app/MainWindow.cpp" line="593"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1284,202 +1302,202 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="600"/>
+        <location filename="../app/MainWindow.cpp" line="601"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="607"/>
+        <location filename="../app/MainWindow.cpp" line="608"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="609"/>
+        <location filename="../app/MainWindow.cpp" line="610"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="623"/>
+        <location filename="../app/MainWindow.cpp" line="624"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="664"/>
+        <location filename="../app/MainWindow.cpp" line="665"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="665"/>
+        <location filename="../app/MainWindow.cpp" line="666"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="666"/>
+        <location filename="../app/MainWindow.cpp" line="667"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="667"/>
+        <location filename="../app/MainWindow.cpp" line="668"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="668"/>
+        <location filename="../app/MainWindow.cpp" line="669"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="669"/>
+        <location filename="../app/MainWindow.cpp" line="670"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="670"/>
+        <location filename="../app/MainWindow.cpp" line="671"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="671"/>
+        <location filename="../app/MainWindow.cpp" line="672"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="673"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="675"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="675"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="679"/>
+        <location filename="../app/MainWindow.cpp" line="680"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="680"/>
+        <location filename="../app/MainWindow.cpp" line="681"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="681"/>
+        <location filename="../app/MainWindow.cpp" line="682"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="682"/>
+        <location filename="../app/MainWindow.cpp" line="683"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="684"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="684"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="686"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="686"/>
+        <location filename="../app/MainWindow.cpp" line="687"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="687"/>
+        <location filename="../app/MainWindow.cpp" line="688"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="689"/>
+        <location filename="../app/MainWindow.cpp" line="690"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="699"/>
+        <location filename="../app/MainWindow.cpp" line="700"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="702"/>
+        <location filename="../app/MainWindow.cpp" line="703"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="707"/>
+        <location filename="../app/MainWindow.cpp" line="708"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="710"/>
+        <location filename="../app/MainWindow.cpp" line="711"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="713"/>
+        <location filename="../app/MainWindow.cpp" line="714"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="735"/>
-        <location filename="../app/MainWindow.cpp" line="755"/>
-        <location filename="../app/MainWindow.cpp" line="757"/>
-        <location filename="../app/MainWindow.cpp" line="764"/>
-        <location filename="../app/MainWindow.cpp" line="767"/>
-        <location filename="../app/MainWindow.cpp" line="799"/>
+        <location filename="../app/MainWindow.cpp" line="736"/>
+        <location filename="../app/MainWindow.cpp" line="756"/>
+        <location filename="../app/MainWindow.cpp" line="758"/>
+        <location filename="../app/MainWindow.cpp" line="765"/>
+        <location filename="../app/MainWindow.cpp" line="768"/>
+        <location filename="../app/MainWindow.cpp" line="800"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="736"/>
+        <location filename="../app/MainWindow.cpp" line="737"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="737"/>
+        <location filename="../app/MainWindow.cpp" line="738"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="755"/>
+        <location filename="../app/MainWindow.cpp" line="756"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="765"/>
+        <location filename="../app/MainWindow.cpp" line="766"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="778"/>
+        <location filename="../app/MainWindow.cpp" line="779"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="779"/>
+        <location filename="../app/MainWindow.cpp" line="780"/>
         <source>Work is under way:
 
 %1
@@ -1492,98 +1510,98 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="785"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="786"/>
+        <location filename="../app/MainWindow.cpp" line="787"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="787"/>
+        <location filename="../app/MainWindow.cpp" line="788"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="788"/>
+        <location filename="../app/MainWindow.cpp" line="789"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="799"/>
+        <location filename="../app/MainWindow.cpp" line="800"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="829"/>
+        <location filename="../app/MainWindow.cpp" line="830"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="829"/>
+        <location filename="../app/MainWindow.cpp" line="830"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="841"/>
+        <location filename="../app/MainWindow.cpp" line="842"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="843"/>
+        <location filename="../app/MainWindow.cpp" line="844"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="847"/>
+        <location filename="../app/MainWindow.cpp" line="848"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="850"/>
+        <location filename="../app/MainWindow.cpp" line="851"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="866"/>
+        <location filename="../app/MainWindow.cpp" line="867"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="866"/>
+        <location filename="../app/MainWindow.cpp" line="867"/>
         <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
         <translation>緊急停止，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="872"/>
+        <location filename="../app/MainWindow.cpp" line="873"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="873"/>
+        <location filename="../app/MainWindow.cpp" line="874"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="875"/>
+        <location filename="../app/MainWindow.cpp" line="876"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="882"/>
+        <location filename="../app/MainWindow.cpp" line="883"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="891"/>
-        <location filename="../app/MainWindow.cpp" line="897"/>
+        <location filename="../app/MainWindow.cpp" line="892"/>
+        <location filename="../app/MainWindow.cpp" line="898"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="891"/>
+        <location filename="../app/MainWindow.cpp" line="892"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -1728,47 +1746,47 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLogPanel</name>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="175"/>
+        <location filename="../app/MessageLogPanel.cpp" line="172"/>
         <source>All messages</source>
         <translation>所有訊息</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="176"/>
+        <location filename="../app/MessageLogPanel.cpp" line="173"/>
         <source>Warnings and errors</source>
         <translation>警告與錯誤</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="175"/>
         <source>Copy</source>
         <translation>複製</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/MessageLogPanel.cpp" line="176"/>
         <source>Copy the selected lines, or all shown, as tab-separated text (Ctrl+C)</source>
         <translation>以定位字元分隔的文字複製選取的行，或全部顯示的行 (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="180"/>
+        <location filename="../app/MessageLogPanel.cpp" line="177"/>
         <source>Clear</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="181"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="181"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Level</source>
         <translation>級別</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="181"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="181"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Message</source>
         <translation>訊息</translation>
     </message>
@@ -2008,230 +2026,230 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="330"/>
+        <location filename="../app/RigPanel.cpp" line="336"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="331"/>
-        <location filename="../app/RigPanel.cpp" line="338"/>
+        <location filename="../app/RigPanel.cpp" line="337"/>
+        <location filename="../app/RigPanel.cpp" line="344"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="337"/>
+        <location filename="../app/RigPanel.cpp" line="343"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="437"/>
-        <location filename="../app/RigPanel.cpp" line="448"/>
+        <location filename="../app/RigPanel.cpp" line="443"/>
+        <location filename="../app/RigPanel.cpp" line="454"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="438"/>
+        <location filename="../app/RigPanel.cpp" line="444"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="449"/>
+        <location filename="../app/RigPanel.cpp" line="455"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="522"/>
+        <location filename="../app/RigPanel.cpp" line="528"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="525"/>
+        <location filename="../app/RigPanel.cpp" line="531"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
+        <location filename="../app/RigPanel.cpp" line="546"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="572"/>
+        <location filename="../app/RigPanel.cpp" line="578"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="612"/>
+        <location filename="../app/RigPanel.cpp" line="618"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
+        <location filename="../app/RigPanel.cpp" line="613"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="179"/>
-        <location filename="../app/RigPanel.cpp" line="959"/>
+        <location filename="../app/RigPanel.cpp" line="965"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="363"/>
+        <location filename="../app/RigPanel.cpp" line="369"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374"/>
-        <location filename="../app/RigPanel.cpp" line="1074"/>
+        <location filename="../app/RigPanel.cpp" line="380"/>
+        <location filename="../app/RigPanel.cpp" line="1080"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="375"/>
-        <location filename="../app/RigPanel.cpp" line="1062"/>
+        <location filename="../app/RigPanel.cpp" line="381"/>
+        <location filename="../app/RigPanel.cpp" line="1068"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="388"/>
+        <location filename="../app/RigPanel.cpp" line="394"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="416"/>
+        <location filename="../app/RigPanel.cpp" line="422"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="421"/>
+        <location filename="../app/RigPanel.cpp" line="427"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="517"/>
+        <location filename="../app/RigPanel.cpp" line="523"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="597"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="600"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="633"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="643"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="642"/>
+        <location filename="../app/RigPanel.cpp" line="648"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="645"/>
+        <location filename="../app/RigPanel.cpp" line="651"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="648"/>
+        <location filename="../app/RigPanel.cpp" line="654"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="649"/>
+        <location filename="../app/RigPanel.cpp" line="655"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="306"/>
-        <location filename="../app/RigPanel.cpp" line="317"/>
-        <location filename="../app/RigPanel.cpp" line="710"/>
-        <location filename="../app/RigPanel.cpp" line="719"/>
+        <location filename="../app/RigPanel.cpp" line="312"/>
+        <location filename="../app/RigPanel.cpp" line="323"/>
+        <location filename="../app/RigPanel.cpp" line="716"/>
+        <location filename="../app/RigPanel.cpp" line="725"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="317"/>
+        <location filename="../app/RigPanel.cpp" line="323"/>
         <source>Camera stopped.</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="390"/>
-        <location filename="../app/RigPanel.cpp" line="529"/>
-        <location filename="../app/RigPanel.cpp" line="537"/>
-        <location filename="../app/RigPanel.cpp" line="540"/>
-        <location filename="../app/RigPanel.cpp" line="554"/>
-        <location filename="../app/RigPanel.cpp" line="565"/>
+        <location filename="../app/RigPanel.cpp" line="396"/>
+        <location filename="../app/RigPanel.cpp" line="535"/>
+        <location filename="../app/RigPanel.cpp" line="543"/>
+        <location filename="../app/RigPanel.cpp" line="546"/>
+        <location filename="../app/RigPanel.cpp" line="560"/>
         <location filename="../app/RigPanel.cpp" line="571"/>
-        <location filename="../app/RigPanel.cpp" line="591"/>
-        <location filename="../app/RigPanel.cpp" line="617"/>
-        <location filename="../app/RigPanel.cpp" line="626"/>
-        <location filename="../app/RigPanel.cpp" line="653"/>
+        <location filename="../app/RigPanel.cpp" line="577"/>
+        <location filename="../app/RigPanel.cpp" line="597"/>
+        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="659"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="416"/>
-        <location filename="../app/RigPanel.cpp" line="420"/>
-        <location filename="../app/RigPanel.cpp" line="1113"/>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
+        <location filename="../app/RigPanel.cpp" line="422"/>
+        <location filename="../app/RigPanel.cpp" line="426"/>
+        <location filename="../app/RigPanel.cpp" line="1119"/>
+        <location filename="../app/RigPanel.cpp" line="1123"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="720"/>
+        <location filename="../app/RigPanel.cpp" line="726"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="739"/>
+        <location filename="../app/RigPanel.cpp" line="745"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="739"/>
-        <location filename="../app/RigPanel.cpp" line="877"/>
-        <location filename="../app/RigPanel.cpp" line="961"/>
+        <location filename="../app/RigPanel.cpp" line="745"/>
+        <location filename="../app/RigPanel.cpp" line="883"/>
+        <location filename="../app/RigPanel.cpp" line="967"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="352"/>
-        <location filename="../app/RigPanel.cpp" line="716"/>
-        <location filename="../app/RigPanel.cpp" line="760"/>
-        <location filename="../app/RigPanel.cpp" line="772"/>
-        <location filename="../app/RigPanel.cpp" line="781"/>
-        <location filename="../app/RigPanel.cpp" line="788"/>
+        <location filename="../app/RigPanel.cpp" line="358"/>
+        <location filename="../app/RigPanel.cpp" line="722"/>
+        <location filename="../app/RigPanel.cpp" line="766"/>
+        <location filename="../app/RigPanel.cpp" line="778"/>
+        <location filename="../app/RigPanel.cpp" line="787"/>
+        <location filename="../app/RigPanel.cpp" line="794"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="349"/>
+        <location filename="../app/RigPanel.cpp" line="355"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="353"/>
+        <location filename="../app/RigPanel.cpp" line="359"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="499"/>
+        <location filename="../app/RigPanel.cpp" line="505"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
         <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="761"/>
+        <location filename="../app/RigPanel.cpp" line="767"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -2240,421 +2258,421 @@ What should happen to it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="782"/>
+        <location filename="../app/RigPanel.cpp" line="788"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="819"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="813"/>
+        <location filename="../app/RigPanel.cpp" line="819"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="816"/>
+        <location filename="../app/RigPanel.cpp" line="822"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="820"/>
+        <location filename="../app/RigPanel.cpp" line="826"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="825"/>
+        <location filename="../app/RigPanel.cpp" line="831"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="832"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="829"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="829"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="850"/>
+        <location filename="../app/RigPanel.cpp" line="856"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
-        <location filename="../app/RigPanel.cpp" line="862"/>
+        <location filename="../app/RigPanel.cpp" line="859"/>
+        <location filename="../app/RigPanel.cpp" line="868"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
-        <location filename="../app/RigPanel.cpp" line="864"/>
+        <location filename="../app/RigPanel.cpp" line="861"/>
+        <location filename="../app/RigPanel.cpp" line="870"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="862"/>
+        <location filename="../app/RigPanel.cpp" line="868"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="907"/>
+        <location filename="../app/RigPanel.cpp" line="913"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="908"/>
+        <location filename="../app/RigPanel.cpp" line="914"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="909"/>
+        <location filename="../app/RigPanel.cpp" line="915"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="910"/>
+        <location filename="../app/RigPanel.cpp" line="916"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="916"/>
+        <location filename="../app/RigPanel.cpp" line="922"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="917"/>
+        <location filename="../app/RigPanel.cpp" line="923"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="918"/>
+        <location filename="../app/RigPanel.cpp" line="924"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="919"/>
+        <location filename="../app/RigPanel.cpp" line="925"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="920"/>
+        <location filename="../app/RigPanel.cpp" line="926"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="921"/>
+        <location filename="../app/RigPanel.cpp" line="927"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="923"/>
+        <location filename="../app/RigPanel.cpp" line="929"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="925"/>
+        <location filename="../app/RigPanel.cpp" line="931"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="926"/>
+        <location filename="../app/RigPanel.cpp" line="932"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="927"/>
+        <location filename="../app/RigPanel.cpp" line="933"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="928"/>
+        <location filename="../app/RigPanel.cpp" line="934"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="929"/>
+        <location filename="../app/RigPanel.cpp" line="935"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="930"/>
+        <location filename="../app/RigPanel.cpp" line="936"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="931"/>
+        <location filename="../app/RigPanel.cpp" line="937"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="934"/>
+        <location filename="../app/RigPanel.cpp" line="940"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="935"/>
+        <location filename="../app/RigPanel.cpp" line="941"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="936"/>
+        <location filename="../app/RigPanel.cpp" line="942"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="938"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="939"/>
+        <location filename="../app/RigPanel.cpp" line="945"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="940"/>
+        <location filename="../app/RigPanel.cpp" line="946"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="941"/>
+        <location filename="../app/RigPanel.cpp" line="947"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="942"/>
+        <location filename="../app/RigPanel.cpp" line="948"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="943"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="950"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="945"/>
+        <location filename="../app/RigPanel.cpp" line="951"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="946"/>
+        <location filename="../app/RigPanel.cpp" line="952"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="953"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
+        <location filename="../app/RigPanel.cpp" line="955"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="951"/>
+        <location filename="../app/RigPanel.cpp" line="957"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="953"/>
+        <location filename="../app/RigPanel.cpp" line="959"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="955"/>
+        <location filename="../app/RigPanel.cpp" line="961"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="960"/>
+        <location filename="../app/RigPanel.cpp" line="966"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="962"/>
+        <location filename="../app/RigPanel.cpp" line="968"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="963"/>
+        <location filename="../app/RigPanel.cpp" line="969"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="964"/>
+        <location filename="../app/RigPanel.cpp" line="970"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="967"/>
+        <location filename="../app/RigPanel.cpp" line="973"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="968"/>
+        <location filename="../app/RigPanel.cpp" line="974"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="970"/>
+        <location filename="../app/RigPanel.cpp" line="976"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="971"/>
+        <location filename="../app/RigPanel.cpp" line="977"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="972"/>
+        <location filename="../app/RigPanel.cpp" line="978"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="973"/>
+        <location filename="../app/RigPanel.cpp" line="979"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="976"/>
+        <location filename="../app/RigPanel.cpp" line="982"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="977"/>
+        <location filename="../app/RigPanel.cpp" line="983"/>
         <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
         <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="978"/>
+        <location filename="../app/RigPanel.cpp" line="984"/>
         <source>In %1; File &gt; Replay a trial bundle opens one</source>
         <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="980"/>
+        <location filename="../app/RigPanel.cpp" line="986"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="981"/>
+        <location filename="../app/RigPanel.cpp" line="987"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="982"/>
+        <location filename="../app/RigPanel.cpp" line="988"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="983"/>
-        <location filename="../app/RigPanel.cpp" line="985"/>
+        <location filename="../app/RigPanel.cpp" line="989"/>
+        <location filename="../app/RigPanel.cpp" line="991"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="984"/>
+        <location filename="../app/RigPanel.cpp" line="990"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="988"/>
+        <location filename="../app/RigPanel.cpp" line="994"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1014"/>
+        <location filename="../app/RigPanel.cpp" line="1020"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1014"/>
-        <location filename="../app/RigPanel.cpp" line="1019"/>
-        <location filename="../app/RigPanel.cpp" line="1046"/>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
+        <location filename="../app/RigPanel.cpp" line="1020"/>
+        <location filename="../app/RigPanel.cpp" line="1025"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1113"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1019"/>
+        <location filename="../app/RigPanel.cpp" line="1025"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1041"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1046"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
-        <location filename="../app/RigPanel.cpp" line="1064"/>
+        <location filename="../app/RigPanel.cpp" line="1066"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1092"/>
+        <location filename="../app/RigPanel.cpp" line="1098"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1098"/>
+        <location filename="../app/RigPanel.cpp" line="1104"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1102"/>
+        <location filename="../app/RigPanel.cpp" line="1108"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1113"/>
+        <location filename="../app/RigPanel.cpp" line="1119"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
+        <location filename="../app/RigPanel.cpp" line="1123"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1146"/>
+        <location filename="../app/RigPanel.cpp" line="1152"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1146"/>
-        <location filename="../app/RigPanel.cpp" line="1149"/>
         <location filename="../app/RigPanel.cpp" line="1152"/>
+        <location filename="../app/RigPanel.cpp" line="1155"/>
+        <location filename="../app/RigPanel.cpp" line="1158"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1149"/>
+        <location filename="../app/RigPanel.cpp" line="1155"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1152"/>
+        <location filename="../app/RigPanel.cpp" line="1158"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>

@@ -31,12 +31,16 @@ plot::Shape carOutline(const Eigen::Vector3d& pose, double length, double width,
 
 }  // namespace
 
+QStringList parkingFigureMethods() {
+    return {QStringLiteral("playback"), QStringLiteral("pd"), QStringLiteral("prisca")};
+}
+
 plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, double carWidth) {
     plot::Figure figure;
     figure.size = QSize(1500, 1000);
     figure.title =
         QCoreApplication::translate("PaperFigures", "Slide parking: every trial's path and end posture (lot dashed red)");
-    const QStringList shown = {"playback", "pd", "prisca"};
+    const QStringList shown = parkingFigureMethods();
     const QColor colours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e),
                               QColor(0x2c, 0xa0, 0x2c)};
     std::vector<plot::Axes> top, bottom;

@@ -16,6 +16,8 @@ namespace prisca::app::figures {
 /// manoeuvre; bottom: a close-up of the lot), in centimetres. Methods missing from the result
 /// are left out.
 plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, double carWidth);
+/// The methods whose paths parkingFigure draws, in its column order.
+QStringList parkingFigureMethods();
 
 /// Fig. 3b: mean tracking error and 95% band per method against simulated time, log scale.
 plot::Figure learningCurveFigure(const std::vector<QString>& methods,

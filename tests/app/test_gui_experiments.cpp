@@ -1,6 +1,11 @@
 // The Experiments panel driven offscreen: Table I in the background, exported and read back,
-// cancelled Table I and learning curves keeping what finished.
+// cancelled Table I and learning curves keeping what finished, the last result shown again after
+// a restart (and a damaged kept file refused, not shown).
 #include "GuiTestSupport.h"
+#include "app/ExperimentArchive.h"
+#include "app/MessageLog.h"
+
+#include <cmath>
 
 using namespace prisca::app;
 using namespace prisca::test;
@@ -50,6 +55,110 @@ class TestGuiExperiments : public QObject {
         const QString png = dir.filePath("fig7.png");
         QVERIFY2(panel->exportFigure(png, &error), qPrintable(error));
         QVERIFY(!QImage(png).isNull());
+
+        // The spin boxes changed after the run do not change what the result says it is.
+        const QString caption = panel->tableText(prisca::core::TableFormat::Markdown);
+        w.find<QSpinBox>("experimentCount")->setValue(7);
+        w.find<QSpinBox>("experimentSeed")->setValue(4242);
+        QCOMPARE(panel->shownRecord().count, 3);
+        QCOMPARE(panel->tableText(prisca::core::TableFormat::Markdown), caption);
+
+        // A restart shows the same result again, figure included, and says it is the kept one.
+        QStringList cells;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            for (int c = 0; c < table->columnCount(); ++c) {
+                cells << table->item(r, c)->text();
+            }
+        }
+        QVERIFY(!panel->showsKeptResult());
+        Window again;
+        auto* restored = again.find<ExperimentsPanel>("experimentsPanel");
+        QVERIFY(restored->showsKeptResult());
+        auto* restoredTable = again.find<QTableWidget>("experimentTable");
+        QStringList restoredCells;
+        for (int r = 0; r < restoredTable->rowCount(); ++r) {
+            for (int c = 0; c < restoredTable->columnCount(); ++c) {
+                restoredCells << restoredTable->item(r, c)->text();
+            }
+        }
+        QCOMPARE(restoredCells, cells);
+        QCOMPARE(restored->tableText(prisca::core::TableFormat::Markdown), caption);
+        QVERIFY(!again.find<QLabel>("experimentFigure")->pixmap().isNull());
+        QVERIFY(again.find<QAbstractButton>("exportTable")->isEnabled());
+        const QString status = again.find<QLabel>("experimentStatus")->text();
+        QVERIFY2(status.contains(QLatin1String("shown again")), qPrintable(status));
+    }
+
+    void experiments_keptCurvesRoundTrip_andADamagedFileIsRefused() {
+        QTemporaryDir dir;
+        KeptExperiment kept;
+        kept.record.curves = true;
+        kept.record.plant = QStringLiteral("acrobot");
+        kept.record.poseTarget = false;
+        kept.record.count = 2;
+        kept.record.seed = 9;
+        kept.record.budget = 3200;
+        kept.record.demonstration = QStringLiteral("a test");
+        kept.record.finished = QDateTime(QDate(2026, 12, 3), QTime(6, 30));
+        auto curves = std::make_shared<std::vector<prisca::sim::CurveSummary>>();
+        prisca::sim::CurveSummary c;
+        c.method = QStringLiteral("prisca");
+        c.steps = {0, 1600, 3200};
+        c.seconds = {0.0, 40.0, 80.0};
+        c.band.mean = {1.0, 0.5, std::nan("")};
+        c.band.lower = {0.9, 0.25, std::nan("")};
+        c.band.upper = {1.1, 0.75, std::nan("")};
+        c.band.standardDeviation = {0.1, 0.2, std::nan("")};
+        c.band.count = {2, 2, 0};
+        curves->push_back(c);
+        kept.curves = curves;
+        kept.curvesCancelled = true;
+        const QString path = dir.filePath("last.dat");
+        QString error;
+        QVERIFY2(saveKeptExperiment(path, kept, &error), qPrintable(error));
+        const auto back = loadKeptExperiment(path, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->record.plant, kept.record.plant);
+        QCOMPARE(back->record.finished, kept.record.finished);
+        QCOMPARE(back->record.budget, 3200LL);
+        QVERIFY(back->curvesCancelled);
+        QVERIFY(back->curves && !back->table1);
+        QCOMPARE(back->curves->at(0).steps, c.steps);
+        QCOMPARE(back->curves->at(0).band.mean[1], 0.5);
+        QVERIFY(std::isnan(back->curves->at(0).band.mean[2]));
+        QCOMPARE(back->curves->at(0).band.count, c.band.count);
+
+        // Cut short, or not ours: refused with the file named, never half shown.
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray whole = file.readAll();
+        file.close();
+        for (const QByteArray& bad : {whole.left(whole.size() - 5), QByteArray("hello world"),
+                                      whole + QByteArray("x")}) {
+            QFile out(path);
+            QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            out.write(bad);
+            out.close();
+            error.clear();
+            QVERIFY(!loadKeptExperiment(path, &error));
+            QVERIFY2(error.contains(path), qPrintable(error));
+        }
+
+        // The window with a damaged kept file starts empty and says why in its log.
+        QVERIFY(QDir().mkpath(QFileInfo(keptExperimentPath()).absolutePath()));
+        QFile damaged(keptExperimentPath());
+        QVERIFY(damaged.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        damaged.write(whole.left(20));
+        damaged.close();
+        Window w;
+        QVERIFY(!w.find<ExperimentsPanel>("experimentsPanel")->showsKeptResult());
+        QCOMPARE(w.find<QTableWidget>("experimentTable")->rowCount(), 0);
+        const auto& entries = w.window.messageLog().entries();
+        QVERIFY(std::any_of(entries.begin(), entries.end(), [](const LogEntry& e) {
+            return e.level == MessageLevel::Warning &&
+                   e.text.contains(QLatin1String("could not be shown again"));
+        }));
+        QFile::remove(keptExperimentPath());
     }
 
     void experiments_cancelledTable1ShowsDashesNotNan() {
