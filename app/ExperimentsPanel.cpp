@@ -107,6 +107,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     figureView_->setAlignment(Qt::AlignCenter);
     figureView_->setMinimumSize(200, 150);
     figureView_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    figureView_->installEventFilter(this);
     status_->setWordWrap(true);
 
     QSettings settings;
@@ -385,7 +386,7 @@ void ExperimentsPanel::restoreKeptResult() {
     lastCurves_ = kept->curves;
     lastCurvesCancelled_ = kept->curvesCancelled;
     showsKept_ = true;
-    const QString finished = QLocale().toString(record_.finished, QLocale::ShortFormat);
+    const QDateTime finished = record_.finished;
     if (lastTable1_) {
         displayTable1(*lastTable1_);
     } else {
@@ -394,7 +395,7 @@ void ExperimentsPanel::restoreKeptResult() {
     setRunning(running_);  // the exports of what is shown
     showStatus(status_, tr("Experiments"), [finished] {
         return tr("The last experiment, finished %1, is shown again; Start runs a new one.")
-            .arg(finished);
+            .arg(QLocale().toString(finished, QLocale::ShortFormat));
     });
 }
 
@@ -412,11 +413,11 @@ void ExperimentsPanel::showFigure() {
         figureView_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
 
-void ExperimentsPanel::resizeEvent(QResizeEvent* event) {
-    QWidget::resizeEvent(event);
-    if (hasFigure_) {
+bool ExperimentsPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == figureView_ && event->type() == QEvent::Resize && hasFigure_) {
         showFigure();
     }
+    return QWidget::eventFilter(watched, event);
 }
 
 QString ExperimentsPanel::tableText(core::TableFormat format) const {

@@ -55,7 +55,9 @@ class ExperimentsPanel : public QWidget {
 
   protected:
     void changeEvent(QEvent* event) override;
-    void resizeEvent(QResizeEvent* event) override;
+    /// The figure is redrawn at its view's size whenever that changes (a result restored before
+    /// the panel was first shown included).
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void retranslateUi();
