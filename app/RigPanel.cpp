@@ -980,8 +980,10 @@ void RigPanel::retranslateUi() {
                                    "the throttle forward and back and time the response in "
                                    "the camera"));
     drawFence_->setText(tr("Draw fence"));
-    saveBundles_->setText(tr("Save every trial as a bundle (poses, commands, 10 frames/s)"));
-    saveBundles_->setToolTip(tr("In %1; File > Replay a trial bundle opens one")
+    // Short enough for the page at 1280 px; the details in the tool tip.
+    saveBundles_->setText(tr("Save every trial as a bundle"));
+    saveBundles_->setToolTip(tr("Poses, commands and 10 camera frames a second, in %1; "
+                                "File > Replay a trial bundle opens one")
                                  .arg(QDir::toNativeSeparators(defaultBundleFolder())));
     replayLast_->setText(tr("Replay the last trial"));
     clearFence_->setText(tr("Clear fence"));

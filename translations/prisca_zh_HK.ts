@@ -668,222 +668,222 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="161"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="189"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="162"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="215"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="261"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="262"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="269"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="254"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="255"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="215"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="244"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="298"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="366"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="379"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="395"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="299"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="367"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="380"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="266"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="273"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="308"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="315"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="316"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="351"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="352"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="352"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="353"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="367"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="368"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="380"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="381"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="397"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="470"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="483"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="484"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="492"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="504"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="493"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="505"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="493"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="494"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="509"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="519"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="510"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="520"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="510"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="511"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="531"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="532"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="532"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="533"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="534"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="534"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="536"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="536"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="538"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="538"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="539"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="540"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="541"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="541"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="542"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="542"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="543"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="543"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="544"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
@@ -2100,13 +2100,13 @@ What should happen to it?</source>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="380"/>
-        <location filename="../app/RigPanel.cpp" line="1080"/>
+        <location filename="../app/RigPanel.cpp" line="1082"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="381"/>
-        <location filename="../app/RigPanel.cpp" line="1068"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
@@ -2201,8 +2201,8 @@ What should happen to it?</source>
     <message>
         <location filename="../app/RigPanel.cpp" line="422"/>
         <location filename="../app/RigPanel.cpp" line="426"/>
-        <location filename="../app/RigPanel.cpp" line="1119"/>
-        <location filename="../app/RigPanel.cpp" line="1123"/>
+        <location filename="../app/RigPanel.cpp" line="1121"/>
+        <location filename="../app/RigPanel.cpp" line="1125"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
@@ -2555,124 +2555,124 @@ What should happen to it?</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="983"/>
-        <source>Save every trial as a bundle (poses, commands, 10 frames/s)</source>
-        <translation>把每次試驗儲存為試驗包（位姿、指令、每秒 10 影格）</translation>
-    </message>
-    <message>
         <location filename="../app/RigPanel.cpp" line="984"/>
-        <source>In %1; File &gt; Replay a trial bundle opens one</source>
-        <translation>存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
+        <source>Save every trial as a bundle</source>
+        <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="986"/>
+        <location filename="../app/RigPanel.cpp" line="985"/>
+        <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
+        <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="988"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="987"/>
+        <location filename="../app/RigPanel.cpp" line="989"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="988"/>
+        <location filename="../app/RigPanel.cpp" line="990"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="989"/>
         <location filename="../app/RigPanel.cpp" line="991"/>
+        <location filename="../app/RigPanel.cpp" line="993"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="990"/>
+        <location filename="../app/RigPanel.cpp" line="992"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="994"/>
+        <location filename="../app/RigPanel.cpp" line="996"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1020"/>
+        <location filename="../app/RigPanel.cpp" line="1022"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1020"/>
-        <location filename="../app/RigPanel.cpp" line="1025"/>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
-        <location filename="../app/RigPanel.cpp" line="1113"/>
+        <location filename="../app/RigPanel.cpp" line="1022"/>
+        <location filename="../app/RigPanel.cpp" line="1027"/>
+        <location filename="../app/RigPanel.cpp" line="1054"/>
+        <location filename="../app/RigPanel.cpp" line="1115"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1025"/>
+        <location filename="../app/RigPanel.cpp" line="1027"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/RigPanel.cpp" line="1049"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1054"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1066"/>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="1068"/>
+        <location filename="../app/RigPanel.cpp" line="1072"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1098"/>
+        <location filename="../app/RigPanel.cpp" line="1100"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1104"/>
+        <location filename="../app/RigPanel.cpp" line="1106"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1108"/>
+        <location filename="../app/RigPanel.cpp" line="1110"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1119"/>
+        <location filename="../app/RigPanel.cpp" line="1121"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1123"/>
+        <location filename="../app/RigPanel.cpp" line="1125"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1152"/>
+        <location filename="../app/RigPanel.cpp" line="1154"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1152"/>
-        <location filename="../app/RigPanel.cpp" line="1155"/>
-        <location filename="../app/RigPanel.cpp" line="1158"/>
+        <location filename="../app/RigPanel.cpp" line="1154"/>
+        <location filename="../app/RigPanel.cpp" line="1157"/>
+        <location filename="../app/RigPanel.cpp" line="1160"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1155"/>
+        <location filename="../app/RigPanel.cpp" line="1157"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1158"/>
+        <location filename="../app/RigPanel.cpp" line="1160"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>

@@ -490,15 +490,25 @@ class TestGuiWindow : public QObject {
             for (const char* name : {"startCamera", "connectLink", "runOnRig", "stopOnRig", "driveOnRig"}) {
                 QTRY_VERIFY2(wholeInView(w.find<QPushButton>(name)), name);
             }
-            // The camera page as wide as the panel: no sideways scrolling. (The Link page's
-            // channel table and the set-up page's button rows are wider than the panel at
-            // 1280 px; those pages scroll sideways.)
-            if (page != 0) {
-                continue;
-            }
+            // Every page as wide as the panel: no sideways scrolling. On failure, the widgets
+            // wider than the page say which.
             auto* scroll = qobject_cast<QScrollArea*>(w.find<QTabWidget>("rigTabs")->currentWidget());
             QVERIFY(scroll);
-            QVERIFY2(!scroll->horizontalScrollBar()->isVisible(), qPrintable(QString::number(page)));
+            QTest::qWait(0);
+            QCoreApplication::processEvents();
+            QStringList wide;
+            for (QWidget* child : scroll->widget()->findChildren<QWidget*>()) {
+                if (child->isVisible() && child->minimumSizeHint().width() > scroll->viewport()->width() / 2) {
+                    wide << QStringLiteral("%1 %2 (%3)")
+                                .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                                .arg(child->minimumSizeHint().width());
+                }
+            }
+            QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                     qPrintable(QStringLiteral("page %1 of width %2 scrolls sideways: %3")
+                                    .arg(page)
+                                    .arg(scroll->viewport()->width())
+                                    .arg(wide.join(QStringLiteral(", ")))));
         }
     }
 
