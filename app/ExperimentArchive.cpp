@@ -8,6 +8,9 @@
 #include <QDir>
 #include <QStandardPaths>
 
+#include <algorithm>
+#include <cmath>
+
 namespace prisca::app {
 
 namespace {
@@ -16,9 +19,9 @@ namespace {
 constexpr quint32 kMagic = 0x50525850;
 constexpr quint32 kVersion = 1;
 // A Table I of 1000 trials with every figure path is about 30 MB.
-constexpr qint64 kMaxBytes = qint64(512) << 20;
-// Counts past these are a damaged file, not an experiment.
-constexpr quint32 kMaxItems = 50'000'000;
+constexpr qint64 kMaxBytes = qint64(128) << 20;
+// A pose or value past this is a damaged file, not an experiment [m, s, ...].
+constexpr double kMaxMagnitude = 1e9;
 
 void put(QDataStream& out, const sim::TrialSummary& t) {
     out << t.finalPositionError << t.finalHeadingError << t.trackingRms << t.pathRms << t.meanCost
@@ -38,12 +41,14 @@ void putVector(QDataStream& out, const std::vector<T>& values, Put putOne) {
     }
 }
 
-// False for a size no file of ours has (the stream is then marked corrupt).
+// False for a size no file of ours has (the stream is then marked corrupt): every element takes
+// at least one byte, so a count past the bytes left is damage, and memory stays within a small
+// multiple of the file's size.
 template <typename T, typename Get>
 bool getVector(QDataStream& in, std::vector<T>& values, Get getOne) {
     quint32 n = 0;
     in >> n;
-    if (in.status() != QDataStream::Ok || n > kMaxItems) {
+    if (in.status() != QDataStream::Ok || n > in.device()->bytesAvailable()) {
         in.setStatus(QDataStream::ReadCorruptData);
         return false;
     }
@@ -82,7 +87,26 @@ bool getBand(QDataStream& in, core::ConfidenceBand& b) {
 }
 
 void putPose(QDataStream& s, const Eigen::Vector3d& p) { s << p[0] << p[1] << p[2]; }
-void getPose(QDataStream& s, Eigen::Vector3d& p) { s >> p[0] >> p[1] >> p[2]; }
+void getPose(QDataStream& s, Eigen::Vector3d& p) {
+    s >> p[0] >> p[1] >> p[2];
+    if (!(p.array().abs() <= kMaxMagnitude).all()) {  // NaN too: a figure cannot draw it
+        s.setStatus(QDataStream::ReadCorruptData);
+    }
+}
+
+// A method this build knows, or the stream is marked corrupt.
+void getMethod(QDataStream& s, QString& method) {
+    s >> method;
+    if (!sim::MethodCatalog::contains(method)) {
+        s.setStatus(QDataStream::ReadCorruptData);
+    }
+}
+
+// Finite or NaN (a point no run reached), never infinite or absurd.
+bool plausible(const std::vector<double>& values) {
+    return std::all_of(values.begin(), values.end(),
+                       [](double v) { return std::isnan(v) || std::abs(v) <= kMaxMagnitude; });
+}
 
 }  // namespace
 
@@ -181,7 +205,7 @@ std::optional<KeptExperiment> loadKeptExperiment(const QString& path, QString* e
         getPose(in, t->lot);
         in >> t->cancelled;
         ok = getVector(in, t->methods, [](QDataStream& s, sim::MethodTrials& m) {
-            s >> m.method;
+            getMethod(s, m.method);
             getVector(s, m.trials, get);
             getVector(s, m.completed, [](QDataStream& s2, bool& b) { s2 >> b; });
             getVector(s, m.paths, [](QDataStream& s2, std::vector<Eigen::Vector3d>& p) {
@@ -190,7 +214,7 @@ std::optional<KeptExperiment> loadKeptExperiment(const QString& path, QString* e
             getVector(s, m.training, get);
         });
         for (const sim::MethodTrials& m : t->methods) {
-            ok = ok && sim::MethodCatalog::contains(m.method) && m.completed.size() == m.trials.size() &&
+            ok = ok && m.completed.size() == m.trials.size() &&
                  (m.paths.empty() || m.paths.size() == m.trials.size());
         }
         kept.table1 = t;
@@ -198,7 +222,7 @@ std::optional<KeptExperiment> loadKeptExperiment(const QString& path, QString* e
         auto curves = std::make_shared<std::vector<sim::CurveSummary>>();
         in >> kept.curvesCancelled;
         ok = getVector(in, *curves, [](QDataStream& s, sim::CurveSummary& c) {
-            s >> c.method;
+            getMethod(s, c.method);
             getVector(s, c.steps, [](QDataStream& s2, long long& x) {
                 qint64 v = 0;
                 s2 >> v;
@@ -209,8 +233,11 @@ std::optional<KeptExperiment> loadKeptExperiment(const QString& path, QString* e
         });
         for (const sim::CurveSummary& c : *curves) {
             const size_t n = c.seconds.size();
-            ok = ok && sim::MethodCatalog::contains(c.method) && c.band.mean.size() == n && c.band.lower.size() == n &&
-                 c.band.upper.size() == n && c.band.count.size() == n;
+            ok = ok && c.steps.size() == n && c.band.mean.size() == n &&
+                 c.band.lower.size() == n && c.band.upper.size() == n &&
+                 c.band.standardDeviation.size() == n && c.band.count.size() == n &&
+                 plausible(c.seconds) && plausible(c.band.mean) && plausible(c.band.lower) &&
+                 plausible(c.band.upper);
         }
         kept.curves = curves;
     }

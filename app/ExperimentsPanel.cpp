@@ -17,7 +17,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLocale>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -395,7 +394,7 @@ void ExperimentsPanel::restoreKeptResult() {
     setRunning(running_);  // the exports of what is shown
     showStatus(status_, tr("Experiments"), [finished] {
         return tr("The last experiment, finished %1, is shown again; Start runs a new one.")
-            .arg(QLocale().toString(finished, QLocale::ShortFormat));
+            .arg(finished.toString(QStringLiteral("yyyy-MM-dd HH:mm")));  // any language
     });
 }
 

@@ -18,6 +18,7 @@
 #include "core/DemonstrationCsv.h"
 #include "core/PriscaController.h"
 #include "devices/SyntheticCamera.h"
+#include "app/ExperimentArchive.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -73,6 +74,12 @@ inline void initGuiTestCase(const char* name) {
     QApplication::setQuitOnLastWindowClosed(false);
 }
 
+/// Before each test: no settings and no experiment kept from an earlier test or run (a window
+/// shows a kept one at start).
+inline void resetGuiState() {
+    QSettings().clear();
+    QFile::remove(keptExperimentPath());
+}
 
 inline constexpr int kRunTimeoutMs = 60000;
 

@@ -12,7 +12,7 @@ class TestGuiCliParity : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_cli_parity"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     // The window's Run panel and `prisca-cli run` set a run up the same way (sim::RunSetup): on a
     // demonstration recorded at 25, 30, 50 or 60 Hz the same seed gives the same run log byte for

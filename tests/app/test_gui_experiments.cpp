@@ -14,7 +14,7 @@ class TestGuiExperiments : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_experiments"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void experiments_table1InTheBackgroundThenExportedAndReadBack() {
         Window w;
@@ -143,6 +143,18 @@ class TestGuiExperiments : public QObject {
             QVERIFY(!loadKeptExperiment(path, &error));
             QVERIFY2(error.contains(path), qPrintable(error));
         }
+
+        // A pose no floor has (a flipped bit, NaN) is damage too, never drawn.
+        KeptExperiment broken;
+        broken.record.plant = QStringLiteral("slidecar");
+        auto table = std::make_shared<prisca::sim::Table1Result>();
+        table->lot = Eigen::Vector3d(std::nan(""), 0.0, 0.0);
+        broken.table1 = table;
+        QVERIFY2(saveKeptExperiment(path, broken, &error), qPrintable(error));
+        QVERIFY(!loadKeptExperiment(path, &error));
+        table->lot = Eigen::Vector3d(4.0, 1.0, 0.5);  // the same, plausible: read back
+        QVERIFY2(saveKeptExperiment(path, broken, &error), qPrintable(error));
+        QVERIFY2(loadKeptExperiment(path, &error), qPrintable(error));
 
         // The window with a damaged kept file starts empty and says why in its log.
         QVERIFY(QDir().mkpath(QFileInfo(keptExperimentPath()).absolutePath()));

@@ -9,7 +9,7 @@ class TestGuiRecord : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_record"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void record_drivingWithTheKeyboardMakesTheDemonstration() {
         Window w;

@@ -15,7 +15,7 @@ class TestGuiRig : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_rig"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void rig_virtualCameraTracksTheCarAndTheLinkConnects() {
         Window w;

@@ -13,7 +13,7 @@ class TestGuiRun : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_run"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void decimation_keepsEverySpikeWithBoundedPoints() {
         QVector<QPointF> points;

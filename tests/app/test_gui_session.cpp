@@ -11,7 +11,7 @@ class TestGuiSession : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_session"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void session_fullDiskRefusedAndThePreviousFileKept() {
         QTemporaryDir dir;

@@ -126,7 +126,7 @@ class TestGuiWindow : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { initGuiTestCase("test_gui_window"); }
-    void init() { QSettings().clear(); }
+    void init() { resetGuiState(); }
 
     void window_opensInsideTheScreensAvailableArea() {
         LanguageSwitcher languages;

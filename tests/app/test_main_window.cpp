@@ -2,6 +2,7 @@
 // clean close.
 #include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
+#include "app/ExperimentArchive.h"
 #include "app/MainWindow.h"
 
 #include <QtTest/qtestspontaneevent.h>
@@ -77,6 +78,7 @@ void TestMainWindow::initTestCase() {
 
 void TestMainWindow::init() {
     QSettings().clear();
+    QFile::remove(prisca::app::keptExperimentPath());  // no experiment kept from another test
     // Any warning is a failure, except the offscreen platform's note on size hints.
     QTest::failOnWarning(QRegularExpression(
         QStringLiteral("^(?!This plugin does not support propagateSizeHints\\(\\)$)")));
