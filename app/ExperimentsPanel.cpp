@@ -13,7 +13,6 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -104,7 +103,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     figureView_->setObjectName(QStringLiteral("experimentFigure"));
     figureView_->setAlignment(Qt::AlignCenter);
-    figureView_->setMinimumSize(200, 150);
+    figureView_->setMinimumSize(200, 100);
     figureView_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
     figureView_->installEventFilter(this);
     status_->setWordWrap(true);
@@ -115,33 +114,38 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
     seed_->setValue(settings.value("experiments/seed", 1).toInt());
     budget_->setValue(settings.value("experiments/budget", 64000).toInt());
 
-    auto* form = new QFormLayout;
-    form->addRow(kind_);
-    form->addRow(countLabel_, count_);
-    form->addRow(seedLabel_, seed_);
-    form->addRow(budgetLabel_, budget_);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(start_);
-    buttons->addWidget(cancel_);
-    auto* exports = new QHBoxLayout;
-    exports->addWidget(exportTable_);
-    exports->addWidget(exportFigure_);
-    auto* controls = new QWidget(this);
-    auto* left = new QVBoxLayout(controls);
-    left->addLayout(form);
-    left->addLayout(buttons);
-    left->addWidget(progress_);
-    left->addWidget(status_);
-    left->addWidget(table_, 1);
-    left->addLayout(exports);
+    // Two rows of controls across the top, then the table beside the figure with all the height
+    // that is left: at 1280x800 the dock is short, and Table I's rows are what an operator reads.
+    auto* what = new QHBoxLayout;
+    what->addWidget(kind_, 2);
+    what->addWidget(start_);
+    what->addWidget(cancel_);
+    what->addWidget(progress_, 1);
+    auto* how = new QHBoxLayout;
+    how->addWidget(countLabel_);
+    how->addWidget(count_);
+    how->addSpacing(8);
+    how->addWidget(seedLabel_);
+    how->addWidget(seed_);
+    how->addSpacing(8);
+    how->addWidget(budgetLabel_);
+    how->addWidget(budget_);
+    how->addStretch(1);
+    how->addWidget(exportTable_);
+    how->addWidget(exportFigure_);
     auto* splitter = new QSplitter(Qt::Horizontal, this);
-    splitter->addWidget(controls);
+    splitter->addWidget(table_);
     splitter->addWidget(figureView_);
-    splitter->setStretchFactor(0, 1);
-    splitter->setStretchFactor(1, 1);
+    // The table gets the larger share: its columns must show; the figure keeps its aspect.
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 2);
+    splitter->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(splitter);
+    layout->addLayout(what);
+    layout->addLayout(how);
+    layout->addWidget(status_);
+    layout->addWidget(splitter, 1);
 
     thread_.setObjectName(QStringLiteral("prisca-experiments"));
     worker_->moveToThread(&thread_);

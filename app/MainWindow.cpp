@@ -292,8 +292,9 @@ void MainWindow::createPanels() {
     // The charts fill what they get (they have no natural height to scroll to).
     chartsDock_ =
         dock(this, QStringLiteral("chartsDock"), chartsPanel_, Qt::BottomDockWidgetArea, false);
-    experimentsDock_ =
-        dock(this, QStringLiteral("experimentsDock"), experimentsPanel_, Qt::BottomDockWidgetArea);
+    // The experiments' table and figure shrink with the dock (the table scrolls its rows).
+    experimentsDock_ = dock(this, QStringLiteral("experimentsDock"), experimentsPanel_,
+                            Qt::BottomDockWidgetArea, false);
     tabifyDockWidget(chartsDock_, experimentsDock_);
     // The rig's pages scroll inside the panel; its buttons stay in view.
     rigDock_ = dock(this, QStringLiteral("rigDock"), rigPanel_, Qt::BottomDockWidgetArea, false);

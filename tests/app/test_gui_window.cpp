@@ -3,6 +3,7 @@
 // time.
 #include "GuiTestSupport.h"
 #include "app/CameraView.h"
+#include "app/ExperimentArchive.h"
 #include "app/MessageLog.h"
 #include "app/MessageLogPanel.h"
 
@@ -510,6 +511,51 @@ class TestGuiWindow : public QObject {
                                     .arg(scroll->viewport()->width())
                                     .arg(wide.join(QStringLiteral(", ")))));
         }
+    }
+
+    void layout_at1280x800ShowsTableIsRowsAndEveryColumn() {
+        // A Table I of every method, kept as a finished experiment is, shown at start.
+        auto table = std::make_shared<prisca::sim::Table1Result>();
+        table->lot = Eigen::Vector3d(4.0, 0.8, 1.2);
+        for (const QString& method : prisca::sim::MethodCatalog::table1Ids()) {
+            prisca::sim::MethodTrials m;
+            m.method = method;
+            for (int t = 0; t < 3; ++t) {
+                prisca::sim::TrialSummary trial;
+                trial.finalPositionError = 0.1234 + 0.01 * t;
+                trial.finalHeadingError = 0.2345 + 0.01 * t;
+                m.trials.push_back(trial);
+                m.completed.push_back(true);
+            }
+            table->methods.push_back(m);
+        }
+        KeptExperiment kept;
+        kept.record.plant = QStringLiteral("slidecar");
+        kept.record.count = 3;
+        kept.record.seed = 1;
+        kept.record.demonstration = QStringLiteral("a test");
+        kept.record.finished = QDateTime::currentDateTime();
+        kept.table1 = table;
+        QString error;
+        QVERIFY2(saveKeptExperiment(keptExperimentPath(), kept, &error), qPrintable(error));
+        Window w;
+        dockOf(w, "experimentsDock")->raise();
+        auto* results = w.find<QTableWidget>("experimentTable");
+        QTRY_VERIFY(results->isVisible());
+        QCOMPARE(results->rowCount(), static_cast<int>(table->methods.size()));
+        // Five rows and every column without scrolling, the controls and exports in view.
+        QVERIFY(wholeInView(results));
+        for (int r = 0; r < 5; ++r) {
+            QVERIFY2(results->visualItemRect(results->item(r, 0)).bottom() <=
+                         results->viewport()->height(),
+                     qPrintable(QString::number(r)));
+        }
+        QTRY_VERIFY(!results->horizontalScrollBar()->isVisible());
+        for (const char* name : {"startExperiment", "cancelExperiment", "exportTable", "exportFigure"}) {
+            QVERIFY2(wholeInView(w.find<QWidget>(name)), name);
+        }
+        QVERIFY(wholeInView(w.find<QWidget>("experimentCount")));
+        QVERIFY(!w.find<QLabel>("experimentFigure")->pixmap().isNull());
     }
 
     void language_everyVisibleTextFollowsASwitchBothWays() {
