@@ -241,9 +241,7 @@ void ExperimentsPanel::setRunning(bool running) {
 void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> result) {
     lastTable1_ = result;
     lastCurves_.reset();
-    record_ = pending_;
-    record_.finished = QDateTime::currentDateTime();
-    showsKept_ = false;
+    adoptFinishedRecord();
     displayTable1(*result);
     showStatus(status_, tr("Experiments"), caption_);
     keepResult();
@@ -295,9 +293,7 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
     lastCurves_ = curves;
     lastCurvesCancelled_ = cancelled;
     lastTable1_.reset();
-    record_ = pending_;
-    record_.finished = QDateTime::currentDateTime();
-    showsKept_ = false;
+    adoptFinishedRecord();
     displayCurves(curves, cancelled);
     showStatus(status_, tr("Experiments"), caption_);
     keepResult();
@@ -357,6 +353,12 @@ void ExperimentsPanel::displayCurves(
     figure_ = figures::learningCurveFigure(methods, seconds, bands, yLabel);
     hasFigure_ = true;
     showFigure();
+}
+
+void ExperimentsPanel::adoptFinishedRecord() {
+    record_ = pending_;
+    record_.finished = QDateTime::currentDateTime();
+    showsKept_ = false;
 }
 
 void ExperimentsPanel::keepResult() {

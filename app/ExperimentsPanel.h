@@ -68,6 +68,8 @@ class ExperimentsPanel : public QWidget {
     void displayCurves(const std::shared_ptr<const std::vector<sim::CurveSummary>>& curves,
                        bool cancelled);
     void showFigure();
+    /// The experiment under way becomes the one shown, finished now.
+    void adoptFinishedRecord();
     /// Writes the result just shown to keptExperimentPath() (a failure is logged, not fatal).
     void keepResult();
     void setRunning(bool running);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "app/ControllerPanel.h"
+#include "app/ExperimentArchive.h"
 #include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
@@ -18,7 +19,6 @@
 #include "core/DemonstrationCsv.h"
 #include "core/PriscaController.h"
 #include "devices/SyntheticCamera.h"
-#include "app/ExperimentArchive.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"

@@ -495,21 +495,25 @@ class TestGuiWindow : public QObject {
             // wider than the page say which.
             auto* scroll = qobject_cast<QScrollArea*>(w.find<QTabWidget>("rigTabs")->currentWidget());
             QVERIFY(scroll);
-            QTest::qWait(0);
-            QCoreApplication::processEvents();
-            QStringList wide;
-            for (QWidget* child : scroll->widget()->findChildren<QWidget*>()) {
-                if (child->isVisible() && child->minimumSizeHint().width() > scroll->viewport()->width() / 2) {
-                    wide << QStringLiteral("%1 %2 (%3)")
-                                .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
-                                .arg(child->minimumSizeHint().width());
+            const auto tooWide = [scroll] {
+                QStringList wide;
+                for (QWidget* child : scroll->widget()->findChildren<QWidget*>()) {
+                    if (child->isVisible() &&
+                        child->minimumSizeHint().width() > scroll->viewport()->width() / 2) {
+                        wide << QStringLiteral("%1 %2 (%3)")
+                                    .arg(QString::fromLatin1(child->metaObject()->className()),
+                                         child->objectName())
+                                    .arg(child->minimumSizeHint().width());
+                    }
                 }
-            }
-            QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
-                     qPrintable(QStringLiteral("page %1 of width %2 scrolls sideways: %3")
-                                    .arg(page)
-                                    .arg(scroll->viewport()->width())
-                                    .arg(wide.join(QStringLiteral(", ")))));
+                return wide.join(QStringLiteral(", "));
+            };
+            // Waits for the page's layout to settle after the switch, on its state.
+            QTRY_VERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                         qPrintable(QStringLiteral("page %1 of width %2 scrolls sideways: %3")
+                                        .arg(page)
+                                        .arg(scroll->viewport()->width())
+                                        .arg(tooWide())));
         }
     }
 
