@@ -39,6 +39,8 @@ class ExperimentWorker : public QObject {
     void prepare() { cancelled_.store(false); }
     /// Any thread.
     void cancel() { cancelled_.store(true); }
+    /// Any thread: cancel() was called since prepare().
+    bool isCancelled() const { return cancelled_.load(); }
 
   public slots:
     void run(const prisca::app::ExperimentRequest& request);

@@ -1,7 +1,10 @@
 #include "app/ExperimentsPanel.h"
 
+#include "app/ModalDialog.h"
+
 #include "app/MessageLog.h"
 
+#include "app/EmergencyStop.h"
 #include "app/LabSession.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
@@ -24,6 +27,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QThread>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -57,9 +61,11 @@ QString variance(const core::ErrorSummary& s) {
 
 }  // namespace
 
-ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
+ExperimentsPanel::ExperimentsPanel(LabSession& session, EmergencyStop& emergency,
+                                   QWidget* parent)
     : QWidget(parent),
       session_(session),
+      emergency_(emergency),
       worker_(new ExperimentWorker),
       kind_(new QComboBox(this)),
       countLabel_(new QLabel(this)),
@@ -149,18 +155,29 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
 
     thread_.setObjectName(QStringLiteral("prisca-experiments"));
     worker_->moveToThread(&thread_);
+    // The experiments report "k/N" in words of their own; the panel says it in the operator's.
     connect(worker_, &ExperimentWorker::progress, this,
-            [this](int done, int total, const QString& text) {
+            [this](int done, int total, const QString&) {
+                if (!running_) {
+                    return;  // a report that crossed the end
+                }
                 if (total > 0) {
+                    done_ = done;
+                    total_ = total;
                     progress_->setRange(0, total);
                     progress_->setValue(done);
                 }
-                status_->setText(text);
+                showProgress();
             });
+    ticker_ = new QTimer(this);
+    ticker_->setInterval(1000);
+    connect(ticker_, &QTimer::timeout, this, &ExperimentsPanel::showProgress);
     connect(worker_, &ExperimentWorker::table1Finished, this, &ExperimentsPanel::showTable1);
     connect(worker_, &ExperimentWorker::curvesFinished, this, &ExperimentsPanel::showCurves);
     connect(worker_, &ExperimentWorker::failed, this, [this](const QString& message) {
         setRunning(false);
+        progress_->setRange(0, 1);
+        progress_->setValue(0);
         status_->setText(message);
         warningBox(this, tr("Experiment"), message);
         emit finished();
@@ -170,6 +187,16 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, QWidget* parent)
 
     connect(start_, &QPushButton::clicked, this, &ExperimentsPanel::start);
     connect(cancel_, &QPushButton::clicked, this, &ExperimentsPanel::cancel);
+    connect(&emergency_, &EmergencyStop::latchChanged, this, [this] { setRunning(running_); });
+    connect(&emergency_, &EmergencyStop::engaged, this, [this] {
+        if (running_ && !stoppedByEmergency_) {
+            stoppedByEmergency_ = true;
+            worker_->cancel();
+            showStatus(status_, tr("Experiments"),
+                       tr("E-STOP: the experiment stops once the trials under way end; what "
+                          "finished is kept and marked partial."));
+        }
+    });
     connect(exportTable_, &QPushButton::clicked, this, &ExperimentsPanel::askExportTable);
     connect(exportFigure_, &QPushButton::clicked, this, &ExperimentsPanel::askExportFigure);
     connect(kind_, &QComboBox::currentIndexChanged, this, &ExperimentsPanel::retranslateUi);
@@ -186,10 +213,14 @@ void ExperimentsPanel::start() {
     if (running_) {
         return;
     }
+    if (emergency_.isLatched()) {
+        showStatus(status_, tr("Experiments"), emergency_.refusal());
+        return;
+    }
     ExperimentRequest request;
     request.kind = static_cast<ExperimentRequest::Kind>(kind_->currentData().toInt());
     if (request.kind == ExperimentRequest::Kind::Table1 && !session_.profile().info.pose) {
-        QMessageBox::information(
+        ModalDialog::information(
             this, tr("Experiment"),
             tr("Table I compares final positions and headings, so it needs a vehicle: choose the "
                "slide-car or the aircraft as the target."));
@@ -216,8 +247,13 @@ void ExperimentsPanel::start() {
     settings.setValue("experiments/seed", seed_->value());
     settings.setValue("experiments/budget", budget_->value());
     progress_->setRange(0, 0);  // busy until the first count arrives
+    progress_->resetFormat();
     showStatus(status_, tr("Experiments"), tr("Starting..."));
+    stoppedByEmergency_ = false;
+    done_ = total_ = 0;
+    clock_.start();
     setRunning(true);
+    ticker_->start();
     worker_->prepare();
     devices::postTo(worker_, [w = worker_, request] { w->run(request); });
 }
@@ -226,12 +262,16 @@ void ExperimentsPanel::cancel() {
     if (running_) {
         worker_->cancel();
         showStatus(status_, tr("Experiments"), tr("Cancelling: the trials under way finish first..."));
+        showProgress();
     }
 }
 
 void ExperimentsPanel::setRunning(bool running) {
     running_ = running;
-    start_->setEnabled(!running);
+    if (!running && ticker_) {
+        ticker_->stop();
+    }
+    start_->setEnabled(!running && !emergency_.isLatched());
     cancel_->setEnabled(running);
     kind_->setEnabled(!running);
     exportTable_->setEnabled(!running && !caption_.isEmpty());
@@ -243,9 +283,11 @@ void ExperimentsPanel::showTable1(std::shared_ptr<const sim::Table1Result> resul
     lastCurves_.reset();
     adoptFinishedRecord();
     displayTable1(*result);
-    showStatus(status_, tr("Experiments"), caption_);
     keepResult();
     setRunning(false);
+    int done = 0;
+    sim::table1Rows(*result, &done);
+    showEnd(done, total_ > 0 ? total_ : done, result->cancelled);
     emit finished();
 }
 
@@ -271,7 +313,7 @@ void ExperimentsPanel::displayTable1(const sim::Table1Result& table1) {
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
         // A row with fewer trials than asked (a cancelled batch) says so.
-        const bool partial = result->cancelled && row.position.count < record_.count;
+        const bool partial = row.partial();
         const QStringList cells = {partial ? row.shownLabel() + tr(" (partial)") : row.shownLabel(),
                                    QString::number(row.position.count), plusMinus(row.position),
                                    variance(row.position), plusMinus(row.orientation),
@@ -295,9 +337,9 @@ void ExperimentsPanel::showCurves(std::shared_ptr<const std::vector<sim::CurveSu
     lastTable1_.reset();
     adoptFinishedRecord();
     displayCurves(curves, cancelled);
-    showStatus(status_, tr("Experiments"), caption_);
     keepResult();
     setRunning(false);
+    showEnd(done_, total_, cancelled);
     emit finished();
 }
 
@@ -398,9 +440,15 @@ void ExperimentsPanel::restoreKeptResult() {
         displayCurves(lastCurves_, lastCurvesCancelled_);
     }
     setRunning(running_);  // the exports of what is shown
-    showStatus(status_, tr("Experiments"), [finished] {
-        return tr("The last experiment, finished %1, is shown again; Start runs a new one.")
-            .arg(finished.toString(QStringLiteral("yyyy-MM-dd HH:mm")));  // any language
+    const bool cancelled = lastTable1_ ? lastTable1_->cancelled : lastCurvesCancelled_;
+    showStatus(status_, tr("Experiments"), [finished, cancelled] {
+        const QString when = finished.toString(QStringLiteral("yyyy-MM-dd HH:mm"));  // any language
+        return cancelled ? tr("The last experiment, cancelled %1 (its rows are partial), is shown "
+                              "again; Start runs a new one.")
+                               .arg(when)
+                         : tr("The last experiment, finished %1, is shown again; Start runs a new "
+                              "one.")
+                               .arg(when);
     });
 }
 
@@ -495,7 +543,7 @@ bool ExperimentsPanel::exportFigure(const QString& path, QString* error) const {
 void ExperimentsPanel::askExportTable() {
     QString filter;
     QString path =
-        QFileDialog::getSaveFileName(this, tr("Export table"), QString(),
+        ModalDialog::saveFileName(this, tr("Export table"), QString(),
                                      tr("Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)"), &filter);
     if (path.isEmpty()) {
         return;
@@ -512,7 +560,7 @@ void ExperimentsPanel::askExportTable() {
 }
 
 void ExperimentsPanel::askExportFigure() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Export figure"), QString(),
+    QString path = ModalDialog::saveFileName(this, tr("Export figure"), QString(),
                                                 tr("PNG pictures (*.png);;SVG drawings (*.svg)"));
     if (path.isEmpty()) {
         return;
@@ -565,6 +613,65 @@ int ExperimentsPanel::progressDone() const {
 
 int ExperimentsPanel::progressTotal() const {
     return progress_->maximum();
+}
+
+QString ExperimentsPanel::duration(qint64 ms) {
+    const qint64 s = (ms + 500) / 1000;
+    if (s < 60) {
+        return tr("%1 s").arg(s);
+    }
+    if (s < 3600) {
+        return tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+    }
+    return tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
+}
+
+void ExperimentsPanel::showProgress() {
+    if (!running_) {
+        return;
+    }
+    const bool curves = pending_.curves;
+    const qint64 elapsed = clock_.elapsed();
+    QString text;
+    if (total_ <= 0) {
+        text = tr("Starting... %1 so far").arg(duration(elapsed));
+    } else {
+        const QString done = curves ? tr("Run %1 of %2 done").arg(done_).arg(total_)
+                                    : tr("Trial %1 of %2 done").arg(done_).arg(total_);
+        // The rate so far, over what is left (the trials are alike; the first few include the
+        // training of the methods that train).
+        const QString left =
+            done_ > 0 ? tr("about %1 left").arg(duration(elapsed * (total_ - done_) / done_))
+                      : tr("estimating the time left");
+        text = tr("%1 · %2 so far · %3").arg(done, duration(elapsed), left);
+    }
+    if (stoppedByEmergency_) {
+        text = tr("E-STOP: stopping once the trials under way end. %1").arg(text);
+    } else if (worker_->isCancelled()) {
+        text = tr("Cancelling: the trials under way finish first. %1").arg(text);
+    }
+    status_->setText(text);
+}
+
+void ExperimentsPanel::showEnd(int done, int asked, bool cancelled) {
+    // The bar shows what came back, not the last count reported before the end.
+    progress_->setRange(0, std::max(1, asked));
+    progress_->setValue(std::clamp(done, 0, std::max(1, asked)));
+    const bool curves = record_.curves;
+    if (cancelled) {
+        progress_->setFormat(curves ? tr("Cancelled: %v of %m runs") : tr("Cancelled: %v of %m trials"));
+    } else {
+        progress_->resetFormat();
+    }
+    const qint64 took = clock_.isValid() ? clock_.elapsed() : 0;
+    const bool byEmergency = stoppedByEmergency_;
+    showStatus(status_, tr("Experiments"), [this, took, cancelled, byEmergency] {
+        const QString how =
+            !cancelled    ? tr("Finished in %1.").arg(duration(took))
+            : byEmergency ? tr("Stopped by E-STOP after %1: the rows are partial.").arg(duration(took))
+                          : tr("Cancelled after %1: the rows are partial.").arg(duration(took));
+        return QStringLiteral("%1 %2").arg(how, caption_);
+    });
 }
 
 }  // namespace prisca::app

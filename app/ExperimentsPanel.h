@@ -5,6 +5,7 @@
 #include "app/plot/Figure.h"
 #include "core/Table1Report.h"
 
+#include <QElapsedTimer>
 #include <QThread>
 #include <QWidget>
 
@@ -17,16 +18,20 @@ class QTableWidget;
 
 namespace prisca::app {
 
+class EmergencyStop;
 class LabSession;
 
 /// Table I (slide parking) and the learning curves (Fig. 3b) in the background on the session's
 /// target, with a progress bar and Cancel (what finished is kept); the result table and figure
 /// (Fig. 7 or Fig. 3b); export of the table as Markdown, CSV or LaTeX and of the figure as PNG or
 /// SVG. The last result is kept on disk (keptExperimentPath()) and shown again after a restart.
+/// E-STOP cancels the experiment like Cancel (what finished is kept, marked partial); none starts
+/// while it is latched. The status line says how far it is, how long it has taken and about how
+/// long is left.
 class ExperimentsPanel : public QWidget {
     Q_OBJECT
   public:
-    explicit ExperimentsPanel(LabSession& session, QWidget* parent = nullptr);
+    ExperimentsPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent = nullptr);
     ~ExperimentsPanel() override;
 
     /// Starts the chosen experiment (the Start button).
@@ -59,8 +64,15 @@ class ExperimentsPanel : public QWidget {
     /// the panel was first shown included).
     bool eventFilter(QObject* watched, QEvent* event) override;
 
+    /// "1 min 05 s", "about 40 s": a duration in the operator's words.
+    static QString duration(qint64 ms);
+
   private:
     void retranslateUi();
+    /// The status line while it runs: how far, how long so far, about how long is left.
+    void showProgress();
+    /// The bar and status once it is over (finished or cancelled, and how far it got).
+    void showEnd(int done, int asked, bool cancelled);
     void showTable1(std::shared_ptr<const sim::Table1Result> result);
     void showCurves(std::shared_ptr<const std::vector<sim::CurveSummary>> curves, bool cancelled);
     /// The table, caption and figure of a result (again on a language change).
@@ -77,6 +89,7 @@ class ExperimentsPanel : public QWidget {
     void askExportFigure();
 
     LabSession& session_;
+    EmergencyStop& emergency_;
     QThread thread_;
     ExperimentWorker* worker_;
     QComboBox* kind_;
@@ -95,6 +108,10 @@ class ExperimentsPanel : public QWidget {
     QPushButton* exportTable_;
     QPushButton* exportFigure_;
     bool running_ = false;
+    bool stoppedByEmergency_ = false;  ///< the run under way was cancelled by E-STOP
+    QElapsedTimer clock_;              ///< since Start
+    int done_ = 0, total_ = 0;         ///< trials (runs) done and asked for, as last reported
+    class QTimer* ticker_ = nullptr;   ///< the elapsed time, once a second
     std::vector<core::Table1Row> rows_;
     QString caption_;
     plot::Figure figure_;

@@ -52,27 +52,49 @@ void GamepadInput::tryOpen() {
     }
 }
 
-std::optional<Eigen::Vector2d> GamepadInput::poll() {
+void* GamepadInput::update() {
     if (!initialised_) {
-        return std::nullopt;
+        return nullptr;
     }
     SDL_GameControllerUpdate();
+    // The state is what is read; the events SDL queues for it would only pile up.
+    SDL_FlushEvents(SDL_JOYAXISMOTION, SDL_CONTROLLERSENSORUPDATE);
     auto* pad = static_cast<SDL_GameController*>(controller_);
     if (pad && !SDL_GameControllerGetAttached(pad)) {
         SDL_GameControllerClose(pad);  // unplugged: back to the keyboard
         controller_ = pad = nullptr;
     }
+    if (!pad && ++pollsSinceSearch_ >= kPollsBetweenSearches) {
+        pollsSinceSearch_ = 0;
+        SDL_JoystickUpdate();
+        tryOpen();
+        pad = static_cast<SDL_GameController*>(controller_);
+    }
+    return pad;
+}
+
+std::optional<Eigen::Vector2d> GamepadInput::poll() {
+    auto* pad = static_cast<SDL_GameController*>(update());
     if (!pad) {
-        if (++pollsSinceSearch_ >= kPollsBetweenSearches) {
-            pollsSinceSearch_ = 0;
-            SDL_JoystickUpdate();
-            tryOpen();
-        }
         return std::nullopt;
     }
     // Stick up is negative in SDL; steering left is the right stick pushed left (negative x).
     return Eigen::Vector2d(-axis(pad, SDL_CONTROLLER_AXIS_LEFTY),
                            -axis(pad, SDL_CONTROLLER_AXIS_RIGHTX));
+}
+
+std::optional<bool> GamepadInput::buttonDown(int button) {
+    auto* pad = static_cast<SDL_GameController*>(update());
+    if (!pad) {
+        return std::nullopt;
+    }
+    return SDL_GameControllerGetButton(pad, static_cast<SDL_GameControllerButton>(button)) != 0;
+}
+
+int GamepadInput::buttonFromName(const QString& name) {
+    const SDL_GameControllerButton button =
+        SDL_GameControllerGetButtonFromString(name.trimmed().toLower().toUtf8().constData());
+    return button == SDL_CONTROLLER_BUTTON_INVALID ? -1 : static_cast<int>(button);
 }
 
 QString GamepadInput::name() const {

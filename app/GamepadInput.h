@@ -22,6 +22,12 @@ class GamepadInput {
     /// right stick pushed left (second control, e.g. steering left), each in [-1, 1] with a
     /// small dead zone. Empty when no pad is open.
     std::optional<Eigen::Vector2d> poll();
+    /// Whether the button (an SDL_GameControllerButton) is held now, read afresh; empty when no
+    /// pad is open. A pad plugged in later is found as by poll().
+    std::optional<bool> buttonDown(int button);
+    /// The SDL_GameControllerButton named `name` in SDL's mapping names ("a", "b", "back",
+    /// "start", "leftshoulder", "paddle1", ...); -1 when there is none of that name.
+    static int buttonFromName(const QString& name);
     /// A pad is open.
     bool available() const { return controller_ != nullptr; }
     /// The open pad's name (empty when none).
@@ -29,6 +35,9 @@ class GamepadInput {
 
   private:
     void tryOpen();
+    /// Reads the pad's state now (events are not used: nothing drains SDL's queue, so it is
+    /// emptied here); the open pad, or null.
+    void* update();
 
     bool initialised_ = false;
     void* controller_ = nullptr;  ///< SDL_GameController*

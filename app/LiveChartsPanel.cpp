@@ -1,5 +1,7 @@
 #include "app/LiveChartsPanel.h"
 
+#include "app/ModalDialog.h"
+
 #include "app/MessageLog.h"
 
 #include "app/plot/ChartDecimation.h"
@@ -548,7 +550,7 @@ QString withSuffix(QString path, const QString& suffix) {
 
 void LiveChartsPanel::askExportCsv() {
     const QString path =
-        withSuffix(QFileDialog::getSaveFileName(this, tr("Export chart data"), QString(),
+        withSuffix(ModalDialog::saveFileName(this, tr("Export chart data"), QString(),
                                                 tr("CSV files (*.csv)")),
                    QStringLiteral("csv"));
     QString error;
@@ -559,7 +561,7 @@ void LiveChartsPanel::askExportCsv() {
 
 void LiveChartsPanel::askExportPng() {
     const QString path =
-        withSuffix(QFileDialog::getSaveFileName(this, tr("Export charts as picture"), QString(),
+        withSuffix(ModalDialog::saveFileName(this, tr("Export charts as picture"), QString(),
                                                 tr("PNG pictures (*.png)")),
                    QStringLiteral("png"));
     QString error;

@@ -1,7 +1,12 @@
 #include "app/MainWindow.h"
 
+#include "app/ModalDialog.h"
+
 #include "app/ArenaView.h"
 #include "app/ControllerPanel.h"
+#include "app/EmergencyStop.h"
+#include "app/EmergencyStopGuard.h"
+#include "app/GamepadEmergencyButton.h"
 #include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
 #include "app/LanguageMenu.h"
@@ -39,6 +44,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeyEvent>
+#include <QKeySequenceEdit>
+#include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -97,6 +105,7 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
       log_(new MessageLog(this)),
       session_(new LabSession(this)),
       run_(new RunThread(this)),
+      emergency_(new EmergencyStop(this)),
       versionLabel_(new QLabel(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(kProductName);
@@ -132,6 +141,13 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
         noWheelFocus(field);
     }
     qApp->installEventFilter(this);
+    // Installed after the window's own filter, so it reads every key first.
+    guard_ = new EmergencyStopGuard(
+        this, emergencyButton_, [this] { return !workInProgress().isEmpty(); },
+        [this](const QString& by) { emergency_->engage(by); }, this);
+    gamepadStop_ = new GamepadEmergencyButton(this);
+    connect(gamepadStop_, &GamepadEmergencyButton::pressed, emergency_, &EmergencyStop::engage);
+    applyEmergencyInputs();
     createStatusBar();
     connect(&languages_, &LanguageSwitcher::languageChanged, this, &MainWindow::announceLanguage);
     connect(run_, &RunThread::progress, this,
@@ -232,41 +248,7 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         }
         return false;
     }
-    if (event->type() != QEvent::KeyPress) {
-        return false;
-    }
-    const auto* key = static_cast<QKeyEvent*>(event);
-    if ((key->key() != Qt::Key_Space && key->key() != Qt::Key_Escape) ||
-        (key->modifiers() & ~Qt::KeypadModifier) != Qt::NoModifier) {
-        return false;
-    }
-    auto* widget = qobject_cast<QWidget*>(watched);
-    if (!widget || QApplication::activePopupWidget() || QApplication::activeModalWidget()) {
-        return false;  // Esc closes the popup or dialog; nothing else
-    }
-    // This window's keys only (a floating dock is a window of its own, but ours).
-    QWidget* top = widget->window();
-    if (top != this && !(qobject_cast<QDockWidget*>(top) && top->parentWidget() == this)) {
-        return false;
-    }
-    if (key->key() == Qt::Key_Space) {
-        QWidget* focus = widget;  // the key goes to the focus widget first
-        const auto* combo = qobject_cast<QComboBox*>(focus);
-        // A number field is no text field: a space is never part of a number, so there Space
-        // is E-STOP too (the Run panel is mostly spin boxes: the common case).
-        const bool numberField =
-            qobject_cast<QAbstractSpinBox*>(focus) ||
-            (focus->parentWidget() && qobject_cast<QAbstractSpinBox*>(focus->parentWidget()));
-        if (!numberField &&
-            (qobject_cast<QLineEdit*>(focus) || qobject_cast<QTextEdit*>(focus) ||
-             qobject_cast<QPlainTextEdit*>(focus) || (combo && combo->isEditable()))) {
-            return false;  // a space typed into a text field
-        }
-    }
-    if (!key->isAutoRepeat()) {
-        runPanel_->emergencyAction()->trigger();
-    }
-    return true;
+    return false;
 }
 
 void MainWindow::createPanels() {
@@ -274,12 +256,12 @@ void MainWindow::createPanels() {
     setCentralWidget(arena_);
     taskPanel_ = new TaskPanel(*session_, this);
     controllerPanel_ = new ControllerPanel(*session_, this);
-    runPanel_ = new RunPanel(*session_, *run_, this);
-    recordPanel_ = new RecordPanel(*session_, this);
+    runPanel_ = new RunPanel(*session_, *run_, *emergency_, this);
+    recordPanel_ = new RecordPanel(*session_, *emergency_, this);
     mappingPanel_ = new MappingPanel(*session_, this);
     chartsPanel_ = new LiveChartsPanel(this);
-    experimentsPanel_ = new ExperimentsPanel(*session_, this);
-    rigPanel_ = new RigPanel(*session_, this);
+    experimentsPanel_ = new ExperimentsPanel(*session_, *emergency_, this);
+    rigPanel_ = new RigPanel(*session_, *emergency_, this);
     connect(rigPanel_, &RigPanel::replayRequested, this, [this](const QString& folder) { openReplay(folder); });
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
@@ -330,12 +312,6 @@ void MainWindow::createPanels() {
     connect(run_, &RunThread::samplesReady, arena_, &ArenaView::addSamples);
     connect(recordPanel_, &RecordPanel::recordingStarted, arena_, &ArenaView::clearTrails);
     connect(recordPanel_, &RecordPanel::samplesReady, arena_, &ArenaView::addSamples);
-    // E-STOP ends a recording too (the operator may be driving when it is pressed).
-    connect(runPanel_, &RunPanel::emergencyStopRequested, recordPanel_,
-            &RecordPanel::emergencyStop);
-    // ... and on the rig the transmitter goes to failsafe, latched until E-STOP is reset.
-    connect(runPanel_, &RunPanel::emergencyStopRequested, rigPanel_, &RigPanel::emergencyStop);
-    connect(runPanel_, &RunPanel::emergencyStopReset, rigPanel_, &RigPanel::resetEmergencyStop);
     // The rig's car where the camera sees it, in the arena too.
     connect(rigPanel_, &RigPanel::carTracked, arena_,
             [this](const Eigen::VectorXd& state) { arena_->showState(state, Eigen::VectorXd()); });
@@ -379,9 +355,11 @@ void MainWindow::createToolBar() {
     emergencyButton_->setObjectName(QStringLiteral("emergencyStopButton"));
     emergencyButton_->setFocusPolicy(Qt::NoFocus);
     emergencyButton_->setMinimumSize(240, 40);
-    // On press, not release: the fastest the operator can ask.
-    connect(emergencyButton_, &QPushButton::pressed, runPanel_->emergencyAction(),
-            &QAction::trigger);
+    // On press, not release: the fastest the operator can ask. No dialog of ours covers it or
+    // blocks it (ModalDialog, EmergencyStopGuard).
+    connect(emergencyButton_, &QPushButton::pressed, emergency_,
+            [this] { emergency_->engage(tr("the E-STOP button")); });
+    ModalDialog::keepClearOf(emergencyButton_);
     runToolBar_->addWidget(emergencyButton_);
     const auto showEmergencyText = [this] {
         emergencyButton_->setText(emergencyShownLatched_ ? tr("E-STOP LATCHED")
@@ -428,6 +406,35 @@ void MainWindow::createStatusBar() {
     connect(statusTimer_, &QTimer::timeout, this, &MainWindow::updateStatusFields);
     statusTimer_->start();
     connect(run_, &RunThread::phaseChanged, this, &MainWindow::updateStatusFields);
+    connect(emergency_, &EmergencyStop::latchChanged, this, &MainWindow::showEmergencyState);
+    showEmergencyState(emergency_->isLatched());
+    // A quit that waits for the work says so until it happens, and can be called off.
+    pendingQuit_ = new QWidget(this);
+    pendingQuit_->setObjectName(QStringLiteral("pendingQuit"));
+    auto* pendingLayout = new QHBoxLayout(pendingQuit_);
+    pendingLayout->setContentsMargins(6, 0, 6, 0);
+    pendingQuitText_ = new QLabel(pendingQuit_);
+    pendingQuitText_->setStyleSheet(QStringLiteral("color: #9a5600; font-weight: bold;"));
+    cancelQuit_ = new QPushButton(pendingQuit_);
+    cancelQuit_->setObjectName(QStringLiteral("cancelQuit"));
+    pendingLayout->addWidget(pendingQuitText_);
+    pendingLayout->addWidget(cancelQuit_);
+    statusBar()->insertPermanentWidget(0, pendingQuit_);
+    pendingQuit_->hide();
+    connect(cancelQuit_, &QPushButton::clicked, this, [this] {
+        quitPlan_ = QuitPlan::None;
+        showPendingQuit();
+        say(tr("Quit"), tr("The quit was called off; the work goes on."), kStatusMessageMs);
+    });
+}
+
+void MainWindow::showPendingQuit() {
+    pendingQuit_->setVisible(quitPlan_ != QuitPlan::None);
+    pendingQuitText_->setText(quitPlan_ == QuitPlan::Finish
+                                  ? tr("Quits when the work under way is done")
+                                  : tr("Quits once the work has stopped"));
+    cancelQuit_->setText(tr("Don't quit"));
+    cancelQuit_->setEnabled(quitPlan_ == QuitPlan::Finish);
 }
 
 void MainWindow::updateStatusFields() {
@@ -469,7 +476,6 @@ void MainWindow::updateStatusFields() {
     jobStatus_->setStyleSheet(run_->phase() == RunPhase::Paused
                                   ? QStringLiteral("color: #9a5600; font-weight: bold;")
                                   : QString());
-    showEmergencyState(run_->phase() == RunPhase::EmergencyStopped);
     quitWhenIdle();
 }
 
@@ -506,7 +512,7 @@ void MainWindow::createMenus() {
     openSessionAction_->setObjectName(QStringLiteral("openSessionAction"));
     openSessionAction_->setShortcut(QKeySequence::Open);
     connect(openSessionAction_, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(
+        const QString path = ModalDialog::openFileName(
             this, tr("Open session"), QFileInfo(sessionPath_).absolutePath(),
             tr("PRISCA Lab sessions (*.json);;All files (*)"));
         if (!path.isEmpty()) {
@@ -519,7 +525,7 @@ void MainWindow::createMenus() {
     saveSessionAction_->setObjectName(QStringLiteral("saveSessionAction"));
     saveSessionAction_->setShortcut(QKeySequence::Save);
     connect(saveSessionAction_, &QAction::triggered, this, [this] {
-        QString path = QFileDialog::getSaveFileName(this, tr("Save session"), sessionPath_,
+        QString path = ModalDialog::saveFileName(this, tr("Save session"), sessionPath_,
                                                     tr("PRISCA Lab sessions (*.json)"));
         if (!path.isEmpty()) {
             if (QFileInfo(path).suffix().isEmpty()) {
@@ -532,7 +538,7 @@ void MainWindow::createMenus() {
     replayAction_->setObjectName(QStringLiteral("replayAction"));
     replayAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
     connect(replayAction_, &QAction::triggered, this, [this] {
-        const QString folder = QFileDialog::getExistingDirectory(
+        const QString folder = ModalDialog::existingDirectory(
             this, tr("Replay a trial bundle"), rigPanel_ ? rigPanel_->bundleParent() : QString());
         if (!folder.isEmpty()) {
             openReplay(folder);
@@ -554,6 +560,9 @@ void MainWindow::createMenus() {
     runMenu_->addSeparator();
     runMenu_->addAction(runPanel_->emergencyAction());
     runMenu_->addAction(runPanel_->resetEmergencyAction());
+    emergencyInputsAction_ = runMenu_->addAction(QString());
+    emergencyInputsAction_->setObjectName(QStringLiteral("emergencyInputsAction"));
+    connect(emergencyInputsAction_, &QAction::triggered, this, &MainWindow::editEmergencyInputs);
     // The shortcuts work whatever is shown: the actions belong to the window itself.
     addActions(runPanel_->runActions());
     connect(runPanel_->resetEmergencyAction(), &QAction::triggered, this,
@@ -669,6 +678,12 @@ void MainWindow::retranslateUi() {
     saveSessionAction_->setText(tr("&Save session as..."));
     quitAction_->setText(tr("&Quit"));
     replayAction_->setText(tr("&Replay a trial bundle..."));
+    emergencyInputsAction_->setText(tr("E-STOP &inputs..."));
+    emergencyInputsAction_->setStatusTip(
+        tr("A foot switch's key and a gamepad button that are E-STOP too"));
+    if (pendingQuit_) {
+        showPendingQuit();
+    }
     quitAction_->setStatusTip(tr("Close the window and leave PRISCA Lab"));
     runMenu_->setTitle(tr("&Run"));
     runToolBar_->setWindowTitle(tr("Run"));
@@ -691,6 +706,7 @@ void MainWindow::retranslateUi() {
     versionLabel_->setText(version.isEmpty() ? QString() : tr("Version %1").arg(version));
     if (jobStatus_) {
         updateStatusFields();
+        showEmergencyState(emergency_->isLatched());
     }
 }
 
@@ -745,6 +761,7 @@ void MainWindow::quitWhenIdle() {
     }
     const QuitPlan plan = quitPlan_;
     quitPlan_ = QuitPlan::None;
+    showPendingQuit();
     if (plan == QuitPlan::Keep || plan == QuitPlan::Finish) {
         // What finished, where the operator can find it after the restart.
         const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
@@ -795,15 +812,18 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         cancel->setObjectName(QStringLiteral("quitCancel"));
         box.setDefaultButton(cancel);
         box.setEscapeButton(cancel);
-        box.exec();
-        if (box.clickedButton() == finish) {
+        ModalDialog::exec(box);
+        if (box.clickedButton() == finish && !workInProgress().isEmpty()) {
             quitPlan_ = QuitPlan::Finish;
-            say(tr("Quit"), tr("PRISCA Lab quits once the work under way is done."), 0);
+            showPendingQuit();
+            say(tr("Quit"), tr("PRISCA Lab quits once the work under way is done."), kNoticeMs);
             event->ignore();
             return;
         }
-        if (box.clickedButton() == keep) {
+        if (box.clickedButton() == keep || box.clickedButton() == finish) {
+            // (Finish with the work already done, E-STOP meanwhile say: what is done is kept.)
             quitPlan_ = QuitPlan::Keep;
+            showPendingQuit();
             stopWork(true);
             event->ignore();
             QTimer::singleShot(0, this, &MainWindow::quitWhenIdle);  // may be idle already
@@ -849,7 +869,7 @@ void MainWindow::showAbout() {
                  tr("Built with Qt %1, running on Qt %2.")
                      .arg(QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion()))
                      .toHtmlEscaped());
-    QMessageBox::about(this, tr("About PRISCA Lab"), text);
+    ModalDialog::about(this, tr("About PRISCA Lab"), text);
 }
 
 void MainWindow::showShortcuts() {
@@ -865,8 +885,17 @@ void MainWindow::showShortcuts() {
     for (QAction* action : runPanel_->runActions()) {
         add(action);
     }
-    rows.append({tr("Space or Esc"), tr("E-STOP, whatever has the focus (Space types a space in a "
-                                        "text field; Esc first closes an open list or dialog)")});
+    rows.append({tr("Space or Esc"),
+                 tr("E-STOP, in every window while something runs (a dialog, a menu, the guide "
+                    "and the replay too; Shift+Space types a space then). With nothing running, "
+                    "in the main window: Space types a space in a text field, Esc first closes "
+                    "an open list")});
+    for (const QKeySequence& key : guard_->extraKeys()) {
+        rows.append({key.toString(QKeySequence::NativeText), tr("E-STOP (the foot switch's key)")});
+    }
+    for (const QString& button : gamepadStop_->buttons()) {
+        rows.append({tr("Gamepad button %1").arg(button), tr("E-STOP")});
+    }
     for (QAction* action : {openSessionAction_, saveSessionAction_, replayAction_, quitAction_,
                             guideAction_, shortcutsAction_}) {
         add(action);
@@ -884,7 +913,7 @@ void MainWindow::showShortcuts() {
     QMessageBox box(QMessageBox::NoIcon, tr("Keyboard shortcuts"), html, QMessageBox::Close, this);
     box.setObjectName(QStringLiteral("shortcutSheet"));
     box.setTextFormat(Qt::RichText);
-    box.exec();
+    ModalDialog::exec(box);
 }
 
 void MainWindow::showGuide() {
@@ -908,6 +937,7 @@ void MainWindow::showGuide() {
     layout->addWidget(buttons);
     dialog->resize(std::min(900, width() * 3 / 4), std::min(700, height() * 9 / 10));
     dialog->show();
+    ModalDialog::placeClear(dialog);  // never over the E-STOP button
 }
 
 ReplayDialog* MainWindow::openReplay(const QString& folder) {
@@ -920,7 +950,110 @@ ReplayDialog* MainWindow::openReplay(const QString& folder) {
     auto* dialog = new ReplayDialog(std::move(*bundle), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->show();
+    ModalDialog::placeClear(dialog);  // inside the screen, never over the E-STOP button
     return dialog;
+}
+
+void MainWindow::applyEmergencyInputs() {
+    const QSettings settings;
+    QList<QKeySequence> keys;
+    for (const QString& name : settings.value(QLatin1String(kEmergencyKeysKey)).toStringList()) {
+        const QKeySequence key = QKeySequence::fromString(name, QKeySequence::PortableText);
+        if (key.isEmpty()) {
+            logMessage(tr("E-STOP"), MessageLevel::Warning,
+                       tr("The E-STOP key \"%1\" in the settings is no key; it is left out.").arg(name));
+        } else {
+            keys << key;
+        }
+    }
+    guard_->setExtraKeys(keys);
+    // The red button of the common pad layout, unless the operator chose otherwise.
+    const QStringList buttons =
+        settings.value(QLatin1String(kEmergencyPadKey), QStringList{QStringLiteral("b")})
+            .toStringList();
+    for (const QString& name : buttons) {
+        if (!GamepadEmergencyButton::knownButton(name)) {
+            logMessage(tr("E-STOP"), MessageLevel::Warning,
+                       tr("The gamepad button \"%1\" in the settings is no button SDL knows; it is "
+                          "left out.")
+                           .arg(name));
+        }
+    }
+    gamepadStop_->setButtons(buttons);
+}
+
+void MainWindow::editEmergencyInputs() {
+    QDialog dialog(this);
+    dialog.setObjectName(QStringLiteral("emergencyInputs"));
+    dialog.setWindowTitle(tr("E-STOP inputs"));
+    auto* intro = new QLabel(
+        tr("Space, Esc and the red button are always E-STOP. A USB foot switch can be set to "
+           "send a key (F13, Pause, ...): press that key here. A gamepad's button is E-STOP too, "
+           "whatever the window shows."),
+        &dialog);
+    intro->setWordWrap(true);
+    auto* key = new QKeySequenceEdit(&dialog);
+    key->setObjectName(QStringLiteral("footSwitchKey"));
+    if (!guard_->extraKeys().isEmpty()) {
+        key->setKeySequence(guard_->extraKeys().first());
+    }
+    auto* clearKey = new QPushButton(tr("No key"), &dialog);
+    connect(clearKey, &QPushButton::clicked, key, &QKeySequenceEdit::clear);
+    auto* keyRow = new QHBoxLayout;
+    keyRow->addWidget(key, 1);
+    keyRow->addWidget(clearKey);
+    auto* pad = new QComboBox(&dialog);
+    pad->setObjectName(QStringLiteral("gamepadButton"));
+    pad->addItem(tr("None"), QString());
+    const QList<QPair<QString, QString>> buttons = {
+        {QStringLiteral("b"), tr("B (the red one on most pads)")},
+        {QStringLiteral("a"), tr("A")},
+        {QStringLiteral("x"), tr("X")},
+        {QStringLiteral("y"), tr("Y")},
+        {QStringLiteral("back"), tr("Back / Select")},
+        {QStringLiteral("start"), tr("Start")},
+        {QStringLiteral("leftshoulder"), tr("Left shoulder")},
+        {QStringLiteral("rightshoulder"), tr("Right shoulder")},
+        {QStringLiteral("paddle1"), tr("Paddle 1")},
+    };
+    for (const auto& [name, label] : buttons) {
+        pad->addItem(label, name);
+    }
+    pad->setCurrentIndex(std::max(0, pad->findData(gamepadStop_->buttons().value(0))));
+    auto* padState = new QLabel(gamepadStop_->padFound() ? tr("A gamepad is connected.")
+                                                         : tr("No gamepad is connected now."),
+                                &dialog);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Foot switch key:"), keyRow);
+    form->addRow(tr("Gamepad button:"), pad);
+    form->addRow(QString(), padState);
+    auto* answer = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(answer, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(answer, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    auto* layout = new QVBoxLayout(&dialog);
+    layout->addWidget(intro);
+    layout->addLayout(form);
+    layout->addWidget(answer);
+    dialog.resize(520, dialog.sizeHint().height());
+    if (ModalDialog::exec(dialog) != QDialog::Accepted) {
+        return;
+    }
+    QSettings settings;
+    const QKeySequence chosen = key->keySequence().isEmpty() ? QKeySequence()
+                                                             : QKeySequence(key->keySequence()[0]);
+    settings.setValue(QLatin1String(kEmergencyKeysKey),
+                      chosen.isEmpty() ? QStringList()
+                                       : QStringList{chosen.toString(QKeySequence::PortableText)});
+    const QString button = pad->currentData().toString();
+    settings.setValue(QLatin1String(kEmergencyPadKey),
+                      button.isEmpty() ? QStringList() : QStringList{button});
+    applyEmergencyInputs();
+    say(tr("E-STOP"),
+        tr("E-STOP inputs: Space, Esc, the red button%1%2")
+            .arg(chosen.isEmpty() ? QString()
+                                  : tr(", the key %1").arg(chosen.toString(QKeySequence::NativeText)),
+                 button.isEmpty() ? QString() : tr(", gamepad button %1").arg(button)),
+        kStatusMessageMs);
 }
 
 }  // namespace prisca::app

@@ -14,6 +14,9 @@ namespace prisca::app {
 
 class ArenaView;
 class ControllerPanel;
+class EmergencyStop;
+class EmergencyStopGuard;
+class GamepadEmergencyButton;
 class LabSession;
 class LanguageMenu;
 class LanguageSwitcher;
@@ -53,6 +56,17 @@ class MainWindow : public QMainWindow {
     LabSession& session() { return *session_; }
     MessageLog& messageLog() { return *log_; }
     RunThread& run() { return *run_; }
+    /// The one E-STOP latch every job of the window follows.
+    EmergencyStop& emergencyStop() { return *emergency_; }
+    /// The keys and buttons that press it.
+    EmergencyStopGuard& emergencyStopGuard() { return *guard_; }
+    GamepadEmergencyButton& gamepadEmergencyButton() { return *gamepadStop_; }
+    /// What would be lost or cut short by quitting now, one line each (empty: nothing).
+    QStringList workInProgress() const;
+    /// QSettings keys of E-STOP's extra inputs: a foot switch's keys (a list of key names as
+    /// QKeySequence writes them, e.g. "F13", "Pause") and gamepad buttons (SDL's names).
+    static constexpr const char* kEmergencyKeysKey = "estop/keys";
+    static constexpr const char* kEmergencyPadKey = "estop/gamepadButtons";
 
     /// Opens a session file; a bad file gets a message box and changes nothing.
     bool openSession(const QString& path);
@@ -61,9 +75,8 @@ class MainWindow : public QMainWindow {
 
   protected:
     void changeEvent(QEvent* event) override;
-    /// Space and Esc anywhere in the window are E-STOP, except Esc closing a popup or dialog and
-    /// Space typed into a text field; read before any widget sees the key, and independent of
-    /// which window the platform thinks is active.
+    /// The wheel over a setting not clicked into scrolls its panel; a press on a separator means
+    /// the operator sizes the docks. (E-STOP's keys: EmergencyStopGuard.)
     bool eventFilter(QObject* watched, QEvent* event) override;
     static void noWheelFocus(QWidget* field);
     void closeEvent(QCloseEvent* event) override;
@@ -77,8 +90,6 @@ class MainWindow : public QMainWindow {
     void shareSpace();
     void retranslateUi();
     void createStatusBar();
-    /// What would be lost or cut short by quitting now, one line each (empty: nothing).
-    QStringList workInProgress() const;
     /// Stops every job; with `keep`, what finished is saved (the run's log, the experiment's
     /// table) before the window closes.
     void stopWork(bool keep);
@@ -88,6 +99,12 @@ class MainWindow : public QMainWindow {
     void updateStatusFields();
     /// E-STOP's button and status field follow the latch.
     void showEmergencyState(bool latched);
+    /// Run > E-STOP inputs...: the foot switch's key and the gamepad's button.
+    void editEmergencyInputs();
+    void applyEmergencyInputs();
+    /// The quit the operator asked for, waiting for the work: shown until it happens or is
+    /// cancelled.
+    void showPendingQuit();
     void showAbout();
     /// Help > Keyboard shortcuts: every shortcut of the window, from the actions themselves.
     void showShortcuts();
@@ -107,6 +124,9 @@ class MainWindow : public QMainWindow {
     MessageLog* log_;  ///< first: the panels' first messages go to it
     LabSession* session_;
     RunThread* run_;
+    EmergencyStop* emergency_;
+    EmergencyStopGuard* guard_ = nullptr;
+    GamepadEmergencyButton* gamepadStop_ = nullptr;
     ArenaView* arena_ = nullptr;
     TaskPanel* taskPanel_ = nullptr;
     ControllerPanel* controllerPanel_ = nullptr;
@@ -136,6 +156,7 @@ class MainWindow : public QMainWindow {
     QAction* saveSessionAction_ = nullptr;
     QAction* quitAction_ = nullptr;
     QAction* replayAction_ = nullptr;
+    QAction* emergencyInputsAction_ = nullptr;
     QToolBar* runToolBar_ = nullptr;
     bool stateRestored_ = false;  ///< the operator's own dock layout was restored
     bool laidOut_ = false;
@@ -153,6 +174,9 @@ class MainWindow : public QMainWindow {
     bool emergencyShownLatched_ = false;
     enum class QuitPlan { None, Finish, Keep };
     QuitPlan quitPlan_ = QuitPlan::None;
+    QWidget* pendingQuit_ = nullptr;  ///< in the status bar while a quit waits
+    QLabel* pendingQuitText_ = nullptr;
+    class QPushButton* cancelQuit_ = nullptr;
     bool quitConfirmed_ = false;  ///< the operator answered; close without asking again
     QString sessionPath_;
 };

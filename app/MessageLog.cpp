@@ -1,5 +1,7 @@
 #include "app/MessageLog.h"
 
+#include "app/ModalDialog.h"
+
 #include <QCoreApplication>
 #include <QEvent>
 #include <QJsonObject>
@@ -235,9 +237,14 @@ void showStatus(QLabel* label, const QString& source, std::function<QString()> t
     logMessage(source, level, translator->shown());
 }
 
+void setTranslatedText(QLabel* label, std::function<QString()> text) {
+    dropTranslator(label);
+    new LabelTranslator(label, std::move(text));
+}
+
 void warningBox(QWidget* parent, const QString& title, const QString& text) {
     logMessage(title, MessageLevel::Warning, text);
-    QMessageBox::warning(parent, title, text);
+    ModalDialog::warning(parent, title, text);
 }
 
 }  // namespace prisca::app

@@ -85,6 +85,9 @@ void showStatus(QLabel* label, const QString& source, const QString& text,
 /// since, by any means, is left alone). The log keeps the line as first shown.
 void showStatus(QLabel* label, const QString& source, std::function<QString()> text,
                 MessageLevel level = MessageLevel::Info);
+/// `text` on a label now and again on every language change while the label still shows it,
+/// without logging it (a progress line that changes every few seconds).
+void setTranslatedText(QLabel* label, std::function<QString()> text);
 /// A warning box, logged as a warning with the box's title as its source.
 void warningBox(QWidget* parent, const QString& title, const QString& text);
 

@@ -3,7 +3,9 @@
 #include "app/MessageLog.h"
 
 #include "app/DrivingInput.h"
+#include "app/EmergencyStop.h"
 #include "app/LabSession.h"
+#include "app/ModalDialog.h"
 #include "core/DemonstrationCsv.h"
 #include "devices/ThreadHandOff.h"
 #include "sim/PlantCatalog.h"
@@ -36,9 +38,10 @@ constexpr int kTickMs = 25;  // keyboard ramp and countdown resolution [ms]
 constexpr unsigned long kShutdownWaitMs = 3000;
 }  // namespace
 
-RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
+RecordPanel::RecordPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent)
     : QWidget(parent),
       session_(session),
+      emergency_(emergency),
       worker_(new RecordingWorker),
       driving_(new DrivingInput(this)),
       keys_(new QLabel(this)),
@@ -99,6 +102,8 @@ RecordPanel::RecordPanel(LabSession& session, QWidget* parent)
     timer_->setInterval(kTickMs);
     connect(timer_, &QTimer::timeout, this, &RecordPanel::tick);
     connect(record_, &QPushButton::clicked, this, &RecordPanel::startCountdown);
+    connect(&emergency_, &EmergencyStop::engaged, this, &RecordPanel::emergencyStop);
+    connect(&emergency_, &EmergencyStop::latchChanged, this, &RecordPanel::updateButtons);
     connect(stop_, &QPushButton::clicked, this, &RecordPanel::stopRecording);
     connect(save_, &QPushButton::clicked, this, &RecordPanel::save);
     connect(discard_, &QPushButton::clicked, this, &RecordPanel::discard);
@@ -130,6 +135,10 @@ QString RecordPanel::recordingsFolder() {
 
 void RecordPanel::startCountdown() {
     if (recording_ || countdownLeft_ > 0 || session_.plant().isEmpty()) {
+        return;
+    }
+    if (emergency_.isLatched()) {
+        showStatus(status_, tr("Record"), emergency_.refusal());
         return;
     }
     // Driving keys reach the input wherever the focus is, for as long as the recording lasts.
@@ -295,7 +304,7 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
 }
 
 void RecordPanel::save() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save demonstration"),
+    QString path = ModalDialog::saveFileName(this, tr("Save demonstration"),
                                                 QSettings().value("task/lastDirectory").toString(),
                                                 tr("Demonstrations (*.csv)"));
     if (path.isEmpty()) {
@@ -329,7 +338,7 @@ void RecordPanel::discard() {
 
 void RecordPanel::updateButtons() {
     const bool busy = recording_ || countdownLeft_ > 0;
-    record_->setEnabled(!busy);
+    record_->setEnabled(!busy && !emergency_.isLatched());
     stop_->setEnabled(busy);
     const bool pending = !busy && previous_ != nullptr;
     save_->setEnabled(pending);

@@ -20,6 +20,7 @@ class DrivingInput;
 
 namespace prisca::app {
 
+class EmergencyStop;
 class LabSession;
 
 /// Record a demonstration by driving the simulated plant with the keyboard: arrows or WASD,
@@ -32,7 +33,9 @@ class LabSession;
 class RecordPanel : public QWidget {
     Q_OBJECT
   public:
-    RecordPanel(LabSession& session, QWidget* parent = nullptr);
+    /// A recording ends when `emergency` engages (its take kept on disk) and none starts while
+    /// it is latched.
+    RecordPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent = nullptr);
     ~RecordPanel() override;
 
     /// Where recordings stream to (the application's data folder, "recordings").
@@ -44,8 +47,6 @@ class RecordPanel : public QWidget {
   public slots:
     void startCountdown();
     void stopRecording();
-    /// Any thread-safe stop path (E-STOP): stops at the next control period.
-    void emergencyStop();
 
   signals:
     /// Live samples while recording (the arena draws the plant as it is driven).
@@ -57,6 +58,8 @@ class RecordPanel : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    /// E-STOP: neutral at once, the recording stops at the next control period.
+    void emergencyStop();
     void retranslateUi();
     void tick();
     void beginRecording();
@@ -66,6 +69,7 @@ class RecordPanel : public QWidget {
     void updateButtons();
 
     LabSession& session_;
+    EmergencyStop& emergency_;
     QThread thread_;
     RecordingWorker* worker_;
     DrivingInput* driving_;

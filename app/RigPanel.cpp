@@ -1,10 +1,13 @@
 #include "app/RigPanel.h"
 
+#include "app/ModalDialog.h"
+
 #include "app/MessageLog.h"
 
 #include "app/CameraView.h"
 #include "app/ChannelMapEditor.h"
 #include "app/DrivingInput.h"
+#include "app/EmergencyStop.h"
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
 #include "core/DeviationModel.h"
@@ -23,7 +26,6 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QInputDialog>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
@@ -60,9 +62,10 @@ QImage toImage(const cv::Mat& m) {
 
 }  // namespace
 
-RigPanel::RigPanel(LabSession& session, QWidget* parent)
+RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent)
     : QWidget(parent),
       session_(session),
+      emergency_(emergency),
       view_(new CameraView(this)),
       sourceLabel_(new QLabel(this)),
       source_(new QComboBox(this)),
@@ -110,6 +113,9 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     replayLast_->setObjectName(QStringLiteral("replayLastTrial"));
     replayLast_->setEnabled(false);
     setObjectName(QStringLiteral("rigPanel"));
+    connect(&emergency_, &EmergencyStop::engaged, this, &RigPanel::emergencyStop);
+    connect(&emergency_, &EmergencyStop::released, this, &RigPanel::resetEmergencyStop);
+    connect(&emergency_, &EmergencyStop::latchChanged, this, [this] { updateButtons(); });
     cameraInfo_ = new QLabel(this);
     cameraInfo_->setObjectName(QStringLiteral("cameraInfo"));
     cameraInfo_->setWordWrap(true);
@@ -333,14 +339,14 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(disconnect_, &QPushButton::clicked, this, &RigPanel::disconnectLink);
     connect(source_, &QComboBox::currentIndexChanged, this, &RigPanel::retranslateUi);
     connect(loadCalibration_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open floor calibration"),
+        const QString path = ModalDialog::openFileName(this, tr("Open floor calibration"),
                                                           QString(), tr("Calibrations (*.json)"));
         if (!path.isEmpty()) {
             loadCalibration(path);
         }
     });
     connect(saveCalibration_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save floor calibration"),
+        const QString path = ModalDialog::saveFileName(this, tr("Save floor calibration"),
                                                           QString(), tr("Calibrations (*.json)"));
         if (!path.isEmpty()) {
             saveCalibration(path);
@@ -377,7 +383,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     connect(captureBoard_, &QPushButton::clicked, this, &RigPanel::captureBoardView);
     connect(fitLens_, &QPushButton::clicked, this, &RigPanel::fitLens);
     connect(loadLens_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open camera intrinsics"),
+        const QString path = ModalDialog::openFileName(this, tr("Open camera intrinsics"),
                                                           QString(), tr("Camera (*.json)"));
         if (!path.isEmpty()) {
             loadLens(path);
@@ -417,7 +423,7 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
     }
     connect(&rig_, &rig::RigSession::latencyMeasured, this,
             [this](const rig::LatencyMeasurement& m) {
-                measureLatency_->setEnabled(true);
+                updateButtons();
                 if (!m.error.isEmpty()) {
                     showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: not measured (%1)").arg(m.error));
                     return;
@@ -438,14 +444,13 @@ RigPanel::RigPanel(LabSession& session, QWidget* parent)
             addFenceCorner(QPointF(floor.x, floor.y));
             return;
         }
-        bool ok = false;
-        const QString text = QInputDialog::getText(
+        const std::optional<QString> answer = ModalDialog::text(
             this, tr("Floor point"),
-            tr("Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):"),
-            QLineEdit::Normal, QString(), &ok);
-        if (!ok) {
+            tr("Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):"));
+        if (!answer) {
             return;
         }
+        const QString& text = *answer;
         const QStringList parts = text.split(QLatin1Char(','));
         bool okX = false, okY = false;
         const double x = parts.value(0).trimmed().toDouble(&okX);
@@ -511,6 +516,10 @@ bool RigPanel::runTrial() {
     if (isRunning()) {
         return false;
     }
+    if (emergency_.isLatched()) {
+        showStatus(trialInfo_, tr("Rig trial"), emergency_.refusal(), MessageLevel::Warning);
+        return false;
+    }
     QString missing;
     const sim::MethodTuning& profile = session_.profile();
     if (const QString rig = rig_.notReady(); !rig.isEmpty()) {
@@ -554,6 +563,11 @@ const Eigen::VectorXd& RigPanel::drivingInput() const {
 
 bool RigPanel::startDriving() {
     if (drivingActive_ || isRunning()) {
+        return false;
+    }
+    if (emergency_.isLatched()) {
+        showStatus(trialInfo_, tr("Rig trial"), emergency_.refusal(), MessageLevel::Warning);
+        drive_->setChecked(false);
         return false;
     }
     if (virtualCalibrationOnRealCamera()) {
@@ -629,6 +643,9 @@ void RigPanel::emergencyStop() {
     recordingEndedByEmergency_ = drivingActive_;
     stopDriving();
     rig_.emergencyStop();
+    if (rig_.measuringLatency()) {
+        rig_.cancelLatencyMeasurement();
+    }
     showStatus(trialInfo_, tr("Rig trial"), [this] {
         return tr("E-STOP: the transmitter sends failsafe until E-STOP is reset.");
     });
@@ -636,6 +653,9 @@ void RigPanel::emergencyStop() {
 
 void RigPanel::resetEmergencyStop() {
     rig_.resetEmergencyStop();
+    // Whatever the panel said of the latch (E-STOP pressed, a start refused) is old news now.
+    showStatus(trialInfo_, tr("Rig trial"),
+               [] { return tr("E-STOP is reset: the link sends the commands again."); });
 }
 
 void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
@@ -657,7 +677,7 @@ void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
                                  .arg(result.reason);
     }
     showStatus(trialInfo_, tr("Rig trial"), lastResult_);
-    runTrial_->setEnabled(true);
+    updateButtons();
     emit trialFinished(lastResult_);
 }
 
@@ -849,6 +869,11 @@ void RigPanel::updateButtons() {
     port_->setEnabled(!linked);
     protocol_->setEnabled(!linked);
     baud_->setEnabled(!linked);
+    // Nothing that moves the car starts while E-STOP is latched.
+    const bool latched = emergency_.isLatched();
+    runTrial_->setEnabled(!latched && !rig_.trialRunning());
+    drive_->setEnabled(!latched || drivingActive_);
+    measureLatency_->setEnabled(!latched && !rig_.measuringLatency());
 }
 
 void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
@@ -1065,7 +1090,7 @@ bool RigPanel::fitLens() {
         }
     }
     showLensInfo();
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save camera intrinsics"),
+    const QString path = ModalDialog::saveFileName(this, tr("Save camera intrinsics"),
                                                       QStringLiteral("camera.json"),
                                                       tr("Camera (*.json)"));
     if (!path.isEmpty() && !lens_->save(path, &error)) {
@@ -1116,6 +1141,10 @@ void RigPanel::showLensInfo() {
 }
 
 bool RigPanel::measureLatency() {
+    if (emergency_.isLatched()) {
+        showStatus(latencyInfo_, tr("Latency"), emergency_.refusal(), MessageLevel::Warning);
+        return false;
+    }
     QString error;
     if (!rig_.measureLatency({}, &error)) {
         showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: %1").arg(error));

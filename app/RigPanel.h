@@ -23,6 +23,7 @@ namespace prisca::app {
 
 class CameraView;
 class ChannelMapEditor;
+class EmergencyStop;
 class LabSession;
 class DrivingInput;
 
@@ -36,7 +37,9 @@ class DrivingInput;
 class RigPanel : public QWidget {
     Q_OBJECT
   public:
-    explicit RigPanel(LabSession& session, QWidget* parent = nullptr);
+    /// When `emergency` engages the trial and the driving end and the link sends failsafe until
+    /// it is reset; nothing starts on the rig while it is latched.
+    RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent = nullptr);
     ~RigPanel() override;
 
     /// Camera sources offered.
@@ -105,10 +108,6 @@ class RigPanel : public QWidget {
     bool runTrial();
     /// Ends the trial; the link falls to failsafe once commands stop.
     void stopTrial() { rig_.stopTrial(); }
-    /// E-STOP on the rig: the trial ends and the link sends failsafe, latched until
-    /// resetEmergencyStop().
-    void emergencyStop();
-    void resetEmergencyStop();
     bool isRunning() const { return rig_.trialRunning(); }
     /// Sends statusSummary() with the state now (it is sent on every change, and each second).
     void emitStatus();
@@ -139,6 +138,9 @@ class RigPanel : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    /// E-STOP on the rig: the trial ends and the link sends failsafe, latched until reset.
+    void emergencyStop();
+    void resetEmergencyStop();
     void retranslateUi();
     void updateButtons();
     void refreshPorts();
@@ -157,6 +159,7 @@ class RigPanel : public QWidget {
     static QString virtualCalibrationWarning();
 
     LabSession& session_;
+    EmergencyStop& emergency_;
     rig::RigSession rig_;
     std::vector<devices::CalibrationPoint> clicked_;
     cv::Mat lastFrame_;  ///< the newest frame shown (for capturing board views)

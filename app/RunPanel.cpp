@@ -2,7 +2,9 @@
 
 #include "app/MessageLog.h"
 
+#include "app/EmergencyStop.h"
 #include "app/LabSession.h"
+#include "app/ModalDialog.h"
 #include "app/RunThread.h"
 #include "core/RunLogCsv.h"
 
@@ -38,10 +40,12 @@ namespace {
 const char* const kSettingsGroup = "run";
 }
 
-RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
+RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency,
+                   QWidget* parent)
     : QWidget(parent),
       session_(session),
       run_(run),
+      emergency_(emergency),
       trialsLabel_(new QLabel(this)),
       trials_(new QSpinBox(this)),
       seedLabel_(new QLabel(this)),
@@ -160,7 +164,7 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
                 exportLog_->setEnabled(log && log->rows.rows() > 0);
             });
     connect(exportLog_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(
+        const QString path = ModalDialog::saveFileName(
             this, tr("Export run log"), QSettings().value("run/logDirectory").toString(),
             tr("Run logs (*.csv)"));
         if (path.isEmpty()) {
@@ -183,16 +187,17 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
     connect(resetAction_, &QAction::triggered, this, [this] {
         run_.stop();
         results_->setRowCount(0);
-        if (phase_ != RunPhase::EmergencyStopped) {
+        if (!emergency_.isLatched()) {
             status_->clear();  // under E-STOP its explanation stays until it is reset
         }
         emit runStarting();
     });
-    connect(emergencyAction_, &QAction::triggered, this, &RunPanel::emergencyStop);
-    connect(resetEmergencyAction_, &QAction::triggered, this, [this] {
-        run_.resetEmergencyStop();
-        emit emergencyStopReset();
-    });
+    connect(emergencyAction_, &QAction::triggered, this,
+            [this] { emergency_.engage(tr("the Run menu")); });
+    connect(resetEmergencyAction_, &QAction::triggered, &emergency_, &EmergencyStop::reset);
+    connect(&emergency_, &EmergencyStop::engaged, this, &RunPanel::emergencyStop);
+    connect(&emergency_, &EmergencyStop::released, this, [this] { run_.resetEmergencyStop(); });
+    connect(&emergency_, &EmergencyStop::latchChanged, this, &RunPanel::showLatch);
     connect(speed_, &QComboBox::currentIndexChanged, this, [this] {
         run_.setSpeed(speed_->currentData().toDouble());
         QSettings().setValue(QStringLiteral("run/speedIndex"), speed_->currentIndex());
@@ -201,7 +206,26 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
     // Results of another plant or demonstration are not this task's: cleared on a switch.
     connect(&session_, &LabSession::plantChanged, this, &RunPanel::clearResultsForNewTask);
     connect(&session_, &LabSession::demonstrationChanged, this, &RunPanel::clearResultsForNewTask);
-    connect(&run_, &RunThread::progress, status_, &QLabel::setText);
+    // The panel's own words, in the language of the moment (the worker's lines go to the status
+    // bar, where they pass).
+    connect(&run_, &RunThread::trialStarted, this, [this](int trial, int trials) {
+        showStatus(status_, tr("Run"), [this, trial, trials] {
+            return tr("Trial %1 of %2 running...").arg(trial + 1).arg(trials);
+        });
+    });
+    connect(&run_, &RunThread::trainingProgress, this, [this](int done, int total) {
+        setTranslatedText(status_, [this, done, total] {
+            return total > 0 ? tr("Training before the run: %1 of %2...").arg(done).arg(total)
+                             : tr("Training before the run...");
+        });
+    });
+    connect(&run_, &RunThread::runFinished, this, [this] {
+        finishedSeen_ = true;
+        const int trials = results_->rowCount();
+        showStatus(status_, tr("Run"), [this, trials] {
+            return tr("Run finished: %n trial(s).", nullptr, trials);
+        });
+    });
     connect(&run_, &RunThread::failed, status_, &QLabel::setText);
     connect(&run_, &RunThread::trialFinished, this, &RunPanel::addTrialRow);
     connect(divergenceStop_, &QPushButton::clicked, this, [this] {
@@ -220,6 +244,7 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, QWidget* parent)
     });
     retranslateUi();
     updateButtons(run_.phase());
+    resetEmergencyAction_->setEnabled(emergency_.isLatched());
 }
 
 QList<QAction*> RunPanel::runActions() const {
@@ -228,7 +253,27 @@ QList<QAction*> RunPanel::runActions() const {
 
 void RunPanel::emergencyStop() {
     run_.emergencyStop();
-    emit emergencyStopRequested();
+    divergence_->hide();
+    restartPending_ = false;
+}
+
+void RunPanel::showLatch(bool latched) {
+    resetEmergencyAction_->setEnabled(latched);
+    runAction_->setEnabled(phase_ == RunPhase::Idle && !latched);
+    const QTime at = emergency_.engagedAt();
+    const QString by = emergency_.pressedBy();
+    if (latched) {
+        showStatus(status_, tr("Run"), [this, at, by] {
+            return tr("E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.")
+                .arg(at.toString(QStringLiteral("HH:mm:ss")), by);
+        });
+    } else {
+        // The explanation stays until the operator runs again: what stopped, and when.
+        showStatus(status_, tr("Run"), [this, at] {
+            return tr("E-STOP was pressed at %1; it is reset now: ready to run.")
+                .arg(at.toString(QStringLiteral("HH:mm:ss")));
+        });
+    }
 }
 
 void RunPanel::clearResultsForNewTask() {
@@ -245,6 +290,10 @@ void RunPanel::clearResultsForNewTask() {
 
 void RunPanel::startRun() {
     if (phase_ == RunPhase::Running || phase_ == RunPhase::Training) {
+        return;
+    }
+    if (emergency_.isLatched()) {
+        showStatus(status_, tr("Run"), emergency_.refusal());
         return;
     }
     QSettings settings;
@@ -275,6 +324,7 @@ void RunPanel::startRun() {
         request.session = QJsonDocument::fromJson(session_.toJson()).object();
     }
     results_->setRowCount(0);
+    finishedSeen_ = false;
     firstTrialRms_ = 0.0;
     divergence_->hide();
     exportLog_->setEnabled(false);
@@ -315,31 +365,21 @@ void RunPanel::updateButtons(RunPhase phase) {
         phase == RunPhase::Running || phase == RunPhase::Paused || phase == RunPhase::Training;
     const RunPhase previous = phase_;
     phase_ = phase;
-    runAction_->setEnabled(phase == RunPhase::Idle);
+    runAction_->setEnabled(phase == RunPhase::Idle && !emergency_.isLatched());
     pauseAction_->setEnabled(phase == RunPhase::Running || phase == RunPhase::Paused);
     stopAction_->setEnabled(active);
-    resetEmergencyAction_->setEnabled(phase == RunPhase::EmergencyStopped);
     retranslateRunActions();
     if (phase == RunPhase::Idle && restartPending_) {
         restartPending_ = false;
         startRun();
         return;
     }
-    if (phase == RunPhase::EmergencyStopped) {
-        emergencyAt_ = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
-        showStatus(status_, tr("Run"), [this, at = emergencyAt_] {
-            return tr("E-STOP engaged at %1: the run is stopped. Reset E-STOP to run again.")
-                .arg(at);
-        });
-    } else if (phase == RunPhase::Training) {
+    if (phase == RunPhase::Training) {
         showStatus(status_, tr("Run"), [this] { return tr("Training before the run..."); });
-    } else if (previous == RunPhase::EmergencyStopped) {
-        // The explanation stays until the operator runs again: what stopped the run, and when.
-        showStatus(status_, tr("Run"), [this, at = emergencyAt_] {
-            return tr("E-STOP was engaged at %1 and stopped the run; it is reset now: ready to "
-                      "run.")
-                .arg(at);
-        });
+    } else if (phase == RunPhase::Idle && previous != RunPhase::Idle &&
+               previous != RunPhase::EmergencyStopped && !finishedSeen_) {
+        // Ended without finishing and without E-STOP (which says so itself): stopped.
+        showStatus(status_, tr("Run"), [this] { return tr("Run stopped."); });
     }
 }
 
@@ -368,7 +408,11 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
         }
         results_->setItem(row, column, item);
     };
-    cell(0, summary.complete ? QString::number(trial + 1) : tr("%1 (stopped)").arg(trial + 1));
+    // Cut short while E-STOP is latched: E-STOP cut it (the worker reports it right after).
+    const bool byEmergency = !summary.complete && emergency_.isLatched();
+    cell(0, summary.complete ? QString::number(trial + 1)
+            : byEmergency    ? tr("%1 (E-STOP)").arg(trial + 1)
+                             : tr("%1 (stopped)").arg(trial + 1));
     cell(1, planar ? QString::number(summary.finalPositionError * 100.0, 'f', 1)
                    : QStringLiteral("—"));
     cell(2, planar ? QString::number(summary.finalHeadingError * 180.0 / M_PI, 'f', 1)
@@ -382,7 +426,9 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
                              .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
                              .arg(tracking)
                        : tr("Trial %1: %2").arg(trial + 1).arg(tracking)) +
-                   (summary.complete ? QString() : tr(" (stopped part-way)")));
+                   (summary.complete ? QString()
+                    : byEmergency    ? tr(" (cut short by E-STOP)")
+                                     : tr(" (stopped part-way)")));
     if (row == 0 && summary.complete) {
         firstTrialRms_ = summary.trackingRms;
     } else if (diverged(summary, firstTrialRms_)) {

@@ -14,6 +14,7 @@ class QTableWidget;
 
 namespace prisca::app {
 
+class EmergencyStop;
 class LabSession;
 class RunThread;
 
@@ -25,7 +26,9 @@ class RunThread;
 class RunPanel : public QWidget {
     Q_OBJECT
   public:
-    RunPanel(LabSession& session, RunThread& run, QWidget* parent = nullptr);
+    /// The run stops when `emergency` engages and cannot start while it is latched.
+    RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency,
+             QWidget* parent = nullptr);
 
     /// Starts a run with the session as it is now (the same as pressing Run).
     void startRun();
@@ -37,19 +40,14 @@ class RunPanel : public QWidget {
 
     /// Run, Pause/Resume, Stop, Reset, with their shortcuts, enabled as the run's phase allows.
     QList<QAction*> runActions() const;
-    /// E-STOP (the window sends Space and Esc to it) and its reset (enabled only while latched).
+    /// E-STOP (the Run menu's; the window's keys and button press the latch directly) and its
+    /// reset (enabled only while latched).
     QAction* emergencyAction() const { return emergencyAction_; }
     QAction* resetEmergencyAction() const { return resetEmergencyAction_; }
-    /// E-STOP now: the run stops within one control period and stays stopped until reset.
-    void emergencyStop();
 
   signals:
     /// A run is about to start, or Reset was pressed: views clear their trails and charts.
     void runStarting();
-    /// The operator pressed E-STOP (button, Space or Esc); sent at once, before the run reacts.
-    void emergencyStopRequested();
-    /// The operator reset E-STOP.
-    void emergencyStopReset();
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -65,8 +63,13 @@ class RunPanel : public QWidget {
     /// A trial that ends far worse than the run's first: a learner gone unstable, most likely.
     static bool diverged(const sim::TrialSummary& summary, double firstTrialRms);
 
+    /// The latch engaged: the run stops within one control period.
+    void emergencyStop();
+    void showLatch(bool latched);
+
     LabSession& session_;
     RunThread& run_;
+    EmergencyStop& emergency_;
     RunPhase phase_ = RunPhase::Idle;
     QLabel* trialsLabel_;
     QSpinBox* trials_;
@@ -93,7 +96,7 @@ class RunPanel : public QWidget {
     QPushButton* divergenceStop_;
     QPushButton* divergenceRestart_;
     double firstTrialRms_ = 0.0;
-    QString emergencyAt_;  ///< when E-STOP was last engaged (HH:mm:ss)
+    bool finishedSeen_ = false;    ///< the run under way told it finished
     bool restartPending_ = false;  ///< a new run once the stopped one is idle  ///< the run's first
                                    ///< finished trial, the yardstick
 };

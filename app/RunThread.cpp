@@ -23,6 +23,8 @@ RunThread::RunThread(QObject* parent) : QObject(parent), worker_(new RunWorker) 
         emit phaseChanged(phase);
     });
     connect(worker_, &RunWorker::progress, this, &RunThread::progress);
+    connect(worker_, &RunWorker::trialStarted, this, &RunThread::trialStarted);
+    connect(worker_, &RunWorker::trainingProgress, this, &RunThread::trainingProgress);
     connect(worker_, &RunWorker::trialFinished, this, &RunThread::trialFinished);
     connect(worker_, &RunWorker::runFinished, this, &RunThread::runFinished);
     connect(worker_, &RunWorker::runLogReady, this,

@@ -36,6 +36,8 @@ class RunThread : public QObject {
     void samplesReady(const QVector<prisca::app::LiveSample>& samples);
     void phaseChanged(prisca::app::RunPhase phase);
     void progress(const QString& text);
+    void trialStarted(int trial, int trials);
+    void trainingProgress(int done, int total);
     void trialFinished(int trial, const prisca::sim::TrialSummary& summary);
     void runFinished();
     void runLogReady(std::shared_ptr<const prisca::core::RunLog> log);

@@ -12,6 +12,7 @@
 #include "sim/RunLogBuilder.h"
 
 #include <QLoggingCategory>
+#include <QRegularExpression>
 #include <QTimer>
 
 #include <exception>
@@ -59,7 +60,13 @@ void RunWorker::start(const RunRequest& request) {
         }
         controller_ = setup_->makeController(
             [this] { return cancelTraining_.load() || emergency_.load(); },
-            [this](const QString& text) { emit progress(text); });
+            [this](const QString& text) {
+                emit progress(text);
+                static const QRegularExpression fraction(QStringLiteral("(\\d+)/(\\d+)"));
+                const QRegularExpressionMatch m = fraction.match(text);
+                emit trainingProgress(m.hasMatch() ? m.captured(1).toInt() : 0,
+                                      m.hasMatch() ? m.captured(2).toInt() : 0);
+            });
         if (!controller_) {  // training cancelled
             if (emergency_.load()) {
                 enterEmergencyStop();
@@ -85,6 +92,7 @@ void RunWorker::start(const RunRequest& request) {
 void RunWorker::beginTrial() {
     stepper_ = std::make_unique<sim::EpisodeStepper>(*plant_, *controller_, setup_->trial(trial_));
     emit progress(tr("Trial %1 of %2").arg(trial_ + 1).arg(request_.trials));
+    emit trialStarted(trial_, request_.trials);
     repace();
     flushClock_.start();
 }
@@ -160,10 +168,12 @@ void RunWorker::endTrial() {
     if (trial_ >= request_.trials) {
         timer_->stop();
         stepper_.reset();
-        setPhase(RunPhase::Idle);
+        // The log and the end are told before the phase: whoever waits for Idle (a quit that
+        // keeps the run's log) finds this run's log there, not the last one's.
         emit progress(tr("Run finished: %1 trials").arg(request_.trials));
         emitRunLog();
         emit runFinished();
+        setPhase(RunPhase::Idle);
         return;
     }
     beginTrial();
@@ -214,19 +224,23 @@ void RunWorker::saveBundle(const sim::EpisodeResult& result, const sim::TrialSum
     emit bundleSaved(folder);
 }
 
+void RunWorker::reportCutTrial() {
+    if (stepper_ && stepper_->stepCount() > 0) {
+        const sim::EpisodeResult result = stepper_->takeResult();
+        sim::TrialSummary summary =
+            sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
+        summary.complete = false;  // stopped part-way: reported, and marked as such
+        saveBundle(result, summary);
+        emit trialFinished(trial_, summary);
+    }
+}
+
 void RunWorker::stop() {
     cancelTraining_.store(true);
     if (phase_ == RunPhase::Running || phase_ == RunPhase::Paused) {
         flushSamples();
         timer_->stop();
-        if (stepper_ && stepper_->stepCount() > 0) {
-            const sim::EpisodeResult result = stepper_->takeResult();
-            sim::TrialSummary summary =
-                sim::summarizeTrial(request_.task.profile.info, *request_.task.demonstration, result);
-            summary.complete = false;  // stopped part-way: reported, and marked as such
-            saveBundle(result, summary);
-            emit trialFinished(trial_, summary);
-        }
+        reportCutTrial();
         stepper_.reset();
         emitRunLog();
         emit progress(tr("Run stopped"));
@@ -242,7 +256,8 @@ void RunWorker::enterEmergencyStop() {
     timer_->stop();
     flushSamples();
     if (stepper_) {
-        emitRunLog();  // the finished trials; the one E-STOP cut short is not among them
+        reportCutTrial();  // shown as far as it went (not in the run log: it did not finish)
+        emitRunLog();      // the finished trials
     }
     stepper_.reset();
     qCWarning(lcRun) << "E-STOP after" << stepsTaken_.load() << "steps";

@@ -110,11 +110,16 @@ class RunWorker : public QObject {
     void phaseChanged(prisca::app::RunPhase phase);
     /// One line for the status bar ("trial 2 of 5", "training PD (selected): ...").
     void progress(const QString& text);
+    /// Trial `trial` (0-based) of `trials` has begun.
+    void trialStarted(int trial, int trials);
+    /// Training before the run: `done` of `total` steps (total 0: not known).
+    void trainingProgress(int done, int total);
     void trialFinished(int trial, const prisca::sim::TrialSummary& summary);
     /// All trials done (not sent after stop() or E-STOP).
     void runFinished();
     /// The run log of the trials that finished (the CLI's `run --out` format), when the run
-    /// ends, is stopped or meets E-STOP; a trial cut short is not in it.
+    /// ends (before phaseChanged(Idle)), is stopped or meets E-STOP; a trial cut short is not
+    /// in it.
     void runLogReady(std::shared_ptr<const prisca::core::RunLog> log);
     void failed(const QString& message);
 
@@ -126,6 +131,8 @@ class RunWorker : public QObject {
     void flushSamples();
     void setPhase(RunPhase phase);
     void enterEmergencyStop();
+    /// The trial under way, cut short by Stop or E-STOP: reported as far as it went.
+    void reportCutTrial();
     void repace();
 
     RunRequest request_;

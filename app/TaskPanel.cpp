@@ -1,5 +1,7 @@
 #include "app/TaskPanel.h"
 
+#include "app/ModalDialog.h"
+
 #include "app/MessageLog.h"
 
 #include "app/LabSession.h"
@@ -217,7 +219,7 @@ bool TaskPanel::openPlantParameters(const QString& path) {
 }
 
 void TaskPanel::askOpenPlantParameters() {
-    const QString path = QFileDialog::getOpenFileName(
+    const QString path = ModalDialog::openFileName(
         this, tr("Open plant file"), QSettings().value("task/plantFileDirectory").toString(),
         tr("Plant files (*.json);;All files (*)"));
     if (!path.isEmpty()) {
@@ -239,7 +241,7 @@ void TaskPanel::showPlantParameters() {
 }
 
 void TaskPanel::askOpen() {
-    const QString path = QFileDialog::getOpenFileName(
+    const QString path = ModalDialog::openFileName(
         this, tr("Open demonstration"), QSettings().value("task/lastDirectory").toString(),
         tr("Demonstrations (*.csv);;All files (*)"));
     if (!path.isEmpty()) {
@@ -248,7 +250,7 @@ void TaskPanel::askOpen() {
 }
 
 void TaskPanel::askSave() {
-    const QString path = QFileDialog::getSaveFileName(
+    const QString path = ModalDialog::saveFileName(
         this, tr("Save demonstration"), QSettings().value("task/lastDirectory").toString(),
         tr("Demonstrations (*.csv)"));
     if (path.isEmpty()) {

@@ -5,6 +5,7 @@
 #include <QJsonObject>
 
 #include <cmath>
+#include <limits>
 
 namespace prisca::core {
 
@@ -30,10 +31,33 @@ QString full(double value) {
     return formatFull(value);
 }
 
+// A spread needs two trials: from one it is not zero, it is unknown.
+double spread(const ErrorSummary& s, double value) {
+    return s.count >= 2 ? value : std::numeric_limits<double>::quiet_NaN();
+}
+
+// "MAE ± std", or the MAE alone when there is no spread to show.
+QString plusMinus(const ErrorSummary& s, const QString& pm) {
+    if (s.count < 2 || !std::isfinite(s.standardDeviation)) {
+        return formatFixed(s.meanAbsoluteError);
+    }
+    return QStringLiteral("%1%2%3").arg(formatFixed(s.meanAbsoluteError), pm,
+                                        formatFixed(s.standardDeviation));
+}
+
+// The label as a table shows it: "PD+H (partial: 1 of 20 trials)" for a partial row.
+QString labelOf(const Table1Row& r) {
+    return r.partial() ? QStringLiteral("%1 (partial: %2 of %3 trials)")
+                             .arg(r.shownLabel())
+                             .arg(r.position.count)
+                             .arg(r.plannedTrials)
+                       : r.shownLabel();
+}
+
 QJsonObject summaryJson(const ErrorSummary& s) {
     return {{"meanAbsoluteError", jsonNumber(s.meanAbsoluteError)},
-            {"standardDeviation", jsonNumber(s.standardDeviation)},
-            {"variance", jsonNumber(s.variance)},
+            {"standardDeviation", jsonNumber(spread(s, s.standardDeviation))},
+            {"variance", jsonNumber(spread(s, s.variance))},
             {"minimum", jsonNumber(s.minimum)},
             {"maximum", jsonNumber(s.maximum)},
             {"count", s.count},
@@ -74,30 +98,34 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                 "| CPU [µs/step] |\n");
             out += QStringLiteral("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
             for (const Table1Row& r : rows) {
-                out +=
-                    QStringLiteral("| %1 | %2 | %3 ± %4 | %5 | %6 ± %7 | %8 | %9 |\n")
-                        .arg(r.shownLabel())
-                        .arg(r.position.count)
-                        .arg(fixed(r.position.meanAbsoluteError),
-                             fixed(r.position.standardDeviation), fixed(r.position.variance),
-                             fixed(r.orientation.meanAbsoluteError),
-                             fixed(r.orientation.standardDeviation), fixed(r.orientation.variance),
-                             formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
+                out += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 |\n")
+                           .arg(labelOf(r))
+                           .arg(r.position.count)
+                           .arg(plusMinus(r.position, QStringLiteral(" ± ")),
+                                fixed(spread(r.position, r.position.variance)),
+                                plusMinus(r.orientation, QStringLiteral(" ± ")),
+                                fixed(spread(r.orientation, r.orientation.variance)),
+                                formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
             break;
         case TableFormat::Csv:
             out += QStringLiteral(
                 "method,label,trials,position_mae_cm,position_std_cm,position_var_cm2,"
-                "orientation_mae_deg,orientation_std_deg,orientation_var_deg2,cpu_us_per_step\n");
+                "orientation_mae_deg,orientation_std_deg,orientation_var_deg2,cpu_us_per_step,"
+                "trials_planned,partial\n");
             for (const Table1Row& r : rows) {
-                out +=
-                    QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
-                        .arg(r.method, r.shownLabel())
-                        .arg(r.position.count)
-                        .arg(full(r.position.meanAbsoluteError), full(r.position.standardDeviation),
-                             full(r.position.variance), full(r.orientation.meanAbsoluteError),
-                             full(r.orientation.standardDeviation), full(r.orientation.variance),
-                             full(r.cpuMicrosecondsPerStep));
+                out += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12\n")
+                           .arg(r.method, r.shownLabel())
+                           .arg(r.position.count)
+                           .arg(full(r.position.meanAbsoluteError),
+                                full(spread(r.position, r.position.standardDeviation)),
+                                full(spread(r.position, r.position.variance)),
+                                full(r.orientation.meanAbsoluteError),
+                                full(spread(r.orientation, r.orientation.standardDeviation)),
+                                full(spread(r.orientation, r.orientation.variance)),
+                                full(r.cpuMicrosecondsPerStep))
+                           .arg(r.plannedTrials > 0 ? r.plannedTrials : r.position.count)
+                           .arg(r.partial() ? QStringLiteral("true") : QStringLiteral("false"));
             }
             break;
         case TableFormat::Latex: {
@@ -114,15 +142,13 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                 "Method & $N$ & MAE [cm] & Var. [cm$^2$] & MAE [$^\\circ$] & Var. [$^{\\circ 2}$] "
                 "& CPU [$\\mu$s/step] \\\\\n\\hline\n");
             for (const Table1Row& r : rows) {
-                out += QStringLiteral(
-                           "%1 & %2 & $%3 \\pm %4$ & %5 & $%6 \\pm %7$ & %8 & %9 \\\\\n")
-                           .arg(r.shownLabel())
+                out += QStringLiteral("%1 & %2 & $%3$ & %4 & $%5$ & %6 & %7 \\\\\n")
+                           .arg(labelOf(r))
                            .arg(r.position.count)
-                           .arg(fixed(r.position.meanAbsoluteError),
-                                fixed(r.position.standardDeviation), fixed(r.position.variance),
-                                fixed(r.orientation.meanAbsoluteError),
-                                fixed(r.orientation.standardDeviation),
-                                fixed(r.orientation.variance),
+                           .arg(plusMinus(r.position, QStringLiteral(" \\pm ")),
+                                fixed(spread(r.position, r.position.variance)),
+                                plusMinus(r.orientation, QStringLiteral(" \\pm ")),
+                                fixed(spread(r.orientation, r.orientation.variance)),
                                 formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
             out += QStringLiteral("\\hline\n\\end{tabular}\n\\end{table}\n");
@@ -133,6 +159,10 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
             for (const Table1Row& r : rows) {
                 array.append(QJsonObject{{"method", r.method},
                                          {"label", r.shownLabel()},
+                                         {"trials", r.position.count},
+                                         {"plannedTrials", r.plannedTrials > 0 ? r.plannedTrials
+                                                                               : r.position.count},
+                                         {"partial", r.partial()},
                                          {"positionCm", summaryJson(r.position)},
                                          {"orientationDeg", summaryJson(r.orientation)},
                                          {"cpuMicrosecondsPerStep",

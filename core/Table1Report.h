@@ -21,8 +21,12 @@ struct Table1Row {
     double cpuMicrosecondsPerStep = std::numeric_limits<double>::quiet_NaN();
     QString label;       ///< as tables show it, e.g. "PD+H" (the method's id where empty)
     bool limit = false;  ///< the ruler every row is read against (the oracle)
+    /// Trials asked for (0: as many as it has); a row with fewer (a cancelled batch) is partial.
+    int plannedTrials = 0;
     /// label, or the id where there is none.
     const QString& shownLabel() const { return label.isEmpty() ? method : label; }
+    /// Fewer trials than asked for: every format marks it.
+    bool partial() const { return plannedTrials > 0 && position.count < plannedTrials; }
 };
 
 /// Output formats of Table I.
@@ -32,7 +36,10 @@ enum class TableFormat { Markdown, Csv, Latex, Json };
 std::optional<TableFormat> parseTableFormat(const QString& text);
 /// The table as text. Markdown and LaTeX show "MAE +- std" and the variance for position (cm,
 /// cm^2) and orientation (deg, deg^2) with two decimals, the trial count and the CPU time per
-/// control step; CSV and JSON carry full precision. `caption` describes the experiment (seed, trials, perturbation).
+/// control step; CSV and JSON carry full precision. `caption` describes the experiment (seed,
+/// trials, perturbation). A row of one trial has no spread (shown "n/a", empty in CSV, null in
+/// JSON); a partial row (Table1Row::partial) says so in every format, with the trials it has
+/// of those asked for.
 QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
                      const QString& caption);
 /// A CPU time per step for a table: three significant digits, "n/a" when not measured.

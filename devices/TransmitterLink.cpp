@@ -4,6 +4,7 @@
 #include "devices/ThreadHandOff.h"
 #include "devices/ThreadPriority.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QLoggingCategory>
 #include <QMetaObject>
@@ -30,20 +31,22 @@ std::int64_t steadyNs() {
 
 QString failsafeReasonText(FailsafeReason reason) {
     switch (reason) {
+        // In the interface's language where a translator is installed (the window), English
+        // otherwise (the command line).
         case FailsafeReason::None:
-            return QStringLiteral("none");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "none");
         case FailsafeReason::NoCommand:
-            return QStringLiteral("no command yet");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "no command yet");
         case FailsafeReason::Stale:
-            return QStringLiteral("stale command");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "stale command");
         case FailsafeReason::EmergencyStop:
-            return QStringLiteral("E-STOP");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "E-STOP");
         case FailsafeReason::PoseLost:
-            return QStringLiteral("camera pose lost");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "camera pose lost");
         case FailsafeReason::ControllerFault:
-            return QStringLiteral("controller fault");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "controller fault");
         case FailsafeReason::Geofence:
-            return QStringLiteral("fence breached");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink", "fence breached");
     }
     return {};
 }

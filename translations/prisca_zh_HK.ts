@@ -666,226 +666,351 @@
     </message>
 </context>
 <context>
+    <name>prisca::app::EmergencyStop</name>
+    <message>
+        <location filename="../app/EmergencyStop.cpp" line="10"/>
+        <source>E-STOP is latched (pressed at %1 by %2): press Reset E-STOP first.</source>
+        <translation>緊急停止已鎖定（%1 由%2觸發）：請先按「重設緊急停止」。</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::EmergencyStopGuard</name>
+    <message>
+        <location filename="../app/EmergencyStopGuard.cpp" line="123"/>
+        <source>Space</source>
+        <translation>空白鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/EmergencyStopGuard.cpp" line="123"/>
+        <source>Esc</source>
+        <translation>Esc 鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/EmergencyStopGuard.cpp" line="178"/>
+        <source>the E-STOP button</source>
+        <translation>緊急停止按鈕</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="162"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="182"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="262"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="268"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="269"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="255"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="298"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="216"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="245"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="299"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="367"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="380"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="396"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="195"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="217"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="414"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="427"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="444"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="267"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="196"/>
+        <source>E-STOP: the experiment stops once the trials under way end; what finished is kept and marked partial.</source>
+        <translation>緊急停止：進行中的試驗結束後實驗即停止；已完成的部分會保留並標為不完整。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="274"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="308"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="349"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="316"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="357"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="322"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="352"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="393"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="353"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="394"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="368"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="415"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="381"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="428"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="397"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="446"/>
+        <source>The last experiment, cancelled %1 (its rows are partial), is shown again; Start runs a new one.</source>
+        <translation>再次顯示上次於 %1 取消的實驗（各行不完整）；按「開始」執行新實驗。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="449"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="471"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="524"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="484"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="493"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="505"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="546"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="558"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="494"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="547"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="510"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="520"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="563"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="573"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="511"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="564"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="532"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="585"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="533"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="535"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="536"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="589"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="590"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="538"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="591"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="539"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="592"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="541"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="594"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="542"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="595"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="543"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="596"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="544"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="597"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="624"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 分 %2 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="626"/>
+        <source>%1 h %2 min</source>
+        <translation>%1 小時 %2 分</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="637"/>
+        <source>Starting... %1 so far</source>
+        <translation>正在開始……已用 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="639"/>
+        <source>Run %1 of %2 done</source>
+        <translation>已完成第 %1 次運行（共 %2 次）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="640"/>
+        <source>Trial %1 of %2 done</source>
+        <translation>已完成第 %1 次試驗（共 %2 次）</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="644"/>
+        <source>about %1 left</source>
+        <translation>約剩 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="645"/>
+        <source>estimating the time left</source>
+        <translation>正在估算剩餘時間</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="646"/>
+        <source>%1 · %2 so far · %3</source>
+        <translation>%1 · 已用 %2 · %3</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="649"/>
+        <source>E-STOP: stopping once the trials under way end. %1</source>
+        <translation>緊急停止：進行中的試驗結束後即停止。%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="651"/>
+        <source>Cancelling: the trials under way finish first. %1</source>
+        <translation>正在取消：先完成進行中的試驗。%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
+        <source>Cancelled: %v of %m runs</source>
+        <translation>已取消：完成 %v / %m 次運行</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
+        <source>Cancelled: %v of %m trials</source>
+        <translation>已取消：完成 %v / %m 次試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="670"/>
+        <source>Finished in %1.</source>
+        <translation>用時 %1 完成。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="671"/>
+        <source>Stopped by E-STOP after %1: the rows are partial.</source>
+        <translation>%1 後被緊急停止：各行不完整。</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="672"/>
+        <source>Cancelled after %1: the rows are partial.</source>
+        <translation>%1 後已取消：各行不完整。</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::GamepadEmergencyButton</name>
+    <message>
+        <location filename="../app/GamepadEmergencyButton.cpp" line="55"/>
+        <source>gamepad button %1</source>
+        <translation>手掣按鈕 %1</translation>
     </message>
 </context>
 <context>
@@ -1047,124 +1172,124 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="379"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="381"/>
         <source>Trial %1, run time %2 s</source>
         <translation>試驗 %1，運行時間 %2 s</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="382"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
         <source>error %1 %2, smoothed %3 %2</source>
         <translation>誤差 %1 %2，平滑後 %3 %2</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="397"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
         <source>%1: u %2, u* %3 %4</source>
         <translation>%1：u %2，u* %3 %4</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="528"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="530"/>
         <source>cannot encode the picture for %1</source>
         <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="551"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="556"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="553"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="558"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="552"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="554"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="562"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="567"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="564"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="569"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="563"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="565"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="580"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="581"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="583"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="583"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="586"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="592"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="599"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="600"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1172,128 +1297,157 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="120"/>
+        <location filename="../app/MainWindow.cpp" line="129"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="140"/>
-        <location filename="../app/MainWindow.cpp" line="673"/>
-        <location filename="../app/MainWindow.cpp" line="679"/>
+        <location filename="../app/MainWindow.cpp" line="156"/>
+        <location filename="../app/MainWindow.cpp" line="689"/>
+        <location filename="../app/MainWindow.cpp" line="695"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="143"/>
-        <location filename="../app/MainWindow.cpp" line="600"/>
-        <location filename="../app/MainWindow.cpp" line="608"/>
+        <location filename="../app/MainWindow.cpp" line="159"/>
         <location filename="../app/MainWindow.cpp" line="610"/>
-        <location filename="../app/MainWindow.cpp" line="624"/>
+        <location filename="../app/MainWindow.cpp" line="618"/>
+        <location filename="../app/MainWindow.cpp" line="620"/>
+        <location filename="../app/MainWindow.cpp" line="634"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="321"/>
+        <location filename="../app/MainWindow.cpp" line="304"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="386"/>
-        <location filename="../app/MainWindow.cpp" line="476"/>
-        <location filename="../app/MainWindow.cpp" line="480"/>
+        <location filename="../app/MainWindow.cpp" line="361"/>
+        <source>the E-STOP button</source>
+        <translation>緊急停止按鈕</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="365"/>
+        <location filename="../app/MainWindow.cpp" line="483"/>
+        <location filename="../app/MainWindow.cpp" line="487"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
+        <location filename="../app/MainWindow.cpp" line="427"/>
+        <source>The quit was called off; the work goes on.</source>
+        <translation>已取消結束；工作繼續。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="434"/>
+        <source>Quits when the work under way is done</source>
+        <translation>進行中的工作完成後結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="435"/>
+        <source>Quits once the work has stopped</source>
+        <translation>工作停止後即結束</translation>
+    </message>
+    <message>
         <location filename="../app/MainWindow.cpp" line="436"/>
+        <source>Don&apos;t quit</source>
+        <translation>不要結束</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="444"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="439"/>
+        <location filename="../app/MainWindow.cpp" line="447"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="442"/>
+        <location filename="../app/MainWindow.cpp" line="450"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="450"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="453"/>
+        <location filename="../app/MainWindow.cpp" line="461"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="456"/>
+        <location filename="../app/MainWindow.cpp" line="464"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="459"/>
+        <location filename="../app/MainWindow.cpp" line="467"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="462"/>
+        <location filename="../app/MainWindow.cpp" line="470"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="465"/>
+        <location filename="../app/MainWindow.cpp" line="473"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="476"/>
+        <location filename="../app/MainWindow.cpp" line="483"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="509"/>
-        <location filename="../app/MainWindow.cpp" line="592"/>
+        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindow.cpp" line="602"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="510"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="521"/>
-        <location filename="../app/MainWindow.cpp" line="619"/>
+        <location filename="../app/MainWindow.cpp" line="528"/>
+        <location filename="../app/MainWindow.cpp" line="629"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="522"/>
+        <location filename="../app/MainWindow.cpp" line="529"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="535"/>
-        <location filename="../app/MainWindow.cpp" line="916"/>
+        <location filename="../app/MainWindow.cpp" line="542"/>
+        <location filename="../app/MainWindow.cpp" line="947"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="559"/>
+        <location filename="../app/MainWindow.cpp" line="569"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="559"/>
+        <location filename="../app/MainWindow.cpp" line="569"/>
+        <location filename="../app/MainWindow.cpp" line="897"/>
+        <location filename="../app/MainWindow.cpp" line="963"/>
+        <location filename="../app/MainWindow.cpp" line="976"/>
+        <location filename="../app/MainWindow.cpp" line="1051"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="593"/>
+        <location filename="../app/MainWindow.cpp" line="603"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1302,202 +1456,338 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="601"/>
+        <location filename="../app/MainWindow.cpp" line="611"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="608"/>
+        <location filename="../app/MainWindow.cpp" line="618"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="610"/>
+        <location filename="../app/MainWindow.cpp" line="620"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="624"/>
+        <location filename="../app/MainWindow.cpp" line="634"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="665"/>
+        <location filename="../app/MainWindow.cpp" line="675"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="666"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="667"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="668"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="669"/>
+        <location filename="../app/MainWindow.cpp" line="679"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="670"/>
+        <location filename="../app/MainWindow.cpp" line="680"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="671"/>
+        <location filename="../app/MainWindow.cpp" line="681"/>
+        <source>E-STOP &amp;inputs...</source>
+        <translation>緊急停止輸入(&amp;I)……</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="683"/>
+        <source>A foot switch&apos;s key and a gamepad button that are E-STOP too</source>
+        <translation>同樣觸發緊急停止的腳踏開關按鍵和手掣按鈕</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="687"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="672"/>
+        <location filename="../app/MainWindow.cpp" line="688"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="690"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="675"/>
+        <location filename="../app/MainWindow.cpp" line="691"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="692"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="693"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="678"/>
+        <location filename="../app/MainWindow.cpp" line="694"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="680"/>
+        <location filename="../app/MainWindow.cpp" line="696"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="681"/>
+        <location filename="../app/MainWindow.cpp" line="697"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="682"/>
+        <location filename="../app/MainWindow.cpp" line="698"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="699"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="684"/>
+        <location filename="../app/MainWindow.cpp" line="700"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="701"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="686"/>
+        <location filename="../app/MainWindow.cpp" line="702"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="687"/>
+        <location filename="../app/MainWindow.cpp" line="703"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="688"/>
+        <location filename="../app/MainWindow.cpp" line="704"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="690"/>
+        <location filename="../app/MainWindow.cpp" line="706"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="700"/>
+        <location filename="../app/MainWindow.cpp" line="717"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="703"/>
+        <location filename="../app/MainWindow.cpp" line="720"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="708"/>
+        <location filename="../app/MainWindow.cpp" line="725"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="711"/>
+        <location filename="../app/MainWindow.cpp" line="728"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="714"/>
+        <location filename="../app/MainWindow.cpp" line="731"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="736"/>
-        <location filename="../app/MainWindow.cpp" line="756"/>
-        <location filename="../app/MainWindow.cpp" line="758"/>
-        <location filename="../app/MainWindow.cpp" line="765"/>
-        <location filename="../app/MainWindow.cpp" line="768"/>
-        <location filename="../app/MainWindow.cpp" line="800"/>
+        <location filename="../app/MainWindow.cpp" line="889"/>
+        <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
+        <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="894"/>
+        <source>E-STOP (the foot switch&apos;s key)</source>
+        <translation>緊急停止（腳踏開關的按鍵）</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="897"/>
+        <source>Gamepad button %1</source>
+        <translation>手掣按鈕 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="964"/>
+        <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
+        <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="977"/>
+        <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
+        <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="988"/>
+        <source>E-STOP inputs</source>
+        <translation>緊急停止輸入</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="990"/>
+        <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
+        <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1000"/>
+        <source>No key</source>
+        <translation>不設按鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1007"/>
+        <source>None</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1009"/>
+        <source>B (the red one on most pads)</source>
+        <translation>B（大多數手掣上的紅色按鈕）</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1010"/>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1011"/>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1012"/>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1013"/>
+        <source>Back / Select</source>
+        <translation>Back / Select</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1014"/>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1015"/>
+        <source>Left shoulder</source>
+        <translation>左肩鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1016"/>
+        <source>Right shoulder</source>
+        <translation>右肩鍵</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1017"/>
+        <source>Paddle 1</source>
+        <translation>背鍵 1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1023"/>
+        <source>A gamepad is connected.</source>
+        <translation>已連接手掣。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1024"/>
+        <source>No gamepad is connected now.</source>
+        <translation>目前沒有連接手掣。</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1027"/>
+        <source>Foot switch key:</source>
+        <translation>腳踏開關按鍵：</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1028"/>
+        <source>Gamepad button:</source>
+        <translation>手掣按鈕：</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1052"/>
+        <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
+        <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1054"/>
+        <source>, the key %1</source>
+        <translation>、按鍵 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="1055"/>
+        <source>, gamepad button %1</source>
+        <translation>、手掣按鈕 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="427"/>
+        <location filename="../app/MainWindow.cpp" line="753"/>
+        <location filename="../app/MainWindow.cpp" line="774"/>
+        <location filename="../app/MainWindow.cpp" line="776"/>
+        <location filename="../app/MainWindow.cpp" line="783"/>
+        <location filename="../app/MainWindow.cpp" line="786"/>
+        <location filename="../app/MainWindow.cpp" line="819"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="737"/>
+        <location filename="../app/MainWindow.cpp" line="754"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="738"/>
+        <location filename="../app/MainWindow.cpp" line="755"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="756"/>
+        <location filename="../app/MainWindow.cpp" line="774"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="766"/>
+        <location filename="../app/MainWindow.cpp" line="784"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="779"/>
+        <location filename="../app/MainWindow.cpp" line="797"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="780"/>
+        <location filename="../app/MainWindow.cpp" line="798"/>
         <source>Work is under way:
 
 %1
@@ -1510,98 +1800,93 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="785"/>
+        <location filename="../app/MainWindow.cpp" line="803"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="787"/>
+        <location filename="../app/MainWindow.cpp" line="805"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="788"/>
+        <location filename="../app/MainWindow.cpp" line="806"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="789"/>
+        <location filename="../app/MainWindow.cpp" line="807"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="800"/>
+        <location filename="../app/MainWindow.cpp" line="819"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="830"/>
+        <location filename="../app/MainWindow.cpp" line="851"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="830"/>
+        <location filename="../app/MainWindow.cpp" line="851"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="842"/>
+        <location filename="../app/MainWindow.cpp" line="863"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="844"/>
+        <location filename="../app/MainWindow.cpp" line="865"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="848"/>
+        <location filename="../app/MainWindow.cpp" line="869"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="851"/>
+        <location filename="../app/MainWindow.cpp" line="872"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="867"/>
+        <location filename="../app/MainWindow.cpp" line="888"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="867"/>
-        <source>E-STOP, whatever has the focus (Space types a space in a text field; Esc first closes an open list or dialog)</source>
-        <translation>緊急停止，不論焦點在何處（在文字欄中空白鍵輸入空格；Esc 會先關閉已開啟的清單或對話框）</translation>
-    </message>
-    <message>
-        <location filename="../app/MainWindow.cpp" line="873"/>
+        <location filename="../app/MainWindow.cpp" line="903"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="874"/>
+        <location filename="../app/MainWindow.cpp" line="904"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="876"/>
+        <location filename="../app/MainWindow.cpp" line="906"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="883"/>
+        <location filename="../app/MainWindow.cpp" line="913"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="892"/>
-        <location filename="../app/MainWindow.cpp" line="898"/>
+        <location filename="../app/MainWindow.cpp" line="922"/>
+        <location filename="../app/MainWindow.cpp" line="928"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="892"/>
+        <location filename="../app/MainWindow.cpp" line="922"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -1728,17 +2013,17 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLog</name>
     <message>
-        <location filename="../app/MessageLog.cpp" line="94"/>
+        <location filename="../app/MessageLog.cpp" line="96"/>
         <source>info</source>
         <translation>資訊</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="96"/>
+        <location filename="../app/MessageLog.cpp" line="98"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="98"/>
+        <location filename="../app/MessageLog.cpp" line="100"/>
         <source>error</source>
         <translation>錯誤</translation>
     </message>
@@ -1792,145 +2077,156 @@ What should happen to it?</source>
     </message>
 </context>
 <context>
+    <name>prisca::app::ModalDialog</name>
+    <message>
+        <location filename="../app/ModalDialog.cpp" line="57"/>
+        <source>%1 already exists.
+Do you want to replace it?</source>
+        <translation>%1 已存在。
+要取代它嗎？</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="94"/>
-        <location filename="../app/RecordPanel.cpp" line="161"/>
-        <location filename="../app/RecordPanel.cpp" line="167"/>
-        <location filename="../app/RecordPanel.cpp" line="220"/>
-        <location filename="../app/RecordPanel.cpp" line="250"/>
-        <location filename="../app/RecordPanel.cpp" line="262"/>
-        <location filename="../app/RecordPanel.cpp" line="277"/>
-        <location filename="../app/RecordPanel.cpp" line="285"/>
-        <location filename="../app/RecordPanel.cpp" line="313"/>
-        <location filename="../app/RecordPanel.cpp" line="324"/>
-        <location filename="../app/RecordPanel.cpp" line="358"/>
+        <location filename="../app/RecordPanel.cpp" line="97"/>
+        <location filename="../app/RecordPanel.cpp" line="141"/>
+        <location filename="../app/RecordPanel.cpp" line="170"/>
+        <location filename="../app/RecordPanel.cpp" line="176"/>
+        <location filename="../app/RecordPanel.cpp" line="229"/>
+        <location filename="../app/RecordPanel.cpp" line="259"/>
+        <location filename="../app/RecordPanel.cpp" line="271"/>
+        <location filename="../app/RecordPanel.cpp" line="286"/>
+        <location filename="../app/RecordPanel.cpp" line="294"/>
+        <location filename="../app/RecordPanel.cpp" line="322"/>
+        <location filename="../app/RecordPanel.cpp" line="333"/>
+        <location filename="../app/RecordPanel.cpp" line="367"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="161"/>
+        <location filename="../app/RecordPanel.cpp" line="170"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="168"/>
+        <location filename="../app/RecordPanel.cpp" line="177"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="204"/>
+        <location filename="../app/RecordPanel.cpp" line="213"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="209"/>
+        <location filename="../app/RecordPanel.cpp" line="218"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="220"/>
+        <location filename="../app/RecordPanel.cpp" line="229"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="252"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="253"/>
+        <location filename="../app/RecordPanel.cpp" line="262"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="263"/>
+        <location filename="../app/RecordPanel.cpp" line="272"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="264"/>
+        <location filename="../app/RecordPanel.cpp" line="273"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="278"/>
+        <location filename="../app/RecordPanel.cpp" line="287"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="288"/>
+        <location filename="../app/RecordPanel.cpp" line="297"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="298"/>
-        <location filename="../app/RecordPanel.cpp" line="309"/>
+        <location filename="../app/RecordPanel.cpp" line="307"/>
+        <location filename="../app/RecordPanel.cpp" line="318"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="300"/>
+        <location filename="../app/RecordPanel.cpp" line="309"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="313"/>
+        <location filename="../app/RecordPanel.cpp" line="322"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="325"/>
+        <location filename="../app/RecordPanel.cpp" line="334"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="348"/>
+        <location filename="../app/RecordPanel.cpp" line="357"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="353"/>
+        <location filename="../app/RecordPanel.cpp" line="362"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="355"/>
+        <location filename="../app/RecordPanel.cpp" line="364"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="356"/>
+        <location filename="../app/RecordPanel.cpp" line="365"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="357"/>
+        <location filename="../app/RecordPanel.cpp" line="366"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="359"/>
+        <location filename="../app/RecordPanel.cpp" line="368"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="360"/>
+        <location filename="../app/RecordPanel.cpp" line="369"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="361"/>
+        <location filename="../app/RecordPanel.cpp" line="370"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="362"/>
+        <location filename="../app/RecordPanel.cpp" line="371"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="363"/>
+        <location filename="../app/RecordPanel.cpp" line="372"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -2026,230 +2322,239 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="336"/>
+        <location filename="../app/RigPanel.cpp" line="342"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="337"/>
-        <location filename="../app/RigPanel.cpp" line="344"/>
+        <location filename="../app/RigPanel.cpp" line="343"/>
+        <location filename="../app/RigPanel.cpp" line="350"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="343"/>
+        <location filename="../app/RigPanel.cpp" line="349"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="443"/>
-        <location filename="../app/RigPanel.cpp" line="454"/>
+        <location filename="../app/RigPanel.cpp" line="448"/>
+        <location filename="../app/RigPanel.cpp" line="459"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="444"/>
+        <location filename="../app/RigPanel.cpp" line="449"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="455"/>
+        <location filename="../app/RigPanel.cpp" line="460"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="528"/>
+        <location filename="../app/RigPanel.cpp" line="537"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="531"/>
+        <location filename="../app/RigPanel.cpp" line="540"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="546"/>
+        <location filename="../app/RigPanel.cpp" line="555"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="578"/>
+        <location filename="../app/RigPanel.cpp" line="592"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="618"/>
+        <location filename="../app/RigPanel.cpp" line="632"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="613"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="179"/>
-        <location filename="../app/RigPanel.cpp" line="965"/>
+        <location filename="../app/RigPanel.cpp" line="185"/>
+        <location filename="../app/RigPanel.cpp" line="990"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="369"/>
+        <location filename="../app/RigPanel.cpp" line="375"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="380"/>
-        <location filename="../app/RigPanel.cpp" line="1082"/>
+        <location filename="../app/RigPanel.cpp" line="386"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="381"/>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="387"/>
+        <location filename="../app/RigPanel.cpp" line="1095"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="394"/>
+        <location filename="../app/RigPanel.cpp" line="400"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="422"/>
+        <location filename="../app/RigPanel.cpp" line="428"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="427"/>
+        <location filename="../app/RigPanel.cpp" line="433"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="523"/>
+        <location filename="../app/RigPanel.cpp" line="532"/>
         <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
         <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="597"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="620"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="633"/>
+        <location filename="../app/RigPanel.cpp" line="650"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="643"/>
+        <location filename="../app/RigPanel.cpp" line="663"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="648"/>
+        <location filename="../app/RigPanel.cpp" line="668"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="651"/>
+        <location filename="../app/RigPanel.cpp" line="671"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="654"/>
+        <location filename="../app/RigPanel.cpp" line="674"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="655"/>
+        <location filename="../app/RigPanel.cpp" line="675"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="312"/>
-        <location filename="../app/RigPanel.cpp" line="323"/>
-        <location filename="../app/RigPanel.cpp" line="716"/>
-        <location filename="../app/RigPanel.cpp" line="725"/>
+        <location filename="../app/RigPanel.cpp" line="318"/>
+        <location filename="../app/RigPanel.cpp" line="329"/>
+        <location filename="../app/RigPanel.cpp" line="736"/>
+        <location filename="../app/RigPanel.cpp" line="745"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="323"/>
+        <location filename="../app/RigPanel.cpp" line="329"/>
         <source>Camera stopped.</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="396"/>
-        <location filename="../app/RigPanel.cpp" line="535"/>
-        <location filename="../app/RigPanel.cpp" line="543"/>
-        <location filename="../app/RigPanel.cpp" line="546"/>
-        <location filename="../app/RigPanel.cpp" line="560"/>
-        <location filename="../app/RigPanel.cpp" line="571"/>
-        <location filename="../app/RigPanel.cpp" line="577"/>
-        <location filename="../app/RigPanel.cpp" line="597"/>
-        <location filename="../app/RigPanel.cpp" line="623"/>
-        <location filename="../app/RigPanel.cpp" line="632"/>
-        <location filename="../app/RigPanel.cpp" line="659"/>
+        <location filename="../app/RigPanel.cpp" line="402"/>
+        <location filename="../app/RigPanel.cpp" line="520"/>
+        <location filename="../app/RigPanel.cpp" line="544"/>
+        <location filename="../app/RigPanel.cpp" line="552"/>
+        <location filename="../app/RigPanel.cpp" line="555"/>
+        <location filename="../app/RigPanel.cpp" line="569"/>
+        <location filename="../app/RigPanel.cpp" line="574"/>
+        <location filename="../app/RigPanel.cpp" line="585"/>
+        <location filename="../app/RigPanel.cpp" line="591"/>
+        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="637"/>
+        <location filename="../app/RigPanel.cpp" line="649"/>
+        <location filename="../app/RigPanel.cpp" line="657"/>
+        <location filename="../app/RigPanel.cpp" line="679"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="422"/>
-        <location filename="../app/RigPanel.cpp" line="426"/>
-        <location filename="../app/RigPanel.cpp" line="1121"/>
-        <location filename="../app/RigPanel.cpp" line="1125"/>
+        <location filename="../app/RigPanel.cpp" line="428"/>
+        <location filename="../app/RigPanel.cpp" line="432"/>
+        <location filename="../app/RigPanel.cpp" line="1145"/>
+        <location filename="../app/RigPanel.cpp" line="1150"/>
+        <location filename="../app/RigPanel.cpp" line="1154"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="726"/>
+        <location filename="../app/RigPanel.cpp" line="746"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="745"/>
+        <location filename="../app/RigPanel.cpp" line="765"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="745"/>
-        <location filename="../app/RigPanel.cpp" line="883"/>
-        <location filename="../app/RigPanel.cpp" line="967"/>
+        <location filename="../app/RigPanel.cpp" line="765"/>
+        <location filename="../app/RigPanel.cpp" line="908"/>
+        <location filename="../app/RigPanel.cpp" line="992"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="358"/>
-        <location filename="../app/RigPanel.cpp" line="722"/>
-        <location filename="../app/RigPanel.cpp" line="766"/>
-        <location filename="../app/RigPanel.cpp" line="778"/>
-        <location filename="../app/RigPanel.cpp" line="787"/>
-        <location filename="../app/RigPanel.cpp" line="794"/>
+        <location filename="../app/RigPanel.cpp" line="364"/>
+        <location filename="../app/RigPanel.cpp" line="742"/>
+        <location filename="../app/RigPanel.cpp" line="786"/>
+        <location filename="../app/RigPanel.cpp" line="798"/>
+        <location filename="../app/RigPanel.cpp" line="807"/>
+        <location filename="../app/RigPanel.cpp" line="814"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="355"/>
+        <location filename="../app/RigPanel.cpp" line="361"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="359"/>
+        <location filename="../app/RigPanel.cpp" line="365"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="505"/>
+        <location filename="../app/RigPanel.cpp" line="510"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
         <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="767"/>
+        <location filename="../app/RigPanel.cpp" line="658"/>
+        <source>E-STOP is reset: the link sends the commands again.</source>
+        <translation>緊急停止已重設：鏈路再次發送指令。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="787"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -2258,421 +2563,421 @@ What should happen to it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="788"/>
+        <location filename="../app/RigPanel.cpp" line="808"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="819"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="819"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="822"/>
+        <location filename="../app/RigPanel.cpp" line="842"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="826"/>
+        <location filename="../app/RigPanel.cpp" line="846"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="831"/>
+        <location filename="../app/RigPanel.cpp" line="851"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="832"/>
+        <location filename="../app/RigPanel.cpp" line="852"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="855"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="855"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="856"/>
+        <location filename="../app/RigPanel.cpp" line="881"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="859"/>
-        <location filename="../app/RigPanel.cpp" line="868"/>
+        <location filename="../app/RigPanel.cpp" line="884"/>
+        <location filename="../app/RigPanel.cpp" line="893"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="861"/>
-        <location filename="../app/RigPanel.cpp" line="870"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="895"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="868"/>
+        <location filename="../app/RigPanel.cpp" line="893"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="913"/>
+        <location filename="../app/RigPanel.cpp" line="938"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="914"/>
+        <location filename="../app/RigPanel.cpp" line="939"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="915"/>
+        <location filename="../app/RigPanel.cpp" line="940"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="916"/>
+        <location filename="../app/RigPanel.cpp" line="941"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="922"/>
+        <location filename="../app/RigPanel.cpp" line="947"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="923"/>
+        <location filename="../app/RigPanel.cpp" line="948"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="924"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="925"/>
+        <location filename="../app/RigPanel.cpp" line="950"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="926"/>
+        <location filename="../app/RigPanel.cpp" line="951"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="927"/>
+        <location filename="../app/RigPanel.cpp" line="952"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="929"/>
+        <location filename="../app/RigPanel.cpp" line="954"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="931"/>
+        <location filename="../app/RigPanel.cpp" line="956"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="932"/>
+        <location filename="../app/RigPanel.cpp" line="957"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="933"/>
+        <location filename="../app/RigPanel.cpp" line="958"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="934"/>
+        <location filename="../app/RigPanel.cpp" line="959"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="935"/>
+        <location filename="../app/RigPanel.cpp" line="960"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="936"/>
+        <location filename="../app/RigPanel.cpp" line="961"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="937"/>
+        <location filename="../app/RigPanel.cpp" line="962"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="940"/>
+        <location filename="../app/RigPanel.cpp" line="965"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="941"/>
+        <location filename="../app/RigPanel.cpp" line="966"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="942"/>
+        <location filename="../app/RigPanel.cpp" line="967"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="969"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="945"/>
+        <location filename="../app/RigPanel.cpp" line="970"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="946"/>
+        <location filename="../app/RigPanel.cpp" line="971"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="972"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="948"/>
+        <location filename="../app/RigPanel.cpp" line="973"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
+        <location filename="../app/RigPanel.cpp" line="974"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="950"/>
+        <location filename="../app/RigPanel.cpp" line="975"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="951"/>
+        <location filename="../app/RigPanel.cpp" line="976"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="952"/>
+        <location filename="../app/RigPanel.cpp" line="977"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="953"/>
+        <location filename="../app/RigPanel.cpp" line="978"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="955"/>
+        <location filename="../app/RigPanel.cpp" line="980"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="957"/>
+        <location filename="../app/RigPanel.cpp" line="982"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="959"/>
+        <location filename="../app/RigPanel.cpp" line="984"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="961"/>
+        <location filename="../app/RigPanel.cpp" line="986"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="966"/>
+        <location filename="../app/RigPanel.cpp" line="991"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="968"/>
+        <location filename="../app/RigPanel.cpp" line="993"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="969"/>
+        <location filename="../app/RigPanel.cpp" line="994"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="970"/>
+        <location filename="../app/RigPanel.cpp" line="995"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="973"/>
+        <location filename="../app/RigPanel.cpp" line="998"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="974"/>
+        <location filename="../app/RigPanel.cpp" line="999"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="976"/>
+        <location filename="../app/RigPanel.cpp" line="1001"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="977"/>
+        <location filename="../app/RigPanel.cpp" line="1002"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="978"/>
+        <location filename="../app/RigPanel.cpp" line="1003"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="979"/>
+        <location filename="../app/RigPanel.cpp" line="1004"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="982"/>
+        <location filename="../app/RigPanel.cpp" line="1007"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="984"/>
+        <location filename="../app/RigPanel.cpp" line="1009"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="985"/>
+        <location filename="../app/RigPanel.cpp" line="1010"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="988"/>
+        <location filename="../app/RigPanel.cpp" line="1013"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="989"/>
+        <location filename="../app/RigPanel.cpp" line="1014"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="990"/>
+        <location filename="../app/RigPanel.cpp" line="1015"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="991"/>
-        <location filename="../app/RigPanel.cpp" line="993"/>
+        <location filename="../app/RigPanel.cpp" line="1016"/>
+        <location filename="../app/RigPanel.cpp" line="1018"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="992"/>
+        <location filename="../app/RigPanel.cpp" line="1017"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="996"/>
+        <location filename="../app/RigPanel.cpp" line="1021"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1022"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1022"/>
-        <location filename="../app/RigPanel.cpp" line="1027"/>
-        <location filename="../app/RigPanel.cpp" line="1054"/>
-        <location filename="../app/RigPanel.cpp" line="1115"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1079"/>
+        <location filename="../app/RigPanel.cpp" line="1140"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1027"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1049"/>
+        <location filename="../app/RigPanel.cpp" line="1074"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1054"/>
+        <location filename="../app/RigPanel.cpp" line="1079"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1068"/>
-        <location filename="../app/RigPanel.cpp" line="1072"/>
+        <location filename="../app/RigPanel.cpp" line="1093"/>
+        <location filename="../app/RigPanel.cpp" line="1097"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1100"/>
+        <location filename="../app/RigPanel.cpp" line="1125"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1106"/>
+        <location filename="../app/RigPanel.cpp" line="1131"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1110"/>
+        <location filename="../app/RigPanel.cpp" line="1135"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1121"/>
+        <location filename="../app/RigPanel.cpp" line="1150"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1125"/>
+        <location filename="../app/RigPanel.cpp" line="1154"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1154"/>
+        <location filename="../app/RigPanel.cpp" line="1183"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1154"/>
-        <location filename="../app/RigPanel.cpp" line="1157"/>
-        <location filename="../app/RigPanel.cpp" line="1160"/>
+        <location filename="../app/RigPanel.cpp" line="1183"/>
+        <location filename="../app/RigPanel.cpp" line="1186"/>
+        <location filename="../app/RigPanel.cpp" line="1189"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1157"/>
+        <location filename="../app/RigPanel.cpp" line="1186"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1160"/>
+        <location filename="../app/RigPanel.cpp" line="1189"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -2680,274 +2985,316 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="164"/>
-        <location filename="../app/RunPanel.cpp" line="174"/>
+        <location filename="../app/RunPanel.cpp" line="168"/>
+        <location filename="../app/RunPanel.cpp" line="178"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="165"/>
+        <location filename="../app/RunPanel.cpp" line="169"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="179"/>
+        <location filename="../app/RunPanel.cpp" line="183"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="295"/>
+        <location filename="../app/RunPanel.cpp" line="345"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="348"/>
+        <location filename="../app/RunPanel.cpp" line="388"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="348"/>
+        <location filename="../app/RunPanel.cpp" line="388"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241"/>
+        <location filename="../app/RunPanel.cpp" line="286"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="335"/>
+        <location filename="../app/RunPanel.cpp" line="196"/>
+        <source>the Run menu</source>
+        <translation>「運行」選單</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="213"/>
+        <source>Trial %1 of %2 running...</source>
+        <translation>正在進行第 %1 次試驗（共 %2 次）……</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="218"/>
+        <source>Training before the run: %1 of %2...</source>
+        <translation>運行前訓練：%1 / %2……</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="219"/>
+        <location filename="../app/RunPanel.cpp" line="378"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/RunPanel.cpp" line="226"/>
+        <source>Run finished: %n trial(s).</source>
+        <translation>
+            <numerusform>運行完成：%n 次試驗。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="350"/>
+        <location filename="../app/RunPanel.cpp" line="267"/>
+        <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
+        <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="273"/>
+        <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
+        <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="382"/>
+        <source>Run stopped.</source>
+        <translation>運行已停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="390"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="367"/>
+        <location filename="../app/RunPanel.cpp" line="407"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="371"/>
+        <location filename="../app/RunPanel.cpp" line="414"/>
+        <source>%1 (E-STOP)</source>
+        <translation>%1（緊急停止）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="415"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="393"/>
+        <location filename="../app/RunPanel.cpp" line="430"/>
+        <source> (cut short by E-STOP)</source>
+        <translation>（被緊急停止中斷）</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="439"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="421"/>
+        <location filename="../app/RunPanel.cpp" line="467"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="468"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="423"/>
+        <location filename="../app/RunPanel.cpp" line="469"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="425"/>
+        <location filename="../app/RunPanel.cpp" line="471"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="427"/>
+        <location filename="../app/RunPanel.cpp" line="473"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="429"/>
+        <location filename="../app/RunPanel.cpp" line="475"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="431"/>
+        <location filename="../app/RunPanel.cpp" line="477"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="433"/>
+        <location filename="../app/RunPanel.cpp" line="479"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="435"/>
+        <location filename="../app/RunPanel.cpp" line="481"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="436"/>
+        <location filename="../app/RunPanel.cpp" line="482"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="437"/>
+        <location filename="../app/RunPanel.cpp" line="483"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="438"/>
+        <location filename="../app/RunPanel.cpp" line="484"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="448"/>
+        <location filename="../app/RunPanel.cpp" line="494"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="347"/>
+        <location filename="../app/RunPanel.cpp" line="387"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="178"/>
-        <location filename="../app/RunPanel.cpp" line="240"/>
-        <location filename="../app/RunPanel.cpp" line="282"/>
-        <location filename="../app/RunPanel.cpp" line="330"/>
-        <location filename="../app/RunPanel.cpp" line="335"/>
-        <location filename="../app/RunPanel.cpp" line="338"/>
+        <location filename="../app/RunPanel.cpp" line="182"/>
+        <location filename="../app/RunPanel.cpp" line="212"/>
+        <location filename="../app/RunPanel.cpp" line="225"/>
+        <location filename="../app/RunPanel.cpp" line="266"/>
+        <location filename="../app/RunPanel.cpp" line="272"/>
+        <location filename="../app/RunPanel.cpp" line="285"/>
+        <location filename="../app/RunPanel.cpp" line="296"/>
+        <location filename="../app/RunPanel.cpp" line="332"/>
         <location filename="../app/RunPanel.cpp" line="378"/>
+        <location filename="../app/RunPanel.cpp" line="382"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="283"/>
+        <location filename="../app/RunPanel.cpp" line="333"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="331"/>
-        <source>E-STOP engaged at %1: the run is stopped. Reset E-STOP to run again.</source>
-        <translation>緊急停止 於 %1 啟動：運行已停止。重設 緊急停止 後才可再運行。</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="339"/>
-        <source>E-STOP was engaged at %1 and stopped the run; it is reset now: ready to run.</source>
-        <translation>緊急停止 曾於 %1 啟動並停止了運行；現已重設：可以運行。</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="349"/>
+        <location filename="../app/RunPanel.cpp" line="389"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="377"/>
+        <location filename="../app/RunPanel.cpp" line="421"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="379"/>
+        <location filename="../app/RunPanel.cpp" line="423"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="384"/>
+        <location filename="../app/RunPanel.cpp" line="428"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="385"/>
+        <location filename="../app/RunPanel.cpp" line="431"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="440"/>
+        <location filename="../app/RunPanel.cpp" line="486"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="442"/>
+        <location filename="../app/RunPanel.cpp" line="488"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="445"/>
+        <location filename="../app/RunPanel.cpp" line="491"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="446"/>
+        <location filename="../app/RunPanel.cpp" line="492"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="450"/>
+        <location filename="../app/RunPanel.cpp" line="496"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="451"/>
+        <location filename="../app/RunPanel.cpp" line="497"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="452"/>
+        <location filename="../app/RunPanel.cpp" line="498"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="454"/>
+        <location filename="../app/RunPanel.cpp" line="500"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="455"/>
+        <location filename="../app/RunPanel.cpp" line="501"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="458"/>
+        <location filename="../app/RunPanel.cpp" line="504"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="458"/>
+        <location filename="../app/RunPanel.cpp" line="504"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="458"/>
+        <location filename="../app/RunPanel.cpp" line="504"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="459"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="459"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="461"/>
+        <location filename="../app/RunPanel.cpp" line="507"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="461"/>
+        <location filename="../app/RunPanel.cpp" line="507"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="462"/>
+        <location filename="../app/RunPanel.cpp" line="508"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="462"/>
+        <location filename="../app/RunPanel.cpp" line="508"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -2955,37 +3302,37 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="45"/>
+        <location filename="../app/RunWorker.cpp" line="46"/>
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="73"/>
+        <location filename="../app/RunWorker.cpp" line="80"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="87"/>
+        <location filename="../app/RunWorker.cpp" line="94"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="164"/>
+        <location filename="../app/RunWorker.cpp" line="173"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="211"/>
+        <location filename="../app/RunWorker.cpp" line="221"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="232"/>
+        <location filename="../app/RunWorker.cpp" line="246"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="249"/>
+        <location filename="../app/RunWorker.cpp" line="264"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -2993,14 +3340,14 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="183"/>
-        <location filename="../app/TaskPanel.cpp" line="190"/>
-        <location filename="../app/TaskPanel.cpp" line="243"/>
+        <location filename="../app/TaskPanel.cpp" line="185"/>
+        <location filename="../app/TaskPanel.cpp" line="192"/>
+        <location filename="../app/TaskPanel.cpp" line="245"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="184"/>
+        <location filename="../app/TaskPanel.cpp" line="186"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -3009,156 +3356,156 @@ What should happen to it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="191"/>
-        <location filename="../app/TaskPanel.cpp" line="211"/>
+        <location filename="../app/TaskPanel.cpp" line="193"/>
+        <location filename="../app/TaskPanel.cpp" line="213"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="244"/>
+        <location filename="../app/TaskPanel.cpp" line="246"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="252"/>
-        <location filename="../app/TaskPanel.cpp" line="259"/>
+        <location filename="../app/TaskPanel.cpp" line="254"/>
+        <location filename="../app/TaskPanel.cpp" line="261"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="253"/>
+        <location filename="../app/TaskPanel.cpp" line="255"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="174"/>
+        <location filename="../app/TaskPanel.cpp" line="176"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>figure-eight</source>
         <translation>8 字形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/TaskPanel.cpp" line="123"/>
         <source>s-turn</source>
         <translation>S 形轉彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>u-turn</source>
         <translation>掉頭</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/TaskPanel.cpp" line="124"/>
         <source>s-bend</source>
         <translation>S 形彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>stick</source>
         <translation>搖桿</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>keyboard</source>
         <translation>鍵盤</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>standstill</source>
         <translation>靜止起步</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/TaskPanel.cpp" line="126"/>
         <source>fast</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>slow</source>
         <translation>慢速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>blip</source>
         <translation>點油</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>jitter</source>
         <translation>抖動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/TaskPanel.cpp" line="127"/>
         <source>coast</source>
         <translation>滑行</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>left</source>
         <translation>左</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>right</source>
         <translation>右</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>swing</source>
         <translation>擺動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/TaskPanel.cpp" line="128"/>
         <source>medium</source>
         <translation>中</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/TaskPanel.cpp" line="129"/>
         <source>small</source>
         <translation>小</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/TaskPanel.cpp" line="129"/>
         <source>large</source>
         <translation>大</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/TaskPanel.cpp" line="129"/>
         <source>circle</source>
         <translation>圓形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/TaskPanel.cpp" line="129"/>
         <source>wide</source>
         <translation>寬</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="128"/>
+        <location filename="../app/TaskPanel.cpp" line="130"/>
         <source>dock</source>
         <translation>泊位</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="128"/>
+        <location filename="../app/TaskPanel.cpp" line="130"/>
         <source>spin</source>
         <translation>原地轉</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="146"/>
+        <location filename="../app/TaskPanel.cpp" line="148"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="202"/>
-        <location filename="../app/TaskPanel.cpp" line="210"/>
-        <location filename="../app/TaskPanel.cpp" line="221"/>
+        <location filename="../app/TaskPanel.cpp" line="204"/>
+        <location filename="../app/TaskPanel.cpp" line="212"/>
+        <location filename="../app/TaskPanel.cpp" line="223"/>
         <source>Open plant file</source>
         <translation>開啟機型檔</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="203"/>
+        <location filename="../app/TaskPanel.cpp" line="205"/>
         <source>The plant file could not be used.
 
 %1</source>
@@ -3167,104 +3514,142 @@ What should happen to it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="222"/>
+        <location filename="../app/TaskPanel.cpp" line="224"/>
         <source>Plant files (*.json);;All files (*)</source>
         <translation>機型檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="232"/>
+        <location filename="../app/TaskPanel.cpp" line="234"/>
         <source>the catalog&apos;s</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="272"/>
+        <location filename="../app/TaskPanel.cpp" line="274"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="276"/>
+        <location filename="../app/TaskPanel.cpp" line="278"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="291"/>
+        <location filename="../app/TaskPanel.cpp" line="293"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="302"/>
+        <location filename="../app/TaskPanel.cpp" line="304"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="303"/>
+        <location filename="../app/TaskPanel.cpp" line="305"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="304"/>
+        <location filename="../app/TaskPanel.cpp" line="306"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="305"/>
+        <location filename="../app/TaskPanel.cpp" line="307"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="306"/>
+        <location filename="../app/TaskPanel.cpp" line="308"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="308"/>
+        <location filename="../app/TaskPanel.cpp" line="310"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="310"/>
+        <location filename="../app/TaskPanel.cpp" line="312"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="311"/>
+        <location filename="../app/TaskPanel.cpp" line="313"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="312"/>
+        <location filename="../app/TaskPanel.cpp" line="314"/>
         <source>Physical parameters:</source>
         <translation>物理參數：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="313"/>
+        <location filename="../app/TaskPanel.cpp" line="315"/>
         <source>Load...</source>
         <translation>載入...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="315"/>
+        <location filename="../app/TaskPanel.cpp" line="317"/>
         <source>Load a plant file: the car&apos;s mass, wheelbase, grip, motor, steering and servo (prisca-cli plant --plant NAME --print-params --format json writes one to edit)</source>
         <translation>載入機型檔：車的質量、軸距、抓地力、馬達、轉向及伺服器（prisca-cli plant --plant NAME --print-params --format json 可寫出一份供編輯）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="317"/>
+        <location filename="../app/TaskPanel.cpp" line="319"/>
         <source>Catalog</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="318"/>
+        <location filename="../app/TaskPanel.cpp" line="320"/>
         <source>Go back to the catalog&apos;s plant</source>
         <translation>回到目錄預設的機型</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="320"/>
+        <location filename="../app/TaskPanel.cpp" line="322"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="322"/>
+        <location filename="../app/TaskPanel.cpp" line="324"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::devices::TransmitterLink</name>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="37"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="39"/>
+        <source>no command yet</source>
+        <translation>尚未有指令</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="41"/>
+        <source>stale command</source>
+        <translation>指令過時</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="43"/>
+        <source>E-STOP</source>
+        <translation>緊急停止</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="45"/>
+        <source>camera pose lost</source>
+        <translation>失去鏡頭位姿</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="47"/>
+        <source>controller fault</source>
+        <translation>控制器故障</translation>
+    </message>
+    <message>
+        <location filename="../devices/TransmitterLink.cpp" line="49"/>
+        <source>fence breached</source>
+        <translation>越過圍欄</translation>
     </message>
 </context>
 <context>

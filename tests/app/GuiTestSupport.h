@@ -3,6 +3,9 @@
 #pragma once
 
 #include "app/ControllerPanel.h"
+#include "app/EmergencyStop.h"
+#include "app/EmergencyStopGuard.h"
+#include "app/ModalDialog.h"
 #include "app/ExperimentArchive.h"
 #include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
@@ -88,7 +91,7 @@ inline QString answerMessageBox(QObject* context, const std::function<void()>& t
     QString text;
     QTimer poll;
     QObject::connect(&poll, &QTimer::timeout, context, [&] {
-        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        if (auto* box = qobject_cast<QMessageBox*>(ModalDialog::top())) {
             text = box->text();
             box->accept();
         }
@@ -106,7 +109,7 @@ inline QString answerQuitQuestion(QObject* context, const char* button,
     QString text;
     QTimer poll;
     QObject::connect(&poll, &QTimer::timeout, context, [&] {
-        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        auto* box = qobject_cast<QMessageBox*>(ModalDialog::top());
         if (box && box->objectName() == QLatin1String("quitQuestion")) {
             text = box->text();
             if (auto* b = box->findChild<QAbstractButton*>(QLatin1String(button))) {
@@ -124,7 +127,7 @@ inline QString answerQuitQuestion(QObject* context, const char* button,
 inline void answerFileDialog(QObject* context, const QString& path, const std::function<void()>& trigger) {
     QTimer poll;
     QObject::connect(&poll, &QTimer::timeout, context, [&] {
-        if (auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+        if (auto* dialog = qobject_cast<QFileDialog*>(ModalDialog::top())) {
             // Typed into the file name field and confirmed, as an operator would.
             if (auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) {
                 edit->setText(path);

@@ -118,7 +118,7 @@ class TestGuiRig : public QObject {
         replay->close();
         // A folder that is no bundle: refused (a message box the test closes), no window.
         QTimer::singleShot(200, [] {
-            if (QWidget* box = QApplication::activeModalWidget()) {
+            if (QWidget* box = prisca::app::ModalDialog::top()) {
                 box->close();
             }
         });

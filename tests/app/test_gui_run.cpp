@@ -295,7 +295,7 @@ class TestGuiRun : public QObject {
     void escOnAnOpenComboList_onlyClosesIt() {
         Window w;
         auto* speed = w.find<QComboBox>("speed");
-        QSignalSpy estop(w.find<RunPanel>("runPanel"), &RunPanel::emergencyStopRequested);
+        QSignalSpy estop(&w.window.emergencyStop(), &EmergencyStop::engaged);
         speed->showPopup();
         QTRY_VERIFY(QApplication::activePopupWidget() != nullptr);
         QTest::keyClick(QApplication::activePopupWidget(), Qt::Key_Escape);
@@ -312,7 +312,7 @@ class TestGuiRun : public QObject {
         w.find<QSpinBox>("trials")->setValue(3);
         auto* speed = w.find<QComboBox>("speed");
         speed->setFocus();
-        QSignalSpy estop(w.find<RunPanel>("runPanel"), &RunPanel::emergencyStopRequested);
+        QSignalSpy estop(&w.window.emergencyStop(), &EmergencyStop::engaged);
         // F5, F6, Shift+F5 and Ctrl+R with the focus in a combo box.
         QTest::keyClick(speed, Qt::Key_F5);
         QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::Running, kRunTimeoutMs);

@@ -428,15 +428,16 @@ class TestGuiWindow : public QObject {
         auto* status = w.find<QLabel>("runStatus");
         QVERIFY(status);
         panel->emergencyAction()->trigger();
-        QTRY_VERIFY(status->text().contains(QLatin1String("E-STOP engaged at")));
+        QTRY_VERIFY(status->text().contains(QLatin1String("E-STOP pressed at")));
         const QString explanation = status->text();
         // Ctrl+R (Reset) does not wipe it while E-STOP stays latched.
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
         QTest::keyClick(&w.window, Qt::Key_R, Qt::ControlModifier);
         QCOMPARE(status->text(), explanation);
         QCOMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
         // Reset E-STOP: what happened, and when, stays readable.
         panel->resetEmergencyAction()->trigger();
-        QTRY_VERIFY(status->text().contains(QLatin1String("E-STOP was engaged at")));
+        QTRY_VERIFY(status->text().contains(QLatin1String("E-STOP was pressed at")));
         QVERIFY(status->text().contains(explanation.mid(explanation.indexOf(QLatin1String("at ")) + 3, 8)));
         // Running again clears it.
         w.setSpeedIndex(2);

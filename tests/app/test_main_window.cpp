@@ -4,6 +4,7 @@
 #include "app/LanguageSwitcher.h"
 #include "app/ExperimentArchive.h"
 #include "app/MainWindow.h"
+#include "app/ModalDialog.h"
 
 #include <QtTest/qtestspontaneevent.h>
 #include <QAbstractButton>
@@ -209,7 +210,7 @@ void TestMainWindow::aboutAction_showsWhatTheAppIs() {
     // The box is modal: read and dismiss it from a timer while trigger() waits in its loop.
     QTimer poll;
     connect(&poll, &QTimer::timeout, this, [&] {
-        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        if (auto* box = qobject_cast<QMessageBox*>(prisca::app::ModalDialog::top())) {
             title = box->windowTitle();
             text = box->text();
             box->accept();

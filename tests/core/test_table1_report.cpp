@@ -36,7 +36,8 @@ class TestTable1Report : public QObject {
         const QString csv = formatTable1(rows(), TableFormat::Csv, "c");
         const QStringList lines = csv.trimmed().split('\n');
         QCOMPARE(lines.size(), 3);
-        QCOMPARE(lines[1], QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100,0.68149999999999999"));
+        QCOMPARE(lines[1],
+                 QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100,0.68149999999999999,3,false"));
         QCOMPARE(lines[0].split(',').size(), lines[1].split(',').size());
     }
 
@@ -67,12 +68,45 @@ class TestTable1Report : public QObject {
         QCOMPARE(array[1].toObject().value("cpuMicrosecondsPerStep").toDouble(), 2512.4);
     }
 
+    void partialRow_isMarkedInEveryFormatWithNoSpreadFromOneTrial() {
+        // A cancelled batch: one trial of the twenty asked for.
+        std::vector<Table1Row> one = {{"pd-h", summarizeErrors({274.93}), summarizeErrors({12.5}),
+                                       std::numeric_limits<double>::quiet_NaN(), "PD+H"}};
+        one[0].plannedTrials = 20;
+        QVERIFY(one[0].partial());
+        const QString md = formatTable1(one, TableFormat::Markdown, "c");
+        QVERIFY2(md.contains("| PD+H (partial: 1 of 20 trials) | 1 | 274.93 | n/a | 12.50 | n/a |"),
+                 qPrintable(md));
+        QVERIFY(!md.trimmed().split('\n').last().contains(QStringLiteral("±")));  // the row
+        const QString tex = formatTable1(one, TableFormat::Latex, "c");
+        QVERIFY2(tex.contains("PD+H (partial: 1 of 20 trials) & 1 & $274.93$ & n/a & $12.50$ & n/a"),
+                 qPrintable(tex));
+        QVERIFY(!tex.contains(QStringLiteral("\\pm")));
+        const QStringList csv = formatTable1(one, TableFormat::Csv, "c").trimmed().split('\n');
+        QVERIFY(csv[0].endsWith(QStringLiteral(",trials_planned,partial")));
+        QCOMPARE(csv[1], QStringLiteral("pd-h,PD+H,1,274.93000000000001,,,12.5,,,,20,true"));
+        const QJsonObject row = QJsonDocument::fromJson(formatTable1(one, TableFormat::Json, "c").toUtf8())
+                                    .object()
+                                    .value("rows")
+                                    .toArray()[0]
+                                    .toObject();
+        QCOMPARE(row.value("partial").toBool(), true);
+        QCOMPARE(row.value("trials").toInt(), 1);
+        QCOMPARE(row.value("plannedTrials").toInt(), 20);
+        QVERIFY(row.value("positionCm").toObject().value("standardDeviation").isNull());
+        QVERIFY(row.value("positionCm").toObject().value("variance").isNull());
+        // The full batch of the same method is not partial.
+        one[0].plannedTrials = 1;
+        QVERIFY(!one[0].partial());
+        QVERIFY(!formatTable1(one, TableFormat::Markdown, "c").contains("partial"));
+    }
+
     void emptyRow_showsNotAvailableRatherThanNan() {
         const std::vector<Table1Row> none = {
             {"pd", summarizeErrors({}), summarizeErrors({}),
              std::numeric_limits<double>::quiet_NaN(), "PD"}};
         const QString md = formatTable1(none, TableFormat::Markdown, "c");
-        QVERIFY(md.contains("| PD | 0 | n/a ± n/a |"));
+        QVERIFY2(md.contains("| PD | 0 | n/a | n/a | n/a | n/a |"), qPrintable(md));
         QVERIFY(md.trimmed().endsWith("| n/a |"));  // CPU time not measured
         QVERIFY(!md.contains("nan"));
         QVERIFY(QJsonDocument::fromJson(formatTable1(none, TableFormat::Json, "c").toUtf8())
