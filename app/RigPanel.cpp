@@ -126,7 +126,23 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
         cameraFps_ = rig_.cameraRunning() ? static_cast<double>(frames - framesAtLastTick_) : 0.0;
         framesAtLastTick_ = frames;
         emitStatus();
+        showReadiness();
     });
+    readiness_ = new QLabel(this);
+    readiness_->setObjectName(QStringLiteral("rigReadiness"));
+    readiness_->setWordWrap(true);
+    readiness_->setTextFormat(Qt::PlainText);
+    putBack_ = new QPushButton(this);
+    putBack_->setObjectName(QStringLiteral("putCarBack"));
+    connect(putBack_, &QPushButton::clicked, this, &RigPanel::putVirtualCarBack);
+    declaredLatency_ = new QDoubleSpinBox(this);
+    declaredLatency_->setObjectName(QStringLiteral("declaredLatency"));
+    declaredLatency_->setRange(0.0, 1000.0);
+    declaredLatency_->setDecimals(1);
+    declaredLatency_->setSingleStep(5.0);
+    declaredLatencyLabel_ = new QLabel(this);
+    connect(declaredLatency_, &QDoubleSpinBox::editingFinished, this,
+            [this] { declareLoopLatency(declaredLatency_->value()); });
     statusTimer_->start();
     lensInfo_->setObjectName(QStringLiteral("lensInfo"));
     lensInfo_->setWordWrap(true);
@@ -242,8 +258,12 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
     actions->addWidget(drive_, 1, 0, 1, 2);
     actions->addWidget(runTrial_, 1, 2);
     actions->addWidget(stopTrial_, 1, 3);
+    auto* ready = new QHBoxLayout;
+    ready->addWidget(readiness_, 1);
+    ready->addWidget(putBack_);
     auto* top = new QVBoxLayout;
     top->addLayout(actions);
+    top->addLayout(ready);
     top->addWidget(trialInfo_);
     auto* cameraPage = new QVBoxLayout;
     cameraPage->addLayout(form);
@@ -266,7 +286,12 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
     setup->addLayout(lensButtons);
     setup->addSpacing(12);
     setup->addWidget(latencyInfo_);
-    setup->addWidget(measureLatency_);
+    auto* latencyRow = new QHBoxLayout;
+    latencyRow->addWidget(measureLatency_);
+    latencyRow->addSpacing(8);
+    latencyRow->addWidget(declaredLatencyLabel_);
+    latencyRow->addWidget(declaredLatency_);
+    setup->addLayout(latencyRow);
     setup->addSpacing(12);
     setup->addWidget(fenceInfo_);
     auto* fenceButtons = new QHBoxLayout;
@@ -428,7 +453,9 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
                     showStatus(latencyInfo_, tr("Latency"), tr("Loop latency: not measured (%1)").arg(m.error));
                     return;
                 }
-                rig_.setLoopLatency(m.median);
+                // (The session compensates what it measured; the panel shows it.)
+                declaredLatency_->setValue(0.0);
+                showReadiness();
                 showStatus(latencyInfo_, tr("Latency"), 
                     tr("Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 "
                        "ms); the trials compensate it")
@@ -520,32 +547,22 @@ bool RigPanel::runTrial() {
         showStatus(trialInfo_, tr("Rig trial"), emergency_.refusal(), MessageLevel::Warning);
         return false;
     }
-    QString missing;
-    const sim::MethodTuning& profile = session_.profile();
-    if (const QString rig = rig_.notReady(); !rig.isEmpty()) {
-        missing = rig;  // the camera or the link
-    } else if (virtualCalibrationOnRealCamera()) {
-        missing = virtualCalibrationWarning();
-    } else if (profile.info.name != QLatin1String("slidecar")) {
-        // The rig's state estimator gives the slide-car's state; any other target's
-        // demonstration and controller would be read against the wrong quantities.
-        missing = tr("The rig drives a slide-car: choose the slide-car as the target (now: %1).")
-                      .arg(QCoreApplication::translate(
-                          "PlantCatalog", sim::PlantCatalog::get(profile.info.name).displayName));
-    } else if (sim::MethodCatalog::get(session_.method()).simulationOnly) {
-        missing =
-            tr("The oracle plans on copies of a simulated plant; a real car has none. "
-               "Run it in simulation, or choose another method.");
-    } else if (sim::MethodCatalog::get(session_.method()).trainsOffline()) {
-        missing = tr("%1 trains offline in simulation; run it there, or choose another method.")
-                      .arg(session_.method());
-    }
-    if (!missing.isEmpty()) {
-        showStatus(trialInfo_, tr("Rig trial"), missing);
+    // The session's own check: what the strip shows is what decides.
+    const rig::PreTrialCheck check = preTrialCheck();
+    showReadiness();
+    if (!check.ready()) {
+        showStatus(trialInfo_, tr("Rig trial"),
+                   tr("Not ready for a trial: %1").arg(check.missingDetails()),
+                   MessageLevel::Warning);
         return false;
     }
     rig::TrialRequest request;
-    request.setup = std::make_shared<const sim::RunSetup>(session_.task(), session_.method());
+    try {
+        request.setup = std::make_shared<const sim::RunSetup>(session_.task(), session_.method());
+    } catch (const std::exception& e) {
+        showStatus(trialInfo_, tr("Rig trial"), QString::fromUtf8(e.what()), MessageLevel::Error);
+        return false;
+    }
     request.session = QJsonDocument::fromJson(session_.toJson()).object();
     QString error;
     if (!rig_.startTrial(request, &error)) {
@@ -555,6 +572,67 @@ bool RigPanel::runTrial() {
     showStatus(trialInfo_, tr("Rig trial"), tr("Trial %1 running...").arg(rig_.trialNumber()));
     runTrial_->setEnabled(false);
     return true;
+}
+
+rig::PreTrialCheck RigPanel::preTrialCheck() const {
+    return rig_.preTrialCheck(session_.task(), sim::MethodCatalog::get(session_.method()));
+}
+
+void RigPanel::showReadiness() {
+    const rig::PreTrialCheck check = preTrialCheck();
+    QStringList lines;
+    QStringList advice;
+    for (const rig::PreTrialItem& item : check.items) {
+        lines << QStringLiteral("%1 %2: %3")
+                     .arg(item.ok ? QStringLiteral("✓") : item.blocking ? QStringLiteral("✗")
+                                                                        : QStringLiteral("!"),
+                          item.label, item.detail);
+        if (!item.ok && !item.blocking) {
+            advice << item.label;
+        }
+    }
+    QString text;
+    if (check.ready()) {
+        text = advice.isEmpty() ? tr("Ready for a trial")
+                                : tr("Ready for a trial (note: %1)").arg(advice.join(QStringLiteral(", ")));
+    } else {
+        text = tr("Not ready: %1").arg(check.missingLabels());
+    }
+    readiness_->setText(text);
+    readiness_->setToolTip(lines.join(QLatin1Char('\n')));
+    readiness_->setStyleSheet(
+        check.ready() ? QStringLiteral("QLabel { color: #1b5e20; font-weight: bold; }")
+                      : QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+    const bool virtualCamera = static_cast<Source>(source_->currentData().toInt()) == Source::Virtual;
+    putBack_->setVisible(virtualCamera);
+    putBack_->setEnabled(virtualCamera && rig_.cameraRunning() && !rig_.trialRunning());
+}
+
+bool RigPanel::putVirtualCarBack() {
+    QString error;
+    if (!rig_.putVirtualCarBack(&error)) {
+        showStatus(trialInfo_, tr("Rig trial"), error, MessageLevel::Warning);
+        return false;
+    }
+    showStatus(trialInfo_, tr("Rig trial"), tr("The virtual car is back at its start."));
+    return true;
+}
+
+void RigPanel::declareLoopLatency(double milliseconds) {
+    if (milliseconds > 0.0) {
+        rig_.setLoopLatency(milliseconds / 1000.0, rig::LatencySource::Declared);
+        showStatus(latencyInfo_, tr("Latency"), [milliseconds] {
+            return tr("Loop latency: %1 ms, declared; the trials compensate it.")
+                .arg(milliseconds, 0, 'f', 1);
+        });
+    } else if (rig_.loopLatencySource() == rig::LatencySource::Declared) {
+        rig_.setLoopLatency(std::nullopt);
+        showStatus(latencyInfo_, tr("Latency"), [] {
+            return tr("Loop latency: not declared any more (the controllers assume the "
+                      "profile's camera latency).");
+        });
+    }
+    showReadiness();
 }
 
 const Eigen::VectorXd& RigPanel::drivingInput() const {
@@ -1004,6 +1082,14 @@ void RigPanel::retranslateUi() {
     measureLatency_->setToolTip(tr("With the car at rest in view and the link connected: step "
                                    "the throttle forward and back and time the response in "
                                    "the camera"));
+    declaredLatencyLabel_->setText(tr("or declare:"));
+    declaredLatency_->setSuffix(tr(" ms"));
+    declaredLatency_->setSpecialValueText(tr("not declared"));
+    declaredLatency_->setToolTip(tr("A latency measured elsewhere [ms], for the trials to "
+                                    "compensate; 0: not declared"));
+    putBack_->setText(tr("Put the car back"));
+    putBack_->setToolTip(tr("The virtual car back at its start, at rest (after a trial that "
+                            "left it out of view)"));
     drawFence_->setText(tr("Draw fence"));
     // Short enough for the page at 1280 px; the details in the tool tip.
     saveBundles_->setText(tr("Save every trial as a bundle"));
@@ -1022,6 +1108,7 @@ void RigPanel::retranslateUi() {
                                  "camera's latency)."));
     }
     applyFence();
+    showReadiness();
 }
 
 }  // namespace prisca::app

@@ -111,6 +111,12 @@ class RigPanel : public QWidget {
     bool isRunning() const { return rig_.trialRunning(); }
     /// Sends statusSummary() with the state now (it is sent on every change, and each second).
     void emitStatus();
+    /// The pre-trial check for the session's task and method now (shown in the ready strip).
+    rig::PreTrialCheck preTrialCheck() const;
+    /// The virtual car back at its start (the Put the car back button).
+    bool putVirtualCarBack();
+    /// The operator's latency [ms] for the trials to compensate (0: not declared).
+    void declareLoopLatency(double milliseconds);
 
     /// Drive the car through the link with the keyboard or a gamepad and record the camera's
     /// states and the commands as a demonstration (streamed to disk as it goes); once stopped
@@ -149,6 +155,8 @@ class RigPanel : public QWidget {
     void showLinkStatus(const devices::LinkStatus& status);
     void showTask();
     void showTrialResult(const rig::RigTrialResult& result);
+    /// The ready / not-ready strip from the check now.
+    void showReadiness();
     void useRecording(const rig::RigRecording& recording);
     void driveTick();
     void applyFence();
@@ -202,6 +210,10 @@ class RigPanel : public QWidget {
     QTimer* driveTimer_ = nullptr;
     QPushButton* drive_;
     QPushButton* runTrial_;
+    QLabel* readiness_ = nullptr;  ///< ready / not ready for a trial, and what is missing
+    QPushButton* putBack_ = nullptr;  ///< the virtual car back at its start
+    QDoubleSpinBox* declaredLatency_ = nullptr;  ///< [ms]; 0: not declared
+    QLabel* declaredLatencyLabel_ = nullptr;
     QPushButton* stopTrial_;
     QLabel* trialInfo_;
     QLabel* lensInfo_;

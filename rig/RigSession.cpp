@@ -32,6 +32,7 @@ struct RigSession::Loop {
     devices::Geofence fence;                ///< every trial's (RigLoop::setGeofence)
     std::optional<devices::LatencyProbe> probe;  ///< a latency measurement under way
     std::optional<double> loopLatency;           ///< measured [s], for the compensation
+    LatencySource latencySource = LatencySource::Assumed;
     QString bundleParent;                        ///< where trial bundles go (empty: none)
     double bundleFps = 10.0;                     ///< their video's frame rate
     double lastBundleFrameT = -1.0;              ///< the trial's newest frame stored [s]
@@ -186,6 +187,12 @@ bool RigSession::startCamera(const CameraRequest& request, QString* error) {
             source = devices::makeVideoFileSource(request.videoPath, true);
             break;
     }
+    cameraSource_ = request.source;
+    injectedCameraDelay_ = request.source == CameraRequest::Source::Virtual
+                               ? request.virtualCameraDelay
+                               : 0.0;
+    frameWidth_.store(0);
+    frameHeight_.store(0);
     camera_.start(std::shared_ptr<devices::CameraSource>(std::move(source)));
     emit cameraRunningChanged(true);
     return true;
@@ -272,6 +279,55 @@ QString RigSession::notReady() const {
     return {};
 }
 
+PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
+                                        const sim::MethodSpec& method) const {
+    PreTrialInputs in;
+    in.cameraRunning = camera_.isRunning();
+    in.virtualCamera = cameraSource_ == CameraRequest::Source::Virtual;
+    in.carSeen = in.cameraRunning && (lastPose().has_value() || car_ != nullptr);
+    in.frameSize = cv::Size(frameWidth_.load(), frameHeight_.load());
+    in.calibration = calibration_;
+    in.calibrationIsVirtualRigs =
+        calibration_.toJson() == devices::syntheticCeilingCamera().toJson();
+    in.link = linkStatus_;
+    in.injectedCameraDelay = injectedCameraDelay_;
+    in.emergencyLatched = link_.emergencyLatched();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        in.loopLatency = loop_->loopLatency;
+        in.latencySource = loop_->latencySource;
+        in.fence = loop_->fence;
+    }
+    in.demonstration = task.demonstration;
+    in.plant = task.profile.info;
+    in.methodLabel = method.label;
+    in.methodSimulationOnly = method.simulationOnly;
+    in.methodTrainsOffline = method.trainsOffline();
+    return evaluatePreTrialCheck(in);
+}
+
+bool RigSession::putVirtualCarBack(QString* error) {
+    if (!car_) {
+        if (error) {
+            *error = tr("Only the virtual rig's car can be put back; carry a real one.");
+        }
+        return false;
+    }
+    if (trialRunning()) {
+        if (error) {
+            *error = tr("A trial is running: stop it first.");
+        }
+        return false;
+    }
+    std::uint64_t seed = 1;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        seed = static_cast<std::uint64_t>(loop_->trials + 1);
+    }
+    car_->requestReset(seed);
+    return true;
+}
+
 bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     auto fail = [error](const QString& why) {
         if (error) {
@@ -279,12 +335,13 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         }
         return false;
     };
-    if (const QString missing = notReady(); !missing.isEmpty()) {
-        return fail(missing);
-    }
-    if (!request.setup || request.setup->task().demonstration->length() == 0 ||
-        !request.setup->profile().info.pose) {
+    // The pre-trial check first: a trial that cannot end well does not start.
+    if (!request.setup) {
         return fail(tr("The rig needs a demonstration of a planar vehicle."));
+    }
+    if (const PreTrialCheck check = preTrialCheck(request.setup->task(), request.setup->method());
+        !check.ready()) {
+        return fail(check.missingDetails());
     }
     std::lock_guard<std::mutex> lock(mutex_);
     Loop& l = *loop_;
@@ -464,6 +521,8 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
     std::optional<devices::PlanarPose> pose;
     std::optional<RigTrialResult> finished;
     std::optional<LatencyMeasurement> measured;
+    frameWidth_.store(frame.image.cols);
+    frameHeight_.store(frame.image.rows);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         Loop& l = *loop_;
@@ -483,6 +542,10 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                     m.min = l.probe->minSeconds();
                     m.max = l.probe->maxSeconds();
                     m.spread = l.probe->spreadSeconds();
+                    // The trials compensate what was measured, whoever shows it.
+                    l.loopLatency = m.median;
+                    l.latencySource = LatencySource::Measured;
+                    l.stale = true;
                 }
                 l.probe.reset();
                 measured = m;
@@ -745,10 +808,16 @@ QString RigSession::bundleParent() const {
     return loop_->bundleParent;
 }
 
-void RigSession::setLoopLatency(std::optional<double> seconds) {
+void RigSession::setLoopLatency(std::optional<double> seconds, LatencySource source) {
     std::lock_guard<std::mutex> lock(mutex_);
     loop_->loopLatency = seconds;
+    loop_->latencySource = seconds ? source : LatencySource::Assumed;
     loop_->stale = true;  // the compensation is set when the loop is built
+}
+
+LatencySource RigSession::loopLatencySource() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loop_->latencySource;
 }
 
 std::optional<double> RigSession::loopLatency() const {

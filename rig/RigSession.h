@@ -10,8 +10,10 @@
 #include "devices/LatencyProbe.h"
 #include "rig/TrialBundle.h"
 #include "devices/TransmitterLink.h"
+#include "rig/PreTrialCheck.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
+#include "sim/MethodCatalog.h"
 #include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
@@ -156,6 +158,13 @@ class RigSession : public QObject {
     /// What is missing before a trial or a recording can start (the camera, the link); empty
     /// when ready.
     QString notReady() const;
+    /// The pre-trial check for `request` now: the camera and the car in it, the calibration and
+    /// the lens, the link, the latency, E-STOP, the task, and the demonstration's path and lot
+    /// inside the fence and the camera's view. startTrial() refuses a trial it does not pass.
+    PreTrialCheck preTrialCheck(const sim::Task& task, const sim::MethodSpec& method) const;
+    /// The virtual car back at its start, at rest (after a trial that left it out of view);
+    /// false and *error without a virtual car or during a trial.
+    bool putVirtualCarBack(QString* error);
 
     // Trials.
     /// Starts a trial (the loop is kept for the same method: learners learn from trial to
@@ -189,9 +198,13 @@ class RigSession : public QObject {
     void cancelLatencyMeasurement();
     bool measuringLatency() const;
     /// The loop latency the controllers compensate on the next trials [s] (rounded to control
-    /// periods); empty: the profile's assumption (the camera's latency in simulation).
-    void setLoopLatency(std::optional<double> seconds);
+    /// periods); empty: the profile's assumption (the camera's latency in simulation). A
+    /// finished measurement sets it by itself (LatencySource::Measured); this is the operator's
+    /// declared value (or empty, back to the assumption).
+    void setLoopLatency(std::optional<double> seconds,
+                        LatencySource source = LatencySource::Declared);
     std::optional<double> loopLatency() const;
+    LatencySource loopLatencySource() const;
 
     // Trial bundles.
     /// Every trial from now on is saved as a bundle (rig::TrialBundleWriter) in a new folder
@@ -243,6 +256,9 @@ class RigSession : public QObject {
     std::unique_ptr<Loop> loop_;
     mutable std::mutex poseMutex_;
     std::optional<devices::PlanarPose> pose_;
+    std::atomic<int> frameWidth_{0}, frameHeight_{0};  ///< the newest frame's [px]
+    CameraRequest::Source cameraSource_ = CameraRequest::Source::Virtual;
+    double injectedCameraDelay_ = 0.0;  ///< the virtual camera's [s]
 };
 
 }  // namespace prisca::rig

@@ -2322,239 +2322,264 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="342"/>
+        <location filename="../app/RigPanel.cpp" line="367"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="343"/>
-        <location filename="../app/RigPanel.cpp" line="350"/>
+        <location filename="../app/RigPanel.cpp" line="368"/>
+        <location filename="../app/RigPanel.cpp" line="375"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="349"/>
+        <location filename="../app/RigPanel.cpp" line="374"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="448"/>
-        <location filename="../app/RigPanel.cpp" line="459"/>
+        <location filename="../app/RigPanel.cpp" line="475"/>
+        <location filename="../app/RigPanel.cpp" line="486"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="449"/>
+        <location filename="../app/RigPanel.cpp" line="476"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="460"/>
+        <location filename="../app/RigPanel.cpp" line="487"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="537"/>
-        <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
-        <translation>預言者在模擬對象的副本上規劃；真實的車沒有副本。請在模擬中執行，或選擇其他方法。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="540"/>
-        <source>%1 trains offline in simulation; run it there, or choose another method.</source>
-        <translation>%1 需要在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="555"/>
+        <location filename="../app/RigPanel.cpp" line="572"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="592"/>
+        <location filename="../app/RigPanel.cpp" line="670"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="632"/>
+        <location filename="../app/RigPanel.cpp" line="710"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="705"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="185"/>
-        <location filename="../app/RigPanel.cpp" line="990"/>
+        <location filename="../app/RigPanel.cpp" line="201"/>
+        <location filename="../app/RigPanel.cpp" line="1068"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="375"/>
+        <location filename="../app/RigPanel.cpp" line="400"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="386"/>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
+        <location filename="../app/RigPanel.cpp" line="411"/>
+        <location filename="../app/RigPanel.cpp" line="1194"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="387"/>
-        <location filename="../app/RigPanel.cpp" line="1095"/>
+        <location filename="../app/RigPanel.cpp" line="412"/>
+        <location filename="../app/RigPanel.cpp" line="1182"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="400"/>
+        <location filename="../app/RigPanel.cpp" line="425"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="428"/>
+        <location filename="../app/RigPanel.cpp" line="453"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="433"/>
+        <location filename="../app/RigPanel.cpp" line="460"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="532"/>
-        <source>The rig drives a slide-car: choose the slide-car as the target (now: %1).</source>
-        <translation>實機驅動的是漂移車：請選擇漂移車作為對象（目前：%1）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="611"/>
+        <location filename="../app/RigPanel.cpp" line="689"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="620"/>
+        <location filename="../app/RigPanel.cpp" line="698"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="650"/>
+        <location filename="../app/RigPanel.cpp" line="728"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="663"/>
+        <location filename="../app/RigPanel.cpp" line="741"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="668"/>
+        <location filename="../app/RigPanel.cpp" line="746"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="671"/>
+        <location filename="../app/RigPanel.cpp" line="749"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="674"/>
+        <location filename="../app/RigPanel.cpp" line="752"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="675"/>
+        <location filename="../app/RigPanel.cpp" line="753"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="318"/>
-        <location filename="../app/RigPanel.cpp" line="329"/>
-        <location filename="../app/RigPanel.cpp" line="736"/>
-        <location filename="../app/RigPanel.cpp" line="745"/>
+        <location filename="../app/RigPanel.cpp" line="343"/>
+        <location filename="../app/RigPanel.cpp" line="354"/>
+        <location filename="../app/RigPanel.cpp" line="814"/>
+        <location filename="../app/RigPanel.cpp" line="823"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="329"/>
+        <location filename="../app/RigPanel.cpp" line="354"/>
         <source>Camera stopped.</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="402"/>
-        <location filename="../app/RigPanel.cpp" line="520"/>
-        <location filename="../app/RigPanel.cpp" line="544"/>
-        <location filename="../app/RigPanel.cpp" line="552"/>
-        <location filename="../app/RigPanel.cpp" line="555"/>
+        <location filename="../app/RigPanel.cpp" line="427"/>
+        <location filename="../app/RigPanel.cpp" line="547"/>
+        <location filename="../app/RigPanel.cpp" line="554"/>
+        <location filename="../app/RigPanel.cpp" line="563"/>
         <location filename="../app/RigPanel.cpp" line="569"/>
-        <location filename="../app/RigPanel.cpp" line="574"/>
-        <location filename="../app/RigPanel.cpp" line="585"/>
-        <location filename="../app/RigPanel.cpp" line="591"/>
-        <location filename="../app/RigPanel.cpp" line="611"/>
-        <location filename="../app/RigPanel.cpp" line="637"/>
-        <location filename="../app/RigPanel.cpp" line="649"/>
-        <location filename="../app/RigPanel.cpp" line="657"/>
-        <location filename="../app/RigPanel.cpp" line="679"/>
+        <location filename="../app/RigPanel.cpp" line="572"/>
+        <location filename="../app/RigPanel.cpp" line="614"/>
+        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="647"/>
+        <location filename="../app/RigPanel.cpp" line="652"/>
+        <location filename="../app/RigPanel.cpp" line="663"/>
+        <location filename="../app/RigPanel.cpp" line="669"/>
+        <location filename="../app/RigPanel.cpp" line="689"/>
+        <location filename="../app/RigPanel.cpp" line="715"/>
+        <location filename="../app/RigPanel.cpp" line="727"/>
+        <location filename="../app/RigPanel.cpp" line="735"/>
+        <location filename="../app/RigPanel.cpp" line="757"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="428"/>
-        <location filename="../app/RigPanel.cpp" line="432"/>
-        <location filename="../app/RigPanel.cpp" line="1145"/>
-        <location filename="../app/RigPanel.cpp" line="1150"/>
-        <location filename="../app/RigPanel.cpp" line="1154"/>
+        <location filename="../app/RigPanel.cpp" line="453"/>
+        <location filename="../app/RigPanel.cpp" line="459"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="630"/>
+        <location filename="../app/RigPanel.cpp" line="1232"/>
+        <location filename="../app/RigPanel.cpp" line="1237"/>
+        <location filename="../app/RigPanel.cpp" line="1241"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="746"/>
+        <location filename="../app/RigPanel.cpp" line="824"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="765"/>
+        <location filename="../app/RigPanel.cpp" line="843"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="765"/>
-        <location filename="../app/RigPanel.cpp" line="908"/>
-        <location filename="../app/RigPanel.cpp" line="992"/>
+        <location filename="../app/RigPanel.cpp" line="843"/>
+        <location filename="../app/RigPanel.cpp" line="986"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="364"/>
-        <location filename="../app/RigPanel.cpp" line="742"/>
-        <location filename="../app/RigPanel.cpp" line="786"/>
-        <location filename="../app/RigPanel.cpp" line="798"/>
-        <location filename="../app/RigPanel.cpp" line="807"/>
-        <location filename="../app/RigPanel.cpp" line="814"/>
+        <location filename="../app/RigPanel.cpp" line="389"/>
+        <location filename="../app/RigPanel.cpp" line="820"/>
+        <location filename="../app/RigPanel.cpp" line="864"/>
+        <location filename="../app/RigPanel.cpp" line="876"/>
+        <location filename="../app/RigPanel.cpp" line="885"/>
+        <location filename="../app/RigPanel.cpp" line="892"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="361"/>
+        <location filename="../app/RigPanel.cpp" line="386"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="365"/>
+        <location filename="../app/RigPanel.cpp" line="390"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="510"/>
+        <location filename="../app/RigPanel.cpp" line="537"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
         <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="658"/>
+        <location filename="../app/RigPanel.cpp" line="555"/>
+        <source>Not ready for a trial: %1</source>
+        <translation>未能進行試驗：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="596"/>
+        <source>Ready for a trial</source>
+        <translation>可以進行試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="597"/>
+        <source>Ready for a trial (note: %1)</source>
+        <translation>可以進行試驗（注意：%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="599"/>
+        <source>Not ready: %1</source>
+        <translation>未準備好：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="617"/>
+        <source>The virtual car is back at its start.</source>
+        <translation>虛擬車已回到起點。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="625"/>
+        <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
+        <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="631"/>
+        <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
+        <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="736"/>
         <source>E-STOP is reset: the link sends the commands again.</source>
         <translation>緊急停止已重設：鏈路再次發送指令。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="787"/>
+        <location filename="../app/RigPanel.cpp" line="865"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -2563,421 +2588,451 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="808"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="917"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
+        <location filename="../app/RigPanel.cpp" line="917"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="842"/>
+        <location filename="../app/RigPanel.cpp" line="920"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="846"/>
+        <location filename="../app/RigPanel.cpp" line="924"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="851"/>
+        <location filename="../app/RigPanel.cpp" line="929"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="852"/>
+        <location filename="../app/RigPanel.cpp" line="930"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="933"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="855"/>
+        <location filename="../app/RigPanel.cpp" line="933"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="881"/>
+        <location filename="../app/RigPanel.cpp" line="959"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="884"/>
-        <location filename="../app/RigPanel.cpp" line="893"/>
+        <location filename="../app/RigPanel.cpp" line="962"/>
+        <location filename="../app/RigPanel.cpp" line="971"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
-        <location filename="../app/RigPanel.cpp" line="895"/>
+        <location filename="../app/RigPanel.cpp" line="964"/>
+        <location filename="../app/RigPanel.cpp" line="973"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="893"/>
+        <location filename="../app/RigPanel.cpp" line="971"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="938"/>
+        <location filename="../app/RigPanel.cpp" line="1016"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="939"/>
+        <location filename="../app/RigPanel.cpp" line="1017"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="940"/>
+        <location filename="../app/RigPanel.cpp" line="1018"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="941"/>
+        <location filename="../app/RigPanel.cpp" line="1019"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="1025"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="948"/>
+        <location filename="../app/RigPanel.cpp" line="1026"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
+        <location filename="../app/RigPanel.cpp" line="1027"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="950"/>
+        <location filename="../app/RigPanel.cpp" line="1028"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="951"/>
+        <location filename="../app/RigPanel.cpp" line="1029"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="952"/>
+        <location filename="../app/RigPanel.cpp" line="1030"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="954"/>
+        <location filename="../app/RigPanel.cpp" line="1032"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="956"/>
+        <location filename="../app/RigPanel.cpp" line="1034"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="957"/>
+        <location filename="../app/RigPanel.cpp" line="1035"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="958"/>
+        <location filename="../app/RigPanel.cpp" line="1036"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="959"/>
+        <location filename="../app/RigPanel.cpp" line="1037"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="960"/>
+        <location filename="../app/RigPanel.cpp" line="1038"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="961"/>
+        <location filename="../app/RigPanel.cpp" line="1039"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="962"/>
+        <location filename="../app/RigPanel.cpp" line="1040"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="965"/>
+        <location filename="../app/RigPanel.cpp" line="1043"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="966"/>
+        <location filename="../app/RigPanel.cpp" line="1044"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="967"/>
+        <location filename="../app/RigPanel.cpp" line="1045"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="969"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="970"/>
+        <location filename="../app/RigPanel.cpp" line="1048"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="971"/>
+        <location filename="../app/RigPanel.cpp" line="1049"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="972"/>
+        <location filename="../app/RigPanel.cpp" line="1050"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="973"/>
+        <location filename="../app/RigPanel.cpp" line="1051"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="974"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="975"/>
+        <location filename="../app/RigPanel.cpp" line="1053"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="976"/>
+        <location filename="../app/RigPanel.cpp" line="1054"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="977"/>
+        <location filename="../app/RigPanel.cpp" line="1055"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="978"/>
+        <location filename="../app/RigPanel.cpp" line="1056"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="980"/>
+        <location filename="../app/RigPanel.cpp" line="1058"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="982"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="984"/>
+        <location filename="../app/RigPanel.cpp" line="1062"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="986"/>
+        <location filename="../app/RigPanel.cpp" line="1064"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="991"/>
+        <location filename="../app/RigPanel.cpp" line="1069"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="993"/>
+        <location filename="../app/RigPanel.cpp" line="1071"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="994"/>
+        <location filename="../app/RigPanel.cpp" line="1072"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="995"/>
+        <location filename="../app/RigPanel.cpp" line="1073"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="998"/>
+        <location filename="../app/RigPanel.cpp" line="1076"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="999"/>
+        <location filename="../app/RigPanel.cpp" line="1077"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1001"/>
+        <location filename="../app/RigPanel.cpp" line="1079"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1002"/>
+        <location filename="../app/RigPanel.cpp" line="1080"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1003"/>
+        <location filename="../app/RigPanel.cpp" line="1081"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1004"/>
+        <location filename="../app/RigPanel.cpp" line="1082"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1007"/>
+        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <source>or declare:</source>
+        <translation>或申報：</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1086"/>
+        <source> ms</source>
+        <translation> 毫秒</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1087"/>
+        <source>not declared</source>
+        <translation>未申報</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1088"/>
+        <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
+        <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1090"/>
+        <source>Put the car back</source>
+        <translation>把車放回起點</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1091"/>
+        <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
+        <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="1093"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1009"/>
+        <location filename="../app/RigPanel.cpp" line="1095"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1010"/>
+        <location filename="../app/RigPanel.cpp" line="1096"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1013"/>
+        <location filename="../app/RigPanel.cpp" line="1099"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1014"/>
+        <location filename="../app/RigPanel.cpp" line="1100"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1015"/>
+        <location filename="../app/RigPanel.cpp" line="1101"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1016"/>
-        <location filename="../app/RigPanel.cpp" line="1018"/>
+        <location filename="../app/RigPanel.cpp" line="1102"/>
+        <location filename="../app/RigPanel.cpp" line="1104"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1017"/>
+        <location filename="../app/RigPanel.cpp" line="1103"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1021"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/RigPanel.cpp" line="1134"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
-        <location filename="../app/RigPanel.cpp" line="1079"/>
-        <location filename="../app/RigPanel.cpp" line="1140"/>
+        <location filename="../app/RigPanel.cpp" line="1134"/>
+        <location filename="../app/RigPanel.cpp" line="1139"/>
+        <location filename="../app/RigPanel.cpp" line="1166"/>
+        <location filename="../app/RigPanel.cpp" line="1227"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1139"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1074"/>
+        <location filename="../app/RigPanel.cpp" line="1161"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1079"/>
+        <location filename="../app/RigPanel.cpp" line="1166"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1093"/>
-        <location filename="../app/RigPanel.cpp" line="1097"/>
+        <location filename="../app/RigPanel.cpp" line="1180"/>
+        <location filename="../app/RigPanel.cpp" line="1184"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1125"/>
+        <location filename="../app/RigPanel.cpp" line="1212"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1131"/>
+        <location filename="../app/RigPanel.cpp" line="1218"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1135"/>
+        <location filename="../app/RigPanel.cpp" line="1222"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1150"/>
+        <location filename="../app/RigPanel.cpp" line="1237"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1154"/>
+        <location filename="../app/RigPanel.cpp" line="1241"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1183"/>
+        <location filename="../app/RigPanel.cpp" line="1270"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1183"/>
-        <location filename="../app/RigPanel.cpp" line="1186"/>
-        <location filename="../app/RigPanel.cpp" line="1189"/>
+        <location filename="../app/RigPanel.cpp" line="1270"/>
+        <location filename="../app/RigPanel.cpp" line="1273"/>
+        <location filename="../app/RigPanel.cpp" line="1276"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1186"/>
+        <location filename="../app/RigPanel.cpp" line="1273"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1189"/>
+        <location filename="../app/RigPanel.cpp" line="1276"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -3653,91 +3708,330 @@ Do you want to replace it?</source>
     </message>
 </context>
 <context>
-    <name>prisca::rig::RigSession</name>
+    <name>prisca::rig::PreTrialCheck</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="143"/>
-        <source>The virtual camera needs a frame rate above zero.</source>
-        <translation>虛擬攝影機的影格率必須大於零。</translation>
+        <location filename="../rig/PreTrialCheck.cpp" line="40"/>
+        <source>Latency</source>
+        <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="267"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="43"/>
+        <source>measured: %1 ms</source>
+        <translation>已量度：%1 毫秒</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="47"/>
+        <source>declared: %1 ms</source>
+        <translation>已申報：%1 毫秒</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="51"/>
+        <source>the virtual camera&apos;s, known (the profile&apos;s assumption)</source>
+        <translation>虛擬攝影機的延遲，已知（設定檔的假設）</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="54"/>
+        <source>The loop&apos;s latency is neither measured nor declared: measure it (the car at rest in view) or declare the value measured elsewhere.</source>
+        <translation>迴路延遲既未量度也未申報：請量度（車靜止在畫面內），或申報在別處量得的數值。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="59"/>
+        <source>Fence</source>
+        <translation>圍欄</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="62"/>
+        <source>No fence: a car that runs away is stopped only by E-STOP and the lost-track guard. Draw one (the Rig tab&apos;s set-up page; prisca-cli rig --fence).</source>
+        <translation>沒有圍欄：失控的車只能靠緊急停止和失追蹤保護停下。請畫一個（「實機」分頁的設定頁；prisca-cli rig --fence）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="77"/>
+        <source>The lot %1 is outside the fence: the trial would end in failsafe. Move the fence or record the demonstration inside it.</source>
+        <translation>泊車位 %1 在圍欄外：試驗會以失效保護結束。請移動圍欄，或在圍欄內錄製示範。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="83"/>
+        <source>%1 of the demonstration&apos;s %2 points are outside the fence (the first at %3): the trial would end in failsafe.</source>
+        <translation>示範的 %2 個點中有 %1 個在圍欄外（第一個在 %3）：試驗會以失效保護結束。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="89"/>
+        <source>the path and the lot are inside it</source>
+        <translation>路徑和泊車位都在圍欄內</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="93"/>
+        <source>In view</source>
+        <translation>在畫面內</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="96"/>
+        <source>No frame yet: the path cannot be checked against the camera&apos;s view.</source>
+        <translation>尚未有畫面：無法核對路徑是否在攝影機視野內。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="122"/>
+        <source>The lot %1 is outside the camera&apos;s view: the car would be lost where it should park. Record the demonstration in view, or move the camera and calibrate again.</source>
+        <translation>泊車位 %1 在攝影機視野外：車在應泊車處會失去追蹤。請在視野內錄製示範，或移動攝影機後重新校準。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="129"/>
+        <source>%1 of the demonstration&apos;s %2 points are outside the camera&apos;s view (the first at %3).</source>
+        <translation>示範的 %2 個點中有 %1 個在攝影機視野外（第一個在 %3）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="135"/>
+        <source>the path and the lot are in view</source>
+        <translation>路徑和泊車位都在畫面內</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="178"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="179"/>
+        <source>Camera</source>
+        <translation>攝影機</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="178"/>
+        <source>running</source>
+        <translation>運行中</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="179"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="270"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="180"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="184"/>
+        <source>Car</source>
+        <translation>車</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="181"/>
+        <source>the virtual car, put at the start by each trial</source>
+        <translation>虛擬車，每次試驗放回起點</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="183"/>
+        <source>in view</source>
+        <translation>在畫面內</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="185"/>
+        <source>The camera does not see the car: put it in view with its LEDs on.</source>
+        <translation>攝影機看不到車：請把車放在畫面內並開啟其 LED。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="189"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="192"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="196"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="198"/>
+        <source>Calibration</source>
+        <translation>校準</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="190"/>
+        <source>the virtual camera&apos;s</source>
+        <translation>虛擬攝影機的校準</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="193"/>
+        <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera or open its calibration.</source>
+        <translation>地面校準屬於虛擬實機，不屬於此攝影機：請校準此攝影機或打開其校準檔。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="199"/>
+        <source>%1 points, RMS %2 mm</source>
+        <translation>%1 個點，均方根 %2 毫米</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="204"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="206"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="211"/>
+        <source>Lens</source>
+        <translation>鏡頭</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="204"/>
+        <source>none needed (virtual)</source>
+        <translation>毋須（虛擬）</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="207"/>
+        <source>fx %1 px, k1 %2</source>
+        <translation>fx %1 像素，k1 %2</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="212"/>
+        <source>No lens: fit the camera&apos;s intrinsics from board views or open them (a wide lens bends the floor by centimetres at the edges).</source>
+        <translation>沒有鏡頭參數：請由棋盤視圖擬合攝影機內參或打開內參檔（廣角鏡頭在邊緣會令地面偏差數厘米）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="217"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="220"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="223"/>
+        <source>Link</source>
+        <translation>鏈路</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="218"/>
+        <source>Connect the transmitter link first.</source>
+        <translation>請先連接發射器鏈路。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="221"/>
+        <source>The link reports an error: %1</source>
+        <translation>鏈路報告錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="223"/>
+        <source>connected</source>
+        <translation>已連接</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="227"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="229"/>
+        <source>E-STOP</source>
+        <translation>緊急停止</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="228"/>
+        <source>E-STOP is latched: reset it before a trial.</source>
+        <translation>緊急停止已鎖定：試驗前請重設。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="229"/>
+        <source>ready</source>
+        <translation>就緒</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="234"/>
+        <source>The rig needs a demonstration of a planar vehicle.</source>
+        <translation>實機需要平面車輛的示範。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="236"/>
+        <source>The rig drives a slide-car: choose the slide-car as the target.</source>
+        <translation>實機駕駛的是漂移車：請選擇漂移車作為目標。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="238"/>
+        <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
+        <translation>預言者在模擬對象的副本上規劃；真車沒有副本。請在模擬中運行，或選擇其他方法。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="241"/>
+        <source>%1 trains offline in simulation; run it there, or choose another method.</source>
+        <translation>%1 在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="244"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="246"/>
+        <source>Task</source>
+        <translation>任務</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="245"/>
+        <source>%1 on the slide-car</source>
+        <translation>%1 駕駛漂移車</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::rig::RigSession</name>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="144"/>
+        <source>The virtual camera needs a frame rate above zero.</source>
+        <translation>虛擬攝影機的影格率必須大於零。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="274"/>
+        <source>Start the camera first.</source>
+        <translation>請先啟動攝影機。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="277"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="287"/>
+        <location filename="../rig/RigSession.cpp" line="312"/>
+        <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
+        <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="318"/>
+        <source>A trial is running: stop it first.</source>
+        <translation>試驗正在進行：請先停止。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="340"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="292"/>
+        <location filename="../rig/RigSession.cpp" line="349"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="295"/>
+        <location filename="../rig/RigSession.cpp" line="352"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="298"/>
+        <location filename="../rig/RigSession.cpp" line="355"/>
         <source>E-STOP is latched: reset it before a trial.</source>
         <translation>緊急停止已鎖定：試驗前請先重設。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="301"/>
-        <location filename="../rig/RigSession.cpp" line="707"/>
+        <location filename="../rig/RigSession.cpp" line="358"/>
+        <location filename="../rig/RigSession.cpp" line="770"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="312"/>
-        <location filename="../rig/RigSession.cpp" line="335"/>
+        <location filename="../rig/RigSession.cpp" line="369"/>
+        <location filename="../rig/RigSession.cpp" line="392"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="593"/>
+        <location filename="../rig/RigSession.cpp" line="656"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="596"/>
+        <location filename="../rig/RigSession.cpp" line="659"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="605"/>
+        <location filename="../rig/RigSession.cpp" line="668"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="667"/>
+        <location filename="../rig/RigSession.cpp" line="730"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="675"/>
+        <location filename="../rig/RigSession.cpp" line="738"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="704"/>
+        <location filename="../rig/RigSession.cpp" line="767"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="710"/>
+        <location filename="../rig/RigSession.cpp" line="773"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="723"/>
+        <location filename="../rig/RigSession.cpp" line="786"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

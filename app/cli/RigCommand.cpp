@@ -206,7 +206,7 @@ int rigCommand(const QStringList& arguments) {
             throw UsageError(
                 QStringLiteral("the latency measurement failed: %1").arg(measured->error));
         } else {
-            rig.setLoopLatency(measured->median);
+            // (The session compensates what it measured from now on.)
             QJsonArray steps;
             QStringList stepText;
             for (double s : measured->stepsSeconds) {
@@ -230,6 +230,30 @@ int rigCommand(const QStringList& arguments) {
                               .arg(stepText.join(", ")));
             }
         }
+    }
+    // The pre-trial check the window's strip shows: no trial starts on a failed one.
+    const rig::PreTrialCheck check = rig.preTrialCheck(task, *spec);
+    QJsonArray checkJson;
+    QStringList checkText;
+    for (const rig::PreTrialItem& item : check.items) {
+        checkJson.append(QJsonObject{{"item", item.key},
+                                     {"ok", item.ok},
+                                     {"blocking", item.blocking},
+                                     {"detail", item.detail}});
+        checkText << QStringLiteral("  %1 %2: %3")
+                         .arg(item.ok ? QStringLiteral("ok  ")
+                              : item.blocking ? QStringLiteral("FAIL")
+                                              : QStringLiteral("note"),
+                              item.label, item.detail);
+    }
+    if (!check.ready()) {
+        std::fprintf(stderr, "prisca-cli: rig: pre-trial check:\n%s\n",
+                     qPrintable(checkText.join(QLatin1Char('\n'))));
+        throw UsageError(QStringLiteral("not ready for a trial (%1): %2")
+                             .arg(check.missingLabels(), check.missingDetails()));
+    }
+    if (line.format() == QLatin1String("text")) {
+        printText(QStringLiteral("pre-trial check: ready\n%1\n").arg(checkText.join(QLatin1Char('\n'))));
     }
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
@@ -349,6 +373,7 @@ int rigCommand(const QStringList& arguments) {
         printJson(QJsonObject{{"plant", QStringLiteral("slidecar")},
                               {"method", method},
                               {"seed", static_cast<double>(seed)},
+                              {"preTrialCheck", checkJson},
                               {"trials", rows},
                               {"latency", latencyJson},
                               {"receiverLastCommand", heldJson},

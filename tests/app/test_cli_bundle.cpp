@@ -39,19 +39,38 @@ int sampleLines(const QString& path) {
 class TestCliBundle : public QObject {
     Q_OBJECT
   private slots:
-    void rigTrial_leavingTheFence_isBundledAndReplayed() {
+    void rigTrial_withTheLotOutsideTheFence_doesNotStart() {
         QTemporaryDir dir;
+        // A fence 3 m ahead, across the demonstration's path: the pre-trial check refuses.
+        const Result r = cli({"rig", "--virtual", "--trials", "1", "--fence",
+                              "-0.8,-1.6;3.0,-1.6;3.0,2.0;-0.8,2.0", "--bundle-dir", "bundles"},
+                             dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("not ready for a trial (Fence)") &&
+                     r.err.contains("outside the fence") && r.err.contains("FAIL Fence"),
+                 qPrintable(r.err));
+        QVERIFY(!r.out.contains("trial 1:"));
+        QVERIFY(QDir(QDir(dir.path()).filePath("bundles"))
+                    .entryList(QDir::Dirs | QDir::NoDotAndDotDot)
+                    .isEmpty());
+    }
+
+    void rigTrial_breakingTheFence_isBundledAndReplayed() {
+        QTemporaryDir dir;
+        // A fence around the whole path with a speed limit the slide exceeds.
         Result r = cli({"rig", "--virtual", "--trials", "1", "--perturbation", "0", "--fence",
-                        "-0.8,-1.6;3.0,-1.6;3.0,2.0;-0.8,2.0", "--bundle-dir", "bundles",
-                        "--format", "json"},
+                        "-0.8,-1.6;5.5,-1.6;5.5,2.0;-0.8,2.0", "--max-speed", "2.5",
+                        "--bundle-dir", "bundles", "--format", "json"},
                        dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject run = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(run.value("preTrialCheck").toArray().size() >= 8);
         QCOMPARE(run.value("bundles").toArray().size(), 1);
         const QString bundle = run.value("bundles").toArray().at(0).toString();
-        QVERIFY(run.value("trials").toArray().at(0).toObject().value("failsafeReason")
-                    .toString()
-                    .contains("left the fence"));
+        QVERIFY2(run.value("trials").toArray().at(0).toObject().value("failsafeReason")
+                     .toString()
+                     .contains("over the fence's"),
+                 qPrintable(r.out));
         r = cli({"replay", bundle, "--format", "json"}, dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject replay = QJsonDocument::fromJson(r.out.toUtf8()).object();
@@ -69,7 +88,7 @@ class TestCliBundle : public QObject {
                          replay.value("result").toObject().value("finalPositionErrorCm")
                              .toDouble()) < 0.01);
         r = cli({"replay", bundle}, dir.path());
-        QVERIFY2(r.out.contains("ended in failsafe: the car left the fence"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("ended in failsafe: the car drove at"), qPrintable(r.out));
         // Not a bundle: one line, exit 2.
         r = cli({"replay", "nowhere"}, dir.path());
         QCOMPARE(r.exitCode, 2);

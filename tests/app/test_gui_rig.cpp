@@ -97,11 +97,29 @@ class TestGuiRig : public QObject {
             QCOMPARE(next.find<RigPanel>("rigPanel")->geofence().polygon.size(), size_t(4));
         }
         QVERIFY(startVirtualRig(w, rig));
+        // The pre-trial check: the demonstration's lot lies outside this fence, so no trial.
+        QVERIFY(!rig->runTrial());
+        auto* ready = w.find<QLabel>("rigReadiness");
+        QVERIFY2(ready->text().contains(QLatin1String("Not ready")) &&
+                     ready->text().contains(QLatin1String("Fence")),
+                 qPrintable(ready->text()));
+        QVERIFY2(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("outside the fence")),
+                 qPrintable(w.find<QLabel>("rigTrialInfo")->text()));
+        QVERIFY(!rig->isRunning());
+        // A fence around the whole path, with a speed limit the demonstration's slide exceeds:
+        // the trial starts, and the limit ends it in failsafe.
+        rig->clearFence();
+        for (const QPointF& corner :
+             {QPointF(-0.8, -1.6), QPointF(5.5, -1.6), QPointF(5.5, 2.0), QPointF(-0.8, 2.0)}) {
+            rig->addFenceCorner(corner);
+        }
+        w.find<QDoubleSpinBox>("fenceMaxSpeed")->setValue(2.5);
+        QTRY_VERIFY2(ready->text().startsWith(QLatin1String("Ready")), qPrintable(ready->text()));
         QSignalSpy finished(rig, &RigPanel::trialFinished);
         QVERIFY(rig->runTrial());
         QVERIFY(finished.wait(20000));
         const QString result = finished.last().at(0).toString();
-        QVERIFY2(result.contains("left the fence"), qPrintable(result));
+        QVERIFY2(result.contains("over the fence's"), qPrintable(result));
         QTRY_VERIFY_WITH_TIMEOUT(!rig->lastBundle().isEmpty(), 10000);
         QVERIFY(w.find<QAbstractButton>("replayLastTrial")->isEnabled());
         // The replay window: its slider moves the frame, the arena and the chart's cursor.
