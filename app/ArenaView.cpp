@@ -73,6 +73,16 @@ void ArenaView::setScene(const sim::PlantInfo& info,
     fitScene();
 }
 
+void ArenaView::setTrail(const QVector<QPointF>& points) {
+    trail_ = points;
+    update();
+}
+
+void ArenaView::setFence(const QVector<QPointF>& corners) {
+    fence_ = corners;
+    update();
+}
+
 void ArenaView::clearTrails() {
     trail_.clear();
     lastTrail_.clear();
@@ -289,6 +299,14 @@ void ArenaView::drawPlanar(QPainter& painter) const {
         painter.setBrush(QColor(0x1f, 0x77, 0xb4, 24));
         painter.drawRect(QRectF(-kLotLength / 2, -kLotWidth / 2, kLotLength, kLotWidth));
         painter.restore();
+    }
+    if (fence_.size() >= 3) {
+        // The fence: where a trial on the rig ends in failsafe.
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(cosmetic(QColor(0xd3, 0x2f, 0x2f), 2, Qt::DashDotLine));
+        QVector<QPointF> closed = fence_;
+        closed << fence_.front();
+        polyline(closed);
     }
     painter.setBrush(Qt::NoBrush);
     painter.setPen(cosmetic(kDesiredColour, 2.5));

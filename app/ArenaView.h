@@ -32,6 +32,10 @@ class ArenaView : public QWidget {
     void showState(const Eigen::VectorXd& state, const Eigen::VectorXd& action);
     /// Clears the trails (a new run).
     void clearTrails();
+    /// This trial's trail as given (a replay up to its moment) [m], replacing the live one.
+    void setTrail(const QVector<QPointF>& points);
+    /// The rig's fence on the floor [m] (closed from 3 corners; empty: none).
+    void setFence(const QVector<QPointF>& corners);
     /// Fits the whole scene into the view.
     void fitScene();
 
@@ -69,6 +73,7 @@ class ArenaView : public QWidget {
     sim::PlantEntry::Drawing drawing_ = sim::PlantEntry::Drawing::Vehicle;  // from the catalog
     std::shared_ptr<const core::Demonstration> demonstration_;
     QVector<QPointF> desired_;    ///< demonstration path (world) or acrobot tip path
+    QVector<QPointF> fence_;      ///< floor [m]
     QVector<QPointF> trail_;      ///< this trial
     QVector<QPointF> lastTrail_;  ///< the previous trial, drawn faintly
     QVector<QPointF> skidMarks_;  ///< rear-axle points where the car slid (this trial)

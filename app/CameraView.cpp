@@ -36,6 +36,11 @@ void CameraView::setClickHint(const QString& hint) {
     update();
 }
 
+void CameraView::setTrail(const QVector<QPointF>& floorPoints) {
+    trail_ = floorPoints;
+    update();
+}
+
 void CameraView::setFence(const QVector<QPointF>& corners) {
     fence_ = corners;
     update();
@@ -100,6 +105,14 @@ void CameraView::paintEvent(QPaintEvent*) {
             }
             painter.setPen(QPen(QColor(0x1f, 0x77, 0xb4), 2, Qt::DashLine));
             painter.drawPolygon(lot);
+        }
+        if (trail_.size() > 1) {
+            QPolygonF line;
+            for (const QPointF& p : trail_) {
+                line << floorToWidget(p.x(), p.y());
+            }
+            painter.setPen(QPen(QColor(0xff, 0x8c, 0x1a, 170), 1.5));
+            painter.drawPolyline(line);
         }
         if (pose_) {
             const devices::LedGeometry geometry;

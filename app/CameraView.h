@@ -34,6 +34,8 @@ class CameraView : public QWidget {
     void setClickHint(const QString& hint);
     /// The fence on the floor [m], drawn through the calibration (closed from 3 corners).
     void setFence(const QVector<QPointF>& corners);
+    /// Where the car has been this trial, on the floor [m] (a replay up to its moment).
+    void setTrail(const QVector<QPointF>& floorPoints);
     /// Board corners captured for the lens calibration [px]: the image's coverage.
     void setBoardCorners(const std::vector<cv::Point2f>& corners);
 
@@ -56,6 +58,7 @@ class CameraView : public QWidget {
     devices::FloorCalibration calibration_;
     bool hasCalibration_ = false;
     QVector<QPointF> path_;
+    QVector<QPointF> trail_;  ///< floor [m]
     QPointF lot_;
     double lotHeading_ = 0.0;
     bool calibrating_ = false;

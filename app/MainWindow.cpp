@@ -3,6 +3,7 @@
 #include "app/ModalDialog.h"
 
 #include "app/ArenaView.h"
+#include "app/BundleChooser.h"
 #include "app/ControllerPanel.h"
 #include "app/EmergencyStop.h"
 #include "app/EmergencyStopGuard.h"
@@ -538,10 +539,17 @@ void MainWindow::createMenus() {
     replayAction_->setObjectName(QStringLiteral("replayAction"));
     replayAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
     connect(replayAction_, &QAction::triggered, this, [this] {
-        const QString folder = ModalDialog::existingDirectory(
-            this, tr("Replay a trial bundle"), rigPanel_ ? rigPanel_->bundleParent() : QString());
-        if (!folder.isEmpty()) {
-            openReplay(folder);
+        // The rig's bundles and the simulation's (both in the trials folder unless the rig's
+        // were sent elsewhere), newest first, apart.
+        const QString trials =
+            QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                .filePath(QStringLiteral("trials"));
+        BundleChooser chooser({rigPanel_->bundleParent().isEmpty() ? trials
+                                                                   : rigPanel_->bundleParent(),
+                               trials},
+                              this);
+        if (ModalDialog::exec(chooser) == QDialog::Accepted && !chooser.chosen().isEmpty()) {
+            openReplay(chooser.chosen());
         }
     });
     fileMenu_->addSeparator();

@@ -2,6 +2,7 @@
 
 #include "app/ArenaView.h"
 #include "app/CameraView.h"
+#include "devices/Geofence.h"
 #include "sim/PlantCatalog.h"
 
 #include <QChart>
@@ -17,6 +18,7 @@
 #include <QSplitter>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <QScreen>
 #include <QValueAxis>
 
 #include <cmath>
@@ -56,6 +58,23 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
     }
     const QString plant = bundle_.header.value("plant").toString(QStringLiteral("slidecar"));
     arena_->setScene(sim::PlantCatalog::describe(plant), bundle_.demonstration);
+    // The fence the trial ran in (rig trials keep it in their header).
+    if (bundle_.header.contains("fence")) {
+        QString fenceError;
+        if (const auto fence = devices::Geofence::fromJson(bundle_.header.value("fence").toObject(),
+                                                           &fenceError)) {
+            QVector<QPointF> corners;
+            for (const cv::Point2d& p : fence->polygon) {
+                corners << QPointF(p.x, p.y);
+            }
+            camera_->setFence(corners);
+            arena_->setFence(corners);
+        }
+    }
+    for (const rig::BundleSample& s : bundle_.samples) {
+        trail_ << (s.found ? QPointF(s.x, s.y)
+                           : QPointF(std::numeric_limits<double>::quiet_NaN(), 0.0));
+    }
     // Tracking error per sample: the distance to the nearest point of the demonstration.
     auto* errorSeries = new QLineSeries;
     double largest = 0.0;
@@ -90,7 +109,7 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
     }
     auto* chartView = new QChartView(chart_, this);
     chartView->setRenderHint(QPainter::Antialiasing);
-    chartView->setMinimumHeight(260);
+    chartView->setMinimumHeight(150);
     chart_->legend()->setAlignment(Qt::AlignRight);
 
     slider_->setRange(0, std::max(0, sampleCount() - 1));
@@ -149,7 +168,10 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
     layout->addWidget(views, 3);
     layout->addWidget(chartView, 2);
     layout->addLayout(controls);
-    resize(1200, 800);
+    // As large as the screen leaves (the window's E-STOP above it stays in view), at most
+    // 1200 x 800.
+    const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    resize(std::min(1200, available.width() - 40), std::min(800, available.height() - 120));
     slider_->setFocus();
     showSample(0);
 }
@@ -179,6 +201,14 @@ void ReplayDialog::showSample(int index) {
         image.fill(Qt::black);
     }
     camera_->setFrame(image, pose);
+    QVector<QPointF> trail;
+    for (int i = 0; i <= index; ++i) {
+        if (!std::isnan(trail_[i].x())) {
+            trail << trail_[i];
+        }
+    }
+    camera_->setTrail(trail);
+    arena_->setTrail(trail);
     if (s.found) {
         Eigen::VectorXd state = Eigen::VectorXd::Zero(6);
         for (int i = 0; i < 6 && i < static_cast<int>(s.state.size()); ++i) {

@@ -18,8 +18,10 @@ class CameraView;
 
 /// A trial bundle looked at again, frame by frame: one time slider moves the camera frame (with
 /// the tracked pose drawn through the bundle's calibration), the arena (the car at that
-/// moment, the demonstration's path) and a cursor on the tracking-error chart together. Left
-/// and right step a sample; Play runs it at the frames' pace. (Space stays E-STOP's.)
+/// moment, its trail so far, the demonstration's path, the fence) and a cursor on the
+/// tracking-error chart together; the frame shown is the stored one nearest the sample in time.
+/// Left and right step a sample; Play runs it at the frames' pace. (Space stays E-STOP's.)
+/// Sized to its screen: at 1280 x 800 every control is in view.
 class ReplayDialog : public QDialog {
     Q_OBJECT
   public:
@@ -35,6 +37,7 @@ class ReplayDialog : public QDialog {
   private:
     rig::TrialBundle bundle_;
     std::vector<double> errors_;  ///< per sample: distance from the nearest demonstration point [m]
+    QVector<QPointF> trail_;      ///< the tracked positions [m], one per sample (NaN: none)
     CameraView* camera_;
     ArenaView* arena_;
     QChart* chart_;

@@ -3,6 +3,7 @@
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
 
+#include <algorithm>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -139,14 +140,18 @@ QString TrialBundle::frameAt(size_t sample) const {
         return {};
     }
     const long long want = samples[sample].frame;
-    QString best;
-    for (const auto& [index, path] : frames) {
-        if (index > want) {
-            break;
-        }
-        best = path;
+    // frames is in order: the first at or after `want`, or the one before it, whichever is nearer.
+    const auto after = std::lower_bound(
+        frames.begin(), frames.end(), want,
+        [](const std::pair<long long, QString>& f, long long index) { return f.first < index; });
+    if (after == frames.begin()) {
+        return after->second;
     }
-    return best;
+    const auto before = std::prev(after);
+    if (after == frames.end() || want - before->first <= after->first - want) {
+        return before->second;
+    }
+    return after->second;
 }
 
 std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* error) {

@@ -69,7 +69,8 @@ struct TrialBundle {
     std::vector<BundleSample> samples;
     std::vector<std::pair<long long, QString>> frames;  ///< frame index, JPEG path, in order
     bool complete() const { return header.contains("result"); }
-    /// The frame shown at sample i: the newest stored frame at or before its frame index
+    /// The frame shown at sample i: the stored frame nearest its frame index, before or after
+    /// (frames are kept at a fraction of the camera's rate; the nearest is the nearest in time)
     /// (empty: none).
     QString frameAt(size_t sample) const;
 

@@ -498,50 +498,119 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="231"/>
+        <location filename="../app/ArenaView.cpp" line="241"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="232"/>
+        <location filename="../app/ArenaView.cpp" line="242"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="249"/>
+        <location filename="../app/ArenaView.cpp" line="259"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="250"/>
+        <location filename="../app/ArenaView.cpp" line="260"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="464"/>
+        <location filename="../app/ArenaView.cpp" line="482"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
 </context>
 <context>
+    <name>prisca::app::BundleChooser</name>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="62"/>
+        <source>incomplete</source>
+        <translation>不完整</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="64"/>
+        <source>failsafe: %1</source>
+        <translation>失效保護：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="66"/>
+        <source>parked %1 cm</source>
+        <translation>停在 %1 厘米處</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="69"/>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="82"/>
+        <location filename="../app/BundleChooser.cpp" line="135"/>
+        <source>Replay a trial bundle</source>
+        <translation>重播試驗資料包</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <source>Started</source>
+        <translation>開始時間</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <source>Trial</source>
+        <translation>試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <source>Outcome</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="103"/>
+        <source>Trials on the rig (%1)</source>
+        <translation>實機試驗（%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="104"/>
+        <source>Simulated trials (%1)</source>
+        <translation>模擬試驗（%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="120"/>
+        <source>No trial bundles yet in %1.</source>
+        <translation>%1 尚未有試驗資料包。</translation>
+    </message>
+    <message>
+        <location filename="../app/BundleChooser.cpp" line="127"/>
+        <source>Other folder...</source>
+        <translation>其他資料夾……</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="80"/>
+        <location filename="../app/CameraView.cpp" line="85"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="149"/>
+        <location filename="../app/CameraView.cpp" line="162"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="153"/>
+        <location filename="../app/CameraView.cpp" line="166"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="158"/>
+        <location filename="../app/CameraView.cpp" line="171"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -1297,157 +1366,156 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="129"/>
+        <location filename="../app/MainWindow.cpp" line="130"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="156"/>
-        <location filename="../app/MainWindow.cpp" line="689"/>
-        <location filename="../app/MainWindow.cpp" line="695"/>
+        <location filename="../app/MainWindow.cpp" line="157"/>
+        <location filename="../app/MainWindow.cpp" line="697"/>
+        <location filename="../app/MainWindow.cpp" line="703"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="159"/>
-        <location filename="../app/MainWindow.cpp" line="610"/>
+        <location filename="../app/MainWindow.cpp" line="160"/>
         <location filename="../app/MainWindow.cpp" line="618"/>
-        <location filename="../app/MainWindow.cpp" line="620"/>
-        <location filename="../app/MainWindow.cpp" line="634"/>
+        <location filename="../app/MainWindow.cpp" line="626"/>
+        <location filename="../app/MainWindow.cpp" line="628"/>
+        <location filename="../app/MainWindow.cpp" line="642"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="304"/>
+        <location filename="../app/MainWindow.cpp" line="305"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="361"/>
+        <location filename="../app/MainWindow.cpp" line="362"/>
         <source>the E-STOP button</source>
         <translation>緊急停止按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="365"/>
-        <location filename="../app/MainWindow.cpp" line="483"/>
-        <location filename="../app/MainWindow.cpp" line="487"/>
+        <location filename="../app/MainWindow.cpp" line="366"/>
+        <location filename="../app/MainWindow.cpp" line="484"/>
+        <location filename="../app/MainWindow.cpp" line="488"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="427"/>
+        <location filename="../app/MainWindow.cpp" line="428"/>
         <source>The quit was called off; the work goes on.</source>
         <translation>已取消結束；工作繼續。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="434"/>
+        <location filename="../app/MainWindow.cpp" line="435"/>
         <source>Quits when the work under way is done</source>
         <translation>進行中的工作完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="435"/>
+        <location filename="../app/MainWindow.cpp" line="436"/>
         <source>Quits once the work has stopped</source>
         <translation>工作停止後即結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="436"/>
+        <location filename="../app/MainWindow.cpp" line="437"/>
         <source>Don&apos;t quit</source>
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="444"/>
+        <location filename="../app/MainWindow.cpp" line="445"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="447"/>
+        <location filename="../app/MainWindow.cpp" line="448"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="450"/>
+        <location filename="../app/MainWindow.cpp" line="451"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="458"/>
+        <location filename="../app/MainWindow.cpp" line="459"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="461"/>
+        <location filename="../app/MainWindow.cpp" line="462"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="464"/>
+        <location filename="../app/MainWindow.cpp" line="465"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="467"/>
+        <location filename="../app/MainWindow.cpp" line="468"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="470"/>
+        <location filename="../app/MainWindow.cpp" line="471"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="473"/>
+        <location filename="../app/MainWindow.cpp" line="474"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="483"/>
+        <location filename="../app/MainWindow.cpp" line="484"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
-        <location filename="../app/MainWindow.cpp" line="602"/>
+        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="610"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
+        <location filename="../app/MainWindow.cpp" line="518"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="528"/>
-        <location filename="../app/MainWindow.cpp" line="629"/>
+        <location filename="../app/MainWindow.cpp" line="529"/>
+        <location filename="../app/MainWindow.cpp" line="637"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="529"/>
+        <location filename="../app/MainWindow.cpp" line="530"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="542"/>
-        <location filename="../app/MainWindow.cpp" line="947"/>
+        <location filename="../app/MainWindow.cpp" line="955"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="569"/>
+        <location filename="../app/MainWindow.cpp" line="577"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="569"/>
-        <location filename="../app/MainWindow.cpp" line="897"/>
-        <location filename="../app/MainWindow.cpp" line="963"/>
-        <location filename="../app/MainWindow.cpp" line="976"/>
-        <location filename="../app/MainWindow.cpp" line="1051"/>
+        <location filename="../app/MainWindow.cpp" line="577"/>
+        <location filename="../app/MainWindow.cpp" line="905"/>
+        <location filename="../app/MainWindow.cpp" line="971"/>
+        <location filename="../app/MainWindow.cpp" line="984"/>
+        <location filename="../app/MainWindow.cpp" line="1059"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="603"/>
+        <location filename="../app/MainWindow.cpp" line="611"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1456,338 +1524,338 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="611"/>
+        <location filename="../app/MainWindow.cpp" line="619"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="618"/>
+        <location filename="../app/MainWindow.cpp" line="626"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="620"/>
+        <location filename="../app/MainWindow.cpp" line="628"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="634"/>
+        <location filename="../app/MainWindow.cpp" line="642"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="675"/>
+        <location filename="../app/MainWindow.cpp" line="683"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="684"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="678"/>
+        <location filename="../app/MainWindow.cpp" line="686"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="679"/>
+        <location filename="../app/MainWindow.cpp" line="687"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="680"/>
+        <location filename="../app/MainWindow.cpp" line="688"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="681"/>
+        <location filename="../app/MainWindow.cpp" line="689"/>
         <source>E-STOP &amp;inputs...</source>
         <translation>緊急停止輸入(&amp;I)……</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="691"/>
         <source>A foot switch&apos;s key and a gamepad button that are E-STOP too</source>
         <translation>同樣觸發緊急停止的腳踏開關按鍵和手掣按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="687"/>
+        <location filename="../app/MainWindow.cpp" line="695"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="688"/>
+        <location filename="../app/MainWindow.cpp" line="696"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="690"/>
+        <location filename="../app/MainWindow.cpp" line="698"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="691"/>
+        <location filename="../app/MainWindow.cpp" line="699"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="692"/>
+        <location filename="../app/MainWindow.cpp" line="700"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="693"/>
+        <location filename="../app/MainWindow.cpp" line="701"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="694"/>
+        <location filename="../app/MainWindow.cpp" line="702"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="696"/>
+        <location filename="../app/MainWindow.cpp" line="704"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="697"/>
+        <location filename="../app/MainWindow.cpp" line="705"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="698"/>
+        <location filename="../app/MainWindow.cpp" line="706"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="699"/>
+        <location filename="../app/MainWindow.cpp" line="707"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="700"/>
+        <location filename="../app/MainWindow.cpp" line="708"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="701"/>
+        <location filename="../app/MainWindow.cpp" line="709"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="702"/>
+        <location filename="../app/MainWindow.cpp" line="710"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="703"/>
+        <location filename="../app/MainWindow.cpp" line="711"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="704"/>
+        <location filename="../app/MainWindow.cpp" line="712"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="706"/>
+        <location filename="../app/MainWindow.cpp" line="714"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="717"/>
+        <location filename="../app/MainWindow.cpp" line="725"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="720"/>
+        <location filename="../app/MainWindow.cpp" line="728"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="725"/>
+        <location filename="../app/MainWindow.cpp" line="733"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="728"/>
+        <location filename="../app/MainWindow.cpp" line="736"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="731"/>
+        <location filename="../app/MainWindow.cpp" line="739"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="889"/>
+        <location filename="../app/MainWindow.cpp" line="897"/>
         <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
         <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="894"/>
+        <location filename="../app/MainWindow.cpp" line="902"/>
         <source>E-STOP (the foot switch&apos;s key)</source>
         <translation>緊急停止（腳踏開關的按鍵）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="897"/>
+        <location filename="../app/MainWindow.cpp" line="905"/>
         <source>Gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="964"/>
+        <location filename="../app/MainWindow.cpp" line="972"/>
         <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
         <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="977"/>
+        <location filename="../app/MainWindow.cpp" line="985"/>
         <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
         <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="988"/>
+        <location filename="../app/MainWindow.cpp" line="996"/>
         <source>E-STOP inputs</source>
         <translation>緊急停止輸入</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="990"/>
+        <location filename="../app/MainWindow.cpp" line="998"/>
         <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
         <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1000"/>
+        <location filename="../app/MainWindow.cpp" line="1008"/>
         <source>No key</source>
         <translation>不設按鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1007"/>
+        <location filename="../app/MainWindow.cpp" line="1015"/>
         <source>None</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1009"/>
+        <location filename="../app/MainWindow.cpp" line="1017"/>
         <source>B (the red one on most pads)</source>
         <translation>B（大多數手掣上的紅色按鈕）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1010"/>
+        <location filename="../app/MainWindow.cpp" line="1018"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1011"/>
+        <location filename="../app/MainWindow.cpp" line="1019"/>
         <source>X</source>
         <translation>X</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1012"/>
+        <location filename="../app/MainWindow.cpp" line="1020"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1013"/>
+        <location filename="../app/MainWindow.cpp" line="1021"/>
         <source>Back / Select</source>
         <translation>Back / Select</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1014"/>
+        <location filename="../app/MainWindow.cpp" line="1022"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1015"/>
+        <location filename="../app/MainWindow.cpp" line="1023"/>
         <source>Left shoulder</source>
         <translation>左肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1016"/>
+        <location filename="../app/MainWindow.cpp" line="1024"/>
         <source>Right shoulder</source>
         <translation>右肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1017"/>
+        <location filename="../app/MainWindow.cpp" line="1025"/>
         <source>Paddle 1</source>
         <translation>背鍵 1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1023"/>
+        <location filename="../app/MainWindow.cpp" line="1031"/>
         <source>A gamepad is connected.</source>
         <translation>已連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1024"/>
+        <location filename="../app/MainWindow.cpp" line="1032"/>
         <source>No gamepad is connected now.</source>
         <translation>目前沒有連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1027"/>
+        <location filename="../app/MainWindow.cpp" line="1035"/>
         <source>Foot switch key:</source>
         <translation>腳踏開關按鍵：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1028"/>
+        <location filename="../app/MainWindow.cpp" line="1036"/>
         <source>Gamepad button:</source>
         <translation>手掣按鈕：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1052"/>
+        <location filename="../app/MainWindow.cpp" line="1060"/>
         <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
         <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1054"/>
+        <location filename="../app/MainWindow.cpp" line="1062"/>
         <source>, the key %1</source>
         <translation>、按鍵 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1055"/>
+        <location filename="../app/MainWindow.cpp" line="1063"/>
         <source>, gamepad button %1</source>
         <translation>、手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="427"/>
-        <location filename="../app/MainWindow.cpp" line="753"/>
-        <location filename="../app/MainWindow.cpp" line="774"/>
-        <location filename="../app/MainWindow.cpp" line="776"/>
-        <location filename="../app/MainWindow.cpp" line="783"/>
-        <location filename="../app/MainWindow.cpp" line="786"/>
-        <location filename="../app/MainWindow.cpp" line="819"/>
+        <location filename="../app/MainWindow.cpp" line="428"/>
+        <location filename="../app/MainWindow.cpp" line="761"/>
+        <location filename="../app/MainWindow.cpp" line="782"/>
+        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="791"/>
+        <location filename="../app/MainWindow.cpp" line="794"/>
+        <location filename="../app/MainWindow.cpp" line="827"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="754"/>
+        <location filename="../app/MainWindow.cpp" line="762"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="755"/>
+        <location filename="../app/MainWindow.cpp" line="763"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="774"/>
+        <location filename="../app/MainWindow.cpp" line="782"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="792"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="797"/>
+        <location filename="../app/MainWindow.cpp" line="805"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="798"/>
+        <location filename="../app/MainWindow.cpp" line="806"/>
         <source>Work is under way:
 
 %1
@@ -1800,93 +1868,93 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="803"/>
+        <location filename="../app/MainWindow.cpp" line="811"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="805"/>
+        <location filename="../app/MainWindow.cpp" line="813"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="806"/>
+        <location filename="../app/MainWindow.cpp" line="814"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="807"/>
+        <location filename="../app/MainWindow.cpp" line="815"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="819"/>
+        <location filename="../app/MainWindow.cpp" line="827"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="851"/>
+        <location filename="../app/MainWindow.cpp" line="859"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="851"/>
+        <location filename="../app/MainWindow.cpp" line="859"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="863"/>
+        <location filename="../app/MainWindow.cpp" line="871"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="865"/>
+        <location filename="../app/MainWindow.cpp" line="873"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="869"/>
+        <location filename="../app/MainWindow.cpp" line="877"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="872"/>
+        <location filename="../app/MainWindow.cpp" line="880"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="888"/>
+        <location filename="../app/MainWindow.cpp" line="896"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="903"/>
+        <location filename="../app/MainWindow.cpp" line="911"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="904"/>
+        <location filename="../app/MainWindow.cpp" line="912"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="906"/>
+        <location filename="../app/MainWindow.cpp" line="914"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="913"/>
+        <location filename="../app/MainWindow.cpp" line="921"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="922"/>
-        <location filename="../app/MainWindow.cpp" line="928"/>
+        <location filename="../app/MainWindow.cpp" line="930"/>
+        <location filename="../app/MainWindow.cpp" line="936"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="922"/>
+        <location filename="../app/MainWindow.cpp" line="930"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -2247,74 +2315,74 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::ReplayDialog</name>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="40"/>
+        <location filename="../app/ReplayDialog.cpp" line="42"/>
         <source>Replay: %1</source>
         <translation>重播：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="77"/>
+        <location filename="../app/ReplayDialog.cpp" line="96"/>
         <source>distance from the path [m]</source>
         <translation>與路徑的距離 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="78"/>
+        <location filename="../app/ReplayDialog.cpp" line="97"/>
         <source>now</source>
         <translation>現在</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="81"/>
+        <location filename="../app/ReplayDialog.cpp" line="100"/>
         <source>trial time [s]</source>
         <translation>試驗時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="82"/>
+        <location filename="../app/ReplayDialog.cpp" line="101"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="107"/>
+        <location filename="../app/ReplayDialog.cpp" line="126"/>
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="107"/>
-        <location filename="../app/ReplayDialog.cpp" line="113"/>
-        <location filename="../app/ReplayDialog.cpp" line="118"/>
+        <location filename="../app/ReplayDialog.cpp" line="126"/>
+        <location filename="../app/ReplayDialog.cpp" line="132"/>
+        <location filename="../app/ReplayDialog.cpp" line="137"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="121"/>
+        <location filename="../app/ReplayDialog.cpp" line="140"/>
         <source>%1 trial, %2: %3 samples, %4 frames, %5 s</source>
         <translation>%1 試驗，%2：%3 個樣本，%4 個影格，%5 秒</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="127"/>
+        <location filename="../app/ReplayDialog.cpp" line="146"/>
         <source>; last pose %1 cm, %2° from the lot</source>
         <translation>；最後位姿距泊車位 %1 厘米、%2°</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="133"/>
+        <location filename="../app/ReplayDialog.cpp" line="152"/>
         <source> (incomplete: the writer stopped before the trial ended)</source>
         <translation>（不完整：試驗結束前寫入已停止）</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="135"/>
+        <location filename="../app/ReplayDialog.cpp" line="154"/>
         <source>; ended in failsafe: %1</source>
         <translation>；以失效保護結束：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="163"/>
+        <location filename="../app/ReplayDialog.cpp" line="185"/>
         <source>no samples</source>
         <translation>沒有樣本</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="198"/>
+        <location filename="../app/ReplayDialog.cpp" line="228"/>
         <source>%1 s, frame %2%3</source>
         <translation>%1 秒，影格 %2%3</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="201"/>
+        <location filename="../app/ReplayDialog.cpp" line="231"/>
         <source>, failsafe</source>
         <translation>，失效保護</translation>
     </message>

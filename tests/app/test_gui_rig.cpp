@@ -1,11 +1,13 @@
 // The Rig panel driven offscreen on the virtual rig: camera, link, trials, driving and
 // recording, the channel map and the floor calibration.
 #include "GuiTestSupport.h"
+#include "app/BundleChooser.h"
 #include "app/ReplayDialog.h"
 
 #include <QCheckBox>
 #include <QSlider>
 #include <QTimer>
+#include <QTreeWidget>
 #include <algorithm>
 
 using namespace prisca::app;
@@ -133,7 +135,32 @@ class TestGuiRig : public QObject {
         QCOMPARE(slider->value(), replay->sampleCount() / 2);
         QTest::keyClick(slider, Qt::Key_Right);
         QCOMPARE(replay->currentSample(), replay->sampleCount() / 2 + 1);
+        // It fits its screen with every control in view, and never covers the red button.
+        const QRect screen = replay->screen()->availableGeometry();
+        QVERIFY2(screen.contains(replay->frameGeometry()),
+                 qPrintable(QStringLiteral("%1x%2 at %3,%4 on a %5x%6 screen")
+                                .arg(replay->frameGeometry().width())
+                                .arg(replay->frameGeometry().height())
+                                .arg(replay->x())
+                                .arg(replay->y())
+                                .arg(screen.width())
+                                .arg(screen.height())));
+        for (QWidget* control : {static_cast<QWidget*>(slider),
+                                 replay->findChild<QWidget*>("replayPlay")}) {
+            QVERIFY(control->isVisible());
+            QVERIFY(replay->rect().contains(QRect(control->mapTo(replay, QPoint(0, 0)), control->size())));
+        }
+        auto* red = w.find<QWidget>("emergencyStopButton");
+        QVERIFY(!replay->frameGeometry().intersects(QRect(red->mapToGlobal(QPoint(0, 0)), red->size())));
         replay->close();
+        // File > Replay lists the bundles newest first, the rig's apart from the simulated.
+        const std::vector<BundleEntry> listed = BundleChooser::scan({rig->bundleParent()});
+        QVERIFY(!listed.empty());
+        QVERIFY(listed.front().rig);
+        QCOMPARE(QFileInfo(listed.front().folder).absoluteFilePath(),
+                 QFileInfo(rig->lastBundle()).absoluteFilePath());
+        QVERIFY2(listed.front().outcome.contains(QLatin1String("failsafe")),
+                 qPrintable(listed.front().outcome));
         // A folder that is no bundle: refused (a message box the test closes), no window.
         QTimer::singleShot(200, [] {
             if (QWidget* box = prisca::app::ModalDialog::top()) {
@@ -143,6 +170,45 @@ class TestGuiRig : public QObject {
         QVERIFY(!w.window.openReplay(QStringLiteral("/nonexistent")));
         rig->clearFence();
         QVERIFY(rig->geofence().polygon.empty());
+    }
+
+    void bundleChooser_listsTheRigsTrialsApartNewestFirst() {
+        QTemporaryDir dir;
+        const auto write = [&](const QString& name, const char* kind, const QString& started,
+                               const char* result) {
+            QDir(dir.path()).mkpath(name);
+            QFile f(QDir(dir.path()).filePath(name + QStringLiteral("/bundle.json")));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QStringLiteral("{\"kind\": \"%1\", \"method\": \"prisca\", \"trial\": 1, "
+                                   "\"started\": \"%2\"%3}")
+                        .arg(QLatin1String(kind), started, QLatin1String(result))
+                        .toUtf8());
+        };
+        // Thirty simulated trials named to sort before the rig's, and two rig trials.
+        for (int i = 0; i < 30; ++i) {
+            write(QStringLiteral("sim-%1").arg(i, 2, 10, QLatin1Char('0')), "simulation",
+                  QStringLiteral("2026-12-03T10:%1:00").arg(i, 2, 10, QLatin1Char('0')),
+                  ", \"result\": {\"finalPositionErrorCm\": 3.5}");
+        }
+        write(QStringLiteral("trial-old"), "rig", QStringLiteral("2026-12-03T09:00:00"),
+              ", \"result\": {\"failsafe\": true, \"reason\": \"the car left the fence\"}");
+        write(QStringLiteral("trial-new"), "rig", QStringLiteral("2026-12-03T11:00:00"), "");
+        QDir(dir.path()).mkpath(QStringLiteral("not-a-bundle"));
+        BundleChooser chooser({dir.path()});
+        auto* list = chooser.findChild<QTreeWidget*>(QStringLiteral("bundleList"));
+        QVERIFY(list);
+        QCOMPARE(list->topLevelItemCount(), 2);
+        QTreeWidgetItem* rigGroup = list->topLevelItem(0);
+        QVERIFY(rigGroup->text(0).contains(QLatin1String("(2)")));
+        QCOMPARE(list->topLevelItem(1)->childCount(), 30);
+        // Newest first, and what became of each.
+        QCOMPARE(rigGroup->child(0)->text(0), QStringLiteral("2026-12-03 11:00:00"));
+        QCOMPARE(rigGroup->child(0)->text(3), QStringLiteral("incomplete"));
+        QVERIFY(rigGroup->child(1)->text(3).contains(QLatin1String("left the fence")));
+        QCOMPARE(list->topLevelItem(1)->child(0)->text(0), QStringLiteral("2026-12-03 10:29:00"));
+        QVERIFY(list->topLevelItem(1)->child(0)->text(3).contains(QLatin1String("3.5 cm")));
+        // The newest rig trial is the one offered.
+        QCOMPARE(list->currentItem(), rigGroup->child(0));
     }
 
     void rig_drivingThroughTheLinkRecordsADemonstration() {

@@ -80,6 +80,25 @@ class TestRigSession : public QObject {
   private slots:
     void initTestCase() { qRegisterMetaType<rig::RigTrialResult>(); }
 
+    void bundleFrameAt_isTheStoredFrameNearestInTime() {
+        // Frames kept at a quarter of the camera's rate (0, 4, 8, ...): a sample at frame 7 is
+        // shown with frame 8 (one frame later), not frame 4 (three earlier).
+        rig::TrialBundle bundle;
+        for (long long f = 0; f <= 12; f += 4) {
+            bundle.frames.push_back({f, QStringLiteral("frames/%1.jpg").arg(f)});
+        }
+        for (long long f : {0LL, 1LL, 2LL, 3LL, 6LL, 7LL, 13LL}) {
+            rig::BundleSample sample;
+            sample.frame = f;
+            bundle.samples.push_back(sample);
+        }
+        const QStringList expected = {"0", "0", "0", "4", "4", "8", "12"};
+        for (size_t i = 0; i < bundle.samples.size(); ++i) {
+            QCOMPARE(bundle.frameAt(i), QStringLiteral("frames/%1.jpg").arg(expected[int(i)]));
+        }
+        QVERIFY(bundle.frameAt(99).isEmpty());
+    }
+
     void startTrial_refusedWithoutCameraOrLink() {
         rig::RigSession rig;
         const SlideCar car(1.0);
