@@ -26,6 +26,18 @@
 
 namespace prisca::app {
 
+QString ControllerPanel::unitText(const char* unit) {
+    // Words are translated; symbols (s, Hz, m) stay as they are in every language.
+    const QString u = QString::fromUtf8(unit);
+    if (u == QLatin1String("steps")) {
+        return tr("steps");
+    }
+    if (u == QLatin1String("samples")) {
+        return tr("samples");
+    }
+    return u;
+}
+
 ControllerPanel::ControllerPanel(LabSession& session, QWidget* parent)
     : QWidget(parent),
       session_(session),
@@ -99,7 +111,6 @@ void ControllerPanel::buildEditors() {
         editor.parameter = &parameter;
         editor.label = new QLabel(this);
         const QString name = QString::fromLatin1(parameter.name);
-        const QString unit = QString::fromUtf8(parameter.unit);
         const int count = parameter.perChannel ? info.actionDimension() : 1;
         for (int l = 0; l < count; ++l) {
             QWidget* field = nullptr;
@@ -123,9 +134,6 @@ void ControllerPanel::buildEditors() {
                     auto* box = new QSpinBox(this);
                     box->setRange(static_cast<int>(parameter.minimum),
                                   static_cast<int>(parameter.maximum));
-                    if (!unit.isEmpty() && !parameter.perChannel) {  // else the label says it
-                        box->setSuffix(QLatin1Char(' ') + unit);
-                    }
                     connect(box, &QSpinBox::valueChanged, this, &ControllerPanel::apply);
                     field = box;
                     break;
@@ -134,9 +142,6 @@ void ControllerPanel::buildEditors() {
                     auto* box = new QDoubleSpinBox(this);
                     box->setRange(parameter.minimum, parameter.maximum);
                     box->setDecimals(parameter.decimals);
-                    if (!unit.isEmpty() && !parameter.perChannel) {  // else the label says it
-                        box->setSuffix(QLatin1Char(' ') + unit);
-                    }
                     connect(box, &QDoubleSpinBox::valueChanged, this, &ControllerPanel::apply);
                     field = box;
                     break;
@@ -398,11 +403,19 @@ void ControllerPanel::retranslateUi() {
         const QString tip = QStringLiteral("%1 (%2, %3)").arg(help, QString::fromLatin1(p.name),
                                                                p.range());
         QString text = QCoreApplication::translate("MethodParameter", p.label);
-        if (p.perChannel && *p.unit) {
-            text += QStringLiteral(" [%1]").arg(QString::fromUtf8(p.unit));
+        const QString unit = unitText(p.unit);
+        if (p.perChannel && !unit.isEmpty()) {
+            text += QStringLiteral(" [%1]").arg(unit);
         }
         label(editor.fields.front(), editor.label, text + QLatin1Char(':'), tip);
         for (QWidget* field : editor.fields) {
+            // The unit after the number (per channel, the label says it), in this language.
+            const QString suffix = unit.isEmpty() || p.perChannel ? QString() : QLatin1Char(' ') + unit;
+            if (auto* box = qobject_cast<QSpinBox*>(field)) {
+                box->setSuffix(suffix);
+            } else if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {
+                real->setSuffix(suffix);
+            }
             field->setToolTip(tip);
             if (p.zeroMeans) {
                 if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {

@@ -35,6 +35,8 @@ class ControllerPanel : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    /// A parameter's unit as shown: words ("steps") translated, symbols ("s", "Hz") as they are.
+    static QString unitText(const char* unit);
     struct Editor {
         const sim::MethodParameter* parameter = nullptr;
         QLabel* label = nullptr;

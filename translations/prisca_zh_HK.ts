@@ -549,7 +549,7 @@
         <location filename="../app/BundleChooser.cpp" line="82"/>
         <location filename="../app/BundleChooser.cpp" line="135"/>
         <source>Replay a trial bundle</source>
-        <translation>重播試驗資料包</translation>
+        <translation>重播試驗包</translation>
     </message>
     <message>
         <location filename="../app/BundleChooser.cpp" line="85"/>
@@ -584,7 +584,7 @@
     <message>
         <location filename="../app/BundleChooser.cpp" line="120"/>
         <source>No trial bundles yet in %1.</source>
-        <translation>%1 尚未有試驗資料包。</translation>
+        <translation>%1 尚未有試驗包。</translation>
     </message>
     <message>
         <location filename="../app/BundleChooser.cpp" line="127"/>
