@@ -12,6 +12,7 @@
 #include "sim/MethodCatalog.h"
 
 #include <QComboBox>
+#include <QDialog>
 #include <QDir>
 #include <QEvent>
 #include <QFileDialog>
@@ -107,12 +108,18 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, EmergencyStop& emergency
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->setVisible(false);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Rows as tall as their text: Table I's rows fit the short bottom dock at 1280 x 800.
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     figureView_->setObjectName(QStringLiteral("experimentFigure"));
     figureView_->setAlignment(Qt::AlignCenter);
     figureView_->setMinimumSize(200, 100);
     figureView_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
     figureView_->installEventFilter(this);
-    status_->setWordWrap(true);
+    figureView_->setCursor(Qt::PointingHandCursor);
+    // One line (the whole text in its tool tip): the table below keeps the height.
+    status_->setWordWrap(false);
+    status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    status_->installEventFilter(this);
 
     QSettings settings;
     kind_->setCurrentIndex(settings.value("experiments/kind", 0).toInt() == 1 ? 1 : 0);
@@ -453,6 +460,10 @@ void ExperimentsPanel::restoreKeptResult() {
 }
 
 void ExperimentsPanel::showFigure() {
+    if (auto* window = findChild<QDialog*>(QStringLiteral("figureWindow")); window && window->isVisible()) {
+        window->setWindowTitle(caption_);  // a new result, or another language
+        renderLargeFigure();
+    }
     if (!hasFigure_) {
         figureView_->clear();
         return;
@@ -469,6 +480,17 @@ void ExperimentsPanel::showFigure() {
 bool ExperimentsPanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == figureView_ && event->type() == QEvent::Resize && hasFigure_) {
         showFigure();
+    }
+    if (watched->objectName() == QLatin1String("figureLarge") &&
+        event->type() == QEvent::Resize) {
+        renderLargeFigure();
+    }
+    if (watched == figureView_ && event->type() == QEvent::MouseButtonRelease && hasFigure_) {
+        openFigure();
+        return true;
+    }
+    if (watched == status_ && event->type() == QEvent::ToolTip) {
+        status_->setToolTip(status_->text());  // the whole line, however narrow the dock
     }
     return QWidget::eventFilter(watched, event);
 }
@@ -595,6 +617,7 @@ void ExperimentsPanel::retranslateUi() {
     cancel_->setText(tr("Cancel"));
     exportTable_->setText(tr("Export table..."));
     exportFigure_->setText(tr("Export figure..."));
+    figureView_->setToolTip(tr("Click to open the figure large"));
     // The result shown, its headers, caption and figure, in the new language too.
     const QString shownCaption = caption_;
     if (lastTable1_) {
@@ -672,6 +695,42 @@ void ExperimentsPanel::showEnd(int done, int asked, bool cancelled) {
                           : tr("Cancelled after %1: the rows are partial.").arg(duration(took));
         return QStringLiteral("%1 %2").arg(how, caption_);
     });
+}
+
+void ExperimentsPanel::openFigure() {
+    if (!hasFigure_) {
+        return;
+    }
+    // A window of its own, drawn at its size (text at its normal size), never over E-STOP.
+    auto* window = findChild<QDialog*>(QStringLiteral("figureWindow"));
+    if (!window) {
+        window = new QDialog(this);
+        window->setObjectName(QStringLiteral("figureWindow"));
+        auto* picture = new QLabel(window);
+        picture->setObjectName(QStringLiteral("figureLarge"));
+        picture->setAlignment(Qt::AlignCenter);
+        picture->setMinimumSize(320, 240);
+        picture->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+        auto* layout = new QVBoxLayout(window);
+        layout->setContentsMargins(4, 4, 4, 4);
+        layout->addWidget(picture);
+        picture->installEventFilter(this);
+        window->resize(1000, 660);
+    }
+    window->setWindowTitle(caption_);
+    window->show();
+    ModalDialog::placeClear(window);
+    renderLargeFigure();
+}
+
+void ExperimentsPanel::renderLargeFigure() {
+    auto* picture = findChild<QLabel*>(QStringLiteral("figureLarge"));
+    if (!picture || !hasFigure_) {
+        return;
+    }
+    plot::Figure large = figure_;
+    large.size = picture->size().expandedTo(QSize(480, 320));
+    picture->setPixmap(QPixmap::fromImage(plot::renderFigure(large)));
 }
 
 }  // namespace prisca::app

@@ -80,6 +80,9 @@ class ExperimentsPanel : public QWidget {
     void displayCurves(const std::shared_ptr<const std::vector<sim::CurveSummary>>& curves,
                        bool cancelled);
     void showFigure();
+    /// The figure in a window of its own, large (a click on it).
+    void openFigure();
+    void renderLargeFigure();
     /// The experiment under way becomes the one shown, finished now.
     void adoptFinishedRecord();
     /// Writes the result just shown to keptExperimentPath() (a failure is logged, not fatal).

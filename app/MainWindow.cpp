@@ -60,6 +60,7 @@
 #include <QSettings>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTextEdit>
 #include <QTimer>
 #include <QToolBar>
@@ -78,6 +79,8 @@ constexpr int kNoticeMs = 15000;  // what the operator must read, e.g. replaced 
 constexpr int kMaxRecent = 8;
 const char* const kRecentKey = "session/recent";
 const char* const kLastSessionKey = "session/last";  // the session as it was at the last close
+// The operator has dragged a separator between docks (then their sizes are theirs).
+const char* const kOperatorSizedKey = "mainWindow/operatorSizedDocks";
 
 QDockWidget* dock(QMainWindow* window, const QString& name, QWidget* panel, Qt::DockWidgetArea area,
                   bool scrolls = true) {
@@ -171,6 +174,7 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
              available.top() + std::max(0, (available.height() - height()) / 2));
     }
     stateRestored_ = restoreState(settings.value(QLatin1String(kStateKey)).toByteArray());
+    operatorSizedDocks_ = settings.value(QLatin1String(kOperatorSizedKey), false).toBool();
 }
 
 void MainWindow::showEvent(QShowEvent* event) {
@@ -205,8 +209,40 @@ void MainWindow::shareSpace() {
     const int side = std::clamp(width() * 3 / 10, needed, std::max(needed, width() / 2));
     resizeDocks({taskDock_, runDock_}, {side, side}, Qt::Horizontal);
     resizeDocks({chartsDock_}, {height() * 2 / 5}, Qt::Vertical);
-    // The run panel the larger share: its results table should show a whole run of five.
-    resizeDocks({taskDock_, runDock_}, {height() * 2 / 5, height() * 3 / 5}, Qt::Vertical);
+    shareRightColumn();
+}
+
+void MainWindow::shareRightColumn() {
+    // The tab shown on top of the right column gets the height it needs to show whole (the
+    // Mapping panel's Fit B_v and fit table), at least two fifths; the Run panel the rest, never
+    // less than its minimum (its settings and the newest result in view).
+    QDockWidget* top = nullptr;
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_}) {
+        // The tab on top: the only one of the group on screen.
+        if (d->isVisible() && !d->isFloating() && !d->visibleRegion().isEmpty()) {
+            top = d;
+        }
+    }
+    if (!top || runDock_->isFloating() || !runDock_->isVisible()) {
+        return;
+    }
+    const int column = top->height() + runDock_->height();
+    int needed = column * 2 / 5;
+    if (auto* scroll = qobject_cast<QScrollArea*>(top->widget())) {
+        const int chrome = top->height() - scroll->viewport()->height();
+        needed = std::max(needed, scroll->widget()->sizeHint().height() + std::max(chrome, 0));
+    }
+    // What the Run panel leaves (it keeps its minimum: its settings and the newest result);
+    // a panel that cannot show whole anyway (the Controller's long list) scrolls in its share.
+    const int separator = style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
+    const int most = column - runDock_->minimumSizeHint().height() - separator;
+    const int topHeight = needed <= column * 7 / 10 ? std::max(std::min(needed, most), column * 2 / 5)
+                                                    : column * 2 / 5;
+    // (The sizes are weights of what the area has, its tab bar and separator included: the top
+    // is asked a little more, which the Run panel's minimum bounds.)
+    const int slack = fontMetrics().height() * 2;
+    resizeDocks({top, runDock_}, {topHeight + slack, std::max(1, column - topHeight - slack)},
+                Qt::Vertical);
 }
 
 MainWindow::~MainWindow() {
@@ -229,10 +265,14 @@ void MainWindow::noWheelFocus(QWidget* field) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::MouseButtonPress && watched == this) {
+    if (event->type() == QEvent::MouseButtonPress && watched == this &&
+        (cursor().shape() == Qt::SplitVCursor || cursor().shape() == Qt::SplitHCursor)) {
         // A press on the window itself, not on a panel: a separator between docks. From now on
         // the operator sizes the panels.
-        operatorSizedDocks_ = true;
+        if (!operatorSizedDocks_) {
+            operatorSizedDocks_ = true;
+            QSettings().setValue(QLatin1String(kOperatorSizedKey), true);
+        }
         return false;
     }
     if (event->type() == QEvent::Polish) {
@@ -290,6 +330,14 @@ void MainWindow::createPanels() {
     tabifyDockWidget(recordDock_, mappingDock_);
     tabifyDockWidget(mappingDock_, controllerDock_);
     taskDock_->raise();
+    // The tab the operator brings up gets the room it needs (until they size the docks).
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_}) {
+        connect(d, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+            if (visible && isVisible() && !operatorSizedDocks_) {
+                QTimer::singleShot(0, this, &MainWindow::shareRightColumn);
+            }
+        });
+    }
 
     connect(session_, &LabSession::demonstrationChanged, this, &MainWindow::showScene);
     connect(session_, &LabSession::plantChanged, this, &MainWindow::showScene);

@@ -88,6 +88,9 @@ class MainWindow : public QMainWindow {
     void createMenus();
     void createToolBar();
     void shareSpace();
+    /// The right column's height between the tab on top (what it needs to show whole, at least
+    /// two fifths) and the Run panel (never less than its minimum).
+    void shareRightColumn();
     void retranslateUi();
     void createStatusBar();
     /// Stops every job; with `keep`, what finished is saved (the run's log, the experiment's

@@ -51,7 +51,7 @@ MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
       fit_(new QPushButton(this)),
       resultLabel_(new QLabel(this)),
       result_(new QTableWidget(this)),
-      warnings_(new QListWidget(this)) {
+      warnings_(new QLabel(this)) {
     setObjectName(QStringLiteral("mappingPanel"));
     signs_->setObjectName(QStringLiteral("signs"));
     result_->setObjectName(QStringLiteral("fitResult"));
@@ -63,25 +63,39 @@ MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
     response_->setRange(1, 80);
     for (QTableWidget* table : {signs_, result_}) {
         table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-        table->horizontalHeader()->setMinimumSectionSize(36);
+        table->horizontalHeader()->setMinimumSectionSize(30);
         table->setWordWrap(false);
         table->setEditTriggers(QAbstractItemView::NoEditTriggers);
         table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+        // Rows as tall as their text, no scroll bars: the tables show whole at 1280 x 800.
+        table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 4);
+        table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     }
     warnings_->setWordWrap(true);
+    warnings_->setTextFormat(Qt::PlainText);
+    warnings_->setStyleSheet(QStringLiteral("QLabel { color: #9a5600; }"));
     signsLabel_->setWordWrap(true);
-    warnings_->setMaximumHeight(90);
 
-    auto* options = new QFormLayout;
-    options->addRow(latencyLabel_, latency_);
-    options->addRow(responseLabel_, response_);
+    // Compact: the two options on one row, the switches beside Fit B_v (the panel shares the
+    // right column with the Run panel at 1280 x 800).
+    auto* options = new QHBoxLayout;
+    options->addWidget(latencyLabel_);
+    options->addWidget(latency_, 1);
+    options->addSpacing(8);
+    options->addWidget(responseLabel_);
+    options->addWidget(response_, 1);
+    auto* switches = new QHBoxLayout;
+    switches->addWidget(nonNegative_);
+    switches->addWidget(robust_);
+    switches->addStretch(1);
+    switches->addWidget(fit_);
     auto* layout = new QVBoxLayout(this);
+    layout->setSpacing(4);
     layout->addWidget(signsLabel_);
     layout->addWidget(signs_);
     layout->addLayout(options);
-    layout->addWidget(nonNegative_);
-    layout->addWidget(robust_);
-    layout->addWidget(fit_);
+    layout->addLayout(switches);
     layout->addWidget(resultLabel_);
     layout->addWidget(result_);
     layout->addWidget(warnings_);
@@ -99,6 +113,15 @@ MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
     connect(&session_, &LabSession::fitChanged, this, &MappingPanel::showFit);
     retranslateUi();
     showSession();
+}
+
+void MappingPanel::fitToRows(QTableWidget* table) {
+    // Exactly as tall as its header and rows: no empty strip, no scrolling.
+    int height = table->horizontalHeader()->sizeHint().height() + 2 * table->frameWidth();
+    for (int r = 0; r < table->rowCount(); ++r) {
+        height += table->rowHeight(r);
+    }
+    table->setFixedHeight(height);
 }
 
 void MappingPanel::showSession() {
@@ -120,6 +143,7 @@ void MappingPanel::showSession() {
             setSign(l, i, p.mapping.signs(l, i));
         }
     }
+    fitToRows(signs_);
     const core::ActionMappingFitOptions& o = session_.fitOptions();
     latency_->setValue(o.latency);
     response_->setValue(o.responseSteps);
@@ -164,14 +188,15 @@ void MappingPanel::showFit() {
     result_->setRowCount(m + 3);
     // Each state with its unit (B's entries, the residual RMS and the set-aside share are per
     // state), each cell as wide as its number: nothing elided to "0.0...".
+    // Name over unit: six states fit the panel's width without scrolling sideways.
     QStringList columns;
     for (int i = 0; i < n; ++i) {
-        columns << QStringLiteral("%1 [%2]").arg(info.stateNames[i], info.stateUnits.value(i));
+        columns << QStringLiteral("%1\n[%2]").arg(info.stateNames[i], info.stateUnits.value(i));
     }
     result_->setHorizontalHeaderLabels(columns);
     result_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     QStringList rows = info.actionNames;
-    rows << tr("R²") << tr("residual RMS") << tr("set aside");
+    rows << tr("R²") << tr("RMS") << tr("set aside");
     result_->setVerticalHeaderLabels(rows);
     const auto cell = [&](int row, int column, const QString& text, const QString& tip) {
         auto* item = new QTableWidgetItem(text);
@@ -200,8 +225,18 @@ void MappingPanel::showFit() {
         }
     }
     resultLabel_->setText(tr("Fit on %1 samples:").arg(f.samples));
-    warnings_->clear();
-    warnings_->addItems(f.warnings);
+    if (QTableWidgetItem* rms = result_->verticalHeaderItem(m + 1)) {
+        rms->setToolTip(tr("Residual RMS: what the fit leaves unexplained, per state"));
+    }
+    fitToRows(result_);
+    // As wide as its columns: the right column makes room for it rather than scroll sideways.
+    result_->resizeColumnsToContents();
+    int width = result_->verticalHeader()->width() + 2 * result_->frameWidth();
+    for (int c = 0; c < result_->columnCount(); ++c) {
+        width += result_->columnWidth(c);
+    }
+    result_->setMinimumWidth(width);
+    QStringList warnings = f.warnings;
     if (!refittingForLanguage_) {
         for (const QString& warning : f.warnings) {
             logMessage(tr("Mapping"), MessageLevel::Warning, warning);
@@ -215,13 +250,16 @@ void MappingPanel::showFit() {
         }
     }
     if (!below.isEmpty()) {
-        warnings_->addItem(tr("R² below zero for %1: the fit predicts the change of that state "
-                              "worse than its average does. Check those columns' signs in B~ "
-                              "and the latency; a state the controls barely move can also "
-                              "give it.")
-                               .arg(below.join(QStringLiteral(", "))));
+        warnings << tr("R² below zero for %1: the fit predicts the change of that state worse "
+                       "than its average does. Check those columns' signs in B~ and the "
+                       "latency; a state the controls barely move can also give it.")
+                        .arg(below.join(QStringLiteral(", ")));
     }
-    warnings_->setVisible(warnings_->count() > 0);
+    for (QString& warning : warnings) {
+        warning.prepend(QStringLiteral("⚠ "));
+    }
+    warnings_->setText(warnings.join(QLatin1Char('\n')));
+    warnings_->setVisible(!warnings.isEmpty());
 }
 
 void MappingPanel::changeEvent(QEvent* event) {

@@ -5,7 +5,6 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QListWidget;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
@@ -48,7 +47,9 @@ class MappingPanel : public QWidget {
     QPushButton* fit_;
     QLabel* resultLabel_;
     QTableWidget* result_;
-    QListWidget* warnings_;
+    QLabel* warnings_;
+    /// A table exactly as tall as its header and rows.
+    static void fitToRows(QTableWidget* table);  ///< the fit's warnings, one paragraph each, as tall as they need
     bool refittingForLanguage_ = false;
 };
 

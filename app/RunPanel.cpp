@@ -17,6 +17,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -29,6 +30,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTime>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -102,20 +104,33 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency
     exportLog_->setObjectName(QStringLiteral("exportRunLog"));
     exportLog_->setEnabled(false);
     status_->setObjectName(QStringLiteral("runStatus"));
-    status_->setWordWrap(true);
+    // One line, its whole text in the tool tip: the results below keep the height.
+    status_->setWordWrap(false);
+    status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    status_->installEventFilter(this);
     results_->setObjectName(QStringLiteral("trialResults"));
     results_->verticalHeader()->setVisible(false);
     results_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     results_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    results_->setMinimumHeight(60);
+    results_->setMinimumHeight(results_->fontMetrics().height() * 3);  // the header, a row
+    // Rows as tall as their text: five trials and the header in about 140 px.
+    results_->verticalHeader()->setDefaultSectionSize(results_->fontMetrics().height() + 6);
     results_->viewport()->installEventFilter(this);
 
-    auto* form = new QFormLayout;
-    form->addRow(trialsLabel_, trials_);
-    form->addRow(seedLabel_, seed_);
-    form->addRow(perturbationLabel_, perturbation_);
-    form->addRow(sensorLabel_, sensor_);
-    form->addRow(speedLabel_, speed_);
+    // Two settings a row: at 1280 x 800 the results below keep the height for a whole run.
+    auto* form = new QGridLayout;
+    form->addWidget(trialsLabel_, 0, 0);
+    form->addWidget(trials_, 0, 1);
+    form->addWidget(seedLabel_, 0, 2);
+    form->addWidget(seed_, 0, 3);
+    form->addWidget(perturbationLabel_, 1, 0);
+    form->addWidget(perturbation_, 1, 1);
+    form->addWidget(sensorLabel_, 1, 2);
+    form->addWidget(sensor_, 1, 3);
+    form->addWidget(speedLabel_, 2, 0);
+    form->addWidget(speed_, 2, 1, 1, 3);
+    form->setColumnStretch(1, 1);
+    form->setColumnStretch(3, 1);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(status_);
@@ -446,6 +461,13 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
 }
 
 bool RunPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == status_ && event->type() == QEvent::ToolTip) {
+        status_->setToolTip(status_->text());
+    }
+    if (watched == results_->viewport() && event->type() == QEvent::Resize) {
+        // The panel given less room (another tab above it needed more): the newest stays.
+        QTimer::singleShot(0, results_, [table = results_] { table->scrollToBottom(); });
+    }
     if (watched == results_->viewport() && event->type() == QEvent::Wheel) {
         const auto* wheel = static_cast<QWheelEvent*>(event);
         QScrollBar* bar = results_->verticalScrollBar();

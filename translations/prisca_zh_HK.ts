@@ -656,80 +656,90 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="216"/>
+        <location filename="../app/ControllerPanel.cpp" line="33"/>
+        <source>steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="36"/>
+        <source>samples</source>
+        <translation>個樣本</translation>
+    </message>
+    <message>
+        <location filename="../app/ControllerPanel.cpp" line="221"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="217"/>
+        <location filename="../app/ControllerPanel.cpp" line="222"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="218"/>
+        <location filename="../app/ControllerPanel.cpp" line="223"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="220"/>
+        <location filename="../app/ControllerPanel.cpp" line="225"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="231"/>
-        <location filename="../app/ControllerPanel.cpp" line="382"/>
+        <location filename="../app/ControllerPanel.cpp" line="236"/>
+        <location filename="../app/ControllerPanel.cpp" line="387"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="231"/>
-        <location filename="../app/ControllerPanel.cpp" line="382"/>
+        <location filename="../app/ControllerPanel.cpp" line="236"/>
+        <location filename="../app/ControllerPanel.cpp" line="387"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="237"/>
+        <location filename="../app/ControllerPanel.cpp" line="242"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="315"/>
-        <location filename="../app/ControllerPanel.cpp" line="357"/>
+        <location filename="../app/ControllerPanel.cpp" line="320"/>
+        <location filename="../app/ControllerPanel.cpp" line="362"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="331"/>
+        <location filename="../app/ControllerPanel.cpp" line="336"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="345"/>
+        <location filename="../app/ControllerPanel.cpp" line="350"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="391"/>
+        <location filename="../app/ControllerPanel.cpp" line="396"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="415"/>
+        <location filename="../app/ControllerPanel.cpp" line="428"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="416"/>
+        <location filename="../app/ControllerPanel.cpp" line="429"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="417"/>
+        <location filename="../app/ControllerPanel.cpp" line="430"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="392"/>
+        <location filename="../app/ControllerPanel.cpp" line="397"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -763,313 +773,318 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="182"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="189"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="231"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="232"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="311"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="298"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="195"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="217"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="251"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="264"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="414"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="427"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="444"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="202"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="421"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="691"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="196"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
         <source>E-STOP: the experiment stops once the trials under way end; what finished is kept and marked partial.</source>
         <translation>緊急停止：進行中的試驗結束後實驗即停止；已完成的部分會保留並標為不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="310"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="324"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="349"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="356"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="357"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="364"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="363"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="393"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="400"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="394"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="401"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="415"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="428"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="446"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
         <source>The last experiment, cancelled %1 (its rows are partial), is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 取消的實驗（各行不完整）；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="449"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="524"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="546"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="537"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="559"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="546"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="558"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="568"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="580"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="547"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="569"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="563"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="573"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="585"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="595"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="564"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="585"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="607"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="608"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="589"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="590"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="591"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="592"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="594"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="616"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="595"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="617"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="596"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="597"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
+        <source>Click to open the figure large</source>
+        <translation>按一下以大圖打開</translation>
+    </message>
+    <message>
+        <location filename="../app/ExperimentsPanel.cpp" line="644"/>
         <source>%1 s</source>
         <translation>%1 秒</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="624"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="647"/>
         <source>%1 min %2 s</source>
         <translation>%1 分 %2 秒</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="626"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="649"/>
         <source>%1 h %2 min</source>
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="637"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="660"/>
         <source>Starting... %1 so far</source>
         <translation>正在開始……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="639"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
         <source>Run %1 of %2 done</source>
         <translation>已完成第 %1 次運行（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="640"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="663"/>
         <source>Trial %1 of %2 done</source>
         <translation>已完成第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="644"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="667"/>
         <source>about %1 left</source>
         <translation>約剩 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="645"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
         <source>estimating the time left</source>
         <translation>正在估算剩餘時間</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="646"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="669"/>
         <source>%1 · %2 so far · %3</source>
         <translation>%1 · 已用 %2 · %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="649"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="672"/>
         <source>E-STOP: stopping once the trials under way end. %1</source>
         <translation>緊急停止：進行中的試驗結束後即停止。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="651"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="674"/>
         <source>Cancelling: the trials under way finish first. %1</source>
         <translation>正在取消：先完成進行中的試驗。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="685"/>
         <source>Cancelled: %v of %m runs</source>
         <translation>已取消：完成 %v / %m 次運行</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="685"/>
         <source>Cancelled: %v of %m trials</source>
         <translation>已取消：完成 %v / %m 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="670"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="693"/>
         <source>Finished in %1.</source>
         <translation>用時 %1 完成。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="671"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="694"/>
         <source>Stopped by E-STOP after %1: the rows are partial.</source>
         <translation>%1 後被緊急停止：各行不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="672"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="695"/>
         <source>Cancelled after %1: the rows are partial.</source>
         <translation>%1 後已取消：各行不完整。</translation>
     </message>
@@ -1366,156 +1381,156 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="130"/>
+        <location filename="../app/MainWindow.cpp" line="133"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="157"/>
-        <location filename="../app/MainWindow.cpp" line="697"/>
-        <location filename="../app/MainWindow.cpp" line="703"/>
+        <location filename="../app/MainWindow.cpp" line="160"/>
+        <location filename="../app/MainWindow.cpp" line="745"/>
+        <location filename="../app/MainWindow.cpp" line="751"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="160"/>
-        <location filename="../app/MainWindow.cpp" line="618"/>
-        <location filename="../app/MainWindow.cpp" line="626"/>
-        <location filename="../app/MainWindow.cpp" line="628"/>
-        <location filename="../app/MainWindow.cpp" line="642"/>
+        <location filename="../app/MainWindow.cpp" line="163"/>
+        <location filename="../app/MainWindow.cpp" line="666"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="690"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="305"/>
+        <location filename="../app/MainWindow.cpp" line="353"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="362"/>
+        <location filename="../app/MainWindow.cpp" line="410"/>
         <source>the E-STOP button</source>
         <translation>緊急停止按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="366"/>
-        <location filename="../app/MainWindow.cpp" line="484"/>
-        <location filename="../app/MainWindow.cpp" line="488"/>
+        <location filename="../app/MainWindow.cpp" line="414"/>
+        <location filename="../app/MainWindow.cpp" line="532"/>
+        <location filename="../app/MainWindow.cpp" line="536"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="428"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
         <source>The quit was called off; the work goes on.</source>
         <translation>已取消結束；工作繼續。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="435"/>
+        <location filename="../app/MainWindow.cpp" line="483"/>
         <source>Quits when the work under way is done</source>
         <translation>進行中的工作完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="436"/>
+        <location filename="../app/MainWindow.cpp" line="484"/>
         <source>Quits once the work has stopped</source>
         <translation>工作停止後即結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="437"/>
+        <location filename="../app/MainWindow.cpp" line="485"/>
         <source>Don&apos;t quit</source>
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="445"/>
+        <location filename="../app/MainWindow.cpp" line="493"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="448"/>
+        <location filename="../app/MainWindow.cpp" line="496"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="451"/>
+        <location filename="../app/MainWindow.cpp" line="499"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="459"/>
+        <location filename="../app/MainWindow.cpp" line="507"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="462"/>
+        <location filename="../app/MainWindow.cpp" line="510"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="465"/>
+        <location filename="../app/MainWindow.cpp" line="513"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="468"/>
+        <location filename="../app/MainWindow.cpp" line="516"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="471"/>
+        <location filename="../app/MainWindow.cpp" line="519"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="474"/>
+        <location filename="../app/MainWindow.cpp" line="522"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="484"/>
+        <location filename="../app/MainWindow.cpp" line="532"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="517"/>
-        <location filename="../app/MainWindow.cpp" line="610"/>
+        <location filename="../app/MainWindow.cpp" line="565"/>
+        <location filename="../app/MainWindow.cpp" line="658"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="518"/>
+        <location filename="../app/MainWindow.cpp" line="566"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="529"/>
-        <location filename="../app/MainWindow.cpp" line="637"/>
+        <location filename="../app/MainWindow.cpp" line="577"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="530"/>
+        <location filename="../app/MainWindow.cpp" line="578"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="955"/>
+        <location filename="../app/MainWindow.cpp" line="1003"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="577"/>
+        <location filename="../app/MainWindow.cpp" line="625"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="577"/>
-        <location filename="../app/MainWindow.cpp" line="905"/>
-        <location filename="../app/MainWindow.cpp" line="971"/>
-        <location filename="../app/MainWindow.cpp" line="984"/>
-        <location filename="../app/MainWindow.cpp" line="1059"/>
+        <location filename="../app/MainWindow.cpp" line="625"/>
+        <location filename="../app/MainWindow.cpp" line="953"/>
+        <location filename="../app/MainWindow.cpp" line="1019"/>
+        <location filename="../app/MainWindow.cpp" line="1032"/>
+        <location filename="../app/MainWindow.cpp" line="1107"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="611"/>
+        <location filename="../app/MainWindow.cpp" line="659"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1524,338 +1539,338 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="619"/>
+        <location filename="../app/MainWindow.cpp" line="667"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="626"/>
+        <location filename="../app/MainWindow.cpp" line="674"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="628"/>
+        <location filename="../app/MainWindow.cpp" line="676"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="642"/>
+        <location filename="../app/MainWindow.cpp" line="690"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="683"/>
+        <location filename="../app/MainWindow.cpp" line="731"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="684"/>
+        <location filename="../app/MainWindow.cpp" line="732"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="733"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="686"/>
+        <location filename="../app/MainWindow.cpp" line="734"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="687"/>
+        <location filename="../app/MainWindow.cpp" line="735"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="688"/>
+        <location filename="../app/MainWindow.cpp" line="736"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="689"/>
+        <location filename="../app/MainWindow.cpp" line="737"/>
         <source>E-STOP &amp;inputs...</source>
         <translation>緊急停止輸入(&amp;I)……</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="691"/>
+        <location filename="../app/MainWindow.cpp" line="739"/>
         <source>A foot switch&apos;s key and a gamepad button that are E-STOP too</source>
         <translation>同樣觸發緊急停止的腳踏開關按鍵和手掣按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="695"/>
+        <location filename="../app/MainWindow.cpp" line="743"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="696"/>
+        <location filename="../app/MainWindow.cpp" line="744"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="698"/>
+        <location filename="../app/MainWindow.cpp" line="746"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="699"/>
+        <location filename="../app/MainWindow.cpp" line="747"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="700"/>
+        <location filename="../app/MainWindow.cpp" line="748"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="701"/>
+        <location filename="../app/MainWindow.cpp" line="749"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="702"/>
+        <location filename="../app/MainWindow.cpp" line="750"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="704"/>
+        <location filename="../app/MainWindow.cpp" line="752"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="705"/>
+        <location filename="../app/MainWindow.cpp" line="753"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="706"/>
+        <location filename="../app/MainWindow.cpp" line="754"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="707"/>
+        <location filename="../app/MainWindow.cpp" line="755"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="708"/>
+        <location filename="../app/MainWindow.cpp" line="756"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="709"/>
+        <location filename="../app/MainWindow.cpp" line="757"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="710"/>
+        <location filename="../app/MainWindow.cpp" line="758"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="711"/>
+        <location filename="../app/MainWindow.cpp" line="759"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="712"/>
+        <location filename="../app/MainWindow.cpp" line="760"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="714"/>
+        <location filename="../app/MainWindow.cpp" line="762"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="725"/>
+        <location filename="../app/MainWindow.cpp" line="773"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="728"/>
+        <location filename="../app/MainWindow.cpp" line="776"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="733"/>
+        <location filename="../app/MainWindow.cpp" line="781"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="736"/>
+        <location filename="../app/MainWindow.cpp" line="784"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="739"/>
+        <location filename="../app/MainWindow.cpp" line="787"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="897"/>
+        <location filename="../app/MainWindow.cpp" line="945"/>
         <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
         <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="902"/>
+        <location filename="../app/MainWindow.cpp" line="950"/>
         <source>E-STOP (the foot switch&apos;s key)</source>
         <translation>緊急停止（腳踏開關的按鍵）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="905"/>
+        <location filename="../app/MainWindow.cpp" line="953"/>
         <source>Gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="972"/>
+        <location filename="../app/MainWindow.cpp" line="1020"/>
         <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
         <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="985"/>
+        <location filename="../app/MainWindow.cpp" line="1033"/>
         <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
         <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="996"/>
+        <location filename="../app/MainWindow.cpp" line="1044"/>
         <source>E-STOP inputs</source>
         <translation>緊急停止輸入</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="998"/>
+        <location filename="../app/MainWindow.cpp" line="1046"/>
         <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
         <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1008"/>
+        <location filename="../app/MainWindow.cpp" line="1056"/>
         <source>No key</source>
         <translation>不設按鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1015"/>
+        <location filename="../app/MainWindow.cpp" line="1063"/>
         <source>None</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1017"/>
+        <location filename="../app/MainWindow.cpp" line="1065"/>
         <source>B (the red one on most pads)</source>
         <translation>B（大多數手掣上的紅色按鈕）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1018"/>
+        <location filename="../app/MainWindow.cpp" line="1066"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1019"/>
+        <location filename="../app/MainWindow.cpp" line="1067"/>
         <source>X</source>
         <translation>X</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1020"/>
+        <location filename="../app/MainWindow.cpp" line="1068"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1021"/>
+        <location filename="../app/MainWindow.cpp" line="1069"/>
         <source>Back / Select</source>
         <translation>Back / Select</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1022"/>
+        <location filename="../app/MainWindow.cpp" line="1070"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1023"/>
+        <location filename="../app/MainWindow.cpp" line="1071"/>
         <source>Left shoulder</source>
         <translation>左肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1024"/>
+        <location filename="../app/MainWindow.cpp" line="1072"/>
         <source>Right shoulder</source>
         <translation>右肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1025"/>
+        <location filename="../app/MainWindow.cpp" line="1073"/>
         <source>Paddle 1</source>
         <translation>背鍵 1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1031"/>
+        <location filename="../app/MainWindow.cpp" line="1079"/>
         <source>A gamepad is connected.</source>
         <translation>已連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1032"/>
+        <location filename="../app/MainWindow.cpp" line="1080"/>
         <source>No gamepad is connected now.</source>
         <translation>目前沒有連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1035"/>
+        <location filename="../app/MainWindow.cpp" line="1083"/>
         <source>Foot switch key:</source>
         <translation>腳踏開關按鍵：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1036"/>
+        <location filename="../app/MainWindow.cpp" line="1084"/>
         <source>Gamepad button:</source>
         <translation>手掣按鈕：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1060"/>
+        <location filename="../app/MainWindow.cpp" line="1108"/>
         <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
         <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1062"/>
+        <location filename="../app/MainWindow.cpp" line="1110"/>
         <source>, the key %1</source>
         <translation>、按鍵 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1063"/>
+        <location filename="../app/MainWindow.cpp" line="1111"/>
         <source>, gamepad button %1</source>
         <translation>、手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="428"/>
-        <location filename="../app/MainWindow.cpp" line="761"/>
-        <location filename="../app/MainWindow.cpp" line="782"/>
-        <location filename="../app/MainWindow.cpp" line="784"/>
-        <location filename="../app/MainWindow.cpp" line="791"/>
-        <location filename="../app/MainWindow.cpp" line="794"/>
-        <location filename="../app/MainWindow.cpp" line="827"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
+        <location filename="../app/MainWindow.cpp" line="809"/>
+        <location filename="../app/MainWindow.cpp" line="830"/>
+        <location filename="../app/MainWindow.cpp" line="832"/>
+        <location filename="../app/MainWindow.cpp" line="839"/>
+        <location filename="../app/MainWindow.cpp" line="842"/>
+        <location filename="../app/MainWindow.cpp" line="875"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="762"/>
+        <location filename="../app/MainWindow.cpp" line="810"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="763"/>
+        <location filename="../app/MainWindow.cpp" line="811"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="782"/>
+        <location filename="../app/MainWindow.cpp" line="830"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="792"/>
+        <location filename="../app/MainWindow.cpp" line="840"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="805"/>
+        <location filename="../app/MainWindow.cpp" line="853"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="806"/>
+        <location filename="../app/MainWindow.cpp" line="854"/>
         <source>Work is under way:
 
 %1
@@ -1868,93 +1883,93 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="811"/>
+        <location filename="../app/MainWindow.cpp" line="859"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="813"/>
+        <location filename="../app/MainWindow.cpp" line="861"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="814"/>
+        <location filename="../app/MainWindow.cpp" line="862"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="815"/>
+        <location filename="../app/MainWindow.cpp" line="863"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="827"/>
+        <location filename="../app/MainWindow.cpp" line="875"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="859"/>
+        <location filename="../app/MainWindow.cpp" line="907"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="859"/>
+        <location filename="../app/MainWindow.cpp" line="907"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="871"/>
+        <location filename="../app/MainWindow.cpp" line="919"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="873"/>
+        <location filename="../app/MainWindow.cpp" line="921"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="877"/>
+        <location filename="../app/MainWindow.cpp" line="925"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="880"/>
+        <location filename="../app/MainWindow.cpp" line="928"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="896"/>
+        <location filename="../app/MainWindow.cpp" line="944"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="911"/>
+        <location filename="../app/MainWindow.cpp" line="959"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="912"/>
+        <location filename="../app/MainWindow.cpp" line="960"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="914"/>
+        <location filename="../app/MainWindow.cpp" line="962"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="921"/>
+        <location filename="../app/MainWindow.cpp" line="969"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="930"/>
-        <location filename="../app/MainWindow.cpp" line="936"/>
+        <location filename="../app/MainWindow.cpp" line="978"/>
+        <location filename="../app/MainWindow.cpp" line="984"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="930"/>
+        <location filename="../app/MainWindow.cpp" line="978"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -1962,118 +1977,123 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="116"/>
+        <location filename="../app/MappingPanel.cpp" line="139"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="174"/>
+        <location filename="../app/MappingPanel.cpp" line="199"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="174"/>
-        <source>residual RMS</source>
-        <translation>殘差 RMS</translation>
-    </message>
-    <message>
-        <location filename="../app/MappingPanel.cpp" line="174"/>
+        <location filename="../app/MappingPanel.cpp" line="199"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="186"/>
+        <location filename="../app/MappingPanel.cpp" line="199"/>
+        <source>RMS</source>
+        <translation>均方根</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="211"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="192"/>
+        <location filename="../app/MappingPanel.cpp" line="217"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="194"/>
+        <location filename="../app/MappingPanel.cpp" line="219"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="199"/>
+        <location filename="../app/MappingPanel.cpp" line="224"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="202"/>
+        <location filename="../app/MappingPanel.cpp" line="227"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="207"/>
+        <location filename="../app/MappingPanel.cpp" line="229"/>
+        <source>Residual RMS: what the fit leaves unexplained, per state</source>
+        <translation>殘差均方根：擬合未能解釋的部分，按狀態計</translation>
+    </message>
+    <message>
+        <location filename="../app/MappingPanel.cpp" line="242"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="218"/>
+        <location filename="../app/MappingPanel.cpp" line="253"/>
         <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="240"/>
+        <location filename="../app/MappingPanel.cpp" line="278"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="241"/>
+        <location filename="../app/MappingPanel.cpp" line="279"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="242"/>
-        <location filename="../app/MappingPanel.cpp" line="247"/>
+        <location filename="../app/MappingPanel.cpp" line="280"/>
+        <location filename="../app/MappingPanel.cpp" line="285"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="244"/>
+        <location filename="../app/MappingPanel.cpp" line="282"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="246"/>
+        <location filename="../app/MappingPanel.cpp" line="284"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="249"/>
+        <location filename="../app/MappingPanel.cpp" line="287"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="251"/>
+        <location filename="../app/MappingPanel.cpp" line="289"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="252"/>
+        <location filename="../app/MappingPanel.cpp" line="290"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="253"/>
+        <location filename="../app/MappingPanel.cpp" line="291"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="255"/>
+        <location filename="../app/MappingPanel.cpp" line="293"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="257"/>
+        <location filename="../app/MappingPanel.cpp" line="295"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="258"/>
+        <location filename="../app/MappingPanel.cpp" line="296"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -3108,316 +3128,316 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="168"/>
-        <location filename="../app/RunPanel.cpp" line="178"/>
+        <location filename="../app/RunPanel.cpp" line="183"/>
+        <location filename="../app/RunPanel.cpp" line="193"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="169"/>
+        <location filename="../app/RunPanel.cpp" line="184"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="183"/>
+        <location filename="../app/RunPanel.cpp" line="198"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="345"/>
+        <location filename="../app/RunPanel.cpp" line="360"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="388"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="388"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="286"/>
+        <location filename="../app/RunPanel.cpp" line="301"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="196"/>
+        <location filename="../app/RunPanel.cpp" line="211"/>
         <source>the Run menu</source>
         <translation>「運行」選單</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="213"/>
+        <location filename="../app/RunPanel.cpp" line="228"/>
         <source>Trial %1 of %2 running...</source>
         <translation>正在進行第 %1 次試驗（共 %2 次）……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="218"/>
+        <location filename="../app/RunPanel.cpp" line="233"/>
         <source>Training before the run: %1 of %2...</source>
         <translation>運行前訓練：%1 / %2……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="219"/>
-        <location filename="../app/RunPanel.cpp" line="378"/>
+        <location filename="../app/RunPanel.cpp" line="234"/>
+        <location filename="../app/RunPanel.cpp" line="393"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/RunPanel.cpp" line="226"/>
+        <location filename="../app/RunPanel.cpp" line="241"/>
         <source>Run finished: %n trial(s).</source>
         <translation>
             <numerusform>運行完成：%n 次試驗。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="267"/>
+        <location filename="../app/RunPanel.cpp" line="282"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="273"/>
+        <location filename="../app/RunPanel.cpp" line="288"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="382"/>
+        <location filename="../app/RunPanel.cpp" line="397"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="390"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="422"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="414"/>
+        <location filename="../app/RunPanel.cpp" line="429"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="415"/>
+        <location filename="../app/RunPanel.cpp" line="430"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="430"/>
+        <location filename="../app/RunPanel.cpp" line="445"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="439"/>
+        <location filename="../app/RunPanel.cpp" line="454"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="467"/>
+        <location filename="../app/RunPanel.cpp" line="489"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="468"/>
+        <location filename="../app/RunPanel.cpp" line="490"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="469"/>
+        <location filename="../app/RunPanel.cpp" line="491"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="471"/>
+        <location filename="../app/RunPanel.cpp" line="493"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="473"/>
+        <location filename="../app/RunPanel.cpp" line="495"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="475"/>
+        <location filename="../app/RunPanel.cpp" line="497"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="477"/>
+        <location filename="../app/RunPanel.cpp" line="499"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="479"/>
+        <location filename="../app/RunPanel.cpp" line="501"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="481"/>
+        <location filename="../app/RunPanel.cpp" line="503"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="482"/>
+        <location filename="../app/RunPanel.cpp" line="504"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="483"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="484"/>
+        <location filename="../app/RunPanel.cpp" line="506"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="494"/>
+        <location filename="../app/RunPanel.cpp" line="516"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="387"/>
+        <location filename="../app/RunPanel.cpp" line="402"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="182"/>
-        <location filename="../app/RunPanel.cpp" line="212"/>
-        <location filename="../app/RunPanel.cpp" line="225"/>
-        <location filename="../app/RunPanel.cpp" line="266"/>
-        <location filename="../app/RunPanel.cpp" line="272"/>
-        <location filename="../app/RunPanel.cpp" line="285"/>
-        <location filename="../app/RunPanel.cpp" line="296"/>
-        <location filename="../app/RunPanel.cpp" line="332"/>
-        <location filename="../app/RunPanel.cpp" line="378"/>
-        <location filename="../app/RunPanel.cpp" line="382"/>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="197"/>
+        <location filename="../app/RunPanel.cpp" line="227"/>
+        <location filename="../app/RunPanel.cpp" line="240"/>
+        <location filename="../app/RunPanel.cpp" line="281"/>
+        <location filename="../app/RunPanel.cpp" line="287"/>
+        <location filename="../app/RunPanel.cpp" line="300"/>
+        <location filename="../app/RunPanel.cpp" line="311"/>
+        <location filename="../app/RunPanel.cpp" line="347"/>
+        <location filename="../app/RunPanel.cpp" line="393"/>
+        <location filename="../app/RunPanel.cpp" line="397"/>
+        <location filename="../app/RunPanel.cpp" line="437"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="333"/>
+        <location filename="../app/RunPanel.cpp" line="348"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="389"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="421"/>
+        <location filename="../app/RunPanel.cpp" line="436"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="423"/>
+        <location filename="../app/RunPanel.cpp" line="438"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="428"/>
+        <location filename="../app/RunPanel.cpp" line="443"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="431"/>
+        <location filename="../app/RunPanel.cpp" line="446"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="486"/>
+        <location filename="../app/RunPanel.cpp" line="508"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="488"/>
+        <location filename="../app/RunPanel.cpp" line="510"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="491"/>
+        <location filename="../app/RunPanel.cpp" line="513"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="492"/>
+        <location filename="../app/RunPanel.cpp" line="514"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="496"/>
+        <location filename="../app/RunPanel.cpp" line="518"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="497"/>
+        <location filename="../app/RunPanel.cpp" line="519"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="498"/>
+        <location filename="../app/RunPanel.cpp" line="520"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="500"/>
+        <location filename="../app/RunPanel.cpp" line="522"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="501"/>
+        <location filename="../app/RunPanel.cpp" line="523"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="504"/>
+        <location filename="../app/RunPanel.cpp" line="526"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="504"/>
+        <location filename="../app/RunPanel.cpp" line="526"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="504"/>
+        <location filename="../app/RunPanel.cpp" line="526"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/RunPanel.cpp" line="527"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/RunPanel.cpp" line="527"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="507"/>
+        <location filename="../app/RunPanel.cpp" line="529"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="507"/>
+        <location filename="../app/RunPanel.cpp" line="529"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="508"/>
+        <location filename="../app/RunPanel.cpp" line="530"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="508"/>
+        <location filename="../app/RunPanel.cpp" line="530"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>

@@ -109,14 +109,13 @@ class TestGuiRecord : public QObject {
         QCOMPARE(w.window.session().profile().mapping.signs(1, 2), -1);
         QCOMPARE(w.window.session().fit().b(1, 2), 0.0);  // B_v >= 0 keeps B~'s sign: set to 0
         QCOMPARE(result->item(1, 2)->text(), QStringLiteral("·"));
-        auto* warnings = w.find<QListWidget>("fitWarnings");
-        QVERIFY(warnings->count() >= 1);
+        auto* warnings = w.find<QLabel>("fitWarnings");
+        QVERIFY(warnings->isVisible());
         bool named = false;
-        for (int i = 0; i < warnings->count(); ++i) {
-            named |= warnings->item(i)->text().contains("steering") &&
-                     warnings->item(i)->text().contains("psi");
+        for (const QString& line : warnings->text().split(QLatin1Char('\n'))) {
+            named |= line.contains("steering") && line.contains("psi");
         }
-        QVERIFY(named);
+        QVERIFY2(named, qPrintable(warnings->text()));
         // Back to +1 through the panel's setter and the fit returns.
         panel->setSign(1, 2, 1);
         panel->fit();

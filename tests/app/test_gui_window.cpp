@@ -264,14 +264,8 @@ class TestGuiWindow : public QObject {
         auto demo = std::make_shared<prisca::core::Demonstration>(*w.window.session().demonstration());
         demo->actions.col(1).setConstant(0.0);
         w.window.session().setDemonstration(demo, QStringLiteral("held-steering.csv"));
-        auto* warnings = w.find<QListWidget>("fitWarnings");
-        const auto shown = [&] {
-            QStringList lines;
-            for (int i = 0; i < warnings->count(); ++i) {
-                lines << warnings->item(i)->text();
-            }
-            return lines.join(QLatin1Char('\n'));
-        };
+        auto* warnings = w.find<QLabel>("fitWarnings");
+        const auto shown = [&] { return warnings->text(); };
         QVERIFY2(shown().contains(QLatin1String("never changed")), qPrintable(shown()));
         // ... and the message log has it, once.
         const auto logged = [&] {
@@ -516,6 +510,34 @@ class TestGuiWindow : public QObject {
                                         .arg(scroll->viewport()->width())
                                         .arg(tooWide())));
         }
+    }
+
+    void layout_at1280x800ShowsTheWholeMappingTabAndTheNewestRunResult() {
+        Window w;
+        w.setSpeedIndex(2);
+        w.find<QSpinBox>("trials")->setValue(6);
+        w.find<RunPanel>("runPanel")->startRun();
+        QTRY_COMPARE_WITH_TIMEOUT(w.results()->rowCount(), 6, kRunTimeoutMs);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        // The Mapping tab brought up: Fit B_v, the whole fit table and its warnings in view, no
+        // sideways scrolling; the Run panel keeps its newest result in view.
+        dockOf(w, "mappingDock")->raise();
+        auto* fit = w.find<QTableWidget>("fitResult");
+        QTRY_VERIFY2(wholeInView(fit), "the fit table");
+        QVERIFY(wholeInView(w.find<QPushButton>("fitButton")));
+        auto* warnings = w.find<QLabel>("fitWarnings");
+        QVERIFY(!warnings->isVisible() || wholeInView(warnings));
+        auto* scroll = qobject_cast<QScrollArea*>(dockOf(w, "mappingDock")->widget());
+        QVERIFY(scroll && !scroll->horizontalScrollBar()->isVisible());
+        QTableWidget* results = w.results();
+        QTRY_VERIFY(results->visualItemRect(results->item(5, 0)).bottom() <=
+                    results->viewport()->height());
+        QVERIFY(results->visualItemRect(results->item(5, 0)).top() >= 0);
+        // Back on the Task tab, the Run panel shows the whole run again.
+        dockOf(w, "taskDock")->raise();
+        QTRY_VERIFY(results->visualItemRect(results->item(1, 0)).top() >= 0 &&
+                    results->visualItemRect(results->item(5, 0)).bottom() <=
+                        results->viewport()->height());
     }
 
     void layout_at1280x800ShowsTableIsRowsAndEveryColumn() {
