@@ -1,5 +1,7 @@
 #include "app/ControllerPanel.h"
 
+#include "app/PlantText.h"
+
 #include "app/MessageLog.h"
 
 #include "app/LabSession.h"
@@ -162,7 +164,7 @@ void ControllerPanel::buildEditors() {
             boxes->setContentsMargins(0, 0, 0, 0);
             for (size_t l = 0; l < editor.fields.size(); ++l) {
                 const int line = static_cast<int>(l);
-                boxes->addWidget(new QLabel(info.actionNames.value(line), row), line, 0);
+                boxes->addWidget(new QLabel(controlName(info.actionNames.value(line)), row), line, 0);
                 QWidget* field = editor.fields[l];
                 field->setParent(row);
                 // The width the row has, not that of the range's largest number.
@@ -207,7 +209,7 @@ void ControllerPanel::showSession() {
     features_->clear();
     features_->setRowCount(m);
     features_->setColumnCount(count);
-    features_->setVerticalHeaderLabels(p.info.actionNames);
+    features_->setVerticalHeaderLabels(controlNames(p.info.actionNames));
     QStringList columns;
     for (int j = 0; j < count; ++j) {
         columns << QStringLiteral("φ%1").arg(j);
@@ -224,7 +226,7 @@ void ControllerPanel::showSession() {
             auto* item = new QTableWidgetItem(QString::number(term.scale, 'g', 6));
             item->setToolTip(tr("Scale of φ%1 of %2: %3 (Algorithm 1, line 3)")
                                  .arg(j)
-                                 .arg(p.info.actionNames[l], what));
+                                 .arg(controlName(p.info.actionNames[l]), what));
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             features_->setItem(l, j, item);
         }
@@ -232,7 +234,7 @@ void ControllerPanel::showSession() {
     limits_->clear();
     limits_->setRowCount(m);
     limits_->setColumnCount(2);
-    limits_->setVerticalHeaderLabels(p.info.actionNames);
+    limits_->setVerticalHeaderLabels(controlNames(p.info.actionNames));
     limits_->setHorizontalHeaderLabels({tr("lower"), tr("upper")});
     for (int l = 0; l < m; ++l) {
         for (int side = 0; side < 2; ++side) {
@@ -240,7 +242,7 @@ void ControllerPanel::showSession() {
             auto* item = new QTableWidgetItem(QString::number(v, 'g', 6));
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             item->setToolTip(tr("The controller saturates %1 to this [%2]")
-                                 .arg(p.info.actionNames[l], p.info.actionUnits[l]));
+                                 .arg(controlName(p.info.actionNames[l]), p.info.actionUnits[l]));
             limits_->setItem(l, side, item);
         }
     }
@@ -333,7 +335,7 @@ void ControllerPanel::apply() {
                 features_->item(l, j) ? features_->item(l, j)->text().toDouble(&ok) : 0.0;
             if (!ok || !std::isfinite(v)) {
                 problem =
-                    tr("Feature φ%1 of %2 must be a number.").arg(j).arg(p.info.actionNames[l]);
+                    tr("Feature φ%1 of %2 must be a number.").arg(j).arg(controlName(p.info.actionNames[l]));
             } else {
                 terms[l][j].scale = v;
             }
@@ -348,7 +350,7 @@ void ControllerPanel::apply() {
         if (!okLow || !okHigh || !(low < high) || low < physical.actionLower[l] ||
             high > physical.actionUpper[l]) {
             problem = tr("Limits of %1 must be numbers with lower < upper, within [%2, %3].")
-                          .arg(p.info.actionNames[l])
+                          .arg(controlName(p.info.actionNames[l]))
                           .arg(physical.actionLower[l])
                           .arg(physical.actionUpper[l]);
         } else {

@@ -1,5 +1,7 @@
 #include "app/LiveChartsPanel.h"
 
+#include "app/PlantText.h"
+
 #include "app/ModalDialog.h"
 
 #include "app/MessageLog.h"
@@ -215,7 +217,7 @@ void LiveChartsPanel::setPlant(const sim::PlantInfo& info, int parameterCount) {
         auto* s = new QLineSeries;
         s->setName(QStringLiteral("θ%1 %2")
                        .arg(i % std::max(1, perChannel))
-                       .arg(info.actionNames.value(perChannel > 0 ? i / perChannel : 0)));
+                       .arg(controlName(info.actionNames.value(perChannel > 0 ? i / perChannel : 0))));
         s->setPen(QPen(palette[i % 8], 1.5));
         thetaChart_->addSeries(s);
         attachAxes(thetaChart_, s);
@@ -223,10 +225,10 @@ void LiveChartsPanel::setPlant(const sim::PlantInfo& info, int parameterCount) {
     }
     for (int l = 0; l < m; ++l) {
         auto* u = new QLineSeries;
-        u->setName(QStringLiteral("u %1").arg(info.actionNames[l]));
+        u->setName(QStringLiteral("u %1").arg(controlName(info.actionNames[l])));
         u->setPen(QPen(palette[l % 8], 1.5));
         auto* ref = new QLineSeries;
-        ref->setName(QStringLiteral("u* %1").arg(info.actionNames[l]));
+        ref->setName(QStringLiteral("u* %1").arg(controlName(info.actionNames[l])));
         ref->setPen(QPen(palette[l % 8], 1.0, Qt::DashLine));
         actionChart_->addSeries(u);
         actionChart_->addSeries(ref);
@@ -397,7 +399,7 @@ QString LiveChartsPanel::readoutAt(double t) const {
         for (int l = 0; l < action_.size(); ++l) {
             if (k < action_[l].size()) {
                 lines << tr("%1: u %2, u* %3 %4")
-                             .arg(info_.actionNames.value(l))
+                             .arg(controlName(info_.actionNames.value(l)))
                              .arg(action_[l][k].y(), 0, 'g', 4)
                              .arg(reference_[l][k].y(), 0, 'g', 4)
                              .arg(info_.actionUnits.value(l));

@@ -1,5 +1,7 @@
 #include "app/MappingPanel.h"
 
+#include "app/PlantText.h"
+
 #include "app/MessageLog.h"
 
 #include "app/LabSession.h"
@@ -131,14 +133,14 @@ void MappingPanel::showSession() {
     signs_->setRowCount(m);
     signs_->setColumnCount(n);
     signs_->setHorizontalHeaderLabels(p.info.stateNames);
-    signs_->setVerticalHeaderLabels(p.info.actionNames);
+    signs_->setVerticalHeaderLabels(controlNames(p.info.actionNames));
     for (int l = 0; l < m; ++l) {
         for (int i = 0; i < n; ++i) {
             auto* item = new QTableWidgetItem;
             item->setTextAlignment(Qt::AlignCenter);
             item->setToolTip(tr("Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not "
                                 "at all (B~, eq. 6). Click to change.")
-                                 .arg(p.info.actionNames[l], p.info.stateNames[i]));
+                                 .arg(controlName(p.info.actionNames[l]), p.info.stateNames[i]));
             signs_->setItem(l, i, item);
             setSign(l, i, p.mapping.signs(l, i));
         }
@@ -195,7 +197,7 @@ void MappingPanel::showFit() {
     }
     result_->setHorizontalHeaderLabels(columns);
     result_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    QStringList rows = info.actionNames;
+    QStringList rows = controlNames(info.actionNames);
     rows << tr("R²") << tr("RMS") << tr("set aside");
     result_->setVerticalHeaderLabels(rows);
     const auto cell = [&](int row, int column, const QString& text, const QString& tip) {
@@ -209,7 +211,7 @@ void MappingPanel::showFit() {
         for (int l = 0; l < m && f.b.rows() == m; ++l) {
             cell(l, i, f.b(l, i) == 0.0 ? QStringLiteral("·") : number(f.b(l, i)),
                  tr("B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]")
-                         .arg(info.actionNames[l], info.stateNames[i], info.stateUnits[i]) +
+                         .arg(controlName(info.actionNames[l]), info.stateNames[i], info.stateUnits[i]) +
                      QStringLiteral(": %1").arg(f.b(l, i), 0, 'g', 6));
         }
         if (f.rSquared.size() == n) {

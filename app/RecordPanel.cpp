@@ -1,5 +1,7 @@
 #include "app/RecordPanel.h"
 
+#include "app/PlantText.h"
+
 #include "app/MessageLog.h"
 
 #include "app/DrivingInput.h"
@@ -207,7 +209,7 @@ void RecordPanel::tick() {
         QStringList commands;
         for (Eigen::Index l = 0; l < scaled.size(); ++l) {
             commands << QStringLiteral("%1 %2")
-                            .arg(info.actionNames.value(static_cast<int>(l)))
+                            .arg(controlName(info.actionNames.value(static_cast<int>(l))))
                             .arg(scaled[l], 0, 'f', 2);
         }
         QString text = tr("Recording %1 s: %2. Press Stop when done.")
@@ -353,7 +355,7 @@ void RecordPanel::changeEvent(QEvent* event) {
 }
 
 void RecordPanel::retranslateUi() {
-    const QStringList names = session_.profile().info.actionNames;
+    const QStringList names = controlNames(session_.profile().info.actionNames);
     keys_->setText(tr("Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is "
                       "E-STOP.")
                        .arg(names.value(0), names.value(1)));

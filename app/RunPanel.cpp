@@ -238,7 +238,8 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency
         finishedSeen_ = true;
         const int trials = results_->rowCount();
         showStatus(status_, tr("Run"), [this, trials] {
-            return tr("Run finished: %n trial(s).", nullptr, trials);
+            return trials == 1 ? tr("Run finished: 1 trial.")
+                               : tr("Run finished: %1 trials.").arg(trials);
         });
     });
     connect(&run_, &RunThread::failed, status_, &QLabel::setText);

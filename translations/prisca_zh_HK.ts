@@ -496,6 +496,34 @@
     </message>
 </context>
 <context>
+    <name>PlantControl</name>
+    <message>
+        <location filename="../app/PlantText.cpp" line="10"/>
+        <source>throttle</source>
+        <translation>油門</translation>
+    </message>
+    <message>
+        <location filename="../app/PlantText.cpp" line="11"/>
+        <source>steering</source>
+        <translation>轉向</translation>
+    </message>
+    <message>
+        <location filename="../app/PlantText.cpp" line="12"/>
+        <source>rudder</source>
+        <translation>方向舵</translation>
+    </message>
+    <message>
+        <location filename="../app/PlantText.cpp" line="13"/>
+        <source>left wheel</source>
+        <translation>左輪</translation>
+    </message>
+    <message>
+        <location filename="../app/PlantText.cpp" line="14"/>
+        <source>right wheel</source>
+        <translation>右輪</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::ArenaView</name>
     <message>
         <location filename="../app/ArenaView.cpp" line="241"/>
@@ -656,90 +684,90 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="33"/>
+        <location filename="../app/ControllerPanel.cpp" line="35"/>
         <source>steps</source>
         <translation>步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="36"/>
+        <location filename="../app/ControllerPanel.cpp" line="38"/>
         <source>samples</source>
         <translation>個樣本</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="221"/>
+        <location filename="../app/ControllerPanel.cpp" line="223"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="222"/>
+        <location filename="../app/ControllerPanel.cpp" line="224"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="223"/>
+        <location filename="../app/ControllerPanel.cpp" line="225"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="225"/>
+        <location filename="../app/ControllerPanel.cpp" line="227"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="236"/>
-        <location filename="../app/ControllerPanel.cpp" line="387"/>
+        <location filename="../app/ControllerPanel.cpp" line="238"/>
+        <location filename="../app/ControllerPanel.cpp" line="389"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="236"/>
-        <location filename="../app/ControllerPanel.cpp" line="387"/>
+        <location filename="../app/ControllerPanel.cpp" line="238"/>
+        <location filename="../app/ControllerPanel.cpp" line="389"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="242"/>
+        <location filename="../app/ControllerPanel.cpp" line="244"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="320"/>
-        <location filename="../app/ControllerPanel.cpp" line="362"/>
+        <location filename="../app/ControllerPanel.cpp" line="322"/>
+        <location filename="../app/ControllerPanel.cpp" line="364"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="336"/>
+        <location filename="../app/ControllerPanel.cpp" line="338"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="350"/>
+        <location filename="../app/ControllerPanel.cpp" line="352"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="396"/>
+        <location filename="../app/ControllerPanel.cpp" line="398"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="428"/>
+        <location filename="../app/ControllerPanel.cpp" line="430"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="429"/>
+        <location filename="../app/ControllerPanel.cpp" line="431"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="430"/>
+        <location filename="../app/ControllerPanel.cpp" line="432"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="397"/>
+        <location filename="../app/ControllerPanel.cpp" line="399"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -1256,124 +1284,124 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="381"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="383"/>
         <source>Trial %1, run time %2 s</source>
         <translation>試驗 %1，運行時間 %2 s</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="386"/>
         <source>error %1 %2, smoothed %3 %2</source>
         <translation>誤差 %1 %2，平滑後 %3 %2</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="399"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="401"/>
         <source>%1: u %2, u* %3 %4</source>
         <translation>%1：u %2，u* %3 %4</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="530"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="532"/>
         <source>cannot encode the picture for %1</source>
         <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="553"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="558"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="555"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="560"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="554"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="556"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="564"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="569"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="566"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="571"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="565"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="567"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="582"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="583"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="586"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="586"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="588"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="589"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="594"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="599"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="600"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="599"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="601"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="600"/>
+        <location filename="../app/LiveChartsPanel.cpp" line="602"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1977,123 +2005,123 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="139"/>
+        <location filename="../app/MappingPanel.cpp" line="141"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="199"/>
+        <location filename="../app/MappingPanel.cpp" line="201"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="199"/>
+        <location filename="../app/MappingPanel.cpp" line="201"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="199"/>
+        <location filename="../app/MappingPanel.cpp" line="201"/>
         <source>RMS</source>
         <translation>均方根</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="211"/>
+        <location filename="../app/MappingPanel.cpp" line="213"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="217"/>
+        <location filename="../app/MappingPanel.cpp" line="219"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="219"/>
+        <location filename="../app/MappingPanel.cpp" line="221"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="224"/>
+        <location filename="../app/MappingPanel.cpp" line="226"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="227"/>
+        <location filename="../app/MappingPanel.cpp" line="229"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="229"/>
+        <location filename="../app/MappingPanel.cpp" line="231"/>
         <source>Residual RMS: what the fit leaves unexplained, per state</source>
         <translation>殘差均方根：擬合未能解釋的部分，按狀態計</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="242"/>
+        <location filename="../app/MappingPanel.cpp" line="244"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="253"/>
+        <location filename="../app/MappingPanel.cpp" line="255"/>
         <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="278"/>
+        <location filename="../app/MappingPanel.cpp" line="280"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="279"/>
+        <location filename="../app/MappingPanel.cpp" line="281"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="280"/>
-        <location filename="../app/MappingPanel.cpp" line="285"/>
+        <location filename="../app/MappingPanel.cpp" line="282"/>
+        <location filename="../app/MappingPanel.cpp" line="287"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="282"/>
+        <location filename="../app/MappingPanel.cpp" line="284"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="284"/>
+        <location filename="../app/MappingPanel.cpp" line="286"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="287"/>
+        <location filename="../app/MappingPanel.cpp" line="289"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="289"/>
+        <location filename="../app/MappingPanel.cpp" line="291"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="290"/>
+        <location filename="../app/MappingPanel.cpp" line="292"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="291"/>
+        <location filename="../app/MappingPanel.cpp" line="293"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="293"/>
+        <location filename="../app/MappingPanel.cpp" line="295"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="295"/>
+        <location filename="../app/MappingPanel.cpp" line="297"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="296"/>
+        <location filename="../app/MappingPanel.cpp" line="298"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -2177,144 +2205,144 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="97"/>
-        <location filename="../app/RecordPanel.cpp" line="141"/>
-        <location filename="../app/RecordPanel.cpp" line="170"/>
-        <location filename="../app/RecordPanel.cpp" line="176"/>
-        <location filename="../app/RecordPanel.cpp" line="229"/>
-        <location filename="../app/RecordPanel.cpp" line="259"/>
-        <location filename="../app/RecordPanel.cpp" line="271"/>
-        <location filename="../app/RecordPanel.cpp" line="286"/>
-        <location filename="../app/RecordPanel.cpp" line="294"/>
-        <location filename="../app/RecordPanel.cpp" line="322"/>
-        <location filename="../app/RecordPanel.cpp" line="333"/>
-        <location filename="../app/RecordPanel.cpp" line="367"/>
+        <location filename="../app/RecordPanel.cpp" line="99"/>
+        <location filename="../app/RecordPanel.cpp" line="143"/>
+        <location filename="../app/RecordPanel.cpp" line="172"/>
+        <location filename="../app/RecordPanel.cpp" line="178"/>
+        <location filename="../app/RecordPanel.cpp" line="231"/>
+        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="273"/>
+        <location filename="../app/RecordPanel.cpp" line="288"/>
+        <location filename="../app/RecordPanel.cpp" line="296"/>
+        <location filename="../app/RecordPanel.cpp" line="324"/>
+        <location filename="../app/RecordPanel.cpp" line="335"/>
+        <location filename="../app/RecordPanel.cpp" line="369"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="170"/>
+        <location filename="../app/RecordPanel.cpp" line="172"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="177"/>
+        <location filename="../app/RecordPanel.cpp" line="179"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="213"/>
+        <location filename="../app/RecordPanel.cpp" line="215"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="218"/>
+        <location filename="../app/RecordPanel.cpp" line="220"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="229"/>
+        <location filename="../app/RecordPanel.cpp" line="231"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="261"/>
+        <location filename="../app/RecordPanel.cpp" line="263"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="262"/>
+        <location filename="../app/RecordPanel.cpp" line="264"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="272"/>
+        <location filename="../app/RecordPanel.cpp" line="274"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="273"/>
+        <location filename="../app/RecordPanel.cpp" line="275"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="287"/>
+        <location filename="../app/RecordPanel.cpp" line="289"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="297"/>
+        <location filename="../app/RecordPanel.cpp" line="299"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="307"/>
-        <location filename="../app/RecordPanel.cpp" line="318"/>
+        <location filename="../app/RecordPanel.cpp" line="309"/>
+        <location filename="../app/RecordPanel.cpp" line="320"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="309"/>
+        <location filename="../app/RecordPanel.cpp" line="311"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="322"/>
+        <location filename="../app/RecordPanel.cpp" line="324"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="334"/>
+        <location filename="../app/RecordPanel.cpp" line="336"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="357"/>
+        <location filename="../app/RecordPanel.cpp" line="359"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="362"/>
+        <location filename="../app/RecordPanel.cpp" line="364"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="364"/>
+        <location filename="../app/RecordPanel.cpp" line="366"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="365"/>
+        <location filename="../app/RecordPanel.cpp" line="367"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="366"/>
+        <location filename="../app/RecordPanel.cpp" line="368"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="368"/>
+        <location filename="../app/RecordPanel.cpp" line="370"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="369"/>
+        <location filename="../app/RecordPanel.cpp" line="371"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="370"/>
+        <location filename="../app/RecordPanel.cpp" line="372"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="371"/>
+        <location filename="../app/RecordPanel.cpp" line="373"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="372"/>
+        <location filename="../app/RecordPanel.cpp" line="374"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -3144,22 +3172,22 @@ Do you want to replace it?</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="360"/>
+        <location filename="../app/RunPanel.cpp" line="361"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="301"/>
+        <location filename="../app/RunPanel.cpp" line="302"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
@@ -3180,129 +3208,122 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../app/RunPanel.cpp" line="234"/>
-        <location filename="../app/RunPanel.cpp" line="393"/>
+        <location filename="../app/RunPanel.cpp" line="394"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../app/RunPanel.cpp" line="241"/>
-        <source>Run finished: %n trial(s).</source>
-        <translation>
-            <numerusform>運行完成：%n 次試驗。</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="282"/>
+        <location filename="../app/RunPanel.cpp" line="283"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="288"/>
+        <location filename="../app/RunPanel.cpp" line="289"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="397"/>
+        <location filename="../app/RunPanel.cpp" line="398"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="406"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="422"/>
+        <location filename="../app/RunPanel.cpp" line="423"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="429"/>
+        <location filename="../app/RunPanel.cpp" line="430"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="430"/>
+        <location filename="../app/RunPanel.cpp" line="431"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="445"/>
+        <location filename="../app/RunPanel.cpp" line="446"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="454"/>
+        <location filename="../app/RunPanel.cpp" line="455"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="489"/>
+        <location filename="../app/RunPanel.cpp" line="490"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="490"/>
+        <location filename="../app/RunPanel.cpp" line="491"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="491"/>
+        <location filename="../app/RunPanel.cpp" line="492"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="493"/>
+        <location filename="../app/RunPanel.cpp" line="494"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="495"/>
+        <location filename="../app/RunPanel.cpp" line="496"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="497"/>
+        <location filename="../app/RunPanel.cpp" line="498"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="499"/>
+        <location filename="../app/RunPanel.cpp" line="500"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="501"/>
+        <location filename="../app/RunPanel.cpp" line="502"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="503"/>
+        <location filename="../app/RunPanel.cpp" line="504"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="504"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/RunPanel.cpp" line="506"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="506"/>
+        <location filename="../app/RunPanel.cpp" line="507"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="516"/>
+        <location filename="../app/RunPanel.cpp" line="517"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="402"/>
+        <location filename="../app/RunPanel.cpp" line="403"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
@@ -3310,134 +3331,144 @@ Do you want to replace it?</source>
         <location filename="../app/RunPanel.cpp" line="197"/>
         <location filename="../app/RunPanel.cpp" line="227"/>
         <location filename="../app/RunPanel.cpp" line="240"/>
-        <location filename="../app/RunPanel.cpp" line="281"/>
-        <location filename="../app/RunPanel.cpp" line="287"/>
-        <location filename="../app/RunPanel.cpp" line="300"/>
-        <location filename="../app/RunPanel.cpp" line="311"/>
-        <location filename="../app/RunPanel.cpp" line="347"/>
-        <location filename="../app/RunPanel.cpp" line="393"/>
-        <location filename="../app/RunPanel.cpp" line="397"/>
-        <location filename="../app/RunPanel.cpp" line="437"/>
+        <location filename="../app/RunPanel.cpp" line="282"/>
+        <location filename="../app/RunPanel.cpp" line="288"/>
+        <location filename="../app/RunPanel.cpp" line="301"/>
+        <location filename="../app/RunPanel.cpp" line="312"/>
+        <location filename="../app/RunPanel.cpp" line="348"/>
+        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="438"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="348"/>
+        <location filename="../app/RunPanel.cpp" line="241"/>
+        <source>Run finished: 1 trial.</source>
+        <translation>運行完成：1 次試驗。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="242"/>
+        <source>Run finished: %1 trials.</source>
+        <translation>運行完成：%1 次試驗。</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="349"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="436"/>
+        <location filename="../app/RunPanel.cpp" line="437"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="438"/>
+        <location filename="../app/RunPanel.cpp" line="439"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="443"/>
+        <location filename="../app/RunPanel.cpp" line="444"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="446"/>
+        <location filename="../app/RunPanel.cpp" line="447"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="508"/>
+        <location filename="../app/RunPanel.cpp" line="509"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="510"/>
+        <location filename="../app/RunPanel.cpp" line="511"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="513"/>
+        <location filename="../app/RunPanel.cpp" line="514"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="514"/>
+        <location filename="../app/RunPanel.cpp" line="515"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="518"/>
+        <location filename="../app/RunPanel.cpp" line="519"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="519"/>
+        <location filename="../app/RunPanel.cpp" line="520"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="520"/>
+        <location filename="../app/RunPanel.cpp" line="521"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="522"/>
+        <location filename="../app/RunPanel.cpp" line="523"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="523"/>
+        <location filename="../app/RunPanel.cpp" line="524"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="526"/>
+        <location filename="../app/RunPanel.cpp" line="527"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="526"/>
+        <location filename="../app/RunPanel.cpp" line="527"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="526"/>
+        <location filename="../app/RunPanel.cpp" line="527"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="527"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="527"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="529"/>
+        <location filename="../app/RunPanel.cpp" line="530"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="529"/>
+        <location filename="../app/RunPanel.cpp" line="530"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="530"/>
+        <location filename="../app/RunPanel.cpp" line="531"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="530"/>
+        <location filename="../app/RunPanel.cpp" line="531"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>

@@ -2,6 +2,10 @@
 // under way, E-STOP's latch and explanation, Help, the layout at 1280 x 800, one language at a
 // time.
 #include "GuiTestSupport.h"
+
+#include <QAbstractAxis>
+#include <QChart>
+#include <QChartView>
 #include "app/CameraView.h"
 #include "app/ExperimentArchive.h"
 #include "app/MessageLog.h"
@@ -538,6 +542,28 @@ class TestGuiWindow : public QObject {
         QTRY_VERIFY(results->visualItemRect(results->item(1, 0)).top() >= 0 &&
                     results->visualItemRect(results->item(5, 0)).bottom() <=
                         results->viewport()->height());
+    }
+
+    void chartAxisTitles_fitTheirAxesInEachLanguage() {
+        Window w;
+        for (const char* language : {"en", "zh_HK"}) {
+            QVERIFY(w.languages.setLanguage(QString::fromLatin1(language)));
+            QCoreApplication::processEvents();
+            // Every chart's vertical title fits the plot's height (else QtCharts elides it to
+            // a sliver), with the chart dock at its smallest.
+            for (QChartView* view : w.find<LiveChartsPanel>("liveChartsPanel")->findChildren<QChartView*>()) {
+                view->resize(view->width(), view->minimumHeight());
+                view->chart()->resize(view->size());
+                for (QAbstractAxis* axis : view->chart()->axes(Qt::Vertical)) {
+                    const int title = QFontMetrics(axis->titleFont()).horizontalAdvance(axis->titleText());
+                    QVERIFY2(title < view->chart()->plotArea().height(),
+                             qPrintable(QStringLiteral("%1: \"%2\" is %3 px on a %4 px axis")
+                                            .arg(QLatin1String(language), axis->titleText())
+                                            .arg(title)
+                                            .arg(view->chart()->plotArea().height())));
+                }
+            }
+        }
     }
 
     void layout_at1280x800ShowsTableIsRowsAndEveryColumn() {
