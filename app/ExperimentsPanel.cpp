@@ -106,6 +106,7 @@ ExperimentsPanel::ExperimentsPanel(LabSession& session, EmergencyStop& emergency
     table_->setObjectName(QStringLiteral("experimentTable"));
     table_->setMinimumHeight(60);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setTabKeyNavigation(false);  // Tab moves on to the next control, not cell by cell
     table_->verticalHeader()->setVisible(false);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     // Rows as tall as their text: Table I's rows fit the short bottom dock at 1280 x 800.

@@ -68,6 +68,7 @@ MappingPanel::MappingPanel(LabSession& session, QWidget* parent)
         table->horizontalHeader()->setMinimumSectionSize(30);
         table->setWordWrap(false);
         table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        table->setTabKeyNavigation(false);  // Tab moves on to the next control
         table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
         // Rows as tall as their text, no scroll bars: the tables show whole at 1280 x 800.
         table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 4);

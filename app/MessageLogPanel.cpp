@@ -40,6 +40,7 @@ MessageLogPanel::MessageLogPanel(MessageLog& log, QWidget* parent)
     table_->horizontalHeader()->setSectionResizeMode(LevelColumn, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(SourceColumn, QHeaderView::ResizeToContents);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setTabKeyNavigation(false);  // Tab moves on to the next control, not cell by cell
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setWordWrap(false);
     table_->setTextElideMode(Qt::ElideRight);

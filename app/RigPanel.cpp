@@ -343,6 +343,15 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
                 showStatus(cameraInfo_, tr("Camera"), message, MessageLevel::Error);
                 emitStatus();
             });
+    // A video played to its end is no fault: said plainly, no alarm.
+    connect(&rig_, &rig::RigSession::cameraEnded, this, [this](const QString&) {
+        cameraEnded_ = true;
+        showStatus(cameraInfo_, tr("Camera"),
+                   [frames = rig_.framesSeen()] {
+                       return tr("The video ended after %1 frames; Start plays it again.").arg(frames);
+                   });
+        emitStatus();
+    });
     connect(&rig_, &rig::RigSession::linkStatusChanged, this, &RigPanel::showLinkStatus);
     connect(&rig_, &rig::RigSession::cameraRunningChanged, this, [this](bool running) {
         updateButtons();
@@ -350,7 +359,7 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
             view_->clearFrame();  // a stopped camera shows no stale image
             lastFrame_ = cv::Mat();
             tracking_ = false;
-            if (!cameraFailed_) {
+            if (!cameraFailed_ && !cameraEnded_) {
                 showStatus(cameraInfo_, tr("Camera"), tr("Camera stopped."));
             }
         }
@@ -816,6 +825,7 @@ void RigPanel::startCamera() {
         return;
     }
     cameraFailed_ = false;
+    cameraEnded_ = false;
     if (virtualCalibrationOnRealCamera()) {
         showStatus(calibrationInfo_, tr("Floor calibration"), virtualCalibrationWarning(),
                    MessageLevel::Warning);
@@ -930,7 +940,9 @@ void RigPanel::emitStatus() {
                                : tr("Camera: %1 fps, no car in view").arg(cameraFps_, 0, 'f', 0);
         cameraAlarm = !tracking_;
     } else {
-        cameraText = cameraFailed_ ? tr("Camera: failed") : tr("Camera: off");
+        cameraText = cameraFailed_  ? tr("Camera: failed")
+                     : cameraEnded_ ? tr("Camera: video ended")
+                                    : tr("Camera: off");
         cameraAlarm = cameraFailed_;
     }
     emit statusSummary(linkText, linkAlarm, cameraText, cameraAlarm);

@@ -237,6 +237,7 @@ class RigPanel : public QWidget {
     double cameraFps_ = 0.0;
     bool tracking_ = false;  ///< the newest frame shown had the car in it
     bool cameraFailed_ = false;
+    bool cameraEnded_ = false;  ///< the video file played to its end
     QString loggedLinkState_;
     bool recordingEndedByEmergency_ = false;
 };

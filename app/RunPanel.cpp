@@ -112,6 +112,7 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency
     results_->verticalHeader()->setVisible(false);
     results_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     results_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    results_->setTabKeyNavigation(false);  // Tab moves on to the next control, not cell by cell
     results_->setMinimumHeight(results_->fontMetrics().height() * 3);  // the header, a row
     // Rows as tall as their text: five trials and the header in about 140 px.
     results_->verticalHeader()->setDefaultSectionSize(results_->fontMetrics().height() + 6);

@@ -104,6 +104,7 @@ class VideoFileSource : public CameraSource {
         }
         if (!capture_.read(frame->image) || frame->image.empty()) {
             *error = QStringLiteral("%1: end of the video").arg(path_);
+            ended_ = true;
             return false;
         }
         frame->steadyNs = steadyNowNs();
@@ -112,10 +113,12 @@ class VideoFileSource : public CameraSource {
     }
     double framesPerSecond() const override { return fps_; }
     QString describe() const override { return path_; }
+    bool ended() const override { return ended_; }
 
   private:
     QString path_;
     bool paced_;
+    bool ended_ = false;
     cv::VideoCapture capture_;
     double fps_ = 40.0;
     std::int64_t startNs_ = 0;

@@ -32,6 +32,9 @@ class CameraSource {
     virtual bool open(QString* error) = 0;
     /// The next frame; false at the end of a file or on a device error (*error says which).
     virtual bool grab(CameraFrame* frame, QString* error) = 0;
+    /// grab() returned false because the source came to its end (a video file played through):
+    /// no fault.
+    virtual bool ended() const { return false; }
     virtual double framesPerSecond() const = 0;
     virtual QString describe() const = 0;
 };

@@ -53,7 +53,11 @@ void Camera::run(std::shared_ptr<CameraSource> source, double displayHz) {
     CameraFrame frame;
     while (!stopRequested_.load()) {
         if (!source->grab(&frame, &error)) {
-            emit failed(error);
+            if (source->ended()) {
+                emit ended(error);
+            } else {
+                emit failed(error);
+            }
             break;
         }
         frames_.fetch_add(1);

@@ -38,6 +38,8 @@ class Camera : public QObject {
   signals:
     void frameReady(const prisca::devices::CameraFrame& frame);
     void failed(const QString& message);
+    /// The source came to its end (a video file played through): no fault; finished() follows.
+    void ended(const QString& message);
     void finished();
 
   private:

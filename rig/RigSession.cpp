@@ -88,6 +88,7 @@ RigSession::RigSession(QObject* parent)
     connect(&camera_, &devices::Camera::frameReady, this,
             [this](const devices::CameraFrame& frame) { emit frameReady(frame, lastPose()); });
     connect(&camera_, &devices::Camera::failed, this, &RigSession::cameraFailed);
+    connect(&camera_, &devices::Camera::ended, this, &RigSession::cameraEnded);
     connect(&camera_, &devices::Camera::finished, this, [this] {
         {
             std::lock_guard<std::mutex> lock(poseMutex_);

@@ -222,6 +222,8 @@ class RigSession : public QObject {
     void frameReady(const prisca::devices::CameraFrame& frame,
                     const std::optional<prisca::devices::PlanarPose>& pose);
     void cameraFailed(const QString& message);
+    /// The camera's source came to its end (a video file played through); no fault.
+    void cameraEnded(const QString& message);
     /// The camera started or stopped (asked to, at the end of a file, or on a device error).
     void cameraRunningChanged(bool running);
     void linkStatusChanged(const prisca::devices::LinkStatus& status);

@@ -801,318 +801,318 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="189"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="231"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="232"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="232"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="272"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="312"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="313"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="305"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="306"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="202"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="224"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="258"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="271"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="421"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="434"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="451"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="691"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="272"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="692"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="204"/>
         <source>E-STOP: the experiment stops once the trials under way end; what finished is kept and marked partial.</source>
         <translation>緊急停止：進行中的試驗結束後實驗即停止；已完成的部分會保留並標為不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="317"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="324"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="325"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="356"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="357"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="364"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="365"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="370"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="400"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="401"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="401"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
         <source>The last experiment, cancelled %1 (its rows are partial), is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 取消的實驗（各行不完整）；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="456"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="546"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="547"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="559"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="560"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="568"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="580"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="569"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="581"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="569"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="570"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="585"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="595"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="596"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="587"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="607"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="608"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="608"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="609"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="615"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="616"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="617"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="617"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
         <source>Click to open the figure large</source>
         <translation>按一下以大圖打開</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="644"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="645"/>
         <source>%1 s</source>
         <translation>%1 秒</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="647"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="648"/>
         <source>%1 min %2 s</source>
         <translation>%1 分 %2 秒</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="649"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="650"/>
         <source>%1 h %2 min</source>
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="660"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="661"/>
         <source>Starting... %1 so far</source>
         <translation>正在開始……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="662"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="663"/>
         <source>Run %1 of %2 done</source>
         <translation>已完成第 %1 次運行（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="663"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="664"/>
         <source>Trial %1 of %2 done</source>
         <translation>已完成第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="667"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
         <source>about %1 left</source>
         <translation>約剩 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="669"/>
         <source>estimating the time left</source>
         <translation>正在估算剩餘時間</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="669"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="670"/>
         <source>%1 · %2 so far · %3</source>
         <translation>%1 · 已用 %2 · %3</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="672"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="673"/>
         <source>E-STOP: stopping once the trials under way end. %1</source>
         <translation>緊急停止：進行中的試驗結束後即停止。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="674"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="675"/>
         <source>Cancelling: the trials under way finish first. %1</source>
         <translation>正在取消：先完成進行中的試驗。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="685"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="686"/>
         <source>Cancelled: %v of %m runs</source>
         <translation>已取消：完成 %v / %m 次運行</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="685"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="686"/>
         <source>Cancelled: %v of %m trials</source>
         <translation>已取消：完成 %v / %m 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="693"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="694"/>
         <source>Finished in %1.</source>
         <translation>用時 %1 完成。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="694"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="695"/>
         <source>Stopped by E-STOP after %1: the rows are partial.</source>
         <translation>%1 後被緊急停止：各行不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="695"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="696"/>
         <source>Cancelled after %1: the rows are partial.</source>
         <translation>%1 後已取消：各行不完整。</translation>
     </message>
@@ -2005,123 +2005,123 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="141"/>
+        <location filename="../app/MappingPanel.cpp" line="142"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="201"/>
+        <location filename="../app/MappingPanel.cpp" line="202"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="201"/>
+        <location filename="../app/MappingPanel.cpp" line="202"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="201"/>
+        <location filename="../app/MappingPanel.cpp" line="202"/>
         <source>RMS</source>
         <translation>均方根</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="213"/>
+        <location filename="../app/MappingPanel.cpp" line="214"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="219"/>
+        <location filename="../app/MappingPanel.cpp" line="220"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="221"/>
+        <location filename="../app/MappingPanel.cpp" line="222"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="226"/>
+        <location filename="../app/MappingPanel.cpp" line="227"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="229"/>
+        <location filename="../app/MappingPanel.cpp" line="230"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="231"/>
+        <location filename="../app/MappingPanel.cpp" line="232"/>
         <source>Residual RMS: what the fit leaves unexplained, per state</source>
         <translation>殘差均方根：擬合未能解釋的部分，按狀態計</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="244"/>
+        <location filename="../app/MappingPanel.cpp" line="245"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="255"/>
+        <location filename="../app/MappingPanel.cpp" line="256"/>
         <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="280"/>
+        <location filename="../app/MappingPanel.cpp" line="281"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="281"/>
+        <location filename="../app/MappingPanel.cpp" line="282"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="282"/>
-        <location filename="../app/MappingPanel.cpp" line="287"/>
+        <location filename="../app/MappingPanel.cpp" line="283"/>
+        <location filename="../app/MappingPanel.cpp" line="288"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="284"/>
+        <location filename="../app/MappingPanel.cpp" line="285"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="286"/>
+        <location filename="../app/MappingPanel.cpp" line="287"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="289"/>
+        <location filename="../app/MappingPanel.cpp" line="290"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="291"/>
+        <location filename="../app/MappingPanel.cpp" line="292"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="292"/>
+        <location filename="../app/MappingPanel.cpp" line="293"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="293"/>
+        <location filename="../app/MappingPanel.cpp" line="294"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="295"/>
+        <location filename="../app/MappingPanel.cpp" line="296"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="297"/>
+        <location filename="../app/MappingPanel.cpp" line="298"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="298"/>
+        <location filename="../app/MappingPanel.cpp" line="299"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -2147,47 +2147,47 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLogPanel</name>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="172"/>
+        <location filename="../app/MessageLogPanel.cpp" line="173"/>
         <source>All messages</source>
         <translation>所有訊息</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="173"/>
+        <location filename="../app/MessageLogPanel.cpp" line="174"/>
         <source>Warnings and errors</source>
         <translation>警告與錯誤</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="175"/>
+        <location filename="../app/MessageLogPanel.cpp" line="176"/>
         <source>Copy</source>
         <translation>複製</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="176"/>
+        <location filename="../app/MessageLogPanel.cpp" line="177"/>
         <source>Copy the selected lines, or all shown, as tab-separated text (Ctrl+C)</source>
         <translation>以定位字元分隔的文字複製選取的行，或全部顯示的行 (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="177"/>
+        <location filename="../app/MessageLogPanel.cpp" line="178"/>
         <source>Clear</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
         <source>Level</source>
         <translation>級別</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/MessageLogPanel.cpp" line="179"/>
         <source>Message</source>
         <translation>訊息</translation>
     </message>
@@ -2438,264 +2438,270 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="367"/>
+        <location filename="../app/RigPanel.cpp" line="376"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="368"/>
-        <location filename="../app/RigPanel.cpp" line="375"/>
+        <location filename="../app/RigPanel.cpp" line="377"/>
+        <location filename="../app/RigPanel.cpp" line="384"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="374"/>
+        <location filename="../app/RigPanel.cpp" line="383"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="475"/>
-        <location filename="../app/RigPanel.cpp" line="486"/>
+        <location filename="../app/RigPanel.cpp" line="484"/>
+        <location filename="../app/RigPanel.cpp" line="495"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="476"/>
+        <location filename="../app/RigPanel.cpp" line="485"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="487"/>
+        <location filename="../app/RigPanel.cpp" line="496"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="572"/>
+        <location filename="../app/RigPanel.cpp" line="581"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="670"/>
+        <location filename="../app/RigPanel.cpp" line="679"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="710"/>
+        <location filename="../app/RigPanel.cpp" line="719"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="705"/>
+        <location filename="../app/RigPanel.cpp" line="714"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="201"/>
-        <location filename="../app/RigPanel.cpp" line="1068"/>
+        <location filename="../app/RigPanel.cpp" line="1080"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="400"/>
+        <location filename="../app/RigPanel.cpp" line="409"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="411"/>
-        <location filename="../app/RigPanel.cpp" line="1194"/>
+        <location filename="../app/RigPanel.cpp" line="420"/>
+        <location filename="../app/RigPanel.cpp" line="1206"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="412"/>
-        <location filename="../app/RigPanel.cpp" line="1182"/>
+        <location filename="../app/RigPanel.cpp" line="421"/>
+        <location filename="../app/RigPanel.cpp" line="1194"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="425"/>
+        <location filename="../app/RigPanel.cpp" line="434"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="453"/>
+        <location filename="../app/RigPanel.cpp" line="462"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="460"/>
+        <location filename="../app/RigPanel.cpp" line="469"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="689"/>
+        <location filename="../app/RigPanel.cpp" line="698"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="698"/>
+        <location filename="../app/RigPanel.cpp" line="707"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="728"/>
+        <location filename="../app/RigPanel.cpp" line="737"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="741"/>
+        <location filename="../app/RigPanel.cpp" line="750"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="746"/>
+        <location filename="../app/RigPanel.cpp" line="755"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="749"/>
+        <location filename="../app/RigPanel.cpp" line="758"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="752"/>
+        <location filename="../app/RigPanel.cpp" line="761"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="753"/>
+        <location filename="../app/RigPanel.cpp" line="762"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="343"/>
-        <location filename="../app/RigPanel.cpp" line="354"/>
-        <location filename="../app/RigPanel.cpp" line="814"/>
+        <location filename="../app/RigPanel.cpp" line="349"/>
+        <location filename="../app/RigPanel.cpp" line="363"/>
         <location filename="../app/RigPanel.cpp" line="823"/>
+        <location filename="../app/RigPanel.cpp" line="833"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="354"/>
+        <location filename="../app/RigPanel.cpp" line="363"/>
         <source>Camera stopped.</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="427"/>
-        <location filename="../app/RigPanel.cpp" line="547"/>
-        <location filename="../app/RigPanel.cpp" line="554"/>
+        <location filename="../app/RigPanel.cpp" line="436"/>
+        <location filename="../app/RigPanel.cpp" line="556"/>
         <location filename="../app/RigPanel.cpp" line="563"/>
-        <location filename="../app/RigPanel.cpp" line="569"/>
         <location filename="../app/RigPanel.cpp" line="572"/>
-        <location filename="../app/RigPanel.cpp" line="614"/>
-        <location filename="../app/RigPanel.cpp" line="617"/>
-        <location filename="../app/RigPanel.cpp" line="647"/>
-        <location filename="../app/RigPanel.cpp" line="652"/>
-        <location filename="../app/RigPanel.cpp" line="663"/>
-        <location filename="../app/RigPanel.cpp" line="669"/>
-        <location filename="../app/RigPanel.cpp" line="689"/>
-        <location filename="../app/RigPanel.cpp" line="715"/>
-        <location filename="../app/RigPanel.cpp" line="727"/>
-        <location filename="../app/RigPanel.cpp" line="735"/>
-        <location filename="../app/RigPanel.cpp" line="757"/>
+        <location filename="../app/RigPanel.cpp" line="578"/>
+        <location filename="../app/RigPanel.cpp" line="581"/>
+        <location filename="../app/RigPanel.cpp" line="623"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="656"/>
+        <location filename="../app/RigPanel.cpp" line="661"/>
+        <location filename="../app/RigPanel.cpp" line="672"/>
+        <location filename="../app/RigPanel.cpp" line="678"/>
+        <location filename="../app/RigPanel.cpp" line="698"/>
+        <location filename="../app/RigPanel.cpp" line="724"/>
+        <location filename="../app/RigPanel.cpp" line="736"/>
+        <location filename="../app/RigPanel.cpp" line="744"/>
+        <location filename="../app/RigPanel.cpp" line="766"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="453"/>
-        <location filename="../app/RigPanel.cpp" line="459"/>
-        <location filename="../app/RigPanel.cpp" line="624"/>
-        <location filename="../app/RigPanel.cpp" line="630"/>
-        <location filename="../app/RigPanel.cpp" line="1232"/>
-        <location filename="../app/RigPanel.cpp" line="1237"/>
-        <location filename="../app/RigPanel.cpp" line="1241"/>
+        <location filename="../app/RigPanel.cpp" line="462"/>
+        <location filename="../app/RigPanel.cpp" line="468"/>
+        <location filename="../app/RigPanel.cpp" line="633"/>
+        <location filename="../app/RigPanel.cpp" line="639"/>
+        <location filename="../app/RigPanel.cpp" line="1244"/>
+        <location filename="../app/RigPanel.cpp" line="1249"/>
+        <location filename="../app/RigPanel.cpp" line="1253"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="824"/>
+        <location filename="../app/RigPanel.cpp" line="834"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843"/>
+        <location filename="../app/RigPanel.cpp" line="853"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="843"/>
-        <location filename="../app/RigPanel.cpp" line="986"/>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="998"/>
+        <location filename="../app/RigPanel.cpp" line="1082"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="389"/>
-        <location filename="../app/RigPanel.cpp" line="820"/>
-        <location filename="../app/RigPanel.cpp" line="864"/>
-        <location filename="../app/RigPanel.cpp" line="876"/>
-        <location filename="../app/RigPanel.cpp" line="885"/>
-        <location filename="../app/RigPanel.cpp" line="892"/>
+        <location filename="../app/RigPanel.cpp" line="398"/>
+        <location filename="../app/RigPanel.cpp" line="830"/>
+        <location filename="../app/RigPanel.cpp" line="874"/>
+        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="895"/>
+        <location filename="../app/RigPanel.cpp" line="902"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="386"/>
+        <location filename="../app/RigPanel.cpp" line="351"/>
+        <source>The video ended after %1 frames; Start plays it again.</source>
+        <translation>影片在 %1 幀後結束；按「開始」再次播放。</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="395"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="390"/>
+        <location filename="../app/RigPanel.cpp" line="399"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="537"/>
+        <location filename="../app/RigPanel.cpp" line="546"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
         <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="555"/>
+        <location filename="../app/RigPanel.cpp" line="564"/>
         <source>Not ready for a trial: %1</source>
         <translation>未能進行試驗：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="596"/>
+        <location filename="../app/RigPanel.cpp" line="605"/>
         <source>Ready for a trial</source>
         <translation>可以進行試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="597"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Ready for a trial (note: %1)</source>
         <translation>可以進行試驗（注意：%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="599"/>
+        <location filename="../app/RigPanel.cpp" line="608"/>
         <source>Not ready: %1</source>
         <translation>未準備好：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="617"/>
+        <location filename="../app/RigPanel.cpp" line="626"/>
         <source>The virtual car is back at its start.</source>
         <translation>虛擬車已回到起點。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="625"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
         <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
         <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="631"/>
+        <location filename="../app/RigPanel.cpp" line="640"/>
         <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
         <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="736"/>
+        <location filename="../app/RigPanel.cpp" line="745"/>
         <source>E-STOP is reset: the link sends the commands again.</source>
         <translation>緊急停止已重設：鏈路再次發送指令。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="865"/>
+        <location filename="../app/RigPanel.cpp" line="875"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -2704,451 +2710,456 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="886"/>
+        <location filename="../app/RigPanel.cpp" line="896"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="917"/>
+        <location filename="../app/RigPanel.cpp" line="927"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="917"/>
+        <location filename="../app/RigPanel.cpp" line="927"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="920"/>
+        <location filename="../app/RigPanel.cpp" line="930"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="924"/>
+        <location filename="../app/RigPanel.cpp" line="934"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="929"/>
+        <location filename="../app/RigPanel.cpp" line="939"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="930"/>
+        <location filename="../app/RigPanel.cpp" line="940"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="933"/>
+        <location filename="../app/RigPanel.cpp" line="943"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="933"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
+        <source>Camera: video ended</source>
+        <translation>攝影機：影片已結束</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="945"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="959"/>
+        <location filename="../app/RigPanel.cpp" line="971"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="962"/>
-        <location filename="../app/RigPanel.cpp" line="971"/>
+        <location filename="../app/RigPanel.cpp" line="974"/>
+        <location filename="../app/RigPanel.cpp" line="983"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="964"/>
-        <location filename="../app/RigPanel.cpp" line="973"/>
+        <location filename="../app/RigPanel.cpp" line="976"/>
+        <location filename="../app/RigPanel.cpp" line="985"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="971"/>
+        <location filename="../app/RigPanel.cpp" line="983"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1016"/>
+        <location filename="../app/RigPanel.cpp" line="1028"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1017"/>
+        <location filename="../app/RigPanel.cpp" line="1029"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1018"/>
+        <location filename="../app/RigPanel.cpp" line="1030"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1019"/>
+        <location filename="../app/RigPanel.cpp" line="1031"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1025"/>
+        <location filename="../app/RigPanel.cpp" line="1037"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1026"/>
+        <location filename="../app/RigPanel.cpp" line="1038"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1027"/>
+        <location filename="../app/RigPanel.cpp" line="1039"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1028"/>
+        <location filename="../app/RigPanel.cpp" line="1040"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1029"/>
+        <location filename="../app/RigPanel.cpp" line="1041"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1030"/>
+        <location filename="../app/RigPanel.cpp" line="1042"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1032"/>
+        <location filename="../app/RigPanel.cpp" line="1044"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1034"/>
+        <location filename="../app/RigPanel.cpp" line="1046"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1035"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1036"/>
+        <location filename="../app/RigPanel.cpp" line="1048"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1037"/>
+        <location filename="../app/RigPanel.cpp" line="1049"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1038"/>
+        <location filename="../app/RigPanel.cpp" line="1050"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1039"/>
+        <location filename="../app/RigPanel.cpp" line="1051"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1040"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1043"/>
+        <location filename="../app/RigPanel.cpp" line="1055"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1044"/>
+        <location filename="../app/RigPanel.cpp" line="1056"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1045"/>
+        <location filename="../app/RigPanel.cpp" line="1057"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/RigPanel.cpp" line="1059"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1048"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1049"/>
+        <location filename="../app/RigPanel.cpp" line="1061"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1050"/>
+        <location filename="../app/RigPanel.cpp" line="1062"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1051"/>
+        <location filename="../app/RigPanel.cpp" line="1063"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1064"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1053"/>
+        <location filename="../app/RigPanel.cpp" line="1065"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1054"/>
+        <location filename="../app/RigPanel.cpp" line="1066"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1055"/>
+        <location filename="../app/RigPanel.cpp" line="1067"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1056"/>
+        <location filename="../app/RigPanel.cpp" line="1068"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1058"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
+        <location filename="../app/RigPanel.cpp" line="1072"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1062"/>
+        <location filename="../app/RigPanel.cpp" line="1074"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1064"/>
+        <location filename="../app/RigPanel.cpp" line="1076"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1069"/>
+        <location filename="../app/RigPanel.cpp" line="1081"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1071"/>
+        <location filename="../app/RigPanel.cpp" line="1083"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1072"/>
+        <location filename="../app/RigPanel.cpp" line="1084"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1073"/>
+        <location filename="../app/RigPanel.cpp" line="1085"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1076"/>
+        <location filename="../app/RigPanel.cpp" line="1088"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1077"/>
+        <location filename="../app/RigPanel.cpp" line="1089"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1079"/>
+        <location filename="../app/RigPanel.cpp" line="1091"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1080"/>
+        <location filename="../app/RigPanel.cpp" line="1092"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1081"/>
+        <location filename="../app/RigPanel.cpp" line="1093"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1082"/>
+        <location filename="../app/RigPanel.cpp" line="1094"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <location filename="../app/RigPanel.cpp" line="1097"/>
         <source>or declare:</source>
         <translation>或申報：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1086"/>
+        <location filename="../app/RigPanel.cpp" line="1098"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1087"/>
+        <location filename="../app/RigPanel.cpp" line="1099"/>
         <source>not declared</source>
         <translation>未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1088"/>
+        <location filename="../app/RigPanel.cpp" line="1100"/>
         <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
         <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1090"/>
+        <location filename="../app/RigPanel.cpp" line="1102"/>
         <source>Put the car back</source>
         <translation>把車放回起點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1091"/>
+        <location filename="../app/RigPanel.cpp" line="1103"/>
         <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
         <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1093"/>
+        <location filename="../app/RigPanel.cpp" line="1105"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1095"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1096"/>
+        <location filename="../app/RigPanel.cpp" line="1108"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1099"/>
+        <location filename="../app/RigPanel.cpp" line="1111"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1100"/>
+        <location filename="../app/RigPanel.cpp" line="1112"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1101"/>
+        <location filename="../app/RigPanel.cpp" line="1113"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1102"/>
-        <location filename="../app/RigPanel.cpp" line="1104"/>
+        <location filename="../app/RigPanel.cpp" line="1114"/>
+        <location filename="../app/RigPanel.cpp" line="1116"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1103"/>
+        <location filename="../app/RigPanel.cpp" line="1115"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
+        <location filename="../app/RigPanel.cpp" line="1119"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1134"/>
+        <location filename="../app/RigPanel.cpp" line="1146"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1134"/>
-        <location filename="../app/RigPanel.cpp" line="1139"/>
-        <location filename="../app/RigPanel.cpp" line="1166"/>
-        <location filename="../app/RigPanel.cpp" line="1227"/>
+        <location filename="../app/RigPanel.cpp" line="1146"/>
+        <location filename="../app/RigPanel.cpp" line="1151"/>
+        <location filename="../app/RigPanel.cpp" line="1178"/>
+        <location filename="../app/RigPanel.cpp" line="1239"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1139"/>
+        <location filename="../app/RigPanel.cpp" line="1151"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1161"/>
+        <location filename="../app/RigPanel.cpp" line="1173"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1166"/>
+        <location filename="../app/RigPanel.cpp" line="1178"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1180"/>
-        <location filename="../app/RigPanel.cpp" line="1184"/>
+        <location filename="../app/RigPanel.cpp" line="1192"/>
+        <location filename="../app/RigPanel.cpp" line="1196"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1212"/>
+        <location filename="../app/RigPanel.cpp" line="1224"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1218"/>
+        <location filename="../app/RigPanel.cpp" line="1230"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1222"/>
+        <location filename="../app/RigPanel.cpp" line="1234"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1237"/>
+        <location filename="../app/RigPanel.cpp" line="1249"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1241"/>
+        <location filename="../app/RigPanel.cpp" line="1253"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1270"/>
+        <location filename="../app/RigPanel.cpp" line="1282"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1270"/>
-        <location filename="../app/RigPanel.cpp" line="1273"/>
-        <location filename="../app/RigPanel.cpp" line="1276"/>
+        <location filename="../app/RigPanel.cpp" line="1282"/>
+        <location filename="../app/RigPanel.cpp" line="1285"/>
+        <location filename="../app/RigPanel.cpp" line="1288"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1273"/>
+        <location filename="../app/RigPanel.cpp" line="1285"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1276"/>
+        <location filename="../app/RigPanel.cpp" line="1288"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -3156,319 +3167,319 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="183"/>
-        <location filename="../app/RunPanel.cpp" line="193"/>
+        <location filename="../app/RunPanel.cpp" line="184"/>
+        <location filename="../app/RunPanel.cpp" line="194"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184"/>
+        <location filename="../app/RunPanel.cpp" line="185"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="198"/>
+        <location filename="../app/RunPanel.cpp" line="199"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="361"/>
+        <location filename="../app/RunPanel.cpp" line="362"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="302"/>
+        <location filename="../app/RunPanel.cpp" line="303"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="211"/>
+        <location filename="../app/RunPanel.cpp" line="212"/>
         <source>the Run menu</source>
         <translation>「運行」選單</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="228"/>
+        <location filename="../app/RunPanel.cpp" line="229"/>
         <source>Trial %1 of %2 running...</source>
         <translation>正在進行第 %1 次試驗（共 %2 次）……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233"/>
+        <location filename="../app/RunPanel.cpp" line="234"/>
         <source>Training before the run: %1 of %2...</source>
         <translation>運行前訓練：%1 / %2……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="234"/>
-        <location filename="../app/RunPanel.cpp" line="394"/>
+        <location filename="../app/RunPanel.cpp" line="235"/>
+        <location filename="../app/RunPanel.cpp" line="395"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="283"/>
+        <location filename="../app/RunPanel.cpp" line="284"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="289"/>
+        <location filename="../app/RunPanel.cpp" line="290"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="398"/>
+        <location filename="../app/RunPanel.cpp" line="399"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="406"/>
+        <location filename="../app/RunPanel.cpp" line="407"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="423"/>
+        <location filename="../app/RunPanel.cpp" line="424"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="430"/>
+        <location filename="../app/RunPanel.cpp" line="431"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="431"/>
+        <location filename="../app/RunPanel.cpp" line="432"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="446"/>
+        <location filename="../app/RunPanel.cpp" line="447"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="455"/>
+        <location filename="../app/RunPanel.cpp" line="456"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="490"/>
+        <location filename="../app/RunPanel.cpp" line="491"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="491"/>
+        <location filename="../app/RunPanel.cpp" line="492"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="492"/>
+        <location filename="../app/RunPanel.cpp" line="493"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="494"/>
+        <location filename="../app/RunPanel.cpp" line="495"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="496"/>
+        <location filename="../app/RunPanel.cpp" line="497"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="498"/>
+        <location filename="../app/RunPanel.cpp" line="499"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="500"/>
+        <location filename="../app/RunPanel.cpp" line="501"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="502"/>
+        <location filename="../app/RunPanel.cpp" line="503"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="504"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/RunPanel.cpp" line="506"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="506"/>
+        <location filename="../app/RunPanel.cpp" line="507"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="507"/>
+        <location filename="../app/RunPanel.cpp" line="508"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="517"/>
+        <location filename="../app/RunPanel.cpp" line="518"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/RunPanel.cpp" line="404"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="227"/>
-        <location filename="../app/RunPanel.cpp" line="240"/>
-        <location filename="../app/RunPanel.cpp" line="282"/>
-        <location filename="../app/RunPanel.cpp" line="288"/>
-        <location filename="../app/RunPanel.cpp" line="301"/>
-        <location filename="../app/RunPanel.cpp" line="312"/>
-        <location filename="../app/RunPanel.cpp" line="348"/>
-        <location filename="../app/RunPanel.cpp" line="394"/>
-        <location filename="../app/RunPanel.cpp" line="398"/>
-        <location filename="../app/RunPanel.cpp" line="438"/>
+        <location filename="../app/RunPanel.cpp" line="198"/>
+        <location filename="../app/RunPanel.cpp" line="228"/>
+        <location filename="../app/RunPanel.cpp" line="241"/>
+        <location filename="../app/RunPanel.cpp" line="283"/>
+        <location filename="../app/RunPanel.cpp" line="289"/>
+        <location filename="../app/RunPanel.cpp" line="302"/>
+        <location filename="../app/RunPanel.cpp" line="313"/>
+        <location filename="../app/RunPanel.cpp" line="349"/>
+        <location filename="../app/RunPanel.cpp" line="395"/>
+        <location filename="../app/RunPanel.cpp" line="399"/>
+        <location filename="../app/RunPanel.cpp" line="439"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="241"/>
+        <location filename="../app/RunPanel.cpp" line="242"/>
         <source>Run finished: 1 trial.</source>
         <translation>運行完成：1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="242"/>
+        <location filename="../app/RunPanel.cpp" line="243"/>
         <source>Run finished: %1 trials.</source>
         <translation>運行完成：%1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="349"/>
+        <location filename="../app/RunPanel.cpp" line="350"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="406"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="437"/>
+        <location filename="../app/RunPanel.cpp" line="438"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="439"/>
+        <location filename="../app/RunPanel.cpp" line="440"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="444"/>
+        <location filename="../app/RunPanel.cpp" line="445"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="447"/>
+        <location filename="../app/RunPanel.cpp" line="448"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="509"/>
+        <location filename="../app/RunPanel.cpp" line="510"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="511"/>
+        <location filename="../app/RunPanel.cpp" line="512"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="514"/>
+        <location filename="../app/RunPanel.cpp" line="515"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="515"/>
+        <location filename="../app/RunPanel.cpp" line="516"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="519"/>
+        <location filename="../app/RunPanel.cpp" line="520"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="520"/>
+        <location filename="../app/RunPanel.cpp" line="521"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="521"/>
+        <location filename="../app/RunPanel.cpp" line="522"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="523"/>
+        <location filename="../app/RunPanel.cpp" line="524"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="524"/>
+        <location filename="../app/RunPanel.cpp" line="525"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="527"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="527"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="527"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/RunPanel.cpp" line="529"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/RunPanel.cpp" line="529"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="530"/>
+        <location filename="../app/RunPanel.cpp" line="531"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="530"/>
+        <location filename="../app/RunPanel.cpp" line="531"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="531"/>
+        <location filename="../app/RunPanel.cpp" line="532"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="531"/>
+        <location filename="../app/RunPanel.cpp" line="532"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -4058,99 +4069,99 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="144"/>
+        <location filename="../rig/RigSession.cpp" line="145"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="274"/>
+        <location filename="../rig/RigSession.cpp" line="275"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="277"/>
+        <location filename="../rig/RigSession.cpp" line="278"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="312"/>
+        <location filename="../rig/RigSession.cpp" line="313"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="318"/>
+        <location filename="../rig/RigSession.cpp" line="319"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="340"/>
+        <location filename="../rig/RigSession.cpp" line="341"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="349"/>
+        <location filename="../rig/RigSession.cpp" line="350"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="352"/>
+        <location filename="../rig/RigSession.cpp" line="353"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="355"/>
+        <location filename="../rig/RigSession.cpp" line="356"/>
         <source>E-STOP is latched: reset it before a trial.</source>
         <translation>緊急停止已鎖定：試驗前請先重設。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="358"/>
-        <location filename="../rig/RigSession.cpp" line="770"/>
+        <location filename="../rig/RigSession.cpp" line="359"/>
+        <location filename="../rig/RigSession.cpp" line="771"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="369"/>
-        <location filename="../rig/RigSession.cpp" line="392"/>
+        <location filename="../rig/RigSession.cpp" line="370"/>
+        <location filename="../rig/RigSession.cpp" line="393"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="656"/>
+        <location filename="../rig/RigSession.cpp" line="657"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="659"/>
+        <location filename="../rig/RigSession.cpp" line="660"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="668"/>
+        <location filename="../rig/RigSession.cpp" line="669"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="730"/>
+        <location filename="../rig/RigSession.cpp" line="731"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="738"/>
+        <location filename="../rig/RigSession.cpp" line="739"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="767"/>
+        <location filename="../rig/RigSession.cpp" line="768"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="773"/>
+        <location filename="../rig/RigSession.cpp" line="774"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="786"/>
+        <location filename="../rig/RigSession.cpp" line="787"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

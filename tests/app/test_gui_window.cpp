@@ -214,6 +214,40 @@ class TestGuiWindow : public QObject {
         QVERIFY(!w.find<QLabel>("linkStatus")->text().contains(QLatin1String("no-such-camera")));
     }
 
+    void aVideoPlayedToItsEnd_isNoCameraFailure() {
+        QTemporaryDir dir;
+        const QString video = dir.filePath(QStringLiteral("short.avi"));
+        {
+            cv::VideoWriter writer(video.toStdString(), cv::CAP_OPENCV_MJPEG,
+                                   cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 40.0,
+                                   cv::Size(320, 240), true);
+            QVERIFY(writer.isOpened());
+            for (int k = 0; k < 20; ++k) {
+                writer.write(cv::Mat(240, 320, CV_8UC3, cv::Scalar(20, 20, 20)));
+            }
+        }
+        Window w;
+        auto* rig = w.find<RigPanel>("rigPanel");
+        w.find<QComboBox>("cameraSource")->setCurrentIndex(2);
+        w.find<QLineEdit>("cameraPath")->setText(video);
+        rig->startCamera();
+        auto* camera = w.find<QLabel>("cameraStatusField");
+        QTRY_COMPARE_WITH_TIMEOUT(camera->text(), QStringLiteral("Camera: video ended"), 15000);
+        QVERIFY2(camera->styleSheet().isEmpty(), qPrintable(camera->styleSheet()));  // no alarm
+        QVERIFY2(w.find<QLabel>("cameraInfo")->text().contains(QLatin1String("video ended")),
+                 qPrintable(w.find<QLabel>("cameraInfo")->text()));
+    }
+
+    void tab_leavesTheResultsTables() {
+        Window w;
+        QTableWidget* results = w.results();
+        results->setRowCount(2);
+        results->setFocus();
+        QTRY_VERIFY(results->hasFocus());
+        QTest::keyClick(results, Qt::Key_Tab);
+        QVERIFY(!results->hasFocus());
+    }
+
     void realCamera_withTheVirtualRigsCalibrationIsWarnedAndRefused() {
         QTemporaryDir dir;
         const QString video = dir.filePath(QStringLiteral("floor.avi"));
