@@ -1,6 +1,6 @@
 #include "app/ControllerPanel.h"
 
-#include "app/PlantText.h"
+#include "app/OperatorText.h"
 
 #include "app/MessageLog.h"
 

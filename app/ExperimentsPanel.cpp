@@ -6,6 +6,7 @@
 
 #include "app/EmergencyStop.h"
 #include "app/LabSession.h"
+#include "app/OperatorText.h"
 #include "app/figures/PaperFigures.h"
 #include "core/FileIo.h"
 #include "devices/ThreadHandOff.h"
@@ -639,17 +640,6 @@ int ExperimentsPanel::progressTotal() const {
     return progress_->maximum();
 }
 
-QString ExperimentsPanel::duration(qint64 ms) {
-    const qint64 s = (ms + 500) / 1000;
-    if (s < 60) {
-        return tr("%1 s").arg(s);
-    }
-    if (s < 3600) {
-        return tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
-    }
-    return tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
-}
-
 void ExperimentsPanel::showProgress() {
     if (!running_) {
         return;
@@ -662,12 +652,7 @@ void ExperimentsPanel::showProgress() {
     } else {
         const QString done = curves ? tr("Run %1 of %2 done").arg(done_).arg(total_)
                                     : tr("Trial %1 of %2 done").arg(done_).arg(total_);
-        // The rate so far, over what is left (the trials are alike; the first few include the
-        // training of the methods that train).
-        const QString left =
-            done_ > 0 ? tr("about %1 left").arg(duration(elapsed * (total_ - done_) / done_))
-                      : tr("estimating the time left");
-        text = tr("%1 · %2 so far · %3").arg(done, duration(elapsed), left);
+        text = QStringLiteral("%1 · %2").arg(done, progressTime(elapsed, done_, total_));
     }
     if (stoppedByEmergency_) {
         text = tr("E-STOP: stopping once the trials under way end. %1").arg(text);

@@ -64,9 +64,6 @@ class ExperimentsPanel : public QWidget {
     /// the panel was first shown included).
     bool eventFilter(QObject* watched, QEvent* event) override;
 
-    /// "1 min 05 s", "about 40 s": a duration in the operator's words.
-    static QString duration(qint64 ms);
-
   private:
     void retranslateUi();
     /// The status line while it runs: how far, how long so far, about how long is left.

@@ -1,6 +1,6 @@
 #include "app/LiveChartsPanel.h"
 
-#include "app/PlantText.h"
+#include "app/OperatorText.h"
 
 #include "app/ModalDialog.h"
 

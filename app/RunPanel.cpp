@@ -4,6 +4,7 @@
 
 #include "app/EmergencyStop.h"
 #include "app/LabSession.h"
+#include "app/OperatorText.h"
 #include "app/ModalDialog.h"
 #include "app/RunThread.h"
 #include "core/RunLogCsv.h"
@@ -225,8 +226,17 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency
     // The panel's own words, in the language of the moment (the worker's lines go to the status
     // bar, where they pass).
     connect(&run_, &RunThread::trialStarted, this, [this](int trial, int trials) {
-        showStatus(status_, tr("Run"), [this, trial, trials] {
-            return tr("Trial %1 of %2 running...").arg(trial + 1).arg(trials);
+        if (trial == 0) {
+            runClock_.start();  // from the first trial: training is before it
+        }
+        const qint64 elapsed = runClock_.isValid() ? runClock_.elapsed() : 0;
+        // Not logged: a line a trial would drown the log.
+        setTranslatedText(status_, [this, trial, trials, elapsed] {
+            return trial == 0 ? tr("Trial 1 of %1 running...").arg(trials)
+                              : tr("Trial %1 of %2 running · %3")
+                                    .arg(trial + 1)
+                                    .arg(trials)
+                                    .arg(progressTime(elapsed, trial, trials));
         });
     });
     connect(&run_, &RunThread::trainingProgress, this, [this](int done, int total) {

@@ -2,6 +2,7 @@
 
 #include "app/RunWorker.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 class QAction;
@@ -97,6 +98,7 @@ class RunPanel : public QWidget {
     QPushButton* divergenceRestart_;
     double firstTrialRms_ = 0.0;
     bool finishedSeen_ = false;    ///< the run under way told it finished
+    QElapsedTimer runClock_;       ///< since the run's first trial began
     bool restartPending_ = false;  ///< a new run once the stopped one is idle  ///< the run's first
                                    ///< finished trial, the yardstick
 };

@@ -420,6 +420,39 @@
     </message>
 </context>
 <context>
+    <name>OperatorText</name>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="27"/>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="30"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 分 %2 秒</translation>
+    </message>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="34"/>
+        <source>%1 h %2 min</source>
+        <translation>%1 小時 %2 分</translation>
+    </message>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="43"/>
+        <source>about %1 left</source>
+        <translation>約剩 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="45"/>
+        <source>estimating the time left</source>
+        <translation>正在估算剩餘時間</translation>
+    </message>
+    <message>
+        <location filename="../app/OperatorText.cpp" line="46"/>
+        <source>%1 so far · %2</source>
+        <translation>已用 %1 · %2</translation>
+    </message>
+</context>
+<context>
     <name>PaperFigures</name>
     <message>
         <location filename="../app/figures/PaperFigures.cpp" line="42"/>
@@ -498,27 +531,27 @@
 <context>
     <name>PlantControl</name>
     <message>
-        <location filename="../app/PlantText.cpp" line="10"/>
+        <location filename="../app/OperatorText.cpp" line="12"/>
         <source>throttle</source>
         <translation>油門</translation>
     </message>
     <message>
-        <location filename="../app/PlantText.cpp" line="11"/>
+        <location filename="../app/OperatorText.cpp" line="13"/>
         <source>steering</source>
         <translation>轉向</translation>
     </message>
     <message>
-        <location filename="../app/PlantText.cpp" line="12"/>
+        <location filename="../app/OperatorText.cpp" line="14"/>
         <source>rudder</source>
         <translation>方向舵</translation>
     </message>
     <message>
-        <location filename="../app/PlantText.cpp" line="13"/>
+        <location filename="../app/OperatorText.cpp" line="15"/>
         <source>left wheel</source>
         <translation>左輪</translation>
     </message>
     <message>
-        <location filename="../app/PlantText.cpp" line="14"/>
+        <location filename="../app/OperatorText.cpp" line="16"/>
         <source>right wheel</source>
         <translation>右輪</translation>
     </message>
@@ -801,318 +834,288 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="232"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="191"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="234"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="260"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="272"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="273"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="313"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="314"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="372"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="321"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="306"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="272"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="422"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="435"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="452"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="692"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="204"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="226"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="260"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="273"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="677"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="204"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="205"/>
         <source>E-STOP: the experiment stops once the trials under way end; what finished is kept and marked partial.</source>
         <translation>緊急停止：進行中的試驗結束後實驗即停止；已完成的部分會保留並標為不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="318"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="325"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="326"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="357"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="358"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="365"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="366"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="372"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="372"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="371"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="372"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="401"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="437"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="454"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
         <source>The last experiment, cancelled %1 (its rows are partial), is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 取消的實驗（各行不完整）；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="457"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="547"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="548"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="560"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="561"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="569"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="581"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="570"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="582"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="570"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="571"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="586"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="596"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="587"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="597"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="587"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="608"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="609"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="609"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="611"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="615"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="615"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="616"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="617"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="622"/>
         <source>Click to open the figure large</source>
         <translation>按一下以大圖打開</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="645"/>
-        <source>%1 s</source>
-        <translation>%1 秒</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="648"/>
-        <source>%1 min %2 s</source>
-        <translation>%1 分 %2 秒</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="650"/>
-        <source>%1 h %2 min</source>
-        <translation>%1 小時 %2 分</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="661"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="651"/>
         <source>Starting... %1 so far</source>
         <translation>正在開始……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="663"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="653"/>
         <source>Run %1 of %2 done</source>
         <translation>已完成第 %1 次運行（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="664"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="654"/>
         <source>Trial %1 of %2 done</source>
         <translation>已完成第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="668"/>
-        <source>about %1 left</source>
-        <translation>約剩 %1</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="669"/>
-        <source>estimating the time left</source>
-        <translation>正在估算剩餘時間</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="670"/>
-        <source>%1 · %2 so far · %3</source>
-        <translation>%1 · 已用 %2 · %3</translation>
-    </message>
-    <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="673"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="658"/>
         <source>E-STOP: stopping once the trials under way end. %1</source>
         <translation>緊急停止：進行中的試驗結束後即停止。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="675"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="660"/>
         <source>Cancelling: the trials under way finish first. %1</source>
         <translation>正在取消：先完成進行中的試驗。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="686"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="671"/>
         <source>Cancelled: %v of %m runs</source>
         <translation>已取消：完成 %v / %m 次運行</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="686"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="671"/>
         <source>Cancelled: %v of %m trials</source>
         <translation>已取消：完成 %v / %m 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="694"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="679"/>
         <source>Finished in %1.</source>
         <translation>用時 %1 完成。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="695"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="680"/>
         <source>Stopped by E-STOP after %1: the rows are partial.</source>
         <translation>%1 後被緊急停止：各行不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="696"/>
+        <location filename="../app/ExperimentsPanel.cpp" line="681"/>
         <source>Cancelled after %1: the rows are partial.</source>
         <translation>%1 後已取消：各行不完整。</translation>
     </message>
@@ -3167,319 +3170,323 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184"/>
-        <location filename="../app/RunPanel.cpp" line="194"/>
+        <location filename="../app/RunPanel.cpp" line="185"/>
+        <location filename="../app/RunPanel.cpp" line="195"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="185"/>
+        <location filename="../app/RunPanel.cpp" line="186"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="199"/>
+        <location filename="../app/RunPanel.cpp" line="200"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="362"/>
+        <location filename="../app/RunPanel.cpp" line="372"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="415"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="415"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="303"/>
+        <location filename="../app/RunPanel.cpp" line="313"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="212"/>
+        <location filename="../app/RunPanel.cpp" line="213"/>
         <source>the Run menu</source>
         <translation>「運行」選單</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="229"/>
-        <source>Trial %1 of %2 running...</source>
-        <translation>正在進行第 %1 次試驗（共 %2 次）……</translation>
-    </message>
-    <message>
-        <location filename="../app/RunPanel.cpp" line="234"/>
+        <location filename="../app/RunPanel.cpp" line="244"/>
         <source>Training before the run: %1 of %2...</source>
         <translation>運行前訓練：%1 / %2……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="235"/>
-        <location filename="../app/RunPanel.cpp" line="395"/>
+        <location filename="../app/RunPanel.cpp" line="245"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="284"/>
+        <location filename="../app/RunPanel.cpp" line="294"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="290"/>
+        <location filename="../app/RunPanel.cpp" line="300"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="399"/>
+        <location filename="../app/RunPanel.cpp" line="409"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/RunPanel.cpp" line="417"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="424"/>
+        <location filename="../app/RunPanel.cpp" line="434"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="431"/>
+        <location filename="../app/RunPanel.cpp" line="441"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="432"/>
+        <location filename="../app/RunPanel.cpp" line="442"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="447"/>
+        <location filename="../app/RunPanel.cpp" line="457"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="456"/>
+        <location filename="../app/RunPanel.cpp" line="466"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="491"/>
+        <location filename="../app/RunPanel.cpp" line="501"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="492"/>
+        <location filename="../app/RunPanel.cpp" line="502"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="493"/>
+        <location filename="../app/RunPanel.cpp" line="503"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="495"/>
+        <location filename="../app/RunPanel.cpp" line="505"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="497"/>
+        <location filename="../app/RunPanel.cpp" line="507"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="499"/>
+        <location filename="../app/RunPanel.cpp" line="509"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="501"/>
+        <location filename="../app/RunPanel.cpp" line="511"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="503"/>
+        <location filename="../app/RunPanel.cpp" line="513"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/RunPanel.cpp" line="515"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="506"/>
+        <location filename="../app/RunPanel.cpp" line="516"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="507"/>
+        <location filename="../app/RunPanel.cpp" line="517"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="508"/>
+        <location filename="../app/RunPanel.cpp" line="518"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="518"/>
+        <location filename="../app/RunPanel.cpp" line="528"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="404"/>
+        <location filename="../app/RunPanel.cpp" line="414"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="198"/>
-        <location filename="../app/RunPanel.cpp" line="228"/>
-        <location filename="../app/RunPanel.cpp" line="241"/>
-        <location filename="../app/RunPanel.cpp" line="283"/>
-        <location filename="../app/RunPanel.cpp" line="289"/>
-        <location filename="../app/RunPanel.cpp" line="302"/>
-        <location filename="../app/RunPanel.cpp" line="313"/>
-        <location filename="../app/RunPanel.cpp" line="349"/>
-        <location filename="../app/RunPanel.cpp" line="395"/>
-        <location filename="../app/RunPanel.cpp" line="399"/>
-        <location filename="../app/RunPanel.cpp" line="439"/>
+        <location filename="../app/RunPanel.cpp" line="199"/>
+        <location filename="../app/RunPanel.cpp" line="251"/>
+        <location filename="../app/RunPanel.cpp" line="293"/>
+        <location filename="../app/RunPanel.cpp" line="299"/>
+        <location filename="../app/RunPanel.cpp" line="312"/>
+        <location filename="../app/RunPanel.cpp" line="323"/>
+        <location filename="../app/RunPanel.cpp" line="359"/>
+        <location filename="../app/RunPanel.cpp" line="405"/>
+        <location filename="../app/RunPanel.cpp" line="409"/>
+        <location filename="../app/RunPanel.cpp" line="449"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="242"/>
+        <location filename="../app/RunPanel.cpp" line="235"/>
+        <source>Trial 1 of %1 running...</source>
+        <translation>正在進行第 1 次試驗（共 %1 次）……</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="236"/>
+        <source>Trial %1 of %2 running · %3</source>
+        <translation>正在進行第 %1 次試驗（共 %2 次）· %3</translation>
+    </message>
+    <message>
+        <location filename="../app/RunPanel.cpp" line="252"/>
         <source>Run finished: 1 trial.</source>
         <translation>運行完成：1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243"/>
+        <location filename="../app/RunPanel.cpp" line="253"/>
         <source>Run finished: %1 trials.</source>
         <translation>運行完成：%1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="350"/>
+        <location filename="../app/RunPanel.cpp" line="360"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="406"/>
+        <location filename="../app/RunPanel.cpp" line="416"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="438"/>
+        <location filename="../app/RunPanel.cpp" line="448"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="440"/>
+        <location filename="../app/RunPanel.cpp" line="450"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="445"/>
+        <location filename="../app/RunPanel.cpp" line="455"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="448"/>
+        <location filename="../app/RunPanel.cpp" line="458"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="510"/>
+        <location filename="../app/RunPanel.cpp" line="520"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="512"/>
+        <location filename="../app/RunPanel.cpp" line="522"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="515"/>
+        <location filename="../app/RunPanel.cpp" line="525"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="516"/>
+        <location filename="../app/RunPanel.cpp" line="526"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="520"/>
+        <location filename="../app/RunPanel.cpp" line="530"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="521"/>
+        <location filename="../app/RunPanel.cpp" line="531"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="522"/>
+        <location filename="../app/RunPanel.cpp" line="532"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="524"/>
+        <location filename="../app/RunPanel.cpp" line="534"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="525"/>
+        <location filename="../app/RunPanel.cpp" line="535"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/RunPanel.cpp" line="538"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/RunPanel.cpp" line="538"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/RunPanel.cpp" line="538"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="529"/>
+        <location filename="../app/RunPanel.cpp" line="539"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="529"/>
+        <location filename="../app/RunPanel.cpp" line="539"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="531"/>
+        <location filename="../app/RunPanel.cpp" line="541"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="531"/>
+        <location filename="../app/RunPanel.cpp" line="541"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="532"/>
+        <location filename="../app/RunPanel.cpp" line="542"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="532"/>
+        <location filename="../app/RunPanel.cpp" line="542"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>

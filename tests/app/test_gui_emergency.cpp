@@ -1,12 +1,15 @@
 // E-STOP over everything the window shows, one latch over every job, and the quit that keeps the
 // right run: driven offscreen with the keys and clicks an operator would use.
 #include "GuiTestSupport.h"
+#include "app/BundleChooser.h"
 #include "app/GamepadEmergencyButton.h"
+#include "app/ReplayDialog.h"
 
 #include <QKeySequenceEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QProgressBar>
+#include <QSlider>
 #include <QTextBrowser>
 
 #include <SDL.h>
@@ -204,6 +207,29 @@ class TestGuiEmergency : public QObject {
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
         QVERIFY(guide->isVisible());
         guide->close();
+    }
+
+    void emergencyStop_winsOverTheReplayWindow() {
+        Window w;
+        // A finished simulated trial leaves a bundle (the trials are kept as bundles).
+        w.setSpeedIndex(2);
+        w.find<QSpinBox>("trials")->setValue(1);
+        w.find<RunPanel>("runPanel")->startRun();
+        QTRY_COMPARE_WITH_TIMEOUT(w.results()->rowCount(), 1, kRunTimeoutMs);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        const QString trials =
+            QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                .filePath(QStringLiteral("trials"));
+        std::vector<BundleEntry> bundles;
+        QTRY_VERIFY((bundles = BundleChooser::scan({trials})).size() >= 1);
+        ReplayDialog* replay = w.window.openReplay(bundles.front().folder);
+        QVERIFY(replay);
+        startLongRun(w);
+        auto* slider = replay->findChild<QSlider*>(QStringLiteral("replaySlider"));
+        QTest::keyClick(slider, Qt::Key_Space);
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
+        QVERIFY(replay->isVisible());
+        replay->close();
     }
 
     void nothingRunning_spaceAndEscAreTheDialogsOwn() {

@@ -264,6 +264,22 @@ class TestGuiRun : public QObject {
         }
     }
 
+    void longRun_saysHowFarHowLongSoFarAndAboutHowLongIsLeft() {
+        Window w;
+        w.setSpeedIndex(1);  // 10x: a trial of 4 s in about 0.4 s
+        w.find<QSpinBox>("trials")->setValue(40);
+        w.find<RunPanel>("runPanel")->startRun();
+        auto* status = w.find<QLabel>("runStatus");
+        QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(QLatin1String("Trial 3 of 40 running")),
+                                  qPrintable(status->text()), kRunTimeoutMs);
+        QVERIFY2(status->text().contains(QLatin1String("so far")) &&
+                     status->text().contains(QLatin1String("left")),
+                 qPrintable(status->text()));
+        w.find<QAbstractButton>("stopButton")->click();
+        QTRY_COMPARE(w.window.run().phase(), RunPhase::Idle);
+        QTRY_VERIFY2(status->text().contains(QLatin1String("stopped")), qPrintable(status->text()));
+    }
+
     void divergingTrial_isShownWithAWayOut() {
         Window w;
         w.setSpeedIndex(0);

@@ -11,5 +11,10 @@ namespace prisca::app {
 QString controlName(const QString& name);
 /// Every control of a plant, named as above.
 QStringList controlNames(const QStringList& names);
+/// A duration in the operator's words: "40 s", "2 min 05 s", "1 h 20 min".
+QString duration(qint64 milliseconds);
+/// How far a job of `total` equal parts is and about how long is left, from the time the
+/// `done` parts took: "2 min 05 s so far · about 10 min left" (no estimate before the first).
+QString progressTime(qint64 elapsedMs, int done, int total);
 
 }  // namespace prisca::app
