@@ -145,6 +145,12 @@ bool EmergencyStopGuard::shielded(QObject* watched, const QWidget* top) const {
     if (button_ && (widget == button_ || button_->isAncestorOf(widget))) {
         return false;  // E-STOP is never blocked
     }
+    // A popup (a list the dialog dropped down, its file name completer, a tool tip) can only
+    // have been opened from the dialog: the windows under it take no input.
+    const Qt::WindowType type = widget->window()->windowType();
+    if (type == Qt::Popup || type == Qt::ToolTip) {
+        return false;
+    }
     return !within(widget->window(), top);
 }
 

@@ -232,6 +232,31 @@ class TestGuiEmergency : public QObject {
         replay->close();
     }
 
+    void aDialogsOwnPopups_takeTheKeys() {
+        // A popup a dialog opens may have no parent (the file dialog's name completer is such a
+        // window): the keys it takes must reach it, though it is no child of the dialog the
+        // other windows are kept from. (Before, the completer ate the path being typed.)
+        Window w;
+        bool picked = false;
+        QVERIFY(withDialog<QFileDialog>(
+            &w.window,
+            [&] {
+                w.activate();
+                QTest::keyClick(&w.window, Qt::Key_O, Qt::ControlModifier);
+            },
+            [&](QFileDialog* dialog) {
+                QMenu list;  // no parent, a popup of its own
+                QAction* first = list.addAction(QStringLiteral("/tmp/alpha.json"));
+                list.addAction(QStringLiteral("/tmp/beta.json"));
+                QObject::connect(first, &QAction::triggered, [&] { picked = true; });
+                list.popup(dialog->mapToGlobal(QPoint(40, 40)));
+                QTRY_VERIFY(QApplication::activePopupWidget() == &list);
+                QTest::keyClick(&list, Qt::Key_Down);
+                QTest::keyClick(&list, Qt::Key_Return);
+            }));
+        QVERIFY(picked);
+    }
+
     void nothingRunning_spaceAndEscAreTheDialogsOwn() {
         Window w;
         bool closedByEsc = false;
