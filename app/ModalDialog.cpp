@@ -10,6 +10,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QScreen>
+#include <QTimer>
 
 #include <algorithm>
 
@@ -22,6 +23,7 @@ const char* const kOrderProperty = "prisca.modalOrder";
 // A widget no dialog may cover (the E-STOP button).
 const char* const kKeepClearProperty = "prisca.keepClear";
 constexpr int kMargin = 8;  // px between a dialog and what it keeps clear of
+constexpr int kSettleMs = 200;  // a window manager frames and places a new window within this
 
 int nextOrder() {
     static int order = 0;  // GUI thread only
@@ -111,14 +113,32 @@ void ModalDialog::keepClearOf(QWidget* widget) {
 }
 
 void ModalDialog::placeClear(QWidget* window) {
+    placeClearNow(window);
+    // Once the window manager has framed and placed it (its title bar is known then, and it
+    // may have moved it), once more.
+    QPointer<QWidget> alive(window);
+    QTimer::singleShot(kSettleMs, window, [alive] {
+        if (alive && alive->isVisible()) {
+            placeClearNow(alive);
+        }
+    });
+}
+
+void ModalDialog::placeClearNow(QWidget* window) {
     QScreen* screen = window->screen() ? window->screen() : QGuiApplication::primaryScreen();
     if (!screen) {
         return;
     }
     const QRect available = screen->availableGeometry();
-    // The frame's allowance (a window manager's title bar and borders), if it has one yet.
-    const QSize frameExtra = window->frameGeometry().size() - window->geometry().size();
+    // The frame's allowance (a window manager's title bar and borders); before the window
+    // manager has framed it, a title bar's worth is assumed above it.
+    QSize frameExtra = window->frameGeometry().size() - window->geometry().size();
     QRect frame = window->frameGeometry();
+    if (frameExtra.isNull()) {
+        const int titleBar = window->fontMetrics().height() + 14;
+        frameExtra = QSize(0, titleBar);
+        frame.setTop(frame.top() - titleBar);
+    }
     const auto fitInside = [&] {
         frame.setSize(frame.size().boundedTo(available.size()));
         frame.moveLeft(std::clamp(frame.left(), available.left(), available.right() - frame.width() + 1));
@@ -145,7 +165,7 @@ void ModalDialog::placeClear(QWidget* window) {
     if (inner != window->size()) {
         window->resize(inner);
     }
-    window->move(frame.topLeft());
+    window->move(frame.topLeft());  // a top-level's position is its frame's
 }
 
 QString ModalDialog::openFileName(QWidget* parent, const QString& caption, const QString& dir,

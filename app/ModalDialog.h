@@ -51,6 +51,9 @@ class ModalDialog {
     /// A line of text; empty when cancelled.
     static std::optional<QString> text(QWidget* parent, const QString& title, const QString& label,
                                        const QString& initial = QString());
+
+  private:
+    static void placeClearNow(QWidget* window);
 };
 
 }  // namespace prisca::app
