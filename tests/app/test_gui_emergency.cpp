@@ -296,11 +296,19 @@ class TestGuiEmergency : public QObject {
         experiments->start();  // called directly: refused all the same
         QVERIFY(!experiments->isRunning());
         QVERIFY(status->text().contains(QLatin1String("Reset E-STOP")));
+        auto* rig = w.find<RigPanel>("rigPanel");
+        QVERIFY(!rig->runTrial());
+        auto* rigInfo = w.find<QLabel>("rigTrialInfo");
+        QVERIFY2(rigInfo->text().contains(QLatin1String("Reset E-STOP")), qPrintable(rigInfo->text()));
         w.find<RecordPanel>("recordPanel")->startCountdown();
         QVERIFY(!w.find<RecordPanel>("recordPanel")->isRecording());
         QVERIFY(w.window.workInProgress().isEmpty());
         w.find<QAbstractButton>("resetEmergencyButton")->click();
         QVERIFY(!w.window.emergencyStop().isLatched());
+        // What the Rig panel said of the latch is gone with it.
+        QVERIFY2(!rigInfo->text().contains(QLatin1String("latched")) &&
+                     rigInfo->text().contains(QLatin1String("E-STOP is reset")),
+                 qPrintable(rigInfo->text()));
         QVERIFY(w.find<QAbstractButton>("startExperiment")->isEnabled());
         QVERIFY(w.find<QAbstractButton>("recordButton")->isEnabled());
         QVERIFY(w.find<QAbstractButton>("runOnRig")->isEnabled());
