@@ -29,7 +29,8 @@ run: build
 test: build
 	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j $(JOBS) -LE benchmark
 
-# AddressSanitizer + UndefinedBehaviorSanitizer on the whole suite; ThreadSanitizer on the tests
+# AddressSanitizer + UndefinedBehaviorSanitizer on the whole suite (less the minutes-long
+# tests labelled slow, whose code the quick ones run too); ThreadSanitizer on the tests
 # whose code runs on several threads (link, camera, rig loop and session, virtual rig, GUI runs,
 # recordings). Suppressions name third-party code only (tests/sanitizers/*.supp say why).
 SANITIZER_DIR := $(CURDIR)/tests/sanitizers
@@ -43,7 +44,7 @@ check-sanitizers: deps
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1 \
 	  LSAN_OPTIONS=suppressions=$(SANITIZER_DIR)/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --output-on-failure -j $(JOBS) -LE benchmark
+	  ctest --output-on-failure -j $(JOBS) -LE 'benchmark|slow'
 	@test -f build-tsan/build.ninja || cmake --preset tsan
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS) record_child
 	cd build-tsan && QT_QPA_PLATFORM=offscreen \

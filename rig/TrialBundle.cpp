@@ -3,17 +3,17 @@
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
 
-#include <algorithm>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <algorithm>
 
 #include <opencv2/imgcodecs.hpp>
 
-#include <cmath>
 #include <unistd.h>
+#include <cmath>
 
 namespace prisca::rig {
 
@@ -66,8 +66,9 @@ bool TrialBundleWriter::open(const QString& folder, const QJsonObject& header,
         *error = QStringLiteral("%1: cannot write samples.csv").arg(folder);
         return false;
     }
-    pending_ = "# prisca-trial-samples 1\n# t [s]; frame (-1: simulation); found; x, y [m], psi "
-               "[rad]; s0.. the controller's observation; u0.. its command; failsafe\n";
+    pending_ =
+        "# prisca-trial-samples 1\n# t [s]; frame (-1: simulation); found; x, y [m], psi "
+        "[rad]; s0.. the controller's observation; u0.. its command; failsafe\n";
     return flush();
 }
 
@@ -98,16 +99,15 @@ bool TrialBundleWriter::addFrame(long long frame, const cv::Mat& image) {
     if (folder_.isEmpty() || image.empty()) {
         return false;
     }
-    const QString path = QStringLiteral("%1/frames/%2.jpg").arg(folder_).arg(frame, 6, 10,
-                                                                            QLatin1Char('0'));
+    const QString path =
+        QStringLiteral("%1/frames/%2.jpg").arg(folder_).arg(frame, 6, 10, QLatin1Char('0'));
     std::vector<uchar> bytes;
     if (!cv::imencode(".jpg", image, bytes, {cv::IMWRITE_JPEG_QUALITY, 85})) {
         return false;
     }
     core::FileError error;
     return core::writeFileAtomically(
-        path, QByteArray(reinterpret_cast<const char*>(bytes.data()), int(bytes.size())),
-        &error);
+        path, QByteArray(reinterpret_cast<const char*>(bytes.data()), int(bytes.size())), &error);
 }
 
 bool TrialBundleWriter::flush() {
@@ -182,8 +182,8 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         return std::nullopt;
     }
     b.demonstration = std::make_shared<core::Demonstration>(std::move(*demo));
-    const auto csv = core::readFileBounded(dir.filePath("samples.csv"), qint64(1) << 30,
-                                           &fileError);
+    const auto csv =
+        core::readFileBounded(dir.filePath("samples.csv"), qint64(1) << 30, &fileError);
     if (!csv) {
         *error = fileError.toString();
         return std::nullopt;
@@ -218,8 +218,8 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         sample.failsafe = f.last() == "1";
         b.samples.push_back(std::move(sample));
     }
-    for (const QString& name : QDir(dir.filePath("frames")).entryList({"*.jpg"}, QDir::Files,
-                                                                       QDir::Name)) {
+    for (const QString& name :
+         QDir(dir.filePath("frames")).entryList({"*.jpg"}, QDir::Files, QDir::Name)) {
         b.frames.emplace_back(QFileInfo(name).baseName().toLongLong(),
                               dir.filePath("frames/" + name));
     }
@@ -301,6 +301,67 @@ QJsonObject summarizeBundle(const TrialBundle& bundle) {
         o.insert("result", bundle.header.value("result"));
     }
     return o;
+}
+
+std::vector<core::Demonstration> recordedRuns(const TrialBundle& bundle) {
+    std::vector<core::Demonstration> runs;
+    if (!bundle.demonstration || bundle.samples.size() < 2) {
+        return runs;
+    }
+    const core::Demonstration& demonstration = *bundle.demonstration;
+    const size_t n = static_cast<size_t>(demonstration.stateDimension());
+    const size_t m = static_cast<size_t>(demonstration.actionDimension());
+    std::vector<double> spacing;
+    for (size_t i = 1; i < bundle.samples.size(); ++i) {
+        spacing.push_back(bundle.samples[i].t - bundle.samples[i - 1].t);
+    }
+    std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
+    const double dt = spacing[spacing.size() / 2];
+    if (!(dt > 0.0)) {
+        return runs;
+    }
+    std::vector<const BundleSample*> part;
+    auto flush = [&] {
+        if (part.size() >= 10) {
+            core::Demonstration run;
+            run.plant = demonstration.plant;
+            run.dt = dt;
+            run.stateNames = demonstration.stateNames;
+            run.stateUnits = demonstration.stateUnits;
+            run.actionNames = demonstration.actionNames;
+            run.actionUnits = demonstration.actionUnits;
+            const int length = static_cast<int>(part.size());
+            run.time.resize(length);
+            run.states.resize(length, static_cast<int>(n));
+            run.actions.resize(length, static_cast<int>(m));
+            for (int k = 0; k < length; ++k) {
+                run.time[k] = part[static_cast<size_t>(k)]->t;
+                for (size_t j = 0; j < n; ++j) {
+                    run.states(k, static_cast<int>(j)) = part[static_cast<size_t>(k)]->state[j];
+                }
+                for (size_t j = 0; j < m; ++j) {
+                    run.actions(k, static_cast<int>(j)) = part[static_cast<size_t>(k)]->action[j];
+                }
+            }
+            run.metadata.insert(QStringLiteral("source"), QStringLiteral("%1 (from t = %2 s)")
+                                                              .arg(bundle.folder)
+                                                              .arg(run.time[0], 0, 'f', 2));
+            runs.push_back(std::move(run));
+        }
+        part.clear();
+    };
+    for (const BundleSample& sample : bundle.samples) {
+        const bool usable = sample.found && !sample.failsafe && sample.state.size() == n &&
+                            sample.action.size() == m;
+        if (!usable || (!part.empty() && sample.t - part.back()->t > 1.5 * dt)) {
+            flush();
+        }
+        if (usable) {
+            part.push_back(&sample);
+        }
+    }
+    flush();
+    return runs;
 }
 
 }  // namespace prisca::rig

@@ -85,6 +85,13 @@ bool writeSimulationBundle(const QString& folder, QJsonObject header, const sim:
                            const sim::EpisodeResult& result, const sim::TrialSummary& summary,
                            QString* error);
 
+/// The bundle's samples as recorded runs for identification: the observation each sample
+/// carried and its command, at the samples' own period (their median spacing), split where a
+/// pose or a command is missing (a lost track, a failsafe) or the samples skip a period. Runs
+/// shorter than 10 samples are dropped. Each run's metadata "source" names the bundle and the
+/// part.
+std::vector<core::Demonstration> recordedRuns(const TrialBundle& bundle);
+
 /// The bundle's scores from its samples: duration, frames, frames with a pose, commands in
 /// failsafe, and where the last pose stopped relative to the demonstration's end (position
 /// [m], heading [rad]); what `prisca-cli replay` prints.

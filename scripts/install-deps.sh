@@ -8,7 +8,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     qt6-base-dev qt6-charts-dev libqt6opengl6-dev qt6-serialport-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
-    libgl-dev libeigen3-dev libopencv-dev libbox2d-dev libsdl2-dev
+    libgl-dev libeigen3-dev libopencv-dev libbox2d-dev libsdl2-dev libnlopt-dev
     gcc-avr avr-libc binutils-avr libsimavr-dev libelf-dev
     xvfb xauth
     qt6-svg-dev qt6-translations-l10n fonts-noto-cjk

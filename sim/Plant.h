@@ -131,6 +131,13 @@ class Plant {
     /// Applies the action (size m; clamped to the limits, then perturbed as the trial says) for
     /// one control period. Returns the new state. Throws std::invalid_argument on a wrong size.
     virtual Eigen::VectorXd step(const Eigen::VectorXd& action) = 0;
+    /// After resetTo: runs these commands (one per control period, oldest first) through the
+    /// actuators alone (dead times, servo), not the body, so the commands of the last steps are
+    /// still in flight as they would be on the plant (identification restarts the plant at
+    /// recorded states). Plants without actuator dynamics ignore it.
+    virtual void primeActuators(const std::vector<Eigen::VectorXd>& recentActions) {
+        (void)recentActions;
+    }
 
     /// An independent copy of this trial's plant as it is now: the same perturbed parameters,
     /// wind, commands in flight and state, for a planner that simulates ahead (the oracle).

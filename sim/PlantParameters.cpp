@@ -30,6 +30,11 @@ struct Field {
     double upper;
     const char* description;
     double& (*ref)(P&);
+    /// An effect the identification model leaves out: in the file's "unmodelled" group, with
+    /// the value a real plant of this size has and where that value comes from.
+    bool unmodelled = false;
+    double realistic = 0.0;
+    const char* realisticSource = "";
 };
 
 // The slide-car's parameters: a 1:10 to 1:8 car. The ranges keep the model physical (positive
@@ -58,11 +63,9 @@ const std::vector<Field<SlideCarParameters>>& slideCarFields() {
          [](P& p) -> double& { return p.staticFriction; }},
         {"kineticFriction", "1", 0.05, 2.0, "front tyres' sliding friction coefficient",
          [](P& p) -> double& { return p.kineticFriction; }},
-        {"rearStaticGrip", "1", 0.2, 2.0,
-         "rear tyres' static friction as a share of the front's",
+        {"rearStaticGrip", "1", 0.2, 2.0, "rear tyres' static friction as a share of the front's",
          [](P& p) -> double& { return p.rearGripRatio; }},
-        {"rearKineticGrip", "1", 0.2, 2.0,
-         "rear tyres' sliding friction as a share of the front's",
+        {"rearKineticGrip", "1", 0.2, 2.0, "rear tyres' sliding friction as a share of the front's",
          [](P& p) -> double& { return p.rearKineticGripRatio; }},
         {"maxDriveForce", "N", 0.5, 100.0,
          "traction of all four wheels at standstill and full throttle",
@@ -81,6 +84,35 @@ const std::vector<Field<SlideCarParameters>>& slideCarFields() {
          [](P& p) -> double& { return p.rollingResistance; }},
         {"drivelineDrag", "N s/m", 0.0, 10.0, "viscous drag of motor and gears when coasting",
          [](P& p) -> double& { return p.drivelineDrag; }},
+        // The reality gap (docs/architecture.md "Plants"): each off at its catalog value.
+        {"tyreStiffness", "1/rad", 0.0, 40.0,
+         "tyres on a saturating Magic Formula curve coupling drive and side slip: cornering "
+         "stiffness per unit load (0: Coulomb stick-slip)",
+         [](P& p) -> double& { return p.tyreStiffness; }, true, 8.0,
+         "rubber tyres' cornering stiffness is 5-20 per rad per unit load; small, soft, "
+         "low-pressure tyres sit low in that range"},
+        {"servoBacklash", "rad", 0.0, 0.2,
+         "play in the steering linkage the servo must take up before the wheels turn (0: none)",
+         [](P& p) -> double& { return p.servoBacklash; }, true, 0.035,
+         "a hobby servo's dead band with a plastic linkage and ball joints leaves 1-3 deg of "
+         "wheel angle"},
+        {"motorStallRatio", "1", 1.0, 5.0,
+         "the brushed motor's stall force as a multiple of the ESC's current limit: flat, then "
+         "falling steeply with speed (1: the linear law)",
+         [](P& p) -> double& { return p.motorStallRatio; }, true, 2.0,
+         "a 540-size brushed motor stalls at 40-80 A; hobby car ESCs limit the current to 20-40 "
+         "A"},
+        {"escDeadband", "1", 0.0, 0.3,
+         "the ESC's neutral band as a share of full throttle (0: none)",
+         [](P& p) -> double& { return p.escDeadband; }, true, 0.05,
+         "hobby car ESCs ship with a neutral range of 3-8 % of full throttle"},
+        {"patchFriction", "1", 0.3, 1.5,
+         "grip of every other square of floor as a share of the rest (1: an even floor)",
+         [](P& p) -> double& { return p.patchFriction; }, true, 0.85,
+         "a lab floor's friction varies 10-20 % between clean and dusty areas, tape and mats"},
+        {"patchSize", "m", 0.05, 5.0, "side of the floor's squares of other grip",
+         [](P& p) -> double& { return p.patchSize; }, true, 0.5,
+         "floor tiles and mats are 0.3-1 m across"},
     };
     return fields;
 }
@@ -120,7 +152,8 @@ const std::vector<Field<PlanarAircraftParameters>>& aircraftFields() {
          [](P& p) -> double& { return p.yawInertia; }},
         {"wingArea", "m^2", 0.02, 5.0, "reference wing area S",
          [](P& p) -> double& { return p.wingArea; }},
-        {"wingSpan", "m", 0.2, 10.0, "reference span b", [](P& p) -> double& { return p.wingSpan; }},
+        {"wingSpan", "m", 0.2, 10.0, "reference span b",
+         [](P& p) -> double& { return p.wingSpan; }},
         {"airDensity", "kg/m^3", 0.5, 1.5, "air density rho",
          [](P& p) -> double& { return p.airDensity; }},
         {"zeroLiftDrag", "1", 0.005, 0.3, "zero-lift drag coefficient CD0",
@@ -181,8 +214,17 @@ std::vector<PlantParameterSpec> specsOf(const std::vector<Field<P>>& fields) {
     std::vector<PlantParameterSpec> specs;
     P defaults{};
     for (const Field<P>& f : fields) {
-        specs.push_back({QString::fromLatin1(f.key), QString::fromUtf8(f.unit), f.lower, f.upper,
-                         f.ref(defaults), QString::fromUtf8(f.description)});
+        PlantParameterSpec spec;
+        spec.key = QString::fromLatin1(f.key);
+        spec.unit = QString::fromUtf8(f.unit);
+        spec.lower = f.lower;
+        spec.upper = f.upper;
+        spec.value = f.ref(defaults);
+        spec.description = QString::fromUtf8(f.description);
+        spec.unmodelled = f.unmodelled;
+        spec.realistic = f.unmodelled ? f.realistic : f.ref(defaults);
+        spec.realisticSource = QString::fromUtf8(f.realisticSource);
+        specs.push_back(spec);
     }
     return specs;
 }
@@ -228,22 +270,25 @@ QString relationProblem(const QString& plant, const std::vector<PlantParameterSp
     auto at = [&](const char* key) { return v[static_cast<size_t>(indexOf(specs, key))]; };
     if (plant == QLatin1String("slidecar")) {
         if (at("kineticFriction") > at("staticFriction")) {
-            return QStringLiteral("kineticFriction = %1 is above staticFriction = %2 (a sliding "
-                                  "tyre grips less than a rolling one)")
+            return QStringLiteral(
+                       "kineticFriction = %1 is above staticFriction = %2 (a sliding "
+                       "tyre grips less than a rolling one)")
                 .arg(number(at("kineticFriction")), number(at("staticFriction")));
         }
         const double rearStatic = at("staticFriction") * at("rearStaticGrip");
         const double rearKinetic = at("kineticFriction") * at("rearKineticGrip");
         if (rearKinetic > rearStatic) {
-            return QStringLiteral("the rear tyres' sliding friction (kineticFriction x "
-                                  "rearKineticGrip = %1) is above their static friction "
-                                  "(staticFriction x rearStaticGrip = %2): a sliding tyre grips "
-                                  "less than a rolling one")
+            return QStringLiteral(
+                       "the rear tyres' sliding friction (kineticFriction x "
+                       "rearKineticGrip = %1) is above their static friction "
+                       "(staticFriction x rearStaticGrip = %2): a sliding tyre grips "
+                       "less than a rolling one")
                 .arg(number(rearKinetic), number(rearStatic));
         }
         if (std::abs(at("cgForward")) >= 0.45 * at("wheelbase")) {
-            return QStringLiteral("cgForward = %1 m puts the centre of mass over an axle of the "
-                                  "%2 m wheelbase (|cgForward| must stay below 0.45 wheelbase)")
+            return QStringLiteral(
+                       "cgForward = %1 m puts the centre of mass over an axle of the "
+                       "%2 m wheelbase (|cgForward| must stay below 0.45 wheelbase)")
                 .arg(number(at("cgForward")), number(at("wheelbase")));
         }
         if (at("wheelbase") > at("length")) {
@@ -347,8 +392,8 @@ QString plantParametersProblem(const QString& plant, const std::vector<double>& 
 }
 
 std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
-                                                    const QString& sourceName,
-                                                    const QString& plant, QString* error) {
+                                                    const QString& sourceName, const QString& plant,
+                                                    QString* error) {
     auto fail = [&](const QString& why) -> std::optional<PlantParameters> {
         if (error) {
             *error = QStringLiteral("%1: %2").arg(sourceName, why);
@@ -363,18 +408,21 @@ std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
                         .arg(parseError.errorString()));
     }
     if (!document.isObject()) {
-        return fail(QStringLiteral("valid JSON, but not a plant file (an object with \"plant\" "
-                                   "and \"parameters\" is expected)"));
+        return fail(
+            QStringLiteral("valid JSON, but not a plant file (an object with \"plant\" "
+                           "and \"parameters\" is expected)"));
     }
     const QJsonObject root = document.object();
     for (auto it = root.begin(); it != root.end(); ++it) {
         const QString key = it.key();
         if (key != QLatin1String("plant") && key != QLatin1String("parameters") &&
-            key != QLatin1String("format") && key != QLatin1String("version") &&
-            key != QLatin1String("description")) {
+            key != QLatin1String("unmodelled") && key != QLatin1String("format") &&
+            key != QLatin1String("version") && key != QLatin1String("description") &&
+            key != QLatin1String("identification")) {
             return fail(QStringLiteral("unknown key \"%1\" (a plant file has \"plant\", "
-                                       "\"parameters\" and optionally \"format\", \"version\", "
-                                       "\"description\")")
+                                       "\"parameters\" and optionally \"unmodelled\", "
+                                       "\"format\", \"version\", \"description\", "
+                                       "\"identification\")")
                             .arg(key));
         }
     }
@@ -408,7 +456,39 @@ std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
     const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(filePlant);
     PlantParameters result = defaultPlantParameters(filePlant);
     result.source = sourceName;
-    const QJsonObject parameters = parametersValue.toObject();
+    const QJsonValue unmodelledValue = root.value(QLatin1String("unmodelled"));
+    if (!unmodelledValue.isUndefined() && !unmodelledValue.isObject()) {
+        return fail(QStringLiteral("\"unmodelled\" is not an object"));
+    }
+    // The model's parameters and the effects it leaves out, each in its own group (a file may
+    // also give an unmodelled effect among the parameters).
+    QJsonObject parameters = parametersValue.toObject();
+    const QJsonObject unmodelled = unmodelledValue.toObject();
+    for (auto it = unmodelled.begin(); it != unmodelled.end(); ++it) {
+        bool isUnmodelled = false;
+        for (const PlantParameterSpec& spec : specs) {
+            isUnmodelled = isUnmodelled || (spec.key == it.key() && spec.unmodelled);
+        }
+        if (!isUnmodelled) {
+            QStringList known;
+            for (const PlantParameterSpec& spec : specs) {
+                if (spec.unmodelled) {
+                    known << spec.key;
+                }
+            }
+            return fail(QStringLiteral("\"%1\" is not an unmodelled effect of the %2 (%3)")
+                            .arg(it.key(), filePlant,
+                                 known.isEmpty() ? QStringLiteral("it has none")
+                                                 : QStringLiteral("those are: ") +
+                                                       known.join(QStringLiteral(", "))));
+        }
+        if (parameters.contains(it.key())) {
+            return fail(QStringLiteral("%1 is given twice, in \"parameters\" and in "
+                                       "\"unmodelled\"")
+                            .arg(it.key()));
+        }
+        parameters.insert(it.key(), it.value());
+    }
     for (auto it = parameters.begin(); it != parameters.end(); ++it) {
         int index = -1;
         for (size_t i = 0; i < specs.size(); ++i) {
@@ -430,9 +510,9 @@ std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
             const QJsonObject entry = value.toObject();
             if (entry.contains(QLatin1String("unit")) &&
                 entry.value(QLatin1String("unit")).toString() != spec.unit) {
-                return fail(QStringLiteral("%1 is given in \"%2\"; its unit is \"%3\"")
-                                .arg(spec.key, entry.value(QLatin1String("unit")).toString(),
-                                     spec.unit));
+                return fail(
+                    QStringLiteral("%1 is given in \"%2\"; its unit is \"%3\"")
+                        .arg(spec.key, entry.value(QLatin1String("unit")).toString(), spec.unit));
             }
             value = entry.value(QLatin1String("value"));
         }
@@ -465,18 +545,28 @@ std::optional<PlantParameters> readPlantParameters(const QString& path, const QS
 QByteArray plantParametersJson(const PlantParameters& parameters) {
     const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(parameters.plant);
     QJsonObject values;
+    QJsonObject unmodelled;
     for (size_t i = 0; i < specs.size() && i < parameters.values.size(); ++i) {
         const PlantParameterSpec& s = specs[i];
-        values.insert(s.key, QJsonObject{{"value", parameters.values[i]},
-                                         {"unit", s.unit},
-                                         {"min", s.lower},
-                                         {"max", s.upper},
-                                         {"description", s.description}});
+        QJsonObject entry{{"value", parameters.values[i]},
+                          {"unit", s.unit},
+                          {"min", s.lower},
+                          {"max", s.upper},
+                          {"description", s.description}};
+        if (s.unmodelled) {
+            entry.insert(QStringLiteral("off"), s.value);
+            entry.insert(QStringLiteral("realistic"), s.realistic);
+            entry.insert(QStringLiteral("realisticSource"), s.realisticSource);
+            unmodelled.insert(s.key, entry);
+        } else {
+            values.insert(s.key, entry);
+        }
     }
-    QJsonObject root{{"format", kFormat},
-                     {"version", 1},
-                     {"plant", parameters.plant},
-                     {"parameters", values}};
+    QJsonObject root{
+        {"format", kFormat}, {"version", 1}, {"plant", parameters.plant}, {"parameters", values}};
+    if (!unmodelled.isEmpty()) {
+        root.insert(QStringLiteral("unmodelled"), unmodelled);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -486,22 +576,29 @@ QString plantParametersText(const PlantParameters& parameters) {
     int rangeWidth = 0;
     for (const PlantParameterSpec& s : specs) {
         width = std::max(width, static_cast<int>(s.key.size()));
-        rangeWidth = std::max(rangeWidth, static_cast<int>(number(s.lower).size() +
-                                                           number(s.upper).size() + 4));
+        rangeWidth = std::max(
+            rangeWidth, static_cast<int>(number(s.lower).size() + number(s.upper).size() + 4));
     }
-    QString text = QStringLiteral("%1 parameters%2\n")
-                       .arg(parameters.plant,
-                            parameters.source.isEmpty()
-                                ? QStringLiteral(" (the catalog's)")
-                                : QStringLiteral(" from %1").arg(parameters.source));
+    QString text =
+        QStringLiteral("%1 parameters%2\n")
+            .arg(parameters.plant, parameters.source.isEmpty()
+                                       ? QStringLiteral(" (the catalog's)")
+                                       : QStringLiteral(" from %1").arg(parameters.source));
+    bool groupShown = false;
     for (size_t i = 0; i < specs.size() && i < parameters.values.size(); ++i) {
         const PlantParameterSpec& s = specs[i];
-        text += QStringLiteral("  %1  %2  %3  %4\n")
-                    .arg(s.key, -width)
-                    .arg(withUnit(parameters.values[i], s.unit), -16)
-                    .arg(QStringLiteral("[%1, %2]").arg(number(s.lower), number(s.upper)),
-                         -rangeWidth)
-                    .arg(s.description);
+        if (s.unmodelled && !groupShown) {
+            text += QStringLiteral(
+                "unmodelled (effects identification leaves out; off at the "
+                "catalog's values):\n");
+            groupShown = true;
+        }
+        text +=
+            QStringLiteral("  %1  %2  %3  %4\n")
+                .arg(s.key, -width)
+                .arg(withUnit(parameters.values[i], s.unit), -16)
+                .arg(QStringLiteral("[%1, %2]").arg(number(s.lower), number(s.upper)), -rangeWidth)
+                .arg(s.description);
     }
     return text;
 }

@@ -22,6 +22,11 @@ struct PlantParameterSpec {
     double upper = 0.0;   ///< largest allowed value
     double value = 0.0;   ///< the catalog plant's value
     QString description;  ///< one line for the operator
+    /// An effect the identification model leaves out (the reality gap): off at its catalog
+    /// value, in the file's "unmodelled" group, and never fitted by identification.
+    bool unmodelled = false;
+    double realistic = 0.0;   ///< unmodelled: the value a real plant of this size has
+    QString realisticSource;  ///< unmodelled: where that value comes from
 };
 
 /// A plant's physical parameters: one value per key its catalog entry declares, in that order,
@@ -50,7 +55,8 @@ PlantParameters defaultPlantParameters(const QString& plant);
 /// wrong, naming the key, the value and the range ("mass = 50 kg is outside [0.3, 10] kg").
 QString plantParametersProblem(const QString& plant, const std::vector<double>& values);
 
-/// Reads a plant file (JSON): {"plant": NAME, "parameters": {KEY: VALUE, ...}}, a VALUE being a
+/// Reads a plant file (JSON): {"plant": NAME, "parameters": {KEY: VALUE, ...}, and optionally
+/// "unmodelled": {KEY: VALUE, ...} for the effects the identification model leaves out}, a VALUE being a
 /// number or an object with "value" (and, if given, a "unit" that must be the declared one; the
 /// other fields, as --print-params writes them, are documentation). Keys not in the file keep
 /// the catalog's values. With `plant` non-empty the file must be of that plant. On failure

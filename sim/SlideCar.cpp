@@ -85,6 +85,7 @@ void SlideCar::build(double x, double y, double psi, double vx, double vy, doubl
     body_->SetAngularVelocity(static_cast<float>(r));
     time_ = 0.0;
     steeringAngle_ = 0.0;
+    servoAngle_ = 0.0;
     longitudinalAcceleration_ = 0.0;
     sliding_ = {false, false};
     throttleQueue_.assign(delaySteps(parameters_.throttleDelay, timing_), 0.0);
@@ -144,6 +145,7 @@ std::unique_ptr<Plant> SlideCar::clone(bool actuatorNoise) const {
     copyMotion(*body_, *copy->body_);
     copy->time_ = time_;
     copy->steeringAngle_ = steeringAngle_;
+    copy->servoAngle_ = servoAngle_;
     copy->longitudinalAcceleration_ = longitudinalAcceleration_;
     copy->sliding_ = sliding_;
     copy->throttleQueue_ = throttleQueue_;
@@ -187,22 +189,48 @@ Eigen::VectorXd SlideCar::step(const Eigen::VectorXd& action) {
     return state();
 }
 
-void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
+void SlideCar::primeActuators(const std::vector<Eigen::VectorXd>& recentActions) {
+    for (const Eigen::VectorXd& action : recentActions) {
+        if (action.size() != 2) {
+            throw std::invalid_argument("SlideCar::primeActuators: actions of 2 values needed");
+        }
+        const double throttle = std::isfinite(action[0]) ? std::clamp(action[0], -1.0, 1.0) : 0.0;
+        const double steering = std::isfinite(action[1]) ? std::clamp(action[1], -1.0, 1.0) : 0.0;
+        for (int i = 0; i < timing_.physicsSubsteps; ++i) {
+            actuatorStep(throttle, steering);
+        }
+    }
+}
+
+std::pair<double, double> SlideCar::actuatorStep(double throttleCommand, double steeringCommand) {
     const SlideCarParameters& p = parameters_;
     const double h = timing_.physicsStep();
-
     // Dead times: the command applied now is the one queued delay steps ago.
     throttleQueue_.push_back(throttleCommand);
     steeringQueue_.push_back(steeringCommand);
-    const double throttle = std::clamp(throttleQueue_.front() * throttleGain_, -1.0, 1.0);
+    double throttle = std::clamp(throttleQueue_.front() * throttleGain_, -1.0, 1.0);
+    if (p.escDeadband > 0.0) {
+        // The ESC's neutral band; what is left is stretched over the whole range.
+        const double magnitude = std::max(0.0, std::abs(throttle) - p.escDeadband);
+        throttle = std::copysign(magnitude / (1.0 - p.escDeadband), throttle);
+    }
     const double steering = std::clamp(steeringQueue_.front() + steeringTrim_, -1.0, 1.0);
     throttleQueue_.pop_front();
     steeringQueue_.pop_front();
 
-    // Servo: the wheel angle slews towards its target.
+    // Servo: its output slews towards its target; the wheels follow through the linkage's play.
     const double target = steering * p.maxSteeringAngle;
     const double maxChange = p.servoRate * h;
-    steeringAngle_ += std::clamp(target - steeringAngle_, -maxChange, maxChange);
+    servoAngle_ += std::clamp(target - servoAngle_, -maxChange, maxChange);
+    const double play = 0.5 * p.servoBacklash;
+    steeringAngle_ = std::clamp(steeringAngle_, servoAngle_ - play, servoAngle_ + play);
+    return {throttle, steering};
+}
+
+void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
+    const SlideCarParameters& p = parameters_;
+    const double h = timing_.physicsStep();
+    const double throttle = actuatorStep(throttleCommand, steeringCommand).first;
 
     const double psi = body_->GetAngle();
     const Eigen::Vector2d v = toEigen(body_->GetLinearVelocity());
@@ -238,7 +266,9 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
         const double rolling = contactVelocity[a].dot(forward[a]);
         // An ESC without brake: the motor pushes towards throttle * top speed and freewheels
         // rather than ever braking.
-        const double drive = throttle - rolling / p.topSpeed;
+        // With a stall force above the current limit (motorStallRatio > 1) the force stays at
+        // the limit up to a speed and then falls along the motor's steeper line.
+        const double drive = p.motorStallRatio * (throttle - rolling / p.topSpeed);
         const double motor =
             throttle >= 0.0 ? std::clamp(drive, 0.0, throttle) : std::clamp(drive, throttle, 0.0);
         longitudinal[a] = 0.5 * p.maxDriveForce * motor -
@@ -260,11 +290,16 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
 
     // Friction circle per axle with stick-slip. Returns whether the axle is at its limit.
     std::array<double, 2> lateralForce{};
+    const Eigen::Vector2d centre = toEigen(body_->GetPosition());
     auto limit = [&](int a, double wanted) {
-        const double demand = std::hypot(longitudinal[a], wanted);
-        const double grip = frictionScale_ * load[a];
+        const double grip = frictionScale_ * patchScale(centre + arm[a]) * load[a];
         const double muS = p.staticFriction * (a == 1 ? grip * p.rearGripRatio : grip);
         const double muK = p.kineticFriction * (a == 1 ? grip * p.rearKineticGripRatio : grip);
+        if (p.tyreStiffness > 0.0) {
+            return magicFormula(a, wanted, muS, muK, contactVelocity[a].dot(forward[a]), slip[a],
+                                longitudinal, lateralForce);
+        }
+        const double demand = std::hypot(longitudinal[a], wanted);
         if (!sliding_[a] && demand > muS) {
             sliding_[a] = true;
         } else if (sliding_[a] && demand <= muK) {
@@ -298,12 +333,49 @@ void SlideCar::physicsStep(double throttleCommand, double steeringCommand) {
     for (int a = 0; a < 2; ++a) {
         const Eigen::Vector2d force = longitudinal[a] * forward[a] + lateralForce[a] * lateral[a];
         total += force;
-        const Eigen::Vector2d point = toEigen(body_->GetPosition()) + arm[a];
+        const Eigen::Vector2d point = centre + arm[a];
         body_->ApplyForce(toBox2d(force), toBox2d(point), true);
     }
     longitudinalAcceleration_ = total.dot(carForward) / mass;
     world_->Step(static_cast<float>(h), 8, 3);
     time_ += h;
+}
+
+double SlideCar::patchScale(const Eigen::Vector2d& point) const {
+    const SlideCarParameters& p = parameters_;
+    if (p.patchFriction == 1.0 || p.patchSize <= 0.0) {
+        return 1.0;
+    }
+    const auto cell = [&](double v) { return static_cast<long long>(std::floor(v / p.patchSize)); };
+    return (cell(point.x()) + cell(point.y())) % 2 == 0 ? 1.0 : p.patchFriction;
+}
+
+bool SlideCar::magicFormula(int axle, double wanted, double peak, double sliding,
+                            double rollingSpeed, double slipSpeed,
+                            std::array<double, 2>& longitudinal,
+                            std::array<double, 2>& lateralForce) {
+    // The drive or rolling force takes its share of the friction ellipse first; the side force
+    // follows the Magic Formula in the slip angle, scaled to what the ellipse leaves.
+    longitudinal[axle] = std::clamp(longitudinal[axle], -peak, peak);
+    const double share = peak > 0.0 ? longitudinal[axle] / peak : 1.0;
+    const double available = std::sqrt(std::max(0.0, 1.0 - share * share));
+    // Shape C from the frictions: the curve falls from mu_s N at its peak to mu_k N at large
+    // slip (D sin(C pi / 2) = mu_k N).
+    const double ratio = peak > 0.0 ? std::clamp(sliding / peak, 0.05, 1.0) : 1.0;
+    const double shape = 2.0 / M_PI * (M_PI - std::asin(ratio));
+    // B from the cornering stiffness per unit load: B C D = stiffness N with D = mu_s N.
+    const double axleFriction = axle == 1 ? parameters_.staticFriction * parameters_.rearGripRatio
+                                          : parameters_.staticFriction;
+    const double b = parameters_.tyreStiffness / (shape * axleFriction);
+    // Slip angle, with a floor on the speed so that it stays defined near standstill.
+    const double alpha = std::atan2(slipSpeed, std::max(std::abs(rollingSpeed), 0.3));
+    const double force = peak * available * std::sin(shape * std::atan(b * std::abs(alpha)));
+    // Never more than stops the slip this step (what the contact would do at low speed).
+    const double side = std::min(force, std::abs(wanted));
+    lateralForce[axle] = slipSpeed > 0.0 ? -side : (slipSpeed < 0.0 ? side : 0.0);
+    const bool pastPeak = b * std::abs(alpha) > std::tan(M_PI / (2.0 * shape));
+    sliding_[axle] = pastPeak;
+    return pastPeak;
 }
 
 }  // namespace prisca::sim

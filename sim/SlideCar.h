@@ -6,6 +6,8 @@
 #include <deque>
 #include <memory>
 #include <random>
+#include <utility>
+#include <vector>
 
 class b2Body;
 class b2World;
@@ -26,8 +28,8 @@ struct SlideCarParameters {
     double servoRate = 6.0;            ///< slew rate of the front-wheel angle [rad/s]
     double servoDelay = 0.02;          ///< dead time of steering commands [s]
     double throttleDelay = 0.01;       ///< dead time of the speed controller [s]
-    double maxDriveForce = 9.0;    ///< traction of all four wheels at standstill, full throttle [N]
-    double topSpeed = 6.0;         ///< speed at which full throttle gives no more force [m/s]
+    double maxDriveForce = 9.0;  ///< traction of all four wheels at standstill, full throttle [N]
+    double topSpeed = 6.0;       ///< speed at which full throttle gives no more force [m/s]
     /// Centre of mass ahead of the wheelbase's midpoint [m] (negative: behind it). It sets the
     /// static load on each axle and each axle's lever arm about the centre of mass; the state's
     /// x, y are the centre of mass.
@@ -45,10 +47,33 @@ struct SlideCarParameters {
     double gravity = 9.81;            ///< [m/s^2]
     double restSpeed = 0.02;          ///< below this speed ... [m/s]
     double restYawRate = 0.05;        ///< ... and this yaw rate the car is at rest [rad/s]
+
+    // Effects a real car has that the identification model (the parameters above) leaves out:
+    // the reality gap. Each is off at its default, so the catalog car is the model itself;
+    // plant files switch them on (`unmodelled` in a plant file, docs/architecture.md "Plants").
+    /// Tyres on a saturating force curve (the Magic Formula) instead of Coulomb stick-slip:
+    /// cornering stiffness per unit load [1/rad]; 0 is off. The curve peaks at mu_s N, falls
+    /// towards mu_k N at large slip angles, and shares the friction ellipse with the drive
+    /// force (longitudinal and lateral slip coupled).
+    double tyreStiffness = 0.0;
+    /// Play in the steering linkage: the wheels follow the servo only once it has taken up
+    /// this much angle [rad]; 0 is off.
+    double servoBacklash = 0.0;
+    /// A brushed motor's stall force as a multiple of the ESC's current limit (maxDriveForce):
+    /// full force up to a speed, then falling more steeply than the linear law; 1 is off.
+    double motorStallRatio = 1.0;
+    /// The ESC's neutral band: commands below this share of full throttle do nothing, the rest
+    /// is stretched over the range [1]; 0 is off.
+    double escDeadband = 0.0;
+    /// Floor patches: a checkerboard of squares patchSize on a side whose every other square
+    /// has its grip scaled by patchFriction (felt per axle, at the axle); 1 is off.
+    double patchFriction = 1.0;
+    double patchSize = 0.5;  ///< [m]
 };
 
-/// A brakeless 4x4 RC car on a flat floor, seen from above (docs/architecture.md "Plants"), simulated as one
-/// Box2D body with gravity off and tyre forces applied at the two axles each physics step.
+/// A brakeless 4x4 RC car on a flat floor, seen from above (docs/architecture.md "Plants"),
+/// simulated as one Box2D body with gravity off and tyre forces applied at the two axles each
+/// physics step.
 ///
 /// State (n = 6): x, y [m] of the car-frame origin (the body centre), heading psi [rad] of the
 /// body x axis counter-clockwise from world x, body-frame velocities vx (forward), vy (left)
@@ -83,6 +108,7 @@ class SlideCar : public Plant {
     Eigen::VectorXd reset(std::uint64_t seed, const Perturbation& perturbation) override;
     Eigen::VectorXd resetTo(const Eigen::VectorXd& state) override;
     Eigen::VectorXd step(const Eigen::VectorXd& action) override;
+    void primeActuators(const std::vector<Eigen::VectorXd>& recentActions) override;
     std::unique_ptr<Plant> clone(bool actuatorNoise = false) const override;
     Eigen::VectorXd state() const override;
     double time() const override { return time_; }
@@ -105,6 +131,18 @@ class SlideCar : public Plant {
   private:
     void build(double x, double y, double psi, double vx, double vy, double r);
     void physicsStep(double throttle, double steering);
+    /// One physics step of the actuators: the commands through the dead times, the servo's
+    /// slew and the linkage's play (steeringAngle_). Returns the throttle that reaches the
+    /// motor (after the gain and the ESC's band) and the steering target.
+    std::pair<double, double> actuatorStep(double throttleCommand, double steeringCommand);
+    /// The floor's grip factor at a point (the patches; 1 where there are none).
+    double patchScale(const Eigen::Vector2d& point) const;
+    /// The Magic Formula tyre of one axle (tyreStiffness > 0): sets its longitudinal and side
+    /// force from the force that would stop its slip (`wanted`), its peak and sliding friction
+    /// forces and its contact's rolling and slip speeds. Returns whether it is past its peak.
+    bool magicFormula(int axle, double wanted, double peak, double sliding, double rollingSpeed,
+                      double slipSpeed, std::array<double, 2>& longitudinal,
+                      std::array<double, 2>& lateralForce);
 
     SlideCarParameters parameters_;
     SimulationTiming timing_;
@@ -113,6 +151,7 @@ class SlideCar : public Plant {
     b2Body* body_ = nullptr;
     double time_ = 0.0;
     double steeringAngle_ = 0.0;
+    double servoAngle_ = 0.0;  // the servo's output; the wheels follow it with the backlash
     double longitudinalAcceleration_ = 0.0;
     std::array<bool, 2> sliding_{{false, false}};
     std::deque<double> throttleQueue_;  // commands waiting out the dead times, one per physics step

@@ -16,6 +16,8 @@ const std::vector<CliCommand>& commandTable() {
          methodsCommand},
         {"plant", "A plant's physical parameters: print them, write a plant file, check one",
          plantCommand},
+        {"identify", "Fit a plant's parameters to a demonstration and trials (a plant file)",
+         identifyCommand},
         {"run", "Run PRISCA or a baseline on a plant and log the trial", runCommand},
         {"table1", "Run batches of trials and report the paper's Table I metrics", table1Command},
         {"curve", "Learning curves of several methods over many runs", curveCommand},

@@ -20,5 +20,6 @@ int rigCommand(const QStringList& arguments);
 int replayCommand(const QStringList& arguments);
 int methodsCommand(const QStringList& arguments);
 int plantCommand(const QStringList& arguments);
+int identifyCommand(const QStringList& arguments);
 
 }  // namespace prisca::app::cli

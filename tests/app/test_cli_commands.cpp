@@ -7,8 +7,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
-#include <QTemporaryDir>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include "core/FileIo.h"
@@ -18,8 +18,8 @@
 #include "sim/PlantCatalog.h"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <pty.h>
+#include <sys/stat.h>
 #include <termios.h>
 #include <unistd.h>
 #include <cmath>
@@ -156,8 +156,8 @@ class TestCliCommands : public QObject {
         QCOMPARE(text.exitCode, 0);
         QVERIFY2(text.out.contains(QRegularExpression("mass +1.5 kg +\\[0.3, 10\\]")),
                  qPrintable(text.out));
-        QCOMPARE(cli({"plant", "--plant", "slidecar", "--print-params", "--format", "json",
-                      "--out", "mycar.json"})
+        QCOMPARE(cli({"plant", "--plant", "slidecar", "--print-params", "--format", "json", "--out",
+                      "mycar.json"})
                      .exitCode,
                  0);
         // Edited: a heavier car with a weaker motor.
@@ -180,10 +180,10 @@ class TestCliCommands : public QObject {
                  qPrintable(checked.out + checked.err));
         // The same drive on both cars: the heavier one covers less ground.
         const auto coast = [&](const QStringList& extra) {
-            const CliResult r = cli(QStringList{"simulate", "--plant", "slidecar", "--initial",
-                                                "0,0,0,0,0,0", "--actions", "full.csv", "--out",
-                                                "s.csv", "--format", "json"} +
-                                    extra);
+            const CliResult r =
+                cli(QStringList{"simulate", "--plant", "slidecar", "--initial", "0,0,0,0,0,0",
+                                "--actions", "full.csv", "--out", "s.csv", "--format", "json"} +
+                    extra);
             return QJsonDocument::fromJson(r.out.toUtf8())
                 .object()
                 .value("finalState")
@@ -202,12 +202,12 @@ class TestCliCommands : public QObject {
         const double heavy = coast({"--plant-params", "mycar.json"});
         QVERIFY2(nominal > 0.5 && heavy < 0.8 * nominal,
                  qPrintable(QString("%1 vs %2").arg(heavy).arg(nominal)));
-        const CliResult demo = cli({"demo", "--plant", "slidecar", "--plant-params", "mycar.json",
-                                    "--out", "heavy.csv"});
+        const CliResult demo = cli(
+            {"demo", "--plant", "slidecar", "--plant-params", "mycar.json", "--out", "heavy.csv"});
         QCOMPARE(demo.exitCode, 0);
-        const CliResult run = cli({"run", "--plant", "slidecar", "--demo", "heavy.csv", "--method",
-                                   "pd-h-lsd", "--plant-params", "mycar.json", "--out",
-                                   "heavy-log.csv"});
+        const CliResult run =
+            cli({"run", "--plant", "slidecar", "--demo", "heavy.csv", "--method", "pd-h-lsd",
+                 "--plant-params", "mycar.json", "--out", "heavy-log.csv"});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QFile log(path("heavy-log.csv"));
         QVERIFY(log.open(QIODevice::ReadOnly));
@@ -242,10 +242,60 @@ class TestCliCommands : public QObject {
 
     // The new-car protocol: every plant file of a folder on every style and seed set, the
     // breakdown per variant, each method's trials by their place in the day as CSV and figure.
+    // identify: a plant file written with the report beside it; what the data determined,
+    // each with its deviation (a short search here: the format, not the accuracy, which
+    // test_identification_recovery checks); data that cannot identify refused with exit 2.
+    void identify_writesAPlantFileAndSaysWhatTheDataDetermined() {
+        QCOMPARE(cli({"demo", "--plant", "slidecar", "--out", "id-demo.csv"}).exitCode, 0);
+        const CliResult json =
+            cli({"identify", "--plant", "slidecar", "--demo", "id-demo.csv", "--out", "id.json",
+                 "--evaluations", "40", "--restarts", "0", "--format", "json"});
+        QVERIFY2(json.exitCode == 0, qPrintable(json.err));
+        const QJsonObject report = parseJson(json.out);
+        const QJsonObject kinetic =
+            report.value("parameters").toObject().value("kineticFriction").toObject();
+        QVERIFY2(kinetic.contains("value") && kinetic.contains("std") &&
+                     kinetic.value("identified").isBool() && kinetic.value("fitted").toBool(),
+                 qPrintable(json.out));
+        QVERIFY(!report.value("parameters")
+                     .toObject()
+                     .value("mass")
+                     .toObject()
+                     .value("fitted")
+                     .toBool());
+        QVERIFY(report.value("segments").toArray().size() >= 4);
+        QVERIFY(report.value("positionRms").toDouble() >= 0.0);
+        // The file is a plant file: the car loads it.
+        const CliResult check = cli({"plant", "--plant", "slidecar", "--plant-params", "id.json"});
+        QVERIFY2(check.exitCode == 0, qPrintable(check.err));
+        QFile file(path("id.json"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject written = QJsonDocument::fromJson(file.readAll()).object();
+        QVERIFY(written.value("identification").toObject().contains("parameters"));
+        QVERIFY(written.value("description").toString().contains("id-demo.csv"));
+
+        // The first second only: too short.
+        QFile demo(path("id-demo.csv"));
+        QVERIFY(demo.open(QIODevice::ReadOnly));
+        QByteArray cut;
+        int kept = 0;
+        for (const QByteArray& line : demo.readAll().split('\n')) {
+            if (line.startsWith('#') || line.startsWith("t,") || kept++ < 40) {
+                cut += line + '\n';
+            }
+        }
+        writeFile(path("id-short.csv"), cut);
+        const CliResult refused = cli({"identify", "--plant", "slidecar", "--demo", "id-short.csv",
+                                       "--out", "id-short.json"});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("cannot identify the slidecar from this data: too short"),
+                 qPrintable(refused.err));
+        QVERIFY(!QFile::exists(path("id-short.json")));
+    }
+
     void table1_variantsGiveAPerVariantBreakdownAndLearningCurves() {
         QDir(dir_.path()).mkpath("variants");
-        for (const auto& [name, json] :
-             std::vector<std::pair<QString, QByteArray>>{
+        for (const auto& [name, json] : std::vector<std::pair<QString, QByteArray>>{
                  {"heavy", R"({"plant": "slidecar", "parameters": {"mass": 2.2}})"},
                  {"grip", R"({"plant": "slidecar", "parameters": {"staticFriction": 0.55,
                              "kineticFriction": 0.4}})"}}) {
@@ -253,10 +303,10 @@ class TestCliCommands : public QObject {
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(json);
         }
-        const CliResult r = cli({"table1", "--styles", "stick-90-left", "--trials", "2",
-                                 "--training-trials", "3", "--variants", "variants", "--methods",
-                                 "prisca,pd", "--learning-out", "learning.csv", "--learning-plot",
-                                 "learning.png", "--format", "md"});
+        const CliResult r =
+            cli({"table1", "--styles", "stick-90-left", "--trials", "2", "--training-trials", "3",
+                 "--variants", "variants", "--methods", "prisca,pd", "--learning-out",
+                 "learning.csv", "--learning-plot", "learning.png", "--format", "md"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains("| method | grip | heavy |"), qPrintable(r.out));
         QVERIFY(r.out.contains("2 plant variants from variants"));
@@ -281,7 +331,8 @@ class TestCliCommands : public QObject {
         f.close();
         bad = cli({"table1", "--styles", "stick-90-left", "--variants", "variants"});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY2(bad.err.contains("zz-bad.json: topSpeed = -1 m/s is outside"), qPrintable(bad.err));
+        QVERIFY2(bad.err.contains("zz-bad.json: topSpeed = -1 m/s is outside"),
+                 qPrintable(bad.err));
         QCOMPARE(cli({"table1", "--variants", "variants"}).exitCode, 2);  // needs --styles
     }
 
@@ -318,9 +369,9 @@ class TestCliCommands : public QObject {
             QVERIFY(std::abs(sum / 2.0 - mean) < 1e-9);
         }
         // (Under the trial model, where this trial leaves the oracle a measurable error.)
-        const CliResult md = cli({"table1", "--styles", "stick-90-left", "--trials", "1",
-                                  "--training-trials", "1", "--methods", "pd,oracle",
-                                  "--perturbation-model", "trial"});
+        const CliResult md =
+            cli({"table1", "--styles", "stick-90-left", "--trials", "1", "--training-trials", "1",
+                 "--methods", "pd,oracle", "--perturbation-model", "trial"});
         QVERIFY2(md.exitCode == 0, qPrintable(md.err));
         QVERIFY2(md.out.contains("| LIMIT (oracle) | 1 | 1 |") && md.out.contains("| 1.0x |"),
                  qPrintable(md.out));
@@ -430,10 +481,10 @@ class TestCliCommands : public QObject {
         QCOMPARE(parseJson(made.out).value("dt").toDouble(), 1.0 / hertz);
         const QStringList nominal = {"--perturbation", "0", "--sensor", "0"};
 
-        const CliResult run = cli(QStringList{"run", "--plant", "slidecar", "--demo", demo,
-                                              "--method", "playback", "--out", "rate-log.csv",
-                                              "--format", "json"} +
-                                  nominal);
+        const CliResult run =
+            cli(QStringList{"run", "--plant", "slidecar", "--demo", demo, "--method", "playback",
+                            "--out", "rate-log.csv", "--format", "json"} +
+                nominal);
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         const double runCm = parseJson(run.out)
                                  .value("trials")
@@ -460,9 +511,9 @@ class TestCliCommands : public QObject {
         QVERIFY2(tableCm >= 0.0 && tableCm < 0.01, qPrintable(QString::number(tableCm)));
 
         const CliResult curve =
-            cli(QStringList{"curve", "--plant", "slidecar", "--demo", demo, "--methods",
-                            "playback", "--runs", "1", "--budget", "2000", "--out",
-                            "rate-curve.csv", "--format", "json"} +
+            cli(QStringList{"curve", "--plant", "slidecar", "--demo", demo, "--methods", "playback",
+                            "--runs", "1", "--budget", "2000", "--out", "rate-curve.csv",
+                            "--format", "json"} +
                 nominal);
         QVERIFY2(curve.exitCode == 0, qPrintable(curve.err));
         // Mean squared position error over a trial [m^2]: (0.1 mm)^2 at most.
@@ -589,8 +640,8 @@ class TestCliCommands : public QObject {
         }
         // Small training budgets: this checks the plumbing, not the tuning.
         const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
-                                 "--param", "pegasus.iterations=1", "--training-trials", "1", "--out",
-                                 plant + "-" + method + ".csv", "--format", "json"});
+                                 "--param", "pegasus.iterations=1", "--training-trials", "1",
+                                 "--out", plant + "-" + method + ".csv", "--format", "json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
         QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
@@ -843,8 +894,8 @@ class TestCliCommands : public QObject {
             QVERIFY2(r.err.contains("--initial:"), qPrintable(r.err));
         }
         // A position far off is blamed on --initial, not on the output file.
-        r = cli({"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1",
-                 "--initial", "1e7,0,0,0,0,0", "--out", "s.csv"});
+        r = cli({"simulate", "--plant", "slidecar", "--zero-action", "--duration", "1", "--initial",
+                 "1e7,0,0,0,0,0", "--out", "s.csv"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--initial: x = 1e+07 m") && !r.err.contains("s.csv"),
                  qPrintable(r.err));
@@ -1342,7 +1393,8 @@ class TestCliCommands : public QObject {
         QFile kept(partial);
         QVERIFY(kept.open(QIODevice::ReadOnly));
         const QString table = QString::fromUtf8(kept.readAll());
-        QVERIFY2(table.contains("interrupted:") && table.contains("| PD (partial: "), qPrintable(table));
+        QVERIFY2(table.contains("interrupted:") && table.contains("| PD (partial: "),
+                 qPrintable(table));
     }
 
     // Every method's parameters come from its catalog entry, and docs/methods.md is what
@@ -1396,9 +1448,9 @@ class TestCliCommands : public QObject {
         const QString demo = plant + "-start-demo.csv";
         QCOMPARE(cli({"demo", "--plant", plant, "--out", demo}).exitCode, 0);
         for (const char* method : {"prisca", "pd-h-lsd"}) {
-            const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
-                                     "--start", "demo", "--trials", "2", "--out",
-                                     plant + "-start.csv", "--format", "json"});
+            const CliResult r =
+                cli({"run", "--plant", plant, "--demo", demo, "--method", method, "--start", "demo",
+                     "--trials", "2", "--out", plant + "-start.csv", "--format", "json"});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             const QJsonArray trials = parseJson(r.out).value("trials").toArray();
             QCOMPARE(trials.size(), 2);
@@ -1408,15 +1460,14 @@ class TestCliCommands : public QObject {
             }
         }
         if (prisca::sim::PlantCatalog::describe(plant).pose) {  // table1 is for vehicles
-            const CliResult table =
-                cli({"table1", "--plant", plant, "--demo", demo, "--trials", "1",
-                     "--training-trials", "1", "--methods", "prisca,pd", "--start", "demo",
-                     "--format", "json"});
+            const CliResult table = cli({"table1", "--plant", plant, "--demo", demo, "--trials",
+                                         "1", "--training-trials", "1", "--methods", "prisca,pd",
+                                         "--start", "demo", "--format", "json"});
             QVERIFY2(table.exitCode == 0, qPrintable(table.err));
         }
-        const CliResult curve = cli({"curve", "--plant", plant, "--demo", demo, "--methods",
-                                     "prisca", "--runs", "1", "--budget", "400", "--start",
-                                     "demo", "--out", plant + "-start-curve.csv"});
+        const CliResult curve =
+            cli({"curve", "--plant", plant, "--demo", demo, "--methods", "prisca", "--runs", "1",
+                 "--budget", "400", "--start", "demo", "--out", plant + "-start-curve.csv"});
         QVERIFY2(curve.exitCode == 0, qPrintable(curve.err));
         const CliResult bad = cli({"run", "--plant", plant, "--demo", demo, "--method", "prisca",
                                    "--start", "guess", "--out", plant + "-bad.csv"});

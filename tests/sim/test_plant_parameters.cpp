@@ -108,11 +108,10 @@ class TestPlantParameters : public QObject {
         for (const PlantParameterSpec& s : plantParameterSpecs("slidecar")) {
             keys << s.key;
         }
-        for (const char* key :
-             {"mass", "yawInertia", "wheelbase", "cgForward", "cgHeight", "width",
-              "staticFriction", "kineticFriction", "rearStaticGrip", "rearKineticGrip",
-              "maxDriveForce", "topSpeed", "maxSteeringAngle", "servoDelay", "servoRate",
-              "rollingResistance", "drivelineDrag"}) {
+        for (const char* key : {"mass", "yawInertia", "wheelbase", "cgForward", "cgHeight", "width",
+                                "staticFriction", "kineticFriction", "rearStaticGrip",
+                                "rearKineticGrip", "maxDriveForce", "topSpeed", "maxSteeringAngle",
+                                "servoDelay", "servoRate", "rollingResistance", "drivelineDrag"}) {
             QVERIFY2(keys.contains(QLatin1String(key)), key);
         }
     }
@@ -142,6 +141,49 @@ class TestPlantParameters : public QObject {
             fileWith("slidecar", {{"mass", QJsonObject{{"value", 1.9}, {"unit", "kg"}}}}), &error);
         QVERIFY2(withUnit, qPrintable(error));
         QCOMPARE(withUnit->value("mass"), 1.9);
+    }
+
+    // The reality gap: the slide-car's effects the identification model leaves out come in
+    // their own group, each off on the catalog car, with a realistic value and its source; the
+    // group reads back, and a model parameter put in it is refused.
+    void unmodelled_groupedWithRealisticValuesAndReadBack() {
+        int unmodelled = 0;
+        for (const PlantParameterSpec& s : plantParameterSpecs("slidecar")) {
+            if (!s.unmodelled) {
+                continue;
+            }
+            ++unmodelled;
+            QVERIFY2(s.realistic >= s.lower && s.realistic <= s.upper, qPrintable(s.key));
+            // Off at the catalog's value (the patches' size is inert while their grip is 1).
+            QVERIFY2(s.realistic != s.value || s.key == QLatin1String("patchSize"),
+                     qPrintable(s.key));
+            QVERIFY2(!s.realisticSource.isEmpty(), qPrintable(s.key));
+        }
+        QCOMPARE(unmodelled, 6);
+        PlantParameters p = defaultPlantParameters("slidecar");
+        const QJsonObject root = QJsonDocument::fromJson(plantParametersJson(p)).object();
+        const QJsonObject group = root.value("unmodelled").toObject();
+        QCOMPARE(group.value("tyreStiffness").toObject().value("off").toDouble(), 0.0);
+        QVERIFY(group.value("tyreStiffness").toObject().value("realistic").toDouble() > 0.0);
+        QVERIFY(!root.value("parameters").toObject().contains("tyreStiffness"));
+        QVERIFY(root.value("parameters").toObject().contains("mass"));
+        QString error;
+        QJsonObject file{{"plant", "slidecar"},
+                         {"parameters", QJsonObject{{"mass", 2.0}}},
+                         {"unmodelled", QJsonObject{{"servoBacklash", 0.03}}}};
+        const auto back = parse(QJsonDocument(file).toJson(), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->value("servoBacklash"), 0.03);
+        QCOMPARE(back->value("mass"), 2.0);
+        QVERIFY(!back->isCatalogPlant());
+        file.insert("unmodelled", QJsonObject{{"mass", 2.0}});
+        QVERIFY(!parse(QJsonDocument(file).toJson(), &error));
+        QVERIFY2(error.contains("\"mass\" is not an unmodelled effect") &&
+                     error.contains("tyreStiffness"),
+                 qPrintable(error));
+        file.insert("unmodelled", QJsonObject{{"patchFriction", 0.1}});
+        QVERIFY(!parse(QJsonDocument(file).toJson(), &error));
+        QVERIFY2(error.contains("patchFriction = 0.1 is outside [0.3, 1.5]"), qPrintable(error));
     }
 
     // Every refusal names the file and what is wrong: the key, the value and the range.
@@ -200,9 +242,12 @@ class TestPlantParameters : public QObject {
         PlantParameters heavy = defaultPlantParameters("slidecar");
         for (size_t i = 0; i < heavy.values.size(); ++i) {
             const QString key = plantParameterSpecs("slidecar")[i].key;
-            if (key == "mass") heavy.values[i] = 3.0;
-            if (key == "maxDriveForce") heavy.values[i] = 6.0;
-            if (key == "maxSteeringAngle") heavy.values[i] = 0.3;
+            if (key == "mass")
+                heavy.values[i] = 3.0;
+            if (key == "maxDriveForce")
+                heavy.values[i] = 6.0;
+            if (key == "maxSteeringAngle")
+                heavy.values[i] = 0.3;
         }
         auto heavier = PlantCatalog::create(heavy);
         const Eigen::VectorXd a = driven(*nominal);
@@ -217,9 +262,9 @@ class TestPlantParameters : public QObject {
         QVERIFY(demoNominal.states.bottomRows(1) != demoHeavy.states.bottomRows(1));
         PlantParameters arm = defaultPlantParameters("acrobot");
         conditions.parameters = &arm;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, DemonstrationStyles::record(
-                                                            "slidecar", "stick-180-left", 4, {},
-                                                            conditions));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            DemonstrationStyles::record("slidecar", "stick-180-left", 4, {}, conditions));
     }
 
     // The session model over many days: the day's mismatch has the documented spread and is

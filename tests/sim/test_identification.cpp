@@ -1,0 +1,149 @@
+// Identification of the slide-car: the unmodelled effects kept out of the model, a cancel, and
+// every refusal (test_identification_recovery: a car of known parameters recovered).
+#include "sim/Identification.h"
+#include "sim/PlantParameters.h"
+#include "sim/SlideCar.h"
+#include "sim/SlideCarDemonstrator.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
+PlantParameters knownCar() {
+    PlantParameters p = defaultPlantParameters("slidecar");
+    auto set = [&](const char* key, double value) {
+        const auto& specs = plantParameterSpecs("slidecar");
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == QLatin1String(key)) {
+                p.values[i] = value;
+            }
+        }
+    };
+    set("kineticFriction", 0.40);
+    set("maxDriveForce", 8.0);
+    set("yawInertia", 0.017);
+    return p;
+}
+
+core::Demonstration demonstrationOf(const PlantParameters& car) {
+    return SlideCarDemonstrator::record(1, SlideCarDemonstrator::Script{}, SimulationTiming{},
+                                        slideCarParameters(car));
+}
+
+core::Demonstration cut(const core::Demonstration& d, int from, int to) {
+    core::Demonstration c = d;
+    const int n = to - from;
+    c.time = d.time.segment(from, n);
+    c.states = d.states.middleRows(from, n);
+    c.actions = d.actions.middleRows(from, n);
+    return c;
+}
+
+}  // namespace
+
+class TestIdentification : public QObject {
+    Q_OBJECT
+  private slots:
+    // The model identified is the model: a prior with the reality gap's effects switched on
+    // gives a model with them off.
+    void unmodelledEffects_areNeverPartOfTheModel() {
+        PlantParameters prior = defaultPlantParameters("slidecar");
+        const auto& specs = plantParameterSpecs("slidecar");
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].unmodelled) {
+                prior.values[i] = specs[i].realistic;
+            }
+        }
+        IdentificationSettings quick;
+        quick.restarts = 0;
+        quick.evaluationsPerStart = 60;
+        const IdentificationResult result =
+            identifyPlant({demonstrationOf(defaultPlantParameters("slidecar"))}, prior, quick);
+        QVERIFY2(result.ok(), qPrintable(result.refusal));
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].unmodelled) {
+                QCOMPARE(result.parameters.values[i], specs[i].value);
+                QVERIFY(!result.table[i].fitted);
+            }
+        }
+    }
+
+    // Cancelling stops it and says so.
+    void cancel_stopsAndSaysSo() {
+        int calls = 0;
+        const IdentificationResult result =
+            identifyPlant({demonstrationOf(knownCar())}, defaultPlantParameters("slidecar"), {},
+                          [&](long long, long long) { return ++calls < 3; });
+        QVERIFY(result.cancelled);
+        QVERIFY(!result.ok());
+        QCOMPARE(calls, 3);
+    }
+
+    // Data that cannot identify is refused, with the reason.
+    void refusals_sayWhy() {
+        const core::Demonstration d = demonstrationOf(knownCar());
+        auto refusal = [](const core::Demonstration& run) {
+            return identificationDataProblem("slidecar", {run});
+        };
+        QCOMPARE(refusal(d), QString());
+
+        const QString tooShort = refusal(cut(d, 0, 50));
+        QVERIFY2(tooShort.startsWith(QLatin1String("too short:")), qPrintable(tooShort));
+
+        core::Demonstration gap = d;
+        const int n = d.length();
+        gap.time = Eigen::VectorXd(n - 6);
+        gap.time << d.time.head(40), d.time.tail(n - 46);
+        gap.states = Eigen::MatrixXd(n - 6, d.stateDimension());
+        gap.states << d.states.topRows(40), d.states.bottomRows(n - 46);
+        gap.actions = Eigen::MatrixXd(n - 6, d.actionDimension());
+        gap.actions << d.actions.topRows(40), d.actions.bottomRows(n - 46);
+        const QString hole = refusal(gap);
+        QVERIFY2(hole.contains(QLatin1String("gap in the poses")) &&
+                     hole.contains(QLatin1String("6 samples missing")),
+                 qPrintable(hole));
+
+        // Gentle driving: no slide.
+        SlideCar car;
+        car.reset(1, Perturbation::none());
+        core::Demonstration gentle = d;
+        const int length = 160;
+        gentle.time = Eigen::VectorXd::LinSpaced(length, 0.0, (length - 1) * 0.025);
+        gentle.states.resize(length, 6);
+        gentle.actions.resize(length, 2);
+        for (int k = 0; k < length; ++k) {
+            gentle.states.row(k) = car.state().transpose();
+            gentle.actions.row(k) << 0.3 + 0.1 * std::sin(0.05 * k), 0.2 * std::sin(0.1 * k);
+            car.step(gentle.actions.row(k).transpose());
+        }
+        const QString noSlide = refusal(gentle);
+        QVERIFY2(noSlide.startsWith(QLatin1String("no slide:")), qPrintable(noSlide));
+
+        core::Demonstration straight = gentle;
+        straight.actions.col(1).setZero();
+        const QString constant = refusal(straight);
+        QVERIFY2(constant.startsWith(QLatin1String("constant steering")), qPrintable(constant));
+
+        core::Demonstration other = d;
+        other.plant = QStringLiteral("diffdrive");
+        QVERIFY(refusal(other).contains(QLatin1String("recording of the diffdrive")));
+        QVERIFY(identificationDataProblem("acrobot", {d})
+                    .contains(QLatin1String("not available for the acrobot")));
+        QVERIFY(identificationDataProblem("slidecar", {}).contains(QLatin1String("no recorded")));
+
+        // identifyPlant refuses the same way, without fitting anything.
+        const IdentificationResult refused =
+            identifyPlant({cut(d, 0, 50)}, defaultPlantParameters("slidecar"));
+        QVERIFY(refused.refusal.startsWith(QLatin1String("too short:")));
+        QCOMPARE(refused.evaluations, 0LL);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestIdentification)
+#include "test_identification.moc"

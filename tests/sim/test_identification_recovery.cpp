@@ -1,0 +1,98 @@
+// Identification of the slide-car: a car of known parameters recovered from its noise-free
+// demonstration. A minute of model runs: left out of the sanitizer builds, which run the
+// identification's code through test_identification.
+#include "sim/Identification.h"
+#include "sim/PlantParameters.h"
+#include "sim/SlideCar.h"
+#include "sim/SlideCarDemonstrator.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
+PlantParameters knownCar() {
+    PlantParameters p = defaultPlantParameters("slidecar");
+    auto set = [&](const char* key, double value) {
+        const auto& specs = plantParameterSpecs("slidecar");
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == QLatin1String(key)) {
+                p.values[i] = value;
+            }
+        }
+    };
+    set("kineticFriction", 0.40);
+    set("maxDriveForce", 8.0);
+    set("yawInertia", 0.017);
+    return p;
+}
+
+core::Demonstration demonstrationOf(const PlantParameters& car) {
+    return SlideCarDemonstrator::record(1, SlideCarDemonstrator::Script{}, SimulationTiming{},
+                                        slideCarParameters(car));
+}
+
+}  // namespace
+
+class TestIdentificationRecovery : public QObject {
+    Q_OBJECT
+  private slots:
+    // Noise-free, from the catalog's values as the prior: the three parameters in which the
+    // car differs from the prior are identified within 2 %, every other parameter reported
+    // identified within 5 % (measured: the driveline drag lands 2.9 % off, traded against the
+    // rolling resistance and the top speed), and the model replays the demonstration to
+    // within millimetres.
+    void knownCar_recoveredFromItsDemonstration() {
+        const PlantParameters truth = knownCar();
+        const core::Demonstration demonstration = demonstrationOf(truth);
+        IdentificationSettings settings;
+        settings.restarts = 1;
+        long long calls = 0;
+        const IdentificationResult result =
+            identifyPlant({demonstration}, defaultPlantParameters("slidecar"), settings,
+                          [&](long long, long long) {
+                              ++calls;
+                              return true;
+                          });
+        QVERIFY2(result.ok(), qPrintable(result.refusal));
+        QVERIFY(calls > 0);
+        QVERIFY(result.segments.size() >= 4);
+        QStringList identified;
+        for (const IdentifiedParameter& p : result.table) {
+            const double known = truth.value(p.key);
+            if (!p.fitted) {
+                QCOMPARE(p.value, p.prior);  // held: the mass and the geometry
+                continue;
+            }
+            qInfo("%-18s %.5g (known %.5g, prior %.5g) +- %.2g %s", qPrintable(p.key), p.value,
+                  known, p.prior, p.std, p.identified ? "identified" : "held");
+            if (p.identified) {
+                identified << p.key;
+                const bool differs = p.prior != known;
+                QVERIFY2(
+                    std::abs(p.value - known) <= (differs ? 0.02 : 0.05) * std::abs(known),
+                    qPrintable(
+                        QStringLiteral("%1 = %2, known %3").arg(p.key).arg(p.value).arg(known)));
+            } else {
+                QCOMPARE(p.value, p.prior);
+            }
+        }
+        for (const char* key : {"kineticFriction", "maxDriveForce", "yawInertia"}) {
+            QVERIFY2(identified.contains(QLatin1String(key)), key);
+        }
+        QVERIFY2(result.positionRms < 0.005, qPrintable(QString::number(result.positionRms)));
+        QVERIFY(result.positionRms < 0.5 * result.priorPositionRms);
+        // The model's replay starts where the run starts and follows it.
+        const Eigen::MatrixXd replay = replayRun(demonstration, result.parameters);
+        QCOMPARE(replay.rows(), demonstration.length());
+        QCOMPARE(replay.row(0), demonstration.states.row(0));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestIdentificationRecovery)
+#include "test_identification_recovery.moc"
