@@ -633,17 +633,23 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     }
 
     // Everything in the plan; then, while the data leave some undetermined, those back at their
-    // prior and the rest fitted again (they may have been covering for each other).
+    // prior and the rest fitted again (they may have been covering for each other). Each key's
+    // last verdict: whether the data determined it, and its relative deviation.
+    struct Verdict {
+        bool identified = false;
+        double relativeStd = std::numeric_limits<double>::infinity();
+    };
+    QMap<QString, Verdict> verdicts;
     Plan plan = fullPlan;
     PlantParameters start = prior;
-    FitOutcome outcome;
-    QMap<QString, double> droppedStd;  // relative std when it was found undetermined
+    std::vector<double> values = prior.values;
     long long evaluations = 0;
     for (int pass = 0; pass < 3; ++pass) {
         Problem problem(runs, start, settings, plan);
         context.problem = &problem;
         const int budget =
             pass == 0 ? settings.evaluationsPerStart : settings.evaluationsPerStart / 2;
+        FitOutcome outcome;
         const bool done = fitOnce(problem, context, settings, physicsStep, budget, &outcome);
         evaluations += problem.evaluations();
         if (!done) {
@@ -651,24 +657,28 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             result.evaluations = evaluations;
             return result;
         }
+        values = outcome.values;
         Plan kept;
         std::vector<double> next = outcome.values;
         for (int i = 0; i < plan.continuous.size(); ++i) {
             const QString& key = plan.continuous[i];
-            if (outcome.relativeStd[static_cast<size_t>(i)] < settings.identifiedBelow) {
+            const double relative = outcome.relativeStd[static_cast<size_t>(i)];
+            verdicts[key] = {relative < settings.identifiedBelow, relative};
+            if (verdicts[key].identified) {
                 kept.continuous << key;
             } else {
-                droppedStd[key] = outcome.relativeStd[static_cast<size_t>(i)];
                 const size_t j = static_cast<size_t>(indexOfKey(problem.specs(), key));
                 next[j] = prior.values[j];
             }
         }
         for (int i = 0; i < plan.delays.size(); ++i) {
             const QString& key = plan.delays[i];
-            if (outcome.delayDetermined[static_cast<size_t>(i)]) {
+            const bool determined = outcome.delayDetermined[static_cast<size_t>(i)];
+            verdicts[key] = {determined,
+                             determined ? 0.0 : std::numeric_limits<double>::infinity()};
+            if (determined) {
                 kept.delays << key;
             } else {
-                droppedStd[key] = 0.0;
                 const size_t j = static_cast<size_t>(indexOfKey(problem.specs(), key));
                 next[j] = prior.values[j];
             }
@@ -678,41 +688,31 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             break;
         }
         if (!plantParametersProblem(prior.plant, next).isEmpty()) {
-            break;  // the prior's values do not fit with the rest: keep this pass's whole set
+            break;  // the prior's values do not fit with the rest: this pass's whole set stays
         }
+        // The undetermined at their prior; out of passes, the rest as last fitted.
+        values = next;
         plan = kept;
         start.values = next;
-        outcome.values = next;  // should the last pass not complete, these are what holds
-        if (pass == 2) {
-            // Out of passes: the undetermined are at their prior, the rest as last fitted.
-            outcome.relativeStd.clear();
-            outcome.delayDetermined.clear();
-            plan = Plan{};
-        }
     }
-    result.parameters.values = outcome.values;
+    result.parameters.values = values;
     const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(prior.plant);
     for (size_t j = 0; j < specs.size(); ++j) {
         IdentifiedParameter p;
         p.key = specs[j].key;
         p.unit = specs[j].unit;
         p.prior = prior.values[j];
-        p.value = outcome.values[j];
+        p.value = values[j];
         p.fitted = fullPlan.continuous.contains(p.key) || fullPlan.delays.contains(p.key);
-        const int continuous = static_cast<int>(plan.continuous.indexOf(p.key));
-        const int delay = static_cast<int>(plan.delays.indexOf(p.key));
-        if (continuous >= 0 && static_cast<size_t>(continuous) < outcome.relativeStd.size()) {
-            const double relative = outcome.relativeStd[static_cast<size_t>(continuous)];
-            p.identified = relative < settings.identifiedBelow;
-            p.std = relative * p.value;
-        } else if (delay >= 0 && static_cast<size_t>(delay) < outcome.delayDetermined.size()) {
-            p.identified = outcome.delayDetermined[static_cast<size_t>(delay)];
-            p.std = 0.5 * physicsStep;
-        } else if (p.fitted) {
-            // Undetermined: at its prior, with the deviation the data left it.
-            const bool isDelay = fullPlan.delays.contains(p.key);
-            p.std = isDelay ? std::numeric_limits<double>::infinity()
-                            : droppedStd.value(p.key) * p.prior;
+        if (p.fitted) {
+            const Verdict verdict = verdicts.value(p.key);
+            p.identified = verdict.identified;
+            if (fullPlan.delays.contains(p.key)) {
+                p.std = verdict.identified ? 0.5 * physicsStep
+                                           : std::numeric_limits<double>::infinity();
+            } else {
+                p.std = verdict.relativeStd * p.value;
+            }
         }
         result.table.push_back(p);
     }
