@@ -206,27 +206,31 @@ double objective(unsigned n, const double* x, double* gradient, void* data) {
 
 // A local search from u (in place) over the fitted log-factors; returns the cost reached.
 double localSearch(SearchContext& context, std::vector<double>& u, int evaluations,
-                   double initialStep, nlopt_algorithm algorithm = NLOPT_LN_SBPLX) {
+                   double initialStep, nlopt_algorithm algorithm = NLOPT_LN_SBPLX, int held = -1) {
     const unsigned n = static_cast<unsigned>(u.size());
     nlopt_opt opt = nlopt_create(algorithm, n);
     nlopt_srand(7);
-    std::vector<double> lower(n), upper(n);
+    // At most a factor 3 from the prior, and never outside the declared range; a held
+    // coordinate stays where it is (equal bounds).
+    std::vector<double> lower(n, -std::log(3.0)), upper(n, std::log(3.0));
+    std::vector<double> step(n, initialStep);
     for (unsigned i = 0; i < n; ++i) {
-        // At most a factor 3 from the prior, and never outside the declared range.
-        lower[i] = -std::log(3.0);
-        upper[i] = std::log(3.0);
+        u[i] = std::clamp(u[i], lower[i], upper[i]);
+    }
+    if (held >= 0) {
+        lower[static_cast<size_t>(held)] = upper[static_cast<size_t>(held)] =
+            u[static_cast<size_t>(held)];
+        step[static_cast<size_t>(held)] = 0.0;
     }
     nlopt_set_lower_bounds(opt, lower.data());
     nlopt_set_upper_bounds(opt, upper.data());
     nlopt_set_min_objective(opt, objective, &context);
     nlopt_set_maxeval(opt, evaluations);
     nlopt_set_xtol_rel(opt, 1e-4);
-    nlopt_set_ftol_rel(opt, 1e-7);
-    std::vector<double> step(n, initialStep);
-    nlopt_set_initial_step(opt, step.data());
-    for (unsigned i = 0; i < n; ++i) {
-        u[i] = std::clamp(u[i], lower[i], upper[i]);
+    if (held < 0) {
+        nlopt_set_ftol_rel(opt, 1e-7);
     }
+    nlopt_set_initial_step(opt, step.data());
     double best = std::numeric_limits<double>::max();
     if (context.cancelled) {
         nlopt_destroy(opt);
@@ -235,36 +239,6 @@ double localSearch(SearchContext& context, std::vector<double>& u, int evaluatio
     context.search = opt;
     nlopt_optimize(opt, u.data(), &best);  // a stop by evaluations or tolerance alike
     context.search = nullptr;
-    nlopt_destroy(opt);
-    return best;
-}
-
-// A local search with coordinate `held` fixed where it is (equal bounds).
-double localSearchHolding(SearchContext& context, std::vector<double>& u, int held, int evaluations,
-                          double initialStep) {
-    const unsigned n = static_cast<unsigned>(u.size());
-    nlopt_opt opt = nlopt_create(NLOPT_LN_SBPLX, n);
-    std::vector<double> lower(n, -std::log(3.0)), upper(n, std::log(3.0));
-    u[static_cast<size_t>(held)] = std::clamp(u[static_cast<size_t>(held)], lower[0], upper[0]);
-    lower[static_cast<size_t>(held)] = upper[static_cast<size_t>(held)] =
-        u[static_cast<size_t>(held)];
-    for (unsigned i = 0; i < n; ++i) {
-        u[i] = std::clamp(u[i], lower[i], upper[i]);
-    }
-    nlopt_set_lower_bounds(opt, lower.data());
-    nlopt_set_upper_bounds(opt, upper.data());
-    nlopt_set_min_objective(opt, objective, &context);
-    nlopt_set_maxeval(opt, evaluations);
-    nlopt_set_xtol_rel(opt, 1e-4);
-    std::vector<double> step(n, initialStep);
-    step[static_cast<size_t>(held)] = 0.0;
-    nlopt_set_initial_step(opt, step.data());
-    double best = std::numeric_limits<double>::max();
-    if (!context.cancelled) {
-        context.search = opt;
-        nlopt_optimize(opt, u.data(), &best);
-        context.search = nullptr;
-    }
     nlopt_destroy(opt);
     return best;
 }
@@ -355,7 +329,6 @@ QString identificationDataProblem(const QString& plant,
     const PlantInfo& info = model->info();
     double driving = 0.0;
     double sideways = 0.0;
-    double yawRate = 0.0;
     std::vector<double> lowest(static_cast<size_t>(info.actionDimension()),
                                std::numeric_limits<double>::max());
     std::vector<double> highest(static_cast<size_t>(info.actionDimension()),
@@ -399,7 +372,6 @@ QString identificationDataProblem(const QString& plant,
                 driving += run.time[k] - run.time[k - 1];
             }
             sideways = std::max(sideways, std::abs(run.states(k, 4)));
-            yawRate = std::max(yawRate, std::abs(run.states(k, 5)));
             for (int c = 0; c < run.actionDimension(); ++c) {
                 lowest[static_cast<size_t>(c)] =
                     std::min(lowest[static_cast<size_t>(c)], run.actions(k, c));
@@ -434,7 +406,6 @@ QString identificationDataProblem(const QString& plant,
                    "is needed to identify the grips)")
             .arg(sideways, 0, 'f', 2);
     }
-    (void)yawRate;
     return {};
 }
 
@@ -576,7 +547,8 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
         for (const double side : {-shift, shift}) {
             std::vector<double> from = uBest;
             from[static_cast<size_t>(i)] += side;
-            const double reached = localSearchHolding(context, from, i, evaluations / 10, 0.03);
+            const double reached =
+                localSearch(context, from, evaluations / 10, 0.03, NLOPT_LN_SBPLX, i);
             if (reached - bestCost <= 4.0 * outcome->variance) {
                 outcome->relativeStd[static_cast<size_t>(i)] =
                     std::numeric_limits<double>::infinity();
