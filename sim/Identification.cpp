@@ -130,7 +130,8 @@ class Problem {
         int at = 0;
         for (const Segment& s : segments_) {
             const core::Demonstration& run = runs_[static_cast<size_t>(s.run)];
-            const Eigen::MatrixXd predicted = simulate(run, parameters, s.begin, s.length);
+            const Eigen::MatrixXd predicted =
+                simulate(run, parameters, s.begin, s.length, settings_.physicsSubsteps);
             for (int k = 0; k < s.length; ++k) {
                 const int recorded = s.begin + k + 1;
                 r[at++] = (predicted(k, 0) - run.states(recorded, 0)) / settings_.positionScale;
@@ -150,9 +151,11 @@ class Problem {
     // The model restarted at step `begin` of the run with the commands before it in flight,
     // replaying `length` recorded commands: length x n predicted states (after each step).
     static Eigen::MatrixXd simulate(const core::Demonstration& run,
-                                    const PlantParameters& parameters, int begin, int length) {
+                                    const PlantParameters& parameters, int begin, int length,
+                                    int substeps) {
         SimulationTiming timing;
         timing.controlPeriod = run.dt;
+        timing.physicsSubsteps = substeps;
         std::unique_ptr<Plant> plant = PlantCatalog::create(parameters, timing);
         plant->resetTo(run.states.row(begin).transpose());
         std::vector<Eigen::VectorXd> history;
@@ -299,6 +302,22 @@ void profileDelays(Problem& problem, SearchContext& context, std::vector<double>
 }
 
 }  // namespace
+
+PlantParameters measuredPrior(const PlantParameters& car) {
+    PlantParameters prior = defaultPlantParameters(car.plant);
+    const Plan plan = planFor(car.plant);
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(car.plant);
+    for (size_t j = 0; j < specs.size() && j < car.values.size(); ++j) {
+        const bool fitted = plan.continuous.contains(specs[j].key) || plan.delays.contains(specs[j].key);
+        if (!fitted && !specs[j].unmodelled) {
+            prior.values[j] = car.values[j];
+        }
+    }
+    if (!plantParametersProblem(prior.plant, prior.values).isEmpty()) {
+        return defaultPlantParameters(car.plant);  // the measured keys alone break a relation
+    }
+    return prior;
+}
 
 bool identificationAvailable(const QString& plant) {
     return !planFor(plant).continuous.isEmpty();
@@ -459,8 +478,10 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
     if (n > 0) {
         // First over the whole box (a controlled random search: the cost is rugged where the
         // tyres snap), then locally.
-        best = localSearch(context, u, 3 * evaluations, 0.2, NLOPT_GN_CRS2_LM);
-        best = localSearch(context, u, evaluations, 0.1);
+        if (settings.global) {
+            best = localSearch(context, u, 3 * evaluations, 0.2, NLOPT_GN_CRS2_LM);
+        }
+        best = localSearch(context, u, evaluations, settings.global ? 0.1 : 0.05);
     }
     if (context.cancelled) {
         return false;
@@ -592,7 +613,7 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     context.progress = &progress;
     context.budget =
         static_cast<long long>(settings.evaluationsPerStart) * (2 + settings.restarts) * 3 / 2;
-    const double physicsStep = runs.front().dt / SimulationTiming{}.physicsSubsteps;
+    const double physicsStep = runs.front().dt / settings.physicsSubsteps;
     {
         // The prior's own fit, to compare.
         const Eigen::VectorXd r = first.residuals(prior.values);
@@ -616,7 +637,7 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     PlantParameters start = prior;
     std::vector<double> values = prior.values;
     long long evaluations = 0;
-    for (int pass = 0; pass < 3; ++pass) {
+    for (int pass = 0; pass < std::max(1, settings.passes); ++pass) {
         Problem problem(runs, start, settings, plan);
         context.problem = &problem;
         const int budget =
@@ -697,7 +718,7 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     for (const Segment& s : first.segments()) {  // the same segments in every pass
         const core::Demonstration& run = runs[static_cast<size_t>(s.run)];
         const Eigen::MatrixXd predicted =
-            Problem::simulate(run, result.parameters, s.begin, s.length);
+            Problem::simulate(run, result.parameters, s.begin, s.length, settings.physicsSubsteps);
         double position = 0.0;
         double heading = 0.0;
         for (int k = 0; k < s.length; ++k) {
@@ -724,14 +745,33 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
 
 }  // namespace
 
-Eigen::MatrixXd replayRun(const core::Demonstration& run, const PlantParameters& parameters) {
+double modelPositionRms(const std::vector<core::Demonstration>& runs,
+                        const PlantParameters& parameters, const IdentificationSettings& settings) {
+    Problem problem(runs, parameters, settings, Plan{});
+    if (problem.segments().size() < 2) {
+        return -1.0;
+    }
+    const Eigen::VectorXd r = problem.residuals(parameters.values);
+    if (r.size() == 0) {
+        return -1.0;
+    }
+    double sum = 0.0;
+    for (int i = 0; i + 2 < r.size(); i += 3) {
+        sum += r[i] * r[i] + r[i + 1] * r[i + 1];
+    }
+    return settings.positionScale * std::sqrt(sum / std::max<Eigen::Index>(1, r.size() / 3));
+}
+
+Eigen::MatrixXd replayRun(const core::Demonstration& run, const PlantParameters& parameters,
+                          int physicsSubsteps) {
     Eigen::MatrixXd out(run.length(), run.stateDimension());
     if (run.length() == 0) {
         return out;
     }
     out.row(0) = run.states.row(0);
     if (run.length() > 1) {
-        out.bottomRows(run.length() - 1) = Problem::simulate(run, parameters, 0, run.length() - 1);
+        out.bottomRows(run.length() - 1) =
+            Problem::simulate(run, parameters, 0, run.length() - 1, physicsSubsteps);
     }
     return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Plant.h"
 #include "PlantParameters.h"
 #include "core/Demonstration.h"
 
@@ -31,6 +32,15 @@ struct IdentificationSettings {
     /// its value; the others are held at their prior.
     double identifiedBelow = 0.10;
     std::uint64_t seed = 1;  ///< the restarts' draws
+    /// Physics steps per control step of the model fitted (SimulationTiming): the dead times
+    /// are searched on this grid. A planner that simulates with fewer steps for speed fits its
+    /// model with the same.
+    int physicsSubsteps = SimulationTiming{}.physicsSubsteps;
+    /// A search over the whole box first (a controlled random search). Off for a refit from a
+    /// model already identified, which searches near it only.
+    bool global = true;
+    /// Passes of "the undetermined back at their prior, the rest fitted again" (at least 1).
+    int passes = 3;
 };
 
 /// One parameter of an identified model. Plain data.
@@ -74,6 +84,11 @@ using IdentificationProgress = std::function<bool(long long done, long long tota
 bool identificationAvailable(const QString& plant);
 QStringList identifiedKeys(const QString& plant);
 
+/// What a lab measures rather than identifies (the mass, the geometry: a scale and a ruler),
+/// taken from `car`; every other parameter the catalog plant's. The prior an identification
+/// starts from when it is to know nothing else of the car.
+PlantParameters measuredPrior(const PlantParameters& car);
+
 /// Empty when these runs can identify the plant; else why not, naming the run and where: a run
 /// of another plant or shape, a gap in the poses, too short, constant actions, no slide (the
 /// slide-car's grips need one).
@@ -90,8 +105,16 @@ IdentificationResult identifyPlant(const std::vector<core::Demonstration>& runs,
                                    const IdentificationSettings& settings = {},
                                    const IdentificationProgress& progress = {});
 
+/// The position RMS [m] of a model over the runs' multiple-shooting segments (what
+/// IdentificationResult::positionRms says of an identified one); -1 when the runs have fewer
+/// than two segments with motion.
+double modelPositionRms(const std::vector<core::Demonstration>& runs,
+                        const PlantParameters& parameters,
+                        const IdentificationSettings& settings = {});
+
 /// The model's replay of the run's recorded actions from its first state, open loop over the
 /// whole run (the window draws it next to the recorded path): T x n states.
-Eigen::MatrixXd replayRun(const core::Demonstration& run, const PlantParameters& parameters);
+Eigen::MatrixXd replayRun(const core::Demonstration& run, const PlantParameters& parameters,
+                          int physicsSubsteps = SimulationTiming{}.physicsSubsteps);
 
 }  // namespace prisca::sim

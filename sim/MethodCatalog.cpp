@@ -1,5 +1,8 @@
 #include "MethodCatalog.h"
 
+#include "Identification.h"
+#include "MpcController.h"
+
 #include "OracleController.h"
 #include "core/ActionPlayback.h"
 #include "core/IlcController.h"
@@ -11,6 +14,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -196,6 +200,53 @@ Made makeOracle(const MethodSpec&, const MethodInput& in) {
     }
     return std::make_unique<OracleController>(
         profile.trackingProblem(demonstration, Mode::TimeDriven), parameters);
+}
+
+Made makeMpc(const MethodSpec&, const MethodInput& in) {
+    const MethodTuning& profile = in.profile;
+    const auto& demonstration = in.demonstration;
+    if (!identificationAvailable(profile.info.name)) {
+        throw std::invalid_argument(
+            QStringLiteral("mpc plans through an identified model; identification knows %1, not "
+                           "'%2'")
+                .arg(QStringLiteral("slidecar"), profile.info.name)
+                .toStdString());
+    }
+    OracleParameters planner = profile.oracle;
+    const EpisodeSettings trial = profile.episode(*demonstration, 1.0, 1.0);
+    const double dt = demonstration->dt;
+    planner.trialSteps = static_cast<int>(trial.duration / dt + 0.5);
+    planner.restAfterStep =
+        trial.stopAtRestAfter >= 0.0 ? static_cast<int>(trial.stopAtRestAfter / dt + 0.5) : -1;
+    if (profile.oracleFeedback) {
+        planner.feedback = -(profile.pd.kp.asDiagonal() * profile.pd.errorCombination);
+    }
+    // The fallback: the PD with the least-state-deviation reference, the profile's law.
+    std::unique_ptr<core::Controller> fallback =
+        MethodCatalog::create(QStringLiteral("pd-lsd"), profile, demonstration, in.fittedB);
+    std::vector<core::Demonstration> data{*demonstration};
+    const IdentificationSettings settings = mpcIdentificationSettings(profile.mpc, false);
+    PlantParameters model;
+    double fit = -1.0;
+    if (profile.mpcModel) {
+        model = *profile.mpcModel;
+        fit = modelPositionRms(data, model, settings);
+    } else {
+        const PlantParameters prior =
+            profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
+        const IdentificationResult identified = identifyPlant(data, prior, settings);
+        if (identified.ok()) {
+            model = identified.parameters;
+            fit = identified.positionRms;
+        } else {
+            // Nothing to plan through: the fallback flies every trial, and says why.
+            model = identified.parameters;
+            fit = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    return std::make_unique<MpcController>(profile.trackingProblem(demonstration, Mode::TimeDriven),
+                                           profile.mpc, planner, std::move(fallback),
+                                           std::move(model), fit, std::move(data));
 }
 
 Made makePlayback(const MethodSpec&, const MethodInput& in) {
@@ -822,6 +873,68 @@ const MethodParameter& oracleReplan() {
     return p;
 }
 
+const MethodParameter& mpcReplan() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "mpc.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Replanning"), "steps", 1,
+            100,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Control steps between two plans through the model (2 at 25 Hz: "
+                              "every 0.08 s)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.replanEvery); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.replanEvery = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcRollouts() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "mpc.rollouts", QT_TRANSLATE_NOOP("MethodParameter", "Model runs per plan"), "", 2,
+            1000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The planning's budget: runs of the model to the trial's end per "
+                              "plan."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.rollouts); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.rollouts = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcTube() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.tube", QT_TRANSLATE_NOOP("MethodParameter", "Predicted tube"), "m", 0.01, 10.0, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "How far the measured position may stray from the model's "
+                              "prediction before the fallback law finishes the trial."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.tubePosition); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.tubePosition = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcRefit() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "mpc.refit", QT_TRANSLATE_NOOP("MethodParameter", "Refit after each trial"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Refit the model on the demonstration and the day's newest trials "
+                              "after each trial."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.refit ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.refit = v[0] > 0.5; };
+        return p;
+    }();
+    return p;
+}
+
 // ---- lqr: a time-varying LQR on the model fitted from the demonstration ----------------------
 
 // Its per-plant defaults, from grids on each plant's tuning cells only (docs/results.md, "LQR").
@@ -1007,6 +1120,12 @@ std::vector<MethodSpec> makeCatalog() {
     s.summary = "iterative learning control around the PD";
     s.parameters = {ilcLearning(), ilcLead(), ilcCutoff(), ilcFeedback(), pdKp(), pdKd()};
     all.push_back(s);
+    s = entry("mpc", "MPC", &makeMpc);
+    s.learnsOnline = true;  // the model is refit on each trial
+    s.inDefaultTable1 = false;
+    s.summary = "model-predictive parking through the car identified from its demonstration";
+    s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcRefit()};
+    all.push_back(s);
     s = entry("oracle", "LIMIT (oracle)", &makeOracle);
     s.limit = true;
     s.simulationOnly = true;
@@ -1035,6 +1154,16 @@ QStringList MethodCatalog::table1Ids() {
     QStringList ids;
     for (const MethodSpec& s : all()) {
         if (s.inTable1) {
+            ids << s.id;
+        }
+    }
+    return ids;
+}
+
+QStringList MethodCatalog::defaultTable1Ids() {
+    QStringList ids;
+    for (const MethodSpec& s : all()) {
+        if (s.inTable1 && s.inDefaultTable1) {
             ids << s.id;
         }
     }

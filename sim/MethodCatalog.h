@@ -37,6 +37,9 @@ struct MethodSpec {
     bool learnsOnline = false;  ///< learns trial after trial (warm-started in training)
     Training training = Training::None;
     bool inTable1 = true;         ///< has a row in Table I
+    /// Runs in a Table I no one chose the methods of (false: only when named, as mpc, whose
+    /// identification takes seconds per cell and which runs on the slide-car alone).
+    bool inDefaultTable1 = true;
     bool inCurves = true;         ///< can be drawn as a learning curve
     bool ownFeatures = false;     ///< theta over the profile's PRISCA features (priscaFeatures)
     bool usesFeatures = false;    ///< a policy theta^T phi over features (the panel shows phi)
@@ -58,6 +61,8 @@ class MethodCatalog {
     /// Every id; the ids with a Table I row; the ids a learning curve can show.
     static QStringList ids();
     static QStringList table1Ids();
+    /// The Table I methods run when none are named (inDefaultTable1).
+    static QStringList defaultTable1Ids();
     static QStringList curveIds();
     /// The spec of an id, or null.
     static const MethodSpec* find(const QString& id);

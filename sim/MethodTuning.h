@@ -2,6 +2,7 @@
 
 #include "EpisodeRunner.h"
 #include "MeasurementModel.h"
+#include "MpcController.h"
 #include "OracleController.h"
 #include "Plant.h"
 #include "core/ActionMapping.h"
@@ -15,6 +16,7 @@
 #include <Eigen/Core>
 
 #include <map>
+#include <memory>
 #include <optional>
 
 namespace prisca::sim {
@@ -130,6 +132,13 @@ struct MethodTuning {
     OracleParameters oracle;
     /// Whether the oracle plans through the proportional part of the PD feedback.
     bool oracleFeedback = true;
+    /// Model-predictive parking (mpc): its planning, tube and refits.
+    MpcParameters mpc;
+    /// The model mpc plans through: an identified car (a plant file `identify` wrote); null:
+    /// identified from the demonstration when the controller is made, starting from mpcPrior
+    /// (the car's measured mass and geometry, the rest the catalog's; null: the catalog car).
+    std::shared_ptr<const PlantParameters> mpcModel;
+    std::shared_ptr<const PlantParameters> mpcPrior;
     int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
     /// The values of parameters a method declares with no field here (MethodParameter without
     /// get/set), by parameter name; forPlant() fills in each one's per-plant default.

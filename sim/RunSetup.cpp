@@ -1,5 +1,7 @@
 #include "RunSetup.h"
 
+#include "Identification.h"
+
 #include "MethodTraining.h"
 #include "PlantCatalog.h"
 #include "RunLogBuilder.h"
@@ -32,6 +34,13 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
     }
     // The plant steps at the demonstration's own period, whatever rate it was recorded at.
     task_.timing.controlPeriod = task_.demonstration->dt;
+    // A model identified from the demonstration starts from what a lab measures of this car
+    // (its mass and geometry), knowing nothing else of it.
+    if (!task_.profile.mpcModel && !task_.profile.mpcPrior && task_.plantParameters &&
+        identificationAvailable(task_.plantParameters->plant)) {
+        task_.profile.mpcPrior =
+            std::make_shared<const PlantParameters>(measuredPrior(*task_.plantParameters));
+    }
     episode_ = task_.profile.episode(*task_.demonstration, settings_.perturbation,
                                      settings_.sensor);
     episode_.perturbation.model = settings_.perturbationModel;

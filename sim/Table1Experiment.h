@@ -21,7 +21,7 @@ namespace prisca::sim {
 /// How Table I is produced (paper Table I, docs/architecture.md "Metrics"). Plain data.
 struct Table1Settings {
     /// Methods, as MethodCatalog names them, in table order (default: every Table I method).
-    QStringList methods = MethodCatalog::table1Ids();
+    QStringList methods = MethodCatalog::defaultTable1Ids();
     int trials = 20;  ///< evaluation trials per method
     /// The seed (evaluation trial i uses mixSeed(seed, i)), the levels, the training trials
     /// (their own seeds, never evaluation ones: PD (selected) scores its gain grid on them;

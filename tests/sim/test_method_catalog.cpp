@@ -261,6 +261,10 @@ class TestMethodCatalog : public QObject {
         // The traits the experiments read, as the paper's protocol has them.
         QCOMPARE(MethodCatalog::table1Ids(),
                  QStringList({"prisca", "prisca-paper", "pd", "pd-selected", "pd-h", "pd-lsd",
+                              "pd-h-lsd", "lqr", "playback", "pgsd", "ilc", "mpc", "oracle"}));
+        // mpc runs when named: it identifies a car per cell, and the slide-car only.
+        QCOMPARE(MethodCatalog::defaultTable1Ids(),
+                 QStringList({"prisca", "prisca-paper", "pd", "pd-selected", "pd-h", "pd-lsd",
                               "pd-h-lsd", "lqr", "playback", "pgsd", "ilc", "oracle"}));
         QVERIFY(!MethodCatalog::curveIds().contains("pd-selected"));
         QVERIFY(MethodCatalog::curveIds().contains("pegasus"));
@@ -270,7 +274,7 @@ class TestMethodCatalog : public QObject {
             if (spec.limit) limits << spec.id;
             if (spec.ownFeatures) own << spec.id;
         }
-        QCOMPARE(online, QStringList({"prisca", "prisca-paper", "pgsd", "ilc"}));
+        QCOMPARE(online, QStringList({"prisca", "prisca-paper", "pgsd", "ilc", "mpc"}));
         QCOMPARE(limits, QStringList({"oracle"}));
         QCOMPARE(own, QStringList({"prisca", "prisca-paper"}));
         QVERIFY(MethodCatalog::get("oracle").simulationOnly);

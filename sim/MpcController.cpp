@@ -1,0 +1,263 @@
+#include "MpcController.h"
+
+#include "PlantCatalog.h"
+#include "core/DeviationModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+// The commands in flight when the model restarts at a measured state: this many control steps
+// of history (covers the dead times and the servo's travel, as identification's segments).
+constexpr int kHistorySteps = 12;
+
+}  // namespace
+
+IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
+    IdentificationSettings settings;
+    settings.physicsSubsteps = parameters.substeps;
+    if (refit) {
+        settings.global = false;
+        settings.restarts = 0;
+        settings.passes = 1;
+        settings.evaluationsPerStart = parameters.refitEvaluations;
+    } else {
+        settings.restarts = 1;
+        settings.evaluationsPerStart = parameters.identifyEvaluations;
+    }
+    return settings;
+}
+
+MpcController::MpcController(core::TrackingProblem problem, MpcParameters parameters,
+                             OracleParameters planner, std::unique_ptr<core::Controller> fallback,
+                             PlantParameters model, double modelFit,
+                             std::vector<core::Demonstration> data)
+    : problem_(core::TrackingProblem::validated(std::move(problem))),
+      parameters_(parameters),
+      plannerParameters_(std::move(planner)),
+      fallback_(std::move(fallback)),
+      firstModel_(model),
+      firstFit_(modelFit),
+      model_(std::move(model)),
+      modelFit_(modelFit),
+      data_(data),
+      firstData_(std::move(data)) {
+    if (!fallback_) {
+        throw std::invalid_argument("MpcController: a fallback law is needed");
+    }
+    if (!problem_.deviation.pose) {
+        throw std::invalid_argument("MpcController: model-predictive parking needs a planar vehicle");
+    }
+    if (parameters_.replanEvery < 1 || parameters_.rollouts < 2 || parameters_.maxKnots < 2 ||
+        parameters_.substeps < 1 || parameters_.tubeSteps < 1 || parameters_.tubeStrikes < 1 ||
+        !(parameters_.tubePosition > 0.0) || !(parameters_.tubeHeading > 0.0)) {
+        throw std::invalid_argument(
+            "MpcController: replanning, rollouts >= 2, knots >= 2, substeps, the tube's steps and "
+            "strikes >= 1 and positive tube bounds needed");
+    }
+    if (model_.plant != problem_.demonstration->plant && !problem_.demonstration->plant.isEmpty()) {
+        throw std::invalid_argument(
+            QStringLiteral("MpcController: the model is a '%1', the demonstration a '%2'")
+                .arg(model_.plant, problem_.demonstration->plant)
+                .toStdString());
+    }
+    plannerParameters_.objective = OracleParameters::Objective::FinalPose;
+    plannerParameters_.replanEvery = parameters_.replanEvery;
+    plannerParameters_.samples = parameters_.rollouts;
+    plannerParameters_.maxKnots = parameters_.maxKnots;
+    record_.action.setZero(problem_.demonstration->actionDimension());
+    reset(core::ResetMode::Cold);
+}
+
+MpcController::MpcController(const MpcController& other)
+    : problem_(other.problem_),
+      parameters_(other.parameters_),
+      plannerParameters_(other.plannerParameters_),
+      fallback_(other.fallback_->clone()),
+      firstModel_(other.firstModel_),
+      firstFit_(other.firstFit_),
+      model_(other.model_),
+      modelFit_(other.modelFit_),
+      data_(other.data_),
+      firstData_(other.firstData_),
+      latency_(other.latency_),
+      pendingLatency_(other.pendingLatency_),
+      observations_(other.observations_),
+      actions_(other.actions_),
+      mode_(other.mode_),
+      fallbackReason_(other.fallbackReason_),
+      fallbackStep_(other.fallbackStep_),
+      strikes_(other.strikes_),
+      refits_(other.refits_),
+      step_(other.step_),
+      record_(other.record_) {
+    buildModel();
+    if (other.planner_) {
+        planner_ = std::make_unique<OracleController>(*other.planner_);
+        planner_->attachPlant(modelPlant_.get());
+    }
+    if (other.modelPlant_) {
+        modelPlant_->resetTo(other.modelPlant_->state());
+    }
+}
+
+std::unique_ptr<core::Controller> MpcController::clone() const {
+    return std::make_unique<MpcController>(*this);
+}
+
+void MpcController::setLatencyCompensation(int steps) {
+    pendingLatency_ = std::max(0, steps);
+    fallback_->setLatencyCompensation(steps);
+}
+
+void MpcController::buildModel() {
+    SimulationTiming timing;
+    timing.controlPeriod = problem_.demonstration->dt;
+    timing.physicsSubsteps = parameters_.substeps;
+    modelPlant_ = PlantCatalog::create(model_, timing);
+    scratch_ = PlantCatalog::create(model_, timing);
+    planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
+    planner_->attachPlant(modelPlant_.get());
+}
+
+void MpcController::reset(core::ResetMode mode) {
+    if (mode == core::ResetMode::Cold) {
+        model_ = firstModel_;
+        modelFit_ = firstFit_;
+        data_ = firstData_;
+        refits_ = 0;
+    } else if (step_ > 0) {
+        refitOnLastTrial();
+    }
+    latency_ = pendingLatency_;
+    buildModel();
+    fallback_->reset(mode);
+    observations_.clear();
+    actions_.clear();
+    step_ = 0;
+    strikes_ = 0;
+    mode_ = MpcMode::Planning;
+    fallbackReason_.clear();
+    fallbackStep_ = -1;
+    if (!(modelFit_ <= parameters_.poorFit) && modelFit_ >= 0.0) {
+        fallBack(QStringLiteral("the model fits its data to %1 cm, more than the %2 cm it may")
+                     .arg(100.0 * modelFit_, 0, 'f', 1)
+                     .arg(100.0 * parameters_.poorFit, 0, 'f', 1));
+    } else if (!std::isfinite(modelFit_)) {
+        fallBack(QStringLiteral("the model's fit is unknown"));
+    }
+}
+
+void MpcController::fallBack(const QString& reason) {
+    mode_ = MpcMode::Fallback;
+    fallbackReason_ = reason;
+    fallbackStep_ = step_;
+}
+
+void MpcController::predictInto(Plant& model, int from, int count) const {
+    model.resetTo(observations_[static_cast<size_t>(from)]);
+    const int m = problem_.demonstration->actionDimension();
+    auto sent = [&](int k) -> Eigen::VectorXd {
+        return k < 0 ? Eigen::VectorXd::Zero(m) : actions_[static_cast<size_t>(k)];
+    };
+    const int start = from - latency_;  // the observation's own time
+    std::vector<Eigen::VectorXd> history;
+    history.reserve(kHistorySteps);
+    for (int k = start - kHistorySteps; k < start; ++k) {
+        history.push_back(sent(k));
+    }
+    model.primeActuators(history);
+    for (int i = 0; i < count; ++i) {
+        model.step(sent(start + i));
+    }
+}
+
+const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::VectorXd>& observation) {
+    const int k = step_;
+    observations_.emplace_back(observation);
+    // The fallback follows every step, so that its reference is current when it takes over.
+    const core::ControlStep& law = fallback_->step(observation);
+    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+    if (mode_ == MpcMode::Planning && k >= parameters_.tubeSteps) {
+        // Where the model said the car would be, given the commands sent since tubeSteps ago.
+        predictInto(*scratch_, k - parameters_.tubeSteps, parameters_.tubeSteps);
+        const Eigen::VectorXd predicted = scratch_->state();
+        const double position = std::hypot(predicted[pose.x] - observation[pose.x],
+                                           predicted[pose.y] - observation[pose.y]);
+        const double heading =
+            std::abs(core::wrapAngle(predicted[pose.heading] - observation[pose.heading]));
+        if (position > parameters_.tubePosition || heading > parameters_.tubeHeading) {
+            ++strikes_;
+        } else {
+            strikes_ = 0;
+        }
+        if (strikes_ >= parameters_.tubeStrikes) {
+            fallBack(QStringLiteral("the measured pose left the model's predicted tube at %1 s: "
+                                    "%2 cm and %3 deg from the prediction (bounds %4 cm, %5 deg)")
+                         .arg(k * problem_.demonstration->dt, 0, 'f', 2)
+                         .arg(100.0 * position, 0, 'f', 1)
+                         .arg(heading * 180.0 / M_PI, 0, 'f', 1)
+                         .arg(100.0 * parameters_.tubePosition, 0, 'f', 1)
+                         .arg(parameters_.tubeHeading * 180.0 / M_PI, 0, 'f', 1));
+        }
+    }
+    if (mode_ == MpcMode::Fallback) {
+        record_ = law;
+    } else {
+        // The model at the state of now: the measurement predicted through the latency.
+        predictInto(*modelPlant_, k, latency_);
+        record_ = planner_->step(modelPlant_->state());
+    }
+    record_.step = k;
+    actions_.push_back(record_.action);
+    ++step_;
+    return record_;
+}
+
+void MpcController::refitOnLastTrial() {
+    const int L = latency_;
+    const int steps = static_cast<int>(actions_.size());
+    if (!parameters_.refit || data_.empty() || steps - L < 4) {
+        return;
+    }
+    // The trial as a run: the observation of step k + L is the state at step k.
+    const core::Demonstration demonstration = data_.front();  // a copy: data_ grows below
+    core::Demonstration trial;
+    trial.plant = demonstration.plant;
+    trial.dt = demonstration.dt;
+    trial.stateNames = demonstration.stateNames;
+    trial.stateUnits = demonstration.stateUnits;
+    trial.actionNames = demonstration.actionNames;
+    trial.actionUnits = demonstration.actionUnits;
+    const int T = steps - L;
+    const int n = demonstration.stateDimension();
+    const int m = demonstration.actionDimension();
+    trial.time.resize(T);
+    trial.states.resize(T, n);
+    trial.actions.resize(T, m);
+    for (int i = 0; i < T; ++i) {
+        trial.time[i] = i * trial.dt;
+        trial.states.row(i) = observations_[static_cast<size_t>(i + L)].transpose();
+        trial.actions.row(i) = actions_[static_cast<size_t>(i)].transpose();
+    }
+    data_.push_back(std::move(trial));
+    std::vector<core::Demonstration> runs{demonstration};
+    const int trials = static_cast<int>(data_.size()) - 1;
+    for (int i = std::max(1, trials + 1 - parameters_.refitTrials); i <= trials; ++i) {
+        runs.push_back(data_[static_cast<size_t>(i)]);
+    }
+    const IdentificationResult fit =
+        identifyPlant(runs, model_, mpcIdentificationSettings(parameters_, true));
+    if (fit.ok() && std::isfinite(fit.positionRms)) {
+        model_ = fit.parameters;
+        modelFit_ = fit.positionRms;
+        ++refits_;
+    }
+}
+
+}  // namespace prisca::sim

@@ -1,0 +1,191 @@
+// Model-predictive parking: it parks the slide-car through a model that is right, falls back to
+// its feedback law under a model that is wrong (the predicted tube) or fits badly, refits after
+// each trial, and goes back to its first model on a cold reset.
+#include "core/ActionMapping.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/Identification.h"
+#include "sim/MethodCatalog.h"
+#include "sim/MethodTuning.h"
+#include "sim/MpcController.h"
+#include "sim/PlantCatalog.h"
+#include "sim/PlantParameters.h"
+#include "sim/TrialMetrics.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+namespace {
+
+PlantParameters withValues(PlantParameters p, const std::vector<std::pair<const char*, double>>& v) {
+    const auto& specs = plantParameterSpecs(p.plant);
+    for (const auto& [key, value] : v) {
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == QLatin1String(key)) {
+                p.values[i] = value;
+            }
+        }
+    }
+    return p;
+}
+
+struct Setup {
+    std::shared_ptr<const core::Demonstration> demonstration =
+        std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
+    MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+    Eigen::MatrixXd b() const {
+        return core::fitActionMapping(*demonstration, profile.mapping,
+                                      profile.info.deviationModel())
+            .b;
+    }
+    std::unique_ptr<MpcController> mpc() const {
+        auto controller = MethodCatalog::create("mpc", profile, demonstration, b());
+        auto* mpc = dynamic_cast<MpcController*>(controller.get());
+        if (!mpc) {
+            return nullptr;
+        }
+        controller.release();
+        return std::unique_ptr<MpcController>(mpc);
+    }
+    // One trial of the catalog car at these levels; the parking error [m].
+    double trial(core::Controller& controller, std::uint64_t seed, double level,
+                 core::ResetMode reset = core::ResetMode::Cold) const {
+        auto plant = PlantCatalog::create("slidecar");
+        EpisodeSettings s = profile.episode(*demonstration, level, level);
+        s.seed = seed;
+        s.resetMode = reset;
+        s.recordSteps = false;
+        const EpisodeResult r = runEpisode(*plant, controller, s);
+        const core::PlanarPoseIndices pose = *profile.info.pose;
+        return parkingError(profile.info, *demonstration, r.finalState[pose.x],
+                            r.finalState[pose.y], r.finalState[pose.heading])
+            .position;
+    }
+};
+
+}  // namespace
+
+class TestMpc : public QObject {
+    Q_OBJECT
+  private slots:
+    // Through the car's own model, from perfect measurements, it parks on the lot and never
+    // leaves its tube.
+    void rightModel_parksOnTheLot() {
+        Setup setup;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        auto mpc = setup.mpc();
+        QVERIFY(mpc);
+        const double error = setup.trial(*mpc, 11, 0.0);
+        QCOMPARE(mpc->mode(), MpcMode::Planning);
+        QVERIFY2(mpc->fallbackReason().isEmpty(), qPrintable(mpc->fallbackReason()));
+        QVERIFY2(error < 0.02, qPrintable(QString::number(error)));
+        // With the realistic perturbation and sensor the measurements stay inside the tube too.
+        for (std::uint64_t seed : {3, 4}) {
+            setup.trial(*mpc, seed, 1.0);
+            QVERIFY2(mpc->mode() == MpcMode::Planning, qPrintable(mpc->fallbackReason()));
+        }
+    }
+
+    // A deliberately wrong model (half the grip, half the motor): the measured pose leaves the
+    // predicted tube and the feedback law finishes the trial; the right model does not.
+    void wrongModel_theFallbackTakesOver() {
+        Setup setup;
+        setup.profile.mpc.poorFit = 100.0;  // only the tube may call the fallback here
+        setup.profile.mpcModel = std::make_shared<const PlantParameters>(
+            withValues(defaultPlantParameters("slidecar"),
+                       {{"staticFriction", 0.3}, {"kineticFriction", 0.2}, {"maxDriveForce", 4.5}}));
+        auto mpc = setup.mpc();
+        setup.trial(*mpc, 11, 0.0);
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        QVERIFY2(mpc->fallbackReason().contains(QLatin1String("predicted tube")),
+                 qPrintable(mpc->fallbackReason()));
+        QVERIFY(mpc->fallbackStep() >= setup.profile.mpc.tubeSteps);
+        QVERIFY(mpc->fallbackStep() < setup.demonstration->length());
+
+        // From the step it took over, its actions are the feedback law's own.
+        auto again = setup.mpc();
+        auto law = MethodCatalog::create("pd-lsd", setup.profile, setup.demonstration, setup.b());
+        auto plant = PlantCatalog::create("slidecar");
+        EpisodeSettings s = setup.profile.episode(*setup.demonstration, 0.0, 0.0);
+        s.seed = 11;
+        EpisodeStepper stepper(*plant, *again, s);
+        law->reset();
+        int compared = 0;
+        while (!stepper.finished()) {
+            const int k = stepper.stepCount();
+            const StepRecord& taken = stepper.step();
+            const Eigen::VectorXd lawAction = law->step(taken.observation).action;
+            if (again->mode() == MpcMode::Fallback && k > again->fallbackStep()) {
+                QVERIFY((taken.action - lawAction).norm() < 1e-12);
+                ++compared;
+            }
+        }
+        QVERIFY(compared > 10);
+    }
+
+    // A model that fits its data worse than the bound is not planned through at all.
+    void poorFit_fallsBackFromTheStart() {
+        Setup setup;
+        setup.profile.mpc.poorFit = 1e-6;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        auto mpc = setup.mpc();
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        QCOMPARE(mpc->fallbackStep(), 0);
+        QVERIFY2(mpc->fallbackReason().contains(QLatin1String("fits its data")),
+                 qPrintable(mpc->fallbackReason()));
+        QVERIFY(mpc->modelFit() > 0.0);
+    }
+
+    // After each trial the model is refit on the demonstration and the trial; a cold reset goes
+    // back to the first model. A clone carries the refit model and is independent.
+    void refit_afterEachTrial_coldResetForgets() {
+        Setup setup;
+        // A start a little off the car, so the refit has something to move.
+        const PlantParameters off = withValues(defaultPlantParameters("slidecar"),
+                                               {{"maxDriveForce", 8.2}, {"drivelineDrag", 0.6}});
+        setup.profile.mpcModel = std::make_shared<const PlantParameters>(off);
+        auto mpc = setup.mpc();
+        setup.trial(*mpc, 5, 1.0, core::ResetMode::Cold);
+        QCOMPARE(mpc->refits(), 0);
+        setup.trial(*mpc, 6, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(mpc->refits(), 1);
+        QVERIFY(mpc->model().values != off.values);
+        auto copy = mpc->clone();
+        auto* copied = dynamic_cast<MpcController*>(copy.get());
+        QVERIFY(copied);
+        QCOMPARE(copied->model().values, mpc->model().values);
+        mpc->reset(core::ResetMode::Cold);
+        QCOMPARE(mpc->refits(), 0);
+        QCOMPARE(mpc->model().values, off.values);
+        QCOMPARE(copied->refits(), 1);
+    }
+
+    // Without a model it identifies one from the demonstration; a plant identification does
+    // not know is refused with the reason.
+    void noModel_identifiesFromTheDemonstration() {
+        Setup setup;
+        setup.profile.mpc.identifyEvaluations = 60;
+        auto mpc = setup.mpc();
+        QVERIFY(mpc);
+        QVERIFY(mpc->modelFit() >= 0.0);
+        QVERIFY(mpc->modelFit() < 0.05);
+
+        const MethodTuning acrobot = MethodTuning::forPlant(PlantCatalog::describe("acrobot"));
+        auto demo =
+            std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("acrobot", 1));
+        try {
+            MethodCatalog::create("mpc", acrobot, demo, Eigen::MatrixXd::Zero(1, 4));
+            QFAIL("mpc on the acrobot was accepted");
+        } catch (const std::invalid_argument& e) {
+            QVERIFY2(QString::fromUtf8(e.what()).contains(QLatin1String("'acrobot'")), e.what());
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMpc)
+#include "test_mpc.moc"
