@@ -45,6 +45,9 @@ struct MethodSpec {
     bool usesFeatures = false;    ///< a policy theta^T phi over features (the panel shows phi)
     bool limit = false;           ///< the ruler every accuracy figure is read against
     bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
+    /// The plants it runs on (empty: every plant).
+    QStringList plants;
+    bool runsOn(const QString& plant) const { return plants.isEmpty() || plants.contains(plant); }
     /// What the method is tuned by, in the order the Controller panel shows them; a parameter
     /// several methods share (the PD gains, the matching window) is the same declaration in
     /// each of their lists.

@@ -54,7 +54,7 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
         throw std::invalid_argument("MpcController: model-predictive parking needs a planar vehicle");
     }
     if (parameters_.replanEvery < 1 || parameters_.rollouts < 2 || parameters_.maxKnots < 2 ||
-        parameters_.substeps < 1 || parameters_.tubeSteps < 1 || parameters_.tubeStrikes < 1 ||
+        parameters_.substeps < 1 || !(parameters_.tubeSeconds > 0.0) || parameters_.tubeStrikes < 1 ||
         !(parameters_.tubePosition > 0.0) || !(parameters_.tubeHeading > 0.0)) {
         throw std::invalid_argument(
             "MpcController: replanning, rollouts >= 2, knots >= 2, substeps, the tube's steps and "
@@ -70,6 +70,9 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
     plannerParameters_.replanEvery = parameters_.replanEvery;
     plannerParameters_.samples = parameters_.rollouts;
     plannerParameters_.maxKnots = parameters_.maxKnots;
+    plannerParameters_.correctionScale = parameters_.correctionScale;
+    plannerParameters_.maxCorrection = parameters_.maxCorrection;
+    plannerParameters_.trackingScale = parameters_.trackingScale;
     record_.action.setZero(problem_.demonstration->actionDimension());
     reset(core::ResetMode::Cold);
 }
@@ -153,6 +156,11 @@ void MpcController::reset(core::ResetMode mode) {
     }
 }
 
+int MpcController::tubeSteps() const {
+    return std::max(1, static_cast<int>(std::lround(parameters_.tubeSeconds /
+                                                    problem_.demonstration->dt)));
+}
+
 void MpcController::fallBack(const QString& reason) {
     mode_ = MpcMode::Fallback;
     fallbackReason_ = reason;
@@ -183,9 +191,10 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     // The fallback follows every step, so that its reference is current when it takes over.
     const core::ControlStep& law = fallback_->step(observation);
     const core::PlanarPoseIndices pose = *problem_.deviation.pose;
-    if (mode_ == MpcMode::Planning && k >= parameters_.tubeSteps) {
-        // Where the model said the car would be, given the commands sent since tubeSteps ago.
-        predictInto(*scratch_, k - parameters_.tubeSteps, parameters_.tubeSteps);
+    const int lag = tubeSteps();
+    if (mode_ == MpcMode::Planning && k >= lag) {
+        // Where the model said the car would be, given the commands sent since then.
+        predictInto(*scratch_, k - lag, lag);
         const Eigen::VectorXd predicted = scratch_->state();
         const double position = std::hypot(predicted[pose.x] - observation[pose.x],
                                            predicted[pose.y] - observation[pose.y]);

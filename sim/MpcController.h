@@ -19,20 +19,27 @@ struct MpcParameters {
     int replanEvery = 2;  ///< control steps between two plans (2 at 25 Hz: every 0.08 s)
     int rollouts = 12;    ///< model runs per plan: the planning's budget (>= 2 m knots + 2)
     int maxKnots = 4;     ///< knots per channel of the plan's correction (>= 2)
+    /// A correction of this share of the half range costs as much as 1 cm at the lot: the plan
+    /// stays near the demonstration's actions unless moving away pays (OracleParameters).
+    double correctionScale = 0.2;
+    double maxCorrection = 0.6;  ///< the largest correction, share of the half range
+    /// A root-mean-square distance from the demonstration's path this large [m] costs as much
+    /// as 1 cm at the lot: the plan keeps to where the car was identified.
+    double trackingScale = 0.3;
     /// Physics steps per control step of the model (it is identified with the same), fewer
     /// than the simulator's for speed.
     int substeps = 4;
     /// The predicted tube: every control step, the model replays the commands sent over the
-    /// last `tubeSteps` from the state measured then; a measured position this far [m] or a
+    /// last `tubeSeconds` from the state measured then; a measured position this far [m] or a
     /// heading this far [rad] from that prediction on `tubeStrikes` steps in a row, and the
     /// trial is finished by the fallback law.
     double tubePosition = 0.15;
-    double tubeHeading = 0.35;
-    int tubeSteps = 10;
+    double tubeHeading = 0.6;
+    double tubeSeconds = 0.4;
     int tubeStrikes = 3;
     /// The model's position RMS over its data's segments [m] above which it is not planned
     /// through at all (the fallback from the start).
-    double poorFit = 0.05;
+    double poorFit = 0.10;
     /// After each trial the model is refit on the demonstration and the day's newest trials.
     bool refit = true;
     int refitTrials = 4;            ///< at most this many of the newest trials, with the demo
@@ -91,6 +98,7 @@ class MpcController : public core::Controller {
     /// stepped through `count` commands sent from step `from - latency` on.
     void predictInto(Plant& model, int from, int count) const;
     void refitOnLastTrial();
+    int tubeSteps() const;
 
     core::TrackingProblem problem_;
     MpcParameters parameters_;

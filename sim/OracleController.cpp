@@ -90,8 +90,9 @@ Eigen::MatrixXd OracleController::clampedToLimits(Eigen::MatrixXd knots,
         const int t = std::min(times[j], demo.length() - 1);
         for (int l = 0; l < knots.rows(); ++l) {
             const double u0 = demo.actions(t, l);
-            knots(l, j) = std::clamp(knots(l, j), problem_.limits.lower[l] - u0,
-                                     problem_.limits.upper[l] - u0);
+            const double most = parameters_.maxCorrection * halfRange_[l];
+            knots(l, j) = std::clamp(knots(l, j), std::max(problem_.limits.lower[l] - u0, -most),
+                                     std::min(problem_.limits.upper[l] - u0, most));
         }
     }
     return knots;
@@ -114,20 +115,54 @@ Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
     const PlantInfo& info = copy->info();
     if (finalPoseNow_) {
         int t = k;
+        const core::PlanarPoseIndices& at = *problem_.deviation.pose;
+        const bool tracked = parameters_.trackingScale > 0.0;
+        std::vector<double> away;
         while (t < parameters_.trialSteps &&
                !(parameters_.restAfterStep >= 0 && t >= parameters_.restAfterStep &&
                  copy->atRest())) {
-            copy->step(actionAt(t, correction(t), copy->state()));
+            const Eigen::VectorXd s = copy->step(actionAt(t, correction(t), copy->state()));
             ++t;
+            if (tracked) {
+                const int j = std::min(t, demo.length() - 1);
+                away.push_back(s[at.x] - demo.states(j, at.x));
+                away.push_back(s[at.y] - demo.states(j, at.y));
+            }
         }
         simulatedSteps_ += t - k;
         const Eigen::VectorXd s = copy->state();
         const core::PlanarPoseIndices pose = *problem_.deviation.pose;
         const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
-        return Eigen::Vector3d(
+        const Eigen::Vector3d finalPose(
             (s[pose.x] - lot[pose.x]) / parameters_.positionScale,
             (s[pose.y] - lot[pose.y]) / parameters_.positionScale,
             core::wrapAngle(s[pose.heading] - lot[pose.heading]) / parameters_.headingScale);
+        const bool regularised = parameters_.correctionScale > 0.0;
+        if (!regularised && !tracked) {
+            return finalPose;
+        }
+        // A fixed length per planning (the steps to the trial's end at most), so that the
+        // residuals of two candidates compare: steps not taken (the car rested) count as 0.
+        const int trackedSteps = tracked ? 2 * std::max(1, parameters_.trialSteps - k) : 0;
+        Eigen::VectorXd r =
+            Eigen::VectorXd::Zero(3 + (regularised ? knots.size() : 0) + trackedSteps);
+        r.head<3>() = finalPose;
+        int next = 3;
+        if (regularised) {
+            for (int j = 0; j < J; ++j) {
+                for (int l = 0; l < knots.rows(); ++l) {
+                    r[next++] = knots(l, j) / (halfRange_[l] * parameters_.correctionScale);
+                }
+            }
+        }
+        if (tracked) {
+            const double weight = parameters_.positionScale /
+                                  (parameters_.trackingScale * std::sqrt(0.5 * trackedSteps));
+            for (size_t i = 0; i < away.size() && next < r.size(); ++i) {
+                r[next++] = weight * away[i] / parameters_.positionScale;
+            }
+        }
+        return r;
     }
     // The metric the trial is scored by (time-aligned): position for vehicles, joint angles
     // otherwise, of the state after each step.

@@ -53,6 +53,16 @@ struct OracleParameters {
     double positionScale = 0.01;   ///< FinalPose: this much position error [m] ...
     double headingScale = 0.0174533;  ///< ... costs as much as this heading error [rad]
     std::uint64_t seed = 1;           ///< the planner's sampling (the same every trial)
+    /// FinalPose: a correction of this share of the half range [1] costs as much as the
+    /// position scale's error (a plan stays near the demonstration's actions unless moving
+    /// pays); 0: corrections are free (the oracle, which plans on the plant itself).
+    double correctionScale = 0.0;
+    /// FinalPose: a root-mean-square distance [m] from the demonstration's path (time-aligned)
+    /// over the rest of the trial costs as much as the position scale's error at the lot, so
+    /// a plan keeps to where the demonstration drove (where a model was identified); 0: free.
+    double trackingScale = 0.0;
+    /// The largest correction, as a share of the half range [1] (1: the whole range).
+    double maxCorrection = 2.0;
 };
 
 /// The limit of what a controller could do on this simulation: it is given the trial's own

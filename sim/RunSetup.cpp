@@ -27,6 +27,12 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
     if (!task_.demonstration) {
         throw std::invalid_argument("a run needs a demonstration");
     }
+    if (!method_->runsOn(task_.profile.info.name)) {
+        throw std::invalid_argument(QStringLiteral("%1 runs on %2, not on '%3'")
+                                        .arg(method_->id, method_->plants.join(QStringLiteral(", ")),
+                                             task_.profile.info.name)
+                                        .toStdString());
+    }
     if (settings_.trainingTrials < 0 || settings_.threads < 1 || !(settings_.perturbation >= 0.0) ||
         !(settings_.sensor >= 0.0)) {
         throw std::invalid_argument(

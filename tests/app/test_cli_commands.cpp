@@ -642,6 +642,11 @@ class TestCliCommands : public QObject {
         const CliResult r = cli({"run", "--plant", plant, "--demo", demo, "--method", method,
                                  "--param", "pegasus.iterations=1", "--training-trials", "1",
                                  "--out", plant + "-" + method + ".csv", "--format", "json"});
+        if (!prisca::sim::MethodCatalog::get(method).runsOn(plant)) {
+            // A method that does not run on this plant is refused, saying where it runs.
+            QVERIFY2(r.exitCode != 0 && r.err.contains(QLatin1String("runs on")), qPrintable(r.err));
+            return;
+        }
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
         QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
@@ -1403,7 +1408,7 @@ class TestCliCommands : public QObject {
         const CliResult json = cli({"methods", "--format", "json"});
         QCOMPARE(json.exitCode, 0);
         const QJsonArray methods = parseJson(json.out).value("methods").toArray();
-        QCOMPARE(methods.size(), 13);
+        QCOMPARE(methods.size(), 14);
         QJsonObject lqr;
         for (const QJsonValue& m : methods) {
             if (m.toObject().value("id").toString() == QLatin1String("lqr")) {

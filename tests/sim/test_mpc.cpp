@@ -90,20 +90,20 @@ class TestMpc : public QObject {
         }
     }
 
-    // A deliberately wrong model (half the grip, half the motor): the measured pose leaves the
+    // A deliberately wrong model (half the grip, a third of the motor): the measured pose leaves the
     // predicted tube and the feedback law finishes the trial; the right model does not.
     void wrongModel_theFallbackTakesOver() {
         Setup setup;
         setup.profile.mpc.poorFit = 100.0;  // only the tube may call the fallback here
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
             withValues(defaultPlantParameters("slidecar"),
-                       {{"staticFriction", 0.3}, {"kineticFriction", 0.2}, {"maxDriveForce", 4.5}}));
+                       {{"staticFriction", 0.3}, {"kineticFriction", 0.2}, {"maxDriveForce", 3.0}, {"topSpeed", 3.0}}));
         auto mpc = setup.mpc();
         setup.trial(*mpc, 11, 0.0);
         QCOMPARE(mpc->mode(), MpcMode::Fallback);
         QVERIFY2(mpc->fallbackReason().contains(QLatin1String("predicted tube")),
                  qPrintable(mpc->fallbackReason()));
-        QVERIFY(mpc->fallbackStep() >= setup.profile.mpc.tubeSteps);
+        QVERIFY(mpc->fallbackStep() * setup.demonstration->dt >= setup.profile.mpc.tubeSeconds);
         QVERIFY(mpc->fallbackStep() < setup.demonstration->length());
 
         // From the step it took over, its actions are the feedback law's own.

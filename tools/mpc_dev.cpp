@@ -1,0 +1,97 @@
+// Developer tool (not installed): model-predictive parking trial by trial on one cell of the
+// new-car protocol (a variant, a style, a seed set), with PD+LSD on the same trials, and what
+// mpc did each trial (planned or fell back, and why; its model's fit; refits).
+//   mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]
+#include "core/ActionMapping.h"
+#include "sim/DemonstrationStyles.h"
+#include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
+#include "sim/MpcController.h"
+#include "sim/PlantCatalog.h"
+#include "sim/RunSetup.h"
+#include "sim/Task.h"
+#include "sim/TrialMetrics.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+
+using namespace prisca;
+using namespace prisca::sim;
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    if (argc < 5) {
+        std::fprintf(stderr, "usage: mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]\n");
+        return 2;
+    }
+    QString error;
+    const auto read = readPlantParameters(QString::fromLocal8Bit(argv[1]), "slidecar", &error);
+    if (!read) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        return 2;
+    }
+    const auto variant = std::make_shared<const PlantParameters>(*read);
+    const QString style = QString::fromLocal8Bit(argv[2]);
+    const std::uint64_t set = std::stoull(argv[3]);
+    const int trials = std::atoi(argv[4]);
+    MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+    MethodCatalog::setParameter(profile, QStringLiteral("start=demo"));
+    for (int i = 5; i < argc; ++i) {
+        MethodCatalog::setParameter(profile, QString::fromLocal8Bit(argv[i]));
+    }
+    // Development overrides of fields no parameter declares.
+    if (qEnvironmentVariableIsSet("MPC_CS")) profile.mpc.correctionScale = qEnvironmentVariable("MPC_CS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_MC")) profile.mpc.maxCorrection = qEnvironmentVariable("MPC_MC").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_TH")) profile.mpc.tubeHeading = qEnvironmentVariable("MPC_TH").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_PF")) profile.mpc.poorFit = qEnvironmentVariable("MPC_PF").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_KN")) profile.mpc.maxKnots = qEnvironmentVariable("MPC_KN").toInt();
+    if (qEnvironmentVariableIsSet("MPC_TS")) profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
+    RunSettings settings;
+    settings.seed = set;
+    const Task task = makeTask(
+        profile,
+        std::make_shared<core::Demonstration>(DemonstrationStyles::record(
+            "slidecar", style, set, {}, demonstrationConditions(settings, profile, variant.get(), set))),
+        {}, variant);
+    const RunSetup mpcRun(task, "mpc", settings);
+    const RunSetup lawRun(task, "pd-lsd", settings);
+    auto mpc = mpcRun.makeController();
+    auto law = lawRun.makeController();
+    auto* planner = dynamic_cast<MpcController*>(mpc.get());
+    std::printf("model fit %.2f cm\n", 100.0 * planner->modelFit());
+    const core::Demonstration& demo = *task.demonstration;
+    const PlantInfo& info = profile.info;
+    double sumMpc = 0.0, sumLaw = 0.0;
+    for (int t = 0; t < trials; ++t) {
+        auto errorOf = [&](const RunSetup& run, core::Controller& c) {
+            auto plant = run.makePlant();
+            EpisodeSettings e = run.trial(t);
+            const bool trace = qEnvironmentVariableIntValue("TRACE") == t + 1 && &c == mpc.get();
+            e.recordSteps = trace;
+            const EpisodeResult r = runEpisode(*plant, c, e);
+            for (size_t k = 0; trace && k < r.steps.size(); k += 5) {
+                const StepRecord& s = r.steps[k];
+                const int j = std::min<int>(static_cast<int>(k), demo.length() - 1);
+                std::printf("  t %5.2f  x %6.2f y %6.2f psi %6.2f v %5.2f,%5.2f | demo x %6.2f y %6.2f "
+                            "psi %6.2f | u %5.2f %5.2f  u* %5.2f %5.2f\n",
+                            s.time, s.state[0], s.state[1], s.state[2], s.state[3], s.state[4],
+                            demo.states(j, 0), demo.states(j, 1), demo.states(j, 2), s.action[0],
+                            s.action[1], demo.actions(j, 0), demo.actions(j, 1));
+            }
+            const core::PlanarPoseIndices p = *info.pose;
+            return 100.0 * parkingError(info, demo, r.finalState[p.x], r.finalState[p.y],
+                                        r.finalState[p.heading])
+                               .position;
+        };
+        const double a = errorOf(mpcRun, *mpc);
+        const double b = errorOf(lawRun, *law);
+        sumMpc += a;
+        sumLaw += b;
+        std::printf("trial %2d: mpc %6.1f cm  pd-lsd %6.1f cm  fit %.2f cm refits %d  %s\n", t + 1,
+                    a, b, 100.0 * planner->modelFit(), planner->refits(),
+                    qPrintable(planner->fallbackReason()));
+    }
+    std::printf("mean: mpc %.1f cm, pd-lsd %.1f cm\n", sumMpc / trials, sumLaw / trials);
+    return 0;
+}
