@@ -163,6 +163,10 @@ void addMethodParameterOptions(CommandLine& line) {
                   "--plant-params or --variants). The same as "
                   "--param start=VALUE, applied before every --param.",
                   "demo|tuned");
+    line.addValue("model",
+                  "The car mpc plans through: a plant file (as `prisca-cli identify` writes "
+                  "one). Default: identified from the demonstration when the run starts.",
+                  "file");
 }
 
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
@@ -178,6 +182,14 @@ void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
                 QStringLiteral("--start: '%1' is not one of: demo tuned").arg(start));
         }
         sim::MethodCatalog::setParameter(profile, QStringLiteral("start=") + start);
+    }
+    if (line.isSet("model")) {
+        QString error;
+        const auto model = sim::readPlantParameters(line.value("model"), profile.info.name, &error);
+        if (!model) {
+            throw UsageError(QStringLiteral("--model: %1").arg(error));
+        }
+        profile.mpcModel = std::make_shared<const sim::PlantParameters>(*model);
     }
     for (const QString& assignment : line.values("param")) {
         try {

@@ -273,6 +273,19 @@ class TestCliCommands : public QObject {
         const QJsonObject written = QJsonDocument::fromJson(file.readAll()).object();
         QVERIFY(written.value("identification").toObject().contains("parameters"));
         QVERIFY(written.value("description").toString().contains("id-demo.csv"));
+        // mpc plans through it (--model), on the run and the rig alike; a file that is not a
+        // plant file is refused naming the option.
+        const CliResult planned = cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv",
+                                       "--method", "mpc", "--model", "id.json", "--out",
+                                       "mpc.csv", "--format", "json"});
+        QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
+        QVERIFY(parseJson(planned.out).value("trials").toArray().size() == 1);
+        writeFile(path("not-a-car.json"), "{\"format\": \"something else\"}");
+        const CliResult badModel = cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv",
+                                        "--method", "mpc", "--model", "not-a-car.json", "--out",
+                                        "mpc.csv"});
+        QVERIFY2(badModel.exitCode == 2 && badModel.err.contains("--model:"),
+                 qPrintable(badModel.err));
 
         // The first second only: too short.
         QFile demo(path("id-demo.csv"));
