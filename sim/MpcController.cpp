@@ -231,7 +231,10 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
 void MpcController::refitOnLastTrial() {
     const int L = latency_;
     const int steps = static_cast<int>(actions_.size());
-    if (!parameters_.refit || data_.empty() || steps - L < 4) {
+    // Only a trial the plan drove is data for the model: one the fallback finished went where
+    // the model did not hold (a spin the model's tyres cannot have), and would pull the whole
+    // fit towards it.
+    if (!parameters_.refit || data_.empty() || steps - L < 4 || mode_ == MpcMode::Fallback) {
         return;
     }
     // The trial as a run: the observation of step k + L is the state at step k.
@@ -260,9 +263,11 @@ void MpcController::refitOnLastTrial() {
     for (int i = std::max(1, trials + 1 - parameters_.refitTrials); i <= trials; ++i) {
         runs.push_back(data_[static_cast<size_t>(i)]);
     }
-    const IdentificationResult fit =
-        identifyPlant(runs, model_, mpcIdentificationSettings(parameters_, true));
-    if (fit.ok() && std::isfinite(fit.positionRms)) {
+    const IdentificationSettings settings = mpcIdentificationSettings(parameters_, true);
+    const IdentificationResult fit = identifyPlant(runs, model_, settings);
+    // A refit is kept only when it explains the data better than the model it started from.
+    const double before = modelPositionRms(runs, model_, settings);
+    if (fit.ok() && std::isfinite(fit.positionRms) && (before < 0.0 || fit.positionRms < before)) {
         model_ = fit.parameters;
         modelFit_ = fit.positionRms;
         ++refits_;

@@ -59,7 +59,8 @@ enum class MpcMode { Planning, Fallback };
 /// It falls back to a feedback law (the PD family's) for the whole trial when the model fits
 /// its data poorly, and for the rest of a trial once the measured state leaves the model's
 /// predicted tube. Learns across trials by refitting the model on the demonstration and the
-/// day's trials (reset(WarmStart)); a cold reset goes back to the first model.
+/// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it fits better; a
+/// cold reset goes back to the first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)

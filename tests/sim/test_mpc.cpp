@@ -105,6 +105,9 @@ class TestMpc : public QObject {
                  qPrintable(mpc->fallbackReason()));
         QVERIFY(mpc->fallbackStep() * setup.demonstration->dt >= setup.profile.mpc.tubeSeconds);
         QVERIFY(mpc->fallbackStep() < setup.demonstration->length());
+        // A trial the fallback finished is no data for the model: no refit after it.
+        setup.trial(*mpc, 12, 0.0, core::ResetMode::WarmStart);
+        QCOMPARE(mpc->refits(), 0);
 
         // From the step it took over, its actions are the feedback law's own.
         auto again = setup.mpc();
