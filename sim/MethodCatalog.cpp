@@ -185,19 +185,25 @@ Made makeIlc(const MethodSpec&, const MethodInput& in) {
         profile.trackingProblem(demonstration, Mode::TimeDriven), profile.ilcParameters());
 }
 
-Made makeOracle(const MethodSpec&, const MethodInput& in) {
-    const MethodTuning& profile = in.profile;
-    const auto& demonstration = in.demonstration;
+// The oracle's planner for this demonstration's trials (their length and rest), through the
+// proportional part of the profile's PD (u = u* - Kp C e) where the profile says so.
+OracleParameters plannerFor(const MethodTuning& profile, const core::Demonstration& demonstration) {
     OracleParameters parameters = profile.oracle;
-    const EpisodeSettings trial = profile.episode(*demonstration, 1.0, 1.0);
-    const double dt = demonstration->dt;
+    const EpisodeSettings trial = profile.episode(demonstration, 1.0, 1.0);
+    const double dt = demonstration.dt;
     parameters.trialSteps = static_cast<int>(trial.duration / dt + 0.5);
     parameters.restAfterStep =
         trial.stopAtRestAfter >= 0.0 ? static_cast<int>(trial.stopAtRestAfter / dt + 0.5) : -1;
     if (profile.oracleFeedback) {
-        // The proportional part of the profile's PD (u = u* - Kp C e), planned through.
         parameters.feedback = -(profile.pd.kp.asDiagonal() * profile.pd.errorCombination);
     }
+    return parameters;
+}
+
+Made makeOracle(const MethodSpec&, const MethodInput& in) {
+    const MethodTuning& profile = in.profile;
+    const auto& demonstration = in.demonstration;
+    const OracleParameters parameters = plannerFor(profile, *demonstration);
     return std::make_unique<OracleController>(
         profile.trackingProblem(demonstration, Mode::TimeDriven), parameters);
 }
@@ -212,15 +218,7 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
                 .arg(QStringLiteral("slidecar"), profile.info.name)
                 .toStdString());
     }
-    OracleParameters planner = profile.oracle;
-    const EpisodeSettings trial = profile.episode(*demonstration, 1.0, 1.0);
-    const double dt = demonstration->dt;
-    planner.trialSteps = static_cast<int>(trial.duration / dt + 0.5);
-    planner.restAfterStep =
-        trial.stopAtRestAfter >= 0.0 ? static_cast<int>(trial.stopAtRestAfter / dt + 0.5) : -1;
-    if (profile.oracleFeedback) {
-        planner.feedback = -(profile.pd.kp.asDiagonal() * profile.pd.errorCombination);
-    }
+    const OracleParameters planner = plannerFor(profile, *demonstration);
     // The fallback: the PD with the least-state-deviation reference, the profile's law.
     std::unique_ptr<core::Controller> fallback =
         MethodCatalog::create(QStringLiteral("pd-lsd"), profile, demonstration, in.fittedB);

@@ -238,7 +238,7 @@ void MpcController::refitOnLastTrial() {
         return;
     }
     // The trial as a run: the observation of step k + L is the state at step k.
-    const core::Demonstration demonstration = data_.front();  // a copy: data_ grows below
+    const core::Demonstration& demonstration = data_.front();
     core::Demonstration trial;
     trial.plant = demonstration.plant;
     trial.dt = demonstration.dt;
@@ -258,7 +258,7 @@ void MpcController::refitOnLastTrial() {
         trial.actions.row(i) = actions_[static_cast<size_t>(i)].transpose();
     }
     data_.push_back(std::move(trial));
-    std::vector<core::Demonstration> runs{demonstration};
+    std::vector<core::Demonstration> runs{data_.front()};  // data_ grew: no older reference
     const int trials = static_cast<int>(data_.size()) - 1;
     for (int i = std::max(1, trials + 1 - parameters_.refitTrials); i <= trials; ++i) {
         runs.push_back(data_[static_cast<size_t>(i)]);
