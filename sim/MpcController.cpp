@@ -67,6 +67,9 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
                 .toStdString());
     }
     plannerParameters_.objective = OracleParameters::Objective::FinalPose;
+    if (!parameters_.feedback) {
+        plannerParameters_.feedback.resize(0, 0);
+    }
     plannerParameters_.replanEvery = parameters_.replanEvery;
     plannerParameters_.samples = parameters_.rollouts;
     plannerParameters_.maxKnots = parameters_.maxKnots;
@@ -103,6 +106,11 @@ MpcController::MpcController(const MpcController& other)
     if (other.planner_) {
         planner_ = std::make_unique<OracleController>(*other.planner_);
         planner_->attachPlant(modelPlant_.get());
+        std::vector<const Plant*> others;
+        for (const auto& plant : ensemble_) {
+            others.push_back(plant.get());
+        }
+        planner_->attachEnsemble(std::move(others));
     }
     if (other.modelPlant_) {
         modelPlant_->resetTo(other.modelPlant_->state());
@@ -126,6 +134,25 @@ void MpcController::buildModel() {
     scratch_ = PlantCatalog::create(model_, timing);
     planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
     planner_->attachPlant(modelPlant_.get());
+    ensemble_.clear();
+    std::vector<const Plant*> others;
+    if (parameters_.gripSpread > 0.0) {
+        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
+        for (const double factor : {1.0 - parameters_.gripSpread, 1.0 + parameters_.gripSpread}) {
+            PlantParameters other = model_;
+            for (size_t i = 0; i < specs.size(); ++i) {
+                const QString& key = specs[i].key;
+                if (key == QLatin1String("staticFriction") ||
+                    key == QLatin1String("kineticFriction")) {
+                    other.values[i] = std::clamp(other.values[i] * factor, specs[i].lower,
+                                                 specs[i].upper);
+                }
+            }
+            ensemble_.push_back(PlantCatalog::create(other, timing));
+            others.push_back(ensemble_.back().get());
+        }
+    }
+    planner_->attachEnsemble(std::move(others));
 }
 
 void MpcController::reset(core::ResetMode mode) {
@@ -220,6 +247,9 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     } else {
         // The model at the state of now: the measurement predicted through the latency.
         predictInto(*modelPlant_, k, latency_);
+        for (const auto& other : ensemble_) {
+            predictInto(*other, k, latency_);
+        }
         record_ = planner_->step(modelPlant_->state());
     }
     record_.step = k;

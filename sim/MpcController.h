@@ -26,6 +26,15 @@ struct MpcParameters {
     /// A root-mean-square distance from the demonstration's path this large [m] costs as much
     /// as 1 cm at the lot: the plan keeps to where the car was identified.
     double trackingScale = 0.3;
+    /// Whether the plan's actions carry the PD's time-aligned feedback between plannings (as the
+    /// oracle's do). Off: the plan is replayed as planned and the replanning is the feedback;
+    /// with it, a car that lags its demonstration on the straight (another day's grip, a
+    /// weaker battery) is pushed into the slide with throttle on, and spins.
+    bool feedback = false;
+    /// Robust planning: the plan must also park the model with its tyres' grips this share
+    /// lower and higher (a floor of uneven grip, tyres the model's friction law only
+    /// approximates); 0: the model alone.
+    double gripSpread = 0.15;
     /// Physics steps per control step of the model (it is identified with the same), fewer
     /// than the simulator's for speed.
     int substeps = 4;
@@ -113,6 +122,7 @@ class MpcController : public core::Controller {
     std::vector<core::Demonstration> firstData_;
     std::unique_ptr<Plant> modelPlant_;  // the model at the current (predicted) state
     std::unique_ptr<Plant> scratch_;     // the tube's prediction
+    std::vector<std::unique_ptr<Plant>> ensemble_;  // the model with other grips
     std::unique_ptr<OracleController> planner_;
     int latency_ = 0;
     int pendingLatency_ = 0;

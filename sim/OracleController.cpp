@@ -98,68 +98,91 @@ Eigen::MatrixXd OracleController::clampedToLimits(Eigen::MatrixXd knots,
     return knots;
 }
 
+namespace {
+
+// The correction at step t of knots at `times`: linear between knots, the last one after.
+Eigen::VectorXd interpolated(const Eigen::MatrixXd& knots, const std::vector<int>& times, int t) {
+    const int J = static_cast<int>(times.size());
+    if (t >= times.back()) {
+        return knots.col(J - 1);
+    }
+    const auto upper = std::upper_bound(times.begin(), times.end(), t);
+    const int j = std::max(1, static_cast<int>(upper - times.begin()));
+    const double w = static_cast<double>(t - times[j - 1]) / (times[j] - times[j - 1]);
+    return (1.0 - w) * knots.col(j - 1) + w * knots.col(j);
+}
+
+}  // namespace
+
+Eigen::Vector3d OracleController::finalPoseOf(Plant& copy, const Eigen::MatrixXd& knots,
+                                              const std::vector<int>& times, int k,
+                                              std::vector<double>* away) {
+    const core::Demonstration& demo = *problem_.demonstration;
+    const core::PlanarPoseIndices& at = *problem_.deviation.pose;
+    int t = k;
+    while (t < parameters_.trialSteps &&
+           !(parameters_.restAfterStep >= 0 && t >= parameters_.restAfterStep && copy.atRest())) {
+        const Eigen::VectorXd s =
+            copy.step(actionAt(t, interpolated(knots, times, t), copy.state()));
+        ++t;
+        if (away) {
+            const int j = std::min(t, demo.length() - 1);
+            away->push_back(s[at.x] - demo.states(j, at.x));
+            away->push_back(s[at.y] - demo.states(j, at.y));
+        }
+    }
+    simulatedSteps_ += t - k;
+    const Eigen::VectorXd s = copy.state();
+    const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
+    return Eigen::Vector3d((s[at.x] - lot[at.x]) / parameters_.positionScale,
+                           (s[at.y] - lot[at.y]) / parameters_.positionScale,
+                           core::wrapAngle(s[at.heading] - lot[at.heading]) /
+                               parameters_.headingScale);
+}
+
 Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
                                           const std::vector<int>& times, int k) {
     const core::Demonstration& demo = *problem_.demonstration;
     std::unique_ptr<Plant> copy = plant_->clone(false);
     const int J = static_cast<int>(times.size());
-    auto correction = [&](int t) -> Eigen::VectorXd {
-        if (t >= times.back()) {
-            return knots.col(J - 1);
-        }
-        const auto upper = std::upper_bound(times.begin(), times.end(), t);
-        const int j = std::max(1, static_cast<int>(upper - times.begin()));
-        const double w = static_cast<double>(t - times[j - 1]) / (times[j] - times[j - 1]);
-        return (1.0 - w) * knots.col(j - 1) + w * knots.col(j);
-    };
+    auto correction = [&](int t) -> Eigen::VectorXd { return interpolated(knots, times, t); };
     const PlantInfo& info = copy->info();
     if (finalPoseNow_) {
-        int t = k;
-        const core::PlanarPoseIndices& at = *problem_.deviation.pose;
         const bool tracked = parameters_.trackingScale > 0.0;
-        std::vector<double> away;
-        while (t < parameters_.trialSteps &&
-               !(parameters_.restAfterStep >= 0 && t >= parameters_.restAfterStep &&
-                 copy->atRest())) {
-            const Eigen::VectorXd s = copy->step(actionAt(t, correction(t), copy->state()));
-            ++t;
-            if (tracked) {
-                const int j = std::min(t, demo.length() - 1);
-                away.push_back(s[at.x] - demo.states(j, at.x));
-                away.push_back(s[at.y] - demo.states(j, at.y));
-            }
-        }
-        simulatedSteps_ += t - k;
-        const Eigen::VectorXd s = copy->state();
-        const core::PlanarPoseIndices pose = *problem_.deviation.pose;
-        const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
-        const Eigen::Vector3d finalPose(
-            (s[pose.x] - lot[pose.x]) / parameters_.positionScale,
-            (s[pose.y] - lot[pose.y]) / parameters_.positionScale,
-            core::wrapAngle(s[pose.heading] - lot[pose.heading]) / parameters_.headingScale);
         const bool regularised = parameters_.correctionScale > 0.0;
-        if (!regularised && !tracked) {
-            return finalPose;
-        }
+        const int models = 1 + static_cast<int>(ensemble_.size());
         // A fixed length per planning (the steps to the trial's end at most), so that the
         // residuals of two candidates compare: steps not taken (the car rested) count as 0.
         const int trackedSteps = tracked ? 2 * std::max(1, parameters_.trialSteps - k) : 0;
-        Eigen::VectorXd r =
-            Eigen::VectorXd::Zero(3 + (regularised ? knots.size() : 0) + trackedSteps);
-        r.head<3>() = finalPose;
-        int next = 3;
+        if (!regularised && !tracked && models == 1) {
+            return finalPoseOf(*copy, knots, times, k, nullptr);
+        }
+        Eigen::VectorXd r = Eigen::VectorXd::Zero(models * (3 + trackedSteps) +
+                                                  (regularised ? knots.size() : 0));
+        // Each model's share of the cost is its mean: the plan is good on all of them.
+        const double share = 1.0 / std::sqrt(static_cast<double>(models));
+        const double weight = tracked ? parameters_.positionScale /
+                                            (parameters_.trackingScale * std::sqrt(0.5 * trackedSteps))
+                                      : 0.0;
+        int next = 0;
+        std::vector<double> away;
+        for (int i = 0; i < models; ++i) {
+            if (i > 0) {
+                copy = ensemble_[static_cast<size_t>(i - 1)]->clone(false);
+            }
+            away.clear();
+            r.segment<3>(next) = share * finalPoseOf(*copy, knots, times, k, tracked ? &away : nullptr);
+            next += 3;
+            for (int j = 0; j < trackedSteps; ++j) {
+                const double d = j < static_cast<int>(away.size()) ? away[static_cast<size_t>(j)] : 0.0;
+                r[next++] = share * weight * d / parameters_.positionScale;
+            }
+        }
         if (regularised) {
             for (int j = 0; j < J; ++j) {
                 for (int l = 0; l < knots.rows(); ++l) {
                     r[next++] = knots(l, j) / (halfRange_[l] * parameters_.correctionScale);
                 }
-            }
-        }
-        if (tracked) {
-            const double weight = parameters_.positionScale /
-                                  (parameters_.trackingScale * std::sqrt(0.5 * trackedSteps));
-            for (size_t i = 0; i < away.size() && next < r.size(); ++i) {
-                r[next++] = weight * away[i] / parameters_.positionScale;
             }
         }
         return r;

@@ -84,6 +84,11 @@ class OracleController : public core::Controller, public PlantAware {
     const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<core::Controller> clone() const override;
     void attachPlant(const Plant* plant) override { plant_ = plant; }
+    /// FinalPose: further plants a plan must hold on as well (robust planning through models
+    /// that differ where the first is least sure): each one's final pose and path residuals
+    /// join the first's, all weighted alike; the corrections' cost counts once. They are
+    /// simulated from their own states. Not owned; empty: the attached plant only.
+    void attachEnsemble(std::vector<const Plant*> plants) { ensemble_ = std::move(plants); }
 
     const OracleParameters& parameters() const { return parameters_; }
     /// Plant steps simulated ahead since the last reset (the planner's work).
@@ -94,6 +99,11 @@ class OracleController : public core::Controller, public PlantAware {
     /// The residuals r of a plan (cost = |r|^2): the scaled final pose error, or the tracked
     /// errors over the horizon.
     Eigen::VectorXd rollout(const Eigen::MatrixXd& knots, const std::vector<int>& times, int k);
+    /// FinalPose: runs `copy` under the plan from step k to the trial's end (or rest); the
+    /// scaled final pose error, and the path's distance from the demonstration per step in
+    /// `away` (x, y) if given.
+    Eigen::Vector3d finalPoseOf(Plant& copy, const Eigen::MatrixXd& knots,
+                                const std::vector<int>& times, int k, std::vector<double>* away);
     Eigen::MatrixXd clampedToLimits(Eigen::MatrixXd knots, const std::vector<int>& times) const;
     Eigen::VectorXd correctionAt(int t) const;
     Eigen::VectorXd actionAt(int t, const Eigen::VectorXd& correction,
@@ -102,6 +112,7 @@ class OracleController : public core::Controller, public PlantAware {
     core::TrackingProblem problem_;
     OracleParameters parameters_;
     const Plant* plant_ = nullptr;
+    std::vector<const Plant*> ensemble_;
     std::mt19937_64 random_;
     Eigen::MatrixXd planKnots_;  // m x J corrections at planTimes_
     std::vector<int> planTimes_;

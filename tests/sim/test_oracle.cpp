@@ -129,6 +129,45 @@ class TestOracle : public QObject {
         QVERIFY(oracle.simulatedSteps() > demo->length());
     }
 
+    // An ensemble: the plan must park every model, so on a point whose x-gain the models
+    // disagree on (1.1, 1.3 and 1.5) it is the least-squares compromise, and the plant of
+    // gain 1.3 stops short by X (1 - 1.3 (1.1 + 1.3 + 1.5) / (1.1^2 + 1.3^2 + 1.5^2)), 1.55 %
+    // of the x travel, where the plan on that plant alone parks exactly. Planned once (open
+    // loop), so the compromise shows whole.
+    void finalPose_anEnsembleIsPlannedForAsAWhole() {
+        auto demo = demonstration(120);
+        auto finalX = [&](bool ensemble) {
+            GainPoint plant(Eigen::Vector2d(1.3, 0.75));
+            GainPoint lower(Eigen::Vector2d(1.1, 0.75));
+            GainPoint higher(Eigen::Vector2d(1.5, 0.75));
+            OracleParameters parameters;
+            parameters.objective = OracleParameters::Objective::FinalPose;
+            parameters.trialSteps = demo->length();
+            parameters.replanEvery = demo->length();
+            parameters.samples = 32;
+            OracleController oracle(problemFor(demo, plant.info()), parameters);
+            oracle.attachPlant(&plant);
+            if (ensemble) {
+                oracle.attachEnsemble({&lower, &higher});
+            }
+            plant.reset(0, Perturbation::none());
+            lower.reset(0, Perturbation::none());
+            higher.reset(0, Perturbation::none());
+            oracle.reset();
+            for (int k = 0; k < demo->length(); ++k) {
+                plant.step(oracle.step(plant.state()).action);
+            }
+            return plant.state()[0];
+        };
+        const double X = demo->states(demo->length() - 1, 0);
+        const double alone = finalX(false);
+        const double together = finalX(true);
+        const double expected = X * 1.3 * (1.1 + 1.3 + 1.5) / (1.1 * 1.1 + 1.3 * 1.3 + 1.5 * 1.5);
+        QVERIFY2(std::abs(alone - X) < 1e-3 * X, qPrintable(QString::number(alone)));
+        QVERIFY2(std::abs(together - expected) < 2e-3 * X,
+                 qPrintable(QStringLiteral("%1 expected %2").arg(together).arg(expected)));
+    }
+
     // A long demonstration: the plan tracks until the end is within finalPoseWindow, then aims
     // at the final pose, so the work per control step does not grow with the length (it did:
     // every plan simulated to the trial's end), and it still parks.
