@@ -7,12 +7,12 @@
 namespace prisca::app {
 
 /// The window's one E-STOP latch. Every job the window runs (a simulated run, a recording,
-/// driving on the rig, a rig trial, a latency measurement, an experiment) stops when it engages
-/// (each listens to engaged()); nothing starts while it is latched (each start asks
-/// isLatched() and shows refusal()); the panels, the toolbar and the status bar read its state
-/// here and follow latchChanged(). What presses it (Space, Esc, the red button, a gamepad
-/// button, a foot switch) is the EmergencyStopGuard's and the window's business; this is only
-/// the latch. GUI thread only.
+/// driving on the rig, a rig trial, a latency measurement, an experiment, an identification)
+/// stops when it engages (each listens to engaged()); nothing starts while it is latched (each
+/// start asks isLatched() and shows refusal()); the panels, the toolbar and the status bar read
+/// its state here and follow latchChanged(). What presses it (Space, Esc, the red button, a
+/// gamepad button, a foot switch) is the EmergencyStopGuard's and the window's business; this is
+/// only the latch. GUI thread only.
 class EmergencyStop : public QObject {
     Q_OBJECT
   public:

@@ -3,6 +3,7 @@
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/IdentificationReport.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/Task.h"
@@ -153,6 +154,7 @@ void LabSession::setPlantParameters(std::shared_ptr<const sim::PlantParameters> 
         emit demonstrationChanged();
     }
     emit fitChanged();
+    dropModel(tr("the plant's physical parameters changed"));
     emit controllerChanged();
 }
 
@@ -170,6 +172,7 @@ void LabSession::setPlant(const QString& plant) {
     emit plantParametersChanged();
     emit demonstrationChanged();
     emit fitChanged();
+    dropModel(tr("the target changed"));
     emit controllerChanged();
 }
 
@@ -191,6 +194,10 @@ void LabSession::setDemonstration(std::shared_ptr<const core::Demonstration> dem
     demonstrationSource_ = source;
     emit demonstrationChanged();
     emit fitChanged();
+    if (model_) {
+        dropModel(tr("the demonstration changed"));
+        emit controllerChanged();
+    }
 }
 
 QString LabSession::demonstrationDescription() const {
@@ -217,6 +224,10 @@ void LabSession::setScriptedDemonstration(const QString& style, std::uint64_t se
     scriptedSeed_ = seed;
     emit demonstrationChanged();
     emit fitChanged();
+    if (model_) {
+        dropModel(tr("the demonstration changed"));
+        emit controllerChanged();
+    }
 }
 
 void LabSession::setProfile(const sim::MethodTuning& profile) {
@@ -226,11 +237,59 @@ void LabSession::setProfile(const sim::MethodTuning& profile) {
         profile.mapping.signs != task_.profile.mapping.signs;
     if (mappingChanged) {
         task_ = sim::makeTask(profile, task_.demonstration, fitOptions_, task_.plantParameters);
-        emit fitChanged();
     } else {
         task_.profile = profile;
     }
+    // The model mpc plans through is the session's (a profile reset to its defaults keeps it).
+    applyModelToProfile();
+    if (mappingChanged) {
+        emit fitChanged();
+    }
     emit controllerChanged();
+}
+
+void LabSession::setIdentifiedModel(
+    std::shared_ptr<const sim::IdentificationResult> model,
+    const std::shared_ptr<const core::Demonstration>& identifiedFrom) {
+    if (model) {
+        if (!model->ok()) {
+            throw std::invalid_argument(tr("an identification that was refused or cancelled is "
+                                           "no model")
+                                            .toStdString());
+        }
+        if (model->parameters.plant != task_.plant) {
+            throw std::invalid_argument(tr("the model is of a %1, the target a %2")
+                                            .arg(model->parameters.plant, task_.plant)
+                                            .toStdString());
+        }
+        if (identifiedFrom != task_.demonstration) {
+            throw std::invalid_argument(
+                tr("the demonstration changed while the model was identified").toStdString());
+        }
+    }
+    model_ = std::move(model);
+    applyModelToProfile();
+    emit identifiedModelChanged(QString());
+    emit controllerChanged();
+}
+
+sim::PlantParameters LabSession::identificationPrior() const {
+    return sim::measuredPrior(task_.plantParameters ? *task_.plantParameters
+                                                    : sim::defaultPlantParameters(task_.plant));
+}
+
+void LabSession::dropModel(const QString& reason) {
+    const bool had = model_ != nullptr;
+    model_.reset();
+    applyModelToProfile();
+    if (had) {
+        emit identifiedModelChanged(reason);
+    }
+}
+
+void LabSession::applyModelToProfile() {
+    task_.profile.mpcModel =
+        model_ ? std::make_shared<const sim::PlantParameters>(model_->parameters) : nullptr;
 }
 
 void LabSession::setFitOptions(const core::ActionMappingFitOptions& options) {
@@ -289,6 +348,24 @@ QByteArray LabSession::toJson() const {
                     QJsonObject{{"source", task_.plantParameters->source},
                                 {"file", QJsonDocument::fromJson(sim::plantParametersJson(
                                                                      *task_.plantParameters))
+                                             .object()}});
+    }
+    if (model_) {
+        // The identified plant file as `prisca-cli identify` writes it, and the length of the
+        // demonstration it came from (a file that changed since is not its data any more).
+        const QString from =
+            demonstrationSource_.isEmpty()
+                ? QStringLiteral("the scripted operator (%1, seed %2)")
+                      .arg(scriptedStyle_)
+                      .arg(scriptedSeed_)
+                : demonstrationSource_;
+        root.insert("model",
+                    QJsonObject{{"samples", static_cast<int>(task_.demonstration->length())},
+                                {"file", QJsonDocument::fromJson(
+                                             sim::identifiedPlantFile(
+                                                 *model_,
+                                                 QStringLiteral("identified from %1").arg(from),
+                                                 {from}))
                                              .object()}});
     }
     if (!messages_.isEmpty()) {
@@ -559,20 +636,50 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     } catch (const std::invalid_argument& e) {
         return fail(QString::fromStdString(e.what()));
     }
+    // The identified model, if one was saved and is still this demonstration's. One that cannot
+    // be used is left out, and the operator told; the rest of the session opens.
+    std::shared_ptr<const sim::IdentificationResult> model;
+    QString modelNotice;
+    if (root.contains("model")) {
+        const QJsonObject saved = root.value("model").toObject();
+        QString problem;
+        auto read = sim::readIdentifiedPlantFile(
+            QJsonDocument(saved.value("file").toObject()).toJson(), QStringLiteral("model"), plant,
+            &problem);
+        if (!read) {
+            modelNotice = tr("The identified model saved with it could not be read (%1): "
+                             "identify the car again in the Model step.")
+                              .arg(problem);
+        } else if (saved.value("samples").toInt(-1) != task.demonstration->length()) {
+            modelNotice = tr("Its demonstration is not the one the saved model was identified "
+                             "from: identify the car again in the Model step.");
+        } else {
+            model = std::make_shared<const sim::IdentificationResult>(std::move(*read));
+        }
+    }
     task_ = std::move(task);
+    model_ = std::move(model);
+    applyModelToProfile();
     method_ = method;
     fitOptions_ = fitOptions;
     demonstrationSource_ = source;
     scriptedStyle_ = scriptedStyle;
     scriptedSeed_ = scriptedSeed;
     messages_ = root.value("messages").toArray();  // not an array: none
-    notice_ = earlier ? tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
-                           "tuned for an earlier PRISCA, so today's defaults are used instead.")
-                      : QString();
+    QStringList notices;
+    if (earlier) {
+        notices << tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
+                      "tuned for an earlier PRISCA, so today's defaults are used instead.");
+    }
+    if (!modelNotice.isEmpty()) {
+        notices << modelNotice;
+    }
+    notice_ = notices.join(QLatin1Char(' '));
     emit plantChanged(task_.plant);
     emit plantParametersChanged();
     emit demonstrationChanged();
     emit fitChanged();
+    emit identifiedModelChanged(QString());
     emit controllerChanged();
     return true;
 }

@@ -2,6 +2,7 @@
 
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
+#include "sim/Identification.h"
 #include "sim/MethodTuning.h"
 #include "sim/Task.h"
 
@@ -67,8 +68,24 @@ class LabSession : public QObject {
     /// The plant's profile with the operator's edits (mapping B~, method parameters).
     const sim::MethodTuning& profile() const { return task_.profile; }
     /// Replaces the profile and refits B_v if its mapping changed. Throws std::invalid_argument
-    /// if the mapping is not the plant's m x n; the session is then unchanged.
+    /// if the mapping is not the plant's m x n; the session is then unchanged. The profile's
+    /// mpcModel stays the session's identified model, whatever the profile given holds.
     void setProfile(const sim::MethodTuning& profile);
+
+    /// The car identified from this demonstration on this plant (the Model step), with its fit
+    /// figures and parameter table; null: none. mpc plans through its parameters
+    /// (profile().mpcModel is they). Saved with the session.
+    std::shared_ptr<const sim::IdentificationResult> identifiedModel() const { return model_; }
+    /// Keeps a model identified from `identifiedFrom`, or clears it (null). Throws
+    /// std::invalid_argument, the session unchanged, for a result that is no model (refused or
+    /// cancelled), of another plant, or identified from a demonstration the session no longer
+    /// holds (it changed while the identification ran).
+    void setIdentifiedModel(std::shared_ptr<const sim::IdentificationResult> model,
+                            const std::shared_ptr<const core::Demonstration>& identifiedFrom);
+    /// What an identification of this session starts from: what a lab measures of its car (the
+    /// plant file's mass and geometry, or the catalog's), the rest the catalog's
+    /// (sim::measuredPrior), as mpc's own identification does.
+    sim::PlantParameters identificationPrior() const;
 
     /// Options of the last fit of B_v, and the fit itself.
     const core::ActionMappingFitOptions& fitOptions() const { return fitOptions_; }
@@ -116,9 +133,19 @@ class LabSession : public QObject {
     void fitChanged();
     /// The method or its parameters changed.
     void controllerChanged();
+    /// The identified model was set or cleared. `reason` is empty when the operator set or
+    /// cleared it (or a session was opened); else why a model the session had is gone, in the
+    /// operator's words ("the demonstration changed").
+    void identifiedModelChanged(const QString& reason);
 
   private:
+    /// Drops the identified model because `reason` (nothing when there is none); emits.
+    void dropModel(const QString& reason);
+    /// The profile's mpcModel from model_.
+    void applyModelToProfile();
+
     sim::Task task_;
+    std::shared_ptr<const sim::IdentificationResult> model_;
     QString method_ = QStringLiteral("prisca");
     QString demonstrationSource_;
     QString scriptedStyle_;

@@ -16,6 +16,7 @@
 #include "app/MappingPanel.h"
 #include "app/MessageLog.h"
 #include "app/MessageLogPanel.h"
+#include "app/ModelPanel.h"
 #include "app/RecordPanel.h"
 #include "app/ReplayDialog.h"
 #include "app/RigPanel.h"
@@ -200,7 +201,8 @@ void MainWindow::shareSpace() {
     // The side panels as wide as their widest content needs (no sideways scrolling), about
     // a third of the window; the arena over the charts with the larger share of the height.
     int needed = 0;
-    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_}) {
+    for (QDockWidget* d :
+         {taskDock_, recordDock_, mappingDock_, modelDock_, controllerDock_, runDock_}) {
         if (auto* scroll = qobject_cast<QScrollArea*>(d->widget())) {
             needed = std::max(needed, scroll->widget()->minimumSizeHint().width() +
                                           scroll->verticalScrollBar()->sizeHint().width() + 8);
@@ -217,7 +219,7 @@ void MainWindow::shareRightColumn() {
     // Mapping panel's Fit B_v and fit table), at least two fifths; the Run panel the rest, never
     // less than its minimum (its settings and the newest result in view).
     QDockWidget* top = nullptr;
-    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_}) {
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, modelDock_, controllerDock_}) {
         // The tab on top: the only one of the group on screen.
         if (d->isVisible() && !d->isFloating() && !d->visibleRegion().isEmpty()) {
             top = d;
@@ -300,6 +302,7 @@ void MainWindow::createPanels() {
     runPanel_ = new RunPanel(*session_, *run_, *emergency_, this);
     recordPanel_ = new RecordPanel(*session_, *emergency_, this);
     mappingPanel_ = new MappingPanel(*session_, this);
+    modelPanel_ = new ModelPanel(*session_, *emergency_, this);
     chartsPanel_ = new LiveChartsPanel(this);
     experimentsPanel_ = new ExperimentsPanel(*session_, *emergency_, this);
     rigPanel_ = new RigPanel(*session_, *emergency_, this);
@@ -308,6 +311,7 @@ void MainWindow::createPanels() {
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     mappingDock_ =
         dock(this, QStringLiteral("mappingDock"), mappingPanel_, Qt::RightDockWidgetArea);
+    modelDock_ = dock(this, QStringLiteral("modelDock"), modelPanel_, Qt::RightDockWidgetArea);
     controllerDock_ =
         dock(this, QStringLiteral("controllerDock"), controllerPanel_, Qt::RightDockWidgetArea);
     // The run panel fits its dock without scrolling: its results table takes what is left.
@@ -328,10 +332,11 @@ void MainWindow::createPanels() {
     chartsDock_->raise();
     tabifyDockWidget(taskDock_, recordDock_);
     tabifyDockWidget(recordDock_, mappingDock_);
-    tabifyDockWidget(mappingDock_, controllerDock_);
+    tabifyDockWidget(mappingDock_, modelDock_);
+    tabifyDockWidget(modelDock_, controllerDock_);
     taskDock_->raise();
     // The tab the operator brings up gets the room it needs (until they size the docks).
-    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_}) {
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, modelDock_, controllerDock_}) {
         connect(d, &QDockWidget::visibilityChanged, this, [this](bool visible) {
             if (visible && isVisible() && !operatorSizedDocks_) {
                 QTimer::singleShot(0, this, &MainWindow::shareRightColumn);
@@ -512,6 +517,12 @@ void MainWindow::updateStatusFields() {
     if (job.isEmpty() && rigPanel_->isRunning()) {
         job = tr("Job: rig trial");
     }
+    if (job.isEmpty() && modelPanel_->isRunning()) {
+        job = modelPanel_->progressTotal() > 0
+                  ? tr("Job: identifying the model, %1 %")
+                        .arg(100 * modelPanel_->progressDone() / modelPanel_->progressTotal())
+                  : tr("Job: identifying the model");
+    }
     if (job.isEmpty() && rigPanel_->measuringLatency()) {
         job = tr("Job: measuring latency");
     }
@@ -626,8 +637,8 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(QString());
     viewMenu_->setObjectName(QStringLiteral("viewMenu"));
-    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, controllerDock_, runDock_,
-                           chartsDock_, experimentsDock_, rigDock_, logDock_}) {
+    for (QDockWidget* d : {taskDock_, recordDock_, mappingDock_, modelDock_, controllerDock_,
+                           runDock_, chartsDock_, experimentsDock_, rigDock_, logDock_}) {
         viewMenu_->addAction(d->toggleViewAction());
     }
     viewMenu_->addSeparator();
@@ -747,6 +758,7 @@ void MainWindow::retranslateUi() {
     taskDock_->setWindowTitle(tr("Task"));
     recordDock_->setWindowTitle(tr("Record"));
     mappingDock_->setWindowTitle(tr("Mapping"));
+    modelDock_->setWindowTitle(tr("Model"));
     controllerDock_->setWindowTitle(tr("Controller"));
     runDock_->setWindowTitle(tr("Run"));
     chartsDock_->setWindowTitle(tr("Live charts"));
@@ -786,6 +798,9 @@ QStringList MainWindow::workInProgress() const {
     if (rigPanel_->isDriving() || recordPanel_->isRecording()) {
         work << tr("a recording");
     }
+    if (modelPanel_->isRunning()) {
+        work << tr("an identification of the car's model");
+    }
     return work;
 }
 
@@ -806,6 +821,7 @@ void MainWindow::stopWork(bool keep) {
     if (recordPanel_->isRecording()) {
         recordPanel_->stopRecording();
     }
+    modelPanel_->cancel();  // nothing of it is kept: the session keeps the model it had
     logMessage(tr("Quit"), MessageLevel::Info,
                keep ? tr("Quitting: the work under way is stopped and what is done kept.")
                     : tr("Quitting: the work under way is discarded."));

@@ -23,6 +23,7 @@ class LanguageSwitcher;
 class ExperimentsPanel;
 class LiveChartsPanel;
 class MappingPanel;
+class ModelPanel;
 class MessageLog;
 class MessageLogPanel;
 class RecordPanel;
@@ -136,6 +137,7 @@ class MainWindow : public QMainWindow {
     RunPanel* runPanel_ = nullptr;
     RecordPanel* recordPanel_ = nullptr;
     MappingPanel* mappingPanel_ = nullptr;
+    ModelPanel* modelPanel_ = nullptr;
     LiveChartsPanel* chartsPanel_ = nullptr;
     ExperimentsPanel* experimentsPanel_ = nullptr;
     RigPanel* rigPanel_ = nullptr;
@@ -146,6 +148,7 @@ class MainWindow : public QMainWindow {
     QDockWidget* runDock_ = nullptr;
     QDockWidget* recordDock_ = nullptr;
     QDockWidget* mappingDock_ = nullptr;
+    QDockWidget* modelDock_ = nullptr;
     QDockWidget* chartsDock_ = nullptr;
     QDockWidget* experimentsDock_ = nullptr;
     QDockWidget* rigDock_ = nullptr;

@@ -186,6 +186,7 @@ class Problem {
 struct SearchContext {
     Problem* problem = nullptr;
     const IdentificationProgress* progress = nullptr;
+    long long before = 0;  // model runs of the passes before this one (progress counts them all)
     long long budget = 0;
     bool cancelled = false;
     nlopt_opt search = nullptr;  // the search under way, stopped on a cancel
@@ -198,7 +199,9 @@ double objective(unsigned n, const double* x, double* gradient, void* data) {
     const double c = context->problem->cost(context->problem->valuesAt(u));
     if (!context->cancelled && context->progress && *context->progress &&
         context->problem->evaluations() % 20 == 0 &&
-        !(*context->progress)(context->problem->evaluations(), context->budget)) {
+        !(*context->progress)(context->before + context->problem->evaluations(),
+                              std::max(context->budget,
+                                       context->before + context->problem->evaluations()))) {
         context->cancelled = true;
     }
     if (context->cancelled && context->search) {
@@ -611,8 +614,14 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     }
     SearchContext context;
     context.progress = &progress;
-    context.budget =
-        static_cast<long long>(settings.evaluationsPerStart) * (2 + settings.restarts) * 3 / 2;
+    // About how many model runs a fit with this budget per search takes (fitOnce: the search
+    // over the box, the local searches and restarts, each dead time's profile of about five
+    // candidates twice), for the progress report.
+    const auto fitRuns = [&](int evaluations, int delays) {
+        return static_cast<long long>(evaluations) *
+                   ((settings.global ? 3 : 0) + 3 + settings.restarts) +
+               static_cast<long long>(delays) * 2 * 5 * (evaluations / 8);
+    };
     const double physicsStep = runs.front().dt / settings.physicsSubsteps;
     {
         // The prior's own fit, to compare.
@@ -642,6 +651,13 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
         context.problem = &problem;
         const int budget =
             pass == 0 ? settings.evaluationsPerStart : settings.evaluationsPerStart / 2;
+        // This pass, and (while passes are left) one more on what it leaves undetermined.
+        context.before = evaluations;
+        context.budget = evaluations + fitRuns(budget, static_cast<int>(plan.delays.size())) +
+                         (pass + 1 < std::max(1, settings.passes)
+                              ? fitRuns(settings.evaluationsPerStart / 2,
+                                        static_cast<int>(plan.delays.size()))
+                              : 0);
         FitOutcome outcome;
         const bool done = fitOnce(problem, context, settings, physicsStep, budget, &outcome);
         evaluations += problem.evaluations();

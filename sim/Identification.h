@@ -77,7 +77,9 @@ struct IdentificationResult {
     bool ok() const { return refusal.isEmpty() && !cancelled; }
 };
 
-/// Called now and then with the evaluations done and the budget; return false to cancel.
+/// Called now and then with the model runs done so far (over every pass) and about how many the
+/// whole identification takes (an estimate, never below `done`; it may grow when a further pass
+/// is needed); return false to cancel.
 using IdentificationProgress = std::function<bool(long long done, long long total)>;
 
 /// The plants identification knows, and which keys it fits for each (the others are held).

@@ -32,429 +32,429 @@
 <context>
     <name>MethodParameter</name>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="320"/>
+        <location filename="../sim/MethodCatalog.cpp" line="318"/>
         <source>Horizon H</source>
         <translation>時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="321"/>
+        <location filename="../sim/MethodCatalog.cpp" line="319"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="335"/>
+        <location filename="../sim/MethodCatalog.cpp" line="333"/>
         <source>Depreciation γ</source>
         <translation>折舊 γ</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="336"/>
+        <location filename="../sim/MethodCatalog.cpp" line="334"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="348"/>
+        <location filename="../sim/MethodCatalog.cpp" line="346"/>
         <source>Step rate β</source>
         <translation>步長速率 β</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="349"/>
+        <location filename="../sim/MethodCatalog.cpp" line="347"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="361"/>
+        <location filename="../sim/MethodCatalog.cpp" line="359"/>
         <source>Automatic scales</source>
         <translation>自動比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="362"/>
+        <location filename="../sim/MethodCatalog.cpp" line="360"/>
         <source>Feature scales, α_0 and matching window derived from the demonstration and the fit when PRISCA starts; off: the step scale and feature scales set here.</source>
         <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="623"/>
+        <location filename="../sim/MethodCatalog.cpp" line="621"/>
         <source>Start</source>
         <translation>起點</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="624"/>
+        <location filename="../sim/MethodCatalog.cpp" line="622"/>
         <source>The feedback law the PD family and PRISCA (its prior) start from. tuned: the plant profile&apos;s PD gains; demo: derived from the demonstration, the fit and the actuator limits alone (a stationary LQR gain on the fitted model with weights from the demonstration&apos;s own scales, no faster than the fitted dead time allows, on the errors B~ names per control but those the action sets); PRISCA then also takes its automatic step and scales.</source>
         <translation>PD 系列及 PRISCA（其先驗）起始的回饋律。tuned：設備設定檔中調校好的 PD 增益；demo：只由示範、擬合及致動器限制推導（以示範本身的尺度為權重、在擬合模型上求得的穩態 LQR 增益，速度不超過擬合死區時間所容許，只用 B~ 為每個控制指明、而非由動作直接設定的誤差）；PRISCA 亦隨之採用自動步長及比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="391"/>
+        <location filename="../sim/MethodCatalog.cpp" line="389"/>
         <source>Step scale α_0</source>
         <translation>步長比例 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="376"/>
+        <location filename="../sim/MethodCatalog.cpp" line="374"/>
         <source>Automatic α_0</source>
         <translation>自動 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="378"/>
+        <location filename="../sim/MethodCatalog.cpp" line="376"/>
         <source>α_0 of the automatic scales: the fraction of a Newton step on the cost&apos;s curvature taken per control step.</source>
         <translation>自動尺度的 α_0：每個控制步按成本曲率所走的牛頓步比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="392"/>
+        <location filename="../sim/MethodCatalog.cpp" line="390"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B). Not used with automatic scales.</source>
         <translation>式 3 的 α_0（論文用 1；合適大小取決於 e、φ 及 B 的單位）。使用自動比例時不採用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="405"/>
+        <location filename="../sim/MethodCatalog.cpp" line="403"/>
         <source>θ bound</source>
         <translation>θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="406"/>
+        <location filename="../sim/MethodCatalog.cpp" line="404"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent).</source>
         <translation>若大於 0，每次更新後 θ 保持在 |θ_i| ≤ 界限內（投影下降）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="408"/>
-        <location filename="../sim/MethodCatalog.cpp" line="459"/>
-        <location filename="../sim/MethodCatalog.cpp" line="738"/>
+        <location filename="../sim/MethodCatalog.cpp" line="406"/>
+        <location filename="../sim/MethodCatalog.cpp" line="457"/>
+        <location filename="../sim/MethodCatalog.cpp" line="736"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="419"/>
+        <location filename="../sim/MethodCatalog.cpp" line="417"/>
         <source>Start from the PD law</source>
         <translation>由 PD 控制律開始</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="420"/>
+        <location filename="../sim/MethodCatalog.cpp" line="418"/>
         <source>The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds the robot on the path; off: θ = 0 is no feedback (Algorithm 1).</source>
         <translation>策略為 u = u* + PD 控制律 + θᵀφ，因此 θ = 0 已能讓機械人保持在路徑上；關閉：θ = 0 即無回饋（演算法 1）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="433"/>
+        <location filename="../sim/MethodCatalog.cpp" line="431"/>
         <source>Gradient</source>
         <translation>梯度</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="434"/>
+        <location filename="../sim/MethodCatalog.cpp" line="432"/>
         <source>one-step: eq. 14 as printed; closed-loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
         <translation>one-step：照印出的式 14；closed-loop：式 4 的連鎖律經擬合模型及策略本身的回饋在窗口內傳遞。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="455"/>
+        <location filename="../sim/MethodCatalog.cpp" line="453"/>
         <source>Effort weight R</source>
         <translation>施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="456"/>
+        <location filename="../sim/MethodCatalog.cpp" line="454"/>
         <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound.</source>
         <translation>成本亦計入修正的施力，每個控制量 R (θᵀφ)²：令學習在無 θ 界限下收斂。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="478"/>
+        <location filename="../sim/MethodCatalog.cpp" line="476"/>
         <source>Local optimal baseline</source>
         <translation>局部最優基線</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="479"/>
+        <location filename="../sim/MethodCatalog.cpp" line="477"/>
         <source>Subtract the local optimal baseline b (eq. 15) from the gradient; off: b = 0.</source>
         <translation>從梯度減去局部最優基線 b（式 15）；關閉：b = 0。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="494"/>
+        <location filename="../sim/MethodCatalog.cpp" line="492"/>
         <source>Inverse depreciation</source>
         <translation>逆折舊</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="495"/>
+        <location filename="../sim/MethodCatalog.cpp" line="493"/>
         <source>Weigh the window&apos;s gradients by the inverse depreciation D (eq. 10); off: D = 1.</source>
         <translation>以逆折舊 D（式 10）加權窗口內的梯度；關閉：D = 1。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="512"/>
+        <location filename="../sim/MethodCatalog.cpp" line="510"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="513"/>
+        <location filename="../sim/MethodCatalog.cpp" line="511"/>
         <source>fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; drift: eq. 5 in full, the state&apos;s own drift A fitted with B.</source>
         <translation>fitted：擬合得出的 B = B_v (.) B~（式 8）；signs：只用 B~；drift：完整的式 5，狀態本身的漂移 A 與 B 一併擬合。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="530"/>
+        <location filename="../sim/MethodCatalog.cpp" line="528"/>
         <source>Model delay d</source>
         <translation>模型延遲 d</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="532"/>
+        <location filename="../sim/MethodCatalog.cpp" line="530"/>
         <source>The measurement&apos;s age d in the closed-loop gradient&apos;s model.</source>
         <translation>閉環梯度模型中量測的時延 d。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="546"/>
+        <location filename="../sim/MethodCatalog.cpp" line="544"/>
         <source>Phase features</source>
         <translation>階段特徵</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="547"/>
+        <location filename="../sim/MethodCatalog.cpp" line="545"/>
         <source>Length of the stretches of the demonstration over which PRISCA learns a correction of the demonstration&apos;s action (one feature per stretch and control); 0: none.</source>
         <translation>PRISCA 在示範中學習示範動作修正的每段長度（每段每個控制一個特徵）；0：不用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="561"/>
+        <location filename="../sim/MethodCatalog.cpp" line="559"/>
         <source>Learn where explained</source>
         <translation>只在可解釋處學習</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="562"/>
+        <location filename="../sim/MethodCatalog.cpp" line="560"/>
         <source>The closed-loop gradient learns only on the samples a robust fit explains.</source>
         <translation>閉環梯度只在穩健擬合能解釋的樣本上學習。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="579"/>
+        <location filename="../sim/MethodCatalog.cpp" line="577"/>
         <source>Heading feedback reversed</source>
         <translation>倒車時反轉航向回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="580"/>
+        <location filename="../sim/MethodCatalog.cpp" line="578"/>
         <source>For a vehicle, the feedback law (the PD family&apos;s, PRISCA&apos;s prior) turns the sign of its heading and yaw-rate terms where the demonstration drives backwards, where steering turns the car the other way; off: the same law in both directions.</source>
         <translation>對車輛而言，回饋律（PD 系列的、PRISCA 先驗的）在示範倒車之處反轉其航向及偏航率項的符號，因為該處轉向令車向另一邊轉；關閉：前進與倒車用同一回饋律。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="597"/>
+        <location filename="../sim/MethodCatalog.cpp" line="595"/>
         <source>Feedback where explained</source>
         <translation>只在可解釋處回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="598"/>
+        <location filename="../sim/MethodCatalog.cpp" line="596"/>
         <source>The feedback law (the PD family&apos;s, PRISCA&apos;s prior) acts only while the reference is a sample the robust fit explains: not in a slide, where the linear model the gains stand on does not hold. auto: with the demonstration start, not with the tuned one.</source>
         <translation>回饋律（PD 系列的、PRISCA 先驗的）只在參考樣本可被穩健擬合解釋時作用：滑行中不作用，因為增益所依據的線性模型在那裏不成立。auto：以示範起始時啟用，以調校起始時不啟用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="648"/>
+        <location filename="../sim/MethodCatalog.cpp" line="646"/>
         <source>Matching window</source>
         <translation>匹配窗口</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="650"/>
+        <location filename="../sim/MethodCatalog.cpp" line="648"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="665"/>
+        <location filename="../sim/MethodCatalog.cpp" line="663"/>
         <source>PD gain Kp</source>
         <translation>PD 增益 Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="666"/>
+        <location filename="../sim/MethodCatalog.cpp" line="664"/>
         <source>Proportional gain per control on its error combination c_l · e (u = u* − Kp ε − Kd dε/dt).</source>
         <translation>每個控制量對其誤差組合 c_l · e 的比例增益（u = u* − Kp ε − Kd dε/dt）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="679"/>
+        <location filename="../sim/MethodCatalog.cpp" line="677"/>
         <source>PD gain Kd</source>
         <translation>PD 增益 Kd</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="680"/>
+        <location filename="../sim/MethodCatalog.cpp" line="678"/>
         <source>Derivative gain per control on the rate of its error combination.</source>
         <translation>每個控制量對其誤差組合變化率的微分增益。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="693"/>
+        <location filename="../sim/MethodCatalog.cpp" line="691"/>
         <source>PD smoothing H</source>
         <translation>PD 平滑 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="694"/>
+        <location filename="../sim/MethodCatalog.cpp" line="692"/>
         <source>PD+H and PD+H+LSD smooth the error over this many steps (the weights of eq. 9).</source>
         <translation>PD+H 及 PD+H+LSD 在這麼多步上平滑誤差（式 9 的權重）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="708"/>
+        <location filename="../sim/MethodCatalog.cpp" line="706"/>
         <source>PGSD horizon H</source>
         <translation>PGSD 時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="709"/>
+        <location filename="../sim/MethodCatalog.cpp" line="707"/>
         <source>PGSD&apos;s smoothing horizon H (eq. 9).</source>
         <translation>PGSD 的平滑時域 H（式 9）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="722"/>
+        <location filename="../sim/MethodCatalog.cpp" line="720"/>
         <source>PGSD step α</source>
         <translation>PGSD 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="723"/>
+        <location filename="../sim/MethodCatalog.cpp" line="721"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="734"/>
+        <location filename="../sim/MethodCatalog.cpp" line="732"/>
         <source>PGSD θ bound</source>
         <translation>PGSD θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="736"/>
+        <location filename="../sim/MethodCatalog.cpp" line="734"/>
         <source>If above 0, PGSD&apos;s θ is kept in |θ_i| ≤ bound after each update.</source>
         <translation>若大於 0，每次更新後 PGSD 的 θ 保持在 |θ_i| ≤ 界限內。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="749"/>
+        <location filename="../sim/MethodCatalog.cpp" line="747"/>
         <source>PEGASUS iterations</source>
         <translation>PEGASUS 迭代次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="751"/>
+        <location filename="../sim/MethodCatalog.cpp" line="749"/>
         <source>Gradient steps PEGASUS takes on its fixed scenarios before a run.</source>
         <translation>PEGASUS 在運行前於其固定情境上所作的梯度步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="765"/>
+        <location filename="../sim/MethodCatalog.cpp" line="763"/>
         <source>PEGASUS scenarios</source>
         <translation>PEGASUS 情境數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="767"/>
+        <location filename="../sim/MethodCatalog.cpp" line="765"/>
         <source>Fixed scenarios (start, perturbation, noise) each evaluation averages.</source>
         <translation>每次評估所平均的固定情境（起點、擾動、雜訊）數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="781"/>
+        <location filename="../sim/MethodCatalog.cpp" line="779"/>
         <source>PEGASUS step α</source>
         <translation>PEGASUS 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="782"/>
+        <location filename="../sim/MethodCatalog.cpp" line="780"/>
         <source>Gradient-descent step on the mean episode cost.</source>
         <translation>對平均回合成本的梯度下降步長。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="793"/>
+        <location filename="../sim/MethodCatalog.cpp" line="791"/>
         <source>ILC learning Γ/Kp</source>
         <translation>ILC 學習 Γ/Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="795"/>
+        <location filename="../sim/MethodCatalog.cpp" line="793"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="808"/>
+        <location filename="../sim/MethodCatalog.cpp" line="806"/>
         <source>ILC lead</source>
         <translation>ILC 超前</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="809"/>
+        <location filename="../sim/MethodCatalog.cpp" line="807"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="823"/>
+        <location filename="../sim/MethodCatalog.cpp" line="821"/>
         <source>ILC Q cutoff</source>
         <translation>ILC Q 截止頻率</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="824"/>
+        <location filename="../sim/MethodCatalog.cpp" line="822"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="836"/>
+        <location filename="../sim/MethodCatalog.cpp" line="834"/>
         <source>ILC feedback scale</source>
         <translation>ILC 回饋比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="838"/>
+        <location filename="../sim/MethodCatalog.cpp" line="836"/>
         <source>The PD gains in ILC&apos;s loop, scaled by this.</source>
         <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="849"/>
+        <location filename="../sim/MethodCatalog.cpp" line="847"/>
         <source>Oracle samples</source>
         <translation>理想控制器樣本數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="850"/>
+        <location filename="../sim/MethodCatalog.cpp" line="848"/>
         <source>Candidate plans the oracle simulates at each planning.</source>
         <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="864"/>
+        <location filename="../sim/MethodCatalog.cpp" line="862"/>
         <source>Oracle replanning</source>
         <translation>理想控制器重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="866"/>
+        <location filename="../sim/MethodCatalog.cpp" line="864"/>
         <source>Control steps between two plans of the oracle.</source>
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="879"/>
+        <location filename="../sim/MethodCatalog.cpp" line="877"/>
         <source>Replanning</source>
         <translation>重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="881"/>
+        <location filename="../sim/MethodCatalog.cpp" line="879"/>
         <source>Control steps between two plans through the model (2 at 25 Hz: every 0.08 s).</source>
         <translation>兩次經模型規劃之間的控制步數（25 Hz 時為 2：每 0.08 秒）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="896"/>
+        <location filename="../sim/MethodCatalog.cpp" line="894"/>
         <source>Model runs per plan</source>
         <translation>每次規劃的模型模擬次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="898"/>
+        <location filename="../sim/MethodCatalog.cpp" line="896"/>
         <source>The planning&apos;s budget: runs of the model to the trial&apos;s end per plan.</source>
         <translation>規劃的預算：每次規劃把模型模擬到試驗結束的次數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="913"/>
+        <location filename="../sim/MethodCatalog.cpp" line="911"/>
         <source>Predicted tube</source>
         <translation>預測管道</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="914"/>
+        <location filename="../sim/MethodCatalog.cpp" line="912"/>
         <source>How far the measured position may stray from the model&apos;s prediction before the fallback law finishes the trial.</source>
         <translation>量得的位置可偏離模型預測多遠，超出後由後備控制律完成該次試驗。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="927"/>
+        <location filename="../sim/MethodCatalog.cpp" line="925"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="928"/>
+        <location filename="../sim/MethodCatalog.cpp" line="926"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="967"/>
+        <location filename="../sim/MethodCatalog.cpp" line="965"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="969"/>
+        <location filename="../sim/MethodCatalog.cpp" line="967"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="990"/>
+        <location filename="../sim/MethodCatalog.cpp" line="988"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="992"/>
+        <location filename="../sim/MethodCatalog.cpp" line="990"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1007"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1005"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1008"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1006"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
@@ -1171,147 +1171,188 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="48"/>
+        <location filename="../app/LabSession.cpp" line="49"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="62"/>
+        <location filename="../app/LabSession.cpp" line="63"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="90"/>
+        <location filename="../app/LabSession.cpp" line="91"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="96"/>
+        <location filename="../app/LabSession.cpp" line="97"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="104"/>
+        <location filename="../app/LabSession.cpp" line="105"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="137"/>
+        <location filename="../app/LabSession.cpp" line="138"/>
         <source>the plant file %1 describes a %2, not a %3</source>
         <translation>機型檔 %1 描述的是 %2，不是 %3</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="179"/>
+        <location filename="../app/LabSession.cpp" line="157"/>
+        <source>the plant&apos;s physical parameters changed</source>
+        <translation>對象的物理參數已改變</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="175"/>
+        <source>the target changed</source>
+        <translation>目標已改變</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="182"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="187"/>
+        <location filename="../app/LabSession.cpp" line="190"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
         <location filename="../app/LabSession.cpp" line="198"/>
+        <location filename="../app/LabSession.cpp" line="228"/>
+        <source>the demonstration changed</source>
+        <translation>示範已改變</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="205"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="210"/>
+        <location filename="../app/LabSession.cpp" line="217"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="322"/>
+        <location filename="../app/LabSession.cpp" line="255"/>
+        <source>an identification that was refused or cancelled is no model</source>
+        <translation>被拒絕或已取消的辨識不是模型</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="260"/>
+        <source>the model is of a %1, the target a %2</source>
+        <translation>模型屬於 %1，目標卻是 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="266"/>
+        <source>the demonstration changed while the model was identified</source>
+        <translation>辨識模型期間示範已改變</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="398"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="328"/>
+        <location filename="../app/LabSession.cpp" line="404"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="334"/>
+        <location filename="../app/LabSession.cpp" line="410"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="337"/>
+        <location filename="../app/LabSession.cpp" line="413"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="342"/>
+        <location filename="../app/LabSession.cpp" line="418"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="349"/>
+        <location filename="../app/LabSession.cpp" line="425"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="353"/>
+        <location filename="../app/LabSession.cpp" line="429"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="362"/>
+        <location filename="../app/LabSession.cpp" line="438"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="385"/>
+        <location filename="../app/LabSession.cpp" line="461"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="452"/>
+        <location filename="../app/LabSession.cpp" line="528"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="457"/>
+        <location filename="../app/LabSession.cpp" line="533"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="479"/>
+        <location filename="../app/LabSession.cpp" line="555"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="493"/>
+        <location filename="../app/LabSession.cpp" line="569"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="519"/>
+        <location filename="../app/LabSession.cpp" line="595"/>
         <source>&apos;plantParameters&apos;: %1</source>
         <translation>「plantParameters」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="533"/>
+        <location filename="../app/LabSession.cpp" line="609"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="537"/>
+        <location filename="../app/LabSession.cpp" line="613"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="544"/>
+        <location filename="../app/LabSession.cpp" line="620"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="549"/>
+        <location filename="../app/LabSession.cpp" line="625"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="569"/>
+        <location filename="../app/LabSession.cpp" line="649"/>
+        <source>The identified model saved with it could not be read (%1): identify the car again in the Model step.</source>
+        <translation>無法讀取隨工作階段儲存的已辨識模型（%1）：請在「模型」步驟重新辨識車輛。</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="653"/>
+        <source>Its demonstration is not the one the saved model was identified from: identify the car again in the Model step.</source>
+        <translation>其示範並非儲存的模型辨識時所用的示範：請在「模型」步驟重新辨識車輛。</translation>
+    </message>
+    <message>
+        <location filename="../app/LabSession.cpp" line="670"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1452,156 +1493,166 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="133"/>
+        <location filename="../app/MainWindow.cpp" line="134"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="160"/>
-        <location filename="../app/MainWindow.cpp" line="745"/>
-        <location filename="../app/MainWindow.cpp" line="751"/>
+        <location filename="../app/MainWindow.cpp" line="161"/>
+        <location filename="../app/MainWindow.cpp" line="756"/>
+        <location filename="../app/MainWindow.cpp" line="763"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="163"/>
-        <location filename="../app/MainWindow.cpp" line="666"/>
-        <location filename="../app/MainWindow.cpp" line="674"/>
-        <location filename="../app/MainWindow.cpp" line="676"/>
-        <location filename="../app/MainWindow.cpp" line="690"/>
+        <location filename="../app/MainWindow.cpp" line="164"/>
+        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="687"/>
+        <location filename="../app/MainWindow.cpp" line="701"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="353"/>
+        <location filename="../app/MainWindow.cpp" line="358"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="410"/>
+        <location filename="../app/MainWindow.cpp" line="415"/>
         <source>the E-STOP button</source>
         <translation>緊急停止按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="414"/>
-        <location filename="../app/MainWindow.cpp" line="532"/>
-        <location filename="../app/MainWindow.cpp" line="536"/>
+        <location filename="../app/MainWindow.cpp" line="419"/>
+        <location filename="../app/MainWindow.cpp" line="543"/>
+        <location filename="../app/MainWindow.cpp" line="547"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="476"/>
+        <location filename="../app/MainWindow.cpp" line="481"/>
         <source>The quit was called off; the work goes on.</source>
         <translation>已取消結束；工作繼續。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="483"/>
+        <location filename="../app/MainWindow.cpp" line="488"/>
         <source>Quits when the work under way is done</source>
         <translation>進行中的工作完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="484"/>
+        <location filename="../app/MainWindow.cpp" line="489"/>
         <source>Quits once the work has stopped</source>
         <translation>工作停止後即結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="485"/>
+        <location filename="../app/MainWindow.cpp" line="490"/>
         <source>Don&apos;t quit</source>
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="493"/>
+        <location filename="../app/MainWindow.cpp" line="498"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="496"/>
+        <location filename="../app/MainWindow.cpp" line="501"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="499"/>
+        <location filename="../app/MainWindow.cpp" line="504"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="507"/>
+        <location filename="../app/MainWindow.cpp" line="512"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="510"/>
+        <location filename="../app/MainWindow.cpp" line="515"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="513"/>
+        <location filename="../app/MainWindow.cpp" line="518"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindow.cpp" line="527"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="519"/>
+        <location filename="../app/MainWindow.cpp" line="530"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="522"/>
+        <location filename="../app/MainWindow.cpp" line="533"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="532"/>
+        <location filename="../app/MainWindow.cpp" line="543"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="565"/>
-        <location filename="../app/MainWindow.cpp" line="658"/>
+        <location filename="../app/MainWindow.cpp" line="576"/>
+        <location filename="../app/MainWindow.cpp" line="669"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="566"/>
+        <location filename="../app/MainWindow.cpp" line="577"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="577"/>
-        <location filename="../app/MainWindow.cpp" line="685"/>
+        <location filename="../app/MainWindow.cpp" line="588"/>
+        <location filename="../app/MainWindow.cpp" line="696"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="578"/>
+        <location filename="../app/MainWindow.cpp" line="589"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1003"/>
+        <location filename="../app/MainWindow.cpp" line="1019"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="625"/>
+        <location filename="../app/MainWindow.cpp" line="636"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="625"/>
-        <location filename="../app/MainWindow.cpp" line="953"/>
-        <location filename="../app/MainWindow.cpp" line="1019"/>
-        <location filename="../app/MainWindow.cpp" line="1032"/>
-        <location filename="../app/MainWindow.cpp" line="1107"/>
+        <location filename="../app/MainWindow.cpp" line="522"/>
+        <source>Job: identifying the model, %1 %</source>
+        <translation>工作：正在辨識模型，%1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="524"/>
+        <source>Job: identifying the model</source>
+        <translation>工作：正在辨識模型</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="636"/>
+        <location filename="../app/MainWindow.cpp" line="969"/>
+        <location filename="../app/MainWindow.cpp" line="1035"/>
+        <location filename="../app/MainWindow.cpp" line="1048"/>
+        <location filename="../app/MainWindow.cpp" line="1123"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="659"/>
+        <location filename="../app/MainWindow.cpp" line="670"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1610,338 +1661,348 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="667"/>
+        <location filename="../app/MainWindow.cpp" line="678"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="674"/>
+        <location filename="../app/MainWindow.cpp" line="685"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="676"/>
+        <location filename="../app/MainWindow.cpp" line="687"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="690"/>
+        <location filename="../app/MainWindow.cpp" line="701"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="731"/>
+        <location filename="../app/MainWindow.cpp" line="742"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="732"/>
+        <location filename="../app/MainWindow.cpp" line="743"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="733"/>
+        <location filename="../app/MainWindow.cpp" line="744"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="734"/>
+        <location filename="../app/MainWindow.cpp" line="745"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="735"/>
+        <location filename="../app/MainWindow.cpp" line="746"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="736"/>
+        <location filename="../app/MainWindow.cpp" line="747"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="737"/>
+        <location filename="../app/MainWindow.cpp" line="748"/>
         <source>E-STOP &amp;inputs...</source>
         <translation>緊急停止輸入(&amp;I)……</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="739"/>
+        <location filename="../app/MainWindow.cpp" line="750"/>
         <source>A foot switch&apos;s key and a gamepad button that are E-STOP too</source>
         <translation>同樣觸發緊急停止的腳踏開關按鍵和手掣按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="743"/>
+        <location filename="../app/MainWindow.cpp" line="754"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="744"/>
+        <location filename="../app/MainWindow.cpp" line="755"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="746"/>
+        <location filename="../app/MainWindow.cpp" line="757"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="747"/>
+        <location filename="../app/MainWindow.cpp" line="758"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="748"/>
+        <location filename="../app/MainWindow.cpp" line="759"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="749"/>
+        <location filename="../app/MainWindow.cpp" line="760"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="750"/>
+        <location filename="../app/MainWindow.cpp" line="761"/>
+        <source>Model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="762"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="752"/>
+        <location filename="../app/MainWindow.cpp" line="764"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="753"/>
+        <location filename="../app/MainWindow.cpp" line="765"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="754"/>
+        <location filename="../app/MainWindow.cpp" line="766"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="755"/>
+        <location filename="../app/MainWindow.cpp" line="767"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="756"/>
+        <location filename="../app/MainWindow.cpp" line="768"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="757"/>
+        <location filename="../app/MainWindow.cpp" line="769"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="758"/>
+        <location filename="../app/MainWindow.cpp" line="770"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="759"/>
+        <location filename="../app/MainWindow.cpp" line="771"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="760"/>
+        <location filename="../app/MainWindow.cpp" line="772"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="762"/>
+        <location filename="../app/MainWindow.cpp" line="774"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="773"/>
+        <location filename="../app/MainWindow.cpp" line="785"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="776"/>
+        <location filename="../app/MainWindow.cpp" line="788"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="781"/>
+        <location filename="../app/MainWindow.cpp" line="793"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindow.cpp" line="796"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="787"/>
+        <location filename="../app/MainWindow.cpp" line="799"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="945"/>
+        <location filename="../app/MainWindow.cpp" line="802"/>
+        <source>an identification of the car&apos;s model</source>
+        <translation>車輛模型的辨識</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindow.cpp" line="961"/>
         <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
         <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="950"/>
+        <location filename="../app/MainWindow.cpp" line="966"/>
         <source>E-STOP (the foot switch&apos;s key)</source>
         <translation>緊急停止（腳踏開關的按鍵）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="953"/>
+        <location filename="../app/MainWindow.cpp" line="969"/>
         <source>Gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1020"/>
+        <location filename="../app/MainWindow.cpp" line="1036"/>
         <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
         <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1033"/>
+        <location filename="../app/MainWindow.cpp" line="1049"/>
         <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
         <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1044"/>
+        <location filename="../app/MainWindow.cpp" line="1060"/>
         <source>E-STOP inputs</source>
         <translation>緊急停止輸入</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1046"/>
+        <location filename="../app/MainWindow.cpp" line="1062"/>
         <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
         <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1056"/>
+        <location filename="../app/MainWindow.cpp" line="1072"/>
         <source>No key</source>
         <translation>不設按鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1063"/>
+        <location filename="../app/MainWindow.cpp" line="1079"/>
         <source>None</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1065"/>
+        <location filename="../app/MainWindow.cpp" line="1081"/>
         <source>B (the red one on most pads)</source>
         <translation>B（大多數手掣上的紅色按鈕）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1066"/>
+        <location filename="../app/MainWindow.cpp" line="1082"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1067"/>
+        <location filename="../app/MainWindow.cpp" line="1083"/>
         <source>X</source>
         <translation>X</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1068"/>
+        <location filename="../app/MainWindow.cpp" line="1084"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1069"/>
+        <location filename="../app/MainWindow.cpp" line="1085"/>
         <source>Back / Select</source>
         <translation>Back / Select</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1070"/>
+        <location filename="../app/MainWindow.cpp" line="1086"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1071"/>
+        <location filename="../app/MainWindow.cpp" line="1087"/>
         <source>Left shoulder</source>
         <translation>左肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1072"/>
+        <location filename="../app/MainWindow.cpp" line="1088"/>
         <source>Right shoulder</source>
         <translation>右肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1073"/>
+        <location filename="../app/MainWindow.cpp" line="1089"/>
         <source>Paddle 1</source>
         <translation>背鍵 1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1079"/>
+        <location filename="../app/MainWindow.cpp" line="1095"/>
         <source>A gamepad is connected.</source>
         <translation>已連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1080"/>
+        <location filename="../app/MainWindow.cpp" line="1096"/>
         <source>No gamepad is connected now.</source>
         <translation>目前沒有連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1083"/>
+        <location filename="../app/MainWindow.cpp" line="1099"/>
         <source>Foot switch key:</source>
         <translation>腳踏開關按鍵：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1084"/>
+        <location filename="../app/MainWindow.cpp" line="1100"/>
         <source>Gamepad button:</source>
         <translation>手掣按鈕：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1108"/>
+        <location filename="../app/MainWindow.cpp" line="1124"/>
         <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
         <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1110"/>
+        <location filename="../app/MainWindow.cpp" line="1126"/>
         <source>, the key %1</source>
         <translation>、按鍵 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1111"/>
+        <location filename="../app/MainWindow.cpp" line="1127"/>
         <source>, gamepad button %1</source>
         <translation>、手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="476"/>
-        <location filename="../app/MainWindow.cpp" line="809"/>
-        <location filename="../app/MainWindow.cpp" line="830"/>
-        <location filename="../app/MainWindow.cpp" line="832"/>
-        <location filename="../app/MainWindow.cpp" line="839"/>
-        <location filename="../app/MainWindow.cpp" line="842"/>
-        <location filename="../app/MainWindow.cpp" line="875"/>
+        <location filename="../app/MainWindow.cpp" line="481"/>
+        <location filename="../app/MainWindow.cpp" line="825"/>
+        <location filename="../app/MainWindow.cpp" line="846"/>
+        <location filename="../app/MainWindow.cpp" line="848"/>
+        <location filename="../app/MainWindow.cpp" line="855"/>
+        <location filename="../app/MainWindow.cpp" line="858"/>
+        <location filename="../app/MainWindow.cpp" line="891"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="810"/>
+        <location filename="../app/MainWindow.cpp" line="826"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="811"/>
+        <location filename="../app/MainWindow.cpp" line="827"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="830"/>
+        <location filename="../app/MainWindow.cpp" line="846"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="840"/>
+        <location filename="../app/MainWindow.cpp" line="856"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="853"/>
+        <location filename="../app/MainWindow.cpp" line="869"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="854"/>
+        <location filename="../app/MainWindow.cpp" line="870"/>
         <source>Work is under way:
 
 %1
@@ -1954,93 +2015,93 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="859"/>
+        <location filename="../app/MainWindow.cpp" line="875"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="861"/>
+        <location filename="../app/MainWindow.cpp" line="877"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="862"/>
+        <location filename="../app/MainWindow.cpp" line="878"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="863"/>
+        <location filename="../app/MainWindow.cpp" line="879"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="875"/>
+        <location filename="../app/MainWindow.cpp" line="891"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="907"/>
+        <location filename="../app/MainWindow.cpp" line="923"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="907"/>
+        <location filename="../app/MainWindow.cpp" line="923"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="919"/>
+        <location filename="../app/MainWindow.cpp" line="935"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="921"/>
+        <location filename="../app/MainWindow.cpp" line="937"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="925"/>
+        <location filename="../app/MainWindow.cpp" line="941"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="928"/>
+        <location filename="../app/MainWindow.cpp" line="944"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="944"/>
+        <location filename="../app/MainWindow.cpp" line="960"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="959"/>
+        <location filename="../app/MainWindow.cpp" line="975"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="960"/>
+        <location filename="../app/MainWindow.cpp" line="976"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="962"/>
+        <location filename="../app/MainWindow.cpp" line="978"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="969"/>
+        <location filename="../app/MainWindow.cpp" line="985"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="978"/>
-        <location filename="../app/MainWindow.cpp" line="984"/>
+        <location filename="../app/MainWindow.cpp" line="994"/>
+        <location filename="../app/MainWindow.cpp" line="1000"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="978"/>
+        <location filename="../app/MainWindow.cpp" line="994"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -2243,6 +2304,240 @@ What should happen to it?</source>
 Do you want to replace it?</source>
         <translation>%1 已存在。
 要取代它嗎？</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::app::ModelPanel</name>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="125"/>
+        <location filename="../app/ModelPanel.cpp" line="141"/>
+        <location filename="../app/ModelPanel.cpp" line="150"/>
+        <location filename="../app/ModelPanel.cpp" line="190"/>
+        <location filename="../app/ModelPanel.cpp" line="211"/>
+        <location filename="../app/ModelPanel.cpp" line="220"/>
+        <location filename="../app/ModelPanel.cpp" line="292"/>
+        <location filename="../app/ModelPanel.cpp" line="306"/>
+        <location filename="../app/ModelPanel.cpp" line="319"/>
+        <location filename="../app/ModelPanel.cpp" line="320"/>
+        <location filename="../app/ModelPanel.cpp" line="326"/>
+        <source>Model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="125"/>
+        <location filename="../app/ModelPanel.cpp" line="126"/>
+        <source>The identification failed: %1</source>
+        <translation>辨識失敗：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="142"/>
+        <source>E-STOP: the identification is cancelled; the session keeps the model it had.</source>
+        <translation>緊急停止：辨識已取消；工作階段保留原有的模型。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="151"/>
+        <source>The identified model was cleared: %1. Identify again for mpc to plan through a model of this car.</source>
+        <translation>已辨識的模型已清除：%1。請重新辨識，讓 mpc 以這輛車的模型規劃。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="212"/>
+        <source>Identifying the car from %1...</source>
+        <translation>正在從%1辨識車輛……</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="220"/>
+        <source>Cancelling the identification...</source>
+        <translation>正在取消辨識……</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="261"/>
+        <source>Identifying... %1 so far</source>
+        <translation>正在辨識……已用 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="262"/>
+        <source>Identifying: %1 of about %2 model runs · %3</source>
+        <translation>正在辨識：約 %2 次模型運算中已完成 %1 次 · %3</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="270"/>
+        <source>E-STOP: cancelling. %1</source>
+        <translation>緊急停止：正在取消。%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="272"/>
+        <source>Cancelling. %1</source>
+        <translation>正在取消。%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="289"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="293"/>
+        <source>Stopped by E-STOP after %1.</source>
+        <translation>%1 後被緊急停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="294"/>
+        <source>Cancelled after %1: the demonstration or the car changed.</source>
+        <translation>%1 後已取消：示範或車輛已改變。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="297"/>
+        <source>Cancelled after %1.</source>
+        <translation>%1 後已取消。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="299"/>
+        <source>The model identified before is kept.</source>
+        <translation>之前辨識的模型已保留。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="300"/>
+        <source>No model was kept.</source>
+        <translation>沒有保留任何模型。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="303"/>
+        <source>Refused</source>
+        <translation>已拒絕</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="308"/>
+        <source>This demonstration cannot identify the car: %1. Record one that drives the car through a slide, with throttle and steering that change.</source>
+        <translation>此示範無法辨識車輛：%1。請錄製一段令車輛打滑、油門和轉向都有變化的示範。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="317"/>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="321"/>
+        <source>Identified in %1; mpc plans through the new model.</source>
+        <translation>用 %1 完成辨識；mpc 以新模型規劃。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="378"/>
+        <source>held</source>
+        <translation>保持</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="379"/>
+        <source>undetermined</source>
+        <translation>未能確定</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="394"/>
+        <source>%1: identified (prior %2)</source>
+        <translation>%1：已辨識（先驗值 %2）</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="395"/>
+        <source>%1: the data did not determine it; held at its prior</source>
+        <translation>%1：數據未能確定其值；保持先驗值</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="397"/>
+        <source>%1: fitted, but the data did not determine it</source>
+        <translation>%1：已擬合，但數據未能確定其值</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="436"/>
+        <source>model, replaying the recorded actions</source>
+        <translation>模型，重播錄得的動作</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="494"/>
+        <source>Fits the car&apos;s physical parameters to the demonstration (as prisca-cli identify). mpc plans through the model; the session saves it.</source>
+        <translation>把車輛的物理參數擬合到示範（與 prisca-cli identify 相同）。mpc 以此模型規劃；工作階段會儲存它。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="327"/>
+        <source>The model identified was not kept: %1.</source>
+        <translation>辨識出的模型未有保留：%1。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="341"/>
+        <source>Only the slide-car can be identified: the %1 has no model to identify here, and mpc does not run on it.</source>
+        <translation>只有漂移車可以辨識：%1 在此沒有可辨識的模型，mpc 亦不能在其上運行。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="345"/>
+        <source>No model yet. Identify fits the car&apos;s friction, grip, drive, steering and delays to the demonstration; until then mpc identifies one itself each time a run starts.</source>
+        <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 每次開始運行時都會自行辨識一個模型。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="354"/>
+        <source>Model: pose error %1 cm RMS per segment over %2 segments (the prior&apos;s %3 cm); %4 of %5 fitted parameters identified, the rest held at their prior. mpc plans through this model.</source>
+        <translation>模型：%2 個分段的每段位姿誤差均方根為 %1 cm（先驗模型為 %3 cm）；%5 個擬合參數中 %4 個已辨識，其餘保持先驗值。mpc 以此模型規劃。</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="377"/>
+        <source>identified</source>
+        <translation>已辨識</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="405"/>
+        <source>Not fitted (measured, or the catalog&apos;s): %1</source>
+        <translation>未擬合（量度所得或目錄值）：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="414"/>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="415"/>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="416"/>
+        <source>no path</source>
+        <translation>沒有路徑</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="429"/>
+        <source>recorded</source>
+        <translation>錄得</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="496"/>
+        <source>Identify</source>
+        <translation>辨識</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="497"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <source>Parameter</source>
+        <translation>參數</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <source>Value</source>
+        <translation>數值</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <source>Unit</source>
+        <translation>單位</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <source>Std. dev.</source>
+        <translation>標準差</translation>
+    </message>
+    <message>
+        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
     </message>
 </context>
 <context>

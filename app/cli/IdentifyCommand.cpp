@@ -5,6 +5,7 @@
 #include "app/cli/TaskSetup.h"
 #include "rig/TrialBundle.h"
 #include "sim/Identification.h"
+#include "sim/IdentificationReport.h"
 #include "sim/PlantCatalog.h"
 #include "sim/PlantParameters.h"
 
@@ -19,35 +20,14 @@ namespace prisca::app::cli {
 
 namespace {
 
+// The report printed with --format json: the one the plant file keeps, where it went and what
+// it came from.
 QJsonObject reportJson(const sim::IdentificationResult& result, const QString& out,
                        const QStringList& sources) {
-    QJsonObject parameters;
-    for (const sim::IdentifiedParameter& p : result.table) {
-        QJsonObject entry{{"value", p.value},
-                          {"unit", p.unit},
-                          {"prior", p.prior},
-                          {"fitted", p.fitted},
-                          {"identified", p.identified}};
-        entry.insert(QStringLiteral("std"), p.fitted ? QJsonValue(p.std) : QJsonValue());
-        parameters.insert(p.key, entry);
-    }
-    QJsonArray segments;
-    for (const sim::SegmentFit& s : result.segments) {
-        segments.append(QJsonObject{{"run", s.run},
-                                    {"start", s.start},
-                                    {"duration", s.duration},
-                                    {"positionRms", s.positionRms},
-                                    {"headingRms", s.headingRms}});
-    }
-    return QJsonObject{{"plant", result.parameters.plant},
-                       {"out", out},
-                       {"sources", QJsonArray::fromStringList(sources)},
-                       {"parameters", parameters},
-                       {"segments", segments},
-                       {"positionRms", result.positionRms},
-                       {"headingRms", result.headingRms},
-                       {"priorPositionRms", result.priorPositionRms},
-                       {"evaluations", static_cast<double>(result.evaluations)}};
+    QJsonObject report = sim::identificationReportJson(result);
+    report.insert(QStringLiteral("out"), out);
+    report.insert(QStringLiteral("sources"), QJsonArray::fromStringList(sources));
+    return report;
 }
 
 QString reportText(const sim::IdentificationResult& result, const QString& out) {
@@ -116,10 +96,19 @@ int identifyCommand(const QStringList& arguments) {
                   "folder");
     addPlantParametersOption(line);
     line.addValue("out", "The identified plant file to write (JSON).", "file");
-    line.addValue("segment", "Segment length [s] (default 1).", "seconds", "1");
-    line.addValue("restarts", "Further local searches from perturbed starts (default 2).", "N",
-                  "2");
-    line.addValue("evaluations", "Model runs per local search (default 1500).", "N", "1500");
+    // The window's Model step identifies with these same defaults.
+    const sim::IdentificationSettings defaults;
+    line.addValue("segment",
+                  QStringLiteral("Segment length [s] (default %1).").arg(defaults.segmentSeconds),
+                  "seconds", QString::number(defaults.segmentSeconds));
+    line.addValue("restarts",
+                  QStringLiteral("Further local searches from perturbed starts (default %1).")
+                      .arg(defaults.restarts),
+                  "N", QString::number(defaults.restarts));
+    line.addValue("evaluations",
+                  QStringLiteral("Model runs per local search (default %1).")
+                      .arg(defaults.evaluationsPerStart),
+                  "N", QString::number(defaults.evaluationsPerStart));
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
@@ -180,14 +169,11 @@ int identifyCommand(const QStringList& arguments) {
     }
     const QJsonObject report = reportJson(result, out, sources);
     // The plant file, with the identification's report kept beside the values.
-    QJsonObject file =
-        QJsonDocument::fromJson(sim::plantParametersJson(result.parameters)).object();
-    file.insert(QStringLiteral("description"),
-                QStringLiteral("identified from %1").arg(sources.join(QStringLiteral(", "))));
-    QJsonObject kept = report;
-    kept.remove(QStringLiteral("out"));
-    file.insert(QStringLiteral("identification"), kept);
-    writeOutput(out, QJsonDocument(file).toJson(QJsonDocument::Indented), true);
+    writeOutput(out,
+                sim::identifiedPlantFile(result, QStringLiteral("identified from %1")
+                                                     .arg(sources.join(QStringLiteral(", "))),
+                                         sources),
+                true);
     if (line.format() == QLatin1String("json")) {
         printJson(report);
     } else {
