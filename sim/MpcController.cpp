@@ -105,12 +105,7 @@ MpcController::MpcController(const MpcController& other)
     buildModel();
     if (other.planner_) {
         planner_ = std::make_unique<OracleController>(*other.planner_);
-        planner_->attachPlant(modelPlant_.get());
-        std::vector<const Plant*> others;
-        for (const auto& plant : ensemble_) {
-            others.push_back(plant.get());
-        }
-        planner_->attachEnsemble(std::move(others));
+        attachModels();
     }
     if (other.modelPlant_) {
         modelPlant_->resetTo(other.modelPlant_->state());
@@ -133,9 +128,7 @@ void MpcController::buildModel() {
     modelPlant_ = PlantCatalog::create(model_, timing);
     scratch_ = PlantCatalog::create(model_, timing);
     planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
-    planner_->attachPlant(modelPlant_.get());
     ensemble_.clear();
-    std::vector<const Plant*> others;
     if (parameters_.gripSpread > 0.0) {
         const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
         for (const double factor : {1.0 - parameters_.gripSpread, 1.0 + parameters_.gripSpread}) {
@@ -149,8 +142,16 @@ void MpcController::buildModel() {
                 }
             }
             ensemble_.push_back(PlantCatalog::create(other, timing));
-            others.push_back(ensemble_.back().get());
         }
+    }
+    attachModels();
+}
+
+void MpcController::attachModels() {
+    planner_->attachPlant(modelPlant_.get());
+    std::vector<const Plant*> others;
+    for (const auto& plant : ensemble_) {
+        others.push_back(plant.get());
     }
     planner_->attachEnsemble(std::move(others));
 }
@@ -247,8 +248,12 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     } else {
         // The model at the state of now: the measurement predicted through the latency.
         predictInto(*modelPlant_, k, latency_);
-        for (const auto& other : ensemble_) {
-            predictInto(*other, k, latency_);
+        // The other grips are planned from, not stepped: they need the state of now only on
+        // the steps the planner plans.
+        if (k % parameters_.replanEvery == 0) {
+            for (const auto& other : ensemble_) {
+                predictInto(*other, k, latency_);
+            }
         }
         record_ = planner_->step(modelPlant_->state());
     }

@@ -103,6 +103,8 @@ class MpcController : public core::Controller {
 
   private:
     void buildModel();
+    /// Hands the planner its models: the model plant and the other grips.
+    void attachModels();
     void fallBack(const QString& reason);
     /// The model at recorded step `from`'s observation with the commands before it in flight,
     /// stepped through `count` commands sent from step `from - latency` on.
