@@ -130,19 +130,17 @@ void MpcController::buildModel() {
     planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
     ensemble_.clear();
     if (parameters_.gripSpread > 0.0) {
+        // The same car on less grip: the side a plan spins out on.
         const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
-        for (const double factor : {1.0 - parameters_.gripSpread, 1.0 + parameters_.gripSpread}) {
-            PlantParameters other = model_;
-            for (size_t i = 0; i < specs.size(); ++i) {
-                const QString& key = specs[i].key;
-                if (key == QLatin1String("staticFriction") ||
-                    key == QLatin1String("kineticFriction")) {
-                    other.values[i] = std::clamp(other.values[i] * factor, specs[i].lower,
-                                                 specs[i].upper);
-                }
+        PlantParameters slippery = model_;
+        for (size_t i = 0; i < specs.size(); ++i) {
+            const QString& key = specs[i].key;
+            if (key == QLatin1String("staticFriction") || key == QLatin1String("kineticFriction")) {
+                slippery.values[i] = std::clamp(slippery.values[i] * (1.0 - parameters_.gripSpread),
+                                                specs[i].lower, specs[i].upper);
             }
-            ensemble_.push_back(PlantCatalog::create(other, timing));
         }
+        ensemble_.push_back(PlantCatalog::create(slippery, timing));
     }
     attachModels();
 }

@@ -32,8 +32,10 @@ struct MpcParameters {
     /// weaker battery) is pushed into the slide with throttle on, and spins.
     bool feedback = false;
     /// Robust planning: the plan must also park the model with its tyres' grips this share
-    /// lower and higher (a floor of uneven grip, tyres the model's friction law only
-    /// approximates); 0: the model alone.
+    /// lower (a floor of uneven grip, tyres the model's friction law only approximates: the
+    /// side a plan spins out on); 0: the model alone. (A third model with more grip as well
+    /// cost half again the planning time, over the real-time budget, for no dependable gain on
+    /// the development cells: docs/decisions.md.)
     double gripSpread = 0.15;
     /// Physics steps per control step of the model (it is identified with the same), fewer
     /// than the simulator's for speed.

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     if (qEnvironmentVariableIsSet("MPC_KN")) profile.mpc.maxKnots = qEnvironmentVariable("MPC_KN").toInt();
     if (qEnvironmentVariableIsSet("MPC_FB")) profile.mpc.feedback = qEnvironmentVariableIntValue("MPC_FB") != 0;
     if (qEnvironmentVariableIsSet("MPC_GS")) profile.mpc.gripSpread = qEnvironmentVariable("MPC_GS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_RO")) profile.mpc.rollouts = qEnvironmentVariable("MPC_RO").toInt();
     if (qEnvironmentVariableIsSet("MPC_TS")) profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
     RunSettings settings;
     settings.seed = set;
