@@ -763,6 +763,10 @@ void RigPanel::showTrialResult(const rig::RigTrialResult& result) {
                                  .arg(result.seconds, 0, 'f', 1)
                                  .arg(result.reason);
     }
+    if (!result.controllerNote.isEmpty()) {
+        //: A rig trial's result, then what the method says of it (which law drove, and why).
+        lastResult_ = tr("%1; %2").arg(lastResult_, result.controllerNote);
+    }
     showStatus(trialInfo_, tr("Rig trial"), lastResult_);
     updateButtons();
     emit trialFinished(lastResult_);

@@ -85,6 +85,9 @@ class Controller {
     /// The learned policy parameters theta (p x m) for logging and plotting, or nullptr for a
     /// controller that learns nothing.
     virtual const Eigen::MatrixXd* learnedParameters() const { return nullptr; }
+    /// What the operator should know about the trial running or just run, in a sentence (which
+    /// law drove it, and why that changed); empty: nothing beyond the method's name.
+    virtual QString trialNote() const { return {}; }
 };
 
 }  // namespace prisca::core

@@ -477,6 +477,9 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
     result.framesWithPose = l.framesWithPose;
     result.latencyMs = std::move(l.latencyMs);
     l.latencyMs.clear();
+    if (l.loop) {
+        result.controllerNote = l.loop->controller().trialNote();
+    }
     if (l.lastTrackedPose && l.demonstration && l.plant.pose) {
         result.parked = sim::parkingError(l.plant, *l.demonstration, l.lastTrackedPose->x,
                                           l.lastTrackedPose->y, l.lastTrackedPose->heading);
@@ -488,6 +491,9 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
                       {"seconds", result.seconds},
                       {"frames", static_cast<double>(result.frames)},
                       {"framesWithPose", static_cast<double>(result.framesWithPose)}};
+        if (!result.controllerNote.isEmpty()) {
+            r.insert("controllerNote", result.controllerNote);
+        }
         if (result.parked) {
             r.insert("finalPositionErrorCm", result.parked->position * 100.0);
             r.insert("finalHeadingErrorDeg", result.parked->heading * 180.0 / M_PI);

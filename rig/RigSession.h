@@ -93,6 +93,7 @@ struct RigTrialResult {
     std::vector<double> latencyMs;
     /// Where the car stopped relative to the demonstration's end; empty: no pose was seen.
     std::optional<sim::ParkingError> parked;
+    QString controllerNote;  ///< the controller's word on the trial (Controller::trialNote)
 };
 
 /// A demonstration recorded by driving on the rig.

@@ -136,6 +136,7 @@ EpisodeResult EpisodeStepper::result() const {
     result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
     result.controllerSeconds = controllerSeconds_;
     result.lostTrack = guard_.tripped();
+    result.controllerNote = controller_.trialNote();
     result.steps = steps_;
     return result;
 }

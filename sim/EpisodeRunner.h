@@ -91,6 +91,7 @@ struct EpisodeResult {
     double controllerSeconds = 0.0;
     bool cancelled = false;         ///< stopped by the cancel predicate
     bool lostTrack = false;         ///< ended in failsafe: the robot left the demonstration
+    QString controllerNote;         ///< the controller's word on the trial (Controller::trialNote)
 };
 
 /// One trial taken a control step at a time, for callers that pace it themselves (the

@@ -116,6 +116,19 @@ std::unique_ptr<core::Controller> MpcController::clone() const {
     return std::make_unique<MpcController>(*this);
 }
 
+QString MpcController::trialNote() const {
+    if (mode_ == MpcMode::Planning) {
+        return modelFit_ >= 0.0 ? QStringLiteral("planned through the model (fit %1 cm)")
+                                      .arg(100.0 * modelFit_, 0, 'f', 1)
+                                : QStringLiteral("planned through the model");
+    }
+    return fallbackStep_ > 0
+               ? QStringLiteral("the feedback law drove from %1 s: %2")
+                     .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
+                     .arg(fallbackReason_)
+               : QStringLiteral("the feedback law drove: %1").arg(fallbackReason_);
+}
+
 void MpcController::setLatencyCompensation(int steps) {
     pendingLatency_ = std::max(0, steps);
     fallback_->setLatencyCompensation(steps);

@@ -90,6 +90,8 @@ class MpcController : public core::Controller {
     QString name() const override { return QStringLiteral("mpc"); }
     void reset(core::ResetMode mode = core::ResetMode::Cold) override;
     const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
+    /// "planned through the model" or "fell back to the feedback law ...: why" (with when).
+    QString trialNote() const override;
     std::unique_ptr<core::Controller> clone() const override;
     void setLatencyCompensation(int steps) override;
 

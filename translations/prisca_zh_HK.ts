@@ -1237,122 +1237,122 @@
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="255"/>
+        <location filename="../app/LabSession.cpp" line="256"/>
         <source>an identification that was refused or cancelled is no model</source>
         <translation>被拒絕或已取消的辨識不是模型</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="260"/>
+        <location filename="../app/LabSession.cpp" line="261"/>
         <source>the model is of a %1, the target a %2</source>
         <translation>模型屬於 %1，目標卻是 %2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="266"/>
+        <location filename="../app/LabSession.cpp" line="267"/>
         <source>the demonstration changed while the model was identified</source>
         <translation>辨識模型期間示範已改變</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="398"/>
+        <location filename="../app/LabSession.cpp" line="399"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="404"/>
+        <location filename="../app/LabSession.cpp" line="405"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="410"/>
+        <location filename="../app/LabSession.cpp" line="411"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="413"/>
+        <location filename="../app/LabSession.cpp" line="414"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="418"/>
+        <location filename="../app/LabSession.cpp" line="419"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="425"/>
+        <location filename="../app/LabSession.cpp" line="426"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="429"/>
+        <location filename="../app/LabSession.cpp" line="430"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="438"/>
+        <location filename="../app/LabSession.cpp" line="439"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="461"/>
+        <location filename="../app/LabSession.cpp" line="462"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="528"/>
+        <location filename="../app/LabSession.cpp" line="529"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="533"/>
+        <location filename="../app/LabSession.cpp" line="534"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="555"/>
+        <location filename="../app/LabSession.cpp" line="556"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="569"/>
+        <location filename="../app/LabSession.cpp" line="570"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="595"/>
+        <location filename="../app/LabSession.cpp" line="596"/>
         <source>&apos;plantParameters&apos;: %1</source>
         <translation>「plantParameters」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="609"/>
+        <location filename="../app/LabSession.cpp" line="610"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="613"/>
+        <location filename="../app/LabSession.cpp" line="614"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="620"/>
+        <location filename="../app/LabSession.cpp" line="621"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="625"/>
+        <location filename="../app/LabSession.cpp" line="626"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="649"/>
+        <location filename="../app/LabSession.cpp" line="650"/>
         <source>The identified model saved with it could not be read (%1): identify the car again in the Model step.</source>
         <translation>無法讀取隨工作階段儲存的已辨識模型（%1）：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="653"/>
+        <location filename="../app/LabSession.cpp" line="654"/>
         <source>Its demonstration is not the one the saved model was identified from: identify the car again in the Model step.</source>
         <translation>其示範並非儲存的模型辨識時所用的示範：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="670"/>
+        <location filename="../app/LabSession.cpp" line="671"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -2311,15 +2311,15 @@ Do you want to replace it?</source>
     <message>
         <location filename="../app/ModelPanel.cpp" line="125"/>
         <location filename="../app/ModelPanel.cpp" line="141"/>
-        <location filename="../app/ModelPanel.cpp" line="150"/>
-        <location filename="../app/ModelPanel.cpp" line="190"/>
-        <location filename="../app/ModelPanel.cpp" line="211"/>
-        <location filename="../app/ModelPanel.cpp" line="220"/>
-        <location filename="../app/ModelPanel.cpp" line="292"/>
-        <location filename="../app/ModelPanel.cpp" line="306"/>
-        <location filename="../app/ModelPanel.cpp" line="319"/>
-        <location filename="../app/ModelPanel.cpp" line="320"/>
-        <location filename="../app/ModelPanel.cpp" line="326"/>
+        <location filename="../app/ModelPanel.cpp" line="149"/>
+        <location filename="../app/ModelPanel.cpp" line="189"/>
+        <location filename="../app/ModelPanel.cpp" line="210"/>
+        <location filename="../app/ModelPanel.cpp" line="219"/>
+        <location filename="../app/ModelPanel.cpp" line="290"/>
+        <location filename="../app/ModelPanel.cpp" line="304"/>
+        <location filename="../app/ModelPanel.cpp" line="317"/>
+        <location filename="../app/ModelPanel.cpp" line="318"/>
+        <location filename="../app/ModelPanel.cpp" line="324"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
@@ -2335,97 +2335,97 @@ Do you want to replace it?</source>
         <translation>緊急停止：辨識已取消；工作階段保留原有的模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="151"/>
+        <location filename="../app/ModelPanel.cpp" line="150"/>
         <source>The identified model was cleared: %1. Identify again for mpc to plan through a model of this car.</source>
         <translation>已辨識的模型已清除：%1。請重新辨識，讓 mpc 以這輛車的模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="212"/>
+        <location filename="../app/ModelPanel.cpp" line="211"/>
         <source>Identifying the car from %1...</source>
         <translation>正在從%1辨識車輛……</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="220"/>
+        <location filename="../app/ModelPanel.cpp" line="219"/>
         <source>Cancelling the identification...</source>
         <translation>正在取消辨識……</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="261"/>
+        <location filename="../app/ModelPanel.cpp" line="260"/>
         <source>Identifying... %1 so far</source>
         <translation>正在辨識……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="262"/>
+        <location filename="../app/ModelPanel.cpp" line="261"/>
         <source>Identifying: %1 of about %2 model runs · %3</source>
         <translation>正在辨識：約 %2 次模型運算中已完成 %1 次 · %3</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="270"/>
+        <location filename="../app/ModelPanel.cpp" line="268"/>
         <source>E-STOP: cancelling. %1</source>
         <translation>緊急停止：正在取消。%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="272"/>
+        <location filename="../app/ModelPanel.cpp" line="270"/>
         <source>Cancelling. %1</source>
         <translation>正在取消。%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="289"/>
+        <location filename="../app/ModelPanel.cpp" line="287"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="293"/>
+        <location filename="../app/ModelPanel.cpp" line="291"/>
         <source>Stopped by E-STOP after %1.</source>
         <translation>%1 後被緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="294"/>
+        <location filename="../app/ModelPanel.cpp" line="292"/>
         <source>Cancelled after %1: the demonstration or the car changed.</source>
         <translation>%1 後已取消：示範或車輛已改變。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="297"/>
+        <location filename="../app/ModelPanel.cpp" line="295"/>
         <source>Cancelled after %1.</source>
         <translation>%1 後已取消。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="299"/>
+        <location filename="../app/ModelPanel.cpp" line="298"/>
         <source>The model identified before is kept.</source>
         <translation>之前辨識的模型已保留。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="300"/>
+        <location filename="../app/ModelPanel.cpp" line="298"/>
         <source>No model was kept.</source>
         <translation>沒有保留任何模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="303"/>
+        <location filename="../app/ModelPanel.cpp" line="301"/>
         <source>Refused</source>
         <translation>已拒絕</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="308"/>
+        <location filename="../app/ModelPanel.cpp" line="306"/>
         <source>This demonstration cannot identify the car: %1. Record one that drives the car through a slide, with throttle and steering that change.</source>
         <translation>此示範無法辨識車輛：%1。請錄製一段令車輛打滑、油門和轉向都有變化的示範。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="317"/>
+        <location filename="../app/ModelPanel.cpp" line="315"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="321"/>
+        <location filename="../app/ModelPanel.cpp" line="319"/>
         <source>Identified in %1; mpc plans through the new model.</source>
         <translation>用 %1 完成辨識；mpc 以新模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="378"/>
+        <location filename="../app/ModelPanel.cpp" line="377"/>
         <source>held</source>
         <translation>保持</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="379"/>
+        <location filename="../app/ModelPanel.cpp" line="378"/>
         <source>undetermined</source>
         <translation>未能確定</translation>
     </message>
@@ -2435,7 +2435,7 @@ Do you want to replace it?</source>
         <translation>%1：已辨識（先驗值 %2）</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="395"/>
+        <location filename="../app/ModelPanel.cpp" line="396"/>
         <source>%1: the data did not determine it; held at its prior</source>
         <translation>%1：數據未能確定其值；保持先驗值</translation>
     </message>
@@ -2445,37 +2445,37 @@ Do you want to replace it?</source>
         <translation>%1：已擬合，但數據未能確定其值</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="436"/>
+        <location filename="../app/ModelPanel.cpp" line="435"/>
         <source>model, replaying the recorded actions</source>
         <translation>模型，重播錄得的動作</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="494"/>
+        <location filename="../app/ModelPanel.cpp" line="495"/>
         <source>Fits the car&apos;s physical parameters to the demonstration (as prisca-cli identify). mpc plans through the model; the session saves it.</source>
         <translation>把車輛的物理參數擬合到示範（與 prisca-cli identify 相同）。mpc 以此模型規劃；工作階段會儲存它。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="327"/>
+        <location filename="../app/ModelPanel.cpp" line="325"/>
         <source>The model identified was not kept: %1.</source>
         <translation>辨識出的模型未有保留：%1。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="341"/>
+        <location filename="../app/ModelPanel.cpp" line="339"/>
         <source>Only the slide-car can be identified: the %1 has no model to identify here, and mpc does not run on it.</source>
         <translation>只有漂移車可以辨識：%1 在此沒有可辨識的模型，mpc 亦不能在其上運行。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="345"/>
+        <location filename="../app/ModelPanel.cpp" line="344"/>
         <source>No model yet. Identify fits the car&apos;s friction, grip, drive, steering and delays to the demonstration; until then mpc identifies one itself each time a run starts.</source>
         <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 每次開始運行時都會自行辨識一個模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="354"/>
+        <location filename="../app/ModelPanel.cpp" line="353"/>
         <source>Model: pose error %1 cm RMS per segment over %2 segments (the prior&apos;s %3 cm); %4 of %5 fitted parameters identified, the rest held at their prior. mpc plans through this model.</source>
         <translation>模型：%2 個分段的每段位姿誤差均方根為 %1 cm（先驗模型為 %3 cm）；%5 個擬合參數中 %4 個已辨識，其餘保持先驗值。mpc 以此模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="377"/>
+        <location filename="../app/ModelPanel.cpp" line="376"/>
         <source>identified</source>
         <translation>已辨識</translation>
     </message>
@@ -2485,57 +2485,57 @@ Do you want to replace it?</source>
         <translation>未擬合（量度所得或目錄值）：%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="414"/>
+        <location filename="../app/ModelPanel.cpp" line="413"/>
         <source>x [m]</source>
         <translation>x [m]</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="415"/>
+        <location filename="../app/ModelPanel.cpp" line="414"/>
         <source>y [m]</source>
         <translation>y [m]</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="416"/>
+        <location filename="../app/ModelPanel.cpp" line="415"/>
         <source>no path</source>
         <translation>沒有路徑</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="429"/>
+        <location filename="../app/ModelPanel.cpp" line="428"/>
         <source>recorded</source>
         <translation>錄得</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="496"/>
+        <location filename="../app/ModelPanel.cpp" line="497"/>
         <source>Identify</source>
         <translation>辨識</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="497"/>
+        <location filename="../app/ModelPanel.cpp" line="498"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <location filename="../app/ModelPanel.cpp" line="500"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <location filename="../app/ModelPanel.cpp" line="500"/>
         <source>Value</source>
         <translation>數值</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <location filename="../app/ModelPanel.cpp" line="500"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <location filename="../app/ModelPanel.cpp" line="500"/>
         <source>Std. dev.</source>
         <translation>標準差</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="499"/>
+        <location filename="../app/ModelPanel.cpp" line="500"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
@@ -2829,7 +2829,7 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="201"/>
-        <location filename="../app/RigPanel.cpp" line="1080"/>
+        <location filename="../app/RigPanel.cpp" line="1084"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
@@ -2840,13 +2840,13 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="420"/>
-        <location filename="../app/RigPanel.cpp" line="1206"/>
+        <location filename="../app/RigPanel.cpp" line="1210"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="421"/>
-        <location filename="../app/RigPanel.cpp" line="1194"/>
+        <location filename="../app/RigPanel.cpp" line="1198"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
@@ -2909,8 +2909,8 @@ Do you want to replace it?</source>
         <location filename="../app/RigPanel.cpp" line="343"/>
         <location filename="../app/RigPanel.cpp" line="349"/>
         <location filename="../app/RigPanel.cpp" line="363"/>
-        <location filename="../app/RigPanel.cpp" line="823"/>
-        <location filename="../app/RigPanel.cpp" line="833"/>
+        <location filename="../app/RigPanel.cpp" line="827"/>
+        <location filename="../app/RigPanel.cpp" line="837"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
@@ -2936,7 +2936,7 @@ Do you want to replace it?</source>
         <location filename="../app/RigPanel.cpp" line="724"/>
         <location filename="../app/RigPanel.cpp" line="736"/>
         <location filename="../app/RigPanel.cpp" line="744"/>
-        <location filename="../app/RigPanel.cpp" line="766"/>
+        <location filename="../app/RigPanel.cpp" line="770"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
@@ -2945,36 +2945,36 @@ Do you want to replace it?</source>
         <location filename="../app/RigPanel.cpp" line="468"/>
         <location filename="../app/RigPanel.cpp" line="633"/>
         <location filename="../app/RigPanel.cpp" line="639"/>
-        <location filename="../app/RigPanel.cpp" line="1244"/>
-        <location filename="../app/RigPanel.cpp" line="1249"/>
+        <location filename="../app/RigPanel.cpp" line="1248"/>
         <location filename="../app/RigPanel.cpp" line="1253"/>
+        <location filename="../app/RigPanel.cpp" line="1257"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="834"/>
+        <location filename="../app/RigPanel.cpp" line="838"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
+        <location filename="../app/RigPanel.cpp" line="857"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="853"/>
-        <location filename="../app/RigPanel.cpp" line="998"/>
-        <location filename="../app/RigPanel.cpp" line="1082"/>
+        <location filename="../app/RigPanel.cpp" line="857"/>
+        <location filename="../app/RigPanel.cpp" line="1002"/>
+        <location filename="../app/RigPanel.cpp" line="1086"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
         <location filename="../app/RigPanel.cpp" line="398"/>
-        <location filename="../app/RigPanel.cpp" line="830"/>
-        <location filename="../app/RigPanel.cpp" line="874"/>
-        <location filename="../app/RigPanel.cpp" line="886"/>
-        <location filename="../app/RigPanel.cpp" line="895"/>
-        <location filename="../app/RigPanel.cpp" line="902"/>
+        <location filename="../app/RigPanel.cpp" line="834"/>
+        <location filename="../app/RigPanel.cpp" line="878"/>
+        <location filename="../app/RigPanel.cpp" line="890"/>
+        <location filename="../app/RigPanel.cpp" line="899"/>
+        <location filename="../app/RigPanel.cpp" line="906"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
@@ -3039,7 +3039,13 @@ Do you want to replace it?</source>
         <translation>緊急停止已重設：鏈路再次發送指令。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="875"/>
+        <location filename="../app/RigPanel.cpp" line="768"/>
+        <source>%1; %2</source>
+        <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="879"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -3048,456 +3054,456 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="896"/>
+        <location filename="../app/RigPanel.cpp" line="900"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="927"/>
+        <location filename="../app/RigPanel.cpp" line="931"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="927"/>
+        <location filename="../app/RigPanel.cpp" line="931"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="930"/>
+        <location filename="../app/RigPanel.cpp" line="934"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="934"/>
+        <location filename="../app/RigPanel.cpp" line="938"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="939"/>
+        <location filename="../app/RigPanel.cpp" line="943"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="940"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="943"/>
+        <location filename="../app/RigPanel.cpp" line="947"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="948"/>
         <source>Camera: video ended</source>
         <translation>攝影機：影片已結束</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="945"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="971"/>
+        <location filename="../app/RigPanel.cpp" line="975"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="974"/>
-        <location filename="../app/RigPanel.cpp" line="983"/>
+        <location filename="../app/RigPanel.cpp" line="978"/>
+        <location filename="../app/RigPanel.cpp" line="987"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="976"/>
-        <location filename="../app/RigPanel.cpp" line="985"/>
+        <location filename="../app/RigPanel.cpp" line="980"/>
+        <location filename="../app/RigPanel.cpp" line="989"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="983"/>
+        <location filename="../app/RigPanel.cpp" line="987"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1028"/>
+        <location filename="../app/RigPanel.cpp" line="1032"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1029"/>
+        <location filename="../app/RigPanel.cpp" line="1033"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1030"/>
+        <location filename="../app/RigPanel.cpp" line="1034"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1031"/>
+        <location filename="../app/RigPanel.cpp" line="1035"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1037"/>
+        <location filename="../app/RigPanel.cpp" line="1041"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1038"/>
+        <location filename="../app/RigPanel.cpp" line="1042"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1039"/>
+        <location filename="../app/RigPanel.cpp" line="1043"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1040"/>
+        <location filename="../app/RigPanel.cpp" line="1044"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1041"/>
+        <location filename="../app/RigPanel.cpp" line="1045"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1042"/>
+        <location filename="../app/RigPanel.cpp" line="1046"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1044"/>
+        <location filename="../app/RigPanel.cpp" line="1048"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1046"/>
+        <location filename="../app/RigPanel.cpp" line="1050"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/RigPanel.cpp" line="1051"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1048"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1049"/>
+        <location filename="../app/RigPanel.cpp" line="1053"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1050"/>
+        <location filename="../app/RigPanel.cpp" line="1054"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1051"/>
+        <location filename="../app/RigPanel.cpp" line="1055"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1056"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1055"/>
+        <location filename="../app/RigPanel.cpp" line="1059"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1056"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1057"/>
+        <location filename="../app/RigPanel.cpp" line="1061"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1059"/>
+        <location filename="../app/RigPanel.cpp" line="1063"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
+        <location filename="../app/RigPanel.cpp" line="1064"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1061"/>
+        <location filename="../app/RigPanel.cpp" line="1065"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1062"/>
+        <location filename="../app/RigPanel.cpp" line="1066"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1063"/>
+        <location filename="../app/RigPanel.cpp" line="1067"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1064"/>
+        <location filename="../app/RigPanel.cpp" line="1068"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1065"/>
+        <location filename="../app/RigPanel.cpp" line="1069"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1066"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1067"/>
+        <location filename="../app/RigPanel.cpp" line="1071"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1068"/>
+        <location filename="../app/RigPanel.cpp" line="1072"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="1074"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1072"/>
+        <location filename="../app/RigPanel.cpp" line="1076"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1074"/>
+        <location filename="../app/RigPanel.cpp" line="1078"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1076"/>
+        <location filename="../app/RigPanel.cpp" line="1080"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1081"/>
+        <location filename="../app/RigPanel.cpp" line="1085"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1083"/>
+        <location filename="../app/RigPanel.cpp" line="1087"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1084"/>
+        <location filename="../app/RigPanel.cpp" line="1088"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <location filename="../app/RigPanel.cpp" line="1089"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1088"/>
+        <location filename="../app/RigPanel.cpp" line="1092"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1089"/>
+        <location filename="../app/RigPanel.cpp" line="1093"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1091"/>
+        <location filename="../app/RigPanel.cpp" line="1095"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1092"/>
+        <location filename="../app/RigPanel.cpp" line="1096"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1093"/>
+        <location filename="../app/RigPanel.cpp" line="1097"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1094"/>
+        <location filename="../app/RigPanel.cpp" line="1098"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1097"/>
+        <location filename="../app/RigPanel.cpp" line="1101"/>
         <source>or declare:</source>
         <translation>或申報：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1098"/>
+        <location filename="../app/RigPanel.cpp" line="1102"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1099"/>
+        <location filename="../app/RigPanel.cpp" line="1103"/>
         <source>not declared</source>
         <translation>未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1100"/>
+        <location filename="../app/RigPanel.cpp" line="1104"/>
         <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
         <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1102"/>
+        <location filename="../app/RigPanel.cpp" line="1106"/>
         <source>Put the car back</source>
         <translation>把車放回起點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1103"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
         <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1105"/>
+        <location filename="../app/RigPanel.cpp" line="1109"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
+        <location filename="../app/RigPanel.cpp" line="1111"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1108"/>
+        <location filename="../app/RigPanel.cpp" line="1112"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1111"/>
+        <location filename="../app/RigPanel.cpp" line="1115"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1112"/>
+        <location filename="../app/RigPanel.cpp" line="1116"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1113"/>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1114"/>
-        <location filename="../app/RigPanel.cpp" line="1116"/>
+        <location filename="../app/RigPanel.cpp" line="1118"/>
+        <location filename="../app/RigPanel.cpp" line="1120"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1115"/>
+        <location filename="../app/RigPanel.cpp" line="1119"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1119"/>
+        <location filename="../app/RigPanel.cpp" line="1123"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1146"/>
+        <location filename="../app/RigPanel.cpp" line="1150"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1146"/>
-        <location filename="../app/RigPanel.cpp" line="1151"/>
-        <location filename="../app/RigPanel.cpp" line="1178"/>
-        <location filename="../app/RigPanel.cpp" line="1239"/>
+        <location filename="../app/RigPanel.cpp" line="1150"/>
+        <location filename="../app/RigPanel.cpp" line="1155"/>
+        <location filename="../app/RigPanel.cpp" line="1182"/>
+        <location filename="../app/RigPanel.cpp" line="1243"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1151"/>
+        <location filename="../app/RigPanel.cpp" line="1155"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1173"/>
+        <location filename="../app/RigPanel.cpp" line="1177"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1178"/>
+        <location filename="../app/RigPanel.cpp" line="1182"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1192"/>
         <location filename="../app/RigPanel.cpp" line="1196"/>
+        <location filename="../app/RigPanel.cpp" line="1200"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1224"/>
+        <location filename="../app/RigPanel.cpp" line="1228"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1230"/>
+        <location filename="../app/RigPanel.cpp" line="1234"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1234"/>
+        <location filename="../app/RigPanel.cpp" line="1238"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1249"/>
+        <location filename="../app/RigPanel.cpp" line="1253"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1253"/>
+        <location filename="../app/RigPanel.cpp" line="1257"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1282"/>
+        <location filename="../app/RigPanel.cpp" line="1286"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1282"/>
-        <location filename="../app/RigPanel.cpp" line="1285"/>
-        <location filename="../app/RigPanel.cpp" line="1288"/>
+        <location filename="../app/RigPanel.cpp" line="1286"/>
+        <location filename="../app/RigPanel.cpp" line="1289"/>
+        <location filename="../app/RigPanel.cpp" line="1292"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1285"/>
+        <location filename="../app/RigPanel.cpp" line="1289"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1288"/>
+        <location filename="../app/RigPanel.cpp" line="1292"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -4457,7 +4463,7 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="359"/>
-        <location filename="../rig/RigSession.cpp" line="771"/>
+        <location filename="../rig/RigSession.cpp" line="777"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
@@ -4468,42 +4474,42 @@ Do you want to replace it?</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="657"/>
+        <location filename="../rig/RigSession.cpp" line="663"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="660"/>
+        <location filename="../rig/RigSession.cpp" line="666"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="669"/>
+        <location filename="../rig/RigSession.cpp" line="675"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="731"/>
+        <location filename="../rig/RigSession.cpp" line="737"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="739"/>
+        <location filename="../rig/RigSession.cpp" line="745"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="768"/>
+        <location filename="../rig/RigSession.cpp" line="774"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="774"/>
+        <location filename="../rig/RigSession.cpp" line="780"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="787"/>
+        <location filename="../rig/RigSession.cpp" line="793"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

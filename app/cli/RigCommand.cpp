@@ -330,6 +330,9 @@ int rigCommand(const QStringList& arguments) {
             row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
             row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
         }
+        if (!trial.controllerNote.isEmpty()) {
+            row.insert("controllerNote", trial.controllerNote);
+        }
         rows.append(row);
         if (line.format() == QLatin1String("text")) {
             const QString where =
@@ -349,6 +352,9 @@ int rigCommand(const QStringList& arguments) {
                           .arg(medianLatency, 0, 'f', 2)
                           .arg(p99Latency, 0, 'f', 2)
                           .arg(worstLatency, 0, 'f', 2));
+            if (!trial.controllerNote.isEmpty()) {
+                printText(QStringLiteral("  %1: %2\n").arg(method, trial.controllerNote));
+            }
         }
     }
     rig.stopCamera();

@@ -198,6 +198,9 @@ int runCommand(const QStringList& arguments) {
                               {"trackingRms", summary.trackingRms},
                               {"meanCost", summary.meanCost},
                               {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep}};
+        if (!result.controllerNote.isEmpty()) {
+            trialJson.insert("controllerNote", result.controllerNote);
+        }
         if (info.pose) {
             trialJson.insert("finalPositionErrorCm",
                              finiteOrNull(summary.finalPositionError * 100.0));
@@ -223,6 +226,9 @@ int runCommand(const QStringList& arguments) {
                         .arg(summary.trackingRms, 0, 'f', 4)
                         .arg(summary.meanCost, 0, 'g', 4)
                         .arg(core::formatCpuMicroseconds(summary.controllerMicrosecondsPerStep));
+        }
+        if (!result.controllerNote.isEmpty()) {
+            text += QStringLiteral("  %1: %2\n").arg(method, result.controllerNote);
         }
         if (trials > 1) {
             printProgress(trialLabel);

@@ -279,7 +279,13 @@ class TestCliCommands : public QObject {
                                        "--method", "mpc", "--model", "id.json", "--out",
                                        "mpc.csv", "--format", "json"});
         QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
-        QVERIFY(parseJson(planned.out).value("trials").toArray().size() == 1);
+        const QJsonArray plannedTrials = parseJson(planned.out).value("trials").toArray();
+        QVERIFY(plannedTrials.size() == 1);
+        // It says which law drove the trial.
+        const QString note = plannedTrials.at(0).toObject().value("controllerNote").toString();
+        QVERIFY2(note.startsWith(QLatin1String("planned through the model")) ||
+                     note.startsWith(QLatin1String("the feedback law drove")),
+                 qPrintable(planned.out));
         writeFile(path("not-a-car.json"), "{\"format\": \"something else\"}");
         const CliResult badModel = cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv",
                                         "--method", "mpc", "--model", "not-a-car.json", "--out",

@@ -82,6 +82,9 @@ class TestMpc : public QObject {
         const double error = setup.trial(*mpc, 11, 0.0);
         QCOMPARE(mpc->mode(), MpcMode::Planning);
         QVERIFY2(mpc->fallbackReason().isEmpty(), qPrintable(mpc->fallbackReason()));
+        // The operator is told which law drove (the rig's result line, run's report).
+        QVERIFY2(mpc->trialNote().startsWith(QLatin1String("planned through the model")),
+                 qPrintable(mpc->trialNote()));
         QVERIFY2(error < 0.02, qPrintable(QString::number(error)));
         // With the realistic perturbation and sensor the measurements stay inside the tube too.
         for (std::uint64_t seed : {3, 4}) {
@@ -105,6 +108,10 @@ class TestMpc : public QObject {
                  qPrintable(mpc->fallbackReason()));
         QVERIFY(mpc->fallbackStep() * setup.demonstration->dt >= setup.profile.mpc.tubeSeconds);
         QVERIFY(mpc->fallbackStep() < setup.demonstration->length());
+        const QString note = mpc->trialNote();
+        QVERIFY2(note.startsWith(QLatin1String("the feedback law drove from ")) &&
+                     note.endsWith(mpc->fallbackReason()),
+                 qPrintable(note));
         // A trial the fallback finished is no data for the model: no refit after it.
         setup.trial(*mpc, 12, 0.0, core::ResetMode::WarmStart);
         QCOMPARE(mpc->refits(), 0);
@@ -141,6 +148,8 @@ class TestMpc : public QObject {
         QCOMPARE(mpc->fallbackStep(), 0);
         QVERIFY2(mpc->fallbackReason().contains(QLatin1String("fits its data")),
                  qPrintable(mpc->fallbackReason()));
+        QCOMPARE(mpc->trialNote(),
+                 QStringLiteral("the feedback law drove: %1").arg(mpc->fallbackReason()));
         QVERIFY(mpc->modelFit() > 0.0);
     }
 
