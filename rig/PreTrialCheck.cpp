@@ -240,6 +240,10 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
     } else if (in.methodTrainsOffline) {
         task = Text::tr("%1 trains offline in simulation; run it there, or choose another method.")
                    .arg(in.methodLabel);
+    } else if (in.methodPlansThroughModel && !in.modelIdentified) {
+        task = Text::tr("%1 plans through the car's model, and none is identified yet: identify "
+                        "the car first (the Model tab; prisca-cli identify, then --model).")
+                   .arg(in.methodLabel);
     }
     items.push_back(task.isEmpty() ? item("task", Text::tr("Task"), true,
                                           Text::tr("%1 on the slide-car").arg(in.methodLabel))

@@ -43,6 +43,8 @@ struct PreTrialInputs {
     QString methodLabel;
     bool methodSimulationOnly = false;  ///< plans on a simulated plant (the oracle)
     bool methodTrainsOffline = false;
+    bool methodPlansThroughModel = false;  ///< mpc: it needs the car's model
+    bool modelIdentified = false;          ///< the session has the car's model (mpcModel)
 };
 
 /// One line of the check.

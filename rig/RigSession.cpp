@@ -304,6 +304,8 @@ PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
     in.methodLabel = method.label;
     in.methodSimulationOnly = method.simulationOnly;
     in.methodTrainsOffline = method.trainsOffline();
+    in.methodPlansThroughModel = method.plansThroughModel;
+    in.modelIdentified = task.profile.mpcModel != nullptr;
     return evaluatePreTrialCheck(in);
 }
 

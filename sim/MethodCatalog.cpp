@@ -1121,6 +1121,7 @@ std::vector<MethodSpec> makeCatalog() {
     s = entry("mpc", "MPC", &makeMpc);
     s.learnsOnline = true;  // the model is refit on each trial
     s.inDefaultTable1 = false;
+    s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
     s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcRefit()};

@@ -45,6 +45,9 @@ struct MethodSpec {
     bool usesFeatures = false;    ///< a policy theta^T phi over features (the panel shows phi)
     bool limit = false;           ///< the ruler every accuracy figure is read against
     bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
+    /// Plans through the car's identified model (MethodTuning::mpcModel); without one it
+    /// identifies the car itself when it is built, which takes seconds: the rig wants it first.
+    bool plansThroughModel = false;
     /// The plants it runs on (empty: every plant).
     QStringList plants;
     bool runsOn(const QString& plant) const { return plants.isEmpty() || plants.contains(plant); }

@@ -4404,12 +4404,17 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../rig/PreTrialCheck.cpp" line="244"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="246"/>
+        <source>%1 plans through the car&apos;s model, and none is identified yet: identify the car first (the Model tab; prisca-cli identify, then --model).</source>
+        <translation>%1 須經車輛的模型規劃，但尚未辨識任何模型：請先辨識車輛（「模型」分頁；或 prisca-cli identify，再加 --model）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="248"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="250"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="245"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="249"/>
         <source>%1 on the slide-car</source>
         <translation>%1 駕駛漂移車</translation>
     </message>
@@ -4432,84 +4437,84 @@ Do you want to replace it?</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="313"/>
+        <location filename="../rig/RigSession.cpp" line="315"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="319"/>
+        <location filename="../rig/RigSession.cpp" line="321"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="341"/>
+        <location filename="../rig/RigSession.cpp" line="343"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="350"/>
+        <location filename="../rig/RigSession.cpp" line="352"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="353"/>
+        <location filename="../rig/RigSession.cpp" line="355"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="356"/>
+        <location filename="../rig/RigSession.cpp" line="358"/>
         <source>E-STOP is latched: reset it before a trial.</source>
         <translation>緊急停止已鎖定：試驗前請先重設。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="359"/>
-        <location filename="../rig/RigSession.cpp" line="777"/>
+        <location filename="../rig/RigSession.cpp" line="361"/>
+        <location filename="../rig/RigSession.cpp" line="779"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="370"/>
-        <location filename="../rig/RigSession.cpp" line="393"/>
+        <location filename="../rig/RigSession.cpp" line="372"/>
+        <location filename="../rig/RigSession.cpp" line="395"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="663"/>
+        <location filename="../rig/RigSession.cpp" line="665"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="666"/>
+        <location filename="../rig/RigSession.cpp" line="668"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="675"/>
+        <location filename="../rig/RigSession.cpp" line="677"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="737"/>
+        <location filename="../rig/RigSession.cpp" line="739"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="745"/>
+        <location filename="../rig/RigSession.cpp" line="747"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="774"/>
+        <location filename="../rig/RigSession.cpp" line="776"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="780"/>
+        <location filename="../rig/RigSession.cpp" line="782"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="793"/>
+        <location filename="../rig/RigSession.cpp" line="795"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

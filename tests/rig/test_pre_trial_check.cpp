@@ -145,6 +145,16 @@ class TestPreTrialCheck : public QObject {
         in = ready();
         in.demonstration.reset();
         QVERIFY(!item(rig::evaluatePreTrialCheck(in), "task").ok);
+        // mpc without the car's model: identify first (it would identify on the spot, seconds
+        // with the window waiting); with one it may start.
+        in = ready();
+        in.methodLabel = QStringLiteral("MPC");
+        in.methodPlansThroughModel = true;
+        const rig::PreTrialItem noModel = item(rig::evaluatePreTrialCheck(in), "task");
+        QVERIFY(!noModel.ok && noModel.blocking);
+        QVERIFY2(noModel.detail.contains(QLatin1String("identify")), qPrintable(noModel.detail));
+        in.modelIdentified = true;
+        QVERIFY(item(rig::evaluatePreTrialCheck(in), "task").ok);
     }
 };
 
