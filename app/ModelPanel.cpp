@@ -342,8 +342,8 @@ void ModelPanel::showModel() {
     } else if (!model) {
         summary_->setText(
             tr("No model yet. Identify fits the car's friction, grip, drive, "
-               "steering and delays to the demonstration; until then mpc "
-               "identifies one itself each time a run starts."));
+               "steering and delays to the demonstration; until then a simulated "
+               "run of mpc identifies one itself as it starts, and the rig waits for one."));
     } else {
         int fitted = 0, identified = 0;
         for (const sim::IdentifiedParameter& p : model->table) {

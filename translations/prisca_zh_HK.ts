@@ -2466,8 +2466,8 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../app/ModelPanel.cpp" line="344"/>
-        <source>No model yet. Identify fits the car&apos;s friction, grip, drive, steering and delays to the demonstration; until then mpc identifies one itself each time a run starts.</source>
-        <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 每次開始運行時都會自行辨識一個模型。</translation>
+        <source>No model yet. Identify fits the car&apos;s friction, grip, drive, steering and delays to the demonstration; until then a simulated run of mpc identifies one itself as it starts, and the rig waits for one.</source>
+        <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 的模擬運行會在開始時自行辨識一個模型，而實驗台則會等候模型。</translation>
     </message>
     <message>
         <location filename="../app/ModelPanel.cpp" line="353"/>
