@@ -14,7 +14,13 @@
  *    failsafe: throttle neutral, steering centred) replace the ones being sent mid-frame;
  *  - silence: if no valid frame came for 10 PPM frames (225 ms), every channel goes to
  *    1500 us (neutral) until frames come again;
- *  - a corrupt frame (parity or framing error, wrong header or footer) is dropped whole;
+ *  - a frame is 25 bytes between two quiet gaps of 2 ms or more (SBUS has no checksum: the
+ *    gaps, the 0x0F header right after one and the 0x00 end byte are all there is to go by); a
+ *    0x0F inside a burst starts nothing;
+ *  - a corrupt frame (parity or framing error, wrong header or end byte, more or fewer than 25
+ *    bytes between gaps) is dropped whole, and after one (and at power-on) two good frames in a
+ *    row must come before their values are sent, so garbage that looks like one frame by chance
+ *    never reaches the trainer port;
  *  - the chip's watchdog (250 ms) resets a hung program, which starts again at neutral.
  */
 #include <avr/interrupt.h>
@@ -35,10 +41,16 @@ static volatile uint16_t pending[CHANNELS];
 static volatile uint16_t active[CHANNELS];
 /* PPM frames started since the last valid SBUS frame. */
 static volatile uint8_t silent = SILENT_FRAMES;
-/* The SBUS frame being received. */
+/* The SBUS frame being received: its bytes since the last gap (SBUS_SIZE + 1: dropped until the
+   next gap), and whether 25 good bytes are waiting for the gap that ends them. */
 static uint8_t frame[SBUS_SIZE];
-static uint8_t received;
-static uint8_t lastByteTick;
+static volatile uint8_t received;
+static volatile uint8_t complete;
+static volatile uint8_t lastByteTick;
+/* Good frames in a row since a bad one (saturating): values are sent from the second on. */
+static uint8_t goodInARow;
+/* Set by the receive interrupt when it dropped a frame; the main loop restarts the count. */
+static volatile uint8_t dropped = 1;
 static volatile uint8_t tick; /* Timer 0 overflows: about 1 ms each */
 
 /* PPM state: the rising edge that starts the channel being sent, and which. */
@@ -65,10 +77,9 @@ static uint16_t sbusToTicks(uint16_t value) {
     return (uint16_t)ticks;
 }
 
-/* A complete frame the receive interrupt handed over, for the main loop to decode (decoding
-   in the interrupt would hold back the PPM's edge interrupt). */
+/* A complete frame the main loop took over from the receive interrupt, to decode outside any
+   interrupt (decoding in one would hold back the PPM's edge interrupt). */
 static uint8_t ready[SBUS_SIZE];
-static volatile uint8_t readyFlag;
 
 static void takeFrame(void) {
     uint16_t values[CHANNELS];
@@ -104,33 +115,77 @@ void earlyWatchdogOff(void) {
     wdt_disable();
 }
 
+/* Drops the frame being received: nothing more is taken until the next gap. */
+static void dropFrame(void) {
+    if (received != 0 || complete) {
+        dropped = 1;
+    }
+    received = SBUS_SIZE + 1;
+    complete = 0;
+}
+
 ISR(USART_RX_vect) {
     const uint8_t status = UCSR0A;
     const uint8_t byte = UDR0;
     const uint8_t now = tick;
-    /* A gap of 2 ms or more starts a new frame (frames come 10 ms or more apart, their bytes
-       back to back). */
+    /* A gap of 2 ms or more starts a new frame (frames come with a gap of 3 ms or more, their
+       bytes back to back). A complete frame the main loop had not taken yet when its gap ended
+       (within microseconds of the tick) is let go: the next one is taken. */
     if ((uint8_t)(now - lastByteTick) >= 2) {
+        complete = 0;
         received = 0;
     }
     lastByteTick = now;
     if (status & ((1 << FE0) | (1 << DOR0) | (1 << UPE0))) {
-        received = SBUS_SIZE + 1; /* drop the rest of this frame: wait for the next gap */
+        dropFrame(); /* the rest of this frame: wait for the next gap */
+        dropped = 1;
         return;
     }
-    if (received >= SBUS_SIZE) {
+    if (received > SBUS_SIZE) {
+        return; /* dropped: until the next gap */
+    }
+    if (received == SBUS_SIZE) {
+        dropFrame(); /* a 26th byte before any gap: not a frame */
         return;
     }
     if (received == 0 && byte != 0x0F) {
-        return; /* not a header: skip until one */
+        dropFrame(); /* the first byte after a gap is no header: not a frame */
+        return;
     }
     frame[received++] = byte;
-    if (received == SBUS_SIZE && frame[24] == 0x00 && !readyFlag) {
-        for (uint8_t i = 0; i < SBUS_SIZE; ++i) {
-            ready[i] = frame[i];
+    if (received == SBUS_SIZE) {
+        if (frame[24] == 0x00) {
+            complete = 1; /* taken once the line stays quiet for the gap */
+        } else {
+            dropFrame();
         }
-        readyFlag = 1;
     }
+}
+
+/* A complete frame followed by its gap, from the main loop: handed to takeFrame() once two good
+   ones came in a row. Interrupts are off while it is copied. */
+static uint8_t takeCompleteFrame(void) {
+    uint8_t take = 0;
+    cli();
+    if (dropped) {
+        dropped = 0;
+        goodInARow = 0;
+    }
+    if (complete && (uint8_t)(tick - lastByteTick) >= 2) {
+        complete = 0;
+        received = SBUS_SIZE + 1; /* until the next gap */
+        if (goodInARow < 255) {
+            ++goodInARow;
+        }
+        if (goodInARow >= 2) {
+            for (uint8_t i = 0; i < SBUS_SIZE; ++i) {
+                ready[i] = frame[i];
+            }
+            take = 1;
+        }
+    }
+    sei();
+    return take;
 }
 
 ISR(TIMER0_OVF_vect) { ++tick; }
@@ -202,9 +257,8 @@ int main(void) {
     sei();
     for (;;) {
         wdt_reset();
-        if (readyFlag) {
+        if (takeCompleteFrame()) {
             takeFrame();
-            readyFlag = 0;
         }
     }
 }

@@ -2,7 +2,7 @@
 // frames (devices::encodeSbus, as the transmitter link writes them) go into its UART, the PPM
 // on OC1A (PB1) is timed from the pin's edges in CPU cycles. Pulse widths within 2 us of the
 // command, the frame period, the watchdog's neutral after silence, the failsafe frame at once,
-// garbage ignored.
+// garbage ignored (a frame only between quiet gaps, two good ones in a row before output).
 #include "devices/RcProtocols.h"
 
 #include <QtTest>
@@ -13,6 +13,7 @@
 #include "sim_elf.h"
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 using namespace prisca::devices;
@@ -206,7 +207,9 @@ class TestPpmBridge : public QObject {
         QVERIFY(bridge.runUntil(before.back().start + 22.5e-3 + 0.004));
         bridge.send(sbus(kNeutral, true));
         QVERIFY(bridge.runUntil(bridge.now() + 0.004));
-        const double received = bridge.lastByteSent() + 120e-6;
+        // Taken once the line has been quiet for its closing gap (2.05 ms at most after the
+        // last byte's 120 us).
+        const double received = bridge.lastByteSent() + 120e-6 + 2.05e-3;
         QVERIFY(bridge.runUntil(received + 0.1));
         int after = 0;
         for (const auto& f : bridge.frames()) {
@@ -230,27 +233,77 @@ class TestPpmBridge : public QObject {
     void bridge_ignoresGarbageAndBrokenFrames() {
         Bridge bridge;
         QVERIFY(bridge.runUntil(0.005));  // the UART set up
-        bridge.send(sbus(kCommand));
-        QVERIFY(bridge.runUntil(0.05));
-        // Garbage, then a frame whose footer is wrong: neither changes what goes out.
+        // The link's frames every 10 ms (each 3 ms on the wire, then a gap).
+        const auto stream = [&](double from, double to) {
+            for (double t = from; t < to - 1e-9; t += 0.010) {
+                QVERIFY(bridge.runUntil(t));
+                bridge.send(sbus(kCommand));
+            }
+        };
+        stream(0.005, 0.05);
+        // Garbage (with 0x0F headers inside the burst), then a frame whose end byte is wrong,
+        // then one with a byte too many: none changes what goes out.
         QByteArray junk;
         for (int i = 0; i < 60; ++i) {
-            junk.append(static_cast<char>((i * 37 + 11) & 0xFF));
+            junk.append(static_cast<char>(i % 7 == 3 ? 0x0F : (i * 37 + 11) & 0xFF));
         }
+        QVERIFY(bridge.runUntil(0.05));
         bridge.send(junk);
         QVERIFY(bridge.runUntil(0.070));
         QByteArray broken = sbus(kNeutral);
         broken[24] = 0x42;
         bridge.send(broken);
-        QVERIFY(bridge.runUntil(0.090));
-        bridge.send(sbus(kCommand));
-        QVERIFY(bridge.runUntil(0.16));
+        QVERIFY(bridge.runUntil(0.080));
+        bridge.send(sbus({1900, 1900, 1900, 1900, 1900, 1900, 1900, 1900}) + QByteArray(1, '\0'));
+        stream(0.090, 0.17);
+        QVERIFY(bridge.runUntil(0.18));
+        int frames = 0;
         for (const auto& f : bridge.frames()) {
-            if (f.start > 0.03) {
+            if (f.start > 0.04) {
+                ++frames;
                 QVERIFY2(within(f.widths, kCommand, 2.0),
                          qPrintable(QStringLiteral("frame at %1 s: ch1 %2 us")
                                         .arg(f.start)
                                         .arg(f.widths[0])));
+            }
+        }
+        QVERIFY(frames >= 5);
+    }
+
+    void bridge_putsOutNothingFromPureGarbage() {
+        // Bursts of random bytes of random length with random quiet gaps, as a loose wire or a
+        // wrong baud rate gives: every pulse that goes out is neutral.
+        for (unsigned seed = 1; seed <= 12; ++seed) {
+            Bridge bridge;
+            QVERIFY(bridge.runUntil(0.005));
+            std::uint32_t state = seed * 2654435761u;
+            const auto next = [&state] {
+                state ^= state << 13;
+                state ^= state >> 17;
+                state ^= state << 5;
+                return state;
+            };
+            double t = 0.005;
+            while (t < 0.4) {
+                QByteArray burst;
+                const int length = 1 + static_cast<int>(next() % 80);
+                for (int i = 0; i < length; ++i) {
+                    // Headers and end bytes more often than chance, to look like frames.
+                    const std::uint32_t r = next();
+                    burst.append(static_cast<char>(r % 5 == 0 ? 0x0F : r % 5 == 1 ? 0x00 : r >> 8));
+                }
+                bridge.send(burst);
+                t += length * 120e-6 + (200 + next() % 4800) * 1e-6;
+                QVERIFY(bridge.runUntil(t));
+            }
+            QVERIFY(bridge.runUntil(0.45));
+            for (const auto& f : bridge.frames()) {
+                QVERIFY2(within(f.widths, kNeutral, 2.0),
+                         qPrintable(QStringLiteral("seed %1: frame at %2 s: ch1 %3 us, ch2 %4 us")
+                                        .arg(seed)
+                                        .arg(f.start)
+                                        .arg(f.widths[0])
+                                        .arg(f.widths[1])));
             }
         }
     }
