@@ -55,6 +55,16 @@ void ArenaView::setScene(const sim::PlantInfo& info,
     drawing_ = entry ? entry->drawing : sim::PlantEntry::Drawing::Vehicle;
     demonstration_ = std::move(demonstration);
     desired_.clear();
+    // A demonstration that does not carry what the drawing reads (the pose's columns, the
+    // arm's two angles, one row) is not drawn.
+    if (demonstration_) {
+        const Eigen::MatrixXd& s = demonstration_->states;
+        const int needed =
+            info_.pose ? 1 + std::max({info_.pose->x, info_.pose->y, info_.pose->heading}) : 2;
+        if (s.rows() == 0 || s.cols() < needed || demonstration_->actions.rows() == 0) {
+            demonstration_.reset();
+        }
+    }
     if (demonstration_) {
         const Eigen::MatrixXd& s = demonstration_->states;
         for (Eigen::Index k = 0; k < s.rows(); ++k) {
@@ -254,12 +264,28 @@ void ArenaView::drawGrid(QPainter& painter) const {
     }
     const QPointF topLeft = toWorld(QPointF(0, 0));
     const QPointF bottomRight = toWorld(QPointF(width(), height()));
+    // At most about 60 lines each way a paint, however far out the view is (a span of
+    // thousands of steps, or values where adding a step no longer moves: a line counter, not a
+    // running sum, ends each loop).
+    constexpr int kMostLines = 60;
+    const double span = std::max(bottomRight.x() - topLeft.x(), topLeft.y() - bottomRight.y());
+    if (!std::isfinite(span) || !std::isfinite(topLeft.x()) || !std::isfinite(topLeft.y())) {
+        return;
+    }
+    while (span / step > kMostLines) {
+        step *= 10.0;
+    }
     const QFontMetrics metrics(font());
     const auto label = [&](double value) {
         return step < 1.0 ? tr("%1 cm").arg(std::round(value * 100.0))
-                          : tr("%1 m").arg(std::round(value));
+                          : tr("%1 m").arg(std::round(value), 0, 'g', 6);
     };
-    for (double x = std::ceil(topLeft.x() / step) * step; x <= bottomRight.x(); x += step) {
+    const double firstX = std::ceil(topLeft.x() / step);
+    for (int i = 0; i <= kMostLines + 1; ++i) {
+        const double x = (firstX + i) * step;
+        if (x > bottomRight.x()) {
+            break;
+        }
         const double sx = toScreen({x, 0}).x();
         const bool axis = std::abs(x) < step * 1e-6;
         painter.setPen(cosmetic(axis ? QColor(0xb0, 0xb0, 0xb0) : QColor(0xe2, 0xe2, 0xe2), 1));
@@ -267,7 +293,12 @@ void ArenaView::drawGrid(QPainter& painter) const {
         painter.setPen(QColor(0x80, 0x80, 0x80));
         painter.drawText(QPointF(sx + 3, height() - 4), label(x));
     }
-    for (double y = std::ceil(bottomRight.y() / step) * step; y <= topLeft.y(); y += step) {
+    const double firstY = std::ceil(bottomRight.y() / step);
+    for (int i = 0; i <= kMostLines + 1; ++i) {
+        const double y = (firstY + i) * step;
+        if (y > topLeft.y()) {
+            break;
+        }
         const double sy = toScreen({0, y}).y();
         const bool axis = std::abs(y) < step * 1e-6;
         painter.setPen(cosmetic(axis ? QColor(0xb0, 0xb0, 0xb0) : QColor(0xe2, 0xe2, 0xe2), 1));

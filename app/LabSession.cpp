@@ -626,7 +626,11 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
             return fail(tr("'scriptedSeed' must be a whole number from 0 to 9e15"));
         }
         scriptedSeed = static_cast<std::uint64_t>(seed);
-        demonstration = scripted(plant, scriptedStyle, scriptedSeed, plantParameters.get());
+        try {  // a plant file the scripted operator cannot drive says so
+            demonstration = scripted(plant, scriptedStyle, scriptedSeed, plantParameters.get());
+        } catch (const std::invalid_argument& e) {
+            return fail(QString::fromStdString(e.what()));
+        }
     }
 
     // The task made as every task is (checked and fitted); only then does the session change.

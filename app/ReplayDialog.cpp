@@ -48,16 +48,20 @@ ReplayDialog::ReplayDialog(rig::TrialBundle bundle, QWidget* parent)
             QJsonDocument(bundle_.header.value("calibration").toObject()).toJson(), &error)) {
         camera_->setCalibration(*calibration);
     }
+    // The bundle reader checked the plant and that the demonstration has its pose's columns.
     const core::Demonstration& demo = *bundle_.demonstration;
-    QVector<QPointF> path;
-    for (int k = 0; k < demo.length(); ++k) {
-        path << QPointF(demo.states(k, 0), demo.states(k, 1));
-    }
-    if (demo.length() > 0) {
-        camera_->setTask(path, path.back(), demo.states(demo.length() - 1, 2));
-    }
     const QString plant = bundle_.header.value("plant").toString(QStringLiteral("slidecar"));
-    arena_->setScene(sim::PlantCatalog::describe(plant), bundle_.demonstration);
+    const sim::PlantInfo info = sim::PlantCatalog::describe(plant);
+    QVector<QPointF> path;
+    if (info.pose) {
+        for (int k = 0; k < demo.length(); ++k) {
+            path << QPointF(demo.states(k, info.pose->x), demo.states(k, info.pose->y));
+        }
+        if (demo.length() > 0) {
+            camera_->setTask(path, path.back(), demo.states(demo.length() - 1, info.pose->heading));
+        }
+    }
+    arena_->setScene(info, bundle_.demonstration);
     // The fence the trial ran in (rig trials keep it in their header).
     if (bundle_.header.contains("fence")) {
         QString fenceError;

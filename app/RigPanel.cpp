@@ -11,6 +11,7 @@
 #include "app/LabSession.h"
 #include "app/RecordPanel.h"
 #include "core/DeviationModel.h"
+#include "devices/ProcessFailsafe.h"
 #include "devices/SyntheticCamera.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
@@ -971,6 +972,11 @@ void RigPanel::updateButtons() {
 }
 
 void RigPanel::showLinkStatus(const devices::LinkStatus& status) {
+    if (devices::processfailsafe::held() && !emergency_.isLatched()) {
+        // Stopped (Ctrl-Z) and continued: the link holds failsafe; the latch says so, and its
+        // reset is the operator's taking over.
+        emergency_.engage(tr("the process being stopped and continued"));
+    }
     updateButtons();
     QString text = status.connected ? tr("Link: connected, %1 frames/s, %2 sent")
                                           .arg(status.measuredRateHz, 0, 'f', 0)

@@ -5,6 +5,7 @@
 #include <QSaveFile>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -118,7 +119,7 @@ void appendCsvNumber(QByteArray& out, double value) {
     out.append(buffer, static_cast<qsizetype>(result.ptr - buffer));
 }
 
-bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError* error) {
+bool checkOutputPath(const QString& path, FileError* error) {
     const auto fail = [&](const QString& message) {
         if (error) {
             *error = FileError{path, 0, 0, message};
@@ -129,7 +130,7 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
         return fail(QStringLiteral("no file name given"));
     }
     // Only a regular file is replaced: a device (/dev/null as root), a FIFO, a socket or a folder
-    // is left alone. A replaced file keeps its permissions, read-only included.
+    // is left alone.
     struct stat existing {};
     const QByteArray native = QFile::encodeName(path);
     const bool exists = ::stat(native.constData(), &existing) == 0;
@@ -141,6 +142,30 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError
             QStringLiteral("exists and is not a regular file (a device, FIFO or socket); not "
                            "replaced"));
     }
+    const QFileInfo info(path);
+    const QString folder = info.absolutePath();
+    if (!QFileInfo(folder).isDir()) {
+        return fail(QStringLiteral("its folder %1 does not exist").arg(folder));
+    }
+    if (::access(QFile::encodeName(folder).constData(), W_OK) != 0) {
+        return fail(QStringLiteral("its folder %1 is not writable").arg(folder));
+    }
+    return true;
+}
+
+bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError* error) {
+    const auto fail = [&](const QString& message) {
+        if (error) {
+            *error = FileError{path, 0, 0, message};
+        }
+        return false;
+    };
+    if (!checkOutputPath(path, error)) {
+        return false;
+    }
+    // A replaced file keeps its permissions, read-only included.
+    struct stat existing {};
+    const bool exists = ::stat(QFile::encodeName(path).constData(), &existing) == 0;
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         return fail(QStringLiteral("cannot open for writing: %1").arg(file.errorString()));

@@ -46,5 +46,9 @@ void appendCsvNumber(QByteArray& out, double value);
 /// device, FIFO, socket or folder there is refused.
 /// On failure returns false and fills *error (if given) naming the path. Any thread.
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, FileError* error);
+/// What writeFileAtomically() would refuse before writing a byte: no name, a folder, something
+/// that is not a regular file (a device, FIFO or socket), a folder that is not there or not
+/// writable. For commands that compute for long before they write: checked first.
+bool checkOutputPath(const QString& path, FileError* error);
 
 }  // namespace prisca::core

@@ -97,22 +97,41 @@ QString CameraLens::plausibilityProblem() const {
         return QStringLiteral("the camera matrix must be [fx 0 cx; 0 fy cy; 0 0 1]");
     }
     // The model must not fold inside the image: at the corner farthest from the principal
-    // point (in ideal coordinates, found by undistorting it) the radial map still grows.
-    for (const cv::Point2d corner :
-         {cv::Point2d(0, 0), cv::Point2d(w, 0), cv::Point2d(0, imageSize.height),
-          cv::Point2d(w, imageSize.height)}) {
-        const cv::Point2d ideal = undistort(corner);
-        const double x = (ideal.x - cx) / fx, y = (ideal.y - cy) / fy;
-        if (!std::isfinite(x) || !std::isfinite(y) || !radialInField(distortion, x * x + y * y) ||
-            cv::norm(distort(ideal) - corner) > 0.05) {
-            return QStringLiteral(
-                "the distortion (k1 %1, k2 %2, k3 %3) folds the image back on itself at its "
-                "corners: a lens this model cannot describe, or a fit without views near the "
-                "corners")
-                .arg(distortion[0], 0, 'g', 3)
-                .arg(distortion[1], 0, 'g', 3)
-                .arg(distortion[4], 0, 'g', 3);
+    // point (in ideal coordinates, found by undistorting it) the map still grows and turns
+    // back into the corner.
+    const auto foldsAtACorner = [&](const CameraLens& lens) {
+        for (const cv::Point2d corner :
+             {cv::Point2d(0, 0), cv::Point2d(w, 0), cv::Point2d(0, imageSize.height),
+              cv::Point2d(w, imageSize.height)}) {
+            const cv::Point2d ideal = lens.undistort(corner);
+            const double x = (ideal.x - cx) / fx, y = (ideal.y - cy) / fy;
+            if (!std::isfinite(x) || !std::isfinite(y) ||
+                !radialInField(lens.distortion, x * x + y * y) ||
+                cv::norm(lens.distort(ideal) - corner) > 0.05) {
+                return true;
+            }
         }
+        return false;
+    };
+    if (foldsAtACorner(*this)) {
+        // Which terms fold it: the radial ones alone, or the tangential ones with them.
+        CameraLens radialOnly = *this;
+        radialOnly.distortion[2] = radialOnly.distortion[3] = 0.0;
+        if (!foldsAtACorner(radialOnly)) {
+            return QStringLiteral(
+                "the tangential distortion (p1 %1, p2 %2) folds the image back on itself at its "
+                "corners (the radial terms alone do not): a lens this model cannot describe, or "
+                "a fit without views near the corners")
+                .arg(distortion[2], 0, 'g', 3)
+                .arg(distortion[3], 0, 'g', 3);
+        }
+        return QStringLiteral(
+            "the distortion (k1 %1, k2 %2, k3 %3) folds the image back on itself at its "
+            "corners: a lens this model cannot describe, or a fit without views near the "
+            "corners")
+            .arg(distortion[0], 0, 'g', 3)
+            .arg(distortion[1], 0, 'g', 3)
+            .arg(distortion[4], 0, 'g', 3);
     }
     if (!(rmsPixels >= 0.0 && rmsPixels <= kMaxRmsPixels)) {
         return QStringLiteral("the fit's RMS reprojection error is %1 px, above the %2 px a "

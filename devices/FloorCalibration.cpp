@@ -127,22 +127,87 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
                 }
         return best < 1e-3;  // every triple (nearly) collinear
     };
-    if (degenerate(image) || degenerate(floor)) {
-        *error =
-            QStringLiteral("the calibration points lie on one line; spread them over the floor");
+    // One mistyped coordinate among good points makes the set look undetermined or folded:
+    // when all the others agree on a homography that puts this one far off, it is named.
+    const auto mistyped = [&]() -> QString {
+        if (image.size() < 5) {
+            return {};
+        }
+        int culprit = -1;
+        cv::Point2d where;
+        double othersRms = 0.0;
+        for (size_t i = 0; i < image.size(); ++i) {
+            std::vector<cv::Point2d> restImage, restFloor;
+            for (size_t j = 0; j < image.size(); ++j) {
+                if (j != i) {
+                    restImage.push_back(image[j]);
+                    restFloor.push_back(floor[j]);
+                }
+            }
+            if (degenerate(restImage) || degenerate(restFloor) ||
+                !determined(restImage, restFloor)) {
+                continue;
+            }
+            const cv::Mat h = cv::findHomography(restImage, restFloor, 0);
+            if (h.empty()) {
+                continue;
+            }
+            const cv::Matx33d m(h.ptr<double>());
+            const auto map = [&m](const cv::Point2d& p) {
+                const cv::Vec3d q = m * cv::Vec3d(p.x, p.y, 1.0);
+                return cv::Point2d(q[0] / q[2], q[1] / q[2]);
+            };
+            double sum = 0.0;
+            for (size_t j = 0; j < restImage.size(); ++j) {
+                const double r = cv::norm(map(restImage[j]) - restFloor[j]);
+                sum += r * r;
+            }
+            const double rms = std::sqrt(sum / restImage.size());
+            const cv::Point2d mapped = map(image[i]);
+            const double off = cv::norm(mapped - floor[i]);
+            if (rms < 0.02 && std::isfinite(off) && off > 0.1 && off > 20.0 * rms) {
+                if (culprit >= 0) {
+                    return {};  // two could be: say nothing that may be wrong
+                }
+                culprit = static_cast<int>(i);
+                where = mapped;
+                othersRms = rms;
+            }
+        }
+        if (culprit < 0) {
+            return {};
+        }
+        const CalibrationPoint& p = points[static_cast<size_t>(culprit)];
+        return QStringLiteral("calibration point %1 (image (%2, %3) px, floor (%4, %5) m) does not "
+                              "fit the others: they agree within %6 mm and put it at (%7, %8) m. "
+                              "A mistyped coordinate?")
+            .arg(culprit + 1)
+            .arg(p.image.x, 0, 'g', 6)
+            .arg(p.image.y, 0, 'g', 6)
+            .arg(p.floor.x, 0, 'g', 6)
+            .arg(p.floor.y, 0, 'g', 6)
+            .arg(othersRms * 1000.0, 0, 'f', 1)
+            .arg(where.x, 0, 'f', 3)
+            .arg(where.y, 0, 'f', 3);
+    };
+    const auto refuse = [&](const QString& why) {
+        const QString named = mistyped();
+        *error = named.isEmpty() ? why : named;
         return std::nullopt;
+    };
+    if (degenerate(image) || degenerate(floor)) {
+        return refuse(
+            QStringLiteral("the calibration points lie on one line; spread them over the floor"));
     }
     if (!determined(image, floor)) {
-        *error = QStringLiteral(
+        return refuse(QStringLiteral(
             "the calibration points do not determine the homography: it needs four of them "
             "with no three on one line (on the floor and in the image); spread them over the "
-            "floor");
-        return std::nullopt;
+            "floor"));
     }
     const cv::Mat h = cv::findHomography(image, floor, 0);
     if (h.empty()) {
-        *error = QStringLiteral("no homography fits these points");
-        return std::nullopt;
+        return refuse(QStringLiteral("no homography fits these points"));
     }
     FloorCalibration c;
     c.imageToFloor = cv::Matx33d(h.ptr<double>());
@@ -154,8 +219,7 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
     }
     c.rmsMetres = std::sqrt(sum / points.size());
     if (const QString problem = c.homographyProblem(); !problem.isEmpty()) {
-        *error = QStringLiteral("the homography these points give %1").arg(problem);
-        return std::nullopt;
+        return refuse(QStringLiteral("the homography these points give %1").arg(problem));
     }
     return c;
 }

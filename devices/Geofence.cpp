@@ -106,7 +106,12 @@ QString Geofence::problem() const {
 std::optional<std::vector<cv::Point2d>> Geofence::parsePolygon(const QString& text,
                                                                QString* error) {
     std::vector<cv::Point2d> points;
-    const QStringList corners = text.split(QLatin1Char(';'), Qt::SkipEmptyParts);
+    QStringList corners;
+    for (const QString& corner : text.split(QLatin1Char(';'))) {
+        if (!corner.trimmed().isEmpty()) {
+            corners << corner;
+        }
+    }
     for (int i = 0; i < corners.size(); ++i) {
         const QStringList xy = corners[i].split(QLatin1Char(','));
         bool okX = false, okY = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace prisca::devices {
@@ -75,8 +76,10 @@ Eigen::VectorXd LatencyProbe::onFrame(std::int64_t frameNs, const std::optional<
         moved += d >= s_.onsetFrom && d <= s_.fitUpTo;
     }
     if (moved < 2) {
-        failure_ = "the car did not answer a throttle step within " +
-                   std::to_string(s_.giveUpAfter) + " s (is the link connected, the car on?)";
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", s_.giveUpAfter);
+        failure_ = std::string("the car did not answer a throttle step within ") + seconds +
+                   " s (is the link connected, the car on?)";
         return neutral();
     }
     double bestT0 = 0.0, bestResidual = std::numeric_limits<double>::infinity();

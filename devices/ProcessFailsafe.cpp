@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <signal.h>
+#include <termios.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -29,6 +30,7 @@ struct PortSlot {
 PortSlot ports[kMaxPorts];
 
 std::atomic<bool> endingFlag{false};
+std::atomic<bool> heldFlag{false};  // stopped and continued: failsafe until someone takes over
 std::atomic<bool> graceful{false};
 std::atomic<int> firstStop{0};
 std::atomic<int> endings{0};
@@ -37,8 +39,22 @@ char programName[64] = "prisca";
 
 static_assert(std::atomic<int>::is_always_lock_free && std::atomic<bool>::is_always_lock_free);
 
-constexpr int kFatalSignals[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL};
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
+// Every signal whose default action ends or stops the process, by what it means:
+// a crash; a request to end (every other terminating signal, a timer's or a limit's included:
+// none of them is ours, so each ends the process); job control, which stops it.
+constexpr int kFatalSignals[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS, SIGTRAP};
+// (prisca-cli ignores SIGXFSZ once these are installed, so that a write past a file-size limit
+// fails with an error naming the file.)
+constexpr int kStopSignals[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT, SIGPIPE,   SIGUSR1,
+                                SIGUSR2, SIGALRM,   SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ,
+#ifdef SIGPWR
+                                SIGPWR,
+#endif
+#ifdef SIGSTKFLT
+                                SIGSTKFLT,
+#endif
+                                SIGIO};
+constexpr int kPauseSignals[] = {SIGTSTP, SIGTTIN, SIGTTOU};
 
 bool isStopSignal(int signal) {
     return std::find(std::begin(kStopSignals), std::end(kStopSignals), signal) !=
@@ -94,11 +110,23 @@ void writeAll(int fd, const char* data, int length) {
     }
 }
 
+bool portsRegistered() {
+    for (const PortSlot& slot : ports) {
+        if (slot.fd.load() >= 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
 int writeFrames() {
     int written = 0;
     for (PortSlot& slot : ports) {
         const int fd = slot.fd.load();
         if (fd >= 0) {
+            // Failsafe replaces what is still queued for the line: driving frames waiting in
+            // the kernel's buffer would reach the receiver first (tcflush is async-signal safe).
+            tcflush(fd, TCOFLUSH);
             writeAll(fd, slot.frame, slot.length.load());
             ++written;
         }
@@ -127,13 +155,57 @@ void endNow(int signal) {
     raise(signal);
 }
 
+// Job control (Ctrl-Z, a background read or write): failsafe, then the stop the signal asks for;
+// once continued, failsafe is held until the operator or the next trial takes over (held()).
+void pauseNow(int signal) {
+    heldFlag.store(true);
+    const int written = sendNow();
+    Line line;
+    line.add(programName).add(": stopped by ").add(signalName(signal));
+    if (written > 0) {
+        line.add("; failsafe sent on ").add(written).add(written == 1 ? " link" : " links");
+    }
+    line.writeToStderr();
+    // The stop the signal asks for, now, inside this handler; raise() returns once continued.
+    // SIGSTOP, not the signal's own default action: that one the kernel discards in a process
+    // group without a controlling shell (a service, a test runner's child), and the process
+    // would say "stopped" and go on.
+    raise(SIGSTOP);
+}
+
 extern "C" void onSignal(int signal) {
     const int savedErrno = errno;
+    if (signal == SIGCONT) {
+        // Continued after any stop, SIGSTOP's too (which no handler sees): the car was left
+        // without frames, and the command it last had is out of date. Failsafe until taken over.
+        if (portsRegistered()) {
+            heldFlag.store(true);
+            Line line;
+            line.add(programName).add(": continued; the link holds failsafe");
+            line.writeToStderr();
+        }
+        errno = savedErrno;
+        return;
+    }
+    if (std::find(std::begin(kPauseSignals), std::end(kPauseSignals), signal) !=
+        std::end(kPauseSignals)) {
+        pauseNow(signal);
+        errno = savedErrno;
+        return;
+    }
     if (isStopSignal(signal) && graceful.load()) {
         int none = 0;
-        if (firstStop.compare_exchange_strong(none, signal) || signal == SIGPIPE) {
+        if (firstStop.compare_exchange_strong(none, signal)) {
+            // Failsafe on the wire now, not once the command has noticed: the links send only
+            // failsafe from here, and what they had queued is flushed.
+            endingFlag.store(true);
+            sendNow();
             errno = savedErrno;
-            return;  // the command polls stopSignal() and ends in failsafe itself
+            return;  // the command polls stopSignal() and ends its links in failsafe itself
+        }
+        if (signal == SIGPIPE) {
+            errno = savedErrno;
+            return;
         }
     }
     endNow(signal);
@@ -203,6 +275,14 @@ bool ending() noexcept {
     return endingFlag.load();
 }
 
+bool held() noexcept {
+    return heldFlag.load();
+}
+
+void releaseHold() noexcept {
+    heldFlag.store(false);
+}
+
 void noteFailsafeEnding() noexcept {
     endings.fetch_add(1);
 }
@@ -222,6 +302,11 @@ void install(const char* program) {
     for (int signal : kStopSignals) {
         sigaction(signal, &action, nullptr);
     }
+    for (int signal : kPauseSignals) {
+        sigaction(signal, &action, nullptr);
+    }
+    action.sa_flags = SA_RESTART;  // a continue interrupts no system call
+    sigaction(SIGCONT, &action, nullptr);
     std::set_terminate(onTerminate);
 }
 
@@ -255,6 +340,42 @@ const char* signalName(int signal) noexcept {
             return "SIGFPE";
         case SIGILL:
             return "SIGILL";
+        case SIGSYS:
+            return "SIGSYS";
+        case SIGTRAP:
+            return "SIGTRAP";
+        case SIGUSR1:
+            return "SIGUSR1";
+        case SIGUSR2:
+            return "SIGUSR2";
+        case SIGALRM:
+            return "SIGALRM";
+        case SIGVTALRM:
+            return "SIGVTALRM";
+        case SIGPROF:
+            return "SIGPROF";
+        case SIGXCPU:
+            return "SIGXCPU (the CPU-time limit)";
+#ifdef SIGPWR
+        case SIGPWR:
+            return "SIGPWR";
+#endif
+#ifdef SIGSTKFLT
+        case SIGSTKFLT:
+            return "SIGSTKFLT";
+#endif
+        case SIGXFSZ:
+            return "SIGXFSZ";
+        case SIGIO:
+            return "SIGIO";
+        case SIGTSTP:
+            return "SIGTSTP";
+        case SIGTTIN:
+            return "SIGTTIN";
+        case SIGTTOU:
+            return "SIGTTOU";
+        case SIGCONT:
+            return "SIGCONT";
         default:
             return "a signal";
     }

@@ -26,21 +26,32 @@ void unregisterPort(int slot);
 int sendNow() noexcept;
 /// True once the process is ending: links send failsafe only from then on.
 bool ending() noexcept;
+/// True once the process was stopped (SIGTSTP, SIGTTIN, SIGTTOU, or SIGSTOP, seen by its
+/// SIGCONT) and continued with a link open: links send failsafe, latched like E-STOP, until
+/// releaseHold() (the operator's E-STOP reset). Any thread.
+bool held() noexcept;
+void releaseHold() noexcept;
 /// Links that closed with a failsafe frame as their last (for the message on exit).
 void noteFailsafeEnding() noexcept;
 int failsafeEndings() noexcept;
 
-/// Installs the handlers for the whole process (call first thing in main).
-///  - SIGABRT (a failed assertion, std::terminate), SIGSEGV, SIGBUS, SIGFPE, SIGILL: failsafe
-///    on every registered port, one line on stderr, then the signal's default action.
-///  - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE: the same, until acceptGracefulStop().
+/// Installs the handlers for the whole process (call first thing in main), for every signal
+/// whose default action ends or stops it:
+///  - SIGABRT (a failed assertion, std::terminate), SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS,
+///    SIGTRAP: failsafe on every registered port, one line on stderr, then the default action.
+///  - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE and every other terminating signal (SIGUSR1,
+///    SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPWR, SIGSTKFLT, SIGIO): the
+///    same, until acceptGracefulStop(). (prisca-cli then ignores SIGXFSZ: a write past a
+///    file-size limit fails with an error naming the file.)
+///  - SIGTSTP, SIGTTIN, SIGTTOU: failsafe, one line, then the stop; once continued, held().
+///  - SIGCONT with a link open: held() (a SIGSTOP left the car without frames).
 ///  - std::terminate (an uncaught exception): failsafe, the exception's message, abort.
+/// Failsafe replaces what is still queued for a port: its output queue is flushed first.
 /// @param program the name stderr lines start with (copied)
 void install(const char* program);
-/// From now on SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE only ask the caller to stop (it polls
-/// stopSignal() and ends its links in failsafe itself); a second SIGINT, SIGTERM, SIGHUP or
-/// SIGQUIT after the first ends the process at once, in failsafe. Repeated SIGPIPEs (every write
-/// to a closed pipe) only keep the request.
+/// From now on the terminating signals only ask the caller to stop (it polls stopSignal() and
+/// ends its links in failsafe itself); a second one after the first ends the process at once,
+/// in failsafe. Repeated SIGPIPEs (every write to a closed pipe) only keep the request.
 void acceptGracefulStop();
 /// The first stopping signal received since acceptGracefulStop(), 0 for none. Any thread.
 int stopSignal() noexcept;

@@ -51,6 +51,35 @@ SerialFormat defaultSerialFormat(RcProtocol protocol) {
     return {};
 }
 
+int frameBytes(RcProtocol protocol) {
+    switch (protocol) {
+        case RcProtocol::Crsf:
+        case RcProtocol::Multiprotocol:
+            return 26;
+        case RcProtocol::Sbus:
+        case RcProtocol::PpmBridge:
+            return 25;
+    }
+    return 26;
+}
+
+double lineFrameCapacity(RcProtocol protocol, int baud) {
+    const SerialFormat format = defaultSerialFormat(protocol);
+    const int bitsPerByte = 1 + 8 + (format.evenParity ? 1 : 0) + (format.twoStopBits ? 2 : 1);
+    const int rate = baud > 0 ? baud : format.baud;
+    return static_cast<double>(rate) / (bitsPerByte * frameBytes(protocol));
+}
+
+double maxFrameRate(RcProtocol protocol, int baud) {
+    const double capacity = lineFrameCapacity(protocol, baud);
+    if (sbusFraming(protocol)) {
+        // SBUS has no length or checksum: receivers (and the bridge) find a frame by the quiet
+        // line before it, so each frame is followed by a gap of kSbusGap at least.
+        return 1.0 / (1.0 / capacity + kSbusGapSeconds);
+    }
+    return 0.8 * capacity;
+}
+
 std::uint8_t crc8DvbS2(const std::uint8_t* data, std::size_t size) {
     std::uint8_t crc = 0;
     for (std::size_t i = 0; i < size; ++i) {

@@ -36,6 +36,19 @@ struct SerialFormat {
 };
 SerialFormat defaultSerialFormat(RcProtocol protocol);
 
+/// Bytes in one frame: CRSF 26, SBUS and the PPM bridge 25, Multiprotocol 26.
+int frameBytes(RcProtocol protocol);
+/// Frames per second the line carries at a baud rate (0: the protocol's), each byte a start bit,
+/// 8 data bits, the parity bit if any and the stop bits: SBUS at 100000 baud 8E2 about 333.
+double lineFrameCapacity(RcProtocol protocol, int baud);
+/// The quiet line an SBUS frame is followed by at least [s]: the bridge's firmware takes 2 ms
+/// of silence (two of its 1.024 ms ticks at most) as a frame boundary; a third more for jitter.
+constexpr double kSbusGapSeconds = 0.003;
+/// The most frames per second a link may send, so that frames never queue on the wire (a
+/// failsafe then goes out next, not behind a queue of driving frames): four fifths of the line's
+/// capacity; for SBUS framing each frame and its gap (SBUS at 100000 baud: 166).
+double maxFrameRate(RcProtocol protocol, int baud);
+
 /// 16 channels as pulse widths [us] (988 = -100 %, 1500 = centre, 2012 = +100 %).
 using ChannelPulses = std::array<double, 16>;
 /// 16 channels as the protocol's 11-bit values.

@@ -5,6 +5,7 @@
 #include "devices/ThreadPriority.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <QLoggingCategory>
 #include <QMetaObject>
@@ -13,6 +14,8 @@
 
 #include <chrono>
 #include <cmath>
+
+#include <unistd.h>
 
 Q_LOGGING_CATEGORY(lcLink, "prisca.devices.link")
 
@@ -105,6 +108,7 @@ void TransmitterLink::emergencyStop() {
 }
 
 void TransmitterLink::resetEmergencyStop() {
+    processfailsafe::releaseHold();  // the operator takes over after a stop and continue
     worker_->fault.store(false);
     worker_->fenceBreached.store(false);
     worker_->emergency.store(false);
@@ -124,7 +128,7 @@ void TransmitterLink::clearFault() {
 }
 
 bool TransmitterLink::emergencyLatched() const {
-    return worker_->emergency.load();
+    return worker_->emergency.load() || processfailsafe::held();
 }
 
 void TransmitterLink::reportGeofenceBreach() {
@@ -152,10 +156,28 @@ void TransmitterLinkWorker::setCommand(const ChannelPulses& pulses) {
 }
 
 void TransmitterLinkWorker::sendNow() {
-    if (running_ && timer_) {
-        tick();
-        timer_->start();  // the next fixed-rate frame a full period after this one
+    if (!running_ || !timer_) {
+        return;
     }
+    // Never sooner after the last frame than the line allows (maxFrameRate): frames would queue
+    // behind each other, and SBUS receivers (the bridge too) find frames by the gap between.
+    const double spacing = 1.0 / maxFrameRate(settings_.protocol, settings_.baud);
+    const double since =
+        lastFrameClock_.isValid() ? lastFrameClock_.nsecsElapsed() * 1e-9 : spacing;
+    if (since < spacing) {
+        if (!deferredSend_) {
+            deferredSend_ = new QTimer(this);
+            deferredSend_->setSingleShot(true);
+            deferredSend_->setTimerType(Qt::PreciseTimer);
+            connect(deferredSend_, &QTimer::timeout, this, &TransmitterLinkWorker::sendNow);
+        }
+        if (!deferredSend_->isActive()) {
+            deferredSend_->start(static_cast<int>(std::ceil((spacing - since) * 1000.0)));
+        }
+        return;
+    }
+    tick();
+    timer_->start();  // the next fixed-rate frame a full period after this one
 }
 
 void TransmitterLinkWorker::start(const LinkSettings& settings) {
@@ -189,7 +211,9 @@ void TransmitterLinkWorker::start(const LinkSettings& settings) {
     statusClock_.start();
     rateClock_.start();
     framesAtRateMark_ = framesSent.load();
-    timer_->start(std::max(1, static_cast<int>(std::lround(1000.0 / settings_.rateHz))));
+    // Never faster than the line carries (LinkCommand refuses more; others get the limit).
+    const double rate = std::min(settings_.rateHz, maxFrameRate(settings_.protocol, settings_.baud));
+    timer_->start(std::max(1, static_cast<int>(std::lround(1000.0 / rate))));
     emit statusChanged(status_);
 }
 
@@ -231,7 +255,18 @@ bool TransmitterLinkWorker::openPort() {
     port_->setPortName(path);
     if (!port_->open(QIODevice::ReadWrite)) {
         status_.connected = false;
-        status_.lastError = QStringLiteral("%1: %2").arg(path, port_->errorString());
+        QString why = port_->errorString();
+        if (port_->error() == QSerialPort::PermissionError) {
+            // Qt says "permission" for a port another program holds (its lock) as well as for
+            // one this user may not open: which it is, in the operator's words.
+            const QByteArray native = QFile::encodeName(path);
+            why = ::access(native.constData(), R_OK | W_OK) == 0
+                      ? QStringLiteral("in use by another program (a second link, a terminal "
+                                       "program): close it first")
+                      : QStringLiteral("this user may not open it (add the user to the group "
+                                       "that owns it, usually dialout, and log in again)");
+        }
+        status_.lastError = QStringLiteral("%1: %2").arg(path, why);
         return false;
     }
     const SerialFormat format = defaultSerialFormat(settings_.protocol);
@@ -277,9 +312,13 @@ void TransmitterLinkWorker::stop() {
     if (timer_) {
         timer_->stop();
     }
+    if (deferredSend_) {
+        deferredSend_->stop();
+    }
     if (port_ && port_->isOpen()) {
         // The last frame out is failsafe, counted like any other once the device has taken it.
         const QByteArray frame = encode(settings_.failsafe, true);
+        port_->clear(QSerialPort::Output);  // nothing queued goes out after it
         if (port_->write(frame) == frame.size()) {
             port_->flush();
             if (port_->bytesToWrite() == 0 || port_->waitForBytesWritten(50)) {
@@ -343,7 +382,7 @@ void TransmitterLinkWorker::tick() {
             reason = FailsafeReason::Stale;
         }
     }
-    if (emergency.load() || processfailsafe::ending()) {
+    if (emergency.load() || processfailsafe::ending() || processfailsafe::held()) {
         reason = FailsafeReason::EmergencyStop;
     } else if (fault.load()) {
         reason = fenceBreached.load() ? FailsafeReason::Geofence : FailsafeReason::ControllerFault;
@@ -351,6 +390,9 @@ void TransmitterLinkWorker::tick() {
         reason = FailsafeReason::PoseLost;
     }
     const bool failsafe = reason != FailsafeReason::None;
+    if (failsafe && status_.failsafe == FailsafeReason::None) {
+        port_->clear(QSerialPort::Output);  // failsafe replaces commands still queued, never after
+    }
     const QByteArray frame = encode(failsafe ? settings_.failsafe : pulses, failsafe);
     if (port_->write(frame) != frame.size()) {
         closePort(port_->errorString());
@@ -368,13 +410,14 @@ void TransmitterLinkWorker::tick() {
         return;  // the device is not taking bytes as fast as they come: not sent (yet)
     }
     framesSent.fetch_add(1);
+    lastFrameClock_.restart();
     if (!failsafe) {
         lastCommandNs.store(commandNs);
         lastWriteNs.store(steadyNs());
     }
     status_.framesSent = framesSent.load();
     status_.failsafe = reason;
-    status_.emergencyLatched = emergency.load() || fault.load();
+    status_.emergencyLatched = emergency.load() || fault.load() || processfailsafe::held();
     if (rateClock_.elapsed() >= 1000) {
         status_.measuredRateHz =
             (framesSent.load() - framesAtRateMark_) * 1000.0 / rateClock_.restart();

@@ -154,6 +154,8 @@ class TransmitterLinkWorker : public QObject {
     LinkSettings settings_;
     QSerialPort* port_ = nullptr;
     QTimer* timer_ = nullptr;
+    QTimer* deferredSend_ = nullptr;  ///< a command's frame that came too soon after the last
+    QElapsedTimer lastFrameClock_;    ///< since the last frame went out (invalid: none yet)
     QElapsedTimer reconnectClock_;
     QElapsedTimer statusClock_;
     QElapsedTimer rateClock_;

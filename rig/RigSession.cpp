@@ -3,12 +3,14 @@
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
 #include "devices/LedTracker.h"
+#include "devices/ProcessFailsafe.h"
 #include "devices/RigLoop.h"
 #include "devices/ThreadHandOff.h"
 #include "rigsim/VirtualCar.h"
 #include "sim/DemonstrationRecorder.h"
 #include "sim/EpisodeRunner.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -421,9 +423,10 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
             header.insert("loopLatencyMs", *l.loopLatency * 1000.0);
         }
         const QString folder = QDir(l.bundleParent).filePath(
-            QStringLiteral("trial-%1-%2")
+            QStringLiteral("trial-%1-%2-%3")
                 .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")))
-                .arg(l.trials + 1));
+                .arg(l.trials + 1)
+                .arg(QCoreApplication::applicationPid()));  // two rigs on one folder never collide
         onWorker([this, folder, header, demo = setup.task().demonstration] {
             bundle_ = std::make_unique<TrialBundleWriter>();
             QString error;
@@ -608,6 +611,11 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
             const double elapsed = (frame.steadyNs - l.trialStartNs) * 1e-9;
             if (elapsed >= l.trialSeconds || step.fault) {
                 finished = finishTrialLocked(false, step.fault, step.stopReason);
+            } else if (devices::processfailsafe::held()) {
+                // The process was stopped and continued: the link holds failsafe, and a trial
+                // that lost its time cannot go on (the next one needs E-STOP reset first).
+                finished = finishTrialLocked(
+                    true, true, tr("the process was stopped and continued: failsafe held"));
             }
         } else {
             pose = l.tracker.track(frame.image, l.calibration).pose;

@@ -209,8 +209,8 @@ class RigSession : public QObject {
 
     // Trial bundles.
     /// Every trial from now on is saved as a bundle (rig::TrialBundleWriter) in a new folder
-    /// under `parent` (trial-<date>-<time>-<n>), with the camera's frames at `videoFps` (0: no
-    /// video); empty `parent`: no bundles. The folder of the newest is bundleSaved()'s.
+    /// under `parent` (trial-<date>-<time>-<n>-<process id>), with the camera's frames at
+    /// `videoFps` (0: no video); empty `parent`: no bundles. The folder of the newest is bundleSaved()'s.
     void setBundles(const QString& parent, double videoFps);
     QString bundleParent() const;
 

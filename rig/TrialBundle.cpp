@@ -2,6 +2,7 @@
 
 #include "core/DemonstrationCsv.h"
 #include "core/FileIo.h"
+#include "sim/PlantCatalog.h"
 
 #include <QDir>
 #include <QFile>
@@ -45,9 +46,28 @@ bool TrialBundleWriter::open(const QString& folder, const QJsonObject& header,
                      .arg(folder);
         return false;
     }
+    const bool created = !dir.exists();
+    // A bundle that cannot be written leaves nothing behind (an empty folder reads as a writer
+    // that stopped): what this call made goes again.
+    const auto undo = [&] {
+        if (samples_) {
+            std::fclose(samples_);
+            samples_ = nullptr;
+        }
+        if (created) {
+            QDir(folder).removeRecursively();
+        } else {
+            for (const char* name : {"bundle.json", "demonstration.csv", "samples.csv"}) {
+                QFile::remove(dir.filePath(QLatin1String(name)));
+            }
+            dir.rmdir(QStringLiteral("frames"));
+        }
+        folder_.clear();
+        return false;
+    };
     if (!QDir().mkpath(folder + QStringLiteral("/frames"))) {
         *error = QStringLiteral("%1: cannot create the folder").arg(folder);
-        return false;
+        return undo();
     }
     folder_ = folder;
     header_ = header;
@@ -59,17 +79,21 @@ bool TrialBundleWriter::open(const QString& folder, const QJsonObject& header,
         !core::writeDemonstrationCsv(demonstration, dir.filePath("demonstration.csv"),
                                      &fileError)) {
         *error = fileError.toString();
-        return false;
+        return undo();
     }
     samples_ = std::fopen(QFile::encodeName(dir.filePath("samples.csv")).constData(), "wb");
     if (!samples_) {
         *error = QStringLiteral("%1: cannot write samples.csv").arg(folder);
-        return false;
+        return undo();
     }
     pending_ =
         "# prisca-trial-samples 1\n# t [s]; frame (-1: simulation); found; x, y [m], psi "
         "[rad]; s0.. the controller's observation; u0.. its command; failsafe\n";
-    return flush();
+    if (!flush()) {
+        *error = QStringLiteral("%1: cannot write samples.csv (the disk full?)").arg(folder);
+        return undo();
+    }
+    return true;
 }
 
 void TrialBundleWriter::append(const BundleSample& s) {
@@ -162,6 +186,14 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         *error = QStringLiteral("%1: not a trial bundle (no such folder)").arg(folder);
         return std::nullopt;
     }
+    // A bundle's files are its own: a link could lead anywhere (and an error would quote it).
+    for (const char* name : {"bundle.json", "demonstration.csv", "samples.csv", "frames"}) {
+        if (QFileInfo(dir.filePath(QLatin1String(name))).isSymLink()) {
+            *error = QStringLiteral("%1/%2: a symbolic link; a trial bundle holds its own files")
+                         .arg(folder, QLatin1String(name));
+            return std::nullopt;
+        }
+    }
     core::FileError fileError;
     const auto json = core::readFileBounded(dir.filePath("bundle.json"), 16 << 20, &fileError);
     if (!json) {
@@ -176,9 +208,30 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         return std::nullopt;
     }
     b.header = doc.object();
+    // The plant it ran on, which says how to read the rest (older bundles: the slide-car).
+    const QString plant = b.header.value("plant").toString(QStringLiteral("slidecar"));
+    const sim::PlantEntry* entry = sim::PlantCatalog::find(plant);
+    if (!entry) {
+        *error = QStringLiteral("%1/bundle.json: plant '%2' is not one this build knows (%3)")
+                     .arg(folder, plant, sim::PlantCatalog::names().join(QStringLiteral(", ")));
+        return std::nullopt;
+    }
+    const sim::PlantInfo info = entry->describe();
     auto demo = core::readDemonstrationCsv(dir.filePath("demonstration.csv"), &fileError);
     if (!demo) {
         *error = fileError.toString();
+        return std::nullopt;
+    }
+    const int needed =
+        info.pose ? 1 + std::max({info.pose->x, info.pose->y, info.pose->heading}) : 1;
+    if (demo->length() == 0 || demo->states.cols() < needed) {
+        *error = QStringLiteral("%1/demonstration.csv: %2 samples of %3 state columns; a %4 "
+                                "trial's demonstration has samples of at least %5")
+                     .arg(folder)
+                     .arg(demo->length())
+                     .arg(demo->states.cols())
+                     .arg(plant)
+                     .arg(needed);
         return std::nullopt;
     }
     b.demonstration = std::make_shared<core::Demonstration>(std::move(*demo));
@@ -203,12 +256,37 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
             return std::nullopt;
         }
         BundleSample sample;
-        sample.t = f[0].toDouble();
+        const auto bad = [&](const QString& why) {
+            *error = QStringLiteral("%1/samples.csv:%2: %3").arg(folder).arg(i + 1).arg(why);
+            return std::nullopt;
+        };
+        bool okT = false;
+        sample.t = f[0].toDouble(&okT);
+        // A trial's time: within a day of its start (a 300-digit or non-finite time is no time).
+        if (!okT || !std::isfinite(sample.t) || std::abs(sample.t) > 86400.0) {
+            return bad(QStringLiteral("the time '%1' is not a trial's time in seconds")
+                           .arg(QString::fromLatin1(f[0].left(40))));
+        }
         sample.frame = f[1].toLongLong();
         sample.found = f[2] == "1";
-        sample.x = f[3].toDouble();
-        sample.y = f[4].toDouble();
-        sample.psi = f[5].toDouble();
+        if (sample.found) {
+            // A pose found is a pose on the floor: numbers, within 10 km of the origin.
+            bool okX = false, okY = false, okPsi = false;
+            sample.x = f[3].toDouble(&okX);
+            sample.y = f[4].toDouble(&okY);
+            sample.psi = f[5].toDouble(&okPsi);
+            if (!okX || !okY || !okPsi || !std::isfinite(sample.x) || !std::isfinite(sample.y) ||
+                !std::isfinite(sample.psi) || std::abs(sample.x) > 1e4 ||
+                std::abs(sample.y) > 1e4) {
+                return bad(QStringLiteral("a found pose (%1, %2, %3) is not a floor pose (x, y "
+                                          "within 10 km, a finite heading)")
+                               .arg(QString::fromLatin1(f[3].left(24)),
+                                    QString::fromLatin1(f[4].left(24)),
+                                    QString::fromLatin1(f[5].left(24))));
+            }
+        } else {
+            sample.x = sample.y = sample.psi = NAN;
+        }
         for (int k = s + 1; k < u; ++k) {
             sample.state.push_back(f[k].isEmpty() ? NAN : f[k].toDouble());
         }
@@ -218,8 +296,9 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         sample.failsafe = f.last() == "1";
         b.samples.push_back(std::move(sample));
     }
-    for (const QString& name :
-         QDir(dir.filePath("frames")).entryList({"*.jpg"}, QDir::Files, QDir::Name)) {
+    for (const QString& name : QDir(dir.filePath("frames"))
+                                   .entryList({"*.jpg"}, QDir::Files | QDir::NoSymLinks,
+                                              QDir::Name)) {
         b.frames.emplace_back(QFileInfo(name).baseName().toLongLong(),
                               dir.filePath("frames/" + name));
     }
@@ -239,12 +318,14 @@ bool writeSimulationBundle(const QString& folder, QJsonObject header, const sim:
     for (const sim::StepRecord& step : result.steps) {
         BundleSample sample;
         sample.t = step.time;
-        sample.found = info.pose.has_value();
         if (info.pose) {
             sample.x = step.state[info.pose->x];
             sample.y = step.state[info.pose->y];
             sample.psi = step.state[info.pose->heading];
         }
+        // A pose that left the numbers (a diverged trial) is no pose found.
+        sample.found = info.pose.has_value() && std::isfinite(sample.x) &&
+                       std::isfinite(sample.y) && std::isfinite(sample.psi);
         sample.state.assign(step.observation.data(),
                             step.observation.data() + step.observation.size());
         sample.action.assign(step.action.data(), step.action.data() + step.action.size());
@@ -253,10 +334,10 @@ bool writeSimulationBundle(const QString& folder, QJsonObject header, const sim:
     if (info.pose && result.finalState.size() > 2) {  // where the trial ended
         BundleSample end;
         end.t = summary.duration;
-        end.found = true;
         end.x = result.finalState[info.pose->x];
         end.y = result.finalState[info.pose->y];
         end.psi = result.finalState[info.pose->heading];
+        end.found = std::isfinite(end.x) && std::isfinite(end.y) && std::isfinite(end.psi);
         writer.append(end);
     }
     QJsonObject r{{"failsafe", result.lostTrack},

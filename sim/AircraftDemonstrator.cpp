@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <random>
 
 namespace prisca::sim {
@@ -72,6 +74,24 @@ core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Scrip
     DemonstrationRecorder recorder(aircraft.info(), dt);
 
     const double trim = PlanarAircraft::trimThrottle(parameters, script.cruiseSpeed);
+    // A pilot flies only an aircraft that can hold the script's speed: say which part cannot.
+    if (!(trim <= 1.0)) {
+        char text[320];
+        if (parameters.propellerPitchSpeed <= script.cruiseSpeed) {
+            std::snprintf(text, sizeof text,
+                          "this aircraft cannot fly the demonstration: its propeller gives no "
+                          "thrust at %g m/s and above (propellerPitchSpeed), and the pilot "
+                          "cruises at %g m/s",
+                          parameters.propellerPitchSpeed, script.cruiseSpeed);
+        } else {
+            std::snprintf(text, sizeof text,
+                          "this aircraft cannot fly the demonstration: full throttle does not "
+                          "hold the pilot's cruise speed of %g m/s (it would take %.2g times "
+                          "the thrust: staticThrust, propellerPitchSpeed, or the drag)",
+                          script.cruiseSpeed, trim);
+        }
+        throw std::invalid_argument(text);
+    }
     const double startHeading = state[2];
     const double hand = 1.0 - std::exp(-dt / script.handLag);
     Phase phase = turns > 0 ? Phase::Straight : Phase::FinalStraight;

@@ -47,6 +47,22 @@ PathDistance::PathDistance(std::vector<double> xs, std::vector<double> ys)
     if (xs_.size() != ys_.size()) {
         throw std::invalid_argument("PathDistance: as many x as y coordinates needed");
     }
+    // A vertex equal to the one before adds a segment of no length, whose distance is that
+    // vertex's, which the next segment (or the last vertex) gives again: dropped, the minimum is
+    // the same to the bit. Kept, a path that stands still for thousands of samples (a take's
+    // still tail) had thousands of boxes at exactly the same distance from a query, none of
+    // which could be skipped: scoring turned quadratic.
+    size_t kept = 0;
+    for (size_t j = 0; j < xs_.size(); ++j) {
+        if (kept > 0 && xs_[j] == xs_[kept - 1] && ys_[j] == ys_[kept - 1]) {
+            continue;
+        }
+        xs_[kept] = xs_[j];
+        ys_[kept] = ys_[j];
+        ++kept;
+    }
+    xs_.resize(kept);
+    ys_.resize(kept);
     if (xs_.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
         throw std::invalid_argument("PathDistance: too many vertices");
     }

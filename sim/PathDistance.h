@@ -43,7 +43,7 @@ class PathDistance {
 
     /// Distance from (x, y) to the polyline [the vertices' unit].
     double distance(double x, double y) const;
-    /// Vertices of the polyline.
+    /// Vertices of the polyline, each repeated in a row counted once.
     int size() const { return static_cast<int>(xs_.size()); }
 
   private:

@@ -431,10 +431,23 @@ std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
         return fail(QStringLiteral("\"format\" is \"%1\", not \"%2\"")
                         .arg(root.value(QLatin1String("format")).toString(), kFormat));
     }
-    if (root.contains(QLatin1String("version")) &&
-        root.value(QLatin1String("version")).toInt(-1) != 1) {
-        return fail(QStringLiteral("version %1 is not one this build reads (1)")
-                        .arg(root.value(QLatin1String("version")).toVariant().toString()));
+    if (root.contains(QLatin1String("version"))) {
+        const QJsonValue version = root.value(QLatin1String("version"));
+        if (!version.isDouble()) {
+            // "1" is text: the version is the number 1.
+            return fail(QStringLiteral("\"version\" must be the number 1, not %1")
+                            .arg(version.isString()
+                                     ? QStringLiteral("the text \"%1\"").arg(version.toString())
+                                     : QStringLiteral("a JSON %1")
+                                           .arg(version.isBool() ? QStringLiteral("true or false")
+                                                : version.isArray() ? QStringLiteral("list")
+                                                : version.isObject() ? QStringLiteral("object")
+                                                                     : QStringLiteral("null"))));
+        }
+        if (version.toDouble() != 1.0) {
+            return fail(QStringLiteral("version %1 is not one this build reads (it reads version 1)")
+                            .arg(version.toDouble()));
+        }
     }
     const QJsonValue plantValue = root.value(QLatin1String("plant"));
     if (!plantValue.isString()) {

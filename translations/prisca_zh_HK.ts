@@ -599,27 +599,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="241"/>
+        <location filename="../app/ArenaView.cpp" line="251"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="242"/>
+        <location filename="../app/ArenaView.cpp" line="252"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="259"/>
+        <location filename="../app/ArenaView.cpp" line="280"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="260"/>
+        <location filename="../app/ArenaView.cpp" line="281"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="482"/>
+        <location filename="../app/ArenaView.cpp" line="513"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -1342,17 +1342,17 @@
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="650"/>
+        <location filename="../app/LabSession.cpp" line="654"/>
         <source>The identified model saved with it could not be read (%1): identify the car again in the Model step.</source>
         <translation>無法讀取隨工作階段儲存的已辨識模型（%1）：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="654"/>
+        <location filename="../app/LabSession.cpp" line="658"/>
         <source>Its demonstration is not the one the saved model was identified from: identify the car again in the Model step.</source>
         <translation>其示範並非儲存的模型辨識時所用的示範：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="671"/>
+        <location filename="../app/LabSession.cpp" line="675"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -2706,69 +2706,69 @@ Do you want to replace it?</source>
         <translation>重播：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="96"/>
+        <location filename="../app/ReplayDialog.cpp" line="100"/>
         <source>distance from the path [m]</source>
         <translation>與路徑的距離 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="97"/>
+        <location filename="../app/ReplayDialog.cpp" line="101"/>
         <source>now</source>
         <translation>現在</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="100"/>
+        <location filename="../app/ReplayDialog.cpp" line="104"/>
         <source>trial time [s]</source>
         <translation>試驗時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="101"/>
+        <location filename="../app/ReplayDialog.cpp" line="105"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="126"/>
+        <location filename="../app/ReplayDialog.cpp" line="130"/>
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="126"/>
-        <location filename="../app/ReplayDialog.cpp" line="132"/>
-        <location filename="../app/ReplayDialog.cpp" line="137"/>
+        <location filename="../app/ReplayDialog.cpp" line="130"/>
+        <location filename="../app/ReplayDialog.cpp" line="136"/>
+        <location filename="../app/ReplayDialog.cpp" line="141"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="140"/>
+        <location filename="../app/ReplayDialog.cpp" line="144"/>
         <source>%1 trial, %2: %3 samples, %4 frames, %5 s</source>
         <translation>%1 試驗，%2：%3 個樣本，%4 個影格，%5 秒</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="146"/>
+        <location filename="../app/ReplayDialog.cpp" line="150"/>
         <source>; last pose %1 cm, %2° from the lot</source>
         <translation>；最後位姿距泊車位 %1 厘米、%2°</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="152"/>
+        <location filename="../app/ReplayDialog.cpp" line="156"/>
         <source> (incomplete: the writer stopped before the trial ended)</source>
         <translation>（不完整：試驗結束前寫入已停止）</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="154"/>
+        <location filename="../app/ReplayDialog.cpp" line="158"/>
         <source>; ended in failsafe: %1</source>
         <translation>；以失效保護結束：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="185"/>
+        <location filename="../app/ReplayDialog.cpp" line="189"/>
         <source>no samples</source>
         <translation>沒有樣本</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="228"/>
+        <location filename="../app/ReplayDialog.cpp" line="232"/>
         <source>%1 s, frame %2%3</source>
         <translation>%1 秒，影格 %2%3</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="231"/>
+        <location filename="../app/ReplayDialog.cpp" line="235"/>
         <source>, failsafe</source>
         <translation>，失效保護</translation>
     </message>
@@ -2776,276 +2776,276 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="376"/>
+        <location filename="../app/RigPanel.cpp" line="377"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="377"/>
-        <location filename="../app/RigPanel.cpp" line="384"/>
+        <location filename="../app/RigPanel.cpp" line="378"/>
+        <location filename="../app/RigPanel.cpp" line="385"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="383"/>
+        <location filename="../app/RigPanel.cpp" line="384"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="484"/>
-        <location filename="../app/RigPanel.cpp" line="495"/>
+        <location filename="../app/RigPanel.cpp" line="485"/>
+        <location filename="../app/RigPanel.cpp" line="496"/>
         <source>Floor point</source>
         <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="485"/>
+        <location filename="../app/RigPanel.cpp" line="486"/>
         <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
         <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="496"/>
+        <location filename="../app/RigPanel.cpp" line="497"/>
         <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
         <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="581"/>
+        <location filename="../app/RigPanel.cpp" line="582"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="679"/>
+        <location filename="../app/RigPanel.cpp" line="680"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="719"/>
+        <location filename="../app/RigPanel.cpp" line="720"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="714"/>
+        <location filename="../app/RigPanel.cpp" line="715"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="201"/>
-        <location filename="../app/RigPanel.cpp" line="1084"/>
+        <location filename="../app/RigPanel.cpp" line="202"/>
+        <location filename="../app/RigPanel.cpp" line="1090"/>
         <source>PPM bridge (trainer port)</source>
         <translation>PPM 橋接（教練接口）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="409"/>
+        <location filename="../app/RigPanel.cpp" line="410"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="420"/>
-        <location filename="../app/RigPanel.cpp" line="1210"/>
+        <location filename="../app/RigPanel.cpp" line="421"/>
+        <location filename="../app/RigPanel.cpp" line="1216"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="421"/>
-        <location filename="../app/RigPanel.cpp" line="1198"/>
+        <location filename="../app/RigPanel.cpp" line="422"/>
+        <location filename="../app/RigPanel.cpp" line="1204"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="434"/>
+        <location filename="../app/RigPanel.cpp" line="435"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="462"/>
+        <location filename="../app/RigPanel.cpp" line="463"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="469"/>
+        <location filename="../app/RigPanel.cpp" line="470"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="698"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="707"/>
+        <location filename="../app/RigPanel.cpp" line="708"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="737"/>
+        <location filename="../app/RigPanel.cpp" line="738"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="750"/>
+        <location filename="../app/RigPanel.cpp" line="751"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="755"/>
+        <location filename="../app/RigPanel.cpp" line="756"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="758"/>
+        <location filename="../app/RigPanel.cpp" line="759"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="761"/>
+        <location filename="../app/RigPanel.cpp" line="762"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="762"/>
+        <location filename="../app/RigPanel.cpp" line="763"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="343"/>
-        <location filename="../app/RigPanel.cpp" line="349"/>
-        <location filename="../app/RigPanel.cpp" line="363"/>
-        <location filename="../app/RigPanel.cpp" line="827"/>
-        <location filename="../app/RigPanel.cpp" line="837"/>
+        <location filename="../app/RigPanel.cpp" line="344"/>
+        <location filename="../app/RigPanel.cpp" line="350"/>
+        <location filename="../app/RigPanel.cpp" line="364"/>
+        <location filename="../app/RigPanel.cpp" line="828"/>
+        <location filename="../app/RigPanel.cpp" line="838"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="363"/>
+        <location filename="../app/RigPanel.cpp" line="364"/>
         <source>Camera stopped.</source>
         <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="436"/>
-        <location filename="../app/RigPanel.cpp" line="556"/>
-        <location filename="../app/RigPanel.cpp" line="563"/>
-        <location filename="../app/RigPanel.cpp" line="572"/>
-        <location filename="../app/RigPanel.cpp" line="578"/>
-        <location filename="../app/RigPanel.cpp" line="581"/>
-        <location filename="../app/RigPanel.cpp" line="623"/>
-        <location filename="../app/RigPanel.cpp" line="626"/>
-        <location filename="../app/RigPanel.cpp" line="656"/>
-        <location filename="../app/RigPanel.cpp" line="661"/>
-        <location filename="../app/RigPanel.cpp" line="672"/>
-        <location filename="../app/RigPanel.cpp" line="678"/>
-        <location filename="../app/RigPanel.cpp" line="698"/>
-        <location filename="../app/RigPanel.cpp" line="724"/>
-        <location filename="../app/RigPanel.cpp" line="736"/>
-        <location filename="../app/RigPanel.cpp" line="744"/>
-        <location filename="../app/RigPanel.cpp" line="770"/>
+        <location filename="../app/RigPanel.cpp" line="437"/>
+        <location filename="../app/RigPanel.cpp" line="557"/>
+        <location filename="../app/RigPanel.cpp" line="564"/>
+        <location filename="../app/RigPanel.cpp" line="573"/>
+        <location filename="../app/RigPanel.cpp" line="579"/>
+        <location filename="../app/RigPanel.cpp" line="582"/>
+        <location filename="../app/RigPanel.cpp" line="624"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
+        <location filename="../app/RigPanel.cpp" line="657"/>
+        <location filename="../app/RigPanel.cpp" line="662"/>
+        <location filename="../app/RigPanel.cpp" line="673"/>
+        <location filename="../app/RigPanel.cpp" line="679"/>
+        <location filename="../app/RigPanel.cpp" line="699"/>
+        <location filename="../app/RigPanel.cpp" line="725"/>
+        <location filename="../app/RigPanel.cpp" line="737"/>
+        <location filename="../app/RigPanel.cpp" line="745"/>
+        <location filename="../app/RigPanel.cpp" line="771"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="462"/>
-        <location filename="../app/RigPanel.cpp" line="468"/>
-        <location filename="../app/RigPanel.cpp" line="633"/>
-        <location filename="../app/RigPanel.cpp" line="639"/>
-        <location filename="../app/RigPanel.cpp" line="1248"/>
-        <location filename="../app/RigPanel.cpp" line="1253"/>
-        <location filename="../app/RigPanel.cpp" line="1257"/>
+        <location filename="../app/RigPanel.cpp" line="463"/>
+        <location filename="../app/RigPanel.cpp" line="469"/>
+        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="640"/>
+        <location filename="../app/RigPanel.cpp" line="1254"/>
+        <location filename="../app/RigPanel.cpp" line="1259"/>
+        <location filename="../app/RigPanel.cpp" line="1263"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="838"/>
+        <location filename="../app/RigPanel.cpp" line="839"/>
         <source>Camera started: %1</source>
         <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="857"/>
+        <location filename="../app/RigPanel.cpp" line="858"/>
         <source>Choose or type the transmitter&apos;s port first.</source>
         <translation>請先選擇或輸入發射器的連接埠。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="857"/>
-        <location filename="../app/RigPanel.cpp" line="1002"/>
-        <location filename="../app/RigPanel.cpp" line="1086"/>
+        <location filename="../app/RigPanel.cpp" line="858"/>
+        <location filename="../app/RigPanel.cpp" line="1008"/>
+        <location filename="../app/RigPanel.cpp" line="1092"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="398"/>
-        <location filename="../app/RigPanel.cpp" line="834"/>
-        <location filename="../app/RigPanel.cpp" line="878"/>
-        <location filename="../app/RigPanel.cpp" line="890"/>
-        <location filename="../app/RigPanel.cpp" line="899"/>
-        <location filename="../app/RigPanel.cpp" line="906"/>
+        <location filename="../app/RigPanel.cpp" line="399"/>
+        <location filename="../app/RigPanel.cpp" line="835"/>
+        <location filename="../app/RigPanel.cpp" line="879"/>
+        <location filename="../app/RigPanel.cpp" line="891"/>
+        <location filename="../app/RigPanel.cpp" line="900"/>
+        <location filename="../app/RigPanel.cpp" line="907"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="351"/>
+        <location filename="../app/RigPanel.cpp" line="352"/>
         <source>The video ended after %1 frames; Start plays it again.</source>
         <translation>影片在 %1 幀後結束；按「開始」再次播放。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="395"/>
+        <location filename="../app/RigPanel.cpp" line="396"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="399"/>
+        <location filename="../app/RigPanel.cpp" line="400"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="546"/>
+        <location filename="../app/RigPanel.cpp" line="547"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
         <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="564"/>
+        <location filename="../app/RigPanel.cpp" line="565"/>
         <source>Not ready for a trial: %1</source>
         <translation>未能進行試驗：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="605"/>
+        <location filename="../app/RigPanel.cpp" line="606"/>
         <source>Ready for a trial</source>
         <translation>可以進行試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
+        <location filename="../app/RigPanel.cpp" line="607"/>
         <source>Ready for a trial (note: %1)</source>
         <translation>可以進行試驗（注意：%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="608"/>
+        <location filename="../app/RigPanel.cpp" line="609"/>
         <source>Not ready: %1</source>
         <translation>未準備好：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="626"/>
+        <location filename="../app/RigPanel.cpp" line="627"/>
         <source>The virtual car is back at its start.</source>
         <translation>虛擬車已回到起點。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="634"/>
+        <location filename="../app/RigPanel.cpp" line="635"/>
         <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
         <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="640"/>
+        <location filename="../app/RigPanel.cpp" line="641"/>
         <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
         <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="745"/>
+        <location filename="../app/RigPanel.cpp" line="746"/>
         <source>E-STOP is reset: the link sends the commands again.</source>
         <translation>緊急停止已重設：鏈路再次發送指令。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="768"/>
+        <location filename="../app/RigPanel.cpp" line="769"/>
         <source>%1; %2</source>
         <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
         <translation>%1；%2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="879"/>
+        <location filename="../app/RigPanel.cpp" line="880"/>
         <source>The calibration could not be read.
 
 %1</source>
@@ -3054,456 +3054,461 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="900"/>
+        <location filename="../app/RigPanel.cpp" line="901"/>
         <source>%1 point(s) clicked; at least 4 are needed.</source>
         <translation>已點擊 %1 個點；至少需要 4 個。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="931"/>
+        <location filename="../app/RigPanel.cpp" line="932"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="931"/>
+        <location filename="../app/RigPanel.cpp" line="932"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="934"/>
+        <location filename="../app/RigPanel.cpp" line="935"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="938"/>
+        <location filename="../app/RigPanel.cpp" line="939"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="943"/>
+        <location filename="../app/RigPanel.cpp" line="944"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
+        <location filename="../app/RigPanel.cpp" line="945"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="947"/>
+        <location filename="../app/RigPanel.cpp" line="948"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="948"/>
+        <location filename="../app/RigPanel.cpp" line="949"/>
         <source>Camera: video ended</source>
         <translation>攝影機：影片已結束</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
+        <location filename="../app/RigPanel.cpp" line="950"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="975"/>
+        <location filename="../app/RigPanel.cpp" line="978"/>
+        <source>the process being stopped and continued</source>
+        <translation>程式被暫停後再繼續</translation>
+    </message>
+    <message>
+        <location filename="../app/RigPanel.cpp" line="981"/>
         <source>Link: connected, %1 frames/s, %2 sent</source>
         <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="978"/>
-        <location filename="../app/RigPanel.cpp" line="987"/>
+        <location filename="../app/RigPanel.cpp" line="984"/>
+        <location filename="../app/RigPanel.cpp" line="993"/>
         <source>Link: not connected</source>
         <translation>連線：未連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="980"/>
-        <location filename="../app/RigPanel.cpp" line="989"/>
+        <location filename="../app/RigPanel.cpp" line="986"/>
+        <location filename="../app/RigPanel.cpp" line="995"/>
         <source>; failsafe (%1)</source>
         <translation>；失效保護（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="987"/>
+        <location filename="../app/RigPanel.cpp" line="993"/>
         <source>Link: connected</source>
         <translation>鏈路：已連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1032"/>
+        <location filename="../app/RigPanel.cpp" line="1038"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1033"/>
+        <location filename="../app/RigPanel.cpp" line="1039"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1034"/>
+        <location filename="../app/RigPanel.cpp" line="1040"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1035"/>
+        <location filename="../app/RigPanel.cpp" line="1041"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1041"/>
+        <location filename="../app/RigPanel.cpp" line="1047"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1042"/>
+        <location filename="../app/RigPanel.cpp" line="1048"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1043"/>
+        <location filename="../app/RigPanel.cpp" line="1049"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1044"/>
+        <location filename="../app/RigPanel.cpp" line="1050"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1045"/>
+        <location filename="../app/RigPanel.cpp" line="1051"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1046"/>
+        <location filename="../app/RigPanel.cpp" line="1052"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1048"/>
+        <location filename="../app/RigPanel.cpp" line="1054"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1050"/>
+        <location filename="../app/RigPanel.cpp" line="1056"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1051"/>
+        <location filename="../app/RigPanel.cpp" line="1057"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/RigPanel.cpp" line="1058"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1053"/>
+        <location filename="../app/RigPanel.cpp" line="1059"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1054"/>
+        <location filename="../app/RigPanel.cpp" line="1060"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1055"/>
+        <location filename="../app/RigPanel.cpp" line="1061"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1056"/>
+        <location filename="../app/RigPanel.cpp" line="1062"/>
         <source>Floor calibration: %1 points, reprojection error %2 cm</source>
         <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1059"/>
+        <location filename="../app/RigPanel.cpp" line="1065"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
+        <location filename="../app/RigPanel.cpp" line="1066"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1061"/>
+        <location filename="../app/RigPanel.cpp" line="1067"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1063"/>
+        <location filename="../app/RigPanel.cpp" line="1069"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1064"/>
+        <location filename="../app/RigPanel.cpp" line="1070"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1065"/>
+        <location filename="../app/RigPanel.cpp" line="1071"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1066"/>
+        <location filename="../app/RigPanel.cpp" line="1072"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1067"/>
+        <location filename="../app/RigPanel.cpp" line="1073"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1068"/>
+        <location filename="../app/RigPanel.cpp" line="1074"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1069"/>
+        <location filename="../app/RigPanel.cpp" line="1075"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/RigPanel.cpp" line="1076"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1071"/>
+        <location filename="../app/RigPanel.cpp" line="1077"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1072"/>
+        <location filename="../app/RigPanel.cpp" line="1078"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1074"/>
+        <location filename="../app/RigPanel.cpp" line="1080"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1076"/>
+        <location filename="../app/RigPanel.cpp" line="1082"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1078"/>
+        <location filename="../app/RigPanel.cpp" line="1084"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1080"/>
+        <location filename="../app/RigPanel.cpp" line="1086"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1085"/>
+        <location filename="../app/RigPanel.cpp" line="1091"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1087"/>
+        <location filename="../app/RigPanel.cpp" line="1093"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1088"/>
+        <location filename="../app/RigPanel.cpp" line="1094"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1089"/>
+        <location filename="../app/RigPanel.cpp" line="1095"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1092"/>
+        <location filename="../app/RigPanel.cpp" line="1098"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1093"/>
+        <location filename="../app/RigPanel.cpp" line="1099"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1095"/>
+        <location filename="../app/RigPanel.cpp" line="1101"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1096"/>
+        <location filename="../app/RigPanel.cpp" line="1102"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1097"/>
+        <location filename="../app/RigPanel.cpp" line="1103"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1098"/>
+        <location filename="../app/RigPanel.cpp" line="1104"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1101"/>
+        <location filename="../app/RigPanel.cpp" line="1107"/>
         <source>or declare:</source>
         <translation>或申報：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1102"/>
+        <location filename="../app/RigPanel.cpp" line="1108"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1103"/>
+        <location filename="../app/RigPanel.cpp" line="1109"/>
         <source>not declared</source>
         <translation>未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1104"/>
+        <location filename="../app/RigPanel.cpp" line="1110"/>
         <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
         <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1106"/>
+        <location filename="../app/RigPanel.cpp" line="1112"/>
         <source>Put the car back</source>
         <translation>把車放回起點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
+        <location filename="../app/RigPanel.cpp" line="1113"/>
         <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
         <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1109"/>
+        <location filename="../app/RigPanel.cpp" line="1115"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1111"/>
+        <location filename="../app/RigPanel.cpp" line="1117"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1112"/>
+        <location filename="../app/RigPanel.cpp" line="1118"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1115"/>
+        <location filename="../app/RigPanel.cpp" line="1121"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1116"/>
+        <location filename="../app/RigPanel.cpp" line="1122"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
+        <location filename="../app/RigPanel.cpp" line="1123"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1118"/>
-        <location filename="../app/RigPanel.cpp" line="1120"/>
+        <location filename="../app/RigPanel.cpp" line="1124"/>
+        <location filename="../app/RigPanel.cpp" line="1126"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1119"/>
+        <location filename="../app/RigPanel.cpp" line="1125"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1123"/>
+        <location filename="../app/RigPanel.cpp" line="1129"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1150"/>
+        <location filename="../app/RigPanel.cpp" line="1156"/>
         <source>Lens: no camera image to capture a board view from.</source>
         <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1150"/>
-        <location filename="../app/RigPanel.cpp" line="1155"/>
-        <location filename="../app/RigPanel.cpp" line="1182"/>
-        <location filename="../app/RigPanel.cpp" line="1243"/>
+        <location filename="../app/RigPanel.cpp" line="1156"/>
+        <location filename="../app/RigPanel.cpp" line="1161"/>
+        <location filename="../app/RigPanel.cpp" line="1188"/>
+        <location filename="../app/RigPanel.cpp" line="1249"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1155"/>
+        <location filename="../app/RigPanel.cpp" line="1161"/>
         <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
         <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1177"/>
+        <location filename="../app/RigPanel.cpp" line="1183"/>
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1182"/>
+        <location filename="../app/RigPanel.cpp" line="1188"/>
         <source>Lens: %1</source>
         <translation>鏡頭：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1196"/>
-        <location filename="../app/RigPanel.cpp" line="1200"/>
+        <location filename="../app/RigPanel.cpp" line="1202"/>
+        <location filename="../app/RigPanel.cpp" line="1206"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1228"/>
+        <location filename="../app/RigPanel.cpp" line="1234"/>
         <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
         <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1234"/>
+        <location filename="../app/RigPanel.cpp" line="1240"/>
         <source>Lens: none (the floor calibration is a homography alone).</source>
         <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1238"/>
+        <location filename="../app/RigPanel.cpp" line="1244"/>
         <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
         <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1253"/>
+        <location filename="../app/RigPanel.cpp" line="1259"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1257"/>
+        <location filename="../app/RigPanel.cpp" line="1263"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1286"/>
+        <location filename="../app/RigPanel.cpp" line="1292"/>
         <source>Fence: %1</source>
         <translation>圍欄：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1286"/>
-        <location filename="../app/RigPanel.cpp" line="1289"/>
         <location filename="../app/RigPanel.cpp" line="1292"/>
+        <location filename="../app/RigPanel.cpp" line="1295"/>
+        <location filename="../app/RigPanel.cpp" line="1298"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1289"/>
+        <location filename="../app/RigPanel.cpp" line="1295"/>
         <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
         <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1292"/>
+        <location filename="../app/RigPanel.cpp" line="1298"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
     </message>
@@ -4150,37 +4155,37 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::devices::TransmitterLink</name>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="37"/>
+        <location filename="../devices/TransmitterLink.cpp" line="40"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="39"/>
+        <location filename="../devices/TransmitterLink.cpp" line="42"/>
         <source>no command yet</source>
         <translation>尚未有指令</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="41"/>
+        <location filename="../devices/TransmitterLink.cpp" line="44"/>
         <source>stale command</source>
         <translation>指令過時</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="43"/>
+        <location filename="../devices/TransmitterLink.cpp" line="46"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="45"/>
+        <location filename="../devices/TransmitterLink.cpp" line="48"/>
         <source>camera pose lost</source>
         <translation>失去鏡頭位姿</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="47"/>
+        <location filename="../devices/TransmitterLink.cpp" line="50"/>
         <source>controller fault</source>
         <translation>控制器故障</translation>
     </message>
     <message>
-        <location filename="../devices/TransmitterLink.cpp" line="49"/>
+        <location filename="../devices/TransmitterLink.cpp" line="52"/>
         <source>fence breached</source>
         <translation>越過圍欄</translation>
     </message>
@@ -4422,99 +4427,104 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="145"/>
+        <location filename="../rig/RigSession.cpp" line="147"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="275"/>
+        <location filename="../rig/RigSession.cpp" line="277"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="278"/>
+        <location filename="../rig/RigSession.cpp" line="280"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="315"/>
+        <location filename="../rig/RigSession.cpp" line="317"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="321"/>
+        <location filename="../rig/RigSession.cpp" line="323"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="343"/>
+        <location filename="../rig/RigSession.cpp" line="345"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="352"/>
+        <location filename="../rig/RigSession.cpp" line="354"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="355"/>
+        <location filename="../rig/RigSession.cpp" line="357"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="358"/>
+        <location filename="../rig/RigSession.cpp" line="360"/>
         <source>E-STOP is latched: reset it before a trial.</source>
         <translation>緊急停止已鎖定：試驗前請先重設。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="361"/>
-        <location filename="../rig/RigSession.cpp" line="779"/>
+        <location filename="../rig/RigSession.cpp" line="363"/>
+        <location filename="../rig/RigSession.cpp" line="787"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="372"/>
-        <location filename="../rig/RigSession.cpp" line="395"/>
+        <location filename="../rig/RigSession.cpp" line="374"/>
+        <location filename="../rig/RigSession.cpp" line="397"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="665"/>
+        <location filename="../rig/RigSession.cpp" line="618"/>
+        <source>the process was stopped and continued: failsafe held</source>
+        <translation>程式曾被暫停後再繼續：保持失效保護</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="673"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="668"/>
+        <location filename="../rig/RigSession.cpp" line="676"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="677"/>
+        <location filename="../rig/RigSession.cpp" line="685"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="739"/>
+        <location filename="../rig/RigSession.cpp" line="747"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="747"/>
+        <location filename="../rig/RigSession.cpp" line="755"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="776"/>
+        <location filename="../rig/RigSession.cpp" line="784"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="782"/>
+        <location filename="../rig/RigSession.cpp" line="790"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="795"/>
+        <location filename="../rig/RigSession.cpp" line="803"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

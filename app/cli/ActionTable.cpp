@@ -69,6 +69,15 @@ Eigen::MatrixXd readActionTable(const QString& path, const QStringList& actionNa
                         .arg(columnOf[a] + 1)
                         .arg(text, actionNames[static_cast<int>(a)]));
             }
+            if (std::abs(value) > core::Demonstration::kMaxAbsValue) {
+                throw UsageError(QStringLiteral("%1:%2:%3: '%4' in column '%5' is beyond the "
+                                                "+-%6 an action may be")
+                                     .arg(path)
+                                     .arg(lineNumber)
+                                     .arg(columnOf[a] + 1)
+                                     .arg(text, actionNames[static_cast<int>(a)])
+                                     .arg(core::Demonstration::kMaxAbsValue));
+            }
             action[static_cast<Eigen::Index>(a)] = value;
         }
         rows.push_back(action);

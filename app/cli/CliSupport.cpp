@@ -5,6 +5,7 @@
 
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QLoggingCategory>
 
 #include <unistd.h>
 #include <cmath>
@@ -133,6 +134,12 @@ core::Demonstration readDemonstration(const QString& path) {
 }
 
 void writeDemonstration(const core::Demonstration& demonstration, const QString& path) {
+    // Numbers no demonstration holds are the data's fault, not the file's: said as such.
+    if (const QString invalid = demonstration.validate(); !invalid.isEmpty()) {
+        throw UsageError(QStringLiteral("the result is no demonstration a file can hold (%1); "
+                                        "nothing was written to %2")
+                             .arg(invalid, path));
+    }
     core::FileError error;
     if (!core::writeDemonstrationCsv(demonstration, path, &error)) {
         throw UsageError(error.toString());
@@ -162,6 +169,32 @@ QString saveFigureOutput(const plot::Figure& figure, const QString& path, bool c
     const QString target = complete ? path : partialPath(path);
     saveFigureOrThrow(figure, target);
     return target;
+}
+
+void addVerboseOption(CommandLine& line) {
+    line.addFlag(QStringLiteral("verbose"),
+                 QStringLiteral("Also print the devices' own notes (the port opened, line "
+                                "settings not applied, the camera's mode) on stderr."));
+}
+
+void applyVerbosity(const CommandLine& line) {
+    if (!line.isSet(QStringLiteral("verbose"))) {
+        // Warnings (a port lost) still show: only the notes of things going as they should go.
+        QLoggingCategory::setFilterRules(QStringLiteral("prisca.*.info=false\nprisca.*.debug=false"));
+    }
+}
+
+void checkOutputs(const CommandLine& line, std::initializer_list<const char*> names) {
+    for (const char* name : names) {
+        const QString option = QString::fromLatin1(name);
+        if (!line.isSet(option)) {
+            continue;
+        }
+        core::FileError error;
+        if (!core::checkOutputPath(line.value(option), &error)) {
+            throw UsageError(QStringLiteral("--%1: %2").arg(option, error.toString()));
+        }
+    }
 }
 
 void printJson(const QJsonObject& object) {

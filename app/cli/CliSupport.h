@@ -10,6 +10,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 
@@ -92,6 +93,16 @@ QString writeOutput(const QString& path, const QByteArray& bytes, bool complete)
 QString partialPath(const QString& path);
 /// Saves a figure like writeOutput() (a .png or .svg file); returns the path written.
 QString saveFigureOutput(const plot::Figure& figure, const QString& path, bool complete);
+
+/// Adds --verbose: the devices' own lines (the port opened, line settings a pseudo-terminal
+/// cannot take, the camera's mode) on stderr. applyVerbosity() after parse() hides them without.
+void addVerboseOption(CommandLine& line);
+void applyVerbosity(const CommandLine& line);
+
+/// Checks, before the work starts, every output option of `names` that is set: a long
+/// computation never ends in "cannot write" (a FIFO, a folder, a missing folder).
+/// UsageError naming the option and the file.
+void checkOutputs(const CommandLine& line, std::initializer_list<const char*> names);
 
 /// Prints a JSON object on stdout (indented).
 void printJson(const QJsonObject& object);

@@ -67,6 +67,7 @@ int curveCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out", "plot"});
     const QString out = line.required("out");
     sim::LearningCurveSettings settings;
     settings.methods = line.value("methods").split(QLatin1Char(','), Qt::SkipEmptyParts);

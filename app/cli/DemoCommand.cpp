@@ -32,6 +32,7 @@ int demoCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out"});
     const QString plantName = checkedPlant(line.required("plant"));
     if (line.isSet("list-styles")) {
         const std::vector<sim::DemonstrationStyle> styles = sim::DemonstrationStyles::of(plantName);
@@ -82,6 +83,20 @@ int demoCommand(const QStringList& arguments) {
     }
     if (line.isSet("day")) {
         demonstration.metadata.insert(QStringLiteral("day"), line.value("day"));
+    }
+    // A plant file inside its ranges can still make the scripted manoeuvre leave the numbers:
+    // that is the plant's doing, not the output file's.
+    if (const QString invalid = demonstration.validate(); !invalid.isEmpty()) {
+        throw UsageError(QStringLiteral("the %1 demonstration on %2 left the numbers a "
+                                        "demonstration holds (%3): %4; nothing was written to %5")
+                             .arg(style,
+                                  parameters ? QStringLiteral("the plant file %1").arg(parameters->source)
+                                             : QStringLiteral("the catalog %1").arg(plantName),
+                                  invalid,
+                                  parameters ? QStringLiteral("its parameters do not make a plant "
+                                                              "this manoeuvre can drive")
+                                             : QStringLiteral("the manoeuvre diverged"),
+                                  out));
     }
     writeDemonstration(demonstration, out);
     const int T = demonstration.length();

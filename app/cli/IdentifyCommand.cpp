@@ -113,6 +113,7 @@ int identifyCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out"});
     const QString plant = checkedPlant(line.required("plant"));
     const QString out = line.required("out");
     std::vector<core::Demonstration> runs;

@@ -62,6 +62,7 @@ int lemma41Command(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out", "plot"});
     const QString out = line.required("out");
     const int maxH = boundedInteger(
         line, "max-h", 1, kMaxHorizon,

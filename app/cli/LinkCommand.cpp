@@ -34,10 +34,12 @@ int linkCommand(const QStringList& arguments) {
                   "us,us,...");
     line.addValue("rate", "Frames per second.", "Hz", "50");
     line.addValue("duration", "How long to send [s].", "S", "5");
+    addVerboseOption(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
     }
+    applyVerbosity(line);
     devices::LinkSettings settings;
     settings.port = line.required("port");
     const auto protocol = devices::parseProtocol(line.value("protocol"));
@@ -48,6 +50,19 @@ int linkCommand(const QStringList& arguments) {
     settings.protocol = *protocol;
     settings.baud = static_cast<int>(line.integer("baud", 0, 10000000));
     settings.rateHz = line.number("rate", 1.0, 1000.0);
+    if (const double most = devices::maxFrameRate(settings.protocol, settings.baud);
+        settings.rateHz > most) {
+        throw UsageError(
+            QStringLiteral("--rate %1: %2 at %3 baud carries %4 frames/s; at most %5 may be sent "
+                           "(with room to spare, so frames never queue and a failsafe goes out "
+                           "next)")
+                .arg(settings.rateHz)
+                .arg(devices::protocolName(settings.protocol))
+                .arg(settings.baud > 0 ? settings.baud
+                                       : devices::defaultSerialFormat(settings.protocol).baud)
+                .arg(std::floor(devices::lineFrameCapacity(settings.protocol, settings.baud)))
+                .arg(std::floor(most)));
+    }
     const double duration = line.number("duration", 0.0, 86400.0);
     devices::ChannelPulses pulses;
     pulses.fill(1500.0);

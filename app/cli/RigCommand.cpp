@@ -3,6 +3,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "core/DeviationModel.h"
+#include "devices/ProcessFailsafe.h"
 #include "rig/RigSession.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
@@ -70,10 +71,12 @@ int rigCommand(const QStringList& arguments) {
                   "s", "0");
     addPlantParametersOption(line);
     addMethodParameterOptions(line);
+    addVerboseOption(line);
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
         return 0;
     }
+    applyVerbosity(line);
     if (!line.isSet("virtual")) {
         throw UsageError(QStringLiteral(
             "rig drives the virtual rig only (give --virtual); the real rig runs in the window"));
@@ -106,6 +109,13 @@ int rigCommand(const QStringList& arguments) {
         if (!polygon) {
             throw UsageError(QStringLiteral("--fence: %1").arg(fenceError));
         }
+        if (polygon->empty()) {
+            // An unset shell variable, most likely: a trial must not run unfenced by accident.
+            throw UsageError(QStringLiteral("--fence '%1' gives no corner: give at least 3 as "
+                                            "\"x,y;x,y;x,y\" in metres, or leave --fence out for "
+                                            "no fence")
+                                 .arg(line.value("fence")));
+        }
         fence.polygon = *polygon;
     }
     fence.maxSpeed = line.number("max-speed", 0.0, 100.0);
@@ -128,8 +138,10 @@ int rigCommand(const QStringList& arguments) {
         rig.setBundles(line.value("bundle-dir"), line.number("bundle-fps", 0.0, 200.0));
     }
     QStringList bundles;
+    int bundleAnswers = 0;  // one per trial, saved or not: a failed bundle is not waited for
     QObject::connect(&rig, &rig::RigSession::bundleSaved,
-                     [&bundles](const QString& folder, const QString& error) {
+                     [&bundles, &bundleAnswers](const QString& folder, const QString& error) {
+                         ++bundleAnswers;
                          if (!error.isEmpty()) {
                              std::fprintf(stderr, "prisca-cli: rig: warning: bundle %s: %s\n",
                                           qPrintable(folder), qPrintable(error));
@@ -189,6 +201,8 @@ int rigCommand(const QStringList& arguments) {
                          [&measured](const rig::LatencyMeasurement& m) { measured = m; });
         devices::LatencyProbeSettings probe;
         probe.steps = latencySteps;
+        // A camera delayed on purpose answers that much later: the step waits for it.
+        probe.giveUpAfter += camera.virtualCameraDelay;
         if (!rig.measureLatency(probe, &error)) {
             throw UsageError(QStringLiteral("the latency measurement could not start: %1")
                                  .arg(error));
@@ -295,7 +309,7 @@ int rigCommand(const QStringList& arguments) {
             rig.stopTrial();  // interrupted, the camera failed, or no frames: ends it now
         }
         if (line.isSet("bundle-dir")) {  // the bundle's last lines and result on disk
-            waitFor([&] { return bundles.size() > t; }, 10000, false);
+            waitFor([&] { return bundleAnswers > t; }, 10000, false);
         }
         if (!cameraError.isEmpty()) {
             throw UsageError(QStringLiteral("the camera failed: %1").arg(cameraError));
@@ -343,7 +357,10 @@ int rigCommand(const QStringList& arguments) {
             printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
                                      "frames decoded; frame -> command median %7 ms, p99 %8 ms, worst %9 ms\n")
                           .arg(t + 1)
-                          .arg(where, trial.stopped ? QStringLiteral(" (stopped early)")
+                          .arg(where, trial.stopped ? (trial.reason.isEmpty()
+                                                           ? QStringLiteral(" (stopped early)")
+                                                           : QStringLiteral(" (stopped early: %1)")
+                                                                 .arg(trial.reason))
                                       : trial.fault ? QStringLiteral(" (failsafe: %1)").arg(trial.reason)
                                                     : QString())
                           .arg(trial.framesWithPose)
@@ -355,6 +372,9 @@ int rigCommand(const QStringList& arguments) {
             if (!trial.controllerNote.isEmpty()) {
                 printText(QStringLiteral("  %1: %2\n").arg(method, trial.controllerNote));
             }
+        }
+        if (devices::processfailsafe::held()) {
+            break;  // stopped and continued: no trial starts by itself
         }
     }
     rig.stopCamera();
@@ -393,6 +413,11 @@ int rigCommand(const QStringList& arguments) {
         printText(QStringLiteral("link closed; the car's receiver holds [%1]: %2\n")
                       .arg(values.join(", "), neutral ? QStringLiteral("neutral (failsafe)")
                                                       : QStringLiteral("NOT neutral")));
+    }
+    if (!interrupted() && devices::processfailsafe::held()) {
+        throw UsageError(QStringLiteral("the process was stopped and continued, so the link held "
+                                        "failsafe and no further trial started; start the rig "
+                                        "again to drive"));
     }
     return interrupted() ? interruptedExitCode() : 0;
 }

@@ -85,6 +85,7 @@ int runCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out", "plot"});
     const QString plantName = line.required("plant");
     const QString method = line.required("method");
     if (!sim::MethodCatalog::contains(method)) {
@@ -145,6 +146,7 @@ int runCommand(const QStringList& arguments) {
         return path;
     };
     bool reported = false;  // a progress line is open on stderr
+    QString bundleFailure;  // the first bundle that could not be written (no more are tried)
     for (int trial = 0; trial < trials; ++trial) {
         const sim::EpisodeSettings episode = setup.trial(trial);
         const QString trialLabel = QStringLiteral("run: trial %1/%2").arg(trial + 1).arg(trials);
@@ -178,7 +180,7 @@ int runCommand(const QStringList& arguments) {
             runTrial(*plant, *controller, episode, trialLabel, reported);
         sim::appendRunLogTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
-        if (line.isSet("bundle-dir")) {
+        if (line.isSet("bundle-dir") && bundleFailure.isEmpty()) {
             const QString folder = QDir(line.value("bundle-dir"))
                                        .filePath(QStringLiteral("%1-trial-%2").arg(method).arg(trial));
             QString bundleError;
@@ -187,7 +189,8 @@ int runCommand(const QStringList& arguments) {
                                              {"trial", trial},
                                              {"seed", static_cast<double>(seed)}},
                                             info, demo, result, summary, &bundleError)) {
-                throw UsageError(QStringLiteral("--bundle-dir: %1").arg(bundleError));
+                // The run goes on and its log is written: a bundle costs no trial's record.
+                bundleFailure = QStringLiteral("--bundle-dir: trial %1: %2").arg(trial).arg(bundleError);
             }
         }
         rms.push_back(summary.trackingRms);
@@ -240,7 +243,13 @@ int runCommand(const QStringList& arguments) {
     }
     core::FileError error;
     if (!core::writeRunLogCsv(log, out, &error)) {
-        throw UsageError(error.toString());
+        throw UsageError(bundleFailure.isEmpty() ? error.toString()
+                                                 : error.toString() + QStringLiteral("; ") + bundleFailure);
+    }
+    if (!bundleFailure.isEmpty()) {
+        throw UsageError(QStringLiteral("%1 (no bundle was written after it; the run log %2 "
+                                        "holds every trial)")
+                             .arg(bundleFailure, out));
     }
     // A trial whose error is not a number has no result to report (the plant's state left the
     // numbers, e.g. on a demonstration no real car could drive): say so, and exit 2.

@@ -11,6 +11,14 @@
 
 namespace prisca::app::cli {
 
+namespace {
+// What one simulation may take. A row of states and actions is kept for every control step:
+// a million rows of a 10-number plant is 80 MB. The physics: KMAXPHYS.
+constexpr int kMaxSteps = 1'000'000;
+constexpr long long kMaxPhysicsSteps = 20'000'000;
+constexpr int kMaxPhysicsSeconds = 60;
+}  // namespace
+
 int simulateCommand(const QStringList& arguments) {
     CommandLine line(
         QStringLiteral("simulate"),
@@ -35,6 +43,7 @@ int simulateCommand(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out"});
     const QString plantName = checkedPlant(line.required("plant"));
     const QString out = line.required("out");
     sim::SimulationTiming timing;
@@ -72,6 +81,25 @@ int simulateCommand(const QStringList& arguments) {
     if (steps < 1) {
         throw UsageError(
             QStringLiteral("nothing to simulate: the duration is under one control period"));
+    }
+    // The work bounded before it starts (as lemma41's grid): rows kept in memory and written,
+    // and physics steps taken.
+    if (steps > kMaxSteps) {
+        throw UsageError(QStringLiteral("%1 control steps (--duration / --dt) is more than the %2 "
+                                        "a simulation may take (%3 MB of rows): a longer "
+                                        "--dt or a shorter --duration")
+                             .arg(steps)
+                             .arg(kMaxSteps)
+                             .arg(kMaxSteps * (n + m + 1) * 8 / 1000000));
+    }
+    if (static_cast<long long>(steps) * timing.physicsSubsteps > kMaxPhysicsSteps) {
+        throw UsageError(QStringLiteral("%1 control steps of %2 physics substeps is more than the "
+                                        "%3 physics steps a simulation may take (about %4 s on "
+                                        "one core): fewer --substeps or a shorter --duration")
+                             .arg(steps)
+                             .arg(timing.physicsSubsteps)
+                             .arg(kMaxPhysicsSteps)
+                             .arg(kMaxPhysicsSeconds));
     }
 
     Eigen::VectorXd state;

@@ -317,6 +317,7 @@ int table1Command(const QStringList& arguments) {
     if (!line.parse(arguments)) {
         return 0;
     }
+    checkOutputs(line, {"out", "plot", "learning-out", "learning-plot"});
     if (line.isSet("styles")) {
         return table1ProtocolCommand(line);
     }

@@ -7,6 +7,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -53,6 +54,23 @@ class TestCliBundle : public QObject {
         QVERIFY(QDir(QDir(dir.path()).filePath("bundles"))
                     .entryList(QDir::Dirs | QDir::NoDotAndDotDot)
                     .isEmpty());
+    }
+
+    void rigTrial_withAnEmptyFence_isRefused() {
+        // An unset shell variable ("--fence $FENCE") must not run the trial unfenced.
+        QTemporaryDir dir;
+        for (const QString& fence : {QString(), QStringLiteral(";"), QStringLiteral(" ; ;")}) {
+            const Result r = cli({"rig", "--virtual", "--trials", "1", "--fence", fence},
+                                 dir.path());
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains("gives no corner: give at least 3"), qPrintable(r.err));
+            QVERIFY(!r.out.contains("trial 1:"));
+        }
+        // Two corners enclose nothing either.
+        const Result r = cli({"rig", "--virtual", "--trials", "1", "--fence", "0,0;1,1"},
+                             dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("at least 3 corners, 2 given"), qPrintable(r.err));
     }
 
     void rigTrial_breakingTheFence_isBundledAndReplayed() {
@@ -115,6 +133,71 @@ class TestCliBundle : public QObject {
         // The replay's last pose is where the trial ended: the same parking error.
         QVERIFY2(std::abs(replay.value("finalPositionErrorCm").toDouble() - parked) < 1e-6,
                  qPrintable(r.out));
+    }
+
+    void failedBundle_keepsTheRunLog() {
+        // The bundle folder already holds trial 1's bundle: trial 0's is written, trial 1's is
+        // refused, none after it is tried, and the run log still holds every trial.
+        QTemporaryDir dir;
+        Result r = cli({"demo", "--plant", "slidecar", "--out", "demo.csv"}, dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QDir(dir.path()).mkpath("sim/pd-h-lsd-trial-1"));
+        QFile old(dir.filePath("sim/pd-h-lsd-trial-1/bundle.json"));
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("{}");
+        old.close();
+        r = cli({"run", "--plant", "slidecar", "--demo", "demo.csv", "--method", "pd-h-lsd",
+                 "--trials", "3", "--out", "log.csv", "--bundle-dir", "sim"},
+                dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--bundle-dir: trial 1:") && r.err.contains("already") &&
+                     r.err.contains("the run log log.csv holds every trial"),
+                 qPrintable(r.err));
+        QFile log(dir.filePath("log.csv"));
+        QVERIFY(log.open(QIODevice::ReadOnly));
+        QSet<QByteArray> trials;
+        for (const QByteArray& line : log.readAll().split('\n')) {
+            if (!line.isEmpty() && !line.startsWith('#') && !line.startsWith("trial")) {
+                trials.insert(line.left(line.indexOf(',')));
+            }
+        }
+        QCOMPARE(trials.size(), 3);
+        QVERIFY(QFile::exists(dir.filePath("sim/pd-h-lsd-trial-0/bundle.json")));
+        QVERIFY(!QFile::exists(dir.filePath("sim/pd-h-lsd-trial-2")));
+        QCOMPARE(old.size(), qint64(2));  // the old bundle untouched
+    }
+
+    void unwritableBundleFolder_leavesNothingBehind() {
+        // The bundle parent is a file: each trial's bundle fails, is said, and leaves no folder.
+        QTemporaryDir dir;
+        QFile file(dir.filePath("taken"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.close();
+        const Result r = cli({"rig", "--virtual", "--trials", "1", "--bundle-dir", "taken"},
+                             dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains("warning: bundle") && r.err.contains("cannot create the folder"),
+                 qPrintable(r.err));
+        QVERIFY(r.out.contains("trial 1:"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot),
+                 QStringList{"taken"});
+    }
+
+    void twoRigsOnOneFolder_keepBothBundles() {
+        QTemporaryDir dir;
+        QProcess first, second;
+        for (QProcess* rig : {&first, &second}) {
+            rig->setWorkingDirectory(dir.path());
+            rig->start(QStringLiteral(PRISCA_CLI),
+                       {"rig", "--virtual", "--trials", "1", "--bundle-dir", "bundles"});
+            QVERIFY(rig->waitForStarted());
+        }
+        for (QProcess* rig : {&first, &second}) {
+            QVERIFY(rig->waitForFinished(300000));
+            QVERIFY2(rig->exitCode() == 0, rig->readAllStandardError().constData());
+        }
+        QCOMPARE(QDir(dir.filePath("bundles")).entryList(QDir::Dirs | QDir::NoDotAndDotDot).size(),
+                 2);
     }
 
     void bundle_ofAKilledWriter_readsUpToItsLastSecond() {

@@ -1,7 +1,8 @@
 // However prisca-cli ends short of SIGKILL, the last frames on the serial line are failsafe
-// (throttle neutral, steering centred) and stderr says so: every stopping signal, an exception,
-// a failed assertion, an exception escaping a thread and a crash, on a pseudo-terminal whose
-// frames this test decodes itself (not with the project's decoder).
+// (throttle neutral, steering centred) and stderr says so: every signal whose default action
+// ends or stops the process, an exception, a failed assertion, an exception escaping a thread and
+// a crash, on a pseudo-terminal whose frames this test decodes itself (not with the project's
+// decoder). A process stopped (Ctrl-Z, SIGSTOP) and continued holds failsafe.
 #include "../devices/PseudoTerminal.h"
 
 #include <QDeadlineTimer>
@@ -9,6 +10,8 @@
 #include <QRegularExpression>
 #include <QTest>
 #include <QThread>
+
+#include <QFile>
 
 #include <csignal>
 #include <cstdint>
@@ -60,6 +63,25 @@ bool isNeutral(const std::pair<double, double>& frame) {
     return std::abs(frame.first - 1500.0) < 1.0 && std::abs(frame.second - 1500.0) < 1.0;
 }
 
+// The process's state letter in /proc (R, S, T stopped, ...).
+char processState(qint64 pid) {
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly)) {
+        return '?';
+    }
+    const QByteArray text = stat.readAll();
+    const int close = text.lastIndexOf(')');
+    return close >= 0 && close + 2 < text.size() ? text.at(close + 2) : '?';
+}
+
+int commandedFrames(const QByteArray& bytes) {
+    int count = 0;
+    for (const auto& frame : decodeCrsf(bytes)) {
+        count += std::abs(frame.second - 1700.0) < 1.0 ? 1 : 0;
+    }
+    return count;
+}
+
 }  // namespace
 
 class TestCliSignals : public QObject {
@@ -68,7 +90,11 @@ class TestCliSignals : public QObject {
   private slots:
     void link_endsInFailsafe_data();
     void link_endsInFailsafe();
+    void link_stoppedAndContinuedHoldsFailsafe_data();
+    void link_stoppedAndContinuedHoldsFailsafe();
+    void link_rateAboveTheLineRefused();
     void rig_hangupEndsInFailsafe();
+    void rig_stoppedAndContinuedEndsTheTrial();
 };
 
 void TestCliSignals::link_endsInFailsafe_data() {
@@ -88,6 +114,21 @@ void TestCliSignals::link_endsInFailsafe_data() {
                              << "stopped by SIGPIPE; ended in failsafe";
     QTest::newRow("SIGQUIT") << SIGQUIT << false << "" << 128 + SIGQUIT
                              << "stopped by SIGQUIT; ended in failsafe";
+    // Every other signal whose default action ends the process: none of them is the
+    // project's, and each ends it as SIGTERM does (a timer's, a limit's, a user's).
+    const std::vector<std::pair<int, const char*>> others = {
+        {SIGUSR1, "SIGUSR1"},     {SIGUSR2, "SIGUSR2"}, {SIGALRM, "SIGALRM"},
+        {SIGVTALRM, "SIGVTALRM"}, {SIGPROF, "SIGPROF"}, {SIGXCPU, "SIGXCPU"},
+        {SIGPWR, "SIGPWR"},       {SIGSTKFLT, "SIGSTKFLT"}, {SIGIO, "SIGIO"}};
+    for (const auto& [number, name] : others) {
+        QTest::newRow(name) << number << false << "" << 128 + number
+                            << QStringLiteral("stopped by %1").arg(QLatin1String(name));
+    }
+    // Those whose default action dumps core, as a crash does.
+    QTest::newRow("SIGSYS") << SIGSYS << false << "" << -1
+                            << "crashed (SIGSYS); failsafe sent on 1 link";
+    QTest::newRow("SIGTRAP") << SIGTRAP << false << "" << -1
+                             << "crashed (SIGTRAP); failsafe sent on 1 link";
     // The second signal ends the process wherever the orderly stop is: failsafe either way.
     QTest::newRow("SIGTERM twice") << SIGTERM << true << "" << -1 << "failsafe";
     QTest::newRow("exception") << 0 << false << "exception" << 2
@@ -123,13 +164,7 @@ void TestCliSignals::link_endsInFailsafe() {
     // Wait until the commanded value is on the wire (the car is moving), then end the process.
     QByteArray bytes;
     const QDeadlineTimer guard(30000);
-    auto commanded = [&bytes] {
-        int count = 0;
-        for (const auto& frame : decodeCrsf(bytes)) {
-            count += std::abs(frame.second - 1700.0) < 1.0 ? 1 : 0;
-        }
-        return count;
-    };
+    auto commanded = [&bytes] { return commandedFrames(bytes); };
     while (commanded() < 5 && cli.state() == QProcess::Running && !guard.hasExpired()) {
         bytes += pty.read();
         QThread::msleep(5);
@@ -161,6 +196,100 @@ void TestCliSignals::link_endsInFailsafe() {
     }
 }
 
+void TestCliSignals::link_stoppedAndContinuedHoldsFailsafe_data() {
+    QTest::addColumn<int>("signal");
+    QTest::addColumn<QString>("stderrSays");  // when it stops
+    QTest::newRow("SIGTSTP (Ctrl-Z)") << SIGTSTP << "stopped by SIGTSTP; failsafe sent on 1 link";
+    QTest::newRow("SIGTTOU") << SIGTTOU << "stopped by SIGTTOU; failsafe sent on 1 link";
+    QTest::newRow("SIGTTIN") << SIGTTIN << "stopped by SIGTTIN; failsafe sent on 1 link";
+    QTest::newRow("SIGSTOP") << SIGSTOP << "";  // no handler sees it: only the continue
+}
+
+void TestCliSignals::link_stoppedAndContinuedHoldsFailsafe() {
+    QFETCH(int, signal);
+    QFETCH(QString, stderrSays);
+
+    Pty pty;
+    QVERIFY(!pty.path.isEmpty());
+    QProcess cli;
+    cli.setReadChannel(QProcess::StandardError);
+    cli.start(QStringLiteral(PRISCA_CLI),
+              {"link", "--port", pty.path, "--protocol", "crsf", "--channels", "1500,1700",
+               "--duration", "120"});
+    QVERIFY(cli.waitForStarted());
+    const qint64 pid = cli.processId();
+    QByteArray bytes;
+    const QDeadlineTimer guard(60000);
+    while (commandedFrames(bytes) < 5 && cli.state() == QProcess::Running && !guard.hasExpired()) {
+        bytes += pty.read();
+        QThread::msleep(5);
+    }
+    QVERIFY2(commandedFrames(bytes) >= 5, "the command never reached the wire");
+
+    ::kill(static_cast<pid_t>(pid), signal);
+    while (processState(pid) != 'T' && !guard.hasExpired()) {
+        QThread::msleep(5);
+    }
+    QCOMPARE(processState(pid), 'T');
+    bytes += pty.read();
+    if (!stderrSays.isEmpty()) {
+        // Stopped after failsafe went out: the car is not left driving while the process sleeps.
+        const auto frames = decodeCrsf(bytes);
+        QVERIFY(isNeutral(frames.back()));
+        // Said before the stop: on stderr already.
+        QByteArray said;
+        while (!said.contains(stderrSays.toLatin1()) && !guard.hasExpired()) {
+            cli.waitForReadyRead(50);
+            said += cli.readAllStandardError();
+        }
+        QVERIFY2(said.contains(stderrSays.toLatin1()), said.constData());
+    }
+
+    // Continued: failsafe, not the command it had, until the process ends.
+    const int framesBefore = static_cast<int>(decodeCrsf(bytes).size());
+    ::kill(static_cast<pid_t>(pid), SIGCONT);
+    QByteArray after;
+    while (decodeCrsf(after).size() < 40 && cli.state() == QProcess::Running &&
+           !guard.hasExpired()) {
+        after += pty.read();
+        QThread::msleep(5);
+    }
+    const auto resumed = decodeCrsf(after);
+    QVERIFY2(resumed.size() >= 40, "no frames after the continue");
+    // Caught stops held failsafe before stopping: every frame after is neutral. SIGSTOP's hold
+    // starts with the SIGCONT handler, which may run just after the link's first frame.
+    const size_t firstChecked = stderrSays.isEmpty() ? 2 : 0;
+    for (size_t i = firstChecked; i < resumed.size(); ++i) {
+        QVERIFY2(isNeutral(resumed[i]), qPrintable(QStringLiteral("frame %1 after the continue: "
+                                                                  "CH2 %2 us")
+                                                       .arg(i)
+                                                       .arg(resumed[i].second)));
+    }
+    QVERIFY(framesBefore > 0);
+    ::kill(static_cast<pid_t>(pid), SIGTERM);
+    QVERIFY(cli.waitForFinished(30000));
+    const QString errors = QString::fromLocal8Bit(cli.readAllStandardError());
+    QVERIFY2(errors.contains("continued; the link holds failsafe"), qPrintable(errors));
+    const auto last = decodeCrsf(after + pty.read());
+    QVERIFY(isNeutral(last.back()));
+}
+
+void TestCliSignals::link_rateAboveTheLineRefused() {
+    // SBUS at 100000 baud 8E2 carries 333 frames/s, 166 with the gap receivers find frames by:
+    // more would queue behind a failsafe.
+    Pty pty;
+    QProcess cli;
+    cli.start(QStringLiteral(PRISCA_CLI), {"link", "--port", pty.path, "--protocol", "sbus",
+                                            "--channels", "1500,1700", "--rate", "1000",
+                                            "--duration", "1"});
+    QVERIFY(cli.waitForFinished(30000));
+    QCOMPARE(cli.exitCode(), 2);
+    const QString errors = QString::fromLocal8Bit(cli.readAllStandardError());
+    QVERIFY2(errors.contains("--rate 1000: sbus at 100000 baud carries 333 frames/s; at most 166"),
+             qPrintable(errors));
+    QVERIFY(pty.read().isEmpty());  // refused before the port was opened
+}
+
 void TestCliSignals::rig_hangupEndsInFailsafe() {
     // The whole rig chain: closing the terminal mid-trial leaves the car's receiver neutral.
     QProcess cli;
@@ -182,6 +311,42 @@ void TestCliSignals::rig_hangupEndsInFailsafe() {
     QVERIFY2(errors.contains("stopped by SIGHUP; the link ended in failsafe (the car's receiver "
                              "holds neutral)"),
              errors.constData());
+}
+
+void TestCliSignals::rig_stoppedAndContinuedEndsTheTrial() {
+    // Ctrl-Z mid-trial: failsafe before the stop; continued, the trial ends held in failsafe and
+    // the next one does not start by itself.
+    QProcess cli;
+    cli.start(QStringLiteral(PRISCA_CLI), {"rig", "--virtual", "--trials", "2"});
+    QVERIFY(cli.waitForStarted());
+    const qint64 pid = cli.processId();
+    QByteArray errors;
+    const QDeadlineTimer guard(90000);
+    while (!errors.contains("rig: trial 1/2: 1 of") && cli.state() == QProcess::Running &&
+           !guard.hasExpired()) {
+        cli.waitForReadyRead(100);
+        errors += cli.readAllStandardError();
+    }
+    QVERIFY2(errors.contains("rig: trial 1/2: 1 of"), errors.constData());
+    ::kill(static_cast<pid_t>(pid), SIGTSTP);
+    while (processState(pid) != 'T' && !guard.hasExpired()) {
+        QThread::msleep(5);
+    }
+    QCOMPARE(processState(pid), 'T');
+    ::kill(static_cast<pid_t>(pid), SIGCONT);
+    QVERIFY(cli.waitForFinished(60000));
+    errors += cli.readAllStandardError();
+    QVERIFY2(errors.contains("stopped by SIGTSTP; failsafe sent on"), errors.constData());
+    QVERIFY2(errors.contains("continued; the link holds failsafe"), errors.constData());
+    const QByteArray out = cli.readAllStandardOutput();
+    QVERIFY2(out.contains("trial 1: ") &&
+                 out.contains("(stopped early: the process was stopped and continued: failsafe "
+                              "held)"),
+             out.constData());
+    QVERIFY2(errors.contains("no further trial started"), errors.constData());
+    QCOMPARE(cli.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(cli.exitCode(), 2);
+    QVERIFY2(!errors.contains("rig: trial 2/2 ("), errors.constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliSignals)

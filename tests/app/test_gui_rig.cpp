@@ -3,9 +3,13 @@
 #include "GuiTestSupport.h"
 #include "app/BundleChooser.h"
 #include "app/ReplayDialog.h"
+#include "rig/TrialBundle.h"
+#include "sim/PlantCatalog.h"
 
 #include <QCheckBox>
+#include <QJsonObject>
 #include <QSlider>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QTreeWidget>
 #include <algorithm>
@@ -170,6 +174,49 @@ class TestGuiRig : public QObject {
         QVERIFY(!w.window.openReplay(QStringLiteral("/nonexistent")));
         rig->clearFence();
         QVERIFY(rig->geofence().polygon.empty());
+    }
+
+    void replay_hostileBundlesAreRefusedOrDrawnInBoundedTime() {
+        // Bundles the replay reader refuses (an unknown plant, a pose 1e9 m out) give a message
+        // and no window; one far out but on the floor (9 km) opens and paints, its grid bounded.
+        QTemporaryDir dir;
+        const auto write = [&](const QString& name, const QString& plant, double x) {
+            const QString folder = dir.filePath(name);
+            prisca::rig::TrialBundleWriter writer;
+            QString error;
+            if (!writer.open(folder, QJsonObject{{"kind", "rig"}, {"plant", plant}},
+                             prisca::sim::PlantCatalog::demonstrate("slidecar", 1), &error)) {
+                return QString();
+            }
+            for (int k = 0; k < 20; ++k) {
+                prisca::rig::BundleSample s;
+                s.t = 0.04 * k;
+                s.found = true;
+                s.x = x + 0.01 * k;
+                s.y = 0.0;
+                writer.append(s);
+            }
+            writer.finish(QJsonObject{{"failsafe", false}}, &error);
+            return folder;
+        };
+        Window w;
+        for (const QString& refused : {write("unknown", "hovercraft", 0.0),
+                                       write("far", "slidecar", 1e9)}) {
+            QVERIFY(!refused.isEmpty());
+            QTimer::singleShot(200, [] {
+                if (QWidget* box = prisca::app::ModalDialog::top()) {
+                    box->close();
+                }
+            });
+            QVERIFY(!w.window.openReplay(refused));
+        }
+        ReplayDialog* replay = w.window.openReplay(write("distant", "slidecar", 9000.0));
+        QVERIFY(replay);
+        auto* slider = replay->findChild<QSlider*>(QStringLiteral("replaySlider"));
+        QVERIFY(slider);
+        slider->setValue(slider->maximum());
+        QVERIFY(!replay->grab().isNull());  // painted: the grid no longer loops for ever
+        replay->close();
     }
 
     void bundleChooser_listsTheRigsTrialsApartNewestFirst() {

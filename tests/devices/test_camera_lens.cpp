@@ -177,7 +177,13 @@ class TestCameraLens : public QObject {
         QVERIFY(bad.plausibilityProblem().contains("principal point"));
         bad = lens;
         bad.distortion[0] = -1.5;  // folds inside the image
-        QVERIFY(bad.plausibilityProblem().contains("folds"));
+        QVERIFY(bad.plausibilityProblem().contains("the distortion (k1 -1.5"));
+        bad = lens;
+        bad.distortion[2] = 0.4;  // p1: the tangential terms fold it, the radial ones do not
+        QVERIFY2(bad.plausibilityProblem().contains("the tangential distortion (p1 0.4"),
+                 qPrintable(bad.plausibilityProblem()));
+        bad = lens;
+        bad.distortion[0] = -1.5;
         QVERIFY(!CameraLens::fromJson("[]", &error));
         QVERIFY(error.contains("not camera intrinsics"));
         QVERIFY(!CameraLens::fromJson("{\"camera_matrix\": [1, 2]}", &error));

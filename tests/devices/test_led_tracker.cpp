@@ -69,6 +69,19 @@ class TestLedTracker : public QObject {
                 strip.push_back({camera.toImage({x, y}), {x, y}});
             }
         QVERIFY2(FloorCalibration::fit(strip, &error), qPrintable(error));
+        // One mistyped floor coordinate (25 for 2.5) among five good points: named, with where
+        // the others put it.
+        std::vector<CalibrationPoint> six;
+        for (const cv::Point2d p : {cv::Point2d(0.0, -1.0), cv::Point2d(3.0, -1.0),
+                                    cv::Point2d(2.5, 0.3), cv::Point2d(0.0, 1.2),
+                                    cv::Point2d(3.0, 1.2), cv::Point2d(1.0, 0.3)}) {
+            six.push_back({camera.toImage(p), p});
+        }
+        six[2].floor.x = 25.0;
+        QVERIFY(!FloorCalibration::fit(six, &error));
+        QVERIFY2(error.contains("calibration point 3") && error.contains("does not fit the others") &&
+                     error.contains("put it at (2.500, 0.300) m"),
+                 qPrintable(error));
         // A point on the floor at 1e300 m, or in the image at 1e300 px: refused by number.
         std::vector<CalibrationPoint> far = points;
         far[3].floor.x = 1e300;

@@ -209,7 +209,9 @@ class TestPlantParameters : public QObject {
             {QByteArray("{\"plant\": \"slidecar\", \"params\": {}}"), {"unknown key \"params\""}},
             {QByteArray("{\"plant\": \"slidecar\"}"), {"\"parameters\" is missing"}},
             {QByteArray("{\"plant\": \"slidecar\", \"version\": 7, \"parameters\": {}}"),
-             {"version 7"}},
+             {"version 7 is not one this build reads (it reads version 1)"}},
+            {QByteArray("{\"plant\": \"slidecar\", \"version\": \"1\", \"parameters\": {}}"),
+             {"\"version\" must be the number 1, not the text \"1\""}},
         };
         for (const Case& c : cases) {
             QString error;
