@@ -13,7 +13,9 @@ namespace prisca::app::cli {
 
 namespace {
 // What one simulation may take. A row of states and actions is kept for every control step:
-// a million rows of a 10-number plant is 80 MB. The physics: KMAXPHYS.
+// a million rows of a 10-number plant is 80 MB. The physics: 2 x 10^6 steps took 2.6 s
+// (aircraft), 2.7 s (slide-car) and 5.2 s (acrobot) on one core of the lab's 2-core machine
+// while a build ran on the other, so 2 x 10^7 stays under a minute.
 constexpr int kMaxSteps = 1'000'000;
 constexpr long long kMaxPhysicsSteps = 20'000'000;
 constexpr int kMaxPhysicsSeconds = 60;
