@@ -6,7 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-targets=(demonstration_csv run_log session_json calibration_json rc_decoder cli_options calibration_points)
+targets=(demonstration_csv run_log session_json calibration_json rc_decoder cli_options calibration_points
+         trial_bundle)
 if [ $# -gt 0 ]; then
     for t in "$@"; do
         [[ " ${targets[*]} " == *" $t "* ]] || { echo "no fuzz target '$t' (one of: ${targets[*]})" >&2; exit 2; }
