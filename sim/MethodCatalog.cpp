@@ -919,6 +919,26 @@ const MethodParameter& mpcTube() {
     return p;
 }
 
+const MethodParameter& mpcSpinGuard() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.spin-slip", QT_TRANSLATE_NOOP("MethodParameter", "Spin guard"), "deg", 0.0, 90.0,
+            0,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "How far the side-slip angle may stray from the demonstration's "
+                              "on the way into the slide before the fallback law finishes the "
+                              "trial (0: no guard)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.spinSideSlip * 180.0 / M_PI); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.spinSideSlip = v[0] * M_PI / 180.0;
+            // 0 switches the whole guard off, the yaw rate's bound too.
+            f.mpc.spinYawRate = v[0] == 0.0 ? 0.0 : MpcParameters{}.spinYawRate;
+        };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcRefit() {
     static const MethodParameter p = [] {
         MethodParameter p = onOff(
@@ -1124,7 +1144,7 @@ std::vector<MethodSpec> makeCatalog() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcRefit()};
+    s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcSpinGuard(), mpcRefit()};
     all.push_back(s);
     s = entry("oracle", "LIMIT (oracle)", &makeOracle);
     s.limit = true;

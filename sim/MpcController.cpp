@@ -77,6 +77,18 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
     plannerParameters_.maxCorrection = parameters_.maxCorrection;
     plannerParameters_.trackingScale = parameters_.trackingScale;
     record_.action.setZero(problem_.demonstration->actionDimension());
+    if (problem_.deviation.bodyVelocity) {
+        // A spin begins on the way into the slide; past the demonstration's fastest turn the
+        // car is parking, and a slide there (a counter-slide as it settles, a car that lags
+        // its demonstration) is the plan's to finish.
+        const int yawRate = problem_.deviation.bodyVelocity->yawRate;
+        const Eigen::MatrixXd& states = problem_.demonstration->states;
+        for (Eigen::Index j = 0; j < states.rows(); ++j) {
+            if (std::abs(states(j, yawRate)) > std::abs(states(spinUntil_, yawRate))) {
+                spinUntil_ = static_cast<int>(j);
+            }
+        }
+    }
     reset(core::ResetMode::Cold);
 }
 
@@ -99,6 +111,8 @@ MpcController::MpcController(const MpcController& other)
       fallbackReason_(other.fallbackReason_),
       fallbackStep_(other.fallbackStep_),
       strikes_(other.strikes_),
+      spinStrikes_(other.spinStrikes_),
+      spinUntil_(other.spinUntil_),
       refits_(other.refits_),
       step_(other.step_),
       record_(other.record_) {
@@ -183,6 +197,7 @@ void MpcController::reset(core::ResetMode mode) {
     actions_.clear();
     step_ = 0;
     strikes_ = 0;
+    spinStrikes_ = 0;
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
@@ -198,6 +213,63 @@ void MpcController::reset(core::ResetMode mode) {
 int MpcController::tubeSteps() const {
     return std::max(1, static_cast<int>(std::lround(parameters_.tubeSeconds /
                                                     problem_.demonstration->dt)));
+}
+
+QString MpcController::spinOf(const Eigen::VectorXd& observation) const {
+    if (!problem_.deviation.bodyVelocity) {
+        return {};
+    }
+    const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+    const double forward = observation[v.forward];
+    const double lateral = observation[v.lateral];
+    if (!(std::hypot(forward, lateral) > parameters_.spinSpeed)) {
+        return {};
+    }
+    const double yawRate = observation[v.yawRate];
+    const double slip = std::atan2(lateral, std::abs(forward));
+    // The demonstration near this time (its own pace may differ by the window).
+    const core::Demonstration& demo = *problem_.demonstration;
+    const int k = step_ - latency_;
+    if (k > spinUntil_) {
+        return {};  // past the demonstration's fastest turn: the car is parking
+    }
+    const int w = std::max(0, static_cast<int>(std::lround(parameters_.spinWindow / demo.dt)));
+    double nearestRate = std::numeric_limits<double>::infinity();
+    double nearestSlip = std::numeric_limits<double>::infinity();
+    double demoRate = 0.0;
+    double demoSlip = 0.0;
+    for (int j = std::max(0, k - w); j <= std::min(demo.length() - 1, k + w); ++j) {
+        const double r = demo.states(j, v.yawRate);
+        const double speed = std::hypot(demo.states(j, v.forward), demo.states(j, v.lateral));
+        const double b = speed > 0.05 ? std::atan2(demo.states(j, v.lateral),
+                                                   std::abs(demo.states(j, v.forward)))
+                                      : 0.0;
+        if (std::abs(yawRate - r) < nearestRate) {
+            nearestRate = std::abs(yawRate - r);
+            demoRate = r;
+        }
+        if (std::abs(slip - b) < nearestSlip) {
+            nearestSlip = std::abs(slip - b);
+            demoSlip = b;
+        }
+    }
+    if (!std::isfinite(nearestRate)) {
+        return {};  // past the demonstration's end
+    }
+    if (parameters_.spinYawRate > 0.0 && nearestRate > parameters_.spinYawRate) {
+        return QStringLiteral("a yaw rate of %1 deg/s where the demonstration had %2 (bound %3)")
+            .arg(yawRate * 180.0 / M_PI, 0, 'f', 0)
+            .arg(demoRate * 180.0 / M_PI, 0, 'f', 0)
+            .arg(parameters_.spinYawRate * 180.0 / M_PI, 0, 'f', 0);
+    }
+    if (parameters_.spinSideSlip > 0.0 && nearestSlip > parameters_.spinSideSlip) {
+        return QStringLiteral("a side-slip angle of %1 deg where the demonstration had %2 "
+                              "(bound %3)")
+            .arg(slip * 180.0 / M_PI, 0, 'f', 0)
+            .arg(demoSlip * 180.0 / M_PI, 0, 'f', 0)
+            .arg(parameters_.spinSideSlip * 180.0 / M_PI, 0, 'f', 0);
+    }
+    return {};
 }
 
 void MpcController::fallBack(const QString& reason) {
@@ -252,6 +324,15 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
                          .arg(heading * 180.0 / M_PI, 0, 'f', 1)
                          .arg(100.0 * parameters_.tubePosition, 0, 'f', 1)
                          .arg(parameters_.tubeHeading * 180.0 / M_PI, 0, 'f', 1));
+        }
+    }
+    if (mode_ == MpcMode::Planning) {
+        const QString spin = spinOf(observations_.back());
+        spinStrikes_ = spin.isEmpty() ? 0 : spinStrikes_ + 1;
+        if (spinStrikes_ >= parameters_.tubeStrikes) {
+            fallBack(QStringLiteral("a spin the plan did not intend at %1 s: %2")
+                         .arg(k * problem_.demonstration->dt, 0, 'f', 2)
+                         .arg(spin));
         }
     }
     if (mode_ == MpcMode::Fallback) {

@@ -48,6 +48,17 @@ struct MpcParameters {
     double tubeHeading = 0.6;
     double tubeSeconds = 0.4;
     int tubeStrikes = 3;
+    /// The spin guard: up to the demonstration's fastest turn, a measured yaw rate this far
+    /// [rad/s] or a side-slip angle this far [rad] from every one the demonstration had within
+    /// `spinWindow` [s] of the same time, on `tubeStrikes` steps in a row while the car moves
+    /// faster than `spinSpeed` [m/s], and the trial is finished by the fallback law. A car
+    /// that enters the slide already sliding the wrong way (the model's Coulomb tyres held on
+    /// the straight where the car's did not) spins 2-4 m away under the plan; the tube cannot
+    /// see it, as the model predicts a spin once it has begun. 0 switches a check off.
+    double spinYawRate = 1.5;
+    double spinSideSlip = 0.17453292519943295;  // 10 deg
+    double spinWindow = 0.3;
+    double spinSpeed = 1.0;
     /// The model's position RMS over its data's segments [m] above which it is not planned
     /// through at all (the fallback from the start).
     double poorFit = 0.10;
@@ -115,6 +126,8 @@ class MpcController : public core::Controller {
     void predictInto(Plant& model, int from, int count) const;
     void refitOnLastTrial();
     int tubeSteps() const;
+    /// The spin guard's verdict on a measured state: empty, or why it is a spin.
+    QString spinOf(const Eigen::VectorXd& observation) const;
 
     core::TrackingProblem problem_;
     MpcParameters parameters_;
@@ -138,6 +151,8 @@ class MpcController : public core::Controller {
     QString fallbackReason_;
     int fallbackStep_ = -1;
     int strikes_ = 0;
+    int spinStrikes_ = 0;
+    int spinUntil_ = 0;  // the demonstration's step of fastest turn: the guard's last
     int refits_ = 0;
     int step_ = 0;
     core::ControlStep record_;

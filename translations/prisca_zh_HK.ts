@@ -420,41 +420,51 @@
     </message>
     <message>
         <location filename="../sim/MethodCatalog.cpp" line="925"/>
+        <source>Spin guard</source>
+        <translation>打轉防護</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="927"/>
+        <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
+        <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/MethodCatalog.cpp" line="945"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="926"/>
+        <location filename="../sim/MethodCatalog.cpp" line="946"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="965"/>
+        <location filename="../sim/MethodCatalog.cpp" line="985"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="967"/>
+        <location filename="../sim/MethodCatalog.cpp" line="987"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="988"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1008"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="990"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1010"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1005"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1025"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1006"/>
+        <location filename="../sim/MethodCatalog.cpp" line="1026"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>

@@ -137,6 +137,59 @@ class TestMpc : public QObject {
         QVERIFY(compared > 10);
     }
 
+    // The spin guard: on the way into the slide, a measured side slip far from every one the
+    // demonstration had near that time hands the trial to the fallback law; the same slip
+    // past the demonstration's fastest turn, or with the guard off, does not.
+    void spinGuard_onTheWayIn_only() {
+        Setup setup;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        const core::Demonstration& demo = *setup.demonstration;
+        int peak = 0;
+        for (int j = 0; j < demo.length(); ++j) {
+            if (std::abs(demo.states(j, 5)) > std::abs(demo.states(peak, 5))) {
+                peak = j;
+            }
+        }
+        // The demonstration's own states, but from step `from` on the car slides sideways at
+        // 30 deg of side slip (the body velocity turned, its speed kept).
+        const auto drive = [&](MpcController& mpc, int from, int steps) {
+            mpc.reset();
+            for (int k = 0; k < steps && k < demo.length(); ++k) {
+                Eigen::VectorXd state = demo.states.row(k).transpose();
+                if (k >= from) {
+                    const double speed = std::max(2.0, std::hypot(state[3], state[4]));
+                    state[3] = speed * std::cos(0.52);
+                    state[4] = speed * std::sin(0.52);
+                    state[5] = demo.states(k, 5);
+                }
+                mpc.step(state);
+            }
+        };
+        const int before = std::max(1, peak / 2);
+        QVERIFY(peak > 10);
+        auto mpc = setup.mpc();
+        drive(*mpc, before, before + 6);
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        QVERIFY2(mpc->fallbackReason().contains(QLatin1String("spin")) &&
+                     mpc->fallbackReason().contains(QLatin1String("side-slip")),
+                 qPrintable(mpc->fallbackReason()));
+        QVERIFY(mpc->fallbackStep() >= before &&
+                mpc->fallbackStep() < before + setup.profile.mpc.tubeStrikes + 1);
+
+        auto late = setup.mpc();
+        drive(*late, peak + 1, peak + 8);
+        QVERIFY2(late->mode() == MpcMode::Planning, qPrintable(late->fallbackReason()));
+
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.spin-slip=0"));
+        QCOMPARE(setup.profile.mpc.spinYawRate, 0.0);
+        auto off = setup.mpc();
+        drive(*off, before, before + 6);
+        QVERIFY2(off->mode() == MpcMode::Planning, qPrintable(off->fallbackReason()));
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.spin-slip=10"));
+        QVERIFY(setup.profile.mpc.spinYawRate > 0.0);
+    }
+
     // A model that fits its data worse than the bound is not planned through at all.
     void poorFit_fallsBackFromTheStart() {
         Setup setup;
