@@ -171,6 +171,19 @@ const PreTrialItem* PreTrialCheck::find(const QString& key) const {
     return nullptr;
 }
 
+QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString& label) {
+    if (simulationOnly) {
+        return Text::tr("The oracle plans on copies of a simulated plant; a real car has none. "
+                        "Run it in simulation, or choose another method.");
+    }
+    if (trainsOffline) {
+        return Text::tr("%1 trains offline in simulation; run it there, or choose another "
+                        "method.")
+            .arg(label);
+    }
+    return {};
+}
+
 PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
     PreTrialCheck check;
     auto& items = check.items;
@@ -234,12 +247,10 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
         task = Text::tr("The rig needs a demonstration of a planar vehicle.");
     } else if (in.plant->name != QLatin1String("slidecar")) {
         task = Text::tr("The rig drives a slide-car: choose the slide-car as the target.");
-    } else if (in.methodSimulationOnly) {
-        task = Text::tr("The oracle plans on copies of a simulated plant; a real car has none. "
-                        "Run it in simulation, or choose another method.");
-    } else if (in.methodTrainsOffline) {
-        task = Text::tr("%1 trains offline in simulation; run it there, or choose another method.")
-                   .arg(in.methodLabel);
+    } else if (const QString method = methodRigProblem(in.methodSimulationOnly,
+                                                      in.methodTrainsOffline, in.methodLabel);
+               !method.isEmpty()) {
+        task = method;
     } else if (in.methodPlansThroughModel && !in.modelIdentified) {
         task = Text::tr("%1 plans through the car's model, and none is identified yet: identify "
                         "the car first (the Model tab; prisca-cli identify, then --model).")

@@ -77,6 +77,11 @@ struct PreTrialCheck {
 /// line says the car is stopped only by E-STOP and the lost-track guard then.
 PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& inputs);
 
+/// Whether a method may drive a real car, and why not (empty: it may): the rig's one rule, for
+/// the pre-trial check and for `prisca-cli rig`'s refusal before any device is opened. The
+/// oracle plans on the simulator itself; a method that trains offline runs in simulation.
+QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString& label);
+
 /// The demonstration's points (and lot) kept this far inside the image edges [px]: the car's
 /// LEDs must stay in view around its centre.
 inline constexpr double kViewMarginPx = 20.0;

@@ -373,25 +373,24 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         } catch (const std::exception& e) {
             return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));
         }
-        // Latency compensation as in simulation (EpisodeStepper does the same), from the run's
-        // set-up: the sensor latency the profile assumes for the camera.
-        controller->setLatencyCompensation(
-            l.loopLatency ? std::clamp(static_cast<int>(std::lround(
-                                           *l.loopLatency / setup.task().demonstration->dt)),
-                                       0, 40)
-                          : setup.episode().compensatedLatencySteps());
+        // Latency as in simulation (EpisodeStepper follows the same rule): the loop's measured
+        // latency where there is one, else the sensor latency the profile assumes for the
+        // camera; compensated by the controller only where the tuning says so and the pose
+        // filter does not predict across it already (never twice).
+        const double dt = setup.task().demonstration->dt;
+        const sim::EpisodeSettings episode =
+            sim::withMeasuredLatency(setup.episode(), l.loopLatency, dt);
+        controller->setLatencyCompensation(episode.compensatedLatencySteps());
         l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
                                                     std::move(controller), channels_, link_);
         l.loop->setLostTrackDistance(setup.profile().lostTrackDistance);
         if (poseFilter) {
-            // Pose-only frames, as old as the sensor latency the profile assumes for the camera;
-            // the controller was told latency 0 (compensatedLatencySteps) since the filter
-            // predicts to each frame's arrival.
+            // Pose-only frames, as old as the loop's latency (above); with the filter
+            // predicting, the controller was told latency 0 (compensatedLatencySteps).
             try {
-                l.loop->usePoseFilter(setup.episode().poseFilterParameters,
-                                      setup.episode().measurement.latencySteps *
-                                          setup.task().demonstration->dt,
-                                      setup.episode().poseFilterPredicts);
+                l.loop->usePoseFilter(episode.poseFilterParameters,
+                                      episode.measurement.latencySteps * dt,
+                                      episode.poseFilterPredicts);
             } catch (const std::exception& e) {
                 l.loop.reset();
                 return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));

@@ -3,6 +3,7 @@
 #include "OracleController.h"
 
 #include <algorithm>
+#include <cmath>
 #include <ctime>
 #include <stdexcept>
 
@@ -18,6 +19,15 @@ double threadCpuSeconds() {
 }
 
 }  // namespace
+
+EpisodeSettings withMeasuredLatency(EpisodeSettings settings, std::optional<double> seconds,
+                                    double controlPeriod, int maxSteps) {
+    if (seconds && std::isfinite(*seconds) && controlPeriod > 0.0) {
+        settings.measurement.latencySteps = std::clamp(
+            static_cast<int>(std::lround(std::max(0.0, *seconds) / controlPeriod)), 0, maxSteps);
+    }
+    return settings;
+}
 
 core::PoseFilterParameters poseFilterFor(const PlantInfo& info,
                                          const MeasurementParameters& measurement,

@@ -57,6 +57,14 @@ struct EpisodeSettings {
     }
 };
 
+/// The settings with the sensor's latency replaced by a measured one (a rig's loop latency
+/// from its probe): `seconds` rounded to control steps of `controlPeriod`, at most `maxSteps`;
+/// no measurement (nullopt) leaves them as they are. Everything that follows from the latency,
+/// the controller's compensation (compensatedLatencySteps(): the tuning's switch, none while
+/// the pose filter predicts) and the pose filter's prediction, then follows the one rule.
+EpisodeSettings withMeasuredLatency(EpisodeSettings settings, std::optional<double> seconds,
+                                    double controlPeriod, int maxSteps = 40);
+
 /// The pose filter's parameters for a plant behind a sensor: full-state measurement with the
 /// sensor's noise (each std at least 1e-6 of its unit, so a perfect sensor is simply believed),
 /// its latency, the control period, and the plant's pose and velocity indices; the other fields

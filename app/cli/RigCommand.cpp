@@ -87,11 +87,11 @@ int rigCommand(const QStringList& arguments) {
         throw UsageError(QStringLiteral("unknown method '%1' (one of: %2)")
                              .arg(method, sim::MethodCatalog::ids().join(' ')));
     }
-    if (spec->simulationOnly || spec->trainsOffline()) {
-        throw UsageError(QStringLiteral("%1 cannot run on a rig (%2)")
-                             .arg(method, spec->simulationOnly
-                                              ? QStringLiteral("it plans on the simulator itself")
-                                              : QStringLiteral("it trains offline first")));
+    // The rig's own rule (the pre-trial check's), said before any device is opened.
+    if (const QString problem =
+            rig::methodRigProblem(spec->simulationOnly, spec->trainsOffline(), spec->label);
+        !problem.isEmpty()) {
+        throw UsageError(QStringLiteral("--method %1: %2").arg(method, problem));
     }
     const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
     sim::RecordingConditions conditions;  // the scripted operator drives the same car

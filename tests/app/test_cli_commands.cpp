@@ -14,6 +14,7 @@
 #include "core/FileIo.h"
 #include "devices/PseudoTerminal.h"
 #include "devices/SyntheticCamera.h"
+#include "rig/PreTrialCheck.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 
@@ -633,8 +634,21 @@ class TestCliCommands : public QObject {
         const double miss = t.value("finalPositionErrorCm").toDouble(-1.0);
         QVERIFY2(miss >= 0.0 && miss < 50.0, qPrintable(QString::number(miss)));
         // What a rig cannot run, and the real rig, are refused with the reason.
+        // The rig's one rule, in the pre-trial check's words, before any device is opened.
         CliResult bad = cli({"rig", "--virtual", "--method", "oracle"});
-        QVERIFY(bad.exitCode != 0 && bad.err.contains("simulator"));
+        QVERIFY2(bad.exitCode == 2 &&
+                     bad.err.contains(QStringLiteral("--method oracle: ") +
+                                      prisca::rig::methodRigProblem(true, false, QString())),
+                 qPrintable(bad.err));
+        for (const QString& id : prisca::sim::MethodCatalog::ids()) {
+            const prisca::sim::MethodSpec* spec = prisca::sim::MethodCatalog::find(id);
+            if (spec->trainsOffline() && !spec->simulationOnly) {
+                bad = cli({"rig", "--virtual", "--method", id});
+                QVERIFY2(bad.exitCode == 2 && bad.err.contains(prisca::rig::methodRigProblem(
+                                                  false, true, spec->label)),
+                         qPrintable(bad.err));
+            }
+        }
         bad = cli({"rig", "--trials", "1"});
         QVERIFY(bad.exitCode != 0 && bad.err.contains("--virtual"));
     }

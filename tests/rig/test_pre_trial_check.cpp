@@ -136,9 +136,15 @@ class TestPreTrialCheck : public QObject {
         PreTrialInputs in = ready();
         in.methodSimulationOnly = true;  // the oracle
         QVERIFY(!item(rig::evaluatePreTrialCheck(in), "task").ok);
+        // The rig's one rule for methods, which `prisca-cli rig` says too.
+        QCOMPARE(item(rig::evaluatePreTrialCheck(in), "task").detail,
+                 rig::methodRigProblem(true, false, in.methodLabel));
         in = ready();
         in.methodTrainsOffline = true;
         QVERIFY(!item(rig::evaluatePreTrialCheck(in), "task").ok);
+        QCOMPARE(item(rig::evaluatePreTrialCheck(in), "task").detail,
+                 rig::methodRigProblem(false, true, in.methodLabel));
+        QVERIFY(rig::methodRigProblem(false, false, in.methodLabel).isEmpty());
         in = ready();
         in.plant = sim::PlantCatalog::describe(QStringLiteral("diffdrive"));
         QVERIFY(!item(rig::evaluatePreTrialCheck(in), "task").ok);

@@ -169,6 +169,41 @@ class TestEpisodeRunner : public QObject {
         QCOMPARE(stepped.meanCost, whole.meanCost);
     }
 
+    // A rig's measured loop latency replaces the sensor's and follows the same rule: the
+    // controller compensates it where the tuning says so, never while the pose filter predicts
+    // across it (the filter then predicts by the measured latency).
+    void measuredLatency_oneRuleForTheCompensation() {
+        const SlideCarSetup setup;
+        const double dt = setup.demo->dt;
+        EpisodeSettings base = setup.profile.episode(*setup.demo, 1.0, 1.0);
+        QVERIFY(base.compensateLatency);
+        QVERIFY(base.measurement.latencySteps != 5);
+        const EpisodeSettings none = withMeasuredLatency(base, std::nullopt, dt);
+        QCOMPARE(none.measurement.latencySteps, base.measurement.latencySteps);
+        QCOMPARE(none.compensatedLatencySteps(), base.compensatedLatencySteps());
+        const EpisodeSettings measured = withMeasuredLatency(base, 5.2 * dt, dt);
+        QCOMPARE(measured.measurement.latencySteps, 5);
+        QCOMPARE(measured.compensatedLatencySteps(), 5);
+        // The tuning's switch off: told 0, measured or not.
+        EpisodeSettings off = base;
+        off.compensateLatency = false;
+        QCOMPARE(withMeasuredLatency(off, 5.2 * dt, dt).compensatedLatencySteps(), 0);
+        // The filter predicting: the controller is told 0, the filter's latency is the measured.
+        EpisodeSettings filtered = base;
+        filtered.poseFilter = true;
+        filtered.poseFilterPredicts = true;
+        const EpisodeSettings predicted = withMeasuredLatency(filtered, 5.2 * dt, dt);
+        QCOMPARE(predicted.compensatedLatencySteps(), 0);
+        QCOMPARE(predicted.measurement.latencySteps, 5);
+        filtered.poseFilterPredicts = false;
+        QCOMPARE(withMeasuredLatency(filtered, 5.2 * dt, dt).compensatedLatencySteps(), 5);
+        // Bounded, and a measurement that is not a number changes nothing.
+        QCOMPARE(withMeasuredLatency(base, 100.0, dt).measurement.latencySteps, 40);
+        QCOMPARE(withMeasuredLatency(base, -1.0, dt).measurement.latencySteps, 0);
+        QCOMPARE(withMeasuredLatency(base, std::nan(""), dt).measurement.latencySteps,
+                 base.measurement.latencySteps);
+    }
+
     void poseFilter_controllerSeesTheEstimateOfNow() {
         // The profile's episode carries the filter's parameters (the sensor's noise and latency,
         // densities from the demonstration); off by default. On, the controller is told latency
