@@ -171,6 +171,14 @@ const PreTrialItem* PreTrialCheck::find(const QString& key) const {
     return nullptr;
 }
 
+QString emergencyProblem(bool failsafeHeld) {
+    return failsafeHeld
+               ? Text::tr("The program was stopped and continued; the car went without "
+                          "commands meanwhile, so the link holds failsafe: reset E-STOP to "
+                          "release it.")
+               : Text::tr("E-STOP is latched: reset it before a trial.");
+}
+
 QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString& label) {
     if (simulationOnly) {
         return Text::tr("The oracle plans on copies of a simulated plant; a real car has none. "
@@ -238,7 +246,7 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
     items.push_back(latencyItem(in));
     items.push_back(in.emergencyLatched
                         ? item("estop", Text::tr("E-STOP"), false,
-                               Text::tr("E-STOP is latched: reset it before a trial."))
+                               emergencyProblem(in.failsafeHeld))
                         : item("estop", Text::tr("E-STOP"), true, Text::tr("ready")));
     // The task: a slide-car's demonstration (the rig's estimator gives its state) and a method
     // that can run on a real car.

@@ -36,6 +36,9 @@ struct PreTrialInputs {
     LatencySource latencySource = LatencySource::Assumed;
     double injectedCameraDelay = 0.0;  ///< the virtual camera's added delay [s]
     bool emergencyLatched = false;     ///< E-STOP (the window's, through the link's latch)
+    /// Of the latch: the process was stopped and continued, and holds failsafe until E-STOP is
+    /// reset (devices::processfailsafe::held()).
+    bool failsafeHeld = false;
     devices::Geofence fence;
     /// The run: its demonstration (the path and the lot) and its target; null: none.
     std::shared_ptr<const core::Demonstration> demonstration;
@@ -81,6 +84,10 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& inputs);
 /// the pre-trial check and for `prisca-cli rig`'s refusal before any device is opened. The
 /// oracle plans on the simulator itself; a method that trains offline runs in simulation.
 QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString& label);
+
+/// Why no trial may start while the link's E-STOP latch is on, naming its cause: the
+/// operator's E-STOP, or failsafe held after the process was stopped and continued.
+QString emergencyProblem(bool failsafeHeld);
 
 /// The demonstration's points (and lot) kept this far inside the image edges [px]: the car's
 /// LEDs must stay in view around its centre.

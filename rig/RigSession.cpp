@@ -295,6 +295,7 @@ PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
     in.link = linkStatus_;
     in.injectedCameraDelay = injectedCameraDelay_;
     in.emergencyLatched = link_.emergencyLatched();
+    in.failsafeHeld = devices::processfailsafe::held();
     {
         std::lock_guard<std::mutex> lock(mutex_);
         in.loopLatency = loop_->loopLatency;
@@ -357,7 +358,7 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         return fail(tr("The latency is being measured."));
     }
     if (link_.emergencyLatched()) {
-        return fail(tr("E-STOP is latched: reset it before a trial."));
+        return fail(emergencyProblem(devices::processfailsafe::held()));
     }
     if (l.recording) {
         return fail(tr("Stop driving first."));

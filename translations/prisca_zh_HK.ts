@@ -4278,158 +4278,163 @@ Do you want to replace it?</source>
         <translation>路徑和泊車位都在畫面內</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="191"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="192"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="199"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="200"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="191"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="199"/>
         <source>running</source>
         <translation>運行中</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="192"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="200"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="193"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="197"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="201"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="205"/>
         <source>Car</source>
         <translation>車</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="194"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="202"/>
         <source>the virtual car, put at the start by each trial</source>
         <translation>虛擬車，每次試驗放回起點</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="196"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="204"/>
         <source>in view</source>
         <translation>在畫面內</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="198"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="206"/>
         <source>The camera does not see the car: put it in view with its LEDs on.</source>
         <translation>攝影機看不到車：請把車放在畫面內並開啟其 LED。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="202"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="205"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="209"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="211"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="210"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="213"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="217"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="219"/>
         <source>Calibration</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="203"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="211"/>
         <source>the virtual camera&apos;s</source>
         <translation>虛擬攝影機的校準</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="206"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="214"/>
         <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera or open its calibration.</source>
         <translation>地面校準屬於虛擬實機，不屬於此攝影機：請校準此攝影機或打開其校準檔。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="212"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="220"/>
         <source>%1 points, RMS %2 mm</source>
         <translation>%1 個點，均方根 %2 毫米</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="217"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="219"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="224"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="225"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="227"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="232"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="217"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="225"/>
         <source>none needed (virtual)</source>
         <translation>毋須（虛擬）</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="220"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="228"/>
         <source>fx %1 px, k1 %2</source>
         <translation>fx %1 像素，k1 %2</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="225"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="233"/>
         <source>No lens: fit the camera&apos;s intrinsics from board views or open them (a wide lens bends the floor by centimetres at the edges).</source>
         <translation>沒有鏡頭參數：請由棋盤視圖擬合攝影機內參或打開內參檔（廣角鏡頭在邊緣會令地面偏差數厘米）。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="230"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="233"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="236"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="238"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="241"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="244"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="231"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="239"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器鏈路。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="234"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="242"/>
         <source>The link reports an error: %1</source>
         <translation>鏈路報告錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="236"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="244"/>
         <source>connected</source>
         <translation>已連接</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="240"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="242"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="248"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="250"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="241"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="179"/>
         <source>E-STOP is latched: reset it before a trial.</source>
         <translation>緊急停止已鎖定：試驗前請重設。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="242"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="250"/>
         <source>ready</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="247"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="255"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實機需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="249"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="257"/>
         <source>The rig drives a slide-car: choose the slide-car as the target.</source>
         <translation>實機駕駛的是漂移車：請選擇漂移車作為目標。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="176"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="184"/>
         <source>The oracle plans on copies of a simulated plant; a real car has none. Run it in simulation, or choose another method.</source>
         <translation>預言者在模擬對象的副本上規劃；真車沒有副本。請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="180"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="176"/>
+        <source>The program was stopped and continued; the car went without commands meanwhile, so the link holds failsafe: reset E-STOP to release it.</source>
+        <translation>程式曾被暫停後再繼續；其間車輛沒有收到指令，因此連線維持在安全狀態：請重設緊急停止以解除。</translation>
+    </message>
+    <message>
+        <location filename="../rig/PreTrialCheck.cpp" line="188"/>
         <source>%1 trains offline in simulation; run it there, or choose another method.</source>
         <translation>%1 在模擬中離線訓練；請在模擬中運行，或選擇其他方法。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="255"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="263"/>
         <source>%1 plans through the car&apos;s model, and none is identified yet: identify the car first (the Model tab; prisca-cli identify, then --model).</source>
         <translation>%1 須經車輛的模型規劃，但尚未辨識任何模型：請先辨識車輛（「模型」分頁；或 prisca-cli identify，再加 --model）。</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="259"/>
-        <location filename="../rig/PreTrialCheck.cpp" line="261"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="267"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="269"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../rig/PreTrialCheck.cpp" line="260"/>
+        <location filename="../rig/PreTrialCheck.cpp" line="268"/>
         <source>%1 on the slide-car</source>
         <translation>%1 駕駛漂移車</translation>
     </message>
@@ -4452,89 +4457,84 @@ Do you want to replace it?</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="317"/>
+        <location filename="../rig/RigSession.cpp" line="318"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="323"/>
+        <location filename="../rig/RigSession.cpp" line="324"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="345"/>
+        <location filename="../rig/RigSession.cpp" line="346"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="354"/>
+        <location filename="../rig/RigSession.cpp" line="355"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="357"/>
+        <location filename="../rig/RigSession.cpp" line="358"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="360"/>
-        <source>E-STOP is latched: reset it before a trial.</source>
-        <translation>緊急停止已鎖定：試驗前請先重設。</translation>
-    </message>
-    <message>
-        <location filename="../rig/RigSession.cpp" line="363"/>
-        <location filename="../rig/RigSession.cpp" line="786"/>
+        <location filename="../rig/RigSession.cpp" line="364"/>
+        <location filename="../rig/RigSession.cpp" line="787"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="374"/>
-        <location filename="../rig/RigSession.cpp" line="396"/>
+        <location filename="../rig/RigSession.cpp" line="375"/>
+        <location filename="../rig/RigSession.cpp" line="397"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="617"/>
+        <location filename="../rig/RigSession.cpp" line="618"/>
         <source>the process was stopped and continued: failsafe held</source>
         <translation>程式曾被暫停後再繼續：保持失效保護</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="672"/>
+        <location filename="../rig/RigSession.cpp" line="673"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="675"/>
+        <location filename="../rig/RigSession.cpp" line="676"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="684"/>
+        <location filename="../rig/RigSession.cpp" line="685"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="746"/>
+        <location filename="../rig/RigSession.cpp" line="747"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="754"/>
+        <location filename="../rig/RigSession.cpp" line="755"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="783"/>
+        <location filename="../rig/RigSession.cpp" line="784"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="789"/>
+        <location filename="../rig/RigSession.cpp" line="790"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="802"/>
+        <location filename="../rig/RigSession.cpp" line="803"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>

@@ -132,6 +132,24 @@ class TestPreTrialCheck : public QObject {
         QVERIFY(!item(rig::evaluatePreTrialCheck(in), "latency").ok);
     }
 
+    // E-STOP blocks, and the line names its cause: the operator's latch, or failsafe held
+    // after the process was stopped and continued.
+    void emergency_blocksAndNamesItsCause() {
+        PreTrialInputs in = ready();
+        QVERIFY(item(rig::evaluatePreTrialCheck(in), "estop").ok);
+        in.emergencyLatched = true;
+        QVERIFY(!item(rig::evaluatePreTrialCheck(in), "estop").ok);
+        QCOMPARE(item(rig::evaluatePreTrialCheck(in), "estop").detail,
+                 rig::emergencyProblem(false));
+        in.failsafeHeld = true;
+        const QString held = item(rig::evaluatePreTrialCheck(in), "estop").detail;
+        QCOMPARE(held, rig::emergencyProblem(true));
+        QVERIFY2(held.contains(QLatin1String("stopped and continued")) &&
+                     held.contains(QLatin1String("reset E-STOP")),
+                 qPrintable(held));
+        QVERIFY(!rig::evaluatePreTrialCheck(in).ready());
+    }
+
     void aTaskTheRigCannotRun_blocks() {
         PreTrialInputs in = ready();
         in.methodSimulationOnly = true;  // the oracle
