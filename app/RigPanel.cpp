@@ -735,7 +735,10 @@ void RigPanel::emergencyStop() {
         rig_.cancelLatencyMeasurement();
     }
     showStatus(trialInfo_, tr("Rig trial"), [this] {
-        return tr("E-STOP: the transmitter sends failsafe until E-STOP is reset.");
+        // The latch's cause as the rig's check says it, when it is not the operator's button.
+        return devices::processfailsafe::held()
+                   ? rig::emergencyProblem(true)
+                   : tr("E-STOP: the transmitter sends failsafe until E-STOP is reset.");
     });
 }
 
