@@ -40,7 +40,7 @@ std::vector<double> explainedGate(const MethodTuning& profile,
 // turns on its own command, in either direction) or when switched off.
 // The heading error turns into lateral error at the signed speed, and the steering turns the
 // heading at the signed speed: in reverse both change sign, so a law derived for forward travel
-// keeps its lateral term and must turn its heading terms round (docs/decisions.md).
+// keeps its lateral term and must turn its heading terms round (docs/research-log.md).
 Eigen::MatrixXd reverseSchedule(const MethodTuning& profile,
                                 const core::Demonstration& demonstration) {
     const auto& pose = profile.info.pose;

@@ -61,7 +61,7 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     // Two metres off the path in an arena of a few metres: the car has left the demonstration
     // (a reference stalled on a full-throttle sample, feedback saturated on metres of error)
     // and goes to failsafe instead of driving into the wall (what it cost and saved on the
-    // development cells: docs/decisions.md, "What the profiles' numbers rest on").
+    // development cells: docs/research-log.md, "What the profiles' numbers rest on").
     p.lostTrackDistance = 2.0;
     p.compensateLatency = true;
     p.prisca.horizon = 10;

@@ -78,7 +78,7 @@ struct MethodTuning {
     bool priscaAutomatic = false;
     /// alpha_0 of the automatic defaults, one number for every plant: the fraction of a scalar
     /// Newton step taken per control step (StepSize::normalised), from sweeps on development
-    /// cells (docs/decisions.md, "What the profiles' numbers rest on").
+    /// cells (docs/research-log.md, "What the profiles' numbers rest on").
     static constexpr double automaticStep = 0.0003;
     double priscaAutomaticStep = automaticStep;  ///< the one in use (a method parameter)
     /// The automatic matching window: this much of the demonstration's time [s].

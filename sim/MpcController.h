@@ -35,7 +35,7 @@ struct MpcParameters {
     /// lower (a floor of uneven grip, tyres the model's friction law only approximates: the
     /// side a plan spins out on); 0: the model alone. (A third model with more grip as well
     /// cost half again the planning time, over the real-time budget, for no dependable gain on
-    /// the development cells: docs/decisions.md.)
+    /// the development cells: docs/research-log.md.)
     double gripSpread = 0.15;
     /// Physics steps per control step of the model (it is identified with the same), fewer
     /// than the simulator's for speed.
