@@ -18,23 +18,24 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <optional>
+#include <vector>
 
 namespace prisca::app::cli {
 
 namespace {
+
 // A command within two pulse microseconds of centre (of +-512) counts as neutral: the
 // protocols' channel steps are finer (CRSF about 0.6 us).
 constexpr double kNeutralSlack = 2.0 / 512.0;
-}  // namespace
 
-int rigCommand(const QStringList& arguments) {
-    CommandLine line(
-        QStringLiteral("rig"),
-        QStringLiteral(
-            "Trials on the rig. With --virtual, the real rig's chain with no hardware: a "
-            "simulated car driven through a pseudo-terminal by the transmitter link, "
-            "the synthetic ceiling camera, the LED tracker, the state estimator and the "
-            "controller, in real time."));
+// Waits until `done` holds, the user interrupts (unless `untilInterrupted` is false: the
+// closing wait must see the link closed), or the camera fails; returns `done()`.
+using Wait = std::function<bool(const std::function<bool()>& done, int timeoutMs,
+                                bool untilInterrupted)>;
+
+void declareRigOptions(CommandLine& line) {
     line.addFlag("virtual", "The virtual rig (the only rig this command drives).");
     line.addValue("demo", "Demonstration CSV (default: the scripted one, see --demo-seed).",
                   "file");
@@ -46,8 +47,8 @@ int rigCommand(const QStringList& arguments) {
     line.addValue("seed", "Seed of the trials (the car's start, friction, gains).", "N", "1");
     line.addValue("perturbation", "The simulated car's perturbation level.", "level", "1");
     line.addFlag("measure-latency",
-                  "First measure the loop's latency (throttle steps with the car at rest, the "
-                  "response timed in the camera); the trials then compensate it.");
+                 "First measure the loop's latency (throttle steps with the car at rest, the "
+                 "response timed in the camera); the trials then compensate it.");
     line.addValue("latency-steps", "Steps the latency measurement times.", "N", "5");
     line.addValue("loop-latency",
                   "The loop's latency for the controllers to compensate (a measured value; "
@@ -73,35 +74,25 @@ int rigCommand(const QStringList& arguments) {
     addMethodParameterOptions(line);
     addVerboseOption(line);
     line.addFormat({"text", "json"});
-    if (!line.parse(arguments)) {
-        return 0;
-    }
-    applyVerbosity(line);
-    if (!line.isSet("virtual")) {
-        throw UsageError(QStringLiteral(
-            "rig drives the virtual rig only (give --virtual); the real rig runs in the window"));
-    }
-    const QString method = line.value("method");
+}
+
+// The method named by --method, if the rig may run it (its own rule, the pre-trial check's,
+// said before any device is opened).
+const sim::MethodSpec& rigMethod(const QString& method) {
     const sim::MethodSpec* spec = sim::MethodCatalog::find(method);
     if (!spec) {
         throw UsageError(QStringLiteral("unknown method '%1' (one of: %2)")
                              .arg(method, sim::MethodCatalog::ids().join(' ')));
     }
-    // The rig's own rule (the pre-trial check's), said before any device is opened.
     if (const QString problem =
             rig::methodRigProblem(spec->simulationOnly, spec->trainsOffline(), spec->label);
         !problem.isEmpty()) {
         throw UsageError(QStringLiteral("--method %1: %2").arg(method, problem));
     }
-    const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
-    sim::RecordingConditions conditions;  // the scripted operator drives the same car
-    conditions.parameters = parameters.get();
-    Task task =
-        loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
-                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
-                          conditions);
-    task.plantParameters = parameters;
-    applyMethodParameters(line, task.profile, parameters != nullptr);
+    return *spec;
+}
+
+devices::Geofence fenceOption(const CommandLine& line) {
     devices::Geofence fence;
     if (line.isSet("fence")) {
         QString fenceError;
@@ -123,130 +114,63 @@ int rigCommand(const QStringList& arguments) {
     if (const QString problem = fence.problem(); !problem.isEmpty()) {
         throw UsageError(QStringLiteral("--fence: %1").arg(problem));
     }
-    const int trials = static_cast<int>(line.integer("trials", 0, 1000));
-    const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
-    // The run as the simulation sets it up: the rig's loop takes its controller, settle time,
-    // lost-track distance and latency compensation from here.
-    const auto setup = std::make_shared<const sim::RunSetup>(task, method);
+    return fence;
+}
 
-    // The window's rig session, headless: the virtual car seen by the synthetic camera at the
-    // demonstration's control rate, the link on the car's pseudo-terminal.
-    const core::Demonstration& demo = *task.demonstration;
-    rig::RigSession rig;
-    rig.setGeofence(fence);
-    if (line.isSet("bundle-dir")) {
-        rig.setBundles(line.value("bundle-dir"), line.number("bundle-fps", 0.0, 200.0));
-    }
-    QStringList bundles;
-    int bundleAnswers = 0;  // one per trial, saved or not: a failed bundle is not waited for
-    QObject::connect(&rig, &rig::RigSession::bundleSaved,
-                     [&bundles, &bundleAnswers](const QString& folder, const QString& error) {
-                         ++bundleAnswers;
-                         if (!error.isEmpty()) {
-                             std::fprintf(stderr, "prisca-cli: rig: warning: bundle %s: %s\n",
-                                          qPrintable(folder), qPrintable(error));
-                         } else {
-                             bundles << folder;
-                         }
-                     });
-    rig::CameraRequest camera;
-    camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
-    camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
-    camera.virtualPlant = parameters;
-    camera.virtualCameraDelay = line.number("inject-camera-delay", 0.0, 2000.0) / 1000.0;
-    if (line.isSet("loop-latency")) {
-        rig.setLoopLatency(line.number("loop-latency", 0.0, 1000.0) / 1000.0);
-    }
-    const int latencySteps = static_cast<int>(line.integer("latency-steps", 2, 50));
+// --measure-latency: the loop's latency measured; what it found (empty when interrupted).
+QJsonObject measureLoopLatency(rig::RigSession& rig, const Wait& waitFor, int latencySteps,
+                               double cameraDelay, bool text) {
+    std::optional<rig::LatencyMeasurement> measured;
+    QObject::connect(&rig, &rig::RigSession::latencyMeasured,
+                     [&measured](const rig::LatencyMeasurement& m) { measured = m; });
+    devices::LatencyProbeSettings probe;
+    probe.steps = latencySteps;
+    // A camera delayed on purpose answers that much later: the step waits for it.
+    probe.giveUpAfter += cameraDelay;
     QString error;
-    if (!rig.startCamera(camera, &error)) {
-        throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
+    if (!rig.measureLatency(probe, &error)) {
+        throw UsageError(QStringLiteral("the latency measurement could not start: %1").arg(error));
     }
-    devices::LinkSettings link;
-    link.port = rig.virtualPort();
-    link.failsafe = rig.channels().failsafe();
-    link.sendOnCommand = true;  // a camera frame's command goes out at once
-    rig.connectLink(link);
-    installInterruptHandler();
-    // Waits until `done` holds, the user interrupts (unless the wait is the closing one, which
-    // must see the link closed), or the camera fails (its message).
-    QString cameraError;
-    QObject::connect(&rig, &rig::RigSession::cameraFailed,
-                     [&cameraError](const QString& message) { cameraError = message; });
-    auto waitFor = [&](const std::function<bool()>& done, int timeoutMs,
-                       bool untilInterrupted = true) {
-        QEventLoop loop;
-        QTimer poll;
-        QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
-            if (done() || (untilInterrupted && interrupted()) || !cameraError.isEmpty()) {
-                loop.quit();
-            }
-        });
-        poll.start(10);
-        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-        loop.exec();
-        return done();
-    };
-    if (!waitFor([&] { return rig.linkStatus().connected && rig.lastPose().has_value(); }, 10000)) {
-        throw UsageError(QStringLiteral("the virtual rig could not start: %1")
-                             .arg(!cameraError.isEmpty() ? cameraError
-                                  : !rig.linkStatus().connected
-                                      ? QStringLiteral("the link did not connect")
-                                      : QStringLiteral("the camera saw no car")));
-    }
-    QJsonObject latencyJson;
-    if (line.isSet("measure-latency") && !interrupted()) {
-        std::optional<rig::LatencyMeasurement> measured;
-        QObject::connect(&rig, &rig::RigSession::latencyMeasured,
-                         [&measured](const rig::LatencyMeasurement& m) { measured = m; });
-        devices::LatencyProbeSettings probe;
-        probe.steps = latencySteps;
-        // A camera delayed on purpose answers that much later: the step waits for it.
-        probe.giveUpAfter += camera.virtualCameraDelay;
-        if (!rig.measureLatency(probe, &error)) {
-            throw UsageError(QStringLiteral("the latency measurement could not start: %1")
-                                 .arg(error));
+    printProgress(QStringLiteral("rig: measuring the loop's latency (%1 steps)").arg(latencySteps));
+    waitFor([&] { return measured.has_value(); }, 20000 * latencySteps, true);
+    printProgress(QString());
+    if (!measured) {
+        rig.cancelLatencyMeasurement();
+        if (!interrupted()) {
+            throw UsageError(QStringLiteral("the latency measurement did not finish"));
         }
-        printProgress(QStringLiteral("rig: measuring the loop's latency (%1 steps)")
-                          .arg(latencySteps));
-        waitFor([&] { return measured.has_value(); }, 20000 * latencySteps);
-        printProgress(QString());
-        if (!measured) {
-            rig.cancelLatencyMeasurement();
-            if (!interrupted()) {
-                throw UsageError(QStringLiteral("the latency measurement did not finish"));
-            }
-        } else if (!measured->error.isEmpty()) {
-            throw UsageError(
-                QStringLiteral("the latency measurement failed: %1").arg(measured->error));
-        } else {
-            // (The session compensates what it measured from now on.)
-            QJsonArray steps;
-            QStringList stepText;
-            for (double s : measured->stepsSeconds) {
-                steps.append(s * 1000.0);
-                stepText << QString::number(s * 1000.0, 'f', 1);
-            }
-            latencyJson = {{"medianMs", measured->median * 1000.0},
-                           {"minMs", measured->min * 1000.0},
-                           {"maxMs", measured->max * 1000.0},
-                           {"spreadMs", measured->spread * 1000.0},
-                           {"stepsMs", steps}};
-            if (line.format() == QLatin1String("text")) {
-                printText(QStringLiteral("loop latency (command -> response seen): median %1 ms, "
-                                         "from %2 to %3 ms, std %4 ms over %5 steps (%6 ms); "
-                                         "the trials compensate %1 ms\n")
-                              .arg(measured->median * 1000.0, 0, 'f', 1)
-                              .arg(measured->min * 1000.0, 0, 'f', 1)
-                              .arg(measured->max * 1000.0, 0, 'f', 1)
-                              .arg(measured->spread * 1000.0, 0, 'f', 1)
-                              .arg(measured->stepsSeconds.size())
-                              .arg(stepText.join(", ")));
-            }
-        }
+        return {};
     }
-    // The pre-trial check the window's strip shows: no trial starts on a failed one.
-    const rig::PreTrialCheck check = rig.preTrialCheck(task, *spec);
+    if (!measured->error.isEmpty()) {
+        throw UsageError(QStringLiteral("the latency measurement failed: %1").arg(measured->error));
+    }
+    // (The session compensates what it measured from now on.)
+    QJsonArray steps;
+    QStringList stepText;
+    for (double s : measured->stepsSeconds) {
+        steps.append(s * 1000.0);
+        stepText << QString::number(s * 1000.0, 'f', 1);
+    }
+    if (text) {
+        printText(QStringLiteral("loop latency (command -> response seen): median %1 ms, "
+                                 "from %2 to %3 ms, std %4 ms over %5 steps (%6 ms); "
+                                 "the trials compensate %1 ms\n")
+                      .arg(measured->median * 1000.0, 0, 'f', 1)
+                      .arg(measured->min * 1000.0, 0, 'f', 1)
+                      .arg(measured->max * 1000.0, 0, 'f', 1)
+                      .arg(measured->spread * 1000.0, 0, 'f', 1)
+                      .arg(measured->stepsSeconds.size())
+                      .arg(stepText.join(", ")));
+    }
+    return {{"medianMs", measured->median * 1000.0},
+            {"minMs", measured->min * 1000.0},
+            {"maxMs", measured->max * 1000.0},
+            {"spreadMs", measured->spread * 1000.0},
+            {"stepsMs", steps}};
+}
+
+// The pre-trial check the window's strip shows, printed; no trial starts on a failed one.
+QJsonArray checkBeforeTrials(const rig::PreTrialCheck& check, bool text) {
     QJsonArray checkJson;
     QStringList checkText;
     for (const rig::PreTrialItem& item : check.items) {
@@ -266,9 +190,248 @@ int rigCommand(const QStringList& arguments) {
         throw UsageError(QStringLiteral("not ready for a trial (%1): %2")
                              .arg(check.missingLabels(), check.missingDetails()));
     }
-    if (line.format() == QLatin1String("text")) {
+    if (text) {
         printText(QStringLiteral("pre-trial check: ready\n%1\n").arg(checkText.join(QLatin1Char('\n'))));
     }
+    return checkJson;
+}
+
+// One trial's report: its JSON row, and its lines when the format is text.
+QJsonObject reportTrial(const rig::RigTrialResult& trial, int number, long long decoded,
+                        const QString& method, bool text) {
+    // Frame-to-command latency: the median, the 99th percentile (nearest rank) and the worst.
+    std::vector<double> latency = trial.latencyMs;
+    std::sort(latency.begin(), latency.end());
+    const auto percentile = [&latency](double p) {
+        if (latency.empty()) {
+            return -1.0;
+        }
+        const auto rank = static_cast<size_t>(std::ceil(p / 100.0 * latency.size()));
+        return latency[std::clamp<size_t>(rank, 1, latency.size()) - 1];
+    };
+    const double medianLatency = percentile(50.0);
+    const double p99Latency = percentile(99.0);
+    const double worstLatency = latency.empty() ? -1.0 : latency.back();
+    QJsonObject row{{"trial", number},
+                    {"seconds", trial.seconds},
+                    {"stopped", trial.stopped},
+                    {"failsafe", trial.fault},
+                    {"failsafeReason", trial.reason},
+                    {"frames", static_cast<double>(trial.frames)},
+                    {"framesWithPose", static_cast<double>(trial.framesWithPose)},
+                    {"linkFramesDecoded", static_cast<double>(decoded)},
+                    {"medianFrameToCommandMs", medianLatency},
+                    {"p99FrameToCommandMs", p99Latency},
+                    {"worstFrameToCommandMs", worstLatency}};
+    if (trial.parked) {
+        row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
+        row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
+    }
+    if (!trial.controllerNote.isEmpty()) {
+        row.insert("controllerNote", trial.controllerNote);
+    }
+    if (text) {
+        const QString where = trial.parked
+                                  ? QStringLiteral("parked %1 cm and %2 deg from the lot")
+                                        .arg(trial.parked->position * 100.0, 0, 'f', 1)
+                                        .arg(trial.parked->heading * 180.0 / core::kPi, 0, 'f', 1)
+                                  : QStringLiteral("no pose seen");
+        const QString ending =
+            trial.stopped ? (trial.reason.isEmpty()
+                                 ? QStringLiteral(" (stopped early)")
+                                 : QStringLiteral(" (stopped early: %1)").arg(trial.reason))
+            : trial.fault ? QStringLiteral(" (failsafe: %1)").arg(trial.reason)
+                          : QString();
+        printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
+                                 "frames decoded; frame -> command median %7 ms, p99 %8 ms, "
+                                 "worst %9 ms\n")
+                      .arg(number)
+                      .arg(where, ending)
+                      .arg(trial.framesWithPose)
+                      .arg(trial.frames)
+                      .arg(decoded)
+                      .arg(medianLatency, 0, 'f', 2)
+                      .arg(p99Latency, 0, 'f', 2)
+                      .arg(worstLatency, 0, 'f', 2));
+        if (!trial.controllerNote.isEmpty()) {
+            printText(QStringLiteral("  %1: %2\n").arg(method, trial.controllerNote));
+        }
+    }
+    return row;
+}
+
+// Each trial's bundle answer counted, the saved folders kept, a failed one warned of.
+void watchBundles(rig::RigSession& rig, QStringList* bundles, int* answers) {
+    QObject::connect(&rig, &rig::RigSession::bundleSaved,
+                     [bundles, answers](const QString& folder, const QString& error) {
+                         ++*answers;
+                         if (!error.isEmpty()) {
+                             std::fprintf(stderr, "prisca-cli: rig: warning: bundle %s: %s\n",
+                                          qPrintable(folder), qPrintable(error));
+                         } else {
+                             *bundles << folder;
+                         }
+                     });
+}
+
+// Starts a trial and waits for its end (`last` set by the session's trialFinished), with
+// progress each second of wall-clock time (the trial itself runs on frame time); a trial that
+// does not end (interrupted, the camera failed, no frames) is ended now.
+void runTrial(rig::RigSession& rig, const Wait& waitFor, const rig::TrialRequest& request,
+              const QString& which, double seconds,
+              const std::optional<rig::RigTrialResult>& last) {
+    QString error;
+    if (!rig.startTrial(request, &error)) {
+        throw UsageError(QStringLiteral("trial %1 could not start: %2")
+                             .arg(which.section(QLatin1Char('/'), 0, 0), error));
+    }
+    QElapsedTimer sinceStart;
+    sinceStart.start();
+    int shownSecond = 0;
+    waitFor(
+        [&] {
+            if (const int second = static_cast<int>(sinceStart.elapsed() / 1000);
+                second > shownSecond && !last) {
+                shownSecond = second;
+                printProgress(QStringLiteral("rig: trial %1: %2 of %3 s")
+                                  .arg(which)
+                                  .arg(second)
+                                  .arg(seconds, 0, 'f', 1));
+            }
+            return last.has_value();
+        },
+        static_cast<int>((seconds + 30.0) * 1000), true);
+    if (!last) {
+        rig.stopTrial();
+    }
+}
+
+// The link closed (its last frame failsafe), and what the car's receiver holds after it:
+// written as JSON (`json` filled) or as a line.
+bool closeLink(rig::RigSession& rig, const Wait& waitFor, QJsonArray* heldJson, bool text) {
+    rig.stopCamera();
+    rig.disconnectLink();
+    const bool closed = waitFor([&] { return !rig.linkStatus().connected; }, 5000, false);
+    const Eigen::VectorXd held = rig.virtualReceivedCommand().value_or(Eigen::VectorXd());
+    const bool neutral = closed && held.size() > 0 && held.cwiseAbs().maxCoeff() <= kNeutralSlack;
+    if (interrupted()) {
+        // On stderr: stdout may be the pipe whose closing (SIGPIPE) stopped the command.
+        std::fprintf(stderr, "prisca-cli: rig: stopped by %s; the link %s\n",
+                     interruptionName().toLatin1().constData(),
+                     neutral ? "ended in failsafe (the car's receiver holds neutral)"
+                             : "closed, but the car's receiver does NOT hold neutral");
+    }
+    QStringList values;
+    for (double u : held) {
+        heldJson->append(u);
+        values << QString::asprintf("%+.3f", u);
+    }
+    if (text) {
+        printText(QStringLiteral("link closed; the car's receiver holds [%1]: %2\n")
+                      .arg(values.join(", "), neutral ? QStringLiteral("neutral (failsafe)")
+                                                      : QStringLiteral("NOT neutral")));
+    }
+    return neutral;
+}
+
+}  // namespace
+
+int rigCommand(const QStringList& arguments) {
+    CommandLine line(
+        QStringLiteral("rig"),
+        QStringLiteral(
+            "Trials on the rig. With --virtual, the real rig's chain with no hardware: a "
+            "simulated car driven through a pseudo-terminal by the transmitter link, "
+            "the synthetic ceiling camera, the LED tracker, the state estimator and the "
+            "controller, in real time."));
+    declareRigOptions(line);
+    if (!line.parse(arguments)) {
+        return 0;
+    }
+    applyVerbosity(line);
+    if (!line.isSet("virtual")) {
+        throw UsageError(QStringLiteral(
+            "rig drives the virtual rig only (give --virtual); the real rig runs in the window"));
+    }
+    const bool text = line.format() == QLatin1String("text");
+    const QString method = line.value("method");
+    const sim::MethodSpec& spec = rigMethod(method);
+    const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
+    sim::RecordingConditions conditions;  // the scripted operator drives the same car
+    conditions.parameters = parameters.get();
+    Task task =
+        loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
+                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
+                          conditions);
+    task.plantParameters = parameters;
+    applyMethodParameters(line, task.profile, parameters != nullptr);
+    const devices::Geofence fence = fenceOption(line);
+    const int trials = static_cast<int>(line.integer("trials", 0, 1000));
+    const auto seed = static_cast<std::uint64_t>(line.integer("seed", 0, 1LL << 62));
+    // The run as the simulation sets it up: the rig's loop takes its controller, settle time,
+    // lost-track distance and latency compensation from here.
+    const auto setup = std::make_shared<const sim::RunSetup>(task, method);
+
+    // The window's rig session, headless: the virtual car seen by the synthetic camera at the
+    // demonstration's control rate, the link on the car's pseudo-terminal.
+    const core::Demonstration& demo = *task.demonstration;
+    rig::RigSession rig;
+    rig.setGeofence(fence);
+    if (line.isSet("bundle-dir")) {
+        rig.setBundles(line.value("bundle-dir"), line.number("bundle-fps", 0.0, 200.0));
+    }
+    QStringList bundles;
+    int bundleAnswers = 0;  // one per trial, saved or not: a failed bundle is not waited for
+    watchBundles(rig, &bundles, &bundleAnswers);
+    rig::CameraRequest camera;
+    camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
+    camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
+    camera.virtualPlant = parameters;
+    camera.virtualCameraDelay = line.number("inject-camera-delay", 0.0, 2000.0) / 1000.0;
+    if (line.isSet("loop-latency")) {
+        rig.setLoopLatency(line.number("loop-latency", 0.0, 1000.0) / 1000.0);
+    }
+    const int latencySteps = static_cast<int>(line.integer("latency-steps", 2, 50));
+    QString error;
+    if (!rig.startCamera(camera, &error)) {
+        throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
+    }
+    devices::LinkSettings link;
+    link.port = rig.virtualPort();
+    link.failsafe = rig.channels().failsafe();
+    link.sendOnCommand = true;  // a camera frame's command goes out at once
+    rig.connectLink(link);
+    installInterruptHandler();
+    QString cameraError;
+    QObject::connect(&rig, &rig::RigSession::cameraFailed,
+                     [&cameraError](const QString& message) { cameraError = message; });
+    const Wait waitFor = [&cameraError](const std::function<bool()>& done, int timeoutMs,
+                                        bool untilInterrupted) {
+        QEventLoop loop;
+        QTimer poll;
+        QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+            if (done() || (untilInterrupted && interrupted()) || !cameraError.isEmpty()) {
+                loop.quit();
+            }
+        });
+        poll.start(10);
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        loop.exec();
+        return done();
+    };
+    if (!waitFor([&] { return rig.linkStatus().connected && rig.lastPose().has_value(); }, 10000,
+                 true)) {
+        throw UsageError(QStringLiteral("the virtual rig could not start: %1")
+                             .arg(!cameraError.isEmpty() ? cameraError
+                                  : !rig.linkStatus().connected
+                                      ? QStringLiteral("the link did not connect")
+                                      : QStringLiteral("the camera saw no car")));
+    }
+    const QJsonObject latencyJson =
+        line.isSet("measure-latency") && !interrupted()
+            ? measureLoopLatency(rig, waitFor, latencySteps, camera.virtualCameraDelay, text)
+            : QJsonObject();
+    const QJsonArray checkJson = checkBeforeTrials(rig.preTrialCheck(task, spec), text);
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
     std::optional<rig::RigTrialResult> last;
@@ -284,118 +447,25 @@ int rigCommand(const QStringList& arguments) {
         request.virtualSeed = sim::mixSeed(seed, t);
         last.reset();
         const long long decodedBefore = rig.virtualFramesDecoded();
-        if (!rig.startTrial(request, &error)) {
-            throw UsageError(QStringLiteral("trial %1 could not start: %2").arg(t + 1).arg(error));
-        }
-        // Progress each second of the trial (wall-clock; the trial itself runs on frame time).
-        QElapsedTimer sinceStart;
-        sinceStart.start();
-        int shownSecond = 0;
-        waitFor(
-            [&] {
-                if (const int second = static_cast<int>(sinceStart.elapsed() / 1000);
-                    second > shownSecond && !last) {
-                    shownSecond = second;
-                    printProgress(QStringLiteral("rig: trial %1/%2: %3 of %4 s")
-                                      .arg(t + 1)
-                                      .arg(trials)
-                                      .arg(second)
-                                      .arg(seconds, 0, 'f', 1));
-                }
-                return last.has_value();
-            },
-            static_cast<int>((seconds + 30.0) * 1000));
-        if (!last) {
-            rig.stopTrial();  // interrupted, the camera failed, or no frames: ends it now
-        }
+        runTrial(rig, waitFor, request, QStringLiteral("%1/%2").arg(t + 1).arg(trials), seconds,
+                 last);
         if (line.isSet("bundle-dir")) {  // the bundle's last lines and result on disk
             waitFor([&] { return bundleAnswers > t; }, 10000, false);
         }
         if (!cameraError.isEmpty()) {
             throw UsageError(QStringLiteral("the camera failed: %1").arg(cameraError));
         }
-        const rig::RigTrialResult& trial = *last;
-        // Frame-to-command latency: the median, the 99th percentile (nearest rank) and the worst.
-        std::vector<double> latency = trial.latencyMs;
-        std::sort(latency.begin(), latency.end());
-        const auto percentile = [&latency](double p) {
-            if (latency.empty()) {
-                return -1.0;
-            }
-            const auto rank = static_cast<size_t>(std::ceil(p / 100.0 * latency.size()));
-            return latency[std::clamp<size_t>(rank, 1, latency.size()) - 1];
-        };
-        const double medianLatency = percentile(50.0);
-        const double p99Latency = percentile(99.0);
-        const double worstLatency = latency.empty() ? -1.0 : latency.back();
-        const long long decoded = rig.virtualFramesDecoded() - decodedBefore;
-        QJsonObject row{{"trial", t + 1},
-                        {"seconds", trial.seconds},
-                        {"stopped", trial.stopped},
-                        {"failsafe", trial.fault},
-                        {"failsafeReason", trial.reason},
-                        {"frames", static_cast<double>(trial.frames)},
-                        {"framesWithPose", static_cast<double>(trial.framesWithPose)},
-                        {"linkFramesDecoded", static_cast<double>(decoded)},
-                        {"medianFrameToCommandMs", medianLatency},
-                        {"p99FrameToCommandMs", p99Latency},
-                        {"worstFrameToCommandMs", worstLatency}};
-        if (trial.parked) {
-            row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
-            row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
-        }
-        if (!trial.controllerNote.isEmpty()) {
-            row.insert("controllerNote", trial.controllerNote);
-        }
-        rows.append(row);
-        if (line.format() == QLatin1String("text")) {
-            const QString where =
-                trial.parked ? QStringLiteral("parked %1 cm and %2 deg from the lot")
-                                   .arg(trial.parked->position * 100.0, 0, 'f', 1)
-                                   .arg(trial.parked->heading * 180.0 / core::kPi, 0, 'f', 1)
-                             : QStringLiteral("no pose seen");
-            printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
-                                     "frames decoded; frame -> command median %7 ms, p99 %8 ms, worst %9 ms\n")
-                          .arg(t + 1)
-                          .arg(where, trial.stopped ? (trial.reason.isEmpty()
-                                                           ? QStringLiteral(" (stopped early)")
-                                                           : QStringLiteral(" (stopped early: %1)")
-                                                                 .arg(trial.reason))
-                                      : trial.fault ? QStringLiteral(" (failsafe: %1)").arg(trial.reason)
-                                                    : QString())
-                          .arg(trial.framesWithPose)
-                          .arg(trial.frames)
-                          .arg(decoded)
-                          .arg(medianLatency, 0, 'f', 2)
-                          .arg(p99Latency, 0, 'f', 2)
-                          .arg(worstLatency, 0, 'f', 2));
-            if (!trial.controllerNote.isEmpty()) {
-                printText(QStringLiteral("  %1: %2\n").arg(method, trial.controllerNote));
-            }
-        }
+        rows.append(
+            reportTrial(*last, t + 1, rig.virtualFramesDecoded() - decodedBefore, method, text));
         if (devices::processfailsafe::held()) {
             break;  // stopped and continued: no trial starts by itself
         }
     }
-    rig.stopCamera();
     // The link's last frame is failsafe; once it has closed, what the car's receiver holds is
     // what the car was left with (an interrupt included).
-    rig.disconnectLink();
-    const bool closed = waitFor([&] { return !rig.linkStatus().connected; }, 5000, false);
-    const Eigen::VectorXd held = rig.virtualReceivedCommand().value_or(Eigen::VectorXd());
-    const bool neutral = closed && held.size() > 0 && held.cwiseAbs().maxCoeff() <= kNeutralSlack;
-    if (interrupted()) {
-        // On stderr: stdout may be the pipe whose closing (SIGPIPE) stopped the command.
-        std::fprintf(stderr, "prisca-cli: rig: stopped by %s; the link %s\n",
-                     interruptionName().toLatin1().constData(),
-                     neutral ? "ended in failsafe (the car's receiver holds neutral)"
-                             : "closed, but the car's receiver does NOT hold neutral");
-    }
     QJsonArray heldJson;
-    for (double u : held) {
-        heldJson.append(u);
-    }
-    if (line.format() == QLatin1String("json")) {
+    const bool neutral = closeLink(rig, waitFor, &heldJson, text);
+    if (!text) {
         printJson(QJsonObject{{"plant", QStringLiteral("slidecar")},
                               {"method", method},
                               {"seed", static_cast<double>(seed)},
@@ -405,14 +475,6 @@ int rigCommand(const QStringList& arguments) {
                               {"receiverLastCommand", heldJson},
                               {"receiverNeutral", neutral},
                               {"bundles", QJsonArray::fromStringList(bundles)}});
-    } else {
-        QStringList values;
-        for (double u : held) {
-            values << QString::asprintf("%+.3f", u);
-        }
-        printText(QStringLiteral("link closed; the car's receiver holds [%1]: %2\n")
-                      .arg(values.join(", "), neutral ? QStringLiteral("neutral (failsafe)")
-                                                      : QStringLiteral("NOT neutral")));
     }
     if (!interrupted() && devices::processfailsafe::held()) {
         throw UsageError(QStringLiteral("the process was stopped and continued, so the link held "
