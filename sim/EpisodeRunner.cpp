@@ -23,8 +23,10 @@ double threadCpuSeconds() {
 EpisodeSettings withMeasuredLatency(EpisodeSettings settings, std::optional<double> seconds,
                                     double controlPeriod, int maxSteps) {
     if (seconds && std::isfinite(*seconds) && controlPeriod > 0.0) {
-        settings.measurement.latencySteps = std::clamp(
-            static_cast<int>(std::lround(std::max(0.0, *seconds) / controlPeriod)), 0, maxSteps);
+        // Clamped before rounding: a huge value must not wrap.
+        const double steps =
+            std::clamp(*seconds / controlPeriod, 0.0, static_cast<double>(maxSteps));
+        settings.measurement.latencySteps = static_cast<int>(std::lround(steps));
     }
     return settings;
 }

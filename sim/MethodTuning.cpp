@@ -127,12 +127,12 @@ MethodTuning acrobotTuning(const PlantInfo& info) {
     p.measurement.noise = vector({0.002, 0.002, 0.02, 0.02});
     p.settleTime = 0.0;
     // The acrobot follows a timed trajectory, so PRISCA's reference is time-driven here.
-    // Steps from one-dimensional sweeps on tuning seeds (docs/decisions.md).
+    // Steps from one-dimensional sweeps on tuning seeds (docs/research-log.md).
     p.priscaMatching = core::MatchingParameters::Mode::TimeDriven;
     p.prisca.horizon = 10;
     p.prisca.stepSize.beta = 2000.0;
     // PRISCA starts from the plain PD below and learns on top with the one-step gradient (from
-    // theta = 0 it settled well above the PD; the sweep: docs/decisions.md).
+    // theta = 0 it settled well above the PD; the sweep: docs/research-log.md).
     p.priscaFromPd = true;
     p.priscaPriorHorizon = 0;
     p.prisca.stepSize.scale = 100.0;
@@ -142,14 +142,14 @@ MethodTuning acrobotTuning(const PlantInfo& info) {
                              0, 1.0, 0, 0.2)
                                 .finished();
     // Kp from `tune_ilc acrobot 60`, which searched ILC's feedback too: the best feedback is the
-    // PD's as well (docs/decisions.md).
+    // PD's as well (docs/research-log.md).
     p.pd.kp = vector({40.0, 40.0});
     p.pd.kd = vector({0.0, 0.0});
     p.ilcLearningScale = 0.03;
     p.ilcLead = 0;
     p.ilcCutoff = 0.5;
     p.ilcFeedbackScale = 1.0;
-    // From a sweep on tuning seeds (docs/decisions.md).
+    // From a sweep on tuning seeds (docs/research-log.md).
     p.pegasus.scenarios = 2;
     p.pegasus.stepSize = 1e5;
     p.pegasus.perturbation = 0.5;
@@ -197,7 +197,7 @@ MethodTuning aircraftTuning(const PlantInfo& info) {
     p.prisca.stepSize.beta = 2000.0;
     p.prisca.thetaBound = 0.0;
     // PRISCA starts from the plain PD below (from theta = 0 it did worse; the sweep:
-    // docs/decisions.md).
+    // docs/research-log.md).
     p.priscaFromPd = true;
     p.priscaPriorHorizon = 0;
     p.pgsd.horizon = 10;

@@ -53,7 +53,7 @@ struct MpcParameters {
     /// `spinWindow` [s] of the same time, on `tubeStrikes` steps in a row while the car moves
     /// faster than `spinSpeed` [m/s], and the trial is finished by the fallback law. A car
     /// that enters the slide already sliding the wrong way (the model's Coulomb tyres held on
-    /// the straight where the car's did not) spins 2-4 m away under the plan; the tube cannot
+    /// the straight where the car's did not) spins 2.5-3.6 m away under the plan; the tube cannot
     /// see it, as the model predicts a spin once it has begun. 0 switches a check off.
     double spinYawRate = 1.5;
     double spinSideSlip = 0.17453292519943295;  // 10 deg

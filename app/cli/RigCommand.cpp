@@ -121,7 +121,9 @@ devices::Geofence fenceOption(const CommandLine& line) {
 QJsonObject measureLoopLatency(rig::RigSession& rig, const Wait& waitFor, int latencySteps,
                                double cameraDelay, bool text) {
     std::optional<rig::LatencyMeasurement> measured;
-    QObject::connect(&rig, &rig::RigSession::latencyMeasured,
+    // Delivered on this thread (the session emits on the camera's), and not after the return.
+    QObject receiver;
+    QObject::connect(&rig, &rig::RigSession::latencyMeasured, &receiver,
                      [&measured](const rig::LatencyMeasurement& m) { measured = m; });
     devices::LatencyProbeSettings probe;
     probe.steps = latencySteps;
@@ -191,7 +193,8 @@ QJsonArray checkBeforeTrials(const rig::PreTrialCheck& check, bool text) {
                              .arg(check.missingLabels(), check.missingDetails()));
     }
     if (text) {
-        printText(QStringLiteral("pre-trial check: ready\n%1\n").arg(checkText.join(QLatin1Char('\n'))));
+        printText(QStringLiteral("pre-trial check: ready\n%1\n")
+                      .arg(checkText.join(QLatin1Char('\n'))));
     }
     return checkJson;
 }
@@ -261,8 +264,8 @@ QJsonObject reportTrial(const rig::RigTrialResult& trial, int number, long long 
 }
 
 // Each trial's bundle answer counted, the saved folders kept, a failed one warned of.
-void watchBundles(rig::RigSession& rig, QStringList* bundles, int* answers) {
-    QObject::connect(&rig, &rig::RigSession::bundleSaved,
+void watchBundles(rig::RigSession& rig, QObject* receiver, QStringList* bundles, int* answers) {
+    QObject::connect(&rig, &rig::RigSession::bundleSaved, receiver,
                      [bundles, answers](const QString& folder, const QString& error) {
                          ++*answers;
                          if (!error.isEmpty()) {
@@ -303,11 +306,17 @@ void runTrial(rig::RigSession& rig, const Wait& waitFor, const rig::TrialRequest
         static_cast<int>((seconds + 30.0) * 1000), true);
     if (!last) {
         rig.stopTrial();
+        // A trial that ended on the camera's thread just before is reported on this one.
+        waitFor([&] { return last.has_value(); }, 2000, false);
+    }
+    if (!last) {
+        throw UsageError(QStringLiteral("trial %1 ended without a result")
+                             .arg(which.section(QLatin1Char('/'), 0, 0)));
     }
 }
 
-// The link closed (its last frame failsafe), and what the car's receiver holds after it:
-// written as JSON (`json` filled) or as a line.
+// The link closed (its last frame failsafe), and what the car's receiver holds after it: into
+// `heldJson`, and as a line when the format is text.
 bool closeLink(rig::RigSession& rig, const Wait& waitFor, QJsonArray* heldJson, bool text) {
     rig.stopCamera();
     rig.disconnectLink();
@@ -382,7 +391,9 @@ int rigCommand(const QStringList& arguments) {
     }
     QStringList bundles;
     int bundleAnswers = 0;  // one per trial, saved or not: a failed bundle is not waited for
-    watchBundles(rig, &bundles, &bundleAnswers);
+    // The session's signals come from the camera's thread: delivered here, on this one.
+    QObject receiver;
+    watchBundles(rig, &receiver, &bundles, &bundleAnswers);
     rig::CameraRequest camera;
     camera.virtualFps = 1.0 / demo.dt;  // one frame per control step
     camera.virtualPerturbation = line.number("perturbation", 0.0, 10.0);
@@ -403,7 +414,7 @@ int rigCommand(const QStringList& arguments) {
     rig.connectLink(link);
     installInterruptHandler();
     QString cameraError;
-    QObject::connect(&rig, &rig::RigSession::cameraFailed,
+    QObject::connect(&rig, &rig::RigSession::cameraFailed, &receiver,
                      [&cameraError](const QString& message) { cameraError = message; });
     const Wait waitFor = [&cameraError](const std::function<bool()>& done, int timeoutMs,
                                         bool untilInterrupted) {
@@ -435,7 +446,7 @@ int rigCommand(const QStringList& arguments) {
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;
     QJsonArray rows;
     std::optional<rig::RigTrialResult> last;
-    QObject::connect(&rig, &rig::RigSession::trialFinished,
+    QObject::connect(&rig, &rig::RigSession::trialFinished, &receiver,
                      [&last](const rig::RigTrialResult& result) { last = result; });
     for (int t = 0; t < trials && !interrupted(); ++t) {
         printProgress(QStringLiteral("rig: trial %1/%2 (%3 s)")
