@@ -18,6 +18,18 @@ void CameraView::setFrame(const QImage& image, const std::optional<devices::Plan
     update();
 }
 
+void CameraView::setFrame(const cv::Mat& m, const std::optional<devices::PlanarPose>& pose) {
+    QImage image;
+    if (m.type() == CV_8UC1) {
+        image = QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_Grayscale8)
+                    .copy();
+    } else if (m.type() == CV_8UC3) {
+        image = QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888)
+                    .copy();
+    }
+    setFrame(image, pose);
+}
+
 void CameraView::setCalibration(const devices::FloorCalibration& calibration) {
     calibration_ = calibration;
     hasCalibration_ = true;

@@ -23,6 +23,8 @@ class CameraView : public QWidget {
     explicit CameraView(QWidget* parent = nullptr);
 
     void setFrame(const QImage& image, const std::optional<devices::PlanarPose>& pose);
+    /// A camera's frame (8-bit grey or BGR; copied); another type shows as no image.
+    void setFrame(const cv::Mat& frame, const std::optional<devices::PlanarPose>& pose);
     /// No image (the camera stopped): the view says so instead of keeping the last frame.
     void clearFrame();
     bool hasFrame() const { return !image_.isNull(); }

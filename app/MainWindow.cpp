@@ -19,7 +19,7 @@
 #include "app/ModelPanel.h"
 #include "app/RecordPanel.h"
 #include "app/ReplayDialog.h"
-#include "app/RigPanel.h"
+#include "app/rig/RigPanel.h"
 #include "app/RunThread.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"

@@ -846,4 +846,30 @@ void RigSession::resetEmergencyStop() {
     link_.resetEmergencyStop();
 }
 
+QString trialSentence(const RigTrialResult& result) {
+    QString sentence;
+    if (result.parked) {
+        sentence = RigSession::tr("Trial %1: parked %2 cm from the lot, heading off by %3°")
+                       .arg(result.trial)
+                       .arg(result.parked->position * 100.0, 0, 'f', 1)
+                       .arg(result.parked->heading * 180.0 / core::kPi, 0, 'f', 1);
+    } else {
+        sentence = RigSession::tr("Trial %1 ended without a pose").arg(result.trial);
+    }
+    if (result.stopped) {
+        sentence += RigSession::tr(" (stopped after %1 s)").arg(result.seconds, 0, 'f', 1);
+    } else if (result.fault) {
+        sentence += result.reason.isEmpty()
+                        ? RigSession::tr(" (failsafe after %1 s)").arg(result.seconds, 0, 'f', 1)
+                        : RigSession::tr(" (failsafe after %1 s: %2)")
+                              .arg(result.seconds, 0, 'f', 1)
+                              .arg(result.reason);
+    }
+    if (!result.controllerNote.isEmpty()) {
+        //: A rig trial's result, then what the method says of it (which law drove, and why).
+        sentence = RigSession::tr("%1; %2").arg(sentence, result.controllerNote);
+    }
+    return sentence;
+}
+
 }  // namespace prisca::rig

@@ -96,6 +96,10 @@ struct RigTrialResult {
     QString controllerNote;  ///< the controller's word on the trial (Controller::trialNote)
 };
 
+/// A trial's result in one sentence for the operator: where it parked, how it ended, and the
+/// controller's word on it.
+QString trialSentence(const RigTrialResult& result);
+
 /// A demonstration recorded by driving on the rig.
 struct RigRecording {
     QString path;  ///< the file on disk (kept even when unusable)

@@ -706,22 +706,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="85"/>
+        <location filename="../app/CameraView.cpp" line="97"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="162"/>
+        <location filename="../app/CameraView.cpp" line="174"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="166"/>
+        <location filename="../app/CameraView.cpp" line="178"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="171"/>
+        <location filename="../app/CameraView.cpp" line="183"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -2784,743 +2784,642 @@ Do you want to replace it?</source>
     </message>
 </context>
 <context>
-    <name>prisca::app::RigPanel</name>
+    <name>prisca::app::RigCameraPage</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="377"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="105"/>
         <source>Open floor calibration</source>
         <translation>開啟地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="378"/>
-        <location filename="../app/RigPanel.cpp" line="385"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="106"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="113"/>
         <source>Calibrations (*.json)</source>
         <translation>校準 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="384"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="112"/>
         <source>Save floor calibration</source>
         <translation>儲存地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="485"/>
-        <location filename="../app/RigPanel.cpp" line="496"/>
-        <source>Floor point</source>
-        <translation>地面點</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="486"/>
-        <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
-        <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="497"/>
-        <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
-        <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="582"/>
-        <source>Trial %1 running...</source>
-        <translation>第 %1 次試驗進行中...</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="680"/>
-        <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
-        <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="720"/>
-        <source>The rig recording could not be used: %1. It is kept in %2.</source>
-        <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="715"/>
-        <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
-        <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="202"/>
-        <location filename="../app/RigPanel.cpp" line="1090"/>
-        <source>PPM bridge (trainer port)</source>
-        <translation>PPM 橋接（教練接口）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="410"/>
-        <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
-        <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="421"/>
-        <location filename="../app/RigPanel.cpp" line="1216"/>
-        <source>Open camera intrinsics</source>
-        <translation>開啟攝影機內參</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="422"/>
-        <location filename="../app/RigPanel.cpp" line="1204"/>
-        <source>Camera (*.json)</source>
-        <translation>攝影機 (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="435"/>
-        <source>The trial&apos;s bundle could not be written: %1</source>
-        <translation>無法寫入試驗包：%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="463"/>
-        <source>Loop latency: not measured (%1)</source>
-        <translation>迴路延遲：未量度（%1）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="470"/>
-        <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
-        <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <source>Saving the recording...</source>
-        <translation>正在儲存錄製內容...</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="708"/>
-        <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
-        <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="738"/>
-        <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
-        <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="751"/>
-        <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
-        <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="756"/>
-        <source>Trial %1 ended without a pose</source>
-        <translation>第 %1 次試驗結束時沒有位姿</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="759"/>
-        <source> (stopped after %1 s)</source>
-        <translation>（%1 秒後停止）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="762"/>
-        <source> (failsafe after %1 s)</source>
-        <translation>（%1 秒後進入失效保護）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="763"/>
-        <source> (failsafe after %1 s: %2)</source>
-        <translation>（%1 秒後失效保護：%2）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="344"/>
-        <location filename="../app/RigPanel.cpp" line="350"/>
-        <location filename="../app/RigPanel.cpp" line="364"/>
-        <location filename="../app/RigPanel.cpp" line="828"/>
-        <location filename="../app/RigPanel.cpp" line="838"/>
-        <source>Camera</source>
-        <translation>攝影機</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="364"/>
-        <source>Camera stopped.</source>
-        <translation>攝影機已停止。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="437"/>
-        <location filename="../app/RigPanel.cpp" line="557"/>
-        <location filename="../app/RigPanel.cpp" line="564"/>
-        <location filename="../app/RigPanel.cpp" line="573"/>
-        <location filename="../app/RigPanel.cpp" line="579"/>
-        <location filename="../app/RigPanel.cpp" line="582"/>
-        <location filename="../app/RigPanel.cpp" line="624"/>
-        <location filename="../app/RigPanel.cpp" line="627"/>
-        <location filename="../app/RigPanel.cpp" line="657"/>
-        <location filename="../app/RigPanel.cpp" line="662"/>
-        <location filename="../app/RigPanel.cpp" line="673"/>
-        <location filename="../app/RigPanel.cpp" line="679"/>
-        <location filename="../app/RigPanel.cpp" line="699"/>
-        <location filename="../app/RigPanel.cpp" line="725"/>
-        <location filename="../app/RigPanel.cpp" line="737"/>
-        <location filename="../app/RigPanel.cpp" line="745"/>
-        <location filename="../app/RigPanel.cpp" line="771"/>
-        <source>Rig trial</source>
-        <translation>實驗台試驗</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="463"/>
-        <location filename="../app/RigPanel.cpp" line="469"/>
-        <location filename="../app/RigPanel.cpp" line="634"/>
-        <location filename="../app/RigPanel.cpp" line="640"/>
-        <location filename="../app/RigPanel.cpp" line="1254"/>
-        <location filename="../app/RigPanel.cpp" line="1259"/>
-        <location filename="../app/RigPanel.cpp" line="1263"/>
-        <source>Latency</source>
-        <translation>延遲</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="839"/>
-        <source>Camera started: %1</source>
-        <translation>攝影機已啟動：%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="858"/>
-        <source>Choose or type the transmitter&apos;s port first.</source>
-        <translation>請先選擇或輸入發射器的連接埠。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="858"/>
-        <location filename="../app/RigPanel.cpp" line="1008"/>
-        <location filename="../app/RigPanel.cpp" line="1092"/>
-        <source>Link</source>
-        <translation>鏈路</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="399"/>
-        <location filename="../app/RigPanel.cpp" line="835"/>
-        <location filename="../app/RigPanel.cpp" line="879"/>
-        <location filename="../app/RigPanel.cpp" line="891"/>
-        <location filename="../app/RigPanel.cpp" line="900"/>
-        <location filename="../app/RigPanel.cpp" line="907"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="121"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="209"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="219"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="229"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="239"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="352"/>
-        <source>The video ended after %1 frames; Start plays it again.</source>
-        <translation>影片在 %1 幀後結束；按「開始」再次播放。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="396"/>
-        <source>Floor calibration: click a point of known floor position</source>
-        <translation>地面校準：點選一個已知地面位置的點</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="400"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="122"/>
         <source>Calibrating: click a mark on the camera image whose floor position you know, then type it (x, y in metres). Four or more marks spread over the floor; the fit updates with each. Click Calibrate again when done.</source>
         <translation>校準中：在攝影機影像上點選一個已知地面位置的標記，然後輸入其位置（x, y，單位米）。需四個或以上分佈在地面上的標記；每加一個，擬合便會更新。完成後再按「校準」。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="547"/>
-        <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
-        <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="131"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="137"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="145"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="202"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="211"/>
+        <source>Camera</source>
+        <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="565"/>
-        <source>Not ready for a trial: %1</source>
-        <translation>未能進行試驗：%1</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="138"/>
+        <source>The video ended after %1 frames; Start plays it again.</source>
+        <translation>影片在 %1 幀後結束；按「開始」再次播放。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="606"/>
-        <source>Ready for a trial</source>
-        <translation>可以進行試驗</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="145"/>
+        <source>Camera stopped.</source>
+        <translation>攝影機已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="607"/>
-        <source>Ready for a trial (note: %1)</source>
-        <translation>可以進行試驗（注意：%1）</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="211"/>
+        <source>Camera started: %1</source>
+        <translation>攝影機已啟動：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="609"/>
-        <source>Not ready: %1</source>
-        <translation>未準備好：%1</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="247"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="255"/>
+        <source>Floor point</source>
+        <translation>地面點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="627"/>
-        <source>The virtual car is back at its start.</source>
-        <translation>虛擬車已回到起點。</translation>
+        <location filename="../app/rig/RigCameraPage.cpp" line="248"/>
+        <source>Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):</source>
+        <translation>此點在地面的位置？x, y（米，例如 1.5, -0.2）：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="635"/>
-        <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
-        <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="641"/>
-        <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
-        <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="746"/>
-        <source>E-STOP is reset: the link sends the commands again.</source>
-        <translation>緊急停止已重設：鏈路再次發送指令。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="769"/>
-        <source>%1; %2</source>
-        <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
-        <translation>%1；%2</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="880"/>
-        <source>The calibration could not be read.
-
-%1</source>
-        <translation>無法讀取校準。
-
-%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="901"/>
-        <source>%1 point(s) clicked; at least 4 are needed.</source>
-        <translation>已點擊 %1 個點；至少需要 4 個。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="932"/>
-        <source>Link: off</source>
-        <translation>鏈路：關閉</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="932"/>
-        <source>Link: port error</source>
-        <translation>鏈路：連接埠錯誤</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="935"/>
-        <source>Link: %1 failsafe (%2)</source>
-        <translation>鏈路：%1 失效保護（%2）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="939"/>
-        <source>Link: %1 %2/s</source>
-        <translation>鏈路：%1 %2/s</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="944"/>
-        <source>Camera: %1 fps, tracking</source>
-        <translation>攝影機：%1 fps，追蹤中</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="945"/>
-        <source>Camera: %1 fps, no car in view</source>
-        <translation>攝影機：%1 fps，視野內沒有車</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="948"/>
-        <source>Camera: failed</source>
-        <translation>攝影機：失敗</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="949"/>
-        <source>Camera: video ended</source>
-        <translation>攝影機：影片已結束</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="950"/>
-        <source>Camera: off</source>
-        <translation>攝影機：關閉</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="978"/>
-        <source>the process being stopped and continued</source>
-        <translation>程式被暫停後再繼續</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="981"/>
-        <source>Link: connected, %1 frames/s, %2 sent</source>
-        <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="984"/>
-        <location filename="../app/RigPanel.cpp" line="993"/>
-        <source>Link: not connected</source>
-        <translation>連線：未連接</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="986"/>
-        <location filename="../app/RigPanel.cpp" line="995"/>
-        <source>; failsafe (%1)</source>
-        <translation>；失效保護（%1）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="993"/>
-        <source>Link: connected</source>
-        <translation>鏈路：已連接</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1038"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="286"/>
         <source>Camera:</source>
         <translation>攝影機：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1039"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="287"/>
         <source>Virtual rig (synthetic camera, simulated car)</source>
         <translation>虛擬實機（合成攝影機，模擬車輛）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1040"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="288"/>
         <source>Camera device (V4L2)</source>
         <translation>攝影機裝置 (V4L2)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1041"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="289"/>
         <source>Video file</source>
         <translation>影片檔案</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1047"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="295"/>
         <source>Device:</source>
         <translation>裝置：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1048"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="296"/>
         <source>Width [px] asked of the camera</source>
         <translation>要求攝影機的寬度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1049"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="297"/>
         <source>Height [px] asked of the camera</source>
         <translation>要求攝影機的高度 [px]</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1050"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="298"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1051"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="299"/>
         <source>Frame rate asked of the camera</source>
         <translation>要求攝影機的幀率</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1052"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="300"/>
         <source>auto exposure</source>
         <translation>自動曝光</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1054"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="302"/>
         <source>Exposure in the driver&apos;s units; lowest: the driver&apos;s automatic exposure. IR LEDs track best with a short exposure.</source>
         <translation>曝光（驅動程式單位）；最低值：由驅動程式自動曝光。紅外 LED 在短曝光下追蹤效果最好。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1056"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="304"/>
         <source>auto gain</source>
         <translation>自動增益</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1057"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="305"/>
         <source>Gain in the driver&apos;s units; lowest: leave the driver&apos;s</source>
         <translation>增益（驅動程式單位）；最低值：保留驅動程式的設定</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1058"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="306"/>
         <source>/dev/video0</source>
         <translation>/dev/video0</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1059"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="307"/>
         <source>path of a video file</source>
         <translation>影片檔案路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1060"/>
-        <source>Start camera</source>
-        <translation>啟動攝影機</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1061"/>
-        <source>Stop camera</source>
-        <translation>停止攝影機</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1062"/>
-        <source>Floor calibration: %1 points, reprojection error %2 cm</source>
-        <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1065"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="309"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1066"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="310"/>
         <source>Save...</source>
         <translation>儲存...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1067"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="311"/>
         <source>Calibrate</source>
         <translation>校準</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1069"/>
+        <location filename="../app/rig/RigCameraPage.cpp" line="313"/>
         <source>Click four or more floor points of known position on the camera image</source>
         <translation>在攝影機影像上點擊四個或以上已知位置的地面點</translation>
     </message>
+</context>
+<context>
+    <name>prisca::app::RigLinkPage</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1070"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="44"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="164"/>
+        <source>PPM bridge (trainer port)</source>
+        <translation>PPM 橋接（教練接口）</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="74"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="144"/>
+        <source>Link</source>
+        <translation>鏈路</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="74"/>
+        <source>Choose or type the transmitter&apos;s port first.</source>
+        <translation>請先選擇或輸入發射器的連接埠。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="117"/>
+        <source>Link: connected, %1 frames/s, %2 sent</source>
+        <translation>連線：已連接，每秒 %1 幀，已發送 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="120"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="129"/>
+        <source>Link: not connected</source>
+        <translation>連線：未連接</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="122"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="131"/>
+        <source>; failsafe (%1)</source>
+        <translation>；失效保護（%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="129"/>
+        <source>Link: connected</source>
+        <translation>鏈路：已連接</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigLinkPage.cpp" line="157"/>
         <source>Transmitter port:</source>
         <translation>發射器連接埠：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1071"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="158"/>
         <source>A serial port found on this computer, or type a device path</source>
         <translation>本機找到的序列埠，或輸入裝置路徑</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1072"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="159"/>
         <source>Protocol:</source>
         <translation>協定：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1073"/>
-        <source>Connect</source>
-        <translation>連接</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1074"/>
-        <source>Disconnect</source>
-        <translation>中斷連接</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1075"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="160"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1076"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="161"/>
         <source>protocol default</source>
         <translation>協定預設</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1077"/>
+        <location filename="../app/rig/RigLinkPage.cpp" line="162"/>
         <source>0: the protocol&apos;s own (CRSF 420000; SBUS and Multiprotocol 100000 8E2)</source>
         <translation>0：協定本身的設定（CRSF 420000；SBUS 及 Multiprotocol 100000 8E2）</translation>
     </message>
+</context>
+<context>
+    <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1078"/>
+        <location filename="../app/rig/RigPanel.cpp" line="319"/>
+        <source>Trial %1 running...</source>
+        <translation>第 %1 次試驗進行中...</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="401"/>
+        <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
+        <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="441"/>
+        <source>The rig recording could not be used: %1. It is kept in %2.</source>
+        <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="436"/>
+        <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
+        <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="196"/>
+        <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
+        <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="420"/>
+        <source>Saving the recording...</source>
+        <translation>正在儲存錄製內容...</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="429"/>
+        <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
+        <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="462"/>
+        <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
+        <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="176"/>
+        <location filename="../app/rig/RigPanel.cpp" line="294"/>
+        <location filename="../app/rig/RigPanel.cpp" line="301"/>
+        <location filename="../app/rig/RigPanel.cpp" line="310"/>
+        <location filename="../app/rig/RigPanel.cpp" line="316"/>
+        <location filename="../app/rig/RigPanel.cpp" line="319"/>
+        <location filename="../app/rig/RigPanel.cpp" line="362"/>
+        <location filename="../app/rig/RigPanel.cpp" line="365"/>
+        <location filename="../app/rig/RigPanel.cpp" line="378"/>
+        <location filename="../app/rig/RigPanel.cpp" line="383"/>
+        <location filename="../app/rig/RigPanel.cpp" line="394"/>
+        <location filename="../app/rig/RigPanel.cpp" line="400"/>
+        <location filename="../app/rig/RigPanel.cpp" line="420"/>
+        <location filename="../app/rig/RigPanel.cpp" line="446"/>
+        <location filename="../app/rig/RigPanel.cpp" line="458"/>
+        <location filename="../app/rig/RigPanel.cpp" line="469"/>
+        <location filename="../app/rig/RigPanel.cpp" line="475"/>
+        <source>Rig trial</source>
+        <translation>實驗台試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="591"/>
+        <source>Link</source>
+        <translation>鏈路</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="198"/>
+        <source>Floor calibration: click a point of known floor position</source>
+        <translation>地面校準：點選一個已知地面位置的點</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="302"/>
+        <source>Not ready for a trial: %1</source>
+        <translation>未能進行試驗：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="344"/>
+        <source>Ready for a trial</source>
+        <translation>可以進行試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="345"/>
+        <source>Ready for a trial (note: %1)</source>
+        <translation>可以進行試驗（注意：%1）</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="347"/>
+        <source>Not ready: %1</source>
+        <translation>未準備好：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="365"/>
+        <source>The virtual car is back at its start.</source>
+        <translation>虛擬車已回到起點。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="470"/>
+        <source>E-STOP is reset: the link sends the commands again.</source>
+        <translation>緊急停止已重設：鏈路再次發送指令。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="497"/>
+        <source>Link: off</source>
+        <translation>鏈路：關閉</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="497"/>
+        <source>Link: port error</source>
+        <translation>鏈路：連接埠錯誤</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="500"/>
+        <source>Link: %1 failsafe (%2)</source>
+        <translation>鏈路：%1 失效保護（%2）</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="504"/>
+        <source>Link: %1 %2/s</source>
+        <translation>鏈路：%1 %2/s</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="511"/>
+        <source>Camera: %1 fps, tracking</source>
+        <translation>攝影機：%1 fps，追蹤中</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="512"/>
+        <source>Camera: %1 fps, no car in view</source>
+        <translation>攝影機：%1 fps，視野內沒有車</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="515"/>
+        <source>Camera: failed</source>
+        <translation>攝影機：失敗</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="516"/>
+        <source>Camera: video ended</source>
+        <translation>攝影機：影片已結束</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="517"/>
+        <source>Camera: off</source>
+        <translation>攝影機：關閉</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="543"/>
+        <source>the process being stopped and continued</source>
+        <translation>程式被暫停後再繼續</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="574"/>
+        <source>Start camera</source>
+        <translation>啟動攝影機</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="575"/>
+        <source>Stop camera</source>
+        <translation>停止攝影機</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="576"/>
+        <source>Connect</source>
+        <translation>連接</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="577"/>
+        <source>Disconnect</source>
+        <translation>中斷連接</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="578"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1080"/>
+        <location filename="../app/rig/RigPanel.cpp" line="580"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1082"/>
+        <location filename="../app/rig/RigPanel.cpp" line="582"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1084"/>
+        <location filename="../app/rig/RigPanel.cpp" line="584"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1086"/>
+        <location filename="../app/rig/RigPanel.cpp" line="586"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1091"/>
+        <location filename="../app/rig/RigPanel.cpp" line="590"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1093"/>
+        <location filename="../app/rig/RigPanel.cpp" line="592"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1094"/>
-        <source>Capture board view</source>
-        <translation>擷取棋盤視圖</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1095"/>
-        <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
-        <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1098"/>
-        <source>Fit lens</source>
-        <translation>擬合鏡頭</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1099"/>
-        <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
-        <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1101"/>
-        <source>Load lens...</source>
-        <translation>載入鏡頭...</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1102"/>
-        <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
-        <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1103"/>
-        <source>Measure latency</source>
-        <translation>量度延遲</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1104"/>
-        <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
-        <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1107"/>
-        <source>or declare:</source>
-        <translation>或申報：</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1108"/>
-        <source> ms</source>
-        <translation> 毫秒</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1109"/>
-        <source>not declared</source>
-        <translation>未申報</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1110"/>
-        <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
-        <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1112"/>
+        <location filename="../app/rig/RigPanel.cpp" line="587"/>
         <source>Put the car back</source>
         <translation>把車放回起點</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1113"/>
+        <location filename="../app/rig/RigPanel.cpp" line="588"/>
         <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
         <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
     </message>
+</context>
+<context>
+    <name>prisca::app::RigSetupPage</name>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1115"/>
-        <source>Draw fence</source>
-        <translation>繪畫圍欄</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="130"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="241"/>
+        <source>Open camera intrinsics</source>
+        <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1117"/>
-        <source>Save every trial as a bundle</source>
-        <translation>把每次試驗儲存為試驗包</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="131"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="230"/>
+        <source>Camera (*.json)</source>
+        <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1118"/>
-        <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
-        <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="143"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="149"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="255"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="260"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="264"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="272"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="278"/>
+        <source>Latency</source>
+        <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1121"/>
-        <source>Replay the last trial</source>
-        <translation>重播上一次試驗</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="144"/>
+        <source>Loop latency: not measured (%1)</source>
+        <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1122"/>
-        <source>Clear fence</source>
-        <translation>清除圍欄</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="150"/>
+        <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
+        <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1123"/>
-        <source>Speed limit:</source>
-        <translation>速度上限：</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="169"/>
+        <source>The trial&apos;s bundle could not be written: %1</source>
+        <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1124"/>
-        <location filename="../app/RigPanel.cpp" line="1126"/>
-        <source>none</source>
-        <translation>無</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1125"/>
-        <source>Longest lost track:</source>
-        <translation>最長失去追蹤：</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1129"/>
-        <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
-        <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1156"/>
-        <source>Lens: no camera image to capture a board view from.</source>
-        <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1156"/>
-        <location filename="../app/RigPanel.cpp" line="1161"/>
-        <location filename="../app/RigPanel.cpp" line="1188"/>
-        <location filename="../app/RigPanel.cpp" line="1249"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="211"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="222"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="250"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1161"/>
-        <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
-        <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1183"/>
-        <source>refused: %1</source>
-        <translation>已拒絕：%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1188"/>
-        <source>Lens: %1</source>
-        <translation>鏡頭：%1</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1202"/>
-        <location filename="../app/RigPanel.cpp" line="1206"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="228"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="233"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1234"/>
-        <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
-        <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1240"/>
-        <source>Lens: none (the floor calibration is a homography alone).</source>
-        <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1244"/>
-        <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
-        <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
-    </message>
-    <message>
-        <location filename="../app/RigPanel.cpp" line="1259"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="260"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1263"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="265"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1292"/>
-        <source>Fence: %1</source>
-        <translation>圍欄：%1</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="273"/>
+        <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
+        <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1292"/>
-        <location filename="../app/RigPanel.cpp" line="1295"/>
-        <location filename="../app/RigPanel.cpp" line="1298"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="279"/>
+        <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
+        <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="317"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1295"/>
-        <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
-        <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="336"/>
+        <source>Capture board view</source>
+        <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/RigPanel.cpp" line="1298"/>
-        <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
-        <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
+        <location filename="../app/rig/RigSetupPage.cpp" line="337"/>
+        <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
+        <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="340"/>
+        <source>Fit lens</source>
+        <translation>擬合鏡頭</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="341"/>
+        <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
+        <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="343"/>
+        <source>Load lens...</source>
+        <translation>載入鏡頭...</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="344"/>
+        <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
+        <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="345"/>
+        <source>Measure latency</source>
+        <translation>量度延遲</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="346"/>
+        <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
+        <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="349"/>
+        <source>or declare:</source>
+        <translation>或申報：</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="350"/>
+        <source> ms</source>
+        <translation> 毫秒</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="351"/>
+        <source>not declared</source>
+        <translation>未申報</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="352"/>
+        <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
+        <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="354"/>
+        <source>Draw fence</source>
+        <translation>繪畫圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="355"/>
+        <source>Clear fence</source>
+        <translation>清除圍欄</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="356"/>
+        <source>Speed limit:</source>
+        <translation>速度上限：</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="357"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="359"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="358"/>
+        <source>Longest lost track:</source>
+        <translation>最長失去追蹤：</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="361"/>
+        <source>Save every trial as a bundle</source>
+        <translation>把每次試驗儲存為試驗包</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="362"/>
+        <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
+        <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="365"/>
+        <source>Replay the last trial</source>
+        <translation>重播上一次試驗</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigSetupPage.cpp" line="368"/>
+        <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
+        <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>
 </context>
 <context>
@@ -4440,6 +4339,93 @@ Do you want to replace it?</source>
     </message>
 </context>
 <context>
+    <name>prisca::rig::RigCalibration</name>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="19"/>
+        <source>%1 point(s) clicked; at least 4 are needed.</source>
+        <translation>已點擊 %1 個點；至少需要 4 個。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="38"/>
+        <source>&apos;%1&apos; is not two numbers &quot;x, y&quot; in metres.</source>
+        <translation>「%1」不是兩個以米為單位的數字「x, y」。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="48"/>
+        <source>The calibration could not be read.
+
+%1</source>
+        <translation>無法讀取校準。
+
+%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="63"/>
+        <source>Floor calibration: %1 points, reprojection error %2 cm</source>
+        <translation>地面校準：%1 個點，重投影誤差 %2 厘米</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="75"/>
+        <source>The floor calibration is the virtual rig&apos;s, not this camera&apos;s: calibrate this camera (Calibrate, then click four or more floor points) or open its calibration before driving or a trial.</source>
+        <translation>地面校準屬於虛擬實驗台，而非此攝影機：駕駛或試驗前，請校準此攝影機（按「校準」，再點選四個或以上地面點）或開啟其校準檔。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="82"/>
+        <source>Lens: no camera image to capture a board view from.</source>
+        <translation>鏡頭：沒有可擷取棋盤視圖的攝影機影像。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="86"/>
+        <source>Lens: no whole 9 x 6 board in this view (%1 captured). Hold the board so all of it is seen, still, and try again.</source>
+        <translation>鏡頭：此視圖中沒有完整的 9 x 6 棋盤（已擷取 %1 個）。請拿穩棋盤，使其完全可見，然後再試。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="109"/>
+        <source>refused: %1</source>
+        <translation>已拒絕：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="114"/>
+        <source>Lens: %1</source>
+        <translation>鏡頭：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="136"/>
+        <source>No lens has been fitted or opened.</source>
+        <translation>尚未擬合或開啟鏡頭。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="156"/>
+        <source>Lens: fx %1 px, k1 %2, k2 %3; RMS %4 px.</source>
+        <translation>鏡頭：fx %1 像素，k1 %2，k2 %3；均方根 %4 像素。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="162"/>
+        <source>Lens: none (the floor calibration is a homography alone).</source>
+        <translation>鏡頭：無（地面校準只是單應性變換）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="166"/>
+        <source>%1 board view(s) captured (at least %2; move the board over the whole image, its corners too).</source>
+        <translation>已擷取 %1 個棋盤視圖（至少需要 %2 個；把棋盤移遍整個影像，包括四角）。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="229"/>
+        <source>Fence: %1</source>
+        <translation>圍欄：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="232"/>
+        <source>Fence: %1 corners; a car outside it ends the trial in failsafe.</source>
+        <translation>圍欄：%1 個角；車輛離開圍欄時試驗以失效保護結束。</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigCalibration.cpp" line="235"/>
+        <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
+        <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
+    </message>
+</context>
+<context>
     <name>prisca::rig::RigSession</name>
     <message>
         <location filename="../rig/RigSession.cpp" line="147"/>
@@ -4537,6 +4523,37 @@ Do you want to replace it?</source>
         <location filename="../rig/RigSession.cpp" line="803"/>
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="852"/>
+        <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
+        <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="857"/>
+        <source>Trial %1 ended without a pose</source>
+        <translation>第 %1 次試驗結束時沒有位姿</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="860"/>
+        <source> (stopped after %1 s)</source>
+        <translation>（%1 秒後停止）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="863"/>
+        <source> (failsafe after %1 s)</source>
+        <translation>（%1 秒後進入失效保護）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="864"/>
+        <source> (failsafe after %1 s: %2)</source>
+        <translation>（%1 秒後失效保護：%2）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSession.cpp" line="870"/>
+        <source>%1; %2</source>
+        <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
+        <translation>%1；%2</translation>
     </message>
 </context>
 </TS>

@@ -14,7 +14,7 @@
 #include "app/MainWindow.h"
 #include "app/MappingPanel.h"
 #include "app/RecordPanel.h"
-#include "app/RigPanel.h"
+#include "app/rig/RigPanel.h"
 #include "app/RunThread.h"
 #include "app/RunPanel.h"
 #include "app/TaskPanel.h"

@@ -161,6 +161,7 @@ QStringList appSources() {
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/MethodCatalog.cpp");  // method parameters
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");    // the rig's messages
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");  // the pre-trial check
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigCalibration.cpp");  // the set-up
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/core/ActionMapping.cpp");  // the fit's warnings
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/devices/TransmitterLink.cpp");  // failsafe reasons
     return sources;

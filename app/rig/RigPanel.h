@@ -7,25 +7,27 @@
 
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
-class QCheckBox;
-class QComboBox;
 class QLabel;
-class QLineEdit;
 class QPushButton;
-class QSpinBox;
-class QDoubleSpinBox;
-class QTimer;
 class QTabWidget;
+class QTimer;
+
+namespace prisca::rig {
+class RigCalibration;
+}
 
 namespace prisca::app {
 
 class CameraView;
-class ChannelMapEditor;
+class DrivingInput;
 class EmergencyStop;
 class LabSession;
-class DrivingInput;
+class RigCameraPage;
+class RigLinkPage;
+class RigSetupPage;
 
 /// The real rig (or the virtual one), shown and commanded: the camera (a V4L2 device, a video
 /// file, or the virtual rig's synthetic camera over a simulated car driven through the link)
@@ -33,7 +35,10 @@ class DrivingInput;
 /// calibration (load, save, or click four or more floor points of known position); the
 /// transmitter link (port chooser listing real ports plus a typed path, protocol, connect,
 /// status with rate and errors); driving to record, trials. The rig itself (threads, the closed
-/// loop, recording to disk, scoring) is the RigSession this panel owns.
+/// loop, recording to disk, scoring, which trials may start) is the RigSession this panel owns,
+/// and the set-up (floor, lens, fence) its RigCalibration workflow; the panel shows and commands
+/// them: the actions and the trial strip above, the camera's image on the left, and three pages
+/// (RigCameraPage, RigLinkPage, RigSetupPage).
 class RigPanel : public QWidget {
     Q_OBJECT
   public:
@@ -61,8 +66,8 @@ class RigPanel : public QWidget {
     /// Fits the lens to the views captured; the floor calibration is fitted again under it.
     bool fitLens();
     bool loadLens(const QString& path);
-    int boardViewsCaptured() const { return static_cast<int>(boardViews_.size()); }
-    const std::optional<devices::CameraLens>& lens() const { return lens_; }
+    int boardViewsCaptured() const;
+    const std::optional<devices::CameraLens>& lens() const;
 
     // The loop's latency.
     /// Starts the measurement (the car at rest in view, the link up); the result is shown and
@@ -83,7 +88,7 @@ class RigPanel : public QWidget {
     QString bundleParent() const { return rig_.bundleParent(); }
     void setSaveBundles(bool on);
     /// The newest trial's bundle folder (empty: none yet).
-    const QString& lastBundle() const { return lastBundle_; }
+    const QString& lastBundle() const;
 
   signals:
     /// Open this bundle in a replay window.
@@ -149,7 +154,6 @@ class RigPanel : public QWidget {
     void resetEmergencyStop();
     void retranslateUi();
     void updateButtons();
-    void refreshPorts();
     void showFrame(const devices::CameraFrame& frame,
                    const std::optional<devices::PlanarPose>& pose);
     void showLinkStatus(const devices::LinkStatus& status);
@@ -159,86 +163,41 @@ class RigPanel : public QWidget {
     void showReadiness();
     void useRecording(const rig::RigRecording& recording);
     void driveTick();
-    void applyFence();
-    static QString defaultBundleFolder();
-    void showLensInfo();
-    /// A real camera (a device or a video) with the virtual rig's calibration still in place.
-    bool virtualCalibrationOnRealCamera() const;
-    static QString virtualCalibrationWarning();
+    /// The pages, the actions and the trial strip laid out beside the camera's image.
+    void buildLayout();
+    /// The session's, the pages' and the buttons' signals to the panel.
+    void connectParts();
+    /// Clicks on the camera's image: fence corners or floor points, as the pages ask.
+    void clickOnImage(const QPointF& image);
+    void setClickMode();
 
     LabSession& session_;
     EmergencyStop& emergency_;
     rig::RigSession rig_;
-    std::vector<devices::CalibrationPoint> clicked_;
-    cv::Mat lastFrame_;  ///< the newest frame shown (for capturing board views)
-    std::vector<std::vector<cv::Point2f>> boardViews_;
-    std::optional<devices::CameraLens> lens_;
-    QVector<QPointF> fenceCorners_;
-    QLabel* maxSpeedLabel_ = nullptr;
-    QLabel* maxLostLabel_ = nullptr;
-    QTabWidget* tabs_ = nullptr;
-    cv::Size lensImageSize_;
-
+    std::unique_ptr<rig::RigCalibration> setup_;
     CameraView* view_;
-    QLabel* sourceLabel_;
-    QComboBox* source_;
-    QLineEdit* sourcePath_;
-    QLabel* cameraSettingsLabel_;
-    QSpinBox* width_;
-    QSpinBox* height_;
-    QSpinBox* fps_;
-    QSpinBox* exposure_;
-    QSpinBox* gain_;
+    RigCameraPage* cameraPage_ = nullptr;
+    RigLinkPage* linkPage_ = nullptr;
+    RigSetupPage* setupPage_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
     QPushButton* startCamera_;
     QPushButton* stopCamera_;
-    QLabel* calibrationInfo_;
-    QPushButton* loadCalibration_;
-    QPushButton* saveCalibration_;
-    QPushButton* calibrate_;
-    QLabel* portLabel_;
-    QComboBox* port_;
-    QLabel* protocolLabel_;
-    QComboBox* protocol_;
     QPushButton* connect_;
     QPushButton* disconnect_;
-    QLabel* linkInfo_;
-    QLabel* baudLabel_;
-    QSpinBox* baud_;
-    ChannelMapEditor* channels_;
+    QPushButton* drive_;
+    QPushButton* runTrial_;
+    QPushButton* stopTrial_;
+    QLabel* readiness_;  ///< ready / not ready for a trial, and what is missing
+    QPushButton* putBack_;  ///< the virtual car back at its start
+    QLabel* trialInfo_;
     DrivingInput* driving_ = nullptr;
     bool drivingActive_ = false;
     QTimer* driveTimer_ = nullptr;
-    QPushButton* drive_;
-    QPushButton* runTrial_;
-    QLabel* readiness_ = nullptr;  ///< ready / not ready for a trial, and what is missing
-    QPushButton* putBack_ = nullptr;  ///< the virtual car back at its start
-    QDoubleSpinBox* declaredLatency_ = nullptr;  ///< [ms]; 0: not declared
-    QLabel* declaredLatencyLabel_ = nullptr;
-    QPushButton* stopTrial_;
-    QLabel* trialInfo_;
-    QLabel* lensInfo_;
-    QPushButton* captureBoard_;
-    QPushButton* fitLens_;
-    QPushButton* loadLens_;
-    QLabel* latencyInfo_;
-    QPushButton* measureLatency_;
-    QLabel* fenceInfo_;
-    QPushButton* drawFence_;
-    QPushButton* clearFence_;
-    QDoubleSpinBox* maxSpeed_;
-    QDoubleSpinBox* maxLost_;
-    QCheckBox* saveBundles_;
-    QPushButton* replayLast_;
-    QString lastBundle_;
     QString lastResult_;
-    QLabel* cameraInfo_ = nullptr;
     QTimer* statusTimer_ = nullptr;  ///< the camera's frame rate, once a second
     long long framesAtLastTick_ = 0;
     double cameraFps_ = 0.0;
     bool tracking_ = false;  ///< the newest frame shown had the car in it
-    bool cameraFailed_ = false;
-    bool cameraEnded_ = false;  ///< the video file played to its end
-    QString loggedLinkState_;
     bool recordingEndedByEmergency_ = false;
 };
 
