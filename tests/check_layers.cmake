@@ -24,4 +24,15 @@ foreach(rule IN LISTS rules)
         endforeach()
     endforeach()
 endforeach()
+# The method declarations (sim/methods/) are the catalog's: everything else reaches a method
+# through sim/MethodCatalog.h.
+file(GLOB_RECURSE outside "${SOURCE_DIR}/core/*.[ch]*" "${SOURCE_DIR}/devices/*.[ch]*"
+     "${SOURCE_DIR}/rigsim/*.[ch]*" "${SOURCE_DIR}/rig/*.[ch]*" "${SOURCE_DIR}/app/*.[ch]*"
+     "${SOURCE_DIR}/tools/*.[ch]*" "${SOURCE_DIR}/tests/*.[ch]*")
+foreach(src IN LISTS outside)
+    file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"sim/methods/")
+    if(includes)
+        message(FATAL_ERROR "${src}: '${includes}': sim/methods/ is the catalog's own; use sim/MethodCatalog.h")
+    endif()
+endforeach()
 message(STATUS "${checked} sources of core, sim, devices, rigsim and rig include only their own layers and below")

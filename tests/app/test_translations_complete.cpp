@@ -158,7 +158,10 @@ QStringList appSources() {
     }
     sources.sort();
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/PlantCatalog.cpp");  // the plants' names
-    sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/MethodCatalog.cpp");  // method parameters
+    for (const char* family : {"FeedbackMethods", "LearningMethods", "LqrMethod",
+                               "PlanningMethods", "PriscaMethods"}) {  // method parameters
+        sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/methods/%1.cpp").arg(QLatin1String(family));
+    }
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");    // the rig's messages
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");  // the pre-trial check
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigCalibration.cpp");  // the set-up

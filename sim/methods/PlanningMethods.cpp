@@ -1,0 +1,213 @@
+// The methods that plan through a model: the oracle (through the simulated plant itself: the limit) and MPC (through the car identified from its demonstration).
+#include "sim/methods/Declarations.h"
+
+#include "sim/Identification.h"
+#include "sim/MpcController.h"
+#include "sim/MethodTuning.h"
+#include <QCoreApplication>
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::sim::methods {
+
+// The oracle's planner for this demonstration's trials (their length and rest), through the
+// proportional part of the profile's PD (u = u* - Kp C e) where the profile says so.
+OracleParameters plannerFor(const MethodTuning& profile, const core::Demonstration& demonstration) {
+    OracleParameters parameters = profile.oracle;
+    const EpisodeSettings trial = profile.episode(demonstration, 1.0, 1.0);
+    const double dt = demonstration.dt;
+    parameters.trialSteps = static_cast<int>(trial.duration / dt + 0.5);
+    parameters.restAfterStep =
+        trial.stopAtRestAfter >= 0.0 ? static_cast<int>(trial.stopAtRestAfter / dt + 0.5) : -1;
+    if (profile.oracleFeedback) {
+        parameters.feedback = -(profile.pd.kp.asDiagonal() * profile.pd.errorCombination);
+    }
+    return parameters;
+}
+
+namespace {
+
+const MethodParameter& oracleSamples() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "oracle.samples", QT_TRANSLATE_NOOP("MethodParameter", "Oracle samples"), "", 1, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Candidate plans the oracle simulates at each planning."));
+        p.get = [](const MethodTuning& f) { return one(f.oracle.samples); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.oracle.samples = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& oracleReplan() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "oracle.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Oracle replanning"),
+            "steps", 1, 1000,
+            QT_TRANSLATE_NOOP("MethodParameter", "Control steps between two plans of the oracle."));
+        p.get = [](const MethodTuning& f) { return one(f.oracle.replanEvery); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.oracle.replanEvery = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcReplan() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "mpc.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Replanning"), "steps", 1,
+            100,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Control steps between two plans through the model (2 at 25 Hz: "
+                              "every 0.08 s)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.replanEvery); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.replanEvery = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcRollouts() {
+    static const MethodParameter p = [] {
+        MethodParameter p = integer(
+            "mpc.rollouts", QT_TRANSLATE_NOOP("MethodParameter", "Model runs per plan"), "", 2,
+            1000,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The planning's budget: runs of the model to the trial's end per "
+                              "plan."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.rollouts); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.rollouts = static_cast<int>(v[0]);
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcTube() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.tube", QT_TRANSLATE_NOOP("MethodParameter", "Predicted tube"), "m", 0.01, 10.0, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "How far the measured position may stray from the model's "
+                              "prediction before the fallback law finishes the trial."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.tubePosition); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.tubePosition = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcSpinGuard() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.spin-slip", QT_TRANSLATE_NOOP("MethodParameter", "Spin guard"), "deg", 0.0, 90.0,
+            0,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "How far the side-slip angle may stray from the demonstration's "
+                              "on the way into the slide before the fallback law finishes the "
+                              "trial (0: no guard)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.spinSideSlip * 180.0 / M_PI); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
+            f.mpc.spinSideSlip = v[0] * M_PI / 180.0;
+            // 0 switches the whole guard off, the yaw rate's bound too.
+            f.mpc.spinYawRate = v[0] == 0.0 ? 0.0 : MpcParameters{}.spinYawRate;
+        };
+        return p;
+    }();
+    return p;
+}
+
+const MethodParameter& mpcRefit() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "mpc.refit", QT_TRANSLATE_NOOP("MethodParameter", "Refit after each trial"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Refit the model on the demonstration and the day's newest trials "
+                              "after each trial."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.refit ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.refit = v[0] > 0.5; };
+        return p;
+    }();
+    return p;
+}
+
+Made makeOracle(const MethodSpec&, const MethodInput& in) {
+    const MethodTuning& profile = in.profile;
+    const auto& demonstration = in.demonstration;
+    const OracleParameters parameters = plannerFor(profile, *demonstration);
+    return std::make_unique<OracleController>(
+        profile.trackingProblem(demonstration, Mode::TimeDriven), parameters);
+}
+
+Made makeMpc(const MethodSpec&, const MethodInput& in) {
+    const MethodTuning& profile = in.profile;
+    const auto& demonstration = in.demonstration;
+    if (!identificationAvailable(profile.info.name)) {
+        throw std::invalid_argument(
+            QStringLiteral("mpc plans through an identified model; identification knows %1, not "
+                           "'%2'")
+                .arg(QStringLiteral("slidecar"), profile.info.name)
+                .toStdString());
+    }
+    const OracleParameters planner = plannerFor(profile, *demonstration);
+    // The fallback: the PD with the least-state-deviation reference, the profile's law.
+    std::unique_ptr<core::Controller> fallback =
+        MethodCatalog::create(QStringLiteral("pd-lsd"), profile, demonstration, in.fittedB);
+    std::vector<core::Demonstration> data{*demonstration};
+    const IdentificationSettings settings = mpcIdentificationSettings(profile.mpc, false);
+    PlantParameters model;
+    double fit = -1.0;
+    if (profile.mpcModel) {
+        model = *profile.mpcModel;
+        fit = modelPositionRms(data, model, settings);
+    } else {
+        const PlantParameters prior =
+            profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
+        const IdentificationResult identified = identifyPlant(data, prior, settings);
+        if (identified.ok()) {
+            model = identified.parameters;
+            fit = identified.positionRms;
+        } else {
+            // Nothing to plan through: the fallback flies every trial, and says why.
+            model = identified.parameters;
+            fit = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    return std::make_unique<MpcController>(profile.trackingProblem(demonstration, Mode::TimeDriven),
+                                           profile.mpc, planner, std::move(fallback),
+                                           std::move(model), fit, std::move(data));
+}
+
+}  // namespace
+
+/// MPC, with the PD+LSD law as its fallback.
+MethodSpec mpcMethod() {
+    MethodSpec s = entry("mpc", "MPC", &makeMpc);
+    s.learnsOnline = true;  // the model is refit on each trial
+    s.inDefaultTable1 = false;
+    s.plansThroughModel = true;
+    s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
+    s.summary = "model-predictive parking through the car identified from its demonstration";
+    s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcSpinGuard(), mpcRefit()};
+    return s;
+}
+
+/// The oracle.
+MethodSpec oracleMethod() {
+    MethodSpec s = entry("oracle", "LIMIT (oracle)", &makeOracle);
+    s.limit = true;
+    s.simulationOnly = true;
+    s.summary = "plans on copies of the simulated plant itself: the limit, simulation only";
+    s.parameters = {oracleSamples(), oracleReplan()};
+    return s;
+}
+
+}  // namespace prisca::sim::methods
