@@ -32,439 +32,439 @@
 <context>
     <name>MethodParameter</name>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="318"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="15"/>
         <source>Horizon H</source>
         <translation>時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="319"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="16"/>
         <source>Smoothing horizon H of the nested expectation over the last H steps (eq. 9, 13).</source>
         <translation>巢狀期望在最近 H 步上的平滑時域 H（式 9、13）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="333"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="30"/>
         <source>Depreciation γ</source>
         <translation>折舊 γ</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="334"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="31"/>
         <source>Rate of inverse depreciation D (eq. 10); Lemma 4.1 needs γ ≥ 0.93 at H = 10.</source>
         <translation>逆折舊 D 的比率（式 10）；在 H = 10 時，引理 4.1 需要 γ ≥ 0.93。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="346"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="43"/>
         <source>Step rate β</source>
         <translation>步長速率 β</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="347"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="44"/>
         <source>Rate of the decaying step size α_k = α_0 β / (k + β) (eq. 3).</source>
         <translation>遞減步長 α_k = α_0 β / (k + β) 的速率（式 3）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="359"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="56"/>
         <source>Automatic scales</source>
         <translation>自動比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="360"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="57"/>
         <source>Feature scales, α_0 and matching window derived from the demonstration and the fit when PRISCA starts; off: the step scale and feature scales set here.</source>
         <translation>PRISCA 開始時由示範及擬合推導特徵比例、α_0 及匹配窗口；關閉：使用此處設定的步長比例及特徵比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="621"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="92"/>
         <source>Start</source>
         <translation>起點</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="622"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="93"/>
         <source>The feedback law the PD family and PRISCA (its prior) start from. tuned: the plant profile&apos;s PD gains; demo: derived from the demonstration, the fit and the actuator limits alone (a stationary LQR gain on the fitted model with weights from the demonstration&apos;s own scales, no faster than the fitted dead time allows, on the errors B~ names per control but those the action sets); PRISCA then also takes its automatic step and scales.</source>
         <translation>PD 系列及 PRISCA（其先驗）起始的回饋律。tuned：設備設定檔中調校好的 PD 增益；demo：只由示範、擬合及致動器限制推導（以示範本身的尺度為權重、在擬合模型上求得的穩態 LQR 增益，速度不超過擬合死區時間所容許，只用 B~ 為每個控制指明、而非由動作直接設定的誤差）；PRISCA 亦隨之採用自動步長及比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="389"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="86"/>
         <source>Step scale α_0</source>
         <translation>步長比例 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="374"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="71"/>
         <source>Automatic α_0</source>
         <translation>自動 α_0</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="376"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="73"/>
         <source>α_0 of the automatic scales: the fraction of a Newton step on the cost&apos;s curvature taken per control step.</source>
         <translation>自動尺度的 α_0：每個控制步按成本曲率所走的牛頓步比例。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="390"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="87"/>
         <source>α_0 of eq. 3 (the paper uses 1; its right size depends on the units of e, φ and B). Not used with automatic scales.</source>
         <translation>式 3 的 α_0（論文用 1；合適大小取決於 e、φ 及 B 的單位）。使用自動比例時不採用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="403"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="100"/>
         <source>θ bound</source>
         <translation>θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="404"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="101"/>
         <source>If above 0, θ is kept in |θ_i| ≤ bound after each update (projected descent).</source>
         <translation>若大於 0，每次更新後 θ 保持在 |θ_i| ≤ 界限內（投影下降）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="406"/>
-        <location filename="../sim/MethodCatalog.cpp" line="457"/>
-        <location filename="../sim/MethodCatalog.cpp" line="736"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="47"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="103"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="154"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="417"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="114"/>
         <source>Start from the PD law</source>
         <translation>由 PD 控制律開始</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="418"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="115"/>
         <source>The policy is u = u* + the PD law + θᵀφ, so θ = 0 already holds the robot on the path; off: θ = 0 is no feedback (Algorithm 1).</source>
         <translation>策略為 u = u* + PD 控制律 + θᵀφ，因此 θ = 0 已能讓機械人保持在路徑上；關閉：θ = 0 即無回饋（演算法 1）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="431"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="128"/>
         <source>Gradient</source>
         <translation>梯度</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="432"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="129"/>
         <source>one-step: eq. 14 as printed; closed-loop: eq. 4&apos;s chain rule carried over the window through the fitted model and the policy&apos;s own feedback.</source>
         <translation>one-step：照印出的式 14；closed-loop：式 4 的連鎖律經擬合模型及策略本身的回饋在窗口內傳遞。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="453"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="150"/>
         <source>Effort weight R</source>
         <translation>施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="454"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="151"/>
         <source>The cost also charges the correction&apos;s effort, R (θᵀφ)² per control: what makes learning settle without a θ bound.</source>
         <translation>成本亦計入修正的施力，每個控制量 R (θᵀφ)²：令學習在無 θ 界限下收斂。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="476"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="173"/>
         <source>Local optimal baseline</source>
         <translation>局部最優基線</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="477"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="174"/>
         <source>Subtract the local optimal baseline b (eq. 15) from the gradient; off: b = 0.</source>
         <translation>從梯度減去局部最優基線 b（式 15）；關閉：b = 0。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="492"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="189"/>
         <source>Inverse depreciation</source>
         <translation>逆折舊</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="493"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="190"/>
         <source>Weigh the window&apos;s gradients by the inverse depreciation D (eq. 10); off: D = 1.</source>
         <translation>以逆折舊 D（式 10）加權窗口內的梯度；關閉：D = 1。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="510"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="207"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="511"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="208"/>
         <source>fitted: B = B_v (.) B~ from the fit (eq. 8); signs: B~ alone; drift: eq. 5 in full, the state&apos;s own drift A fitted with B.</source>
         <translation>fitted：擬合得出的 B = B_v (.) B~（式 8）；signs：只用 B~；drift：完整的式 5，狀態本身的漂移 A 與 B 一併擬合。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="528"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="225"/>
         <source>Model delay d</source>
         <translation>模型延遲 d</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="530"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="227"/>
         <source>The measurement&apos;s age d in the closed-loop gradient&apos;s model.</source>
         <translation>閉環梯度模型中量測的時延 d。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="544"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="241"/>
         <source>Phase features</source>
         <translation>階段特徵</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="545"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="242"/>
         <source>Length of the stretches of the demonstration over which PRISCA learns a correction of the demonstration&apos;s action (one feature per stretch and control); 0: none.</source>
         <translation>PRISCA 在示範中學習示範動作修正的每段長度（每段每個控制一個特徵）；0：不用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="559"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="256"/>
         <source>Learn where explained</source>
         <translation>只在可解釋處學習</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="560"/>
+        <location filename="../sim/methods/PriscaMethods.cpp" line="257"/>
         <source>The closed-loop gradient learns only on the samples a robust fit explains.</source>
         <translation>閉環梯度只在穩健擬合能解釋的樣本上學習。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="577"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="48"/>
         <source>Heading feedback reversed</source>
         <translation>倒車時反轉航向回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="578"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="49"/>
         <source>For a vehicle, the feedback law (the PD family&apos;s, PRISCA&apos;s prior) turns the sign of its heading and yaw-rate terms where the demonstration drives backwards, where steering turns the car the other way; off: the same law in both directions.</source>
         <translation>對車輛而言，回饋律（PD 系列的、PRISCA 先驗的）在示範倒車之處反轉其航向及偏航率項的符號，因為該處轉向令車向另一邊轉；關閉：前進與倒車用同一回饋律。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="595"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="66"/>
         <source>Feedback where explained</source>
         <translation>只在可解釋處回饋</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="596"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="67"/>
         <source>The feedback law (the PD family&apos;s, PRISCA&apos;s prior) acts only while the reference is a sample the robust fit explains: not in a slide, where the linear model the gains stand on does not hold. auto: with the demonstration start, not with the tuned one.</source>
         <translation>回饋律（PD 系列的、PRISCA 先驗的）只在參考樣本可被穩健擬合解釋時作用：滑行中不作用，因為增益所依據的線性模型在那裏不成立。auto：以示範起始時啟用，以調校起始時不啟用。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="646"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="117"/>
         <source>Matching window</source>
         <translation>匹配窗口</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="648"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="119"/>
         <source>How far ahead the least-state-deviation reference may search (eq. 12); 0 searches the whole demonstration.</source>
         <translation>最小狀態偏差參考點可向前搜尋的範圍（式 12）；0 表示搜尋整段示範。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="663"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="134"/>
         <source>PD gain Kp</source>
         <translation>PD 增益 Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="664"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="135"/>
         <source>Proportional gain per control on its error combination c_l · e (u = u* − Kp ε − Kd dε/dt).</source>
         <translation>每個控制量對其誤差組合 c_l · e 的比例增益（u = u* − Kp ε − Kd dε/dt）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="677"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="148"/>
         <source>PD gain Kd</source>
         <translation>PD 增益 Kd</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="678"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="149"/>
         <source>Derivative gain per control on the rate of its error combination.</source>
         <translation>每個控制量對其誤差組合變化率的微分增益。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="691"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="162"/>
         <source>PD smoothing H</source>
         <translation>PD 平滑 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="692"/>
+        <location filename="../sim/methods/FeedbackMethods.cpp" line="163"/>
         <source>PD+H and PD+H+LSD smooth the error over this many steps (the weights of eq. 9).</source>
         <translation>PD+H 及 PD+H+LSD 在這麼多步上平滑誤差（式 9 的權重）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="706"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="17"/>
         <source>PGSD horizon H</source>
         <translation>PGSD 時域 H</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="707"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="18"/>
         <source>PGSD&apos;s smoothing horizon H (eq. 9).</source>
         <translation>PGSD 的平滑時域 H（式 9）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="720"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="31"/>
         <source>PGSD step α</source>
         <translation>PGSD 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="721"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="32"/>
         <source>The fixed step size of PGSD (no decay).</source>
         <translation>PGSD 的固定步長（不遞減）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="732"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="43"/>
         <source>PGSD θ bound</source>
         <translation>PGSD θ 界限</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="734"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="45"/>
         <source>If above 0, PGSD&apos;s θ is kept in |θ_i| ≤ bound after each update.</source>
         <translation>若大於 0，每次更新後 PGSD 的 θ 保持在 |θ_i| ≤ 界限內。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="747"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="58"/>
         <source>PEGASUS iterations</source>
         <translation>PEGASUS 迭代次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="749"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="60"/>
         <source>Gradient steps PEGASUS takes on its fixed scenarios before a run.</source>
         <translation>PEGASUS 在運行前於其固定情境上所作的梯度步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="763"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="74"/>
         <source>PEGASUS scenarios</source>
         <translation>PEGASUS 情境數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="765"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="76"/>
         <source>Fixed scenarios (start, perturbation, noise) each evaluation averages.</source>
         <translation>每次評估所平均的固定情境（起點、擾動、雜訊）數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="779"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="90"/>
         <source>PEGASUS step α</source>
         <translation>PEGASUS 步長 α</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="780"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="91"/>
         <source>Gradient-descent step on the mean episode cost.</source>
         <translation>對平均回合成本的梯度下降步長。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="791"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="102"/>
         <source>ILC learning Γ/Kp</source>
         <translation>ILC 學習 Γ/Kp</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="793"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="104"/>
         <source>ILC&apos;s learning gain per control, as a share of the PD&apos;s Kp: how much of a trial&apos;s error goes into the next trial&apos;s feedforward.</source>
         <translation>ILC 每個控制量的學習增益，以 PD 的 Kp 的比例表示：一次試驗的誤差有多少會計入下一次試驗的前饋。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="806"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="117"/>
         <source>ILC lead</source>
         <translation>ILC 超前</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="807"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="118"/>
         <source>The error this many steps later corrects the action now (covers the plant&apos;s delay).</source>
         <translation>以這麼多步之後的誤差修正現在的動作（補償對象的延遲）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="821"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="132"/>
         <source>ILC Q cutoff</source>
         <translation>ILC Q 截止頻率</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="822"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="133"/>
         <source>Zero-phase low-pass on the learned feedforward after each trial; 0 leaves it unfiltered.</source>
         <translation>每次試驗後對學到的前饋作零相位低通濾波；0 表示不濾波。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="834"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="145"/>
         <source>ILC feedback scale</source>
         <translation>ILC 回饋比例</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="836"/>
+        <location filename="../sim/methods/LearningMethods.cpp" line="147"/>
         <source>The PD gains in ILC&apos;s loop, scaled by this.</source>
         <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="847"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="33"/>
         <source>Oracle samples</source>
         <translation>理想控制器樣本數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="848"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="34"/>
         <source>Candidate plans the oracle simulates at each planning.</source>
         <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="862"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="48"/>
         <source>Oracle replanning</source>
         <translation>理想控制器重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="864"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="50"/>
         <source>Control steps between two plans of the oracle.</source>
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="877"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="63"/>
         <source>Replanning</source>
         <translation>重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="879"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="65"/>
         <source>Control steps between two plans through the model (2 at 25 Hz: every 0.08 s).</source>
         <translation>兩次經模型規劃之間的控制步數（25 Hz 時為 2：每 0.08 秒）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="894"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="80"/>
         <source>Model runs per plan</source>
         <translation>每次規劃的模型模擬次數</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="896"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="82"/>
         <source>The planning&apos;s budget: runs of the model to the trial&apos;s end per plan.</source>
         <translation>規劃的預算：每次規劃把模型模擬到試驗結束的次數。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="911"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="97"/>
         <source>Predicted tube</source>
         <translation>預測管道</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="912"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="98"/>
         <source>How far the measured position may stray from the model&apos;s prediction before the fallback law finishes the trial.</source>
         <translation>量得的位置可偏離模型預測多遠，超出後由後備控制律完成該次試驗。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="925"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="111"/>
         <source>Spin guard</source>
         <translation>打轉防護</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="927"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="113"/>
         <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
         <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="945"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="131"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="946"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="132"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="985"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="44"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="987"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="46"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1008"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="67"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1010"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="69"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1025"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="84"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/MethodCatalog.cpp" line="1026"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="85"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
