@@ -39,7 +39,6 @@ class ArenaView : public QWidget {
     /// Fits the whole scene into the view.
     void fitScene();
 
-
     QSize sizeHint() const override { return {640, 480}; }
 
   protected:

@@ -38,8 +38,8 @@ std::vector<BundleEntry> BundleChooser::scan(const QStringList& parents) {
             }
             seen << path;
             core::FileError error;
-            const auto json = core::readFileBounded(QDir(path).filePath(QStringLiteral("bundle.json")),
-                                                    kMaxHeaderBytes, &error);
+            const auto json = core::readFileBounded(
+                QDir(path).filePath(QStringLiteral("bundle.json")), kMaxHeaderBytes, &error);
             if (!json) {
                 continue;  // not a bundle
             }
@@ -112,14 +112,13 @@ BundleChooser::BundleChooser(const QStringList& parents, QWidget* parent)
     rig->setExpanded(true);
     simulated->setExpanded(rigCount == 0 || simulatedCount <= 10);
     // The newest of the rig's, else the newest simulated one.
-    if (QTreeWidgetItem* newest = rig->childCount() > 0 ? rig->child(0)
+    if (QTreeWidgetItem* newest = rig->childCount() > 0         ? rig->child(0)
                                   : simulated->childCount() > 0 ? simulated->child(0)
                                                                 : nullptr) {
         list_->setCurrentItem(newest);
     }
-    auto* empty = new QLabel(tr("No trial bundles yet in %1.")
-                                 .arg(QDir::toNativeSeparators(parents.value(0))),
-                             this);
+    auto* empty = new QLabel(
+        tr("No trial bundles yet in %1.").arg(QDir::toNativeSeparators(parents.value(0))), this);
     empty->setVisible(rigCount + simulatedCount == 0);
     empty->setWordWrap(true);
 

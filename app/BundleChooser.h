@@ -15,8 +15,8 @@ namespace prisca::app {
 /// One trial bundle as the chooser lists it, read from its bundle.json only.
 struct BundleEntry {
     QString folder;
-    bool rig = false;    ///< a trial on the rig (else a simulated one)
-    QDateTime when;      ///< started (the header's, else the folder's time)
+    bool rig = false;  ///< a trial on the rig (else a simulated one)
+    QDateTime when;    ///< started (the header's, else the folder's time)
     QString method;
     int trial = 0;
     bool complete = false;  ///< the writer wrote its result

@@ -24,8 +24,8 @@ void CameraView::setFrame(const cv::Mat& m, const std::optional<devices::PlanarP
         image = QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_Grayscale8)
                     .copy();
     } else if (m.type() == CV_8UC3) {
-        image = QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888)
-                    .copy();
+        image =
+            QImage(m.data, m.cols, m.rows, static_cast<int>(m.step), QImage::Format_BGR888).copy();
     }
     setFrame(image, pose);
 }

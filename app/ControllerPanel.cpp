@@ -11,17 +11,17 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
-#include <QGridLayout>
 #include <QVBoxLayout>
-#include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
@@ -164,13 +164,14 @@ void ControllerPanel::buildEditors() {
             boxes->setContentsMargins(0, 0, 0, 0);
             for (size_t l = 0; l < editor.fields.size(); ++l) {
                 const int line = static_cast<int>(l);
-                boxes->addWidget(new QLabel(controlName(info.actionNames.value(line)), row), line, 0);
+                boxes->addWidget(new QLabel(controlName(info.actionNames.value(line)), row), line,
+                                 0);
                 QWidget* field = editor.fields[l];
                 field->setParent(row);
                 // The width the row has, not that of the range's largest number.
                 field->setSizePolicy(QSizePolicy::Ignored, field->sizePolicy().verticalPolicy());
-                field->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("00.000000")) +
-                                       30);
+                field->setMinimumWidth(
+                    fontMetrics().horizontalAdvance(QStringLiteral("00.000000")) + 30);
                 boxes->addWidget(field, line, 1);
             }
             boxes->setColumnStretch(1, 1);
@@ -319,7 +320,8 @@ void ControllerPanel::apply() {
         try {
             editor.parameter->assign(p, value);
         } catch (const std::invalid_argument& e) {
-            showStatus(problem_, tr("Controller"), QString::fromUtf8(e.what()), MessageLevel::Warning);
+            showStatus(problem_, tr("Controller"), QString::fromUtf8(e.what()),
+                       MessageLevel::Warning);
             return;  // nothing applied
         }
     }
@@ -334,8 +336,9 @@ void ControllerPanel::apply() {
             const double v =
                 features_->item(l, j) ? features_->item(l, j)->text().toDouble(&ok) : 0.0;
             if (!ok || !std::isfinite(v)) {
-                problem =
-                    tr("Feature φ%1 of %2 must be a number.").arg(j).arg(controlName(p.info.actionNames[l]));
+                problem = tr("Feature φ%1 of %2 must be a number.")
+                              .arg(j)
+                              .arg(controlName(p.info.actionNames[l]));
             } else {
                 terms[l][j].scale = v;
             }
@@ -402,8 +405,8 @@ void ControllerPanel::retranslateUi() {
     for (const Editor& editor : editors_) {
         const sim::MethodParameter& p = *editor.parameter;
         const QString help = QCoreApplication::translate("MethodParameter", p.help);
-        const QString tip = QStringLiteral("%1 (%2, %3)").arg(help, QString::fromLatin1(p.name),
-                                                               p.range());
+        const QString tip =
+            QStringLiteral("%1 (%2, %3)").arg(help, QString::fromLatin1(p.name), p.range());
         QString text = QCoreApplication::translate("MethodParameter", p.label);
         const QString unit = unitText(p.unit);
         if (p.perChannel && !unit.isEmpty()) {
@@ -412,7 +415,8 @@ void ControllerPanel::retranslateUi() {
         label(editor.fields.front(), editor.label, text + QLatin1Char(':'), tip);
         for (QWidget* field : editor.fields) {
             // The unit after the number (per channel, the label says it), in this language.
-            const QString suffix = unit.isEmpty() || p.perChannel ? QString() : QLatin1Char(' ') + unit;
+            const QString suffix =
+                unit.isEmpty() || p.perChannel ? QString() : QLatin1Char(' ') + unit;
             if (auto* box = qobject_cast<QSpinBox*>(field)) {
                 box->setSuffix(suffix);
             } else if (auto* real = qobject_cast<QDoubleSpinBox*>(field)) {

@@ -42,25 +42,25 @@ bool within(const QWidget* window, const QWidget* top) {
 
 bool isInput(const QEvent* event) {
     switch (event->type()) {
-    case QEvent::MouseButtonPress:
-    case QEvent::MouseButtonRelease:
-    case QEvent::MouseButtonDblClick:
-    case QEvent::Wheel:
-    case QEvent::KeyPress:
-    case QEvent::KeyRelease:
-    case QEvent::ShortcutOverride:
-    case QEvent::Shortcut:
-    case QEvent::ContextMenu:
-    case QEvent::TouchBegin:
-    case QEvent::TouchUpdate:
-    case QEvent::TouchEnd:
-    case QEvent::TabletPress:
-    case QEvent::Drop:
-        return true;
-    case QEvent::Close:
-        return event->spontaneous();  // the window manager's close button, not close()
-    default:
-        return false;
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseButtonDblClick:
+        case QEvent::Wheel:
+        case QEvent::KeyPress:
+        case QEvent::KeyRelease:
+        case QEvent::ShortcutOverride:
+        case QEvent::Shortcut:
+        case QEvent::ContextMenu:
+        case QEvent::TouchBegin:
+        case QEvent::TouchUpdate:
+        case QEvent::TouchEnd:
+        case QEvent::TabletPress:
+        case QEvent::Drop:
+            return true;
+        case QEvent::Close:
+            return event->spontaneous();  // the window manager's close button, not close()
+        default:
+            return false;
     }
 }
 
@@ -102,7 +102,8 @@ void EmergencyStopGuard::setExtraKeys(const QList<QKeySequence>& keys) {
 
 bool EmergencyStopGuard::inMainWindow(const QWidget* widget) const {
     const QWidget* top = widget->window();
-    return top == window_ || (qobject_cast<const QDockWidget*>(top) && top->parentWidget() == window_);
+    return top == window_ ||
+           (qobject_cast<const QDockWidget*>(top) && top->parentWidget() == window_);
 }
 
 QString EmergencyStopGuard::emergencyKey(QObject* watched, const QKeyEvent* key) const {
@@ -156,39 +157,40 @@ bool EmergencyStopGuard::shielded(QObject* watched, const QWidget* top) const {
 
 bool EmergencyStopGuard::eventFilter(QObject* watched, QEvent* event) {
     switch (event->type()) {
-    case QEvent::ShortcutOverride:
-    case QEvent::KeyPress: {
-        const auto* key = static_cast<QKeyEvent*>(event);
-        const QString by = emergencyKey(watched, key);
-        if (by.isEmpty()) {
+        case QEvent::ShortcutOverride:
+        case QEvent::KeyPress: {
+            const auto* key = static_cast<QKeyEvent*>(event);
+            const QString by = emergencyKey(watched, key);
+            if (by.isEmpty()) {
+                break;
+            }
+            // Taken from the shortcut map (ShortcutOverride) and from every widget (KeyPress).
+            event->accept();
+            if (event->type() == QEvent::KeyPress && !key->isAutoRepeat()) {
+                closePopups();
+                press_(by);
+            }
+            return true;
+        }
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonDblClick: {
+            // A list or menu open takes every click, the one on E-STOP too (it would only close
+            // it).
+            auto* widget = qobject_cast<QWidget*>(watched);
+            if (QApplication::activePopupWidget() && button_ && button_->isVisible() && widget &&
+                widget->window()->windowType() == Qt::Popup) {
+                const auto* mouse = static_cast<QMouseEvent*>(event);
+                const QPoint at = button_->mapFromGlobal(mouse->globalPosition().toPoint());
+                if (button_->rect().contains(at)) {
+                    closePopups();
+                    press_(tr("the E-STOP button"));
+                    return true;
+                }
+            }
             break;
         }
-        // Taken from the shortcut map (ShortcutOverride) and from every widget (KeyPress).
-        event->accept();
-        if (event->type() == QEvent::KeyPress && !key->isAutoRepeat()) {
-            closePopups();
-            press_(by);
-        }
-        return true;
-    }
-    case QEvent::MouseButtonPress:
-    case QEvent::MouseButtonDblClick: {
-        // A list or menu open takes every click, the one on E-STOP too (it would only close it).
-        auto* widget = qobject_cast<QWidget*>(watched);
-        if (QApplication::activePopupWidget() && button_ && button_->isVisible() && widget &&
-            widget->window()->windowType() == Qt::Popup) {
-            const auto* mouse = static_cast<QMouseEvent*>(event);
-            const QPoint at = button_->mapFromGlobal(mouse->globalPosition().toPoint());
-            if (button_->rect().contains(at)) {
-                closePopups();
-                press_(tr("the E-STOP button"));
-                return true;
-            }
-        }
-        break;
-    }
-    default:
-        break;
+        default:
+            break;
     }
     QDialog* top = ModalDialog::top();
     if (!top) {

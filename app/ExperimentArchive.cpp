@@ -86,7 +86,9 @@ bool getBand(QDataStream& in, core::ConfidenceBand& b) {
            });
 }
 
-void putPose(QDataStream& s, const Eigen::Vector3d& p) { s << p[0] << p[1] << p[2]; }
+void putPose(QDataStream& s, const Eigen::Vector3d& p) {
+    s << p[0] << p[1] << p[2];
+}
 void getPose(QDataStream& s, Eigen::Vector3d& p) {
     s >> p[0] >> p[1] >> p[2];
     if (!(p.array().abs() <= kMaxMagnitude).all()) {  // NaN too: a figure cannot draw it
@@ -153,7 +155,8 @@ bool saveKeptExperiment(const QString& path, const KeptExperiment& kept, QString
         out << kept.curvesCancelled;
         putVector(out, *kept.curves, [](QDataStream& s, const sim::CurveSummary& c) {
             s << c.method;
-            putVector(s, c.steps, [](QDataStream& s2, long long x) { s2 << static_cast<qint64>(x); });
+            putVector(s, c.steps,
+                      [](QDataStream& s2, long long x) { s2 << static_cast<qint64>(x); });
             putDoubles(s, c.seconds);
             putBand(s, c.band);
         });
@@ -233,11 +236,10 @@ std::optional<KeptExperiment> loadKeptExperiment(const QString& path, QString* e
         });
         for (const sim::CurveSummary& c : *curves) {
             const size_t n = c.seconds.size();
-            ok = ok && c.steps.size() == n && c.band.mean.size() == n &&
-                 c.band.lower.size() == n && c.band.upper.size() == n &&
-                 c.band.standardDeviation.size() == n && c.band.count.size() == n &&
-                 plausible(c.seconds) && plausible(c.band.mean) && plausible(c.band.lower) &&
-                 plausible(c.band.upper);
+            ok = ok && c.steps.size() == n && c.band.mean.size() == n && c.band.lower.size() == n &&
+                 c.band.upper.size() == n && c.band.standardDeviation.size() == n &&
+                 c.band.count.size() == n && plausible(c.seconds) && plausible(c.band.mean) &&
+                 plausible(c.band.lower) && plausible(c.band.upper);
         }
         kept.curves = curves;
     }

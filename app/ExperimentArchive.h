@@ -15,14 +15,14 @@ namespace prisca::app {
 /// What a result on the Experiments panel is about: the settings it was run with (not the spin
 /// boxes' values now) and when it finished.
 struct ExperimentRecord {
-    bool curves = false;      ///< learning curves (else Table I)
-    QString plant;            ///< the target's plant id
-    bool poseTarget = true;   ///< a vehicle (positions) rather than joint angles
-    int count = 0;            ///< trials (Table I) or runs (curves) per method asked for
+    bool curves = false;     ///< learning curves (else Table I)
+    QString plant;           ///< the target's plant id
+    bool poseTarget = true;  ///< a vehicle (positions) rather than joint angles
+    int count = 0;           ///< trials (Table I) or runs (curves) per method asked for
     int seed = 0;
-    long long budget = 0;     ///< learning curves: simulated steps per run
-    QString demonstration;    ///< the demonstration's description
-    QDateTime finished;       ///< when the result came back (local time)
+    long long budget = 0;   ///< learning curves: simulated steps per run
+    QString demonstration;  ///< the demonstration's description
+    QDateTime finished;     ///< when the result came back (local time)
 };
 
 /// The last result of the Experiments panel, kept on disk so that it is shown again after a

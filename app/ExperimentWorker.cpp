@@ -37,9 +37,8 @@ void ExperimentWorker::run(const ExperimentRequest& request) {
             settings.progress = report;
             const auto curves = sim::runLearningCurves(settings, request.task);
             const core::Demonstration& demonstration = *request.task.demonstration;
-            auto summaries = std::make_shared<std::vector<sim::CurveSummary>>(
-                sim::summarizeCurves(curves, demonstration.length(), request.budgetSteps,
-                                     demonstration.dt));
+            auto summaries = std::make_shared<std::vector<sim::CurveSummary>>(sim::summarizeCurves(
+                curves, demonstration.length(), request.budgetSteps, demonstration.dt));
             emit curvesFinished(summaries, cancelled_.load());
         }
     } catch (const std::exception& e) {

@@ -4,8 +4,8 @@
 #include "sim/LearningCurveExperiment.h"
 #include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
-#include "sim/Task.h"
 #include "sim/Table1Experiment.h"
+#include "sim/Task.h"
 
 #include <Eigen/Core>
 #include <QMetaType>

@@ -58,13 +58,12 @@ QString plusMinus(const core::ErrorSummary& s) {
 // A variance only where there were trials to take it from (a cancelled row may have one or none).
 QString variance(const core::ErrorSummary& s) {
     return s.count < 2 || !std::isfinite(s.variance) ? QStringLiteral("—")
-                                                      : QString::number(s.variance, 'f', 2);
+                                                     : QString::number(s.variance, 'f', 2);
 }
 
 }  // namespace
 
-ExperimentsPanel::ExperimentsPanel(LabSession& session, EmergencyStop& emergency,
-                                   QWidget* parent)
+ExperimentsPanel::ExperimentsPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent)
     : QWidget(parent),
       session_(session),
       emergency_(emergency),
@@ -270,7 +269,8 @@ void ExperimentsPanel::start() {
 void ExperimentsPanel::cancel() {
     if (running_) {
         worker_->cancel();
-        showStatus(status_, tr("Experiments"), tr("Cancelling: the trials under way finish first..."));
+        showStatus(status_, tr("Experiments"),
+                   tr("Cancelling: the trials under way finish first..."));
         showProgress();
     }
 }
@@ -316,16 +316,17 @@ void ExperimentsPanel::displayTable1(const sim::Table1Result& table1) {
     table_->clear();
     table_->setColumnCount(6);
     table_->setRowCount(static_cast<int>(rows_.size()));
-    table_->setHorizontalHeaderLabels({tr("Method"), tr("N"), tr("Position [cm]"),
-                                       tr("Var. [cm²]"), tr("Orientation [deg]"),
-                                       tr("Var. [deg²]")});
+    table_->setHorizontalHeaderLabels({tr("Method"), tr("N"), tr("Position [cm]"), tr("Var. [cm²]"),
+                                       tr("Orientation [deg]"), tr("Var. [deg²]")});
     for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
         const core::Table1Row& row = rows_[r];
         // A row with fewer trials than asked (a cancelled batch) says so.
         const bool partial = row.partial();
         const QStringList cells = {partial ? row.shownLabel() + tr(" (partial)") : row.shownLabel(),
-                                   QString::number(row.position.count), plusMinus(row.position),
-                                   variance(row.position), plusMinus(row.orientation),
+                                   QString::number(row.position.count),
+                                   plusMinus(row.position),
+                                   variance(row.position),
+                                   plusMinus(row.orientation),
                                    variance(row.orientation)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
@@ -398,9 +399,8 @@ void ExperimentsPanel::displayCurves(
             table_->setItem(r, col, new QTableWidgetItem(cells[col]));
         }
     }
-    const QString yLabel = record_.poseTarget
-                               ? tr("mean squared position error [m²]")
-                               : tr("mean squared joint-angle error [rad²]");
+    const QString yLabel = record_.poseTarget ? tr("mean squared position error [m²]")
+                                              : tr("mean squared joint-angle error [rad²]");
     figure_ = figures::learningCurveFigure(methods, seconds, bands, yLabel);
     hasFigure_ = true;
     showFigure();
@@ -462,7 +462,8 @@ void ExperimentsPanel::restoreKeptResult() {
 }
 
 void ExperimentsPanel::showFigure() {
-    if (auto* window = findChild<QDialog*>(QStringLiteral("figureWindow")); window && window->isVisible()) {
+    if (auto* window = findChild<QDialog*>(QStringLiteral("figureWindow"));
+        window && window->isVisible()) {
         window->setWindowTitle(caption_);  // a new result, or another language
         renderLargeFigure();
     }
@@ -483,8 +484,7 @@ bool ExperimentsPanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == figureView_ && event->type() == QEvent::Resize && hasFigure_) {
         showFigure();
     }
-    if (watched->objectName() == QLatin1String("figureLarge") &&
-        event->type() == QEvent::Resize) {
+    if (watched->objectName() == QLatin1String("figureLarge") && event->type() == QEvent::Resize) {
         renderLargeFigure();
     }
     if (watched == figureView_ && event->type() == QEvent::MouseButtonRelease && hasFigure_) {
@@ -568,7 +568,7 @@ void ExperimentsPanel::askExportTable() {
     QString filter;
     QString path =
         ModalDialog::saveFileName(this, tr("Export table"), QString(),
-                                     tr("Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)"), &filter);
+                                  tr("Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)"), &filter);
     if (path.isEmpty()) {
         return;
     }
@@ -585,7 +585,7 @@ void ExperimentsPanel::askExportTable() {
 
 void ExperimentsPanel::askExportFigure() {
     QString path = ModalDialog::saveFileName(this, tr("Export figure"), QString(),
-                                                tr("PNG pictures (*.png);;SVG drawings (*.svg)"));
+                                             tr("PNG pictures (*.png);;SVG drawings (*.svg)"));
     if (path.isEmpty()) {
         return;
     }
@@ -668,7 +668,8 @@ void ExperimentsPanel::showEnd(int done, int asked, bool cancelled) {
     progress_->setValue(std::clamp(done, 0, std::max(1, asked)));
     const bool curves = record_.curves;
     if (cancelled) {
-        progress_->setFormat(curves ? tr("Cancelled: %v of %m runs") : tr("Cancelled: %v of %m trials"));
+        progress_->setFormat(curves ? tr("Cancelled: %v of %m runs")
+                                    : tr("Cancelled: %v of %m trials"));
     } else {
         progress_->resetFormat();
     }
@@ -676,9 +677,10 @@ void ExperimentsPanel::showEnd(int done, int asked, bool cancelled) {
     const bool byEmergency = stoppedByEmergency_;
     showStatus(status_, tr("Experiments"), [this, took, cancelled, byEmergency] {
         const QString how =
-            !cancelled    ? tr("Finished in %1.").arg(duration(took))
-            : byEmergency ? tr("Stopped by E-STOP after %1: the rows are partial.").arg(duration(took))
-                          : tr("Cancelled after %1: the rows are partial.").arg(duration(took));
+            !cancelled ? tr("Finished in %1.").arg(duration(took))
+            : byEmergency
+                ? tr("Stopped by E-STOP after %1: the rows are partial.").arg(duration(took))
+                : tr("Cancelled after %1: the rows are partial.").arg(duration(took));
         return QStringLiteral("%1 %2").arg(how, caption_);
     });
 }

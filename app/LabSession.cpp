@@ -121,8 +121,8 @@ namespace {
 
 // The scripted operator's demonstration, recorded on the session's car.
 std::shared_ptr<const core::Demonstration> scripted(const QString& plant, const QString& style,
-                                                     std::uint64_t seed,
-                                                     const sim::PlantParameters* parameters) {
+                                                    std::uint64_t seed,
+                                                    const sim::PlantParameters* parameters) {
     sim::RecordingConditions conditions;
     conditions.parameters = parameters;
     return std::make_shared<core::Demonstration>(
@@ -344,29 +344,29 @@ QByteArray LabSession::toJson() const {
     if (task_.plantParameters) {
         // The plant file's values themselves, so the session holds the car even when the file
         // moves; its path names where they came from.
-        root.insert("plantParameters",
-                    QJsonObject{{"source", task_.plantParameters->source},
-                                {"file", QJsonDocument::fromJson(sim::plantParametersJson(
-                                                                     *task_.plantParameters))
-                                             .object()}});
+        root.insert(
+            "plantParameters",
+            QJsonObject{
+                {"source", task_.plantParameters->source},
+                {"file", QJsonDocument::fromJson(sim::plantParametersJson(*task_.plantParameters))
+                             .object()}});
     }
     if (model_) {
         // The identified plant file as `prisca-cli identify` writes it, and the length of the
         // demonstration it came from (a file that changed since is not its data any more).
-        const QString from =
-            demonstrationSource_.isEmpty()
-                ? QStringLiteral("the scripted operator (%1, seed %2)")
-                      .arg(scriptedStyle_)
-                      .arg(scriptedSeed_)
-                : demonstrationSource_;
-        root.insert("model",
-                    QJsonObject{{"samples", static_cast<int>(task_.demonstration->length())},
-                                {"file", QJsonDocument::fromJson(
-                                             sim::identifiedPlantFile(
-                                                 *model_,
-                                                 QStringLiteral("identified from %1").arg(from),
-                                                 {from}))
-                                             .object()}});
+        const QString from = demonstrationSource_.isEmpty()
+                                 ? QStringLiteral("the scripted operator (%1, seed %2)")
+                                       .arg(scriptedStyle_)
+                                       .arg(scriptedSeed_)
+                                 : demonstrationSource_;
+        root.insert(
+            "model",
+            QJsonObject{
+                {"samples", static_cast<int>(task_.demonstration->length())},
+                {"file", QJsonDocument::fromJson(
+                             sim::identifiedPlantFile(
+                                 *model_, QStringLiteral("identified from %1").arg(from), {from}))
+                             .object()}});
     }
     if (!messages_.isEmpty()) {
         root.insert("messages", messages_);
@@ -447,9 +447,8 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     const QJsonObject prisca = earlier ? QJsonObject() : root.value("prisca").toObject();
     const QJsonObject pd = earlier ? QJsonObject() : root.value("pd").toObject();
     const QJsonObject ilc = earlier ? QJsonObject() : root.value("ilc").toObject();
-    const bool ok =
-        readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
-        readInteger(fit, "responseSteps", 1, 1000, &fitOptions.responseSteps, &what);
+    const bool ok = readInteger(fit, "latency", 0, 1000, &fitOptions.latency, &what) &&
+                    readInteger(fit, "responseSteps", 1, 1000, &fitOptions.responseSteps, &what);
     if (!ok) {
         return fail(what);
     }
@@ -531,8 +530,8 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     const QJsonObject parameters = parametersValue.toObject();
     for (auto it = parameters.begin(); it != parameters.end(); ++it) {
         if (!it.value().isString()) {
-            return fail(tr("'parameters.%1' must be a string such as \"10\" or \"1,1.2\"")
-                            .arg(it.key()));
+            return fail(
+                tr("'parameters.%1' must be a string such as \"10\" or \"1,1.2\"").arg(it.key()));
         }
         if (!apply(it.key(), it.value().toString(), QStringLiteral("parameters"))) {
             return fail(what);
@@ -647,16 +646,17 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     if (root.contains("model")) {
         const QJsonObject saved = root.value("model").toObject();
         QString problem;
-        auto read = sim::readIdentifiedPlantFile(
-            QJsonDocument(saved.value("file").toObject()).toJson(), QStringLiteral("model"), plant,
-            &problem);
+        auto read =
+            sim::readIdentifiedPlantFile(QJsonDocument(saved.value("file").toObject()).toJson(),
+                                         QStringLiteral("model"), plant, &problem);
         if (!read) {
             modelNotice = tr("The identified model saved with it could not be read (%1): "
                              "identify the car again in the Model step.")
                               .arg(problem);
         } else if (saved.value("samples").toInt(-1) != task.demonstration->length()) {
-            modelNotice = tr("Its demonstration is not the one the saved model was identified "
-                             "from: identify the car again in the Model step.");
+            modelNotice =
+                tr("Its demonstration is not the one the saved model was identified "
+                   "from: identify the car again in the Model step.");
         } else {
             model = std::make_shared<const sim::IdentificationResult>(std::move(*read));
         }
@@ -672,8 +672,9 @@ bool LabSession::fromJson(const QByteArray& json, const QString& origin, QString
     messages_ = root.value("messages").toArray();  // not an array: none
     QStringList notices;
     if (earlier) {
-        notices << tr("Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
-                      "tuned for an earlier PRISCA, so today's defaults are used instead.");
+        notices << tr(
+            "Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were "
+            "tuned for an earlier PRISCA, so today's defaults are used instead.");
     }
     if (!modelNotice.isEmpty()) {
         notices << modelNotice;

@@ -20,15 +20,15 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QMessageBox>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTimer>
-#include <QLegendMarker>
-#include <QMouseEvent>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <QValueAxis>
@@ -215,9 +215,10 @@ void LiveChartsPanel::setPlant(const sim::PlantInfo& info, int parameterCount) {
     const int perChannel = m > 0 ? parameterCount / m : 0;
     for (int i = 0; i < parameterCount; ++i) {
         auto* s = new QLineSeries;
-        s->setName(QStringLiteral("θ%1 %2")
-                       .arg(i % std::max(1, perChannel))
-                       .arg(controlName(info.actionNames.value(perChannel > 0 ? i / perChannel : 0))));
+        s->setName(
+            QStringLiteral("θ%1 %2")
+                .arg(i % std::max(1, perChannel))
+                .arg(controlName(info.actionNames.value(perChannel > 0 ? i / perChannel : 0))));
         s->setPen(QPen(palette[i % 8], 1.5));
         thetaChart_->addSeries(s);
         attachAxes(thetaChart_, s);
@@ -382,30 +383,30 @@ QString LiveChartsPanel::readoutAt(double t) const {
     QStringList lines;
     lines << tr("Trial %1, run time %2 s").arg(trial_.value(k) + 1).arg(error_[k].x(), 0, 'f', 2);
     switch (tabs_->currentIndex()) {
-    case 0:
-        lines << tr("error %1 %2, smoothed %3 %2")
-                     .arg(error_[k].y(), 0, 'g', 4)
-                     .arg(unit)
-                     .arg(smooth_[k].y(), 0, 'g', 4);
-        break;
-    case 1:
-        for (int i = 0; i < theta_.size(); ++i) {
-            if (k < theta_[i].size()) {
-                lines << QStringLiteral("θ%1 = %2").arg(i).arg(theta_[i][k].y(), 0, 'g', 4);
+        case 0:
+            lines << tr("error %1 %2, smoothed %3 %2")
+                         .arg(error_[k].y(), 0, 'g', 4)
+                         .arg(unit)
+                         .arg(smooth_[k].y(), 0, 'g', 4);
+            break;
+        case 1:
+            for (int i = 0; i < theta_.size(); ++i) {
+                if (k < theta_[i].size()) {
+                    lines << QStringLiteral("θ%1 = %2").arg(i).arg(theta_[i][k].y(), 0, 'g', 4);
+                }
             }
-        }
-        break;
-    default:
-        for (int l = 0; l < action_.size(); ++l) {
-            if (k < action_[l].size()) {
-                lines << tr("%1: u %2, u* %3 %4")
-                             .arg(controlName(info_.actionNames.value(l)))
-                             .arg(action_[l][k].y(), 0, 'g', 4)
-                             .arg(reference_[l][k].y(), 0, 'g', 4)
-                             .arg(info_.actionUnits.value(l));
+            break;
+        default:
+            for (int l = 0; l < action_.size(); ++l) {
+                if (k < action_[l].size()) {
+                    lines << tr("%1: u %2, u* %3 %4")
+                                 .arg(controlName(info_.actionNames.value(l)))
+                                 .arg(action_[l][k].y(), 0, 'g', 4)
+                                 .arg(reference_[l][k].y(), 0, 'g', 4)
+                                 .arg(info_.actionUnits.value(l));
+                }
             }
-        }
-        break;
+            break;
     }
     return lines.join(QLatin1Char('\n'));
 }
@@ -551,10 +552,9 @@ QString withSuffix(QString path, const QString& suffix) {
 }  // namespace
 
 void LiveChartsPanel::askExportCsv() {
-    const QString path =
-        withSuffix(ModalDialog::saveFileName(this, tr("Export chart data"), QString(),
-                                                tr("CSV files (*.csv)")),
-                   QStringLiteral("csv"));
+    const QString path = withSuffix(ModalDialog::saveFileName(this, tr("Export chart data"),
+                                                              QString(), tr("CSV files (*.csv)")),
+                                    QStringLiteral("csv"));
     QString error;
     if (!path.isEmpty() && !exportCsv(path, &error)) {
         warningBox(this, tr("Export chart data"), error);
@@ -564,7 +564,7 @@ void LiveChartsPanel::askExportCsv() {
 void LiveChartsPanel::askExportPng() {
     const QString path =
         withSuffix(ModalDialog::saveFileName(this, tr("Export charts as picture"), QString(),
-                                                tr("PNG pictures (*.png)")),
+                                             tr("PNG pictures (*.png)")),
                    QStringLiteral("png"));
     QString error;
     if (!path.isEmpty() && !exportPng(path, &error)) {

@@ -90,8 +90,8 @@ class LiveChartsPanel : public QWidget {
     QTimer* redrawTimer_;
     // Buffers (GUI thread only).
     QVector<QPointF> error_, smooth_;
-    QVector<int> trial_;            ///< each buffered sample's trial (0-based)
-    QVector<double> trialStarts_;   ///< run times where a later trial began
+    QVector<int> trial_;                             ///< each buffered sample's trial (0-based)
+    QVector<double> trialStarts_;                    ///< run times where a later trial began
     QVector<QVector<QLineSeries*>> boundarySeries_;  ///< per chart, one dashed line per boundary
     void drawTrialBoundaries(QChart* chart, QVector<QLineSeries*>& lines);
     QVector<QVector<QPointF>> theta_, action_, reference_;

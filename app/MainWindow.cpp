@@ -7,8 +7,8 @@
 #include "app/ControllerPanel.h"
 #include "app/EmergencyStop.h"
 #include "app/EmergencyStopGuard.h"
-#include "app/GamepadEmergencyButton.h"
 #include "app/ExperimentsPanel.h"
+#include "app/GamepadEmergencyButton.h"
 #include "app/LabSession.h"
 #include "app/LanguageMenu.h"
 #include "app/LanguageSwitcher.h"
@@ -19,10 +19,10 @@
 #include "app/ModelPanel.h"
 #include "app/RecordPanel.h"
 #include "app/ReplayDialog.h"
-#include "app/rig/RigPanel.h"
-#include "app/RunThread.h"
 #include "app/RunPanel.h"
+#include "app/RunThread.h"
 #include "app/TaskPanel.h"
+#include "app/rig/RigPanel.h"
 #include "core/RunLogCsv.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -33,39 +33,39 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QFile>
-#include <QRegularExpression>
-#include <QTextBrowser>
-#include <QVBoxLayout>
-#include <QDockWidget>
-#include <QStandardPaths>
 #include <QDir>
-#include <QDateTime>
+#include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QKeyEvent>
-#include <QKeySequenceEdit>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QKeySequenceEdit>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QShowEvent>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTextBrowser>
 #include <QTextEdit>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 namespace prisca::app {
 
@@ -238,8 +238,9 @@ void MainWindow::shareRightColumn() {
     // a panel that cannot show whole anyway (the Controller's long list) scrolls in its share.
     const int separator = style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
     const int most = column - runDock_->minimumSizeHint().height() - separator;
-    const int topHeight = needed <= column * 7 / 10 ? std::max(std::min(needed, most), column * 2 / 5)
-                                                    : column * 2 / 5;
+    const int topHeight = needed <= column * 7 / 10
+                              ? std::max(std::min(needed, most), column * 2 / 5)
+                              : column * 2 / 5;
     // (The sizes are weights of what the area has, its tab bar and separator included: the top
     // is asked a little more, which the Run panel's minimum bounds.)
     const int slack = fontMetrics().height() * 2;
@@ -306,7 +307,8 @@ void MainWindow::createPanels() {
     chartsPanel_ = new LiveChartsPanel(this);
     experimentsPanel_ = new ExperimentsPanel(*session_, *emergency_, this);
     rigPanel_ = new RigPanel(*session_, *emergency_, this);
-    connect(rigPanel_, &RigPanel::replayRequested, this, [this](const QString& folder) { openReplay(folder); });
+    connect(rigPanel_, &RigPanel::replayRequested, this,
+            [this](const QString& folder) { openReplay(folder); });
     taskDock_ = dock(this, QStringLiteral("taskDock"), taskPanel_, Qt::RightDockWidgetArea);
     recordDock_ = dock(this, QStringLiteral("recordDock"), recordPanel_, Qt::RightDockWidgetArea);
     mappingDock_ =
@@ -494,25 +496,24 @@ void MainWindow::showPendingQuit() {
 void MainWindow::updateStatusFields() {
     QString job;
     switch (run_->phase()) {
-    case RunPhase::Training:
-        job = tr("Job: training before the run");
-        break;
-    case RunPhase::Running:
-        job = tr("Job: simulated run");
-        break;
-    case RunPhase::Paused:
-        job = tr("Job: simulated run, PAUSED");
-        break;
-    case RunPhase::Idle:
-    case RunPhase::EmergencyStopped:
-        break;
+        case RunPhase::Training:
+            job = tr("Job: training before the run");
+            break;
+        case RunPhase::Running:
+            job = tr("Job: simulated run");
+            break;
+        case RunPhase::Paused:
+            job = tr("Job: simulated run, PAUSED");
+            break;
+        case RunPhase::Idle:
+        case RunPhase::EmergencyStopped:
+            break;
     }
     if (job.isEmpty() && experimentsPanel_->isRunning()) {
-        job = experimentsPanel_->progressTotal() > 0
-                  ? tr("Job: experiment, %1 of %2")
-                        .arg(experimentsPanel_->progressDone())
-                        .arg(experimentsPanel_->progressTotal())
-                  : tr("Job: experiment, starting");
+        job = experimentsPanel_->progressTotal() > 0 ? tr("Job: experiment, %1 of %2")
+                                                           .arg(experimentsPanel_->progressDone())
+                                                           .arg(experimentsPanel_->progressTotal())
+                                                     : tr("Job: experiment, starting");
     }
     if (job.isEmpty() && rigPanel_->isRunning()) {
         job = tr("Job: rig trial");
@@ -554,15 +555,14 @@ void MainWindow::showEmergencyState(bool latched) {
     emergencyShownLatched_ = latched;
     // Latched, the button is pressed in: dark, sunken, and says so; Reset is next to it.
     emergencyButton_->setStyleSheet(
-        latched ? QStringLiteral(
-                      "QPushButton { background: #5c0000; color: #ffd7d7; font-weight: bold;"
-                      " font-size: 18px; border: 3px inset #2a0000; border-radius: 6px;"
-                      " padding: 2px 16px; }")
-                : QStringLiteral(
-                      "QPushButton { background: #c62828; color: white; font-weight: bold;"
-                      " font-size: 18px; border: 3px solid #7f0000; border-radius: 6px;"
-                      " padding: 2px 16px; }"
-                      "QPushButton:pressed { background: #8e0000; }"));
+        latched
+            ? QStringLiteral("QPushButton { background: #5c0000; color: #ffd7d7; font-weight: bold;"
+                             " font-size: 18px; border: 3px inset #2a0000; border-radius: 6px;"
+                             " padding: 2px 16px; }")
+            : QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold;"
+                             " font-size: 18px; border: 3px solid #7f0000; border-radius: 6px;"
+                             " padding: 2px 16px; }"
+                             "QPushButton:pressed { background: #8e0000; }"));
 }
 
 void MainWindow::createMenus() {
@@ -586,7 +586,7 @@ void MainWindow::createMenus() {
     saveSessionAction_->setShortcut(QKeySequence::Save);
     connect(saveSessionAction_, &QAction::triggered, this, [this] {
         QString path = ModalDialog::saveFileName(this, tr("Save session"), sessionPath_,
-                                                    tr("PRISCA Lab sessions (*.json)"));
+                                                 tr("PRISCA Lab sessions (*.json)"));
         if (!path.isEmpty()) {
             if (QFileInfo(path).suffix().isEmpty()) {
                 path += QStringLiteral(".json");
@@ -603,10 +603,9 @@ void MainWindow::createMenus() {
         const QString trials =
             QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
                 .filePath(QStringLiteral("trials"));
-        BundleChooser chooser({rigPanel_->bundleParent().isEmpty() ? trials
-                                                                   : rigPanel_->bundleParent(),
-                               trials},
-                              this);
+        BundleChooser chooser(
+            {rigPanel_->bundleParent().isEmpty() ? trials : rigPanel_->bundleParent(), trials},
+            this);
         if (ModalDialog::exec(chooser) == QDialog::Accepted && !chooser.chosen().isEmpty()) {
             openReplay(chooser.chosen());
         }
@@ -836,14 +835,17 @@ void MainWindow::quitWhenIdle() {
     showPendingQuit();
     if (plan == QuitPlan::Keep || plan == QuitPlan::Finish) {
         // What finished, where the operator can find it after the restart.
-        const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+        const QString stamp =
+            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
         QDir().mkpath(keptFolder());
         QString error;
         const std::shared_ptr<const core::RunLog> log = run_->lastRunLog();
         if (log && log->rows.rows() > 0) {
-            const QString path = QDir(keptFolder()).filePath(QStringLiteral("run-%1.csv").arg(stamp));
+            const QString path =
+                QDir(keptFolder()).filePath(QStringLiteral("run-%1.csv").arg(stamp));
             if (runPanel_->exportRunLog(path, &error)) {
-                logMessage(tr("Quit"), MessageLevel::Info, tr("The run's log was kept in %1").arg(path));
+                logMessage(tr("Quit"), MessageLevel::Info,
+                           tr("The run's log was kept in %1").arg(path));
             } else {
                 logMessage(tr("Quit"), MessageLevel::Error, error);
             }
@@ -950,7 +952,8 @@ void MainWindow::showShortcuts() {
         if (action && !action->shortcut().isEmpty()) {
             QString name = action->text();
             name.remove(QLatin1Char('&'));
-            name.remove(QRegularExpression(QStringLiteral("\\s*\\([^)]*\\)$")));  // "(F5)" shown beside
+            name.remove(
+                QRegularExpression(QStringLiteral("\\s*\\([^)]*\\)$")));  // "(F5)" shown beside
             rows.append({action->shortcut().toString(QKeySequence::NativeText), name});
         }
     };
@@ -991,7 +994,8 @@ void MainWindow::showShortcuts() {
 void MainWindow::showGuide() {
     QFile file(QStringLiteral(":/docs/operator-guide.md"));
     if (!file.open(QIODevice::ReadOnly)) {
-        warningBox(this, tr("Operator guide"), tr("The operator guide is not built into this copy."));
+        warningBox(this, tr("Operator guide"),
+                   tr("The operator guide is not built into this copy."));
         return;
     }
     auto* dialog = new QDialog(this);
@@ -1032,8 +1036,9 @@ void MainWindow::applyEmergencyInputs() {
     for (const QString& name : settings.value(QLatin1String(kEmergencyKeysKey)).toStringList()) {
         const QKeySequence key = QKeySequence::fromString(name, QKeySequence::PortableText);
         if (key.isEmpty()) {
-            logMessage(tr("E-STOP"), MessageLevel::Warning,
-                       tr("The E-STOP key \"%1\" in the settings is no key; it is left out.").arg(name));
+            logMessage(
+                tr("E-STOP"), MessageLevel::Warning,
+                tr("The E-STOP key \"%1\" in the settings is no key; it is left out.").arg(name));
         } else {
             keys << key;
         }
@@ -1111,8 +1116,8 @@ void MainWindow::editEmergencyInputs() {
         return;
     }
     QSettings settings;
-    const QKeySequence chosen = key->keySequence().isEmpty() ? QKeySequence()
-                                                             : QKeySequence(key->keySequence()[0]);
+    const QKeySequence chosen =
+        key->keySequence().isEmpty() ? QKeySequence() : QKeySequence(key->keySequence()[0]);
     settings.setValue(QLatin1String(kEmergencyKeysKey),
                       chosen.isEmpty() ? QStringList()
                                        : QStringList{chosen.toString(QKeySequence::PortableText)});
@@ -1122,8 +1127,9 @@ void MainWindow::editEmergencyInputs() {
     applyEmergencyInputs();
     say(tr("E-STOP"),
         tr("E-STOP inputs: Space, Esc, the red button%1%2")
-            .arg(chosen.isEmpty() ? QString()
-                                  : tr(", the key %1").arg(chosen.toString(QKeySequence::NativeText)),
+            .arg(chosen.isEmpty()
+                     ? QString()
+                     : tr(", the key %1").arg(chosen.toString(QKeySequence::NativeText)),
                  button.isEmpty() ? QString() : tr(", gamepad button %1").arg(button)),
         kStatusMessageMs);
 }

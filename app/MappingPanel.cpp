@@ -212,7 +212,8 @@ void MappingPanel::showFit() {
         for (int l = 0; l < m && f.b.rows() == m; ++l) {
             cell(l, i, f.b(l, i) == 0.0 ? QStringLiteral("·") : number(f.b(l, i)),
                  tr("B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]")
-                         .arg(controlName(info.actionNames[l]), info.stateNames[i], info.stateUnits[i]) +
+                         .arg(controlName(info.actionNames[l]), info.stateNames[i],
+                              info.stateUnits[i]) +
                      QStringLiteral(": %1").arg(f.b(l, i), 0, 'g', 6));
         }
         if (f.rSquared.size() == n) {

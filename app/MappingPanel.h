@@ -49,7 +49,8 @@ class MappingPanel : public QWidget {
     QTableWidget* result_;
     QLabel* warnings_;
     /// A table exactly as tall as its header and rows.
-    static void fitToRows(QTableWidget* table);  ///< the fit's warnings, one paragraph each, as tall as they need
+    static void fitToRows(
+        QTableWidget* table);  ///< the fit's warnings, one paragraph each, as tall as they need
     bool refittingForLanguage_ = false;
 };
 

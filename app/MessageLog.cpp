@@ -7,8 +7,8 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QMessageBox>
-#include <QRecursiveMutex>
 #include <QMutexLocker>
+#include <QRecursiveMutex>
 #include <QThread>
 
 namespace prisca::app {
@@ -92,12 +92,12 @@ void MessageLog::clear() {
 
 QString MessageLog::levelName(MessageLevel level) {
     switch (level) {
-    case MessageLevel::Info:
-        return tr("info");
-    case MessageLevel::Warning:
-        return tr("warning");
-    case MessageLevel::Error:
-        return tr("error");
+        case MessageLevel::Info:
+            return tr("info");
+        case MessageLevel::Warning:
+            return tr("warning");
+        case MessageLevel::Error:
+            return tr("error");
     }
     return QString();
 }
@@ -109,19 +109,19 @@ QString MessageLog::shownText(const LogEntry& entry) {
 
 QString MessageLog::format(const LogEntry& entry) {
     return QStringLiteral("%1\t%2\t%3\t%4")
-        .arg(entry.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
-             levelName(entry.level), entry.source, shownText(entry));
+        .arg(entry.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")), levelName(entry.level),
+             entry.source, shownText(entry));
 }
 
 namespace {
 const char* levelKey(MessageLevel level) {
     switch (level) {
-    case MessageLevel::Warning:
-        return "warning";
-    case MessageLevel::Error:
-        return "error";
-    case MessageLevel::Info:
-        break;
+        case MessageLevel::Warning:
+            return "warning";
+        case MessageLevel::Error:
+            return "error";
+        case MessageLevel::Info:
+            break;
     }
     return "info";
 }
@@ -148,7 +148,8 @@ int MessageLog::append(const QJsonArray& saved) {
     int read = 0;
     for (const QJsonValue& value : saved) {
         const QJsonObject line = value.toObject();
-        const QDateTime time = QDateTime::fromString(line.value("time").toString(), Qt::ISODateWithMs);
+        const QDateTime time =
+            QDateTime::fromString(line.value("time").toString(), Qt::ISODateWithMs);
         const QString text = line.value("text").toString();
         if (!time.isValid() || text.isEmpty()) {
             continue;

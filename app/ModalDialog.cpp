@@ -22,7 +22,7 @@ namespace {
 const char* const kOrderProperty = "prisca.modalOrder";
 // A widget no dialog may cover (the E-STOP button).
 const char* const kKeepClearProperty = "prisca.keepClear";
-constexpr int kMargin = 8;  // px between a dialog and what it keeps clear of
+constexpr int kMargin = 8;      // px between a dialog and what it keeps clear of
 constexpr int kSettleMs = 200;  // a window manager frames and places a new window within this
 
 int nextOrder() {
@@ -141,8 +141,10 @@ void ModalDialog::placeClearNow(QWidget* window) {
     }
     const auto fitInside = [&] {
         frame.setSize(frame.size().boundedTo(available.size()));
-        frame.moveLeft(std::clamp(frame.left(), available.left(), available.right() - frame.width() + 1));
-        frame.moveTop(std::clamp(frame.top(), available.top(), available.bottom() - frame.height() + 1));
+        frame.moveLeft(
+            std::clamp(frame.left(), available.left(), available.right() - frame.width() + 1));
+        frame.moveTop(
+            std::clamp(frame.top(), available.top(), available.bottom() - frame.height() + 1));
     };
     fitInside();
     for (QWidget* keep : keptClear(window)) {
@@ -215,8 +217,7 @@ void ModalDialog::information(QWidget* parent, const QString& title, const QStri
 }
 
 bool ModalDialog::question(QWidget* parent, const QString& title, const QString& text) {
-    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No,
-                    parent);
+    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, parent);
     box.setDefaultButton(QMessageBox::Yes);
     exec(box);
     return box.clickedButton() == box.button(QMessageBox::Yes);

@@ -163,20 +163,20 @@ void RecordPanel::beginRecording() {
                                  .arg(session_.plant(), QDateTime::currentDateTime().toString(
                                                             QStringLiteral("yyyyMMdd-HHmmss")));
     emit recordingStarted();
-    devices::postTo(worker_, [w = worker_, plant = session_.plant(),
-                              parameters = session_.plantParameters(), path = streamPath_] {
-        w->start(plant, path, parameters);
-    });
+    devices::postTo(worker_,
+                    [w = worker_, plant = session_.plant(), parameters = session_.plantParameters(),
+                     path = streamPath_] { w->start(plant, path, parameters); });
     recordingClock_.start();
     lastReadoutMs_ = -1000;
-    showStatus(status_, tr("Record"), [this] { return tr("Recording... drive, then press Stop."); });
+    showStatus(status_, tr("Record"),
+               [this] { return tr("Recording... drive, then press Stop."); });
     updateButtons();
 }
 
 void RecordPanel::tick() {
     if (countdownLeft_ > 0) {
-        showStatus(status_, tr("Record"), 
-            tr("Recording starts in %1 s").arg((countdownLeft_ * kTickMs + 999) / 1000));
+        showStatus(status_, tr("Record"),
+                   tr("Recording starts in %1 s").arg((countdownLeft_ * kTickMs + 999) / 1000));
         if (--countdownLeft_ == 0) {
             beginRecording();
         }
@@ -258,7 +258,8 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     if (endedByEmergency_) {
         // A take cut short by E-STOP is not what the operator meant to demonstrate.
         endedByEmergency_ = false;
-        showStatus(status_, tr("Record"), 
+        showStatus(
+            status_, tr("Record"),
             demonstration.length() == 0
                 ? tr("E-STOP ended the recording; nothing was recorded.")
                 : tr("E-STOP ended the recording after %1 s; the demonstration is unchanged. The "
@@ -270,12 +271,13 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
     }
     if (demonstration.length() < sim::kMinimumDemonstrationSamples) {
         QFile::remove(streamPath);
-        showStatus(status_, tr("Record"), demonstration.length() == 0
-                             ? tr("Nothing recorded.")
-                             : tr("Too short to use (%1 samples, at least %2 are needed); the "
-                                  "demonstration is unchanged.")
-                                   .arg(demonstration.length())
-                                   .arg(sim::kMinimumDemonstrationSamples));
+        showStatus(status_, tr("Record"),
+                   demonstration.length() == 0
+                       ? tr("Nothing recorded.")
+                       : tr("Too short to use (%1 samples, at least %2 are needed); the "
+                            "demonstration is unchanged.")
+                             .arg(demonstration.length())
+                             .arg(sim::kMinimumDemonstrationSamples));
         updateButtons();
         return;
     }
@@ -285,7 +287,8 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
         session_.setDemonstration(std::make_shared<core::Demonstration>(demonstration), streamPath);
     } catch (const std::exception& e) {
         // Refused (the session keeps its demonstration); the stream file stays for the record.
-        showStatus(status_, tr("Record"), 
+        showStatus(
+            status_, tr("Record"),
             tr("The recording could not be used: %1. It is kept in %2.")
                 .arg(QString::fromStdString(e.what()), QDir::toNativeSeparators(streamPath)));
         updateButtons();
@@ -307,8 +310,8 @@ void RecordPanel::finished(const core::Demonstration& demonstration, const QStri
 
 void RecordPanel::save() {
     QString path = ModalDialog::saveFileName(this, tr("Save demonstration"),
-                                                QSettings().value("task/lastDirectory").toString(),
-                                                tr("Demonstrations (*.csv)"));
+                                             QSettings().value("task/lastDirectory").toString(),
+                                             tr("Demonstrations (*.csv)"));
     if (path.isEmpty()) {
         return;
     }
@@ -332,9 +335,8 @@ void RecordPanel::discard() {
     session_.setDemonstration(previous_, previousSource_);
     previous_.reset();
     streamPath_.clear();
-    showStatus(status_, tr("Record"), [this] {
-        return tr("Recording discarded; the previous demonstration is back.");
-    });
+    showStatus(status_, tr("Record"),
+               [this] { return tr("Recording discarded; the previous demonstration is back."); });
     updateButtons();
 }
 

@@ -29,8 +29,8 @@ void RecordingWorker::start(const QString& plant, const QString& streamPath,
         stop();
     }
     try {
-        plant_ = parameters ? sim::PlantCatalog::create(*parameters)
-                            : sim::PlantCatalog::create(plant);
+        plant_ =
+            parameters ? sim::PlantCatalog::create(*parameters) : sim::PlantCatalog::create(plant);
     } catch (const std::exception& e) {
         emit failed(QString::fromStdString(e.what()));
         return;

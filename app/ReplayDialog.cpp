@@ -14,11 +14,11 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QPushButton>
+#include <QScreen>
 #include <QSlider>
 #include <QSplitter>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QScreen>
 #include <QValueAxis>
 
 #include <cmath>

@@ -4,8 +4,8 @@
 
 #include "app/EmergencyStop.h"
 #include "app/LabSession.h"
-#include "app/OperatorText.h"
 #include "app/ModalDialog.h"
+#include "app/OperatorText.h"
 #include "app/RunThread.h"
 #include "core/RunLogCsv.h"
 
@@ -21,14 +21,14 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSettings>
-#include <QStandardPaths>
-#include <QJsonDocument>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTime>
 #include <QTimer>
@@ -43,8 +43,7 @@ namespace {
 const char* const kSettingsGroup = "run";
 }
 
-RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency,
-                   QWidget* parent)
+RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency, QWidget* parent)
     : QWidget(parent),
       session_(session),
       run_(run),
@@ -176,10 +175,9 @@ RunPanel::RunPanel(LabSession& session, RunThread& run, EmergencyStop& emergency
     });
     connect(stopAction_, &QAction::triggered, &run_, &RunThread::stop);
 
-    connect(&run_, &RunThread::runLogReady, this,
-            [this](std::shared_ptr<const core::RunLog> log) {
-                exportLog_->setEnabled(log && log->rows.rows() > 0);
-            });
+    connect(&run_, &RunThread::runLogReady, this, [this](std::shared_ptr<const core::RunLog> log) {
+        exportLog_->setEnabled(log && log->rows.rows() > 0);
+    });
     connect(exportLog_, &QPushButton::clicked, this, [this] {
         const QString path = ModalDialog::saveFileName(
             this, tr("Export run log"), QSettings().value("run/logDirectory").toString(),

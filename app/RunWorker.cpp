@@ -145,8 +145,8 @@ void RunWorker::tick() {
         sample.theta = record.parameters;
         sample.referenceIndex = record.referenceIndex;
         sample.cost = record.cost;
-        sample.trackedError = sim::trackedError(request_.task.profile.info, *request_.task.demonstration,
-                                                record.state, sample.step);
+        sample.trackedError = sim::trackedError(
+            request_.task.profile.info, *request_.task.demonstration, record.state, sample.step);
         sample.wind = plant_->windVelocity();
         pending_.push_back(std::move(sample));
     }
@@ -205,12 +205,13 @@ void RunWorker::saveBundle(const sim::EpisodeResult& result, const sim::TrialSum
     if (request_.bundleParent.isEmpty()) {
         return;
     }
-    const QString folder = QDir(request_.bundleParent)
-                               .filePath(QStringLiteral("sim-%1-%2-trial-%3")
-                                             .arg(QDateTime::currentDateTime().toString(
-                                                      QStringLiteral("yyyyMMdd-hhmmss")),
-                                                  request_.method)
-                                             .arg(trial_ + 1));
+    const QString folder =
+        QDir(request_.bundleParent)
+            .filePath(
+                QStringLiteral("sim-%1-%2-trial-%3")
+                    .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")),
+                         request_.method)
+                    .arg(trial_ + 1));
     QJsonObject header{{"method", request_.method},
                        {"trial", trial_ + 1},
                        {"seed", static_cast<double>(request_.settings.seed)},

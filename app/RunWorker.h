@@ -9,8 +9,8 @@
 
 #include <Eigen/Core>
 #include <QElapsedTimer>
-#include <QMetaType>
 #include <QJsonObject>
+#include <QMetaType>
 #include <QObject>
 #include <QVector>
 

@@ -97,11 +97,9 @@ TaskPanel::TaskPanel(LabSession& session, QWidget* parent)
     connect(save_, &QPushButton::clicked, this, &TaskPanel::askSave);
     connect(scripted_, &QPushButton::clicked, this, &TaskPanel::useScripted);
     connect(openPlantFile_, &QPushButton::clicked, this, &TaskPanel::askOpenPlantParameters);
-    connect(clearPlantFile_, &QPushButton::clicked, this, [this] {
-        session_.setPlantParameters(nullptr);
-    });
-    connect(&session_, &LabSession::plantParametersChanged, this,
-            &TaskPanel::showPlantParameters);
+    connect(clearPlantFile_, &QPushButton::clicked, this,
+            [this] { session_.setPlantParameters(nullptr); });
+    connect(&session_, &LabSession::plantParametersChanged, this, &TaskPanel::showPlantParameters);
     connect(&session_, &LabSession::plantChanged, this, [this](const QString& plant) {
         target_->setCurrentIndex(target_->findData(plant));
         fillStyles();
@@ -181,16 +179,15 @@ bool TaskPanel::openDemonstration(const QString& path) {
     core::FileError error;
     auto demo = core::readDemonstrationCsv(path, &error);
     if (!demo) {
-        warningBox(
-            this, tr("Open demonstration"),
-            tr("The demonstration could not be read.\n\n%1").arg(error.toString()));
+        warningBox(this, tr("Open demonstration"),
+                   tr("The demonstration could not be read.\n\n%1").arg(error.toString()));
         return false;
     }
     try {
         session_.setDemonstration(std::make_shared<core::Demonstration>(std::move(*demo)), path);
     } catch (const std::exception& e) {
         warningBox(this, tr("Open demonstration"),
-                             tr("%1: %2").arg(path, QString::fromStdString(e.what())));
+                   tr("%1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
     QSettings().setValue(QStringLiteral("task/lastDirectory"), QFileInfo(path).absolutePath());
@@ -202,7 +199,7 @@ bool TaskPanel::openPlantParameters(const QString& path) {
     auto parameters = sim::readPlantParameters(path, session_.plant(), &error);
     if (!parameters) {
         warningBox(this, tr("Open plant file"),
-                             tr("The plant file could not be used.\n\n%1").arg(error));
+                   tr("The plant file could not be used.\n\n%1").arg(error));
         return false;
     }
     try {
@@ -210,11 +207,10 @@ bool TaskPanel::openPlantParameters(const QString& path) {
             std::make_shared<const sim::PlantParameters>(std::move(*parameters)));
     } catch (const std::exception& e) {
         warningBox(this, tr("Open plant file"),
-                             tr("%1: %2").arg(path, QString::fromStdString(e.what())));
+                   tr("%1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
-    QSettings().setValue(QStringLiteral("task/plantFileDirectory"),
-                         QFileInfo(path).absolutePath());
+    QSettings().setValue(QStringLiteral("task/plantFileDirectory"), QFileInfo(path).absolutePath());
     return true;
 }
 
@@ -236,8 +232,9 @@ void TaskPanel::showPlantParameters() {
         return;
     }
     plantFile_->setText(QFileInfo(parameters->source).fileName());
-    plantFile_->setToolTip(QStringLiteral("%1\n\n%2").arg(
-        QDir::toNativeSeparators(parameters->source), sim::plantParametersText(*parameters)));
+    plantFile_->setToolTip(QStringLiteral("%1\n\n%2")
+                               .arg(QDir::toNativeSeparators(parameters->source),
+                                    sim::plantParametersText(*parameters)));
 }
 
 void TaskPanel::askOpen() {

@@ -37,7 +37,8 @@ struct IntuitiveMapping {
 struct ActionMappingFitOptions {
     /// What the change of action du_k = u_k - u_{k-1} is regressed against.
     enum class Target {
-        /// ds_{k+1} = s_{k+1} - s_k, eq. 8 read literally (docs/architecture.md). Consistent only for
+        /// ds_{k+1} = s_{k+1} - s_k, eq. 8 read literally (docs/architecture.md). Consistent only
+        /// for
         /// plants whose state is proportional to the action.
         StateChange,
         /// ds_{k+1} - ds_k, the change of the one-step state change. For a plant

@@ -11,9 +11,9 @@ namespace prisca::core {
 /// One recorded manoeuvre: states and actions sampled at a fixed period.
 /// Plain data; copy freely across threads.
 struct Demonstration {
-    /// What the format can mean (docs/architecture.md "Demonstration" CSV): a sampling period from 0.1 ms
-    /// to 10 s, times within +-10^6 s (11.6 days), and every state or action within +-10^6 of
-    /// its unit (a million metres, radians, newton-metres, ...). Beyond these a number is a
+    /// What the format can mean (docs/architecture.md "Demonstration" CSV): a sampling period from
+    /// 0.1 ms to 10 s, times within +-10^6 s (11.6 days), and every state or action within +-10^6
+    /// of its unit (a million metres, radians, newton-metres, ...). Beyond these a number is a
     /// corrupt file, not a manoeuvre, and only overflows the fit of B_v.
     static constexpr double kMinDt = 1e-4;
     static constexpr double kMaxDt = 10.0;

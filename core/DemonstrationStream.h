@@ -23,9 +23,9 @@ namespace prisca::core {
 /// Crash safety: the rows go to partPath(path), whose header is written and flushed when it
 /// opens, the first row with its sample; rows are flushed at least every `flushIntervalMs` of
 /// wall time and of the take's own time (a burst of samples handed over at once included), so a
-/// crash or a kill loses at most that much of the take and never the header, and what is left is a readable
-/// demonstration. finish() renames the partial file onto `path` in one step, so an older file
-/// there is either kept whole or replaced whole. Not thread-safe; one thread at a time.
+/// crash or a kill loses at most that much of the take and never the header, and what is left is a
+/// readable demonstration. finish() renames the partial file onto `path` in one step, so an older
+/// file there is either kept whole or replaced whole. Not thread-safe; one thread at a time.
 class DemonstrationStream {
   public:
     explicit DemonstrationStream(int flushIntervalMs = 250) : flushIntervalMs_(flushIntervalMs) {}

@@ -33,9 +33,9 @@ struct BodyVelocityIndices {
 ///
 /// Plain components subtract. Angle components subtract and wrap to (-pi, pi]. For planar
 /// vehicles the pose (x, y, heading) is expressed in the frame of the desired pose
-/// (docs/architecture.md "Body-frame deviation"): the x slot holds the longitudinal error, the y slot the
-/// lateral error (positive = left of the desired pose), the heading slot the wrapped heading
-/// error. Velocities already in the body frame subtract plainly.
+/// (docs/architecture.md "Body-frame deviation"): the x slot holds the longitudinal error, the y
+/// slot the lateral error (positive = left of the desired pose), the heading slot the wrapped
+/// heading error. Velocities already in the body frame subtract plainly.
 struct DeviationModel {
     int dimension = 0;                      ///< state dimension n
     std::vector<int> angleIndices;          ///< components wrapped to (-pi, pi]

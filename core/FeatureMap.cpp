@@ -43,7 +43,8 @@ void FeatureMap::evaluate(const Eigen::Ref<const Eigen::VectorXd>& deviation,
                     phi(i, l) = t.scale;
                     break;
                 case FeatureTerm::Source::Phase:
-                    phi(i, l) = reference >= t.index && reference < t.index + t.span ? t.scale : 0.0;
+                    phi(i, l) =
+                        reference >= t.index && reference < t.index + t.span ? t.scale : 0.0;
                     break;
             }
         }
@@ -73,8 +74,9 @@ QString FeatureMap::validate(int stateDimension) const {
             const FeatureTerm& t = terms_[l][i];
             if (t.source == FeatureTerm::Source::Phase) {
                 if (t.index < 0 || t.span < 1) {
-                    return QStringLiteral("feature %1 of channel %2: a phase needs a first sample "
-                                          ">= 0 and a span >= 1 (%3, %4)")
+                    return QStringLiteral(
+                               "feature %1 of channel %2: a phase needs a first sample "
+                               ">= 0 and a span >= 1 (%3, %4)")
                         .arg(i)
                         .arg(l)
                         .arg(t.index)

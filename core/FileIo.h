@@ -30,10 +30,11 @@ QString printable(const QString& text);
 /// its metadata without opening it (a FIFO would block). On failure *error (if given) says why.
 bool checkRegularFile(const QString& path, qint64 maxBytes, FileError* error);
 
-/// Reads a whole regular file of at most maxBytes (its size checked before reading). Devices, FIFOs, sockets and folders are
-/// refused before they are opened (a FIFO would block, /dev/zero never ends), and the size is
-/// capped while reading, not taken from stat, so a file growing under the reader cannot exhaust
-/// memory either. On failure nullopt with *error (if given) naming the path. Any thread.
+/// Reads a whole regular file of at most maxBytes (its size checked before reading). Devices,
+/// FIFOs, sockets and folders are refused before they are opened (a FIFO would block, /dev/zero
+/// never ends), and the size is capped while reading, not taken from stat, so a file growing under
+/// the reader cannot exhaust memory either. On failure nullopt with *error (if given) naming the
+/// path. Any thread.
 std::optional<QByteArray> readFileBounded(const QString& path, qint64 maxBytes, FileError* error);
 
 /// Appends the shortest text that reads back to exactly the same double (locale independent,

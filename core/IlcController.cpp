@@ -7,8 +7,7 @@
 namespace prisca::core {
 
 IlcController::IlcController(TrackingProblem problem, IlcParameters parameters)
-    : problem_(TrackingProblem::validated(std::move(problem))),
-      parameters_(std::move(parameters)) {
+    : problem_(TrackingProblem::validated(std::move(problem))), parameters_(std::move(parameters)) {
     const int n = problem_.demonstration->stateDimension();
     const int m = problem_.demonstration->actionDimension();
     feedback_ = PdFeedback(parameters_.feedback, n, m, problem_.demonstration->dt);
@@ -83,8 +82,7 @@ const ControlStep& IlcController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     const int j = std::min(k, demo.length() - 1);
     // The observation is latency_ steps old: its error against the reference of that time.
     const int seen = std::clamp(k - latency_, 0, demo.length() - 1);
-    problem_.deviation.deviation(observation, demo.states.row(seen).transpose(),
-                                 record_.deviation);
+    problem_.deviation.deviation(observation, demo.states.row(seen).transpose(), record_.deviation);
     feedback_.update(record_.deviation, seen);
     signals_.push_back(feedback_.signal());
 

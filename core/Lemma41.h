@@ -13,8 +13,9 @@ namespace prisca::core {
 // The paper leaves E_tau' open. Decision for this project: E_tau' is the uniform mean over
 // tau' consecutive exponents i = 0 .. tau'-1, and Var_tau' is the population variance (divide
 // by tau'), the literal E(D^2) - E(D)^2 of the lemma. tau' = 2H ("tau' is picked as 2 tau"), the
-// same window as the local optimal baseline (docs/architecture.md). With this choice gamma = 1 gives
-// variance 0 for every H, and gamma = 0 gives (2H - 1) / 16, so the lemma holds there for H <= 8.
+// same window as the local optimal baseline (docs/architecture.md). With this choice gamma = 1
+// gives variance 0 for every H, and gamma = 0 gives (2H - 1) / 16, so the lemma holds there for H
+// <= 8.
 //
 // Pure functions; any thread may call them.
 

@@ -33,8 +33,8 @@ LqrController::LqrController(TrackingProblem problem, LqrParameters parameters)
                 .arg(m)
                 .toStdString());
     }
-    if ((p.effort.array() <= 0.0).any() || !p.effort.allFinite() ||
-        !(p.terminalWeight > 0.0) || p.holdSteps < 0) {
+    if ((p.effort.array() <= 0.0).any() || !p.effort.allFinite() || !(p.terminalWeight > 0.0) ||
+        p.holdSteps < 0) {
         throw std::invalid_argument(
             "LQR: effort weights and the terminal weight must be > 0, the hold steps >= 0");
     }

@@ -13,8 +13,8 @@ namespace prisca::core {
 /// PD around the demonstration, the paper's comparison family (Table I):
 ///     eps_l = c_l . e_k              (or its H-step nested-expectation smoothing for PD+H)
 ///     u_l = u*_l - Kp_l eps_l - Kd_l d(eps_l)/dt,
-/// saturated. The minus signs make positive gains negative feedback (docs/architecture.md writes the sign
-/// into the gains). The reference is time-driven (PD, PD+H) or least-state-deviation
+/// saturated. The minus signs make positive gains negative feedback (docs/architecture.md writes
+/// the sign into the gains). The reference is time-driven (PD, PD+H) or least-state-deviation
 /// (PD+LSD, PD+H+LSD), as set in the problem's matching parameters. d/dt is the backward
 /// difference over one control period, zero on the first step.
 class PdController : public Controller {

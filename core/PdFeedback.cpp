@@ -65,10 +65,9 @@ void PdFeedback::update(const Eigen::Ref<const Eigen::VectorXd>& error, int refe
 }
 
 void PdFeedback::apply(Eigen::Ref<Eigen::VectorXd> action, int referenceIndex) const {
-    const double g =
-        referenceIndex >= 0 && referenceIndex < static_cast<int>(gate_.size())
-            ? gate_[static_cast<std::size_t>(referenceIndex)]
-            : 1.0;
+    const double g = referenceIndex >= 0 && referenceIndex < static_cast<int>(gate_.size())
+                         ? gate_[static_cast<std::size_t>(referenceIndex)]
+                         : 1.0;
     action -= g * parameters_.kp.cwiseProduct(signal_);
     action -= g * parameters_.kd.cwiseProduct(rate_);
 }

@@ -60,7 +60,7 @@ class PdFeedback {
     Eigen::VectorXd rate_;
     int step_ = 0;
     std::vector<double> gate_;
-    Eigen::MatrixXd schedule_;  // n x T, or empty
+    Eigen::MatrixXd schedule_;   // n x T, or empty
     Eigen::VectorXd scheduled_;  // n scratch
 };
 

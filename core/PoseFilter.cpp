@@ -17,8 +17,8 @@ constexpr double kTimeTolerance = 1e-9;
 // The filter's component order: x, y, psi, vx, vy, r.
 constexpr int kHeading = 2;
 
-const char* const kComponentNames[6] = {"x", "y", "heading", "forward velocity",
-                                        "lateral velocity", "yaw rate"};
+const char* const kComponentNames[6] = {
+    "x", "y", "heading", "forward velocity", "lateral velocity", "yaw rate"};
 
 [[noreturn]] void fail(const std::string& message) {
     throw std::invalid_argument("PoseFilter: " + message);
@@ -41,8 +41,8 @@ double normalQuantile(double p) {
     static const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01,
                                -2.400758277161838e+00, -2.549732539343734e+00,
                                4.374664141464968e+00,  2.938163982698783e+00};
-    static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01,
-                               2.445134137142996e+00, 3.754408661907416e+00};
+    static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
+                               3.754408661907416e+00};
     constexpr double low = 0.02425;
     double x = 0.0;
     if (p < low || p > 1.0 - low) {
@@ -66,8 +66,8 @@ double normalQuantile(double p) {
 
 double chiSquareQuantile(double p, int dof) {
     if (dof < 1) {
-        throw std::invalid_argument("chiSquareQuantile: degrees of freedom " +
-                                    std::to_string(dof) + " < 1");
+        throw std::invalid_argument("chiSquareQuantile: degrees of freedom " + std::to_string(dof) +
+                                    " < 1");
     }
     const double z = normalQuantile(p);
     const double k = dof;
@@ -185,8 +185,7 @@ Eigen::Vector3d differenceDensity(const Eigen::MatrixXd& states,
                                   int order, const char* name) {
     if (states.rows() < order + 2) {
         throw std::invalid_argument(std::string(name) + ": " + std::to_string(states.rows()) +
-                                    " samples (" + std::to_string(order + 2) +
-                                    " or more needed)");
+                                    " samples (" + std::to_string(order + 2) + " or more needed)");
     }
     if (!(dt > 0.0)) {
         throw std::invalid_argument(std::string(name) + ": dt = " + std::to_string(dt) +
@@ -203,16 +202,15 @@ Eigen::Vector3d differenceDensity(const Eigen::MatrixXd& states,
         const int c = columns[i];
         for (Eigen::Index k = 0; k + order < states.rows(); ++k) {
             changes[static_cast<std::size_t>(k)] =
-                order == 1 ? std::abs(states(k + 1, c) - states(k, c))
-                           // the change of a per-step change, per step
-                           : std::abs(states(k + 2, c) - 2.0 * states(k + 1, c) + states(k, c)) /
-                                 dt;
+                order == 1
+                    ? std::abs(states(k + 1, c) - states(k, c))
+                    // the change of a per-step change, per step
+                    : std::abs(states(k + 2, c) - 2.0 * states(k + 1, c) + states(k, c)) / dt;
         }
         // Nearest-rank 99th percentile.
-        const std::size_t rank = static_cast<std::size_t>(
-            std::ceil(0.99 * static_cast<double>(changes.size()))) - 1;
-        std::nth_element(changes.begin(), changes.begin() + static_cast<long>(rank),
-                         changes.end());
+        const std::size_t rank =
+            static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(changes.size()))) - 1;
+        std::nth_element(changes.begin(), changes.begin() + static_cast<long>(rank), changes.end());
         const double change = changes[rank];
         density[i] = std::max(change * change / dt, floor);
     }
@@ -247,9 +245,9 @@ PoseFilter::PoseFilter(PoseFilterParameters parameters, int actionDimension)
         measuredComponent_[i] = static_cast<int>(
             std::find(index_.begin(), index_.end(), parameters_.measured[i]) - index_.begin());
     }
-    headingMeasured_ = std::find(measuredComponent_.begin(),
-                                 measuredComponent_.begin() + measuredCount_,
-                                 kHeading) != measuredComponent_.begin() + measuredCount_;
+    headingMeasured_ =
+        std::find(measuredComponent_.begin(), measuredComponent_.begin() + measuredCount_,
+                  kHeading) != measuredComponent_.begin() + measuredCount_;
     gate_ = parameters_.gateProbability < 1.0
                 ? chiSquareQuantile(parameters_.gateProbability, measuredCount_)
                 : std::numeric_limits<double>::infinity();
@@ -414,8 +412,8 @@ void PoseFilter::predictSpan(Vector9& x, Matrix9& p, double t0, double t1) const
         if (tau <= kTimeTolerance) {
             return;
         }
-        const Matrix9 q = processNoiseFull(x, tau, parameters_.accelerationDensity,
-                                           parameters_.jerkDensity);
+        const Matrix9 q =
+            processNoiseFull(x, tau, parameters_.accelerationDensity, parameters_.jerkDensity);
         x = propagateFull(x, tau, &f);
         p = f * p * f.transpose() + q;
         if (input && age >= 0) {
@@ -464,8 +462,7 @@ void PoseFilter::checkObservation(const Eigen::Ref<const Eigen::VectorXd>& obser
     }
 }
 
-void PoseFilter::initialise(const Eigen::Ref<const Eigen::VectorXd>& observation,
-                            double takenAt) {
+void PoseFilter::initialise(const Eigen::Ref<const Eigen::VectorXd>& observation, double takenAt) {
     const bool first = !status_.initialised;
     p_.setZero();
     for (int i = 0; i < 9; ++i) {

@@ -31,9 +31,9 @@ double chiSquareQuantile(double p, int dof);
 /// plant's state vector at `pose` and `velocity`. Any other state component passes through from
 /// the newest measurement unchanged.
 struct PoseFilterParameters {
-    int stateDimension = 6;          ///< n of the plant's state vector (>= 6)
-    PlanarPoseIndices pose;          ///< where x, y, psi sit in the state vector
-    BodyVelocityIndices velocity;    ///< where vx, vy, r sit in the state vector
+    int stateDimension = 6;        ///< n of the plant's state vector (>= 6)
+    PlanarPoseIndices pose;        ///< where x, y, psi sit in the state vector
+    BodyVelocityIndices velocity;  ///< where vx, vy, r sit in the state vector
     /// The state components a measurement carries (plant-state indices, each one of the six
     /// above, no repeats, at least one). Full state (the simulation): all six. Pose only (the
     /// ceiling camera): pose.x, pose.y, pose.heading.
@@ -58,8 +58,8 @@ struct PoseFilterParameters {
     /// Spectral densities of white jerks that drive body accelerations (ax, ay, ar) as random
     /// walks: forward and lateral [m^2/s^5], yaw [rad^2/s^5]. Zero (the default): no
     /// acceleration states, the velocities are pure random walks. Positive: the filter also
-    /// estimates each velocity's trend (a constant-acceleration model per body axis: v' = v + a tau,
-    /// the pose along the arc at the span's mid velocity) and so predicts the velocities, not
+    /// estimates each velocity's trend (a constant-acceleration model per body axis: v' = v + a
+    /// tau, the pose along the arc at the span's mid velocity) and so predicts the velocities, not
     /// only the pose, across the latency. A manoeuvre whose body velocities keep changing over
     /// the latency (a car yawing into a slide: its body-frame velocity turns with the frame)
     /// needs it; without it the estimate of now pairs the pose of now with the velocity of then.
@@ -133,12 +133,12 @@ Eigen::Vector3d jerkDensityFromStates(const Eigen::MatrixXd& states,
 
 /// What the last measurement did.
 struct PoseFilterStatus {
-    bool initialised = false;   ///< the filter holds an estimate
-    bool predictedOnly = false; ///< the last step had no measurement (dropped): predict only
-    bool gated = false;         ///< the last measurement was set aside by the gate
-    bool reinitialised = false; ///< the last measurement re-initialised the filter
-    double nis = 0.0;           ///< its normalised innovation squared (0 if none)
-    int innovationDimension = 0;///< the number of measured components
+    bool initialised = false;     ///< the filter holds an estimate
+    bool predictedOnly = false;   ///< the last step had no measurement (dropped): predict only
+    bool gated = false;           ///< the last measurement was set aside by the gate
+    bool reinitialised = false;   ///< the last measurement re-initialised the filter
+    double nis = 0.0;             ///< its normalised innovation squared (0 if none)
+    int innovationDimension = 0;  ///< the number of measured components
 };
 
 /// An extended Kalman filter over a planar body's pose and body-frame velocities
@@ -212,7 +212,7 @@ class PoseFilter {
     Eigen::Vector3d nowAcceleration() const { return xNow_.tail<3>(); }
 
     const PoseFilterStatus& status() const { return status_; }
-    int gatedCount() const { return gatedCount_; }          ///< measurements set aside so far
+    int gatedCount() const { return gatedCount_; }  ///< measurements set aside so far
     int reinitialisations() const { return reinitialisations_; }
     int predictOnlyCount() const { return predictOnlyCount_; }  ///< steps with no measurement
     const PoseFilterParameters& parameters() const { return parameters_; }
@@ -265,15 +265,15 @@ class PoseFilter {
     Matrix6 laggedP6_ = Matrix6::Identity();
     Vector6 now6_ = Vector6::Zero();
     Matrix6 nowP6_ = Matrix6::Identity();
-    Eigen::VectorXd output_;         ///< n, pass-through components from the newest measurement
-    double headingBranch_ = 0.0;     ///< the newest measured heading, unwrapped as the plant has it
-    Eigen::VectorXd reference_;      ///< u_ref, m
+    Eigen::VectorXd output_;      ///< n, pass-through components from the newest measurement
+    double headingBranch_ = 0.0;  ///< the newest measured heading, unwrapped as the plant has it
+    Eigen::VectorXd reference_;   ///< u_ref, m
     bool haveReference_ = false;
-    Eigen::MatrixXd actions_;        ///< m x kActionCapacity ring
+    Eigen::MatrixXd actions_;  ///< m x kActionCapacity ring
     std::vector<double> actionTimes_;
-    int actionHead_ = -1;            ///< slot of the newest action
+    int actionHead_ = -1;  ///< slot of the newest action
     int actionCount_ = 0;
-    mutable Eigen::VectorXd scratch_;///< m, the action difference
+    mutable Eigen::VectorXd scratch_;  ///< m, the action difference
 
     PoseFilterStatus status_;
     int consecutiveGated_ = 0;

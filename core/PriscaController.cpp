@@ -69,7 +69,8 @@ PriscaController::PriscaController(TrackingProblem problem, FeatureMap features,
     actionSensitivity_.setZero(m, p * m);
     effort_.setZero(m);
     if (parameters_.effortWeights.size() != 0 &&
-        (parameters_.effortWeights.size() != m || (parameters_.effortWeights.array() < 0.0).any())) {
+        (parameters_.effortWeights.size() != m ||
+         (parameters_.effortWeights.array() < 0.0).any())) {
         throw std::invalid_argument("PriscaController: effort weights must be m values >= 0");
     }
     for (int c = 1; c <= H + 1; ++c) {
@@ -155,7 +156,8 @@ void PriscaController::closedLoopTerms(int k, int count) {
     }
     if (parameters_.prior.kp.size() != 0) {
         // The prior's proportional part closes the loop too (its smoothing and rate left out).
-        feedbackGain_.noalias() -= parameters_.prior.kp.asDiagonal() * parameters_.prior.errorCombination;
+        feedbackGain_.noalias() -=
+            parameters_.prior.kp.asDiagonal() * parameters_.prior.errorCombination;
     }
     // S over the window, from 0 at its first sample: what theta changed in the errors since.
     const int first = k - count + 1;
@@ -172,7 +174,8 @@ void PriscaController::closedLoopTerms(int k, int count) {
             }
         }
         if (age >= first) {
-            drive_.noalias() += stateEffect_.transpose() * (feedbackGain_ * sensitivity_[age - first]);
+            drive_.noalias() +=
+                stateEffect_.transpose() * (feedbackGain_ * sensitivity_[age - first]);
         }
         transitionAt(referenceHistory_[t % ring]);
         sensitivity_[t + 1 - first].noalias() = stepTransition_ * sensitivity_[t - first];
@@ -214,9 +217,9 @@ void PriscaController::closedLoopTerms(int k, int count) {
         double curvature = (S.array().square().colwise() * problem_.costWeights.array()).sum();
         if (effort) {
             // actionSensitivity_ still holds du_k/dtheta from the loop's last sample (t = k).
-            curvature += (actionSensitivity_.array().square().colwise() *
-                          parameters_.effortWeights.array())
-                             .sum();
+            curvature +=
+                (actionSensitivity_.array().square().colwise() * parameters_.effortWeights.array())
+                    .sum();
         }
         double parameters = static_cast<double>(theta_.size());
         if (hasPhases_) {
@@ -306,8 +309,7 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     }
     if (parameters_.gradient != PriscaParameters::Gradient::ClosedLoop) {
         for (int l = 0; l < m; ++l) {
-            historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) =
-                phi_.col(l) * projected_[l];
+            historyA_.col(slot).segment(l * phi_.rows(), phi_.rows()) = phi_.col(l) * projected_[l];
         }
         if (parameters_.stepSize.normalised) {
             // sum_l |phi_l|^2 (E_l^T W E_l), E_l what holding control l for the window's H

@@ -39,7 +39,8 @@ struct PriscaParameters {
         /// S = de/dtheta_l reset at the window's start, K the policy's own feedback gain, and
         /// a_t = 2 S_t^T W e_t. A is the fitted drift (setDrift) plus the error's own
         /// kinematics at each sample's reference (DeviationModel::kinematics: for a vehicle,
-        /// heading error turns into lateral error at the reference's speed). Once the gains make the loop ring, the sensitivities change sign
+        /// heading error turns into lateral error at the reference's speed). Once the gains make
+        /// the loop ring, the sensitivities change sign
         /// and the update turns round: learning settles without a bound on theta.
         ClosedLoop
     };
@@ -175,16 +176,16 @@ class PriscaController : public Controller {
     std::vector<Eigen::VectorXd> windowWeights_;  // [c - 1]: nested weights of c samples
 
     Eigen::MatrixXd theta_;
-    Eigen::MatrixXd feedbackMask_;  // p x m: 1 where a term is charged as effort (not a phase)
+    Eigen::MatrixXd feedbackMask_;   // p x m: 1 where a term is charged as effort (not a phase)
     bool hasPhases_ = false;         // any Phase term in the feature map
     Eigen::ArrayXXd moved_;          // 1 x (p*m) scratch: how much each parameter moves the step
-    Eigen::MatrixXd initialTheta_;  // what a cold reset returns to
+    Eigen::MatrixXd initialTheta_;   // what a cold reset returns to
     Eigen::MatrixXd previousTheta_;  // before the last update (restored if it overflowed)
     Eigen::MatrixXd phi_;
     Eigen::MatrixXd gradient_;
     Eigen::MatrixXd smoothedA_;
     Eigen::MatrixXd smoothedG_;
-    Eigen::MatrixXd historyA_;     // (p*m) x (H+1) ring of a_j
+    Eigen::MatrixXd historyA_;  // (p*m) x (H+1) ring of a_j
     Eigen::VectorXd weightedError_;
     Eigen::VectorXd projected_;
     Eigen::VectorXd depreciationOfWindow_;
@@ -194,7 +195,7 @@ class PriscaController : public Controller {
     double curvatureSteps_ = 0.0;
     int step_ = 0;          // k within the trial
     int learningStep_ = 0;  // k of alpha_k, kept across warm starts
-    int latency_ = 0;           // the sensor latency compensated [steps]
+    int latency_ = 0;       // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

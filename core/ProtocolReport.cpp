@@ -138,13 +138,10 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
     return summary;
 }
 
-QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
-                       const QString& caption) {
+QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const QString& caption) {
     const int oracle = summary.oracleRow();
-    const double limitPosition =
-        oracle >= 0 ? summary.rows[oracle].position.mean : kNaN;
-    const double limitOrientation =
-        oracle >= 0 ? summary.rows[oracle].orientation.mean : kNaN;
+    const double limitPosition = oracle >= 0 ? summary.rows[oracle].position.mean : kNaN;
+    const double limitOrientation = oracle >= 0 ? summary.rows[oracle].orientation.mean : kNaN;
     QString out;
     switch (format) {
         case TableFormat::Markdown: {
@@ -163,8 +160,9 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                                 ratio(r.orientation.mean, limitOrientation),
                                 formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
-            out += QStringLiteral("\nPer style, position MAE [cm] / orientation MAE [deg] "
-                                  "(mean over seed sets):\n\n| method |");
+            out += QStringLiteral(
+                "\nPer style, position MAE [cm] / orientation MAE [deg] "
+                "(mean over seed sets):\n\n| method |");
             QString rule = QStringLiteral("| --- |");
             for (const QString& style : summary.styles) {
                 out += QStringLiteral(" %1 |").arg(style);
@@ -174,9 +172,9 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             for (const ProtocolRow& r : summary.rows) {
                 out += QStringLiteral("| %1 |").arg(r.shownLabel());
                 for (int s = 0; s < summary.styles.size(); ++s) {
-                    out += QStringLiteral(" %1 / %2 |")
-                               .arg(fixed(r.stylePosition[s].mean),
-                                    fixed(r.styleOrientation[s].mean));
+                    out +=
+                        QStringLiteral(" %1 / %2 |")
+                            .arg(fixed(r.stylePosition[s].mean), fixed(r.styleOrientation[s].mean));
                 }
                 out += QLatin1Char('\n');
             }
@@ -196,13 +194,13 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                                 full(o.lower), full(o.upper), trials, cpu);
             };
             for (const ProtocolRow& r : summary.rows) {
-                line(QStringLiteral("all"), r, r.position, r.orientation,
-                     QString::number(r.trials), full(r.cpuMicrosecondsPerStep));
+                line(QStringLiteral("all"), r, r.position, r.orientation, QString::number(r.trials),
+                     full(r.cpuMicrosecondsPerStep));
             }
             for (int s = 0; s < summary.styles.size(); ++s) {
                 for (const ProtocolRow& r : summary.rows) {
-                    line(summary.styles[s], r, r.stylePosition[s], r.styleOrientation[s],
-                         QString(), QString());
+                    line(summary.styles[s], r, r.stylePosition[s], r.styleOrientation[s], QString(),
+                         QString());
                 }
             }
             break;
@@ -233,9 +231,9 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             for (const ProtocolRow& r : summary.rows) {
                 out += r.shownLabel();
                 for (int s = 0; s < summary.styles.size(); ++s) {
-                    out += QStringLiteral(" & %1 / %2")
-                               .arg(fixed(r.stylePosition[s].mean),
-                                    fixed(r.styleOrientation[s].mean));
+                    out +=
+                        QStringLiteral(" & %1 / %2")
+                            .arg(fixed(r.stylePosition[s].mean), fixed(r.styleOrientation[s].mean));
                 }
                 out += QStringLiteral(" \\\\\n");
             }
@@ -247,10 +245,10 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
             for (const ProtocolRow& r : summary.rows) {
                 QJsonArray styles;
                 for (int s = 0; s < summary.styles.size(); ++s) {
-                    styles.append(QJsonObject{{"style", summary.styles[s]},
-                                              {"positionCm", intervalJson(r.stylePosition[s])},
-                                              {"orientationDeg",
-                                               intervalJson(r.styleOrientation[s])}});
+                    styles.append(
+                        QJsonObject{{"style", summary.styles[s]},
+                                    {"positionCm", intervalJson(r.stylePosition[s])},
+                                    {"orientationDeg", intervalJson(r.styleOrientation[s])}});
                 }
                 rows.append(QJsonObject{
                     {"method", r.method},
@@ -259,13 +257,11 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format,
                     {"positionCm", intervalJson(r.position)},
                     {"orientationDeg", intervalJson(r.orientation)},
                     {"positionTimesLimit",
-                     jsonNumber(limitPosition >= kResolvableLimit
-                                    ? r.position.mean / limitPosition
-                                    : kNaN)},
-                    {"orientationTimesLimit",
-                     jsonNumber(limitOrientation >= kResolvableLimit
-                                    ? r.orientation.mean / limitOrientation
-                                    : kNaN)},
+                     jsonNumber(limitPosition >= kResolvableLimit ? r.position.mean / limitPosition
+                                                                  : kNaN)},
+                    {"orientationTimesLimit", jsonNumber(limitOrientation >= kResolvableLimit
+                                                             ? r.orientation.mean / limitOrientation
+                                                             : kNaN)},
                     {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)},
                     {"styles", styles}});
             }

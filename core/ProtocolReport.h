@@ -24,9 +24,9 @@ MeanInterval meanInterval(const std::vector<double>& values, double level = 0.95
 
 /// One method's Table I row on one cell of the evaluation: a demonstration style on a seed set.
 struct ProtocolCell {
-    QString style;            ///< the demonstration style
-    std::uint64_t seedSet;    ///< the seed set (demonstration hand and trial perturbations)
-    Table1Row row;            ///< the method's trials there
+    QString style;          ///< the demonstration style
+    std::uint64_t seedSet;  ///< the seed set (demonstration hand and trial perturbations)
+    Table1Row row;          ///< the method's trials there
 };
 
 /// A method over every cell: the cells' mean absolute errors averaged with a 95% interval over
@@ -36,17 +36,17 @@ struct ProtocolRow {
     QString label;       ///< as tables show it (the id where empty)
     bool limit = false;  ///< the ruler (the oracle)
     const QString& shownLabel() const { return label.isEmpty() ? method : label; }
-    MeanInterval position;     ///< over the cells' position MAE [cm]
-    MeanInterval orientation;  ///< over the cells' orientation MAE [deg]
-    int trials = 0;            ///< trials that finished, over all cells
-    double cpuMicrosecondsPerStep = 0.0;          ///< mean over the cells [us]
-    std::vector<MeanInterval> stylePosition;      ///< per style, in ProtocolSummary::styles order
+    MeanInterval position;                       ///< over the cells' position MAE [cm]
+    MeanInterval orientation;                    ///< over the cells' orientation MAE [deg]
+    int trials = 0;                              ///< trials that finished, over all cells
+    double cpuMicrosecondsPerStep = 0.0;         ///< mean over the cells [us]
+    std::vector<MeanInterval> stylePosition;     ///< per style, in ProtocolSummary::styles order
     std::vector<MeanInterval> styleOrientation;  ///< per style
 };
 
 /// The evaluation of several methods on the same cells.
 struct ProtocolSummary {
-    QStringList styles;             ///< in the order given
+    QStringList styles;  ///< in the order given
     std::vector<std::uint64_t> seedSets;
     std::vector<ProtocolRow> rows;  ///< one per method, in the order given
     /// The row of the oracle (the limit), or -1 when it did not run.
@@ -60,10 +60,10 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
                                   const std::vector<std::vector<ProtocolCell>>& cells);
 
 /// The summary as text: the methods' means with 95% intervals, how many times the oracle's
-/// error each is (n/a where the oracle's is below 0.005, too small for a ratio), the CPU time per step, and a per-style breakdown. Markdown and LaTeX
-/// round for reading; CSV (long format: one line per method and scope, "all" or a style) and
-/// JSON carry full precision. JSON rows keep Table I's keys (`method`,
-/// `positionCm.meanAbsoluteError`, `orientationDeg.meanAbsoluteError`).
+/// error each is (n/a where the oracle's is below 0.005, too small for a ratio), the CPU time per
+/// step, and a per-style breakdown. Markdown and LaTeX round for reading; CSV (long format: one
+/// line per method and scope, "all" or a style) and JSON carry full precision. JSON rows keep Table
+/// I's keys (`method`, `positionCm.meanAbsoluteError`, `orientationDeg.meanAbsoluteError`).
 QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const QString& caption);
 
 }  // namespace prisca::core

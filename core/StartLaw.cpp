@@ -51,7 +51,8 @@ Eigen::MatrixXd stationaryLqrGain(const Eigen::MatrixXd& ad, const Eigen::Matrix
         p = q + ad.transpose() * p * (ad - bd * next);
         p = 0.5 * (p + p.transpose()).eval();
         if (!next.allFinite() || !p.allFinite()) {
-            throw std::invalid_argument("stationaryLqrGain: the Riccati recursion left the numbers");
+            throw std::invalid_argument(
+                "stationaryLqrGain: the Riccati recursion left the numbers");
         }
         const double change = (next - gain).norm();
         gain = std::move(next);
@@ -145,8 +146,8 @@ StartLaw deriveStartLaw(const Demonstration& demonstration, const Eigen::MatrixX
         for (int j = 0; j < n; ++j) {
             bool integrates = false;
             for (int i = 0; i < n; ++i) {
-                integrates = integrates || (i != j && candidate[static_cast<size_t>(i)] &&
-                                            model(j, i) != 0.0);
+                integrates = integrates ||
+                             (i != j && candidate[static_cast<size_t>(i)] && model(j, i) != 0.0);
             }
             set[static_cast<size_t>(j)] = candidate[static_cast<size_t>(j)] && !integrates;
         }
@@ -210,8 +211,8 @@ StartLaw deriveStartLaw(const Demonstration& demonstration, const Eigen::MatrixX
     out.fastestMode = fastestRate(ad - bd * out.gain, dt);
     out.law.errorCombination = out.gain;
     if (options.structure.size() != 0) {
-        out.law.errorCombination = out.gain.cwiseProduct(
-            (options.structure.array() != 0.0).cast<double>().matrix());
+        out.law.errorCombination =
+            out.gain.cwiseProduct((options.structure.array() != 0.0).cast<double>().matrix());
     }
     out.law.kp = Eigen::VectorXd::Ones(m);
     out.law.kd = Eigen::VectorXd::Zero(m);

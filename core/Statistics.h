@@ -4,8 +4,8 @@
 
 namespace prisca::core {
 
-// Statistics for the evaluation metrics (docs/architecture.md "Metrics"): Table I error summaries and the
-// learning-curve confidence bands. Pure functions, no state; any thread may call them.
+// Statistics for the evaluation metrics (docs/architecture.md "Metrics"): Table I error summaries
+// and the learning-curve confidence bands. Pure functions, no state; any thread may call them.
 //
 // Non-finite values (NaN, +-inf) are never averaged in: every function here skips them, and
 // summarizeErrors() reports how many it skipped, so a failed trial cannot silently turn a whole

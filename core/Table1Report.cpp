@@ -157,16 +157,15 @@ QString formatTable1(const std::vector<Table1Row>& rows, TableFormat format,
         case TableFormat::Json: {
             QJsonArray array;
             for (const Table1Row& r : rows) {
-                array.append(QJsonObject{{"method", r.method},
-                                         {"label", r.shownLabel()},
-                                         {"trials", r.position.count},
-                                         {"plannedTrials", r.plannedTrials > 0 ? r.plannedTrials
-                                                                               : r.position.count},
-                                         {"partial", r.partial()},
-                                         {"positionCm", summaryJson(r.position)},
-                                         {"orientationDeg", summaryJson(r.orientation)},
-                                         {"cpuMicrosecondsPerStep",
-                                          jsonNumber(r.cpuMicrosecondsPerStep)}});
+                array.append(QJsonObject{
+                    {"method", r.method},
+                    {"label", r.shownLabel()},
+                    {"trials", r.position.count},
+                    {"plannedTrials", r.plannedTrials > 0 ? r.plannedTrials : r.position.count},
+                    {"partial", r.partial()},
+                    {"positionCm", summaryJson(r.position)},
+                    {"orientationDeg", summaryJson(r.orientation)},
+                    {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)}});
             }
             out =
                 QString::fromUtf8(QJsonDocument(QJsonObject{{"caption", caption}, {"rows", array}})

@@ -29,10 +29,9 @@ cv::Point2d CameraLens::undistort(const cv::Point2d& pixel) const {
     std::vector<cv::Point2d> out;
     // The default five iterations leave a wide lens's corners pixels off; these converge to
     // well below a thousandth of a pixel.
-    cv::undistortPoints(in, out, cv::Mat(matrix), cv::Mat(distortion), cv::noArray(),
-                        cv::Mat(matrix),
-                        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100,
-                                         1e-12));
+    cv::undistortPoints(
+        in, out, cv::Mat(matrix), cv::Mat(distortion), cv::noArray(), cv::Mat(matrix),
+        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
     return out.front();
 }
 
@@ -72,8 +71,9 @@ QString CameraLens::plausibilityProblem() const {
     // (a telephoto, useless over a floor).
     const double w = imageSize.width;
     if (!(fx > 0.1 * w && fx < 20.0 * w && fy > 0.1 * w && fy < 20.0 * w)) {
-        return QStringLiteral("focal length fx %1, fy %2 px is not plausible for a %3 px wide "
-                              "image (from %4 to %5 px)")
+        return QStringLiteral(
+                   "focal length fx %1, fy %2 px is not plausible for a %3 px wide "
+                   "image (from %4 to %5 px)")
             .arg(fx, 0, 'f', 1)
             .arg(fy, 0, 'f', 1)
             .arg(imageSize.width)
@@ -92,8 +92,8 @@ QString CameraLens::plausibilityProblem() const {
             .arg(imageSize.width)
             .arg(imageSize.height);
     }
-    if (matrix(0, 1) != 0.0 || matrix(1, 0) != 0.0 || matrix(2, 0) != 0.0 ||
-        matrix(2, 1) != 0.0 || matrix(2, 2) != 1.0) {
+    if (matrix(0, 1) != 0.0 || matrix(1, 0) != 0.0 || matrix(2, 0) != 0.0 || matrix(2, 1) != 0.0 ||
+        matrix(2, 2) != 1.0) {
         return QStringLiteral("the camera matrix must be [fx 0 cx; 0 fy cy; 0 0 1]");
     }
     // The model must not fold inside the image: at the corner farthest from the principal
@@ -119,24 +119,27 @@ QString CameraLens::plausibilityProblem() const {
         radialOnly.distortion[2] = radialOnly.distortion[3] = 0.0;
         if (!foldsAtACorner(radialOnly)) {
             return QStringLiteral(
-                "the tangential distortion (p1 %1, p2 %2) folds the image back on itself at its "
-                "corners (the radial terms alone do not): a lens this model cannot describe, or "
-                "a fit without views near the corners")
+                       "the tangential distortion (p1 %1, p2 %2) folds the image back on itself at "
+                       "its "
+                       "corners (the radial terms alone do not): a lens this model cannot "
+                       "describe, or "
+                       "a fit without views near the corners")
                 .arg(distortion[2], 0, 'g', 3)
                 .arg(distortion[3], 0, 'g', 3);
         }
         return QStringLiteral(
-            "the distortion (k1 %1, k2 %2, k3 %3) folds the image back on itself at its "
-            "corners: a lens this model cannot describe, or a fit without views near the "
-            "corners")
+                   "the distortion (k1 %1, k2 %2, k3 %3) folds the image back on itself at its "
+                   "corners: a lens this model cannot describe, or a fit without views near the "
+                   "corners")
             .arg(distortion[0], 0, 'g', 3)
             .arg(distortion[1], 0, 'g', 3)
             .arg(distortion[4], 0, 'g', 3);
     }
     if (!(rmsPixels >= 0.0 && rmsPixels <= kMaxRmsPixels)) {
-        return QStringLiteral("the fit's RMS reprojection error is %1 px, above the %2 px a "
-                              "board found to a fraction of a pixel gives (wrong --board or "
-                              "--square? blurred views?)")
+        return QStringLiteral(
+                   "the fit's RMS reprojection error is %1 px, above the %2 px a "
+                   "board found to a fraction of a pixel gives (wrong --board or "
+                   "--square? blurred views?)")
             .arg(rmsPixels, 0, 'f', 3)
             .arg(kMaxRmsPixels, 0, 'f', 1);
     }
@@ -144,8 +147,7 @@ QString CameraLens::plausibilityProblem() const {
 }
 
 bool CameraLens::sameModel(const CameraLens& other) const {
-    return matrix == other.matrix && distortion == other.distortion &&
-           imageSize == other.imageSize;
+    return matrix == other.matrix && distortion == other.distortion && imageSize == other.imageSize;
 }
 
 QJsonObject CameraLens::toJsonObject() const {
@@ -219,8 +221,8 @@ std::optional<CameraLens> CameraLens::fromJsonObject(const QJsonObject& root, QS
     }
     for (const QJsonValue& v : root.value("views").toArray()) {
         const QJsonObject o = v.toObject();
-        lens.views.push_back(
-            {o.value("name").toString(), o.value("found").toBool(), o.value("error_px").toDouble()});
+        lens.views.push_back({o.value("name").toString(), o.value("found").toBool(),
+                              o.value("error_px").toDouble()});
     }
     if (const QString problem = lens.plausibilityProblem(); !problem.isEmpty()) {
         *error = problem;
@@ -280,8 +282,9 @@ std::optional<CameraLens> calibrateLensFromCorners(
     const std::vector<std::vector<cv::Point2f>>& corners, const BoardSpec& board,
     cv::Size imageSize, QString* error) {
     if (static_cast<int>(corners.size()) < kMinLensViews) {
-        *error = QStringLiteral("the board was found in %1 view(s); a lens calibration needs at "
-                                "least %2, tilted and spread over the image, its corners too")
+        *error = QStringLiteral(
+                     "the board was found in %1 view(s); a lens calibration needs at "
+                     "least %2, tilted and spread over the image, its corners too")
                      .arg(corners.size())
                      .arg(kMinLensViews);
         return std::nullopt;
@@ -303,11 +306,9 @@ std::optional<CameraLens> calibrateLensFromCorners(
     std::vector<cv::Mat> rvecs, tvecs;
     double rms = 0.0;
     try {
-        rms = cv::calibrateCamera(objects, corners, imageSize, k, d, rvecs, tvecs,
-                                  board.fitK3 ? 0 : cv::CALIB_FIX_K3,
-                                  cv::TermCriteria(cv::TermCriteria::COUNT |
-                                                       cv::TermCriteria::EPS,
-                                                   100, 1e-12));
+        rms = cv::calibrateCamera(
+            objects, corners, imageSize, k, d, rvecs, tvecs, board.fitK3 ? 0 : cv::CALIB_FIX_K3,
+            cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
     } catch (const cv::Exception& e) {
         *error = QStringLiteral("the lens fit failed: %1").arg(QString::fromStdString(e.msg));
         return std::nullopt;
@@ -347,8 +348,9 @@ std::optional<CameraLens> calibrateLens(const std::vector<QString>& names,
         if (size.empty()) {
             size = images[i].size();
         } else if (images[i].size() != size) {
-            *error = QStringLiteral("%1 is %2 x %3 px, the views before it %4 x %5: every view "
-                                    "must come from the one camera at one resolution")
+            *error = QStringLiteral(
+                         "%1 is %2 x %3 px, the views before it %4 x %5: every view "
+                         "must come from the one camera at one resolution")
                          .arg(name)
                          .arg(images[i].cols)
                          .arg(images[i].rows)

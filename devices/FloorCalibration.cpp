@@ -95,8 +95,9 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
             return std::nullopt;
         }
         if (std::abs(p.floor.x) > kMaxFloorMetres || std::abs(p.floor.y) > kMaxFloorMetres) {
-            *error = QStringLiteral("calibration point %1: floor (%2, %3) m is beyond the +-%4 m "
-                                    "a floor can span")
+            *error = QStringLiteral(
+                         "calibration point %1: floor (%2, %3) m is beyond the +-%4 m "
+                         "a floor can span")
                          .arg(i + 1)
                          .arg(p.floor.x, 0, 'g', 4)
                          .arg(p.floor.y, 0, 'g', 4)
@@ -104,8 +105,9 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
             return std::nullopt;
         }
         if (std::abs(p.image.x) > kMaxImagePixels || std::abs(p.image.y) > kMaxImagePixels) {
-            *error = QStringLiteral("calibration point %1: image (%2, %3) px is beyond the +-%4 "
-                                    "px of any camera frame")
+            *error = QStringLiteral(
+                         "calibration point %1: image (%2, %3) px is beyond the +-%4 "
+                         "px of any camera frame")
                          .arg(i + 1)
                          .arg(p.image.x, 0, 'g', 4)
                          .arg(p.image.y, 0, 'g', 4)
@@ -178,9 +180,10 @@ std::optional<FloorCalibration> FloorCalibration::fit(const std::vector<Calibrat
             return {};
         }
         const CalibrationPoint& p = points[static_cast<size_t>(culprit)];
-        return QStringLiteral("calibration point %1 (image (%2, %3) px, floor (%4, %5) m) does not "
-                              "fit the others: they agree within %6 mm and put it at (%7, %8) m. "
-                              "A mistyped coordinate?")
+        return QStringLiteral(
+                   "calibration point %1 (image (%2, %3) px, floor (%4, %5) m) does not "
+                   "fit the others: they agree within %6 mm and put it at (%7, %8) m. "
+                   "A mistyped coordinate?")
             .arg(culprit + 1)
             .arg(p.image.x, 0, 'g', 6)
             .arg(p.image.y, 0, 'g', 6)
@@ -297,8 +300,9 @@ QString FloorCalibration::accuracyProblem() const {
     }
     const std::vector<double> r = residuals();
     const auto worst = std::max_element(r.begin(), r.end());
-    return QStringLiteral("the floor calibration fits its points to %1 mm RMS (point %2 is %3 mm "
-                          "off), more than the %4 mm the tracker tolerates; %5")
+    return QStringLiteral(
+               "the floor calibration fits its points to %1 mm RMS (point %2 is %3 mm "
+               "off), more than the %4 mm the tracker tolerates; %5")
         .arg(rmsMetres * 1000.0, 0, 'f', 1)
         .arg(worst - r.begin() + 1)
         .arg(*worst * 1000.0, 0, 'f', 1)

@@ -19,7 +19,8 @@ struct CalibrationPoint {
 };
 
 /// The floor calibration: the homography from image pixels to floor metres, fitted to four or
-/// more points the operator clicked, and how well it fits them. JSON as docs/architecture.md gives it:
+/// more points the operator clicked, and how well it fits them. JSON as docs/architecture.md gives
+/// it:
 /// {"homography": [h00..h22 row-major, image px -> floor m], "points": [...], "rms_m": ...,
 ///  "camera": {the lens, CameraLens's JSON; absent: none}}.
 /// With a lens the homography maps the ideal (undistorted) image to the floor, and toFloor()

@@ -18,8 +18,7 @@ double cross(const cv::Point2d& o, const cv::Point2d& a, const cv::Point2d& b) {
 // Whether segments ab and cd cross at a point inside both (touching ends do not count).
 bool segmentsCross(const cv::Point2d& a, const cv::Point2d& b, const cv::Point2d& c,
                    const cv::Point2d& d) {
-    const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c),
-                 d4 = cross(a, b, d);
+    const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
     return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
@@ -33,9 +32,9 @@ bool Geofence::contains(const cv::Point2d& floor) const {
     for (const cv::Point2d& p : polygon) {
         contour.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
     }
-    return cv::pointPolygonTest(contour, cv::Point2f(static_cast<float>(floor.x),
-                                                     static_cast<float>(floor.y)),
-                                false) >= 0.0;
+    return cv::pointPolygonTest(
+               contour, cv::Point2f(static_cast<float>(floor.x), static_cast<float>(floor.y)),
+               false) >= 0.0;
 }
 
 QString Geofence::breach(const std::optional<PlanarPose>& pose, double speed,
@@ -85,8 +84,9 @@ QString Geofence::problem() const {
     for (size_t i = 0; i < n; ++i) {
         for (size_t j = i + 1; j < n; ++j) {
             if (segmentsCross(polygon[i], polygon[(i + 1) % n], polygon[j], polygon[(j + 1) % n])) {
-                return QStringLiteral("the fence's edges %1 and %2 cross: give its corners in "
-                                      "order around it")
+                return QStringLiteral(
+                           "the fence's edges %1 and %2 cross: give its corners in "
+                           "order around it")
                     .arg(i + 1)
                     .arg(j + 1);
             }
@@ -142,7 +142,8 @@ std::optional<Geofence> Geofence::fromJson(const QJsonObject& object, QString* e
     for (int i = 0; i < corners.size(); ++i) {
         const QJsonArray xy = corners[i].toArray();
         if (xy.size() != 2 || !xy[0].isDouble() || !xy[1].isDouble()) {
-            *error = QStringLiteral("fence 'polygon' corner %1 must be [x, y] in metres").arg(i + 1);
+            *error =
+                QStringLiteral("fence 'polygon' corner %1 must be [x, y] in metres").arg(i + 1);
             return std::nullopt;
         }
         fence.polygon.emplace_back(xy[0].toDouble(), xy[1].toDouble());

@@ -109,8 +109,8 @@ Eigen::VectorXd LatencyProbe::onFrame(std::int64_t frameNs, const std::optional<
         if (!(q > 0.0)) {
             continue;
         }
-        const double residual = sdd - 2.0 * c * sd - 2.0 * q * sbd + n * c * c +
-                                2.0 * c * q * sb + q * q * sbb;
+        const double residual =
+            sdd - 2.0 * c * sd - 2.0 * q * sbd + n * c * c + 2.0 * c * q * sb + q * q * sbb;
         if (residual < bestResidual) {
             bestResidual = residual;
             bestT0 = t0;

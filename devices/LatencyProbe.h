@@ -11,16 +11,16 @@
 namespace prisca::devices {
 
 struct LatencyProbeSettings {
-    int steps = 5;              ///< throttle steps to time
-    double throttle = 0.35;     ///< the step's size [-1, 1]; alternating forward and back
-    double stillFor = 0.4;      ///< the car must be still this long before a step [s]
-    double stillWithin = 0.004; ///< "still": no pose further than this from the newest [m]
-    double onsetFrom = 0.006;   ///< a step answered: at least two frames this far [m]
-    double fitUpTo = 0.05;      ///< the response is fitted up to this displacement [m]
-    double giveUpAfter = 1.0;   ///< a step with no response by then is a failure [s]
-    double settleTimeout = 8.0; ///< the car not still within this long: the probe fails [s]
-    int throttleIndex = 0;      ///< which action component is the throttle
-    int actions = 2;            ///< the action's size
+    int steps = 5;               ///< throttle steps to time
+    double throttle = 0.35;      ///< the step's size [-1, 1]; alternating forward and back
+    double stillFor = 0.4;       ///< the car must be still this long before a step [s]
+    double stillWithin = 0.004;  ///< "still": no pose further than this from the newest [m]
+    double onsetFrom = 0.006;    ///< a step answered: at least two frames this far [m]
+    double fitUpTo = 0.05;       ///< the response is fitted up to this displacement [m]
+    double giveUpAfter = 1.0;    ///< a step with no response by then is a failure [s]
+    double settleTimeout = 8.0;  ///< the car not still within this long: the probe fails [s]
+    int throttleIndex = 0;       ///< which action component is the throttle
+    int actions = 2;             ///< the action's size
 };
 
 /// One timed step.

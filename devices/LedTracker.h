@@ -10,8 +10,9 @@
 
 namespace prisca::devices {
 
-/// Where the car's three IR LEDs sit in the car frame (x forward, y left) [m]; docs/architecture.md's
-/// default: front (+0.12, 0), rear-left (-0.08, +0.06), rear-right (-0.08, -0.06).
+/// Where the car's three IR LEDs sit in the car frame (x forward, y left) [m];
+/// docs/architecture.md's default: front (+0.12, 0), rear-left (-0.08, +0.06), rear-right (-0.08,
+/// -0.06).
 struct LedGeometry {
     std::array<cv::Point2d, 3> leds = {cv::Point2d(0.12, 0.0), cv::Point2d(-0.08, 0.06),
                                        cv::Point2d(-0.08, -0.06)};

@@ -30,8 +30,8 @@ QString protocolName(RcProtocol protocol) {
 }
 
 std::optional<RcProtocol> parseProtocol(const QString& name) {
-    for (RcProtocol p : {RcProtocol::Crsf, RcProtocol::Sbus, RcProtocol::Multiprotocol,
-                         RcProtocol::PpmBridge}) {
+    for (RcProtocol p :
+         {RcProtocol::Crsf, RcProtocol::Sbus, RcProtocol::Multiprotocol, RcProtocol::PpmBridge}) {
         if (name.compare(protocolName(p), Qt::CaseInsensitive) == 0) {
             return p;
         }
@@ -217,9 +217,8 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
                 break;
             }
             const auto* frame = reinterpret_cast<const std::uint8_t*>(buffer_.constData()) + start;
-            const bool ok = sbusFraming(protocol_)
-                                ? frame[0] == kSbusHeader && frame[24] == 0x00
-                                : (frame[0] == 0x55 || frame[0] == 0x54);
+            const bool ok = sbusFraming(protocol_) ? frame[0] == kSbusHeader && frame[24] == 0x00
+                                                   : (frame[0] == 0x55 || frame[0] == 0x54);
             if (!ok) {
                 locked_ = false;
                 ++start;
@@ -235,8 +234,8 @@ std::vector<ChannelValues> RcFrameDecoder::push(const QByteArray& bytes) {
                     break;  // wait for the next frame's first byte
                 }
                 const std::uint8_t next = frame[size];
-                const bool nextOk = sbusFraming(protocol_) ? next == kSbusHeader
-                                                                  : (next == 0x55 || next == 0x54);
+                const bool nextOk =
+                    sbusFraming(protocol_) ? next == kSbusHeader : (next == 0x55 || next == 0x54);
                 if (!nextOk) {
                     ++start;
                     ++skipped_;

@@ -129,8 +129,8 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
         if (lostSinceNs_ < 0) {
             lostSinceNs_ = frame.steadyNs;
         }
-        if (const QString why = fence_.breach(std::nullopt, 0.0,
-                                              (frame.steadyNs - lostSinceNs_) * 1e-9);
+        if (const QString why =
+                fence_.breach(std::nullopt, 0.0, (frame.steadyNs - lostSinceNs_) * 1e-9);
             !why.isEmpty()) {
             return trip(why, true);
         }

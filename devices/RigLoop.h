@@ -44,8 +44,8 @@ struct RigStep {
     /// Why the trial must end in failsafe now (the fence breached, the car off the
     /// demonstration, the controller failed); empty while it may go on.
     QString stopReason;
-    std::int64_t frameNs = 0;        ///< when the frame arrived
-    std::int64_t commandNs = 0;      ///< when the command was handed to the link
+    std::int64_t frameNs = 0;    ///< when the frame arrived
+    std::int64_t commandNs = 0;  ///< when the command was handed to the link
 };
 
 /// The closed loop on the rig, one camera frame at a time: track the LEDs, estimate the state,
@@ -100,8 +100,8 @@ class RigLoop {
     std::unique_ptr<core::Controller> controller_;
     core::LostTrackGuard guard_;
     Geofence fence_;
-    QString tripped_;            ///< why the trial ended in failsafe (latched until startTrial)
-    bool fenceTripped_ = false;  ///< ... and whether that was the fence
+    QString tripped_;                ///< why the trial ended in failsafe (latched until startTrial)
+    bool fenceTripped_ = false;      ///< ... and whether that was the fence
     std::int64_t lostSinceNs_ = -1;  ///< when the pose was lost (-1: tracked)
     ChannelMap channels_;
     TransmitterLink& link_;

@@ -102,10 +102,10 @@ BoardViewRenderer::BoardViewRenderer(const CameraLens& lens) : lens_(lens) {
         }
     }
     std::vector<cv::Point2d> ideal;
-    cv::undistortPoints(pixels, ideal, cv::Mat(lens.matrix), cv::Mat(lens.distortion),
-                        cv::noArray(), cv::Mat(lens.matrix),
-                        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100,
-                                         1e-10));
+    cv::undistortPoints(
+        pixels, ideal, cv::Mat(lens.matrix), cv::Mat(lens.distortion), cv::noArray(),
+        cv::Mat(lens.matrix),
+        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-10));
     idealX_.create(size, CV_64F);
     idealY_.create(size, CV_64F);
     for (int v = 0; v < size.height; ++v) {
@@ -122,8 +122,8 @@ cv::Mat BoardViewRenderer::render(const BoardSpec& board, const cv::Vec3d& rvec,
     cv::Matx33d r;
     cv::Rodrigues(rvec, r);
     const cv::Matx33d boardToIdeal =
-        lens_.matrix *
-        cv::Matx33d(r(0, 0), r(0, 1), tvec[0], r(1, 0), r(1, 1), tvec[1], r(2, 0), r(2, 1), tvec[2]);
+        lens_.matrix * cv::Matx33d(r(0, 0), r(0, 1), tvec[0], r(1, 0), r(1, 1), tvec[1], r(2, 0),
+                                   r(2, 1), tvec[2]);
     const cv::Matx33d idealToBoard = boardToIdeal.inv();
     const double s = board.squareMetres;
     const int cols = board.innerCorners.width, rows = board.innerCorners.height;
@@ -136,7 +136,8 @@ cv::Mat BoardViewRenderer::render(const BoardSpec& board, const cv::Vec3d& rvec,
         if (bx < -s || by < -s || bx > cols * s || by > rows * s) {
             return 215.0f;
         }
-        const long ix = static_cast<long>(std::floor(bx / s)), iy = static_cast<long>(std::floor(by / s));
+        const long ix = static_cast<long>(std::floor(bx / s)),
+                   iy = static_cast<long>(std::floor(by / s));
         return ((ix + iy) & 1) ? 215.0f : 25.0f;
     };
     const cv::Size size = lens_.imageSize;

@@ -39,17 +39,21 @@ QString failsafeReasonText(FailsafeReason reason) {
         case FailsafeReason::None:
             return QCoreApplication::translate("prisca::devices::TransmitterLink", "none");
         case FailsafeReason::NoCommand:
-            return QCoreApplication::translate("prisca::devices::TransmitterLink", "no command yet");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink",
+                                               "no command yet");
         case FailsafeReason::Stale:
             return QCoreApplication::translate("prisca::devices::TransmitterLink", "stale command");
         case FailsafeReason::EmergencyStop:
             return QCoreApplication::translate("prisca::devices::TransmitterLink", "E-STOP");
         case FailsafeReason::PoseLost:
-            return QCoreApplication::translate("prisca::devices::TransmitterLink", "camera pose lost");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink",
+                                               "camera pose lost");
         case FailsafeReason::ControllerFault:
-            return QCoreApplication::translate("prisca::devices::TransmitterLink", "controller fault");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink",
+                                               "controller fault");
         case FailsafeReason::Geofence:
-            return QCoreApplication::translate("prisca::devices::TransmitterLink", "fence breached");
+            return QCoreApplication::translate("prisca::devices::TransmitterLink",
+                                               "fence breached");
     }
     return {};
 }
@@ -212,7 +216,8 @@ void TransmitterLinkWorker::start(const LinkSettings& settings) {
     rateClock_.start();
     framesAtRateMark_ = framesSent.load();
     // Never faster than the line carries (LinkCommand refuses more; others get the limit).
-    const double rate = std::min(settings_.rateHz, maxFrameRate(settings_.protocol, settings_.baud));
+    const double rate =
+        std::min(settings_.rateHz, maxFrameRate(settings_.protocol, settings_.baud));
     timer_->start(std::max(1, static_cast<int>(std::lround(1000.0 / rate))));
     emit statusChanged(status_);
 }
@@ -261,10 +266,12 @@ bool TransmitterLinkWorker::openPort() {
             // one this user may not open: which it is, in the operator's words.
             const QByteArray native = QFile::encodeName(path);
             why = ::access(native.constData(), R_OK | W_OK) == 0
-                      ? QStringLiteral("in use by another program (a second link, a terminal "
-                                       "program): close it first")
-                      : QStringLiteral("this user may not open it (add the user to the group "
-                                       "that owns it, usually dialout, and log in again)");
+                      ? QStringLiteral(
+                            "in use by another program (a second link, a terminal "
+                            "program): close it first")
+                      : QStringLiteral(
+                            "this user may not open it (add the user to the group "
+                            "that owns it, usually dialout, and log in again)");
         }
         status_.lastError = QStringLiteral("%1: %2").arg(path, why);
         return false;

@@ -58,10 +58,12 @@ PreTrialItem latencyItem(const PreTrialInputs& in) {
 PreTrialItem fenceItem(const PreTrialInputs& in, const std::vector<cv::Point2d>& points) {
     const QString label = Text::tr("Fence");
     if (in.fence.polygon.size() < 3) {
-        return item("fence", label, false,
-                    Text::tr("No fence: a car that runs away is stopped only by E-STOP and the "
-                             "lost-track guard. Draw one (the Rig tab's set-up page; prisca-cli rig --fence)."),
-                    false);
+        return item(
+            "fence", label, false,
+            Text::tr(
+                "No fence: a car that runs away is stopped only by E-STOP and the "
+                "lost-track guard. Draw one (the Rig tab's set-up page; prisca-cli rig --fence)."),
+            false);
     }
     int outside = 0;
     cv::Point2d first;
@@ -92,8 +94,9 @@ PreTrialItem fenceItem(const PreTrialInputs& in, const std::vector<cv::Point2d>&
 PreTrialItem viewItem(const PreTrialInputs& in, const std::vector<cv::Point2d>& points) {
     const QString label = Text::tr("In view");
     if (in.frameSize.empty()) {
-        return item("view", label, false,
-                    Text::tr("No frame yet: the path cannot be checked against the camera's view."));
+        return item(
+            "view", label, false,
+            Text::tr("No frame yet: the path cannot be checked against the camera's view."));
     }
     const double w = in.frameSize.width, h = in.frameSize.height;
     const auto seen = [&](const cv::Point2d& floor) {
@@ -172,21 +175,23 @@ const PreTrialItem* PreTrialCheck::find(const QString& key) const {
 }
 
 QString emergencyProblem(bool failsafeHeld) {
-    return failsafeHeld
-               ? Text::tr("The program was stopped and continued; the car went without "
-                          "commands meanwhile, so the link holds failsafe: reset E-STOP to "
-                          "release it.")
-               : Text::tr("E-STOP is latched: reset it before a trial.");
+    return failsafeHeld ? Text::tr(
+                              "The program was stopped and continued; the car went without "
+                              "commands meanwhile, so the link holds failsafe: reset E-STOP to "
+                              "release it.")
+                        : Text::tr("E-STOP is latched: reset it before a trial.");
 }
 
 QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString& label) {
     if (simulationOnly) {
-        return Text::tr("The oracle plans on copies of a simulated plant; a real car has none. "
-                        "Run it in simulation, or choose another method.");
+        return Text::tr(
+            "The oracle plans on copies of a simulated plant; a real car has none. "
+            "Run it in simulation, or choose another method.");
     }
     if (trainsOffline) {
-        return Text::tr("%1 trains offline in simulation; run it there, or choose another "
-                        "method.")
+        return Text::tr(
+                   "%1 trains offline in simulation; run it there, or choose another "
+                   "method.")
             .arg(label);
     }
     return {};
@@ -195,9 +200,9 @@ QString methodRigProblem(bool simulationOnly, bool trainsOffline, const QString&
 PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
     PreTrialCheck check;
     auto& items = check.items;
-    items.push_back(in.cameraRunning
-                        ? item("camera", Text::tr("Camera"), true, Text::tr("running"))
-                        : item("camera", Text::tr("Camera"), false, Text::tr("Start the camera first.")));
+    items.push_back(in.cameraRunning ? item("camera", Text::tr("Camera"), true, Text::tr("running"))
+                                     : item("camera", Text::tr("Camera"), false,
+                                            Text::tr("Start the camera first.")));
     items.push_back(in.carSeen ? item("car", Text::tr("Car"), true,
                                       in.virtualCamera ? Text::tr("the virtual car, put at the "
                                                                   "start by each trial")
@@ -207,8 +212,8 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
                                                "with its LEDs on.")));
     // A real camera needs its own calibration (the rig starts with the virtual rig's) and lens.
     if (in.virtualCamera) {
-        items.push_back(item("calibration", Text::tr("Calibration"), true,
-                             Text::tr("the virtual camera's")));
+        items.push_back(
+            item("calibration", Text::tr("Calibration"), true, Text::tr("the virtual camera's")));
     } else if (in.calibrationIsVirtualRigs) {
         items.push_back(item("calibration", Text::tr("Calibration"), false,
                              Text::tr("The floor calibration is the virtual rig's, not this "
@@ -235,8 +240,8 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
                                       "the edges).")));
     }
     if (!in.link.connected) {
-        items.push_back(item("link", Text::tr("Link"), false,
-                             Text::tr("Connect the transmitter link first.")));
+        items.push_back(
+            item("link", Text::tr("Link"), false, Text::tr("Connect the transmitter link first.")));
     } else if (!in.link.lastError.isEmpty()) {
         items.push_back(item("link", Text::tr("Link"), false,
                              Text::tr("The link reports an error: %1").arg(in.link.lastError)));
@@ -244,10 +249,10 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
         items.push_back(item("link", Text::tr("Link"), true, Text::tr("connected")));
     }
     items.push_back(latencyItem(in));
-    items.push_back(in.emergencyLatched
-                        ? item("estop", Text::tr("E-STOP"), false,
-                               emergencyProblem(in.failsafeHeld))
-                        : item("estop", Text::tr("E-STOP"), true, Text::tr("ready")));
+    items.push_back(
+        in.emergencyLatched
+            ? item("estop", Text::tr("E-STOP"), false, emergencyProblem(in.failsafeHeld))
+            : item("estop", Text::tr("E-STOP"), true, Text::tr("ready")));
     // The task: a slide-car's demonstration (the rig's estimator gives its state) and a method
     // that can run on a real car.
     QString task;
@@ -256,12 +261,13 @@ PreTrialCheck evaluatePreTrialCheck(const PreTrialInputs& in) {
     } else if (in.plant->name != QLatin1String("slidecar")) {
         task = Text::tr("The rig drives a slide-car: choose the slide-car as the target.");
     } else if (const QString method = methodRigProblem(in.methodSimulationOnly,
-                                                      in.methodTrainsOffline, in.methodLabel);
+                                                       in.methodTrainsOffline, in.methodLabel);
                !method.isEmpty()) {
         task = method;
     } else if (in.methodPlansThroughModel && !in.modelIdentified) {
-        task = Text::tr("%1 plans through the car's model, and none is identified yet: identify "
-                        "the car first (the Model tab; prisca-cli identify, then --model).")
+        task = Text::tr(
+                   "%1 plans through the car's model, and none is identified yet: identify "
+                   "the car first (the Model tab; prisca-cli identify, then --model).")
                    .arg(in.methodLabel);
     }
     items.push_back(task.isEmpty() ? item("task", Text::tr("Task"), true,

@@ -27,7 +27,7 @@ enum class LatencySource {
 struct PreTrialInputs {
     bool cameraRunning = false;
     bool virtualCamera = true;  ///< the virtual rig's synthetic camera (else a device or a video)
-    bool carSeen = false;  ///< the newest frame has the car in it (the virtual car: it exists)
+    bool carSeen = false;       ///< the newest frame has the car in it (the virtual car: it exists)
     cv::Size frameSize;         ///< the newest frame's [px]; empty before the first
     devices::FloorCalibration calibration;
     bool calibrationIsVirtualRigs = true;  ///< still the synthetic camera's calibration
@@ -52,12 +52,12 @@ struct PreTrialInputs {
 
 /// One line of the check.
 struct PreTrialItem {
-    QString key;     ///< "camera", "car", "calibration", "lens", "link", "latency", "estop",
-                     ///< "task", "fence", "view": for tests and the CLI's JSON
-    QString label;   ///< what it is, in a word or two ("Camera")
+    QString key;    ///< "camera", "car", "calibration", "lens", "link", "latency", "estop",
+                    ///< "task", "fence", "view": for tests and the CLI's JSON
+    QString label;  ///< what it is, in a word or two ("Camera")
     bool ok = false;
     bool blocking = true;  ///< a failed blocking item keeps a trial from starting
-    QString detail;  ///< when ok: what was found; else what is missing and what to do
+    QString detail;        ///< when ok: what was found; else what is missing and what to do
 };
 
 /// The rig's readiness for a trial: every item, and whether a trial may start.

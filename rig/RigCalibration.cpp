@@ -72,9 +72,10 @@ QString RigCalibration::floorProblem(bool virtualCamera) const {
         session_.calibration().toJson() != devices::syntheticCeilingCamera().toJson()) {
         return {};
     }
-    return tr("The floor calibration is the virtual rig's, not this camera's: calibrate this "
-              "camera (Calibrate, then click four or more floor points) or open its "
-              "calibration before driving or a trial.");
+    return tr(
+        "The floor calibration is the virtual rig's, not this camera's: calibrate this "
+        "camera (Calibrate, then click four or more floor points) or open its "
+        "calibration before driving or a trial.");
 }
 
 SetupStep RigCalibration::captureBoardView(const cv::Mat& frame) {
@@ -232,8 +233,8 @@ devices::Geofence RigCalibration::fenceInForce(QString* summary) const {
         *summary = tr("Fence: %1 corners; a car outside it ends the trial in failsafe.")
                        .arg(fenceCorners_.size());
     } else {
-        *summary = tr("Fence: none (%1 corner(s) clicked; 3 or more make one).")
-                       .arg(fenceCorners_.size());
+        *summary =
+            tr("Fence: none (%1 corner(s) clicked; 3 or more make one).").arg(fenceCorners_.size());
     }
     return fence;
 }

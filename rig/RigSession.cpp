@@ -30,14 +30,14 @@ constexpr int kShutdownWaitMs = 3000;
 
 /// What the camera thread and the commands share (under mutex_).
 struct RigSession::Loop {
-    devices::FloorCalibration calibration;  ///< the tracker's, outside trials
-    devices::Geofence fence;                ///< every trial's (RigLoop::setGeofence)
+    devices::FloorCalibration calibration;       ///< the tracker's, outside trials
+    devices::Geofence fence;                     ///< every trial's (RigLoop::setGeofence)
     std::optional<devices::LatencyProbe> probe;  ///< a latency measurement under way
     std::optional<double> loopLatency;           ///< measured [s], for the compensation
     LatencySource latencySource = LatencySource::Assumed;
-    QString bundleParent;                        ///< where trial bundles go (empty: none)
-    double bundleFps = 10.0;                     ///< their video's frame rate
-    double lastBundleFrameT = -1.0;              ///< the trial's newest frame stored [s]
+    QString bundleParent;            ///< where trial bundles go (empty: none)
+    double bundleFps = 10.0;         ///< their video's frame rate
+    double lastBundleFrameT = -1.0;  ///< the trial's newest frame stored [s]
     devices::LedTracker tracker;
     // The closed loop, kept from trial to trial for one method.
     std::unique_ptr<devices::RigLoop> loop;
@@ -191,9 +191,8 @@ bool RigSession::startCamera(const CameraRequest& request, QString* error) {
             break;
     }
     cameraSource_ = request.source;
-    injectedCameraDelay_ = request.source == CameraRequest::Source::Virtual
-                               ? request.virtualCameraDelay
-                               : 0.0;
+    injectedCameraDelay_ =
+        request.source == CameraRequest::Source::Virtual ? request.virtualCameraDelay : 0.0;
     frameWidth_.store(0);
     frameHeight_.store(0);
     camera_.start(std::shared_ptr<devices::CameraSource>(std::move(source)));
@@ -394,7 +393,8 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
                                       episode.poseFilterPredicts);
             } catch (const std::exception& e) {
                 l.loop.reset();
-                return fail(tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));
+                return fail(
+                    tr("%1 could not be set up: %2").arg(method, QString::fromUtf8(e.what())));
             }
         }
         l.poseFilter = poseFilter;
@@ -407,26 +407,30 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     link_.clearFault();  // the last trial's fault or fence breach ended that trial, not this one
     l.lastBundleFrameT = -1.0;
     if (!l.bundleParent.isEmpty()) {
-        QJsonObject header{{"kind", QStringLiteral("rig")},
-                           {"method", method},
-                           {"plant", setup.profile().info.name},
-                           {"trial", l.trials + 1},
-                           {"seed", static_cast<double>(request.virtualSeed)},
-                           {"started", QDateTime::currentDateTime().toString(Qt::ISODate)},
-                           {"calibration", QJsonDocument::fromJson(l.calibration.toJson()).object()},
-                           {"fence", l.fence.toJson()},
-                           {"videoFps", l.bundleFps}};
+        QJsonObject header{
+            {"kind", QStringLiteral("rig")},
+            {"method", method},
+            {"plant", setup.profile().info.name},
+            {"trial", l.trials + 1},
+            {"seed", static_cast<double>(request.virtualSeed)},
+            {"started", QDateTime::currentDateTime().toString(Qt::ISODate)},
+            {"calibration", QJsonDocument::fromJson(l.calibration.toJson()).object()},
+            {"fence", l.fence.toJson()},
+            {"videoFps", l.bundleFps}};
         if (!request.session.isEmpty()) {
             header.insert("session", request.session);
         }
         if (l.loopLatency) {
             header.insert("loopLatencyMs", *l.loopLatency * 1000.0);
         }
-        const QString folder = QDir(l.bundleParent).filePath(
-            QStringLiteral("trial-%1-%2-%3")
-                .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")))
-                .arg(l.trials + 1)
-                .arg(QCoreApplication::applicationPid()));  // two rigs on one folder never collide
+        const QString folder =
+            QDir(l.bundleParent)
+                .filePath(QStringLiteral("trial-%1-%2-%3")
+                              .arg(QDateTime::currentDateTime().toString(
+                                  QStringLiteral("yyyyMMdd-hhmmss")))
+                              .arg(l.trials + 1)
+                              .arg(QCoreApplication::applicationPid()));  // two rigs on one folder
+                                                                          // never collide
         onWorker([this, folder, header, demo = setup.task().demonstration] {
             bundle_ = std::make_unique<TrialBundleWriter>();
             QString error;
@@ -594,7 +598,8 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                 sample.failsafe = step.fault || !pose;
                 cv::Mat image;
                 if (l.bundleFps > 0.0 &&
-                    (l.lastBundleFrameT < 0.0 || sample.t - l.lastBundleFrameT >= 1.0 / l.bundleFps - 1e-6)) {
+                    (l.lastBundleFrameT < 0.0 ||
+                     sample.t - l.lastBundleFrameT >= 1.0 / l.bundleFps - 1e-6)) {
                     l.lastBundleFrameT = sample.t;
                     image = frame.image.clone();
                 }

@@ -8,17 +8,17 @@
 #include "devices/FloorCalibration.h"
 #include "devices/Geofence.h"
 #include "devices/LatencyProbe.h"
-#include "rig/TrialBundle.h"
 #include "devices/TransmitterLink.h"
 #include "rig/PreTrialCheck.h"
+#include "rig/TrialBundle.h"
+#include "sim/MethodCatalog.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
-#include "sim/MethodCatalog.h"
 #include "sim/RunSetup.h"
 #include "sim/TrialMetrics.h"
 
-#include <QMetaType>
 #include <QJsonObject>
+#include <QMetaType>
 #include <QObject>
 #include <QString>
 #include <QThread>
@@ -214,7 +214,8 @@ class RigSession : public QObject {
     // Trial bundles.
     /// Every trial from now on is saved as a bundle (rig::TrialBundleWriter) in a new folder
     /// under `parent` (trial-<date>-<time>-<n>-<process id>), with the camera's frames at
-    /// `videoFps` (0: no video); empty `parent`: no bundles. The folder of the newest is bundleSaved()'s.
+    /// `videoFps` (0: no video); empty `parent`: no bundles. The folder of the newest is
+    /// bundleSaved()'s.
     void setBundles(const QString& parent, double videoFps);
     QString bundleParent() const;
 
@@ -253,9 +254,9 @@ class RigSession : public QObject {
     devices::LinkStatus linkStatus_;
     QThread workerThread_;
     QObject* worker_;  ///< lives on workerThread_: the recorder's disk writes and the scoring
-    std::unique_ptr<Recorder> recorder_;  ///< touched on the worker thread only
+    std::unique_ptr<Recorder> recorder_;         ///< touched on the worker thread only
     std::unique_ptr<TrialBundleWriter> bundle_;  ///< the trial's bundle; worker thread only
-    std::atomic<double> writtenSeconds_{-1.0};  ///< the recorder's newest sample [s]
+    std::atomic<double> writtenSeconds_{-1.0};   ///< the recorder's newest sample [s]
 
     /// Shared by the camera thread and commands; held only for in-memory work, never disk I/O.
     mutable std::mutex mutex_;

@@ -225,8 +225,9 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
     const int needed =
         info.pose ? 1 + std::max({info.pose->x, info.pose->y, info.pose->heading}) : 1;
     if (demo->length() == 0 || demo->states.cols() < needed) {
-        *error = QStringLiteral("%1/demonstration.csv: %2 samples of %3 state columns; a %4 "
-                                "trial's demonstration has samples of at least %5")
+        *error = QStringLiteral(
+                     "%1/demonstration.csv: %2 samples of %3 state columns; a %4 "
+                     "trial's demonstration has samples of at least %5")
                      .arg(folder)
                      .arg(demo->length())
                      .arg(demo->states.cols())
@@ -296,9 +297,9 @@ std::optional<TrialBundle> TrialBundle::load(const QString& folder, QString* err
         sample.failsafe = f.last() == "1";
         b.samples.push_back(std::move(sample));
     }
-    for (const QString& name : QDir(dir.filePath("frames"))
-                                   .entryList({"*.jpg"}, QDir::Files | QDir::NoSymLinks,
-                                              QDir::Name)) {
+    for (const QString& name :
+         QDir(dir.filePath("frames"))
+             .entryList({"*.jpg"}, QDir::Files | QDir::NoSymLinks, QDir::Name)) {
         b.frames.emplace_back(QFileInfo(name).baseName().toLongLong(),
                               dir.filePath("frames/" + name));
     }

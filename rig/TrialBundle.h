@@ -24,10 +24,10 @@ struct BundleSample {
     double t = 0.0;
     long long frame = -1;  ///< camera frame (rig trials), -1 in simulation
     bool found = false;    ///< a pose was tracked (always in simulation: the true state)
-    double x = 0.0, y = 0.0, psi = 0.0;          ///< tracked (rig) or true (simulation) pose
-    std::vector<double> state;                   ///< the observation the controller got
-    std::vector<double> action;                  ///< its command (empty: none, failsafe)
-    bool failsafe = false;                       ///< the link (or the loop) was in failsafe
+    double x = 0.0, y = 0.0, psi = 0.0;  ///< tracked (rig) or true (simulation) pose
+    std::vector<double> state;           ///< the observation the controller got
+    std::vector<double> action;          ///< its command (empty: none, failsafe)
+    bool failsafe = false;               ///< the link (or the loop) was in failsafe
 };
 
 /// A trial bundle: one folder with everything needed to look at a trial again.

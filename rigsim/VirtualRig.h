@@ -1,6 +1,5 @@
 #pragma once
 
-#include "rigsim/VirtualCar.h"
 #include "core/Controller.h"
 #include "core/Demonstration.h"
 #include "devices/ChannelMap.h"
@@ -9,13 +8,14 @@
 #include "devices/RcProtocols.h"
 #include "devices/SyntheticCamera.h"
 #include "devices/TransmitterLink.h"
+#include "rigsim/VirtualCar.h"
 #include "sim/Plant.h"
 
 #include <QString>
 
 #include <functional>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace prisca::devices {

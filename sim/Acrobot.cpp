@@ -7,8 +7,8 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace prisca::sim {

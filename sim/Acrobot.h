@@ -39,10 +39,10 @@ struct AcrobotParameters {
     double restEnergy = 1e-3;
 };
 
-/// A two-link acrobot swinging in a vertical plane (docs/architecture.md "Plants"), simulated with Box2D: a
-/// static ground body, link 1 pinned to it at the origin (the shoulder) and link 2 pinned to the
-/// end of link 1 (the elbow), each with b2RevoluteJoints, masses and inertias set exactly, gravity
-/// (0, -g), and no collision between the links. Must agree with AcrobotEquations.
+/// A two-link acrobot swinging in a vertical plane (docs/architecture.md "Plants"), simulated with
+/// Box2D: a static ground body, link 1 pinned to it at the origin (the shoulder) and link 2 pinned
+/// to the end of link 1 (the elbow), each with b2RevoluteJoints, masses and inertias set exactly,
+/// gravity (0, -g), and no collision between the links. Must agree with AcrobotEquations.
 ///
 /// State (n = 4): theta1, theta2 [rad], dtheta1, dtheta2 [rad/s] in AcrobotEquations' convention
 /// (theta1 from the downward vertical, theta2 relative to link 1, counter-clockwise positive);

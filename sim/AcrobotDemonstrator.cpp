@@ -44,7 +44,7 @@ core::Demonstration AcrobotDemonstrator::record(std::uint64_t seed,
 core::Demonstration AcrobotDemonstrator::record(std::uint64_t seed, const Script& script,
                                                 const SimulationTiming& timing,
                                                 const AcrobotParameters& arm,
-    const Perturbation& conditions) {
+                                                const Perturbation& conditions) {
     Acrobot plant(arm, timing);
     plant.reset(seed, conditions);
     DemonstrationRecorder recorder(plant.info(), timing.controlPeriod);

@@ -8,10 +8,10 @@
 
 namespace prisca::sim {
 
-/// A scripted person swinging the simulated acrobot (docs/architecture.md "scripted demonstrator"). They
-/// have a smooth swing in mind: the shoulder swings with an amplitude that grows from 0 to about
-/// 50 degrees over the first 5.5 s and is then held, the elbow counter-swings a little behind it
-/// (aimed at 35 degrees, about 25 reached), near the arm's slow natural period. They push each
+/// A scripted person swinging the simulated acrobot (docs/architecture.md "scripted demonstrator").
+/// They have a smooth swing in mind: the shoulder swings with an amplitude that grows from 0 to
+/// about 50 degrees over the first 5.5 s and is then held, the elbow counter-swings a little behind
+/// it (aimed at 35 degrees, about 25 reached), near the arm's slow natural period. They push each
 /// joint towards that swing with a soft PD-like torque (they know nothing of the dynamics), and
 /// their hand adds a small, slowly wandering torque jitter that differs with every seed. The
 /// torques stay within the plant's limits (the recorded action is the torque commanded, already

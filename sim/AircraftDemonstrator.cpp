@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 #include <random>
+#include <stdexcept>
 
 namespace prisca::sim {
 
@@ -42,7 +42,7 @@ enum class Phase { Straight, Turn, FinalStraight };
 core::Demonstration AircraftDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,
                                                  const PlanarAircraftParameters& parameters,
-    const Perturbation& conditions) {
+                                                 const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;

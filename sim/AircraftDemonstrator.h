@@ -9,9 +9,9 @@
 
 namespace prisca::sim {
 
-/// A scripted pilot who flies the planar aircraft through an S-turn once (docs/architecture.md "scripted
-/// demonstrator"; the paper's desired UAV trajectory, Fig. 4): a straight along +x, a left turn
-/// of about 180 deg, a straight back along -x, a right turn of about 180 deg, and a final
+/// A scripted pilot who flies the planar aircraft through an S-turn once (docs/architecture.md
+/// "scripted demonstrator"; the paper's desired UAV trajectory, Fig. 4): a straight along +x, a
+/// left turn of about 180 deg, a straight back along -x, a right turn of about 180 deg, and a final
 /// straight along +x again; about 26 s at the control rate in still air (Perturbation::none()).
 /// The rudder is moved in and out with smooth hand motions and held through each turn; the pilot
 /// eases it out a little before the new heading and then holds that heading with small

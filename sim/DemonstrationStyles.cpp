@@ -234,7 +234,8 @@ StyleSet slideCarStyles() {
             [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
                const RecordingConditions& conditions) {
                 return recordStyle<SlideCarDemonstrator>(carStyles(), QStringLiteral("slidecar"),
-                                                         style, seed, timing, conditions, &slideCarParameters);
+                                                         style, seed, timing, conditions,
+                                                         &slideCarParameters);
             }};
 }
 
@@ -243,7 +244,8 @@ StyleSet acrobotStyles() {
             [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
                const RecordingConditions& conditions) {
                 return recordStyle<AcrobotDemonstrator>(armStyles(), QStringLiteral("acrobot"),
-                                                        style, seed, timing, conditions, &acrobotParameters);
+                                                        style, seed, timing, conditions,
+                                                        &acrobotParameters);
             }};
 }
 
@@ -252,7 +254,8 @@ StyleSet aircraftStyles() {
             [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
                const RecordingConditions& conditions) {
                 return recordStyle<AircraftDemonstrator>(pilotStyles(), QStringLiteral("aircraft"),
-                                                         style, seed, timing, conditions, &aircraftParameters);
+                                                         style, seed, timing, conditions,
+                                                         &aircraftParameters);
             }};
 }
 

@@ -65,7 +65,7 @@ const std::vector<Style>& styles() {
 core::Demonstration DiffDriveDemonstrator::record(std::uint64_t seed, const Script& script,
                                                   const SimulationTiming& timing,
                                                   const DiffDriveParameters& parameters,
-    const Perturbation& conditions) {
+                                                  const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;

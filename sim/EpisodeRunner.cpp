@@ -106,9 +106,9 @@ const StepRecord& EpisodeStepper::step() {
         last_.observation = filter_->step(last_.observation, sensor_.lastDropped());
         if (!settings_.poseFilterPredicts) {
             // The estimate of the measurement's own time; the controller compensates the latency.
-            last_.observation = filter_->predictTo(
-                static_cast<double>(k_ - settings_.measurement.latencySteps) *
-                plant_.timing().controlPeriod);
+            last_.observation =
+                filter_->predictTo(static_cast<double>(k_ - settings_.measurement.latencySteps) *
+                                   plant_.timing().controlPeriod);
         }
     }
     if (!guard_.tripped()) {

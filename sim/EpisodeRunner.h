@@ -47,7 +47,7 @@ struct EpisodeSettings {
     /// ends in failsafe: zero action (throttle neutral, steering centred) for the rest of it,
     /// the controller no longer stepped (core::LostTrackGuard). 0: never.
     double lostTrackDistance = 0.0;
-    bool recordSteps = true;                            ///< keep a StepRecord per control step
+    bool recordSteps = true;  ///< keep a StepRecord per control step
 
     /// The latency the controller compensates [control steps]: the sensor's, if compensated
     /// and no pose filter has already predicted the observation to now.
@@ -97,9 +97,9 @@ struct EpisodeResult {
     /// CPU time the controller took over the trial [s] (its thread's clock, for reports only:
     /// nothing in the trial depends on it).
     double controllerSeconds = 0.0;
-    bool cancelled = false;         ///< stopped by the cancel predicate
-    bool lostTrack = false;         ///< ended in failsafe: the robot left the demonstration
-    QString controllerNote;         ///< the controller's word on the trial (Controller::trialNote)
+    bool cancelled = false;  ///< stopped by the cancel predicate
+    bool lostTrack = false;  ///< ended in failsafe: the robot left the demonstration
+    QString controllerNote;  ///< the controller's word on the trial (Controller::trialNote)
 };
 
 /// One trial taken a control step at a time, for callers that pace it themselves (the

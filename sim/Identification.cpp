@@ -199,9 +199,9 @@ double objective(unsigned n, const double* x, double* gradient, void* data) {
     const double c = context->problem->cost(context->problem->valuesAt(u));
     if (!context->cancelled && context->progress && *context->progress &&
         context->problem->evaluations() % 20 == 0 &&
-        !(*context->progress)(context->before + context->problem->evaluations(),
-                              std::max(context->budget,
-                                       context->before + context->problem->evaluations()))) {
+        !(*context->progress)(
+            context->before + context->problem->evaluations(),
+            std::max(context->budget, context->before + context->problem->evaluations()))) {
         context->cancelled = true;
     }
     if (context->cancelled && context->search) {
@@ -311,7 +311,8 @@ PlantParameters measuredPrior(const PlantParameters& car) {
     const Plan plan = planFor(car.plant);
     const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(car.plant);
     for (size_t j = 0; j < specs.size() && j < car.values.size(); ++j) {
-        const bool fitted = plan.continuous.contains(specs[j].key) || plan.delays.contains(specs[j].key);
+        const bool fitted =
+            plan.continuous.contains(specs[j].key) || plan.delays.contains(specs[j].key);
         if (!fitted && !specs[j].unmodelled) {
             prior.values[j] = car.values[j];
         }
@@ -653,11 +654,11 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             pass == 0 ? settings.evaluationsPerStart : settings.evaluationsPerStart / 2;
         // This pass, and (while passes are left) one more on what it leaves undetermined.
         context.before = evaluations;
-        context.budget = evaluations + fitRuns(budget, static_cast<int>(plan.delays.size())) +
-                         (pass + 1 < std::max(1, settings.passes)
-                              ? fitRuns(settings.evaluationsPerStart / 2,
-                                        static_cast<int>(plan.delays.size()))
-                              : 0);
+        context.budget =
+            evaluations + fitRuns(budget, static_cast<int>(plan.delays.size())) +
+            (pass + 1 < std::max(1, settings.passes)
+                 ? fitRuns(settings.evaluationsPerStart / 2, static_cast<int>(plan.delays.size()))
+                 : 0);
         FitOutcome outcome;
         const bool done = fitOnce(problem, context, settings, physicsStep, budget, &outcome);
         evaluations += problem.evaluations();

@@ -63,10 +63,9 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
     std::vector<RunSetup> setups;
     for (const QString& method : settings.methods) {
         if (!isCurveMethod(method)) {
-            throw std::invalid_argument(
-                QStringLiteral("'%1' has no learning curve (one of: %2)")
-                    .arg(method, curveMethods().join(QLatin1Char(' ')))
-                    .toStdString());
+            throw std::invalid_argument(QStringLiteral("'%1' has no learning curve (one of: %2)")
+                                            .arg(method, curveMethods().join(QLatin1Char(' ')))
+                                            .toStdString());
         }
         setups.emplace_back(task, method, settings.run);
     }
@@ -86,8 +85,8 @@ std::vector<MethodCurves> runLearningCurves(const LearningCurveSettings& setting
         if (setup.method().training == MethodSpec::Training::Pegasus) {
             // Fixed scenarios for this run; every rollout is charged to the budget.
             auto rollout = [&](const Eigen::MatrixXd& theta, int scenario) {
-                auto policy = MethodCatalog::create(method, profile, demonstration, fittedB,
-                                                    &theta);
+                auto policy =
+                    MethodCatalog::create(method, profile, demonstration, fittedB, &theta);
                 EpisodeSettings episode = setup.episode();
                 episode.seed = mixSeed(runSeed, 1000 + scenario);
                 episode.perturbation.trialIndex = scenario;
@@ -200,13 +199,13 @@ LearningCurveProtocolResult runLearningCurveProtocol(
             if (cellStarted) {
                 cellStarted(result.cells + 1, cellCount, settings.styles[s], set);
             }
-            const Task task = makeTask(
-                profile,
-                std::make_shared<core::Demonstration>(DemonstrationStyles::record(
-                    plant, settings.styles[s], set, {},
-                    demonstrationConditions(settings.curves.run, profile,
-                                            settings.plantParameters.get(), set))),
-                settings.fit, settings.plantParameters);
+            const Task task =
+                makeTask(profile,
+                         std::make_shared<core::Demonstration>(DemonstrationStyles::record(
+                             plant, settings.styles[s], set, {},
+                             demonstrationConditions(settings.curves.run, profile,
+                                                     settings.plantParameters.get(), set))),
+                         settings.fit, settings.plantParameters);
             LearningCurveSettings cell = settings.curves;
             cell.run.seed = set;
             const std::vector<MethodCurves> curves = runLearningCurves(cell, task);

@@ -66,8 +66,8 @@ struct LearningCurveProtocolSettings {
 
 /// What the protocol produced: every cell's runs pooled per method, and per style.
 struct LearningCurveProtocolResult {
-    std::vector<MethodCurves> pooled;                   ///< per method, every cell's runs
-    std::vector<std::vector<MethodCurves>> perStyle;    ///< per style (settings order)
+    std::vector<MethodCurves> pooled;                 ///< per method, every cell's runs
+    std::vector<std::vector<MethodCurves>> perStyle;  ///< per style (settings order)
     long long shortestDemonstration = 0;  ///< [samples]: the grid unit of summarizeCurves
     double dt = 0.0;                      ///< the first cell's control period [s]
     int cells = 0;                        ///< cells that ran

@@ -100,9 +100,10 @@ std::vector<const MethodParameter*> MethodCatalog::parameters() {
     std::vector<const MethodParameter*> found;
     for (const MethodSpec& spec : all()) {
         for (const MethodParameter& p : spec.parameters) {
-            const bool known = std::any_of(found.begin(), found.end(), [&](const MethodParameter* q) {
-                return QLatin1String(q->name) == QLatin1String(p.name);
-            });
+            const bool known =
+                std::any_of(found.begin(), found.end(), [&](const MethodParameter* q) {
+                    return QLatin1String(q->name) == QLatin1String(p.name);
+                });
             if (!known) {
                 found.push_back(&p);
             }

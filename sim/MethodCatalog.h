@@ -36,7 +36,7 @@ struct MethodSpec {
     const char* summary = "";   ///< one line for --help
     bool learnsOnline = false;  ///< learns trial after trial (warm-started in training)
     Training training = Training::None;
-    bool inTable1 = true;         ///< has a row in Table I
+    bool inTable1 = true;  ///< has a row in Table I
     /// Runs in a Table I no one chose the methods of (false: only when named, as mpc, whose
     /// identification takes seconds per cell and which runs on the slide-car alone).
     bool inDefaultTable1 = true;

@@ -93,8 +93,8 @@ QString MethodParameter::check(const Eigen::VectorXd& value, int channels) const
                 ok = ok && (v == 0.0 || v == 1.0);
                 break;
             case Kind::Choice:
-                ok = ok && v == std::round(v) && v >= 0.0 &&
-                     v < static_cast<double>(choices.size());
+                ok =
+                    ok && v == std::round(v) && v >= 0.0 && v < static_cast<double>(choices.size());
                 break;
             case Kind::Integer:
                 ok = ok && v == std::round(v) && v >= minimum && v <= maximum;
@@ -128,8 +128,8 @@ std::optional<Eigen::VectorXd> MethodParameter::parse(const QString& text, int c
         if (t == QLatin1String("off") || t == QLatin1String("0") || t == QLatin1String("false")) {
             return Eigen::VectorXd::Zero(1);
         }
-        return fail(QStringLiteral("%1: '%2' is not one of %3")
-                        .arg(QString::fromLatin1(name), t, range()));
+        return fail(
+            QStringLiteral("%1: '%2' is not one of %3").arg(QString::fromLatin1(name), t, range()));
     }
     if (kind == Kind::Choice) {
         for (size_t i = 0; i < choices.size(); ++i) {
@@ -137,8 +137,8 @@ std::optional<Eigen::VectorXd> MethodParameter::parse(const QString& text, int c
                 return Eigen::VectorXd::Constant(1, static_cast<double>(i));
             }
         }
-        return fail(QStringLiteral("%1: '%2' is not one of %3")
-                        .arg(QString::fromLatin1(name), t, range()));
+        return fail(
+            QStringLiteral("%1: '%2' is not one of %3").arg(QString::fromLatin1(name), t, range()));
     }
     const QStringList parts = t.split(QLatin1Char(','));
     // One number for every control is accepted for a per-channel parameter too.
@@ -149,8 +149,8 @@ std::optional<Eigen::VectorXd> MethodParameter::parse(const QString& text, int c
         const QString part = parts[parts.size() == 1 ? 0 : i].trimmed();
         value[i] = part.toDouble(&ok);
         if (!ok) {
-            return fail(QStringLiteral("%1: '%2' is not a number")
-                            .arg(QString::fromLatin1(name), part));
+            return fail(
+                QStringLiteral("%1: '%2' is not a number").arg(QString::fromLatin1(name), part));
         }
     }
     if (const QString why = check(value, channels); !why.isEmpty()) {

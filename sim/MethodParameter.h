@@ -29,9 +29,9 @@ struct MethodParameter {
     const char* label = "";  ///< the Controller panel's label, e.g. "Horizon H"
     const char* unit = "";   ///< of the value, e.g. "steps", "Hz"; empty: none
     Kind kind = Kind::Real;
-    double minimum = 0.0;  ///< smallest value allowed
-    double maximum = 0.0;  ///< largest value allowed
-    int decimals = 3;      ///< shown in the panel (Real)
+    double minimum = 0.0;              ///< smallest value allowed
+    double maximum = 0.0;              ///< largest value allowed
+    int decimals = 3;                  ///< shown in the panel (Real)
     std::vector<const char*> choices;  ///< Choice: the names, in value order
     /// One value per control (the action channels), e.g. the PD's Kp; else one value.
     bool perChannel = false;
@@ -56,8 +56,7 @@ struct MethodParameter {
     QString format(const Eigen::VectorXd& value) const;
     /// Parses a value as format() writes it, for a plant with `channels` controls; nullopt and
     /// *error (naming the value and the allowed range or choices) when it is not one.
-    std::optional<Eigen::VectorXd> parse(const QString& text, int channels,
-                                         QString* error) const;
+    std::optional<Eigen::VectorXd> parse(const QString& text, int channels, QString* error) const;
     /// Empty when `value` is allowed (its size, range and kind); else why not.
     QString check(const Eigen::VectorXd& value, int channels) const;
     /// The allowed values in words: "1 .. 200", "on | off", "one-step | closed-loop".

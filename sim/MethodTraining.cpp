@@ -39,13 +39,14 @@ core::PdParameters selectPdGains(const RunSetup& setup, const TrainingHooks& hoo
         profile.pd.kp *= c.kp;
         profile.pd.kd *= c.kd;
         auto plant = setup.makePlant();
-        auto controller = MethodCatalog::create(QStringLiteral("pd"), profile, task.demonstration,
-                                                task.fit.b);
+        auto controller =
+            MethodCatalog::create(QStringLiteral("pd"), profile, task.demonstration, task.fit.b);
         EpisodeSettings episode = setup.trainingTrial(index % seeds);
         episode.resetMode = core::ResetMode::Cold;
         episode.recordSteps = false;
         const EpisodeResult result = runEpisode(*plant, *controller, episode, hooks.cancelled);
-        return tuningScore(plant->info(), summarizeTrial(plant->info(), *task.demonstration, result));
+        return tuningScore(plant->info(),
+                           summarizeTrial(plant->info(), *task.demonstration, result));
     };
     const std::vector<double> scores = runParallel<double>(
         static_cast<int>(grid.size()) * seeds, setup.settings().threads, job, hooks.cancelled,

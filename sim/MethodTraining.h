@@ -46,5 +46,4 @@ PegasusTraining trainPegasus(const RunSetup& setup, int iterations,
 /// evaluation seeds (mixSeed(seed, i)).
 std::vector<std::uint64_t> trainingSeeds(std::uint64_t seed, int count);
 
-
 }  // namespace prisca::sim

@@ -227,7 +227,6 @@ MethodTuning aircraftTuning(const PlantInfo& info) {
     return p;
 }
 
-
 MethodTuning MethodTuning::forPlant(const PlantInfo& info) {
     const PlantEntry* entry = PlantCatalog::find(info.name);
     if (!entry || !entry->profile) {
@@ -271,13 +270,11 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
     if (info.pose && info.bodyVelocity) {
         // Ready for a run that turns the pose filter on: the sensor's noise and latency, and
         // velocities and accelerations as quick as the demonstration's sharpest changes.
-        episode.poseFilterParameters =
-            poseFilterFor(info, episode.measurement, demonstration.dt);
+        episode.poseFilterParameters = poseFilterFor(info, episode.measurement, demonstration.dt);
         if (demonstration.length() >= 3 &&
             demonstration.stateDimension() == info.stateDimension()) {
-            episode.poseFilterParameters.accelerationDensity =
-                core::accelerationDensityFromStates(demonstration.states, *info.bodyVelocity,
-                                                    demonstration.dt);
+            episode.poseFilterParameters.accelerationDensity = core::accelerationDensityFromStates(
+                demonstration.states, *info.bodyVelocity, demonstration.dt);
         }
         if (demonstration.length() >= 4 &&
             demonstration.stateDimension() == info.stateDimension()) {

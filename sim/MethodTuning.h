@@ -26,11 +26,11 @@ namespace prisca::sim {
 /// tuning. The app, the CLI and the experiments all start from here, so the baselines share
 /// the plant, features and limits with PRISCA (docs/architecture.md "Baselines"). Plain data.
 struct MethodTuning {
-    PlantInfo info;                     ///< the plant
-    core::IntuitiveMapping mapping;     ///< B~ (m x n signs)
-    core::FeatureMap features;          ///< phi_l per channel
-    Eigen::VectorXd matchingWeights;    ///< L1 weights of the least-state-deviation match (n)
-    int matchingWindow = 40;            ///< forward search window [samples]
+    PlantInfo info;                   ///< the plant
+    core::IntuitiveMapping mapping;   ///< B~ (m x n signs)
+    core::FeatureMap features;        ///< phi_l per channel
+    Eigen::VectorXd matchingWeights;  ///< L1 weights of the least-state-deviation match (n)
+    int matchingWindow = 40;          ///< forward search window [samples]
     /// The least-state-deviation reference falls at most this far behind the demonstration's
     /// clock [samples] (2 s at 40 Hz): a car standing just ahead of the start would otherwise
     /// wait for a reference that waits for it. Long enough never to touch a moving car's timing
@@ -49,7 +49,7 @@ struct MethodTuning {
     /// Each part of a perturbation level (initial state, parameters, actuator noise) as a share
     /// of the level: all 1 in every table; an ablation sets one part at a time.
     Perturbation perturbationShares = Perturbation::realistic();
-    core::PriscaParameters prisca;      ///< PRISCA defaults
+    core::PriscaParameters prisca;  ///< PRISCA defaults
     /// PRISCA starts from the profile's PD law (pd, with priscaPriorHorizon) as its prior
     /// (PriscaParameters::prior) and learns a correction to it.
     bool priscaFromPd = false;
@@ -118,14 +118,14 @@ struct MethodTuning {
     /// best: the fit's latency shift (ActionMappingFitOptions::latency) with the highest mean
     /// R^2 over the states it models, searched over a quarter of a second.
     int fittedDeadTime(const core::Demonstration& demonstration) const;
-    core::PgsdParameters pgsd;        ///< PGSD defaults
-    core::PdParameters pd;            ///< PD gains (error combination, Kp, Kd; horizon 0)
-    int pdHorizon = 10;               ///< H for PD+H and PD+H+LSD [steps]
+    core::PgsdParameters pgsd;  ///< PGSD defaults
+    core::PdParameters pd;      ///< PD gains (error combination, Kp, Kd; horizon 0)
+    int pdHorizon = 10;         ///< H for PD+H and PD+H+LSD [steps]
     /// ILC's learning (its error combination is the PD's, its feedback the PD's gains scaled).
-    double ilcLearningScale = 0.3;  ///< learning gain Gamma = this x the PD's Kp, per control
-    int ilcLead = 2;                ///< the error this many steps later corrects u_k [steps]
-    double ilcCutoff = 2.0;         ///< Q filter, zero-phase low-pass cutoff [Hz]
-    double ilcFeedbackScale = 1.0;  ///< the PD gains in ILC's loop, scaled by this
+    double ilcLearningScale = 0.3;    ///< learning gain Gamma = this x the PD's Kp, per control
+    int ilcLead = 2;                  ///< the error this many steps later corrects u_k [steps]
+    double ilcCutoff = 2.0;           ///< Q filter, zero-phase low-pass cutoff [Hz]
+    double ilcFeedbackScale = 1.0;    ///< the PD gains in ILC's loop, scaled by this
     core::PegasusParameters pegasus;  ///< PEGASUS defaults
     /// The oracle's planner (the limit every accuracy figure is read against); its trial
     /// length is filled in from the demonstration when it is created.
@@ -139,7 +139,7 @@ struct MethodTuning {
     /// (the car's measured mass and geometry, the rest the catalog's; null: the catalog car).
     std::shared_ptr<const PlantParameters> mpcModel;
     std::shared_ptr<const PlantParameters> mpcPrior;
-    int pegasusIterations = 10;       ///< gradient steps PEGASUS takes before it is evaluated
+    int pegasusIterations = 10;  ///< gradient steps PEGASUS takes before it is evaluated
     /// The values of parameters a method declares with no field here (MethodParameter without
     /// get/set), by parameter name; forPlant() fills in each one's per-plant default.
     std::map<QString, Eigen::VectorXd> methodValues;

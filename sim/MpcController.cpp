@@ -51,11 +51,13 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
         throw std::invalid_argument("MpcController: a fallback law is needed");
     }
     if (!problem_.deviation.pose) {
-        throw std::invalid_argument("MpcController: model-predictive parking needs a planar vehicle");
+        throw std::invalid_argument(
+            "MpcController: model-predictive parking needs a planar vehicle");
     }
     if (parameters_.replanEvery < 1 || parameters_.rollouts < 2 || parameters_.maxKnots < 2 ||
-        parameters_.substeps < 1 || !(parameters_.tubeSeconds > 0.0) || parameters_.tubeStrikes < 1 ||
-        !(parameters_.tubePosition > 0.0) || !(parameters_.tubeHeading > 0.0)) {
+        parameters_.substeps < 1 || !(parameters_.tubeSeconds > 0.0) ||
+        parameters_.tubeStrikes < 1 || !(parameters_.tubePosition > 0.0) ||
+        !(parameters_.tubeHeading > 0.0)) {
         throw std::invalid_argument(
             "MpcController: replanning, rollouts >= 2, knots >= 2, substeps, the tube's steps and "
             "strikes >= 1 and positive tube bounds needed");
@@ -136,11 +138,10 @@ QString MpcController::trialNote() const {
                                       .arg(100.0 * modelFit_, 0, 'f', 1)
                                 : QStringLiteral("planned through the model");
     }
-    return fallbackStep_ > 0
-               ? QStringLiteral("the feedback law drove from %1 s: %2")
-                     .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
-                     .arg(fallbackReason_)
-               : QStringLiteral("the feedback law drove: %1").arg(fallbackReason_);
+    return fallbackStep_ > 0 ? QStringLiteral("the feedback law drove from %1 s: %2")
+                                   .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
+                                   .arg(fallbackReason_)
+                             : QStringLiteral("the feedback law drove: %1").arg(fallbackReason_);
 }
 
 void MpcController::setLatencyCompensation(int steps) {
@@ -211,8 +212,8 @@ void MpcController::reset(core::ResetMode mode) {
 }
 
 int MpcController::tubeSteps() const {
-    return std::max(1, static_cast<int>(std::lround(parameters_.tubeSeconds /
-                                                    problem_.demonstration->dt)));
+    return std::max(
+        1, static_cast<int>(std::lround(parameters_.tubeSeconds / problem_.demonstration->dt)));
 }
 
 QString MpcController::spinOf(const Eigen::VectorXd& observation) const {
@@ -263,8 +264,9 @@ QString MpcController::spinOf(const Eigen::VectorXd& observation) const {
             .arg(parameters_.spinYawRate * 180.0 / M_PI, 0, 'f', 0);
     }
     if (parameters_.spinSideSlip > 0.0 && nearestSlip > parameters_.spinSideSlip) {
-        return QStringLiteral("a side-slip angle of %1 deg where the demonstration had %2 "
-                              "(bound %3)")
+        return QStringLiteral(
+                   "a side-slip angle of %1 deg where the demonstration had %2 "
+                   "(bound %3)")
             .arg(slip * 180.0 / M_PI, 0, 'f', 0)
             .arg(demoSlip * 180.0 / M_PI, 0, 'f', 0)
             .arg(parameters_.spinSideSlip * 180.0 / M_PI, 0, 'f', 0);

@@ -92,9 +92,9 @@ class MpcController : public core::Controller {
     /// @param modelFit  the model's position RMS over its data [m] (negative: unknown)
     /// @param data      what the model was identified from (the refits add trials to it;
     ///                  empty: never refit)
-    MpcController(core::TrackingProblem problem, MpcParameters parameters,
-                  OracleParameters planner, std::unique_ptr<core::Controller> fallback,
-                  PlantParameters model, double modelFit, std::vector<core::Demonstration> data);
+    MpcController(core::TrackingProblem problem, MpcParameters parameters, OracleParameters planner,
+                  std::unique_ptr<core::Controller> fallback, PlantParameters model,
+                  double modelFit, std::vector<core::Demonstration> data);
     MpcController(const MpcController& other);
     MpcController& operator=(const MpcController&) = delete;
 
@@ -139,8 +139,8 @@ class MpcController : public core::Controller {
     double modelFit_;
     std::vector<core::Demonstration> data_;  // the demonstration first, then the day's trials
     std::vector<core::Demonstration> firstData_;
-    std::unique_ptr<Plant> modelPlant_;  // the model at the current (predicted) state
-    std::unique_ptr<Plant> scratch_;     // the tube's prediction
+    std::unique_ptr<Plant> modelPlant_;             // the model at the current (predicted) state
+    std::unique_ptr<Plant> scratch_;                // the tube's prediction
     std::vector<std::unique_ptr<Plant>> ensemble_;  // the model with other grips
     std::unique_ptr<OracleController> planner_;
     int latency_ = 0;

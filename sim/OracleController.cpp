@@ -134,10 +134,10 @@ Eigen::Vector3d OracleController::finalPoseOf(Plant& copy, const Eigen::MatrixXd
     simulatedSteps_ += t - k;
     const Eigen::VectorXd s = copy.state();
     const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
-    return Eigen::Vector3d((s[at.x] - lot[at.x]) / parameters_.positionScale,
-                           (s[at.y] - lot[at.y]) / parameters_.positionScale,
-                           core::wrapAngle(s[at.heading] - lot[at.heading]) /
-                               parameters_.headingScale);
+    return Eigen::Vector3d(
+        (s[at.x] - lot[at.x]) / parameters_.positionScale,
+        (s[at.y] - lot[at.y]) / parameters_.positionScale,
+        core::wrapAngle(s[at.heading] - lot[at.heading]) / parameters_.headingScale);
 }
 
 Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
@@ -157,12 +157,12 @@ Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
         if (!regularised && !tracked && models == 1) {
             return finalPoseOf(*copy, knots, times, k, nullptr);
         }
-        Eigen::VectorXd r = Eigen::VectorXd::Zero(models * (3 + trackedSteps) +
-                                                  (regularised ? knots.size() : 0));
+        Eigen::VectorXd r =
+            Eigen::VectorXd::Zero(models * (3 + trackedSteps) + (regularised ? knots.size() : 0));
         // Each model's share of the cost is its mean: the plan is good on all of them.
         const double share = 1.0 / std::sqrt(static_cast<double>(models));
-        const double weight = tracked ? parameters_.positionScale /
-                                            (parameters_.trackingScale * std::sqrt(0.5 * trackedSteps))
+        const double weight = tracked ? parameters_.positionScale / (parameters_.trackingScale *
+                                                                     std::sqrt(0.5 * trackedSteps))
                                       : 0.0;
         int next = 0;
         std::vector<double> away;
@@ -171,10 +171,12 @@ Eigen::VectorXd OracleController::rollout(const Eigen::MatrixXd& knots,
                 copy = ensemble_[static_cast<size_t>(i - 1)]->clone(false);
             }
             away.clear();
-            r.segment<3>(next) = share * finalPoseOf(*copy, knots, times, k, tracked ? &away : nullptr);
+            r.segment<3>(next) =
+                share * finalPoseOf(*copy, knots, times, k, tracked ? &away : nullptr);
             next += 3;
             for (int j = 0; j < trackedSteps; ++j) {
-                const double d = j < static_cast<int>(away.size()) ? away[static_cast<size_t>(j)] : 0.0;
+                const double d =
+                    j < static_cast<int>(away.size()) ? away[static_cast<size_t>(j)] : 0.0;
                 r[next++] = share * weight * d / parameters_.positionScale;
             }
         }
@@ -214,11 +216,11 @@ void OracleController::plan(int k) {
     const int m = static_cast<int>(halfRange_.size());
     finalPoseNow_ = parameters_.objective == OracleParameters::Objective::FinalPose &&
                     parameters_.trialSteps - k <= parameters_.finalPoseWindow;
-    const int end = finalPoseNow_ ? std::max(parameters_.trialSteps, k + 1) : k + parameters_.horizon;
+    const int end =
+        finalPoseNow_ ? std::max(parameters_.trialSteps, k + 1) : k + parameters_.horizon;
     const int remaining = end - k;
-    const int spacing =
-        std::max(parameters_.knotSpacing,
-                 (remaining + parameters_.maxKnots - 2) / (parameters_.maxKnots - 1));
+    const int spacing = std::max(parameters_.knotSpacing, (remaining + parameters_.maxKnots - 2) /
+                                                              (parameters_.maxKnots - 1));
     std::vector<int> times;
     for (int t = k; t < end + spacing && static_cast<int>(times.size()) < parameters_.maxKnots;
          t += spacing) {
@@ -304,8 +306,9 @@ void OracleController::plan(int k) {
 
 const core::ControlStep& OracleController::step(const Eigen::Ref<const Eigen::VectorXd>&) {
     if (!plant_) {
-        throw std::logic_error("OracleController: no plant attached (the oracle runs only in "
-                               "simulation, through EpisodeStepper)");
+        throw std::logic_error(
+            "OracleController: no plant attached (the oracle runs only in "
+            "simulation, through EpisodeStepper)");
     }
     const int k = step_;
     const core::Demonstration& demo = *problem_.demonstration;

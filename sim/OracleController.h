@@ -48,9 +48,9 @@ struct OracleParameters {
     /// (one rollout per knot and channel), which find smooth optima fast; the random samples
     /// keep the search going where the plant is not smooth (stick-slip). false: samples only.
     bool gaussNewton = true;
-    double spread = 0.15;          ///< first search spread per knot, share of the half range [1]
-    double minimumSpread = 0.003;  ///< the spread never shrinks below this share [1]
-    double positionScale = 0.01;   ///< FinalPose: this much position error [m] ...
+    double spread = 0.15;             ///< first search spread per knot, share of the half range [1]
+    double minimumSpread = 0.003;     ///< the spread never shrinks below this share [1]
+    double positionScale = 0.01;      ///< FinalPose: this much position error [m] ...
     double headingScale = 0.0174533;  ///< ... costs as much as this heading error [rad]
     std::uint64_t seed = 1;           ///< the planner's sampling (the same every trial)
     /// FinalPose: a correction of this share of the half range [1] costs as much as the
@@ -69,10 +69,11 @@ struct OracleParameters {
 /// perturbed plant (a copy it simulates ahead, without the actuator noise still to come) and the
 /// true state, and plans corrections to the demonstration's actions on plant copies at the
 /// control rate: Gauss-Newton steps from finite differences and random shooting around the
-/// current plan (warm started, with an adaptive spread), keeping the best plan found. It is a ruler, not a competitor: its error is what the perturbations and
-/// the actuator noise leave over when the plant is known. The correction is piecewise linear in
-/// time between knots; the plan is replayed open loop between two plannings.
-/// Single-threaded; one per trial (clone() for parallel trials).
+/// current plan (warm started, with an adaptive spread), keeping the best plan found. It is a
+/// ruler, not a competitor: its error is what the perturbations and the actuator noise leave over
+/// when the plant is known. The correction is piecewise linear in time between knots; the plan is
+/// replayed open loop between two plannings. Single-threaded; one per trial (clone() for parallel
+/// trials).
 class OracleController : public core::Controller, public PlantAware {
   public:
     /// @param problem  the demonstration (its actions are the plan's starting point), the

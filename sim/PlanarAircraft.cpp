@@ -149,9 +149,8 @@ Eigen::VectorXd PlanarAircraft::reset(std::uint64_t seed, const Perturbation& pe
         SessionDay day(perturbation);
         const double thrust = std::clamp(day.normal() / 1.7320508, -1.0, 1.0);
         const double drag = std::clamp(day.normal() / 1.7320508, -1.0, 1.0);
-        thrustScale_ = std::clamp((1.0 + kThrustDragSpan * sp * thrust) *
-                                      (1.0 - day.drift(0.002 * sp)),
-                                  0.5, 1.5);
+        thrustScale_ = std::clamp(
+            (1.0 + kThrustDragSpan * sp * thrust) * (1.0 - day.drift(0.002 * sp)), 0.5, 1.5);
         dragScale_ = std::clamp(1.0 + kThrustDragSpan * sp * drag, 0.5, 1.5);
     }
     throttleNoise_ = kActuatorNoise * (info_.actionUpper[0] - info_.actionLower[0]) *

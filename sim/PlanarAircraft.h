@@ -46,9 +46,9 @@ struct PlanarAircraftParameters {
     double restYawRate = 0.05;  ///< ... and this yaw rate the aircraft is at rest [rad/s]
 };
 
-/// A small fixed-wing UAV flying in the horizontal plane, seen from above (docs/architecture.md "Plants";
-/// the paper's aerial robot, section V.B), simulated as one Box2D body with gravity off and
-/// aerodynamic and propeller forces and a yaw moment applied at every physics step.
+/// A small fixed-wing UAV flying in the horizontal plane, seen from above (docs/architecture.md
+/// "Plants"; the paper's aerial robot, section V.B), simulated as one Box2D body with gravity off
+/// and aerodynamic and propeller forces and a yaw moment applied at every physics step.
 ///
 /// State (n = 6): x, y [m] world position of the centre of mass; heading psi [rad] of the body x
 /// axis (the nose), counter-clockwise from world x, continuous (not wrapped: two left circles

@@ -30,7 +30,9 @@ QString PlantInfo::stateProblem(const Eigen::VectorXd& state) const {
     for (int i = 0; i < state.size(); ++i) {
         const double bound = stateBound(i);
         if (!std::isfinite(state[i])) {
-            return QStringLiteral("%1 = %2 is not a finite number").arg(stateNames[i]).arg(state[i]);
+            return QStringLiteral("%1 = %2 is not a finite number")
+                .arg(stateNames[i])
+                .arg(state[i]);
         }
         if (std::abs(state[i]) > bound) {
             return QStringLiteral("%1 = %2 %3 is outside [%4, %5] %3")
@@ -67,7 +69,8 @@ std::optional<Perturbation::Model> perturbationModelFromName(const QString& name
 }
 
 SessionDay::SessionDay(const Perturbation& perturbation)
-    : state_(mixSeed(perturbation.day, 0x5E55)), trialIndex_(std::max(0, perturbation.trialIndex)) {}
+    : state_(mixSeed(perturbation.day, 0x5E55)),
+      trialIndex_(std::max(0, perturbation.trialIndex)) {}
 
 double SessionDay::normal() {
     // Box-Muller on two splitmix64 draws: a fixed, library-independent sequence per day.

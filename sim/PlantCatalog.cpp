@@ -4,8 +4,8 @@
 #include "DiffDrive.h"
 #include "DiffDriveDemonstrator.h"
 #include "DiffDriveTuning.h"
-#include "PlanarAircraft.h"
 #include "MethodTuning.h"
+#include "PlanarAircraft.h"
 #include "SlideCar.h"
 
 #include <QtGlobal>
@@ -23,8 +23,7 @@ std::unique_ptr<Plant> make(const SimulationTiming& timing) {
 }
 
 template <class P, auto typed>
-std::unique_ptr<Plant> makeWith(const PlantParameters& parameters,
-                                const SimulationTiming& timing) {
+std::unique_ptr<Plant> makeWith(const PlantParameters& parameters, const SimulationTiming& timing) {
     return std::make_unique<P>(typed(parameters), timing);
 }
 

@@ -440,13 +440,14 @@ std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
                                      ? QStringLiteral("the text \"%1\"").arg(version.toString())
                                      : QStringLiteral("a JSON %1")
                                            .arg(version.isBool() ? QStringLiteral("true or false")
-                                                : version.isArray() ? QStringLiteral("list")
+                                                : version.isArray()  ? QStringLiteral("list")
                                                 : version.isObject() ? QStringLiteral("object")
                                                                      : QStringLiteral("null"))));
         }
         if (version.toDouble() != 1.0) {
-            return fail(QStringLiteral("version %1 is not one this build reads (it reads version 1)")
-                            .arg(version.toDouble()));
+            return fail(
+                QStringLiteral("version %1 is not one this build reads (it reads version 1)")
+                    .arg(version.toDouble()));
         }
     }
     const QJsonValue plantValue = root.value(QLatin1String("plant"));

@@ -56,9 +56,9 @@ PlantParameters defaultPlantParameters(const QString& plant);
 QString plantParametersProblem(const QString& plant, const std::vector<double>& values);
 
 /// Reads a plant file (JSON): {"plant": NAME, "parameters": {KEY: VALUE, ...}, and optionally
-/// "unmodelled": {KEY: VALUE, ...} for the effects the identification model leaves out}, a VALUE being a
-/// number or an object with "value" (and, if given, a "unit" that must be the declared one; the
-/// other fields, as --print-params writes them, are documentation). Keys not in the file keep
+/// "unmodelled": {KEY: VALUE, ...} for the effects the identification model leaves out}, a VALUE
+/// being a number or an object with "value" (and, if given, a "unit" that must be the declared one;
+/// the other fields, as --print-params writes them, are documentation). Keys not in the file keep
 /// the catalog's values. With `plant` non-empty the file must be of that plant. On failure
 /// returns nullopt and sets *error naming the file and what is wrong: a missing or unreadable
 /// file, bad JSON, another plant, an unknown key (with the known ones), a value outside its
@@ -67,8 +67,8 @@ std::optional<PlantParameters> readPlantParameters(const QString& path, const QS
                                                    QString* error);
 /// Parses the text of a plant file; `sourceName` names it in messages and becomes `source`.
 std::optional<PlantParameters> parsePlantParameters(const QByteArray& json,
-                                                    const QString& sourceName,
-                                                    const QString& plant, QString* error);
+                                                    const QString& sourceName, const QString& plant,
+                                                    QString* error);
 
 /// The plant file of these parameters, every key with its value, unit, range and description
 /// (readPlantParameters reads it back to the same values).

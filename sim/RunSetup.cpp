@@ -16,8 +16,8 @@ RecordingConditions demonstrationConditions(const RunSettings& settings,
     RecordingConditions conditions;
     conditions.parameters = parameters;
     if (settings.perturbationModel == Perturbation::Model::Session) {
-        conditions.perturbation = Perturbation::dayOf(
-            day, settings.perturbation * profile.perturbationShares.parameters);
+        conditions.perturbation =
+            Perturbation::dayOf(day, settings.perturbation * profile.perturbationShares.parameters);
     }
     return conditions;
 }
@@ -29,7 +29,8 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
     }
     if (!method_->runsOn(task_.profile.info.name)) {
         throw std::invalid_argument(QStringLiteral("%1 runs on %2, not on '%3'")
-                                        .arg(method_->id, method_->plants.join(QStringLiteral(", ")),
+                                        .arg(method_->id,
+                                             method_->plants.join(QStringLiteral(", ")),
                                              task_.profile.info.name)
                                         .toStdString());
     }
@@ -47,8 +48,8 @@ RunSetup::RunSetup(Task task, const QString& method, const RunSettings& settings
         task_.profile.mpcPrior =
             std::make_shared<const PlantParameters>(measuredPrior(*task_.plantParameters));
     }
-    episode_ = task_.profile.episode(*task_.demonstration, settings_.perturbation,
-                                     settings_.sensor);
+    episode_ =
+        task_.profile.episode(*task_.demonstration, settings_.perturbation, settings_.sensor);
     episode_.perturbation.model = settings_.perturbationModel;
     episode_.perturbation.day = settings_.seed;
     if (settings_.poseFilter) {
@@ -126,8 +127,8 @@ std::unique_ptr<core::Controller> RunSetup::makeUntrainedController() const {
 
 core::RunLog RunSetup::startRunLog(const core::Controller& controller, int trials,
                                    const QString& demonstrationSource) const {
-    core::RunLog log = sim::startRunLog(task_.profile.info, method_->id,
-                                        task_.demonstration->dt, controller);
+    core::RunLog log =
+        sim::startRunLog(task_.profile.info, method_->id, task_.demonstration->dt, controller);
     log.metadata.insert(QStringLiteral("seed"), QString::number(settings_.seed));
     log.metadata.insert(QStringLiteral("trials"), QString::number(trials));
     log.metadata.insert(QStringLiteral("perturbation"), QString::number(settings_.perturbation));

@@ -12,7 +12,7 @@ namespace prisca::sim {
 core::Demonstration SlideCarDemonstrator::record(std::uint64_t seed, const Script& script,
                                                  const SimulationTiming& timing,
                                                  const SlideCarParameters& parameters,
-    const Perturbation& conditions) {
+                                                 const Perturbation& conditions) {
     std::mt19937_64 draw(mixSeed(seed, 100));
     std::normal_distribution<double> normal(0.0, 1.0);
     const double j = script.jitter;

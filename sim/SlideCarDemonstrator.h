@@ -29,7 +29,7 @@ class SlideCarDemonstrator {
         double turnTime = 1.4;        ///< when the operator steers in, from the launch [s]
         /// Throttle released this long before steering in, so the car coasts into the turn [s].
         double coastTime = 0.0;
-        double direction = 1.0;  ///< +1 slides to the left (counter-clockwise), -1 to the right
+        double direction = 1.0;   ///< +1 slides to the left (counter-clockwise), -1 to the right
         double steerRamp = 0.08;  ///< time to reach full lock [s]
         /// Heading turned (magnitude) at which the wheel is centred again; the car spins on after
         /// that: 1.13 rad (65 deg) gives about 180 deg in all [rad].
@@ -47,8 +47,8 @@ class SlideCarDemonstrator {
         bool keyboard = false;
         double stickJitter = 0.0;  ///< rms of a shaking hand on both sticks (about 8 Hz) [1]
         double jitter = 1.0;       ///< scale of the seeded hand variation (0: exact script)
-        double maxDuration = 8.0;   ///< recording stops by then in any case [s]
-        double restTail = 0.5;      ///< kept recording at rest after the car stops [s]
+        double maxDuration = 8.0;  ///< recording stops by then in any case [s]
+        double restTail = 0.5;     ///< kept recording at rest after the car stops [s]
     };
 
     /// Records one demonstration on a nominal slide-car (no perturbation) with this seed's hand

@@ -13,7 +13,6 @@
 
 namespace prisca::sim {
 
-
 Table1Result runTable1(const Table1Settings& settings, const Task& task) {
     const MethodTuning& profile = task.profile;
     if (!profile.info.pose) {
@@ -77,8 +76,8 @@ Table1Result runTable1(const Table1Settings& settings, const Task& task) {
         out.controller = controller;
         return out;
     };
-    const auto warmed = runParallel<WarmUp>(static_cast<int>(learners.size()),
-                                            settings.run.threads, warmUp, settings.cancelled);
+    const auto warmed = runParallel<WarmUp>(static_cast<int>(learners.size()), settings.run.threads,
+                                            warmUp, settings.cancelled);
     std::vector<std::vector<TrialSummary>> trainingTrials(setups.size());
     for (size_t i = 0; i < learners.size(); ++i) {
         trained[learners[i]] = warmed[i].controller;
@@ -166,8 +165,8 @@ std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finishe
         }
         const MethodSpec& spec = MethodCatalog::get(method.method);
         rows.push_back({method.method, core::summarizeErrors(position),
-                        core::summarizeErrors(orientation), core::mean(cpu), spec.label,
-                        spec.limit, static_cast<int>(method.trials.size())});
+                        core::summarizeErrors(orientation), core::mean(cpu), spec.label, spec.limit,
+                        static_cast<int>(method.trials.size())});
     }
     if (finished) {
         *finished = count;

@@ -78,13 +78,13 @@ Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                             .arg(set));
                 }
                 // The demonstration is recorded on the day's car (session model: its mismatch).
-                const Task task = makeTask(
-                    profile,
-                    std::make_shared<core::Demonstration>(DemonstrationStyles::record(
-                        plant, style, set, {},
-                        demonstrationConditions(settings.table.run, profile, variants[v].get(),
-                                                set))),
-                    settings.fit, variants[v]);
+                const Task task =
+                    makeTask(profile,
+                             std::make_shared<core::Demonstration>(DemonstrationStyles::record(
+                                 plant, style, set, {},
+                                 demonstrationConditions(settings.table.run, profile,
+                                                         variants[v].get(), set))),
+                             settings.fit, variants[v]);
                 Table1Settings table = settings.table;
                 table.run.seed = set;
                 table.keepPaths = false;
@@ -129,9 +129,9 @@ Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
             }
         }
     }
-    result.summary = core::summarizeProtocol(settings.table.methods,
-                                             byVariant ? variantNames : settings.styles,
-                                             settings.seedSets, result.cells);
+    result.summary =
+        core::summarizeProtocol(settings.table.methods, byVariant ? variantNames : settings.styles,
+                                settings.seedSets, result.cells);
     return result;
 }
 

@@ -13,8 +13,8 @@
 
 namespace prisca::sim {
 
-/// Table I on many demonstrations (docs/architecture.md "Evaluation"): every method on every cell, a cell
-/// being one demonstration style recorded with one seed set's hand variation and run on that
+/// Table I on many demonstrations (docs/architecture.md "Evaluation"): every method on every cell,
+/// a cell being one demonstration style recorded with one seed set's hand variation and run on that
 /// seed set's trials. Plain data.
 struct Table1ProtocolSettings {
     /// Methods, trials, training trials, perturbation, sensor, threads, cancellation and
@@ -36,8 +36,8 @@ struct Table1ProtocolSettings {
 /// then its evaluation trials, each index with one value per finished cell.
 struct TrialCurve {
     QString method;
-    int trainingTrials = 0;                     ///< how many of the indices are training trials
-    std::vector<std::vector<double>> position;  ///< per trial index, per cell [cm]
+    int trainingTrials = 0;                        ///< how many of the indices are training trials
+    std::vector<std::vector<double>> position;     ///< per trial index, per cell [cm]
     std::vector<std::vector<double>> orientation;  ///< per trial index, per cell [deg]
 };
 
@@ -46,7 +46,7 @@ struct Table1ProtocolResult {
     core::ProtocolSummary summary;  ///< per method over the cells, and per style
     std::vector<std::vector<core::ProtocolCell>> cells;  ///< per method, per finished cell
     bool cancelled = false;
-    int finishedTrials = 0;  ///< over all methods and cells
+    int finishedTrials = 0;          ///< over all methods and cells
     std::vector<TrialCurve> curves;  ///< per method, its trials by index over the cells
 };
 
@@ -58,9 +58,9 @@ QString variantName(const PlantParameters* parameters);
 std::vector<std::uint64_t> consecutiveSeedSets(std::uint64_t first, int count);
 
 /// Runs Table I on every (style, seed set) cell in turn (each cell's trials in parallel), each
-/// cell's Task made from the profile and that cell's demonstration (makeTask: checked, fitted). Deterministic for the
-/// settings whatever the thread count. Throws std::invalid_argument for an unknown style or
-/// method (as runTable1 does).
+/// cell's Task made from the profile and that cell's demonstration (makeTask: checked, fitted).
+/// Deterministic for the settings whatever the thread count. Throws std::invalid_argument for an
+/// unknown style or method (as runTable1 does).
 Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                                        const MethodTuning& profile);
 

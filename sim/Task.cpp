@@ -14,10 +14,10 @@ Task makeTask(const MethodTuning& profile, std::shared_ptr<const core::Demonstra
     }
     if (plantParameters) {
         if (plantParameters->plant != profile.info.name) {
-            throw std::invalid_argument(QStringLiteral("the plant file %1 describes a %2, not a %3")
-                                            .arg(plantParameters->source, plantParameters->plant,
-                                                 profile.info.name)
-                                            .toStdString());
+            throw std::invalid_argument(
+                QStringLiteral("the plant file %1 describes a %2, not a %3")
+                    .arg(plantParameters->source, plantParameters->plant, profile.info.name)
+                    .toStdString());
         }
         if (const QString problem =
                 plantParametersProblem(plantParameters->plant, plantParameters->values);

@@ -16,8 +16,8 @@
 #include "core/ActionMapping.h"
 #include "core/PriscaController.h"
 #include "core/Statistics.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
                 const QStringList parts = term.split(':');
                 core::FeatureTerm t;
                 t.source = parts[0] == QLatin1String("c") ? core::FeatureTerm::Source::Constant
-                                                           : core::FeatureTerm::Source::Deviation;
+                                                          : core::FeatureTerm::Source::Deviation;
                 t.index = parts[0] == QLatin1String("c") ? 0 : parts[0].toInt();
                 t.scale = parts[1].toDouble();
                 terms.push_back(t);
@@ -170,11 +170,12 @@ int main(int argc, char** argv) {
         const size_t every = getenv("EVERY") ? atoi(getenv("EVERY")) : 10;
         for (size_t k = 0; k < worstRun.steps.size(); k += every) {
             const sim::StepRecord& r = worstRun.steps[k];
-            std::printf("k %3zu x %6.2f y %6.2f psi %6.2f vx %5.2f | j %3d u %5.2f %5.2f u* %5.2f "
-                        "%5.2f | e %6.2f %6.2f %6.2f\n",
-                        k, r.state[0], r.state[1], r.state[2], r.state[3], r.referenceIndex,
-                        r.action[0], r.action[1], r.referenceAction[0], r.referenceAction[1],
-                        r.deviation[0], r.deviation[1], r.deviation[2]);
+            std::printf(
+                "k %3zu x %6.2f y %6.2f psi %6.2f vx %5.2f | j %3d u %5.2f %5.2f u* %5.2f "
+                "%5.2f | e %6.2f %6.2f %6.2f\n",
+                k, r.state[0], r.state[1], r.state[2], r.state[3], r.referenceIndex, r.action[0],
+                r.action[1], r.referenceAction[0], r.referenceAction[1], r.deviation[0],
+                r.deviation[1], r.deviation[2]);
         }
         return 0;
     }
@@ -201,11 +202,11 @@ int main(int argc, char** argv) {
             cellPos.push_back(rows[0].position.meanAbsoluteError);
             cellOri.push_back(rows[0].orientation.meanAbsoluteError);
             worst = std::max(worst, rows[0].position.maximum);
-        if (getenv("CELLS")) {
-            std::printf("  %-20s set %llu: %.2f cm (worst %.1f)\n", style,
-                        static_cast<unsigned long long>(set), rows[0].position.meanAbsoluteError,
-                        rows[0].position.maximum);
-        }
+            if (getenv("CELLS")) {
+                std::printf("  %-20s set %llu: %.2f cm (worst %.1f)\n", style,
+                            static_cast<unsigned long long>(set),
+                            rows[0].position.meanAbsoluteError, rows[0].position.maximum);
+            }
         }
     printf("%-10s pos %.2f ori %.2f worst %.1f\n", method, core::mean(cellPos), core::mean(cellOri),
            worst);

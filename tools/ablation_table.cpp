@@ -1,7 +1,7 @@
 // ablation_table: PRISCA's changes one at a time against the product default, the paper's
 // form, the best baseline and the oracle, on every slide-car demonstration style x the given
-// seed sets (Table I's protocol: 16 training trials, then the evaluation trials). For docs/results.md's
-// ablation table; run it on seed sets that no decision was made on.
+// seed sets (Table I's protocol: 16 training trials, then the evaluation trials). For
+// docs/results.md's ablation table; run it on seed sets that no decision was made on.
 //
 //     ablation_table [--seed S] [--sets N] [--trials T] [--oracle]
 //
@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--oracle")) {
             oracle = true;
         } else {
-            std::fprintf(stderr, "usage: ablation_table [--seed S] [--sets N] [--trials T] [--oracle]\n");
+            std::fprintf(stderr,
+                         "usage: ablation_table [--seed S] [--sets N] [--trials T] [--oracle]\n");
             return 2;
         }
     }
@@ -86,9 +87,12 @@ int main(int argc, char** argv) {
              p.prisca.effortWeights.resize(0);
              p.prisca.stepSize.scale = 1.0;
              p.prisca.thetaBound = 0.5;
-             p.features = core::FeatureMap(
-                 {{{Source::Deviation, 0, 2.0}, {Source::Deviation, 3, 1.0}, {Source::Constant, 0, 0.0}},
-                  {{Source::Deviation, 1, 2.0}, {Source::Deviation, 2, 1.0}, {Source::Constant, 0, 0.1}}});
+             p.features = core::FeatureMap({{{Source::Deviation, 0, 2.0},
+                                             {Source::Deviation, 3, 1.0},
+                                             {Source::Constant, 0, 0.0}},
+                                            {{Source::Deviation, 1, 2.0},
+                                             {Source::Deviation, 2, 1.0},
+                                             {Source::Constant, 0, 0.1}}});
          }},
         {"PRISCA (paper): Algorithm 1 as printed", "prisca-paper", [](Profile&, Fit&) {}},
         {"PD+H+LSD (best baseline)", "pd-h-lsd", [](Profile&, Fit&) {}},
@@ -99,11 +103,12 @@ int main(int argc, char** argv) {
     if (oracle) {
         variants.push_back({"LIMIT (oracle)", "oracle", [](Profile&, Fit&) {}});
     }
-    std::printf("Slide-car, every style x seed sets %llu..%llu, %d evaluation trials per cell after "
-                "16 training trials, perturbation 1, sensor 1; means and 95%% intervals over the "
-                "cells\n\n",
-                static_cast<unsigned long long>(seed),
-                static_cast<unsigned long long>(seed + sets - 1), trials);
+    std::printf(
+        "Slide-car, every style x seed sets %llu..%llu, %d evaluation trials per cell after "
+        "16 training trials, perturbation 1, sensor 1; means and 95%% intervals over the "
+        "cells\n\n",
+        static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed + sets - 1),
+        trials);
     std::printf("| variant | position MAE [cm] | orientation MAE [deg] | worst style [cm] |\n");
     std::printf("| --- | ---: | ---: | ---: |\n");
     for (const Variant& v : variants) {
@@ -121,8 +126,8 @@ int main(int argc, char** argv) {
             worst = std::max(worst, s.mean);
         }
         std::printf("| %s | %.2f [%.2f, %.2f] | %.2f [%.2f, %.2f] | %.2f |\n", v.label,
-                    row.position.mean, row.position.lower, row.position.upper,
-                    row.orientation.mean, row.orientation.lower, row.orientation.upper, worst);
+                    row.position.mean, row.position.lower, row.position.upper, row.orientation.mean,
+                    row.orientation.lower, row.orientation.upper, worst);
         std::fflush(stdout);
     }
     return 0;

@@ -22,7 +22,8 @@ using namespace prisca::sim;
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     if (argc < 5) {
-        std::fprintf(stderr, "usage: mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]\n");
+        std::fprintf(stderr,
+                     "usage: mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]\n");
         return 2;
     }
     QString error;
@@ -41,22 +42,31 @@ int main(int argc, char** argv) {
         MethodCatalog::setParameter(profile, QString::fromLocal8Bit(argv[i]));
     }
     // Development overrides of fields no parameter declares.
-    if (qEnvironmentVariableIsSet("MPC_CS")) profile.mpc.correctionScale = qEnvironmentVariable("MPC_CS").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_MC")) profile.mpc.maxCorrection = qEnvironmentVariable("MPC_MC").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_TH")) profile.mpc.tubeHeading = qEnvironmentVariable("MPC_TH").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_PF")) profile.mpc.poorFit = qEnvironmentVariable("MPC_PF").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_KN")) profile.mpc.maxKnots = qEnvironmentVariable("MPC_KN").toInt();
-    if (qEnvironmentVariableIsSet("MPC_FB")) profile.mpc.feedback = qEnvironmentVariableIntValue("MPC_FB") != 0;
-    if (qEnvironmentVariableIsSet("MPC_GS")) profile.mpc.gripSpread = qEnvironmentVariable("MPC_GS").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_RO")) profile.mpc.rollouts = qEnvironmentVariable("MPC_RO").toInt();
-    if (qEnvironmentVariableIsSet("MPC_TS")) profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_CS"))
+        profile.mpc.correctionScale = qEnvironmentVariable("MPC_CS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_MC"))
+        profile.mpc.maxCorrection = qEnvironmentVariable("MPC_MC").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_TH"))
+        profile.mpc.tubeHeading = qEnvironmentVariable("MPC_TH").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_PF"))
+        profile.mpc.poorFit = qEnvironmentVariable("MPC_PF").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_KN"))
+        profile.mpc.maxKnots = qEnvironmentVariable("MPC_KN").toInt();
+    if (qEnvironmentVariableIsSet("MPC_FB"))
+        profile.mpc.feedback = qEnvironmentVariableIntValue("MPC_FB") != 0;
+    if (qEnvironmentVariableIsSet("MPC_GS"))
+        profile.mpc.gripSpread = qEnvironmentVariable("MPC_GS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_RO"))
+        profile.mpc.rollouts = qEnvironmentVariable("MPC_RO").toInt();
+    if (qEnvironmentVariableIsSet("MPC_TS"))
+        profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
     RunSettings settings;
     settings.seed = set;
-    const Task task = makeTask(
-        profile,
-        std::make_shared<core::Demonstration>(DemonstrationStyles::record(
-            "slidecar", style, set, {}, demonstrationConditions(settings, profile, variant.get(), set))),
-        {}, variant);
+    const Task task = makeTask(profile,
+                               std::make_shared<core::Demonstration>(DemonstrationStyles::record(
+                                   "slidecar", style, set, {},
+                                   demonstrationConditions(settings, profile, variant.get(), set))),
+                               {}, variant);
     const RunSetup mpcRun(task, "mpc", settings);
     const RunSetup lawRun(task, "pd-lsd", settings);
     auto mpc = mpcRun.makeController();
@@ -76,11 +86,12 @@ int main(int argc, char** argv) {
             for (size_t k = 0; trace && k < r.steps.size(); k += 5) {
                 const StepRecord& s = r.steps[k];
                 const int j = std::min<int>(static_cast<int>(k), demo.length() - 1);
-                std::printf("  t %5.2f  x %6.2f y %6.2f psi %6.2f v %5.2f,%5.2f | demo x %6.2f y %6.2f "
-                            "psi %6.2f | u %5.2f %5.2f  u* %5.2f %5.2f\n",
-                            s.time, s.state[0], s.state[1], s.state[2], s.state[3], s.state[4],
-                            demo.states(j, 0), demo.states(j, 1), demo.states(j, 2), s.action[0],
-                            s.action[1], demo.actions(j, 0), demo.actions(j, 1));
+                std::printf(
+                    "  t %5.2f  x %6.2f y %6.2f psi %6.2f v %5.2f,%5.2f | demo x %6.2f y %6.2f "
+                    "psi %6.2f | u %5.2f %5.2f  u* %5.2f %5.2f\n",
+                    s.time, s.state[0], s.state[1], s.state[2], s.state[3], s.state[4],
+                    demo.states(j, 0), demo.states(j, 1), demo.states(j, 2), s.action[0],
+                    s.action[1], demo.actions(j, 0), demo.actions(j, 1));
             }
             const core::PlanarPoseIndices p = *info.pose;
             return 100.0 * parkingError(info, demo, r.finalState[p.x], r.finalState[p.y],

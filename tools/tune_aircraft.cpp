@@ -10,8 +10,8 @@
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
-#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
@@ -122,13 +122,13 @@ T pick(std::mt19937& g, std::initializer_list<T> values) {
 
 // The features and cost weights PRISCA and PGSD both search (same draws, same order).
 void drawFeaturesAndWeights(std::mt19937& g, Setting& s) {
-        s.lon = pick(g, {0.1, 0.3, 1.0});
-        s.u = pick(g, {0.3, 1.0, 3.0});
-        s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
-        s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
-        s.weightPsi = pick(g, {1.0, 10.0, 100.0});
-        s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
-        s.weightR = pick(g, {0.1, 1.0, 10.0});
+    s.lon = pick(g, {0.1, 0.3, 1.0});
+    s.u = pick(g, {0.3, 1.0, 3.0});
+    s.lat = pick(g, {0.03, 0.1, 0.3, 1.0});
+    s.psi = pick(g, {0.3, 1.0, 3.0, 10.0});
+    s.weightPsi = pick(g, {1.0, 10.0, 100.0});
+    s.weightVelocity = pick(g, {0.01, 0.1, 1.0});
+    s.weightR = pick(g, {0.1, 1.0, 10.0});
 }
 
 Setting draw(std::mt19937& g, const char* method) {

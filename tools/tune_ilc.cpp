@@ -8,9 +8,9 @@
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
                                    : QStringList{"s-turn", "circle"};
     std::mt19937 g(12345);
     std::vector<std::pair<double, Setting>> results;
-    const sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
+    const sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
     for (int i = 0; i < count; ++i) {
         Setting s;
         if (i == 0) {

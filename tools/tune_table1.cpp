@@ -63,7 +63,8 @@ struct Cell {
 
 std::vector<Cell> tuningCells() {
     std::vector<Cell> cells;
-    const sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     for (const char* style : kTuningStyles) {
         for (std::uint64_t set : kTuningSets) {
             Cell cell;
@@ -106,9 +107,12 @@ sim::MethodTuning profileFor(const Setting& s, const char* method) {
         p.matchingWindow = s.window;
         return p;
     }
-    p.features = core::FeatureMap(
-        {{{Source::Deviation, 0, s.lon}, {Source::Deviation, 3, s.vx}, {Source::Constant, 0, s.throttleBias}},
-         {{Source::Deviation, 1, s.lat}, {Source::Deviation, 2, s.psi}, {Source::Constant, 0, s.steeringBias}}});
+    p.features = core::FeatureMap({{{Source::Deviation, 0, s.lon},
+                                    {Source::Deviation, 3, s.vx},
+                                    {Source::Constant, 0, s.throttleBias}},
+                                   {{Source::Deviation, 1, s.lat},
+                                    {Source::Deviation, 2, s.psi},
+                                    {Source::Constant, 0, s.steeringBias}}});
     p.costWeights << 1, 1, s.weightPsi, s.weightVelocity, s.weightVelocity, s.weightVelocity / 5;
     p.prisca.stepSize.scale = s.stepScale;
     p.prisca.stepSize.beta = s.beta;
@@ -146,7 +150,8 @@ double score(const Setting& s, const char* method, const std::vector<Cell>& cell
 
 template <class T>
 T pick(std::mt19937& g, std::initializer_list<T> values) {
-    return *(values.begin() + std::uniform_int_distribution<int>(0, static_cast<int>(values.size()) - 1)(g));
+    return *(values.begin() +
+             std::uniform_int_distribution<int>(0, static_cast<int>(values.size()) - 1)(g));
 }
 
 Setting draw(std::mt19937& g, const char* method) {
@@ -194,7 +199,8 @@ Setting draw(std::mt19937& g, const char* method) {
 
 // The first setting scored is the profile's current one, so a search never does worse than it.
 Setting current(const char* method) {
-    const sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     Setting s;
     s.stepScale = !std::strcmp(method, "pgsd") ? p.pgsd.stepSize : p.prisca.stepSize.scale;
     s.beta = p.prisca.stepSize.beta;
@@ -203,19 +209,27 @@ Setting current(const char* method) {
     s.bound = !std::strcmp(method, "pgsd") ? p.pgsd.thetaBound : p.prisca.thetaBound;
     s.effectHorizon = p.prisca.effectHorizon;
     const auto& t = p.features.terms();
-    s.lon = t[0][0].scale; s.vx = t[0][1].scale; s.throttleBias = t[0][2].scale;
-    s.lat = t[1][0].scale; s.psi = t[1][1].scale; s.steeringBias = t[1][2].scale;
+    s.lon = t[0][0].scale;
+    s.vx = t[0][1].scale;
+    s.throttleBias = t[0][2].scale;
+    s.lat = t[1][0].scale;
+    s.psi = t[1][1].scale;
+    s.steeringBias = t[1][2].scale;
     s.weightPsi = p.costWeights[2];
     s.weightVelocity = p.costWeights[3];
     s.window = p.matchingWindow;
-    s.kpThrottle = p.pd.kp[0]; s.kpSteering = p.pd.kp[1];
-    s.kdThrottle = p.pd.kd[0]; s.kdSteering = p.pd.kd[1];
+    s.kpThrottle = p.pd.kp[0];
+    s.kpSteering = p.pd.kp[1];
+    s.kdThrottle = p.pd.kd[0];
+    s.kdSteering = p.pd.kd[1];
     s.comboVx = p.pd.errorCombination(0, 3);
     s.comboPsi = p.pd.errorCombination(1, 2);
     s.comboR = p.pd.errorCombination(1, 5);
     s.pdHorizon = p.pdHorizon;
-    s.ilcScale = p.ilcLearningScale; s.ilcLead = p.ilcLead;
-    s.ilcCutoff = p.ilcCutoff; s.ilcFeedback = p.ilcFeedbackScale;
+    s.ilcScale = p.ilcLearningScale;
+    s.ilcLead = p.ilcLead;
+    s.ilcCutoff = p.ilcCutoff;
+    s.ilcFeedback = p.ilcFeedbackScale;
     return s;
 }
 
@@ -241,11 +255,19 @@ int main(int argc, char** argv) {
             std::function<void(Setting&, double)> set;
         };
         const std::vector<Knob> knobs = {
-            {"H", {0, 1, 2, 3, 4, 5, 7, 10}, [](Setting& s, double v) { s.pdHorizon = static_cast<int>(v); }},
-            {"kp throttle", {0.25, 0.35, 0.5, 0.7, 1, 1.4, 2, 3}, [](Setting& s, double v) { s.kpThrottle = v; }},
-            {"kp steering", {0.5, 0.7, 0.85, 1, 1.2, 1.4}, [](Setting& s, double v) { s.kpSteering = v; }},
+            {"H",
+             {0, 1, 2, 3, 4, 5, 7, 10},
+             [](Setting& s, double v) { s.pdHorizon = static_cast<int>(v); }},
+            {"kp throttle",
+             {0.25, 0.35, 0.5, 0.7, 1, 1.4, 2, 3},
+             [](Setting& s, double v) { s.kpThrottle = v; }},
+            {"kp steering",
+             {0.5, 0.7, 0.85, 1, 1.2, 1.4},
+             [](Setting& s, double v) { s.kpSteering = v; }},
             {"kd throttle", {0, 0.05, 0.1, 0.2}, [](Setting& s, double v) { s.kdThrottle = v; }},
-            {"kd steering", {0.15, 0.2, 0.3, 0.4, 0.5, 0.6}, [](Setting& s, double v) { s.kdSteering = v; }},
+            {"kd steering",
+             {0.15, 0.2, 0.3, 0.4, 0.5, 0.6},
+             [](Setting& s, double v) { s.kdSteering = v; }},
             {"combo vx", {0.3, 0.5, 0.7, 1, 1.4}, [](Setting& s, double v) { s.comboVx = v; }},
             {"combo psi", {0, 0.05, 0.1, 0.2}, [](Setting& s, double v) { s.comboPsi = v; }},
             {"combo r", {0, 0.05}, [](Setting& s, double v) { s.comboR = v; }},
@@ -262,7 +284,8 @@ int main(int argc, char** argv) {
                         bestScore = value;
                         best = s;
                         moved = true;
-                        std::printf("round %d: %s %g -> tuning score %.2f\n", round + 1, knob.name, v, value);
+                        std::printf("round %d: %s %g -> tuning score %.2f\n", round + 1, knob.name,
+                                    v, value);
                         std::fflush(stdout);
                     }
                 }
@@ -271,9 +294,11 @@ int main(int argc, char** argv) {
                 break;
             }
         }
-        std::printf("best: tuning score %.2f | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d window %d\n",
-                    bestScore, best.kpThrottle, best.kpSteering, best.kdThrottle, best.kdSteering,
-                    best.comboVx, best.comboPsi, best.comboR, best.pdHorizon, best.window);
+        std::printf(
+            "best: tuning score %.2f | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d "
+            "window %d\n",
+            bestScore, best.kpThrottle, best.kpSteering, best.kdThrottle, best.kdSteering,
+            best.comboVx, best.comboPsi, best.comboR, best.pdHorizon, best.window);
         return 0;
     }
     const int count = argc > 2 ? std::atoi(argv[2]) : 400;
@@ -291,13 +316,17 @@ int main(int argc, char** argv) {
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (int i = 0; i < std::min(5, count); ++i) {
         const Setting& s = results[i].second;
-        std::printf("%d. tuning score %.2f | alpha0/step %g beta %g H %d gamma %g bound %g features (%g %g %g | %g %g %g) "
-                    "W (psi %g, v %g) training %d window %d R %d N %d | PD kp (%g %g) kd (%g %g) combo (vx %g psi %g r %g) H %d "
-                    "| ILC scale %g lead %d cutoff %g feedback %g\n",
-                    i + 1, results[i].first, s.stepScale, s.beta, s.horizon, s.gamma, s.bound, s.lon, s.vx,
-                    s.throttleBias, s.lat, s.psi, s.steeringBias, s.weightPsi, s.weightVelocity, s.trainingTrials,
-                    s.window, s.responseSteps, s.effectHorizon, s.kpThrottle, s.kpSteering, s.kdThrottle, s.kdSteering, s.comboVx,
-                    s.comboPsi, s.comboR, s.pdHorizon, s.ilcScale, s.ilcLead, s.ilcCutoff, s.ilcFeedback);
+        std::printf(
+            "%d. tuning score %.2f | alpha0/step %g beta %g H %d gamma %g bound %g features (%g %g "
+            "%g | %g %g %g) "
+            "W (psi %g, v %g) training %d window %d R %d N %d | PD kp (%g %g) kd (%g %g) combo (vx "
+            "%g psi %g r %g) H %d "
+            "| ILC scale %g lead %d cutoff %g feedback %g\n",
+            i + 1, results[i].first, s.stepScale, s.beta, s.horizon, s.gamma, s.bound, s.lon, s.vx,
+            s.throttleBias, s.lat, s.psi, s.steeringBias, s.weightPsi, s.weightVelocity,
+            s.trainingTrials, s.window, s.responseSteps, s.effectHorizon, s.kpThrottle,
+            s.kpSteering, s.kdThrottle, s.kdSteering, s.comboVx, s.comboPsi, s.comboR, s.pdHorizon,
+            s.ilcScale, s.ilcLead, s.ilcCutoff, s.ilcFeedback);
     }
     return 0;
 }

@@ -54,8 +54,9 @@ int calibrateCameraCommand(const QStringList& arguments) {
     line.addValue("images", "Folder of the views (PNG, JPEG, BMP, TIFF).", "dir");
     line.addValue("board", "Inner corners of the board, columns x rows.", "CxR", "9x6");
     line.addValue("square", "Side of one square.", "m", "0.04");
-    line.addFlag("k3", "Fit the third radial coefficient too (very wide lenses; with boards "
-                       "that do not reach the image's corners it bends the model there).");
+    line.addFlag("k3",
+                 "Fit the third radial coefficient too (very wide lenses; with boards "
+                 "that do not reach the image's corners it bends the model there).");
     line.addValue("out", "Camera intrinsics JSON to write.", "file");
     line.addFormat({"text", "json"});
     if (!line.parse(arguments)) {
@@ -71,10 +72,10 @@ int calibrateCameraCommand(const QStringList& arguments) {
     if (!info.isDir()) {
         throw UsageError(QStringLiteral("--images %1: not a folder").arg(folder));
     }
-    const QStringList files = QDir(folder).entryList(
-        {"*.png", "*.PNG", "*.jpg", "*.JPG", "*.jpeg", "*.JPEG", "*.bmp", "*.BMP", "*.tif",
-         "*.tiff", "*.TIF", "*.TIFF"},
-        QDir::Files, QDir::Name);
+    const QStringList files =
+        QDir(folder).entryList({"*.png", "*.PNG", "*.jpg", "*.JPG", "*.jpeg", "*.JPEG", "*.bmp",
+                                "*.BMP", "*.tif", "*.tiff", "*.TIF", "*.TIFF"},
+                               QDir::Files, QDir::Name);
     if (files.isEmpty()) {
         throw UsageError(
             QStringLiteral("--images %1: no PNG, JPEG, BMP or TIFF image in it").arg(folder));
@@ -96,9 +97,8 @@ int calibrateCameraCommand(const QStringList& arguments) {
         }
         names.push_back(files[i]);
         images.push_back(image);
-        printProgress(QStringLiteral("calibrate-camera: read %1 of %2 views")
-                          .arg(i + 1)
-                          .arg(files.size()));
+        printProgress(
+            QStringLiteral("calibrate-camera: read %1 of %2 views").arg(i + 1).arg(files.size()));
     }
     printProgress(QString());
     if (interrupted()) {
@@ -130,13 +130,14 @@ int calibrateCameraCommand(const QStringList& arguments) {
     } else {
         QString text;
         for (const devices::LensView& v : lens->views) {
-            text += v.found ? QStringLiteral("  %1: %2 px\n").arg(v.name).arg(v.errorPixels, 0,
-                                                                              'f', 3)
-                            : QStringLiteral("  %1: no board found\n").arg(v.name);
+            text += v.found
+                        ? QStringLiteral("  %1: %2 px\n").arg(v.name).arg(v.errorPixels, 0, 'f', 3)
+                        : QStringLiteral("  %1: no board found\n").arg(v.name);
         }
-        text += QStringLiteral("%1 of %2 views used; RMS reprojection error %3 px\n"
-                               "fx %4, fy %5, cx %6, cy %7 px; k1 %8, k2 %9, p1 %10, p2 %11, "
-                               "k3 %12\nwrote %13\n")
+        text += QStringLiteral(
+                    "%1 of %2 views used; RMS reprojection error %3 px\n"
+                    "fx %4, fy %5, cx %6, cy %7 px; k1 %8, k2 %9, p1 %10, p2 %11, "
+                    "k3 %12\nwrote %13\n")
                     .arg(lens->views.size() - missing.size())
                     .arg(lens->views.size())
                     .arg(lens->rmsPixels, 0, 'f', 3)
@@ -206,15 +207,16 @@ int calibrateFloorCommand(const QStringList& arguments) {
             ok = ok && std::isfinite(v[k]);
         }
         if (!ok) {
-            if (points.empty() && !row.isEmpty() && !std::isdigit(static_cast<unsigned char>(row[0])) &&
-                row[0] != '-' && row[0] != '+' && row[0] != '.') {
+            if (points.empty() && !row.isEmpty() &&
+                !std::isdigit(static_cast<unsigned char>(row[0])) && row[0] != '-' &&
+                row[0] != '+' && row[0] != '.') {
                 continue;  // a header line
             }
-            throw UsageError(core::printable(
-                QStringLiteral("%1:%2: '%3' is not four numbers u, v, x, y")
-                    .arg(pointsPath)
-                    .arg(i + 1)
-                    .arg(QString::fromUtf8(row.left(80)))));
+            throw UsageError(
+                core::printable(QStringLiteral("%1:%2: '%3' is not four numbers u, v, x, y")
+                                    .arg(pointsPath)
+                                    .arg(i + 1)
+                                    .arg(QString::fromUtf8(row.left(80)))));
         }
         points.push_back({{v[0], v[1]}, {v[2], v[3]}});
     }

@@ -180,7 +180,8 @@ void addVerboseOption(CommandLine& line) {
 void applyVerbosity(const CommandLine& line) {
     if (!line.isSet(QStringLiteral("verbose"))) {
         // Warnings (a port lost) still show: only the notes of things going as they should go.
-        QLoggingCategory::setFilterRules(QStringLiteral("prisca.*.info=false\nprisca.*.debug=false"));
+        QLoggingCategory::setFilterRules(
+            QStringLiteral("prisca.*.info=false\nprisca.*.debug=false"));
     }
 }
 

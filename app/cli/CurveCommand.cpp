@@ -93,8 +93,9 @@ int curveCommand(const QStringList& arguments) {
     QString plant;
     if (line.isSet("styles")) {
         if (line.isSet("demo") || line.isSet("demo-seed")) {
-            throw UsageError(QStringLiteral("--styles records its own demonstrations; it does not "
-                                            "take --demo or --demo-seed"));
+            throw UsageError(
+                QStringLiteral("--styles records its own demonstrations; it does not "
+                               "take --demo or --demo-seed"));
         }
         plant = checkedPlant(line.value("plant"));
         styles = stylesOption(line, plant);
@@ -187,8 +188,9 @@ int curveCommand(const QStringList& arguments) {
         QJsonObject entry{{"method", method.method},
                           {"finalMean", std::isfinite(final) ? QJsonValue(final) : QJsonValue()},
                           {"runs", static_cast<int>(method.runs.size())}};
-        text += QStringLiteral("%1: tracking error of the last trial within %2 steps: %3 (mean "
-                               "of %4 runs)\n")
+        text += QStringLiteral(
+                    "%1: tracking error of the last trial within %2 steps: %3 (mean "
+                    "of %4 runs)\n")
                     .arg(method.method, -8)
                     .arg(settings.budgetSteps)
                     .arg(final, 0, 'g', 4)
@@ -200,11 +202,12 @@ int curveCommand(const QStringList& arguments) {
                     continue;
                 }
                 const double styleFinal = finalMean(perStyle[s][i]);
-                byStyle.append(QJsonObject{
-                    {"style", styles[s]},
-                    {"finalMean", std::isfinite(styleFinal) ? QJsonValue(styleFinal)
-                                                            : QJsonValue()}});
-                text += QStringLiteral("    %1: %2\n").arg(styles[s], -22).arg(styleFinal, 0, 'g', 4);
+                byStyle.append(
+                    QJsonObject{{"style", styles[s]},
+                                {"finalMean", std::isfinite(styleFinal) ? QJsonValue(styleFinal)
+                                                                        : QJsonValue()}});
+                text +=
+                    QStringLiteral("    %1: %2\n").arg(styles[s], -22).arg(styleFinal, 0, 'g', 4);
             }
             entry.insert(QStringLiteral("styles"), byStyle);
         }

@@ -51,12 +51,13 @@ int demoCommand(const QStringList& arguments) {
         }
         return 0;
     }
-    const QString style = line.isSet("style") ? line.value("style")
-                                              : sim::DemonstrationStyles::classic(plantName);
+    const QString style =
+        line.isSet("style") ? line.value("style") : sim::DemonstrationStyles::classic(plantName);
     if (!sim::DemonstrationStyles::contains(plantName, style)) {
-        throw UsageError(QStringLiteral("--style: unknown %1 style '%2' (one of: %3)")
-                             .arg(plantName, style,
-                                  sim::DemonstrationStyles::names(plantName).join(QLatin1Char(' '))));
+        throw UsageError(
+            QStringLiteral("--style: unknown %1 style '%2' (one of: %3)")
+                .arg(plantName, style,
+                     sim::DemonstrationStyles::names(plantName).join(QLatin1Char(' '))));
     }
     const QString out = line.required("out");
     const auto seed =
@@ -68,16 +69,14 @@ int demoCommand(const QStringList& arguments) {
     sim::RecordingConditions conditions;
     conditions.parameters = parameters.get();
     if (line.isSet("day")) {
-        conditions.perturbation = sim::Perturbation::dayOf(
-            static_cast<std::uint64_t>(line.integer("day", 0, 1LL << 62)));
+        conditions.perturbation =
+            sim::Perturbation::dayOf(static_cast<std::uint64_t>(line.integer("day", 0, 1LL << 62)));
     }
     core::Demonstration demonstration =
         sim::DemonstrationStyles::record(plantName, style, seed, timing, conditions);
-    demonstration.metadata.insert(QStringLiteral("source"),
-                                  QStringLiteral("prisca-cli demo, style %1, seed %2, %3 Hz")
-                                      .arg(style)
-                                      .arg(seed)
-                                      .arg(rate));
+    demonstration.metadata.insert(
+        QStringLiteral("source"),
+        QStringLiteral("prisca-cli demo, style %1, seed %2, %3 Hz").arg(style).arg(seed).arg(rate));
     if (parameters) {
         demonstration.metadata.insert(QStringLiteral("plant-parameters"), parameters->source);
     }
@@ -90,8 +89,9 @@ int demoCommand(const QStringList& arguments) {
         throw UsageError(QStringLiteral("the %1 demonstration on %2 left the numbers a "
                                         "demonstration holds (%3): %4; nothing was written to %5")
                              .arg(style,
-                                  parameters ? QStringLiteral("the plant file %1").arg(parameters->source)
-                                             : QStringLiteral("the catalog %1").arg(plantName),
+                                  parameters
+                                      ? QStringLiteral("the plant file %1").arg(parameters->source)
+                                      : QStringLiteral("the catalog %1").arg(plantName),
                                   invalid,
                                   parameters ? QStringLiteral("its parameters do not make a plant "
                                                               "this manoeuvre can drive")

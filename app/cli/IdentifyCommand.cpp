@@ -170,11 +170,12 @@ int identifyCommand(const QStringList& arguments) {
     }
     const QJsonObject report = reportJson(result, out, sources);
     // The plant file, with the identification's report kept beside the values.
-    writeOutput(out,
-                sim::identifiedPlantFile(result, QStringLiteral("identified from %1")
-                                                     .arg(sources.join(QStringLiteral(", "))),
-                                         sources),
-                true);
+    writeOutput(
+        out,
+        sim::identifiedPlantFile(
+            result, QStringLiteral("identified from %1").arg(sources.join(QStringLiteral(", "))),
+            sources),
+        true);
     if (line.format() == QLatin1String("json")) {
         printJson(report);
     } else {

@@ -23,7 +23,9 @@ int linkCommand(const QStringList& arguments) {
                        "rate, then failsafe (throttle neutral, steering centred) and close. "
                        "Ctrl-C stops at once, in failsafe."));
     line.addValue("port", "Serial device path (e.g. /dev/ttyUSB0, or a pseudo-terminal).", "path");
-    line.addValue("protocol", "crsf, sbus, multiprotocol or ppm-bridge (SBUS to the trainer-port bridge).", "name", "crsf");
+    line.addValue("protocol",
+                  "crsf, sbus, multiprotocol or ppm-bridge (SBUS to the trainer-port bridge).",
+                  "name", "crsf");
     line.addValue("baud",
                   "Baud rate (default: the protocol's: crsf 420000, sbus and "
                   "multiprotocol 100000 8E2).",
@@ -44,8 +46,9 @@ int linkCommand(const QStringList& arguments) {
     settings.port = line.required("port");
     const auto protocol = devices::parseProtocol(line.value("protocol"));
     if (!protocol) {
-        throw UsageError(QStringLiteral("--protocol: '%1' is not crsf, sbus, multiprotocol or ppm-bridge")
-                             .arg(line.value("protocol")));
+        throw UsageError(
+            QStringLiteral("--protocol: '%1' is not crsf, sbus, multiprotocol or ppm-bridge")
+                .arg(line.value("protocol")));
     }
     settings.protocol = *protocol;
     settings.baud = static_cast<int>(line.integer("baud", 0, 10000000));
@@ -117,12 +120,12 @@ int linkCommand(const QStringList& arguments) {
     const long long frames = link.framesSent();
     const long long failsafeFrames = frames - beforeFailsafe;
     if (interrupted()) {
-        std::fprintf(stderr, "prisca-cli: link: stopped by %s; %s\n",
-                     interruptionName().toLatin1().constData(),
-                     failsafeFrames > 0
-                         ? qPrintable(QStringLiteral("ended in failsafe (%1 frames)")
-                                          .arg(failsafeFrames))
-                         : "no failsafe frame could go out (the port was gone)");
+        std::fprintf(
+            stderr, "prisca-cli: link: stopped by %s; %s\n",
+            interruptionName().toLatin1().constData(),
+            failsafeFrames > 0
+                ? qPrintable(QStringLiteral("ended in failsafe (%1 frames)").arg(failsafeFrames))
+                : "no failsafe frame could go out (the port was gone)");
     }
     const double seconds = clock.elapsed() / 1000.0;
     if (frames == 0) {

@@ -20,8 +20,8 @@ int replayCommand(const QStringList& arguments) {
     }
     const QStringList positional = line.positionalArguments();
     if (positional.size() != 1) {
-        throw UsageError(QStringLiteral("replay needs one bundle folder, %1 given")
-                             .arg(positional.size()));
+        throw UsageError(
+            QStringLiteral("replay needs one bundle folder, %1 given").arg(positional.size()));
     }
     QString error;
     const auto bundle = rig::TrialBundle::load(positional.front(), &error);
@@ -33,8 +33,9 @@ int replayCommand(const QStringList& arguments) {
         printJson(summary);
         return 0;
     }
-    QString text = QStringLiteral("%1 trial, %2, %3 s: %4 samples (%5 with a pose, %6 in "
-                                  "failsafe), %7 frames%8\n")
+    QString text = QStringLiteral(
+                       "%1 trial, %2, %3 s: %4 samples (%5 with a pose, %6 in "
+                       "failsafe), %7 frames%8\n")
                        .arg(summary.value("kind").toString(), summary.value("method").toString())
                        .arg(summary.value("seconds").toDouble(), 0, 'f', 2)
                        .arg(summary.value("samples").toInt())

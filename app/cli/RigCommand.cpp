@@ -32,8 +32,8 @@ constexpr double kNeutralSlack = 2.0 / 512.0;
 
 // Waits until `done` holds, the user interrupts (unless `untilInterrupted` is false: the
 // closing wait must see the link closed), or the camera fails; returns `done()`.
-using Wait = std::function<bool(const std::function<bool()>& done, int timeoutMs,
-                                bool untilInterrupted)>;
+using Wait =
+    std::function<bool(const std::function<bool()>& done, int timeoutMs, bool untilInterrupted)>;
 
 void declareRigOptions(CommandLine& line) {
     line.addFlag("virtual", "The virtual rig (the only rig this command drives).");
@@ -66,8 +66,8 @@ void declareRigOptions(CommandLine& line) {
                   "A fence on the floor, its corners in order: \"x,y;x,y;x,y...\" [m]. A car "
                   "outside it ends the trial in failsafe.",
                   "polygon");
-    line.addValue("max-speed", "A speed over this ends the trial in failsafe (0: no limit).",
-                  "m/s", "0");
+    line.addValue("max-speed", "A speed over this ends the trial in failsafe (0: no limit).", "m/s",
+                  "0");
     line.addValue("max-lost", "A track lost for longer ends the trial in failsafe (0: no limit).",
                   "s", "0");
     addPlantParametersOption(line);
@@ -181,7 +181,7 @@ QJsonArray checkBeforeTrials(const rig::PreTrialCheck& check, bool text) {
                                      {"blocking", item.blocking},
                                      {"detail", item.detail}});
         checkText << QStringLiteral("  %1 %2: %3")
-                         .arg(item.ok ? QStringLiteral("ok  ")
+                         .arg(item.ok         ? QStringLiteral("ok  ")
                               : item.blocking ? QStringLiteral("FAIL")
                                               : QStringLiteral("note"),
                               item.label, item.detail);
@@ -193,8 +193,8 @@ QJsonArray checkBeforeTrials(const rig::PreTrialCheck& check, bool text) {
                              .arg(check.missingLabels(), check.missingDetails()));
     }
     if (text) {
-        printText(QStringLiteral("pre-trial check: ready\n%1\n")
-                      .arg(checkText.join(QLatin1Char('\n'))));
+        printText(
+            QStringLiteral("pre-trial check: ready\n%1\n").arg(checkText.join(QLatin1Char('\n'))));
     }
     return checkJson;
 }
@@ -368,10 +368,9 @@ int rigCommand(const QStringList& arguments) {
     const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
     sim::RecordingConditions conditions;  // the scripted operator drives the same car
     conditions.parameters = parameters.get();
-    Task task =
-        loadOrDemonstrate(QStringLiteral("slidecar"), line.value("demo"),
-                          static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)),
-                          conditions);
+    Task task = loadOrDemonstrate(
+        QStringLiteral("slidecar"), line.value("demo"),
+        static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
     task.plantParameters = parameters;
     applyMethodParameters(line, task.profile, parameters != nullptr);
     const devices::Geofence fence = fenceOption(line);
@@ -488,9 +487,10 @@ int rigCommand(const QStringList& arguments) {
                               {"bundles", QJsonArray::fromStringList(bundles)}});
     }
     if (!interrupted() && devices::processfailsafe::held()) {
-        throw UsageError(QStringLiteral("the process was stopped and continued, so the link held "
-                                        "failsafe and no further trial started; start the rig "
-                                        "again to drive"));
+        throw UsageError(
+            QStringLiteral("the process was stopped and continued, so the link held "
+                           "failsafe and no further trial started; start the rig "
+                           "again to drive"));
     }
     return interrupted() ? interruptedExitCode() : 0;
 }

@@ -1,10 +1,10 @@
 // prisca-cli run: PRISCA or a baseline on a simulated plant, trial after trial, with a run log.
 #include "app/cli/CliSupport.h"
-#include "rig/TrialBundle.h"
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "app/figures/PaperFigures.h"
 #include "core/RunLogCsv.h"
+#include "rig/TrialBundle.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
 #include "sim/MethodTraining.h"
@@ -109,8 +109,8 @@ int runCommand(const QStringList& arguments) {
 
     // Offline-tuned methods train first, on their own seeds.
     const auto build = [&](const sim::RunSetup& setup) {
-        auto controller = setup.makeController(
-            {}, [](const QString& text) { printProgress(text); });
+        auto controller =
+            setup.makeController({}, [](const QString& text) { printProgress(text); });
         if (setup.method().trainsOffline()) {
             printProgress(QString());
         }
@@ -181,16 +181,17 @@ int runCommand(const QStringList& arguments) {
         sim::appendRunLogTrial(log, trial, result, demo.dt);
         const sim::TrialSummary summary = sim::summarizeTrial(info, demo, result);
         if (line.isSet("bundle-dir") && bundleFailure.isEmpty()) {
-            const QString folder = QDir(line.value("bundle-dir"))
-                                       .filePath(QStringLiteral("%1-trial-%2").arg(method).arg(trial));
+            const QString folder =
+                QDir(line.value("bundle-dir"))
+                    .filePath(QStringLiteral("%1-trial-%2").arg(method).arg(trial));
             QString bundleError;
-            if (!rig::writeSimulationBundle(folder,
-                                            {{"method", method},
-                                             {"trial", trial},
-                                             {"seed", static_cast<double>(seed)}},
-                                            info, demo, result, summary, &bundleError)) {
+            if (!rig::writeSimulationBundle(
+                    folder,
+                    {{"method", method}, {"trial", trial}, {"seed", static_cast<double>(seed)}},
+                    info, demo, result, summary, &bundleError)) {
                 // The run goes on and its log is written: a bundle costs no trial's record.
-                bundleFailure = QStringLiteral("--bundle-dir: trial %1: %2").arg(trial).arg(bundleError);
+                bundleFailure =
+                    QStringLiteral("--bundle-dir: trial %1: %2").arg(trial).arg(bundleError);
             }
         }
         rms.push_back(summary.trackingRms);
@@ -243,8 +244,9 @@ int runCommand(const QStringList& arguments) {
     }
     core::FileError error;
     if (!core::writeRunLogCsv(log, out, &error)) {
-        throw UsageError(bundleFailure.isEmpty() ? error.toString()
-                                                 : error.toString() + QStringLiteral("; ") + bundleFailure);
+        throw UsageError(bundleFailure.isEmpty()
+                             ? error.toString()
+                             : error.toString() + QStringLiteral("; ") + bundleFailure);
     }
     if (!bundleFailure.isEmpty()) {
         throw UsageError(QStringLiteral("%1 (no bundle was written after it; the run log %2 "

@@ -13,7 +13,6 @@
 #include "sim/Table1Experiment.h"
 #include "sim/Table1Protocol.h"
 
-
 #include <QDir>
 
 #include <algorithm>
@@ -100,20 +99,20 @@ QByteArray learningCurveCsv(const std::vector<sim::TrialCurve>& curves) {
         for (size_t i = 0; i < curve.position.size(); ++i) {
             const core::MeanInterval p = core::meanInterval(curve.position[i]);
             const core::MeanInterval o = core::meanInterval(curve.orientation[i]);
-            csv += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
-                       .arg(curve.method)
-                       .arg(i + 1)
-                       .arg(static_cast<int>(i) < curve.trainingTrials
-                                ? QStringLiteral("training")
-                                : QStringLiteral("evaluation"))
-                       .arg(p.count)
-                       .arg(p.mean, 0, 'g', 8)
-                       .arg(p.lower, 0, 'g', 8)
-                       .arg(p.upper, 0, 'g', 8)
-                       .arg(o.mean, 0, 'g', 8)
-                       .arg(o.lower, 0, 'g', 8)
-                       .arg(o.upper, 0, 'g', 8)
-                       .toUtf8();
+            csv +=
+                QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10\n")
+                    .arg(curve.method)
+                    .arg(i + 1)
+                    .arg(static_cast<int>(i) < curve.trainingTrials ? QStringLiteral("training")
+                                                                    : QStringLiteral("evaluation"))
+                    .arg(p.count)
+                    .arg(p.mean, 0, 'g', 8)
+                    .arg(p.lower, 0, 'g', 8)
+                    .arg(p.upper, 0, 'g', 8)
+                    .arg(o.mean, 0, 'g', 8)
+                    .arg(o.lower, 0, 'g', 8)
+                    .arg(o.upper, 0, 'g', 8)
+                    .toUtf8();
         }
     }
     return csv;
@@ -249,8 +248,7 @@ int table1ProtocolCommand(const CommandLine& line) {
         caption += QStringLiteral(" (interrupted: only the cells that finished)");
     }
     if (line.isSet("learning-out")) {
-        writeOutput(line.value("learning-out"), learningCurveCsv(result.curves),
-                    !result.cancelled);
+        writeOutput(line.value("learning-out"), learningCurveCsv(result.curves), !result.cancelled);
     }
     if (line.isSet("learning-plot")) {
         saveFigureOutput(learningCurvePlot(result.curves), line.value("learning-plot"),

@@ -178,8 +178,7 @@ void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
     if (line.isSet("start")) {
         const QString start = line.value("start");
         if (start != QLatin1String("demo") && start != QLatin1String("tuned")) {
-            throw UsageError(
-                QStringLiteral("--start: '%1' is not one of: demo tuned").arg(start));
+            throw UsageError(QStringLiteral("--start: '%1' is not one of: demo tuned").arg(start));
         }
         sim::MethodCatalog::setParameter(profile, QStringLiteral("start=") + start);
     }
@@ -236,8 +235,8 @@ void readRunSettings(const CommandLine& line, sim::RunSettings& settings, bool t
     if (const auto parsed = sim::perturbationModelFromName(model)) {
         settings.perturbationModel = *parsed;
     } else {
-        throw UsageError(QStringLiteral("--perturbation-model: '%1' is not one of session, trial")
-                             .arg(model));
+        throw UsageError(
+            QStringLiteral("--perturbation-model: '%1' is not one of session, trial").arg(model));
     }
     const QString filter = line.value("pose-filter");
     if (filter != QLatin1String("on") && filter != QLatin1String("lagged") &&

@@ -3,9 +3,9 @@
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/MethodTuning.h"
 #include "sim/Plant.h"
 #include "sim/PlantParameters.h"
-#include "sim/MethodTuning.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
 
@@ -65,10 +65,9 @@ QStringList stylesOption(const CommandLine& line, const QString& plant);
 /// (sim::MethodCatalog::parameters()); and --start demo|tuned, the law PRISCA and the PD
 /// family start from (the parameter `start`).
 void addMethodParameterOptions(CommandLine& line);
-/// Applies --start, then every --param to the profile, in order; UsageError naming the parameter, the value
-/// and what is allowed.
-/// A plant from a file (`plantFromFile`) starts from the demonstration unless --start says
-/// otherwise.
+/// Applies --start, then every --param to the profile, in order; UsageError naming the parameter,
+/// the value and what is allowed. A plant from a file (`plantFromFile`) starts from the
+/// demonstration unless --start says otherwise.
 void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
                            bool plantFromFile = false);
 

@@ -38,8 +38,8 @@ QStringList parkingFigureMethods() {
 plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, double carWidth) {
     plot::Figure figure;
     figure.size = QSize(1500, 1000);
-    figure.title =
-        QCoreApplication::translate("PaperFigures", "Slide parking: every trial's path and end posture (lot dashed red)");
+    figure.title = QCoreApplication::translate(
+        "PaperFigures", "Slide parking: every trial's path and end posture (lot dashed red)");
     const QStringList shown = parkingFigureMethods();
     const QColor colours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e),
                               QColor(0x2c, 0xa0, 0x2c)};
@@ -54,7 +54,8 @@ plot::Figure parkingFigure(const sim::Table1Result& result, double carLength, do
             continue;
         plot::Axes whole, close;
         whole.title = sim::MethodCatalog::get(shown[i]).label;
-        close.title = sim::MethodCatalog::get(shown[i]).label + QCoreApplication::translate("PaperFigures", ": close-up of the lot");
+        close.title = sim::MethodCatalog::get(shown[i]).label +
+                      QCoreApplication::translate("PaperFigures", ": close-up of the lot");
         for (plot::Axes* axes : {&whole, &close}) {
             axes->xLabel = QCoreApplication::translate("PaperFigures", "x [cm]");
             axes->yLabel = QCoreApplication::translate("PaperFigures", "y [cm]");
@@ -128,7 +129,8 @@ plot::Figure lemma41Figure(const std::vector<core::Lemma41Cell>& grid, int maxHo
     plot::Figure figure;
     figure.size = QSize(1000, 800);
     plot::Axes axes;
-    axes.title = QCoreApplication::translate("PaperFigures", "Lemma 4.1: Var(D) over \u03c4' = 2H steps");
+    axes.title =
+        QCoreApplication::translate("PaperFigures", "Lemma 4.1: Var(D) over \u03c4' = 2H steps");
     axes.xLabel = QStringLiteral("\u03b3");
     axes.yLabel = QStringLiteral("H [steps]");
     plot::Heatmap map;
@@ -162,7 +164,8 @@ plot::Figure trajectoryFigure(const std::vector<QPointF>& desired,
             }
             return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
         };
-        axes.title = QCoreApplication::translate("PaperFigures", "%1: RMS %2 m in time, %3 m to the path (mean of %4)")
+        axes.title = QCoreApplication::translate(
+                         "PaperFigures", "%1: RMS %2 m in time, %3 m to the path (mean of %4)")
                          .arg(sim::MethodCatalog::get(panel.method).label)
                          .arg(mean(panel.rms), 0, 'f', 2)
                          .arg(mean(panel.pathRms), 0, 'f', 2)

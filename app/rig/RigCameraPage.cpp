@@ -20,8 +20,8 @@
 
 namespace prisca::app {
 
-RigCameraPage::RigCameraPage(rig::RigSession& rig, rig::RigCalibration& setup,
-                             LabSession& session, CameraView& view, QWidget* parent)
+RigCameraPage::RigCameraPage(rig::RigSession& rig, rig::RigCalibration& setup, LabSession& session,
+                             CameraView& view, QWidget* parent)
     : QWidget(parent),
       rig_(rig),
       setup_(setup),
@@ -119,9 +119,10 @@ RigCameraPage::RigCameraPage(rig::RigSession& rig, rig::RigCalibration& setup,
         if (on) {
             setup_.beginFloorPoints();
             showStatus(calibrationInfo_, tr("Floor calibration"), [] {
-                return tr("Calibrating: click a mark on the camera image whose floor position you "
-                          "know, then type it (x, y in metres). Four or more marks spread over "
-                          "the floor; the fit updates with each. Click Calibrate again when done.");
+                return tr(
+                    "Calibrating: click a mark on the camera image whose floor position you "
+                    "know, then type it (x, y in metres). Four or more marks spread over "
+                    "the floor; the fit updates with each. Click Calibrate again when done.");
             });
         }
         emit calibratingChanged(on);
@@ -243,9 +244,9 @@ void RigCameraPage::addCalibrationPoint(const QPointF& image, const QPointF& flo
 }
 
 void RigCameraPage::askFloorPoint(const QPointF& image) {
-    const std::optional<QString> answer = ModalDialog::text(
-        this, tr("Floor point"),
-        tr("Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):"));
+    const std::optional<QString> answer =
+        ModalDialog::text(this, tr("Floor point"),
+                          tr("Where is this point on the floor? x, y in metres (e.g. 1.5, -0.2):"));
     if (!answer) {
         return;
     }

@@ -194,7 +194,7 @@ void RigPanel::setClickMode() {
     const bool floor = cameraPage_->calibrating();
     // What to do, on the image itself and on the panel.
     view_->setClickHint(fence   ? tr("Fence: click its corners in order around the floor; "
-                                     "click Draw fence again to finish")
+                                       "click Draw fence again to finish")
                         : floor ? tr("Floor calibration: click a point of known floor position")
                                 : QString());
     view_->setCalibrating(fence || floor);
@@ -331,8 +331,9 @@ void RigPanel::showReadiness() {
     QStringList advice;
     for (const rig::PreTrialItem& item : check.items) {
         lines << QStringLiteral("%1 %2: %3")
-                     .arg(item.ok ? QStringLiteral("✓") : item.blocking ? QStringLiteral("✗")
-                                                                        : QStringLiteral("!"),
+                     .arg(item.ok         ? QStringLiteral("✓")
+                          : item.blocking ? QStringLiteral("✗")
+                                          : QStringLiteral("!"),
                           item.label, item.detail);
         if (!item.ok && !item.blocking) {
             advice << item.label;
@@ -501,9 +502,8 @@ void RigPanel::emitStatus() {
                        .arg(linkPage_->protocolName(), devices::failsafeReasonText(link.failsafe));
         linkAlarm = link.failsafe != devices::FailsafeReason::NoCommand;
     } else {
-        linkText = tr("Link: %1 %2/s")
-                       .arg(linkPage_->protocolName())
-                       .arg(link.measuredRateHz, 0, 'f', 0);
+        linkText =
+            tr("Link: %1 %2/s").arg(linkPage_->protocolName()).arg(link.measuredRateHz, 0, 'f', 0);
     }
     QString cameraText;
     bool cameraAlarm = false;
@@ -585,8 +585,9 @@ void RigPanel::retranslateUi() {
            "camera's pose as its state"));
     stopTrial_->setText(tr("Stop the trial"));
     putBack_->setText(tr("Put the car back"));
-    putBack_->setToolTip(tr("The virtual car back at its start, at rest (after a trial that "
-                            "left it out of view)"));
+    putBack_->setToolTip(
+        tr("The virtual car back at its start, at rest (after a trial that "
+           "left it out of view)"));
     tabs_->setTabText(0, tr("Camera and floor"));
     tabs_->setTabText(1, tr("Link"));
     tabs_->setTabText(2, tr("Lens, latency, fence"));

@@ -95,7 +95,6 @@ class RigPanel : public QWidget {
     void replayRequested(const QString& folder);
 
   public:
-
     const devices::FloorCalibration& calibration() const { return rig_.calibration(); }
     std::optional<devices::PlanarPose> lastPose() const { return rig_.lastPose(); }
     long long framesSeen() const { return rig_.framesSeen(); }
@@ -187,7 +186,7 @@ class RigPanel : public QWidget {
     QPushButton* drive_;
     QPushButton* runTrial_;
     QPushButton* stopTrial_;
-    QLabel* readiness_;  ///< ready / not ready for a trial, and what is missing
+    QLabel* readiness_;     ///< ready / not ready for a trial, and what is missing
     QPushButton* putBack_;  ///< the virtual car back at its start
     QLabel* trialInfo_;
     DrivingInput* driving_ = nullptr;

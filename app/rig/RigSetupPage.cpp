@@ -225,9 +225,8 @@ bool RigSetupPage::fitLens() {
     view_.setBoardCorners({});
     view_.setCalibration(rig_.calibration());
     showLens();
-    const QString path = ModalDialog::saveFileName(this, tr("Save camera intrinsics"),
-                                                   QStringLiteral("camera.json"),
-                                                   tr("Camera (*.json)"));
+    const QString path = ModalDialog::saveFileName(
+        this, tr("Save camera intrinsics"), QStringLiteral("camera.json"), tr("Camera (*.json)"));
     QString error;
     if (!path.isEmpty() && !setup_.saveLens(path, &error)) {
         warningBox(this, tr("Save camera intrinsics"), error);
@@ -276,8 +275,9 @@ void RigSetupPage::declareLoopLatency(double milliseconds) {
     } else if (rig_.loopLatencySource() == rig::LatencySource::Declared) {
         rig_.setLoopLatency(std::nullopt);
         showStatus(latencyInfo_, tr("Latency"), [] {
-            return tr("Loop latency: not declared any more (the controllers assume the "
-                      "profile's camera latency).");
+            return tr(
+                "Loop latency: not declared any more (the controllers assume the "
+                "profile's camera latency).");
         });
     }
     emit latencyChanged();
@@ -334,23 +334,27 @@ void RigSetupPage::changeEvent(QEvent* event) {
 
 void RigSetupPage::retranslateUi() {
     captureBoard_->setText(tr("Capture board view"));
-    captureBoard_->setToolTip(tr("Find the 9 x 6 chessboard (40 mm squares) in the camera's "
-                                 "image and keep its corners; capture views over the whole "
-                                 "image, tilted, its corners too"));
+    captureBoard_->setToolTip(
+        tr("Find the 9 x 6 chessboard (40 mm squares) in the camera's "
+           "image and keep its corners; capture views over the whole "
+           "image, tilted, its corners too"));
     fitLens_->setText(tr("Fit lens"));
-    fitLens_->setToolTip(tr("Fit the camera's intrinsics and distortion to the views captured; "
-                            "the floor calibration is fitted again through them"));
+    fitLens_->setToolTip(
+        tr("Fit the camera's intrinsics and distortion to the views captured; "
+           "the floor calibration is fitted again through them"));
     loadLens_->setText(tr("Load lens..."));
     loadLens_->setToolTip(tr("Camera intrinsics from a file (prisca-cli calibrate-camera)"));
     measureLatency_->setText(tr("Measure latency"));
-    measureLatency_->setToolTip(tr("With the car at rest in view and the link connected: step "
-                                   "the throttle forward and back and time the response in "
-                                   "the camera"));
+    measureLatency_->setToolTip(
+        tr("With the car at rest in view and the link connected: step "
+           "the throttle forward and back and time the response in "
+           "the camera"));
     declaredLatencyLabel_->setText(tr("or declare:"));
     declaredLatency_->setSuffix(tr(" ms"));
     declaredLatency_->setSpecialValueText(tr("not declared"));
-    declaredLatency_->setToolTip(tr("A latency measured elsewhere [ms], for the trials to "
-                                    "compensate; 0: not declared"));
+    declaredLatency_->setToolTip(
+        tr("A latency measured elsewhere [ms], for the trials to "
+           "compensate; 0: not declared"));
     drawFence_->setText(tr("Draw fence"));
     clearFence_->setText(tr("Clear fence"));
     maxSpeedLabel_->setText(tr("Speed limit:"));
@@ -365,8 +369,9 @@ void RigSetupPage::retranslateUi() {
     replayLast_->setText(tr("Replay the last trial"));
     showLens();
     if (latencyInfo_->text().isEmpty() || !rig_.loopLatency()) {
-        latencyInfo_->setText(tr("Loop latency: not measured (the controllers assume the "
-                                 "camera's latency)."));
+        latencyInfo_->setText(
+            tr("Loop latency: not measured (the controllers assume the "
+               "camera's latency)."));
     }
     showFence();
 }

@@ -22,8 +22,8 @@ MethodParameter integer(const char* name, const char* label, const char* unit, d
     return p;
 }
 
-MethodParameter real(const char* name, const char* label, const char* unit, double low,
-                     double high, int decimals, const char* help) {
+MethodParameter real(const char* name, const char* label, const char* unit, double low, double high,
+                     int decimals, const char* help) {
     MethodParameter p = integer(name, label, unit, low, high, help);
     p.kind = Kind::Real;
     p.decimals = decimals;

@@ -24,8 +24,8 @@ using Kind = MethodParameter::Kind;
 Eigen::VectorXd one(double v);
 MethodParameter integer(const char* name, const char* label, const char* unit, double low,
                         double high, const char* help);
-MethodParameter real(const char* name, const char* label, const char* unit, double low,
-                     double high, int decimals, const char* help);
+MethodParameter real(const char* name, const char* label, const char* unit, double low, double high,
+                     int decimals, const char* help);
 MethodParameter onOff(const char* name, const char* label, const char* help);
 MethodSpec entry(const char* id, const char* label, MethodSpec::Create create);
 
@@ -49,15 +49,15 @@ Eigen::MatrixXd reverseSchedule(const MethodTuning& profile,
 OracleParameters plannerFor(const MethodTuning& profile, const core::Demonstration& demonstration);
 
 // ---- The methods, each with its declarations ----------------------------------------------------
-MethodSpec priscaMethod();                // PriscaMethods.cpp
-MethodSpec priscaPaperMethod();           // PriscaMethods.cpp
+MethodSpec priscaMethod();                  // PriscaMethods.cpp
+MethodSpec priscaPaperMethod();             // PriscaMethods.cpp
 std::vector<MethodSpec> pdFamilyMethods();  // FeedbackMethods.cpp
-MethodSpec playbackMethod();              // FeedbackMethods.cpp
-MethodSpec lqrMethod();                   // LqrMethod.cpp
-MethodSpec pgsdMethod();                  // LearningMethods.cpp
-MethodSpec pegasusMethod();               // LearningMethods.cpp
-MethodSpec ilcMethod();                   // LearningMethods.cpp
-MethodSpec mpcMethod();                   // PlanningMethods.cpp
-MethodSpec oracleMethod();                // PlanningMethods.cpp
+MethodSpec playbackMethod();                // FeedbackMethods.cpp
+MethodSpec lqrMethod();                     // LqrMethod.cpp
+MethodSpec pgsdMethod();                    // LearningMethods.cpp
+MethodSpec pegasusMethod();                 // LearningMethods.cpp
+MethodSpec ilcMethod();                     // LearningMethods.cpp
+MethodSpec mpcMethod();                     // PlanningMethods.cpp
+MethodSpec oracleMethod();                  // PlanningMethods.cpp
 
 }  // namespace prisca::sim::methods

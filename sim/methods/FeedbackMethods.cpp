@@ -1,10 +1,11 @@
-// The feedback law's parameters, shared by every method that starts from it (the PD family, PRISCA's prior, ILC, MPC's fallback), and the PD family and the open-loop playback.
+// The feedback law's parameters, shared by every method that starts from it (the PD family,
+// PRISCA's prior, ILC, MPC's fallback), and the PD family and the open-loop playback.
 #include "sim/methods/Declarations.h"
 
+#include <QCoreApplication>
 #include "core/ActionPlayback.h"
 #include "core/PdController.h"
 #include "sim/MethodTuning.h"
-#include <QCoreApplication>
 
 namespace prisca::sim::methods {
 
@@ -63,7 +64,8 @@ const MethodParameter& feedbackReverseAware() {
 const MethodParameter& feedbackExplainedOnly() {
     static const MethodParameter p = [] {
         MethodParameter p = onOff(
-            "feedback.explained-only", QT_TRANSLATE_NOOP("MethodParameter", "Feedback where explained"),
+            "feedback.explained-only",
+            QT_TRANSLATE_NOOP("MethodParameter", "Feedback where explained"),
             QT_TRANSLATE_NOOP("MethodParameter",
                               "The feedback law (the PD family's, PRISCA's prior) acts only while "
                               "the reference is a sample the robust fit explains: not in a slide, "
@@ -130,10 +132,11 @@ const MethodParameter& matchingWindow() {
 
 const MethodParameter& pdKp() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "pd.kp", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kp"), "", 0, 1e4, 3,
-            QT_TRANSLATE_NOOP("MethodParameter", "Proportional gain per control on its error "
-                                                 "combination c_l · e (u = u* − Kp ε − Kd dε/dt)."));
+        MethodParameter p =
+            real("pd.kp", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kp"), "", 0, 1e4, 3,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "Proportional gain per control on its error "
+                                   "combination c_l · e (u = u* − Kp ε − Kd dε/dt)."));
         p.perChannel = true;
         p.get = [](const MethodTuning& f) -> Eigen::VectorXd { return f.pd.kp; };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pd.kp = v; };
@@ -144,10 +147,11 @@ const MethodParameter& pdKp() {
 
 const MethodParameter& pdKd() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "pd.kd", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kd"), "s", 0, 1e4, 3,
-            QT_TRANSLATE_NOOP("MethodParameter", "Derivative gain per control on the rate of "
-                                                 "its error combination."));
+        MethodParameter p =
+            real("pd.kd", QT_TRANSLATE_NOOP("MethodParameter", "PD gain Kd"), "s", 0, 1e4, 3,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "Derivative gain per control on the rate of "
+                                   "its error combination."));
         p.perChannel = true;
         p.get = [](const MethodTuning& f) -> Eigen::VectorXd { return f.pd.kd; };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pd.kd = v; };
@@ -160,8 +164,9 @@ const MethodParameter& pdHorizon() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
             "pd.H", QT_TRANSLATE_NOOP("MethodParameter", "PD smoothing H"), "steps", 0, 1000,
-            QT_TRANSLATE_NOOP("MethodParameter", "PD+H and PD+H+LSD smooth the error over this "
-                                                 "many steps (the weights of eq. 9)."));
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "PD+H and PD+H+LSD smooth the error over this "
+                              "many steps (the weights of eq. 9)."));
         p.get = [](const MethodTuning& f) { return one(f.pdHorizon); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.pdHorizon = static_cast<int>(v[0]);
@@ -181,7 +186,9 @@ Made makePdFamily(const MethodSpec& spec, const MethodInput& in) {
     const bool demoStart = in.profile.start == MethodTuning::Start::Demonstration;
     // The law derived from the demonstration smooths over PRISCA's horizon H (no tuned pd.H),
     // its lag counted in the loop's delay.
-    const int horizon = !smoothed ? 0 : demoStart ? in.profile.prisca.horizon : in.profile.pdHorizon;
+    const int horizon = !smoothed   ? 0
+                        : demoStart ? in.profile.prisca.horizon
+                                    : in.profile.pdHorizon;
     core::PdParameters gains = in.profile.startLaw(*in.demonstration, in.fittedB, horizon);
     auto pd = std::make_unique<core::PdController>(
         in.profile.trackingProblem(in.demonstration,
@@ -223,19 +230,23 @@ std::vector<MethodSpec> pdFamilyMethods() {
     family.push_back([] {
         MethodSpec s = entry("pd-h", "PD+H", &makePdFamily);
         s.summary = "PD on the error smoothed over H steps";
-        s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), pdHorizon()};
+        s.parameters = {start(),    feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(),
+                        pdHorizon()};
         return s;
     }());
     family.push_back([] {
         MethodSpec s = entry("pd-lsd", "PD+LSD", &makePdFamily);
         s.summary = "PD with the least-state-deviation reference";
-        s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), matchingWindow()};
+        s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(),
+                        pdKd(),  matchingWindow()};
         return s;
     }());
     family.push_back([] {
         MethodSpec s = entry("pd-h-lsd", "PD+H+LSD", &makePdFamily);
         s.summary = "PD with both";
-        s.parameters = {start(), feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(), pdHorizon(), matchingWindow()};
+        s.parameters = {
+            start(),     feedbackExplainedOnly(), feedbackReverseAware(), pdKp(), pdKd(),
+            pdHorizon(), matchingWindow()};
         return s;
     }());
     return family;

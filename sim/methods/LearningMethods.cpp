@@ -1,11 +1,12 @@
-// The learners the paper compares with: policy search by the signed derivative (PGSD), offline policy search on fixed scenarios (PEGASUS), iterative learning control (ILC).
+// The learners the paper compares with: policy search by the signed derivative (PGSD), offline
+// policy search on fixed scenarios (PEGASUS), iterative learning control (ILC).
 #include "sim/methods/Declarations.h"
 
+#include <QCoreApplication>
 #include "core/IlcController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
 #include "sim/MethodTuning.h"
-#include <QCoreApplication>
 
 namespace prisca::sim::methods {
 
@@ -27,9 +28,9 @@ const MethodParameter& pgsdHorizon() {
 
 const MethodParameter& pgsdStep() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "pgsd.alpha", QT_TRANSLATE_NOOP("MethodParameter", "PGSD step α"), "", 0, 1e6, 5,
-            QT_TRANSLATE_NOOP("MethodParameter", "The fixed step size of PGSD (no decay)."));
+        MethodParameter p =
+            real("pgsd.alpha", QT_TRANSLATE_NOOP("MethodParameter", "PGSD step α"), "", 0, 1e6, 5,
+                 QT_TRANSLATE_NOOP("MethodParameter", "The fixed step size of PGSD (no decay)."));
         p.get = [](const MethodTuning& f) { return one(f.pgsd.stepSize); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pgsd.stepSize = v[0]; };
         return p;
@@ -40,8 +41,7 @@ const MethodParameter& pgsdStep() {
 const MethodParameter& pgsdThetaBound() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
-            "pgsd.theta-bound", QT_TRANSLATE_NOOP("MethodParameter", "PGSD θ bound"), "", 0, 1e4,
-            2,
+            "pgsd.theta-bound", QT_TRANSLATE_NOOP("MethodParameter", "PGSD θ bound"), "", 0, 1e4, 2,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "If above 0, PGSD's θ is kept in |θ_i| ≤ bound after each update."));
         p.zeroMeans = QT_TRANSLATE_NOOP("MethodParameter", "none");
@@ -55,8 +55,8 @@ const MethodParameter& pgsdThetaBound() {
 const MethodParameter& pegasusIterations() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
-            "pegasus.iterations", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS iterations"), "",
-            0, 100000,
+            "pegasus.iterations", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS iterations"), "", 0,
+            100000,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "Gradient steps PEGASUS takes on its fixed scenarios before a run."));
         p.get = [](const MethodTuning& f) { return one(f.pegasusIterations); };
@@ -70,11 +70,12 @@ const MethodParameter& pegasusIterations() {
 
 const MethodParameter& pegasusScenarios() {
     static const MethodParameter p = [] {
-        MethodParameter p = integer(
-            "pegasus.scenarios", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS scenarios"), "", 1,
-            1000,
-            QT_TRANSLATE_NOOP("MethodParameter", "Fixed scenarios (start, perturbation, noise) "
-                                                 "each evaluation averages."));
+        MethodParameter p =
+            integer("pegasus.scenarios", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS scenarios"),
+                    "", 1, 1000,
+                    QT_TRANSLATE_NOOP("MethodParameter",
+                                      "Fixed scenarios (start, perturbation, noise) "
+                                      "each evaluation averages."));
         p.get = [](const MethodTuning& f) { return one(f.pegasus.scenarios); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.pegasus.scenarios = static_cast<int>(v[0]);
@@ -88,7 +89,8 @@ const MethodParameter& pegasusStep() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
             "pegasus.alpha", QT_TRANSLATE_NOOP("MethodParameter", "PEGASUS step α"), "", 0, 1e9, 4,
-            QT_TRANSLATE_NOOP("MethodParameter", "Gradient-descent step on the mean episode cost."));
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Gradient-descent step on the mean episode cost."));
         p.get = [](const MethodTuning& f) { return one(f.pegasus.stepSize); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.pegasus.stepSize = v[0]; };
         return p;
@@ -113,10 +115,11 @@ const MethodParameter& ilcLearning() {
 
 const MethodParameter& ilcLead() {
     static const MethodParameter p = [] {
-        MethodParameter p = integer(
-            "ilc.lead", QT_TRANSLATE_NOOP("MethodParameter", "ILC lead"), "steps", 0, 200,
-            QT_TRANSLATE_NOOP("MethodParameter", "The error this many steps later corrects the "
-                                                 "action now (covers the plant's delay)."));
+        MethodParameter p =
+            integer("ilc.lead", QT_TRANSLATE_NOOP("MethodParameter", "ILC lead"), "steps", 0, 200,
+                    QT_TRANSLATE_NOOP("MethodParameter",
+                                      "The error this many steps later corrects the "
+                                      "action now (covers the plant's delay)."));
         p.get = [](const MethodTuning& f) { return one(f.ilcLead); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.ilcLead = static_cast<int>(v[0]);
@@ -128,10 +131,11 @@ const MethodParameter& ilcLead() {
 
 const MethodParameter& ilcCutoff() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "ilc.cutoff", QT_TRANSLATE_NOOP("MethodParameter", "ILC Q cutoff"), "Hz", 0, 20, 2,
-            QT_TRANSLATE_NOOP("MethodParameter", "Zero-phase low-pass on the learned feedforward "
-                                                 "after each trial; 0 leaves it unfiltered."));
+        MethodParameter p =
+            real("ilc.cutoff", QT_TRANSLATE_NOOP("MethodParameter", "ILC Q cutoff"), "Hz", 0, 20, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "Zero-phase low-pass on the learned feedforward "
+                                   "after each trial; 0 leaves it unfiltered."));
         p.get = [](const MethodTuning& f) { return one(f.ilcCutoff); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.ilcCutoff = v[0]; };
         return p;
@@ -143,8 +147,7 @@ const MethodParameter& ilcFeedback() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
             "ilc.feedback", QT_TRANSLATE_NOOP("MethodParameter", "ILC feedback scale"), "", 0, 100,
-            3,
-            QT_TRANSLATE_NOOP("MethodParameter", "The PD gains in ILC's loop, scaled by this."));
+            3, QT_TRANSLATE_NOOP("MethodParameter", "The PD gains in ILC's loop, scaled by this."));
         p.get = [](const MethodTuning& f) { return one(f.ilcFeedbackScale); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.ilcFeedbackScale = v[0]; };
         return p;

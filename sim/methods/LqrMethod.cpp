@@ -1,11 +1,12 @@
-// A time-varying LQR on the model fitted from the demonstration (eq. 5), with its per-plant defaults.
+// A time-varying LQR on the model fitted from the demonstration (eq. 5), with its per-plant
+// defaults.
 #include "sim/methods/Declarations.h"
 
+#include <QCoreApplication>
+#include <cmath>
 #include "core/ActionMapping.h"
 #include "core/LqrController.h"
 #include "sim/MethodTuning.h"
-#include <QCoreApplication>
-#include <cmath>
 
 namespace prisca::sim::methods {
 
@@ -41,8 +42,8 @@ const LqrDefaults* lqrDefaults(const MethodTuning& f) {
 const MethodParameter& lqrEffort() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
-            "lqr.effort", QT_TRANSLATE_NOOP("MethodParameter", "LQR effort weight R"),
-            "1/action²", 1e-6, 1e6, 6,
+            "lqr.effort", QT_TRANSLATE_NOOP("MethodParameter", "LQR effort weight R"), "1/action²",
+            1e-6, 1e6, 6,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "R per control in the LQR's cost e^T W e + (u − u*)^T R (u − u*): "
                               "larger is gentler."));

@@ -1,12 +1,13 @@
-// The methods that plan through a model: the oracle (through the simulated plant itself: the limit) and MPC (through the car identified from its demonstration).
+// The methods that plan through a model: the oracle (through the simulated plant itself: the limit)
+// and MPC (through the car identified from its demonstration).
 #include "sim/methods/Declarations.h"
 
-#include "sim/Identification.h"
-#include "sim/MpcController.h"
-#include "sim/MethodTuning.h"
 #include <QCoreApplication>
 #include <limits>
 #include <stdexcept>
+#include "sim/Identification.h"
+#include "sim/MethodTuning.h"
+#include "sim/MpcController.h"
 
 namespace prisca::sim::methods {
 
@@ -60,8 +61,7 @@ const MethodParameter& oracleReplan() {
 const MethodParameter& mpcReplan() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
-            "mpc.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Replanning"), "steps", 1,
-            100,
+            "mpc.replan-every", QT_TRANSLATE_NOOP("MethodParameter", "Replanning"), "steps", 1, 100,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "Control steps between two plans through the model (2 at 25 Hz: "
                               "every 0.08 s)."));
@@ -107,13 +107,13 @@ const MethodParameter& mpcTube() {
 
 const MethodParameter& mpcSpinGuard() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "mpc.spin-slip", QT_TRANSLATE_NOOP("MethodParameter", "Spin guard"), "deg", 0.0, 90.0,
-            0,
-            QT_TRANSLATE_NOOP("MethodParameter",
-                              "How far the side-slip angle may stray from the demonstration's "
-                              "on the way into the slide before the fallback law finishes the "
-                              "trial (0: no guard)."));
+        MethodParameter p =
+            real("mpc.spin-slip", QT_TRANSLATE_NOOP("MethodParameter", "Spin guard"), "deg", 0.0,
+                 90.0, 0,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "How far the side-slip angle may stray from the demonstration's "
+                                   "on the way into the slide before the fallback law finishes the "
+                                   "trial (0: no guard)."));
         p.get = [](const MethodTuning& f) { return one(f.mpc.spinSideSlip * 180.0 / M_PI); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.mpc.spinSideSlip = v[0] * M_PI / 180.0;

@@ -1,9 +1,9 @@
 // PRISCA as the product runs it and as the paper prints it: their parameters and how each is made.
 #include "sim/methods/Declarations.h"
 
+#include <QCoreApplication>
 #include "core/PriscaController.h"
 #include "sim/MethodTuning.h"
-#include <QCoreApplication>
 
 namespace prisca::sim::methods {
 
@@ -11,10 +11,11 @@ namespace {
 
 const MethodParameter& priscaHorizon() {
     static const MethodParameter p = [] {
-        MethodParameter p = integer(
-            "prisca.H", QT_TRANSLATE_NOOP("MethodParameter", "Horizon H"), "steps", 1, 1000,
-            QT_TRANSLATE_NOOP("MethodParameter", "Smoothing horizon H of the nested expectation "
-                                                 "over the last H steps (eq. 9, 13)."));
+        MethodParameter p =
+            integer("prisca.H", QT_TRANSLATE_NOOP("MethodParameter", "Horizon H"), "steps", 1, 1000,
+                    QT_TRANSLATE_NOOP("MethodParameter",
+                                      "Smoothing horizon H of the nested expectation "
+                                      "over the last H steps (eq. 9, 13)."));
         p.get = [](const MethodTuning& f) { return one(f.prisca.horizon); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.prisca.horizon = static_cast<int>(v[0]);
@@ -28,8 +29,9 @@ const MethodParameter& priscaGamma() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
             "prisca.gamma", QT_TRANSLATE_NOOP("MethodParameter", "Depreciation γ"), "", 0, 1, 3,
-            QT_TRANSLATE_NOOP("MethodParameter", "Rate of inverse depreciation D (eq. 10); Lemma "
-                                                 "4.1 needs γ ≥ 0.93 at H = 10."));
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Rate of inverse depreciation D (eq. 10); Lemma "
+                              "4.1 needs γ ≥ 0.93 at H = 10."));
         p.get = [](const MethodTuning& f) { return one(f.prisca.gamma); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.gamma = v[0]; };
         return p;
@@ -68,8 +70,8 @@ const MethodParameter& priscaAutomatic() {
 const MethodParameter& priscaAutomaticStep() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
-            "prisca.automatic-alpha0", QT_TRANSLATE_NOOP("MethodParameter", "Automatic α_0"), "",
-            0, 1, 5,
+            "prisca.automatic-alpha0", QT_TRANSLATE_NOOP("MethodParameter", "Automatic α_0"), "", 0,
+            1, 5,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "α_0 of the automatic scales: the fraction of a Newton step on the "
                               "cost's curvature taken per control step."));
@@ -96,10 +98,11 @@ const MethodParameter& priscaStepScale() {
 
 const MethodParameter& priscaThetaBound() {
     static const MethodParameter p = [] {
-        MethodParameter p = real(
-            "prisca.theta-bound", QT_TRANSLATE_NOOP("MethodParameter", "θ bound"), "", 0, 1e4, 2,
-            QT_TRANSLATE_NOOP("MethodParameter", "If above 0, θ is kept in |θ_i| ≤ bound after "
-                                                 "each update (projected descent)."));
+        MethodParameter p = real("prisca.theta-bound",
+                                 QT_TRANSLATE_NOOP("MethodParameter", "θ bound"), "", 0, 1e4, 2,
+                                 QT_TRANSLATE_NOOP("MethodParameter",
+                                                   "If above 0, θ is kept in |θ_i| ≤ bound after "
+                                                   "each update (projected descent)."));
         p.zeroMeans = QT_TRANSLATE_NOOP("MethodParameter", "none");
         p.get = [](const MethodTuning& f) { return one(f.prisca.thetaBound); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.prisca.thetaBound = v[0]; };
@@ -124,12 +127,12 @@ const MethodParameter& priscaFromPd() {
 
 const MethodParameter& priscaGradient() {
     static const MethodParameter p = [] {
-        MethodParameter p = onOff(
-            "prisca.gradient", QT_TRANSLATE_NOOP("MethodParameter", "Gradient"),
-            QT_TRANSLATE_NOOP("MethodParameter",
-                              "one-step: eq. 14 as printed; closed-loop: eq. 4's chain rule "
-                              "carried over the window through the fitted model and the "
-                              "policy's own feedback."));
+        MethodParameter p =
+            onOff("prisca.gradient", QT_TRANSLATE_NOOP("MethodParameter", "Gradient"),
+                  QT_TRANSLATE_NOOP("MethodParameter",
+                                    "one-step: eq. 14 as printed; closed-loop: eq. 4's chain rule "
+                                    "carried over the window through the fitted model and the "
+                                    "policy's own feedback."));
         p.kind = Kind::Choice;
         p.choices = {"one-step", "closed-loop"};
         p.get = [](const MethodTuning& f) {
@@ -222,8 +225,8 @@ const MethodParameter& priscaModel() {
 const MethodParameter& priscaModelDelay() {
     static const MethodParameter p = [] {
         MethodParameter p = integer(
-            "prisca.model-delay", QT_TRANSLATE_NOOP("MethodParameter", "Model delay d"), "steps",
-            0, 50,
+            "prisca.model-delay", QT_TRANSLATE_NOOP("MethodParameter", "Model delay d"), "steps", 0,
+            50,
             QT_TRANSLATE_NOOP("MethodParameter",
                               "The measurement's age d in the closed-loop gradient's model."));
         p.get = [](const MethodTuning& f) { return one(f.prisca.modelDelay); };
@@ -257,9 +260,7 @@ const MethodParameter& priscaExplainedOnly() {
             QT_TRANSLATE_NOOP("MethodParameter",
                               "The closed-loop gradient learns only on the samples a robust fit "
                               "explains."));
-        p.get = [](const MethodTuning& f) {
-            return one(f.priscaLearnWhereExplained ? 1.0 : 0.0);
-        };
+        p.get = [](const MethodTuning& f) { return one(f.priscaLearnWhereExplained ? 1.0 : 0.0); };
         p.set = [](MethodTuning& f, const Eigen::VectorXd& v) {
             f.priscaLearnWhereExplained = v[0] != 0.0;
         };
@@ -305,13 +306,13 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     if (automatic) {
         problem.matching.window = MethodTuning::automaticWindow(*demonstration);
     }
-    core::FeatureMap features = automatic ? profile.automaticFeatures(method, *demonstration)
-                                          : profile.featuresOf(method);
+    core::FeatureMap features =
+        automatic ? profile.automaticFeatures(method, *demonstration) : profile.featuresOf(method);
     if (profile.priscaPhaseSeconds > 0.0) {
         features = features.withPhases(
             demonstration->length(),
-            std::max(1, static_cast<int>(std::lround(profile.priscaPhaseSeconds /
-                                                      demonstration->dt))));
+            std::max(
+                1, static_cast<int>(std::lround(profile.priscaPhaseSeconds / demonstration->dt))));
     }
     auto prisca = std::make_unique<core::PriscaController>(std::move(problem), std::move(features),
                                                            model, parameters);
@@ -371,11 +372,29 @@ MethodSpec priscaMethod() {
     s.ownFeatures = true;
     s.usesFeatures = true;
     s.summary = "the product's PRISCA: from the PD law, closed-loop gradient, automatic scales";
-    s.parameters = {priscaHorizon(), priscaGamma(),   priscaBeta(),     priscaAutomatic(),
-                    priscaAutomaticStep(), priscaStepScale(), priscaThetaBound(), priscaFromPd(), priscaGradient(),
-                    priscaEffort(),  priscaBaseline(), priscaDepreciation(), priscaModel(),
-                    priscaModelDelay(), priscaExplainedOnly(), priscaPhase(), matchingWindow(), start(), feedbackExplainedOnly(), feedbackReverseAware(),
-                    pdKp(),          pdKd(),          pdHorizon()};
+    s.parameters = {priscaHorizon(),
+                    priscaGamma(),
+                    priscaBeta(),
+                    priscaAutomatic(),
+                    priscaAutomaticStep(),
+                    priscaStepScale(),
+                    priscaThetaBound(),
+                    priscaFromPd(),
+                    priscaGradient(),
+                    priscaEffort(),
+                    priscaBaseline(),
+                    priscaDepreciation(),
+                    priscaModel(),
+                    priscaModelDelay(),
+                    priscaExplainedOnly(),
+                    priscaPhase(),
+                    matchingWindow(),
+                    start(),
+                    feedbackExplainedOnly(),
+                    feedbackReverseAware(),
+                    pdKp(),
+                    pdKd(),
+                    pdHorizon()};
     return s;
 }
 

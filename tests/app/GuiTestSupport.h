@@ -5,7 +5,6 @@
 #include "app/ControllerPanel.h"
 #include "app/EmergencyStop.h"
 #include "app/EmergencyStopGuard.h"
-#include "app/ModalDialog.h"
 #include "app/ExperimentArchive.h"
 #include "app/ExperimentsPanel.h"
 #include "app/LabSession.h"
@@ -13,12 +12,13 @@
 #include "app/LiveChartsPanel.h"
 #include "app/MainWindow.h"
 #include "app/MappingPanel.h"
+#include "app/ModalDialog.h"
 #include "app/RecordPanel.h"
-#include "app/rig/RigPanel.h"
-#include "app/RunThread.h"
 #include "app/RunPanel.h"
+#include "app/RunThread.h"
 #include "app/TaskPanel.h"
 #include "app/plot/ChartDecimation.h"
+#include "app/rig/RigPanel.h"
 #include "core/DemonstrationCsv.h"
 #include "core/PriscaController.h"
 #include "devices/SyntheticCamera.h"
@@ -43,11 +43,11 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
+#include <QProcess>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSet>
-#include <QProcess>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -124,7 +124,8 @@ inline QString answerQuitQuestion(QObject* context, const char* button,
 }
 
 // Answers the next file dialog with `path` while `trigger` runs.
-inline void answerFileDialog(QObject* context, const QString& path, const std::function<void()>& trigger) {
+inline void answerFileDialog(QObject* context, const QString& path,
+                             const std::function<void()>& trigger) {
     QTimer poll;
     QObject::connect(&poll, &QTimer::timeout, context, [&] {
         if (auto* dialog = qobject_cast<QFileDialog*>(ModalDialog::top())) {

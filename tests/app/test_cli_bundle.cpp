@@ -60,15 +60,15 @@ class TestCliBundle : public QObject {
         // An unset shell variable ("--fence $FENCE") must not run the trial unfenced.
         QTemporaryDir dir;
         for (const QString& fence : {QString(), QStringLiteral(";"), QStringLiteral(" ; ;")}) {
-            const Result r = cli({"rig", "--virtual", "--trials", "1", "--fence", fence},
-                                 dir.path());
+            const Result r =
+                cli({"rig", "--virtual", "--trials", "1", "--fence", fence}, dir.path());
             QCOMPARE(r.exitCode, 2);
             QVERIFY2(r.err.contains("gives no corner: give at least 3"), qPrintable(r.err));
             QVERIFY(!r.out.contains("trial 1:"));
         }
         // Two corners enclose nothing either.
-        const Result r = cli({"rig", "--virtual", "--trials", "1", "--fence", "0,0;1,1"},
-                             dir.path());
+        const Result r =
+            cli({"rig", "--virtual", "--trials", "1", "--fence", "0,0;1,1"}, dir.path());
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("at least 3 corners, 2 given"), qPrintable(r.err));
     }
@@ -77,15 +77,19 @@ class TestCliBundle : public QObject {
         QTemporaryDir dir;
         // A fence around the whole path with a speed limit the slide exceeds.
         Result r = cli({"rig", "--virtual", "--trials", "1", "--perturbation", "0", "--fence",
-                        "-0.8,-1.6;5.5,-1.6;5.5,2.0;-0.8,2.0", "--max-speed", "2.5",
-                        "--bundle-dir", "bundles", "--format", "json"},
+                        "-0.8,-1.6;5.5,-1.6;5.5,2.0;-0.8,2.0", "--max-speed", "2.5", "--bundle-dir",
+                        "bundles", "--format", "json"},
                        dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject run = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QVERIFY(run.value("preTrialCheck").toArray().size() >= 8);
         QCOMPARE(run.value("bundles").toArray().size(), 1);
         const QString bundle = run.value("bundles").toArray().at(0).toString();
-        QVERIFY2(run.value("trials").toArray().at(0).toObject().value("failsafeReason")
+        QVERIFY2(run.value("trials")
+                     .toArray()
+                     .at(0)
+                     .toObject()
+                     .value("failsafeReason")
                      .toString()
                      .contains("over the fence's"),
                  qPrintable(r.out));
@@ -102,9 +106,10 @@ class TestCliBundle : public QObject {
         QVERIFY(std::abs(replay.value("frames").toInt() - seconds * 10.0) <= 2.0);
         QVERIFY(replay.value("result").toObject().value("reason").toString().contains("fence"));
         // The replay's scores from the samples agree with the trial's own.
-        QVERIFY(std::abs(replay.value("finalPositionErrorCm").toDouble() -
-                         replay.value("result").toObject().value("finalPositionErrorCm")
-                             .toDouble()) < 0.01);
+        QVERIFY(
+            std::abs(replay.value("finalPositionErrorCm").toDouble() -
+                     replay.value("result").toObject().value("finalPositionErrorCm").toDouble()) <
+            0.01);
         r = cli({"replay", bundle}, dir.path());
         QVERIFY2(r.out.contains("ended in failsafe: the car drove at"), qPrintable(r.out));
         // Not a bundle: one line, exit 2.
@@ -173,8 +178,8 @@ class TestCliBundle : public QObject {
         QFile file(dir.filePath("taken"));
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.close();
-        const Result r = cli({"rig", "--virtual", "--trials", "1", "--bundle-dir", "taken"},
-                             dir.path());
+        const Result r =
+            cli({"rig", "--virtual", "--trials", "1", "--bundle-dir", "taken"}, dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.err.contains("warning: bundle") && r.err.contains("cannot create the folder"),
                  qPrintable(r.err));
@@ -223,8 +228,7 @@ class TestCliBundle : public QObject {
         ::kill(static_cast<pid_t>(rig.processId()), SIGKILL);
         QVERIFY(rig.waitForFinished(10000));
         const int lines = sampleLines(samples);
-        const Result r = cli({"replay", QFileInfo(samples).path(), "--format", "json"},
-                             dir.path());
+        const Result r = cli({"replay", QFileInfo(samples).path(), "--format", "json"}, dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject replay = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QVERIFY(!replay.value("complete").toBool());

@@ -60,11 +60,12 @@ class TestCliCalibrate : public QObject {
         QVERIFY(QDir(dir.path()).mkdir("views"));
         const auto poses = renderer.poses(board, 14, 11);
         for (size_t i = 0; i < poses.size(); ++i) {
-            const cv::Mat view = renderer.render(board, poses[i].first, poses[i].second, 2.0, i + 1);
-            QVERIFY(cv::imwrite(dir.filePath(QStringLiteral("views/view%1.png").arg(i, 2, 10,
-                                                                                 QLatin1Char('0')))
-                                    .toStdString(),
-                                view));
+            const cv::Mat view =
+                renderer.render(board, poses[i].first, poses[i].second, 2.0, i + 1);
+            QVERIFY(cv::imwrite(
+                dir.filePath(QStringLiteral("views/view%1.png").arg(i, 2, 10, QLatin1Char('0')))
+                    .toStdString(),
+                view));
         }
         // A view of the room with no board: listed, not fatal.
         QVERIFY(cv::imwrite(dir.filePath("views/wall.png").toStdString(),
@@ -150,8 +151,8 @@ class TestCliCalibrate : public QObject {
                     ++w.lost;
                     continue;
                 }
-                w.position = std::max(w.position,
-                                      std::hypot(c[2].toDouble() - t.x, c[3].toDouble() - t.y));
+                w.position =
+                    std::max(w.position, std::hypot(c[2].toDouble() - t.x, c[3].toDouble() - t.y));
                 w.heading = std::max(
                     w.heading, std::abs(std::remainder(c[4].toDouble() - t.heading, 2 * M_PI)));
             }
@@ -168,17 +169,18 @@ class TestCliCalibrate : public QObject {
                 dir.path());
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const Worst refitted = worstOf("poses2.csv");
-        r = cli({"track", "--video", "car.avi", "--calibration", "plain.json", "--out",
-                 "poses3.csv"},
-                dir.path());
+        r = cli(
+            {"track", "--video", "car.avi", "--calibration", "plain.json", "--out", "poses3.csv"},
+            dir.path());
         QVERIFY2(r.err.contains("warning") && r.err.contains("--camera"), qPrintable(r.err));
         const Worst plainWorst = worstOf("poses3.csv");
-        qInfo("%zu poses over the floor, worst: %.1f mm, %.2f deg through the lens "
-              "(%.1f mm, %.2f deg by --camera); the homography alone %.1f mm, %.2f deg, "
-              "%d frames without a pose (the LED triangle bent past the tracker's tolerance)",
-              truthPoses.size(), lensed.position * 1000.0, lensed.heading * 180.0 / M_PI,
-              refitted.position * 1000.0, refitted.heading * 180.0 / M_PI,
-              plainWorst.position * 1000.0, plainWorst.heading * 180.0 / M_PI, plainWorst.lost);
+        qInfo(
+            "%zu poses over the floor, worst: %.1f mm, %.2f deg through the lens "
+            "(%.1f mm, %.2f deg by --camera); the homography alone %.1f mm, %.2f deg, "
+            "%d frames without a pose (the LED triangle bent past the tracker's tolerance)",
+            truthPoses.size(), lensed.position * 1000.0, lensed.heading * 180.0 / M_PI,
+            refitted.position * 1000.0, refitted.heading * 180.0 / M_PI,
+            plainWorst.position * 1000.0, plainWorst.heading * 180.0 / M_PI, plainWorst.lost);
         const int frames = static_cast<int>(truthPoses.size());
         QCOMPARE(lensed.rows, frames);
         QCOMPARE(lensed.lost, 0);
@@ -230,8 +232,9 @@ class TestCliCalibrate : public QObject {
         QVERIFY2(r.err.contains("at least 4 points"), qPrintable(r.err));
         QFile cam(dir.filePath("camera.json"));
         QVERIFY(cam.open(QIODevice::WriteOnly));
-        cam.write("{\"camera_matrix\": [1,0,0,0,1,0,0,0,1], \"distortion\": [0,0,0,0,0], "
-                  "\"image_size\": [640, 480]}");
+        cam.write(
+            "{\"camera_matrix\": [1,0,0,0,1,0,0,0,1], \"distortion\": [0,0,0,0,0], "
+            "\"image_size\": [640, 480]}");
         cam.close();
         r = cli({"calibrate-floor", "--points", "floor.csv", "--camera", "camera.json", "--out",
                  "f.json"},

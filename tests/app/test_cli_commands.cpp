@@ -276,9 +276,9 @@ class TestCliCommands : public QObject {
         QVERIFY(written.value("description").toString().contains("id-demo.csv"));
         // mpc plans through it (--model), on the run and the rig alike; a file that is not a
         // plant file is refused naming the option.
-        const CliResult planned = cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv",
-                                       "--method", "mpc", "--model", "id.json", "--out",
-                                       "mpc.csv", "--format", "json"});
+        const CliResult planned =
+            cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv", "--method", "mpc",
+                 "--model", "id.json", "--out", "mpc.csv", "--format", "json"});
         QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
         const QJsonArray plannedTrials = parseJson(planned.out).value("trials").toArray();
         QVERIFY(plannedTrials.size() == 1);
@@ -288,9 +288,9 @@ class TestCliCommands : public QObject {
                      note.startsWith(QLatin1String("the feedback law drove")),
                  qPrintable(planned.out));
         writeFile(path("not-a-car.json"), "{\"format\": \"something else\"}");
-        const CliResult badModel = cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv",
-                                        "--method", "mpc", "--model", "not-a-car.json", "--out",
-                                        "mpc.csv"});
+        const CliResult badModel =
+            cli({"run", "--plant", "slidecar", "--demo", "id-demo.csv", "--method", "mpc",
+                 "--model", "not-a-car.json", "--out", "mpc.csv"});
         QVERIFY2(badModel.exitCode == 2 && badModel.err.contains("--model:"),
                  qPrintable(badModel.err));
 
@@ -677,7 +677,8 @@ class TestCliCommands : public QObject {
                                  "--out", plant + "-" + method + ".csv", "--format", "json"});
         if (!prisca::sim::MethodCatalog::get(method).runsOn(plant)) {
             // A method that does not run on this plant is refused, saying where it runs.
-            QVERIFY2(r.exitCode != 0 && r.err.contains(QLatin1String("runs on")), qPrintable(r.err));
+            QVERIFY2(r.exitCode != 0 && r.err.contains(QLatin1String("runs on")),
+                     qPrintable(r.err));
             return;
         }
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));

@@ -39,9 +39,9 @@ class TestCliMessages : public QObject {
     void simulate_anActionBeyondAnyNamesItsCell() {
         QTemporaryDir dir;
         writeFile(dir.filePath("a.csv"), "throttle,steering\n0.2,0\n1e300,0\n");
-        const Result r = cli({"simulate", "--plant", "slidecar", "--actions", "a.csv", "--out",
-                              "s.csv"},
-                             dir.path());
+        const Result r =
+            cli({"simulate", "--plant", "slidecar", "--actions", "a.csv", "--out", "s.csv"},
+                dir.path());
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("a.csv:3:1: '1e300' in column 'throttle' is beyond the +-1e+06"),
                  qPrintable(r.err));
@@ -74,9 +74,9 @@ class TestCliMessages : public QObject {
         QTemporaryDir dir;
         writeFile(dir.filePath("ac.json"),
                   "{\"plant\": \"aircraft\", \"parameters\": {\"propellerPitchSpeed\": 12}}");
-        const Result r = cli({"demo", "--plant", "aircraft", "--plant-params", "ac.json", "--out",
-                              "d.csv"},
-                             dir.path());
+        const Result r =
+            cli({"demo", "--plant", "aircraft", "--plant-params", "ac.json", "--out", "d.csv"},
+                dir.path());
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("no thrust at 12 m/s and above (propellerPitchSpeed)"),
                  qPrintable(r.err));

@@ -38,7 +38,8 @@ std::vector<std::pair<double, double>> decodeCrsf(const QByteArray& bytes) {
     std::vector<std::pair<double, double>> frames;
     const auto* b = reinterpret_cast<const std::uint8_t*>(bytes.constData());
     for (int i = 0; i + 26 <= bytes.size();) {
-        if (b[i] == 0xC8 && b[i + 1] == 24 && b[i + 2] == 0x16 && crc8(b + i + 2, 23) == b[i + 25]) {
+        if (b[i] == 0xC8 && b[i + 1] == 24 && b[i + 2] == 0x16 &&
+            crc8(b + i + 2, 23) == b[i + 25]) {
             const std::uint8_t* payload = b + i + 3;
             auto channel = [payload](int c) {
                 int value = 0;
@@ -117,8 +118,8 @@ void TestCliSignals::link_endsInFailsafe_data() {
     // Every other signal whose default action ends the process: none of them is the
     // project's, and each ends it as SIGTERM does (a timer's, a limit's, a user's).
     const std::vector<std::pair<int, const char*>> others = {
-        {SIGUSR1, "SIGUSR1"},     {SIGUSR2, "SIGUSR2"}, {SIGALRM, "SIGALRM"},
-        {SIGVTALRM, "SIGVTALRM"}, {SIGPROF, "SIGPROF"}, {SIGXCPU, "SIGXCPU"},
+        {SIGUSR1, "SIGUSR1"},     {SIGUSR2, "SIGUSR2"},     {SIGALRM, "SIGALRM"},
+        {SIGVTALRM, "SIGVTALRM"}, {SIGPROF, "SIGPROF"},     {SIGXCPU, "SIGXCPU"},
         {SIGPWR, "SIGPWR"},       {SIGSTKFLT, "SIGSTKFLT"}, {SIGIO, "SIGIO"}};
     for (const auto& [number, name] : others) {
         QTest::newRow(name) << number << false << "" << 128 + number
@@ -134,8 +135,8 @@ void TestCliSignals::link_endsInFailsafe_data() {
     QTest::newRow("exception") << 0 << false << "exception" << 2
                                << "injected fault (PRISCA_INJECT_FAULT=exception) (the link "
                                   "ended in failsafe)";
-    QTest::newRow("failed assertion") << 0 << false << "assertion" << -1
-                                      << "crashed (SIGABRT); failsafe sent on 1 link";
+    QTest::newRow("failed assertion")
+        << 0 << false << "assertion" << -1 << "crashed (SIGABRT); failsafe sent on 1 link";
     QTest::newRow("exception on a thread")
         << 0 << false << "terminate" << -1
         << "uncaught exception: injected fault on a worker thread; failsafe sent";
@@ -156,9 +157,8 @@ void TestCliSignals::link_endsInFailsafe() {
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("PRISCA_INJECT_FAULT"), fault);
     cli.setProcessEnvironment(environment);
-    cli.start(QStringLiteral(PRISCA_CLI),
-              {"link", "--port", pty.path, "--protocol", "crsf", "--channels", "1500,1700",
-               "--duration", "60"});
+    cli.start(QStringLiteral(PRISCA_CLI), {"link", "--port", pty.path, "--protocol", "crsf",
+                                           "--channels", "1500,1700", "--duration", "60"});
     QVERIFY(cli.waitForStarted());
 
     // Wait until the commanded value is on the wire (the car is moving), then end the process.
@@ -182,10 +182,9 @@ void TestCliSignals::link_endsInFailsafe() {
     const auto frames = decodeCrsf(bytes);
     QVERIFY2(commanded() >= 5, "the command never reached the wire");
     QVERIFY(!frames.empty());
-    QVERIFY2(isNeutral(frames.back()),
-             qPrintable(QStringLiteral("last frame CH1 %1 us, CH2 %2 us")
-                            .arg(frames.back().first)
-                            .arg(frames.back().second)));
+    QVERIFY2(isNeutral(frames.back()), qPrintable(QStringLiteral("last frame CH1 %1 us, CH2 %2 us")
+                                                      .arg(frames.back().first)
+                                                      .arg(frames.back().second)));
     const QString errors = QString::fromLocal8Bit(cli.readAllStandardError());
     QVERIFY2(errors.contains(stderrSays), qPrintable(errors));
     if (exitCode >= 0) {
@@ -213,9 +212,8 @@ void TestCliSignals::link_stoppedAndContinuedHoldsFailsafe() {
     QVERIFY(!pty.path.isEmpty());
     QProcess cli;
     cli.setReadChannel(QProcess::StandardError);
-    cli.start(QStringLiteral(PRISCA_CLI),
-              {"link", "--port", pty.path, "--protocol", "crsf", "--channels", "1500,1700",
-               "--duration", "120"});
+    cli.start(QStringLiteral(PRISCA_CLI), {"link", "--port", pty.path, "--protocol", "crsf",
+                                           "--channels", "1500,1700", "--duration", "120"});
     QVERIFY(cli.waitForStarted());
     const qint64 pid = cli.processId();
     QByteArray bytes;
@@ -279,9 +277,9 @@ void TestCliSignals::link_rateAboveTheLineRefused() {
     // more would queue behind a failsafe.
     Pty pty;
     QProcess cli;
-    cli.start(QStringLiteral(PRISCA_CLI), {"link", "--port", pty.path, "--protocol", "sbus",
-                                            "--channels", "1500,1700", "--rate", "1000",
-                                            "--duration", "1"});
+    cli.start(QStringLiteral(PRISCA_CLI),
+              {"link", "--port", pty.path, "--protocol", "sbus", "--channels", "1500,1700",
+               "--rate", "1000", "--duration", "1"});
     QVERIFY(cli.waitForFinished(30000));
     QCOMPARE(cli.exitCode(), 2);
     const QString errors = QString::fromLocal8Bit(cli.readAllStandardError());

@@ -66,11 +66,11 @@ class TestGuiCliParity : public QObject {
                                 const QString& file) -> QByteArray {
             QProcess cli;
             cli.setWorkingDirectory(dir.path());
-            cli.start(QStringLiteral(PRISCA_CLI),
-                      {"run", "--plant", "slidecar", "--demo", demoPath, "--method", method,
-                       "--trials", "2", "--seed", "5", "--perturbation",
-                       QString::number(perturbation), "--sensor", QString::number(sensor),
-                       "--out", file});
+            cli.start(
+                QStringLiteral(PRISCA_CLI),
+                {"run", "--plant", "slidecar", "--demo", demoPath, "--method", method, "--trials",
+                 "2", "--seed", "5", "--perturbation", QString::number(perturbation), "--sensor",
+                 QString::number(sensor), "--out", file});
             if (!cli.waitForFinished(kRunTimeoutMs) || cli.exitCode() != 0) {
                 qWarning("%s", cli.readAllStandardError().constData());
                 return QByteArray();

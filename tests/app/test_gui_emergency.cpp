@@ -203,7 +203,8 @@ class TestGuiEmergency : public QObject {
                     guide->isVisible());
         const QRect red(button->mapToGlobal(QPoint(0, 0)), button->size());
         QVERIFY(!guide->frameGeometry().intersects(red));
-        QTest::keyClick(guide->findChild<QTextBrowser*>(QStringLiteral("guideText")), Qt::Key_Space);
+        QTest::keyClick(guide->findChild<QTextBrowser*>(QStringLiteral("guideText")),
+                        Qt::Key_Space);
         QTRY_COMPARE(w.window.run().phase(), RunPhase::EmergencyStopped);
         QVERIFY(guide->isVisible());
         guide->close();
@@ -299,7 +300,8 @@ class TestGuiEmergency : public QObject {
         auto* rig = w.find<RigPanel>("rigPanel");
         QVERIFY(!rig->runTrial());
         auto* rigInfo = w.find<QLabel>("rigTrialInfo");
-        QVERIFY2(rigInfo->text().contains(QLatin1String("Reset E-STOP")), qPrintable(rigInfo->text()));
+        QVERIFY2(rigInfo->text().contains(QLatin1String("Reset E-STOP")),
+                 qPrintable(rigInfo->text()));
         w.find<RecordPanel>("recordPanel")->startCountdown();
         QVERIFY(!w.find<RecordPanel>("recordPanel")->isRecording());
         QVERIFY(w.window.workInProgress().isEmpty());
@@ -440,7 +442,8 @@ class TestGuiEmergency : public QObject {
         w.find<QSpinBox>("seed")->setValue(4);
         w.find<RunPanel>("runPanel")->startRun();
         QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::Running, kRunTimeoutMs);
-        const QString asked = answerQuitQuestion(&w.window, "quitFinish", [&] { w.window.close(); });
+        const QString asked =
+            answerQuitQuestion(&w.window, "quitFinish", [&] { w.window.close(); });
         QVERIFY(!asked.isEmpty());
         // The pending quit stays in view.
         auto* pending = w.find<QWidget>("pendingQuit");

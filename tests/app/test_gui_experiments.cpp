@@ -28,7 +28,8 @@ class TestGuiExperiments : public QObject {
         QVERIFY(finished.wait(kRunTimeoutMs));
         QVERIFY(!panel->isRunning());
         auto* table = w.find<QTableWidget>("experimentTable");
-        QCOMPARE(table->rowCount(), 12);  // every Table I row: PRISCA's two, LQR, PGSD, ILC, the limit
+        QCOMPARE(table->rowCount(),
+                 12);  // every Table I row: PRISCA's two, LQR, PGSD, ILC, the limit
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("OURS (PRISCA)"));
         QCOMPARE(table->item(0, 1)->text(), QStringLiteral("3"));  // N
         QVERIFY(table->item(0, 2)->text().contains(QStringLiteral("±")));
@@ -133,8 +134,8 @@ class TestGuiExperiments : public QObject {
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QByteArray whole = file.readAll();
         file.close();
-        for (const QByteArray& bad : {whole.left(whole.size() - 5), QByteArray("hello world"),
-                                      whole + QByteArray("x")}) {
+        for (const QByteArray& bad :
+             {whole.left(whole.size() - 5), QByteArray("hello world"), whole + QByteArray("x")}) {
             QFile out(path);
             QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
             out.write(bad);

@@ -109,8 +109,9 @@ class TestGuiRig : public QObject {
         QVERIFY2(ready->text().contains(QLatin1String("Not ready")) &&
                      ready->text().contains(QLatin1String("Fence")),
                  qPrintable(ready->text()));
-        QVERIFY2(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("outside the fence")),
-                 qPrintable(w.find<QLabel>("rigTrialInfo")->text()));
+        QVERIFY2(
+            w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("outside the fence")),
+            qPrintable(w.find<QLabel>("rigTrialInfo")->text()));
         QVERIFY(!rig->isRunning());
         // A fence around the whole path, with a speed limit the demonstration's slide exceeds:
         // the trial starts, and the limit ends it in failsafe.
@@ -149,13 +150,15 @@ class TestGuiRig : public QObject {
                                 .arg(replay->y())
                                 .arg(screen.width())
                                 .arg(screen.height())));
-        for (QWidget* control : {static_cast<QWidget*>(slider),
-                                 replay->findChild<QWidget*>("replayPlay")}) {
+        for (QWidget* control :
+             {static_cast<QWidget*>(slider), replay->findChild<QWidget*>("replayPlay")}) {
             QVERIFY(control->isVisible());
-            QVERIFY(replay->rect().contains(QRect(control->mapTo(replay, QPoint(0, 0)), control->size())));
+            QVERIFY(replay->rect().contains(
+                QRect(control->mapTo(replay, QPoint(0, 0)), control->size())));
         }
         auto* red = w.find<QWidget>("emergencyStopButton");
-        QVERIFY(!replay->frameGeometry().intersects(QRect(red->mapToGlobal(QPoint(0, 0)), red->size())));
+        QVERIFY(!replay->frameGeometry().intersects(
+            QRect(red->mapToGlobal(QPoint(0, 0)), red->size())));
         replay->close();
         // File > Replay lists the bundles newest first, the rig's apart from the simulated.
         const std::vector<BundleEntry> listed = BundleChooser::scan({rig->bundleParent()});
@@ -200,8 +203,8 @@ class TestGuiRig : public QObject {
             return folder;
         };
         Window w;
-        for (const QString& refused : {write("unknown", "hovercraft", 0.0),
-                                       write("far", "slidecar", 1e9)}) {
+        for (const QString& refused :
+             {write("unknown", "hovercraft", 0.0), write("far", "slidecar", 1e9)}) {
             QVERIFY(!refused.isEmpty());
             QTimer::singleShot(200, [] {
                 if (QWidget* box = prisca::app::ModalDialog::top()) {
@@ -304,8 +307,8 @@ class TestGuiRig : public QObject {
             QVERIFY(rig->isDriving());
             // Closing asks first; "discard" quits at once, the recording still running.
             bool closed = false;
-            const QString asked = answerQuitQuestion(&w.window, "quitDiscard",
-                                                     [&] { closed = w.window.close(); });
+            const QString asked =
+                answerQuitQuestion(&w.window, "quitDiscard", [&] { closed = w.window.close(); });
             QVERIFY2(asked.contains(QStringLiteral("recording")), qPrintable(asked));
             QVERIFY(closed);
         }  // the window, its session and the panel go while the recording runs: no crash

@@ -139,7 +139,8 @@ class TestGuiRun : public QObject {
         // The hover readout names the trial and the values under the mouse.
         const QString readout = charts->readoutAt(charts->trialStarts().value(0) + 0.01);
         QVERIFY2(readout.startsWith(QLatin1String("Trial 2, run time")) &&
-                     readout.contains(QLatin1String("error")) && readout.contains(QLatin1String(" m")),
+                     readout.contains(QLatin1String("error")) &&
+                     readout.contains(QLatin1String(" m")),
                  qPrintable(readout));
         const QString png = dir.filePath("charts.png");
         QVERIFY2(charts->exportPng(png, &error), qPrintable(error));

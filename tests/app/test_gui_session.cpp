@@ -225,8 +225,8 @@ class TestGuiSession : public QObject {
             }
             QVERIFY(names.size() > 10);
             for (const QString& name : names) {
-                auto* label = qobject_cast<QLabel*>(
-                    form->labelForField(w.window.findChild<QWidget*>(name)));
+                auto* label =
+                    qobject_cast<QLabel*>(form->labelForField(w.window.findChild<QWidget*>(name)));
                 QVERIFY2(label && !label->text().isEmpty(), qPrintable(name));
             }
             QCOMPARE(
@@ -439,7 +439,8 @@ class TestGuiSession : public QObject {
             "\"prisca\": {\"automatic\": \"yes\"} }");
         f3.close();
         text = answerMessageBox(this, [&] { QVERIFY(!w.window.openSession(garbage)); });
-        QVERIFY2(text.contains("'prisca.automatic'") && text.contains("on | off"), qPrintable(text));
+        QVERIFY2(text.contains("'prisca.automatic'") && text.contains("on | off"),
+                 qPrintable(text));
 
         const QString notJson = dir.filePath("not.json");
         QFile g(notJson);

@@ -64,9 +64,10 @@ QMap<QString, QString> visibleTexts(QWidget* root) {
     const auto key = [](QObject* o, const QString& what) {
         QString path;
         for (QObject* p = o; p; p = p->parent()) {
-            path.prepend(QStringLiteral("/") + (p->objectName().isEmpty()
-                                                    ? QString::fromLatin1(p->metaObject()->className())
-                                                    : p->objectName()));
+            path.prepend(QStringLiteral("/") +
+                         (p->objectName().isEmpty()
+                              ? QString::fromLatin1(p->metaObject()->className())
+                              : p->objectName()));
         }
         return path + QLatin1Char(':') + what + QLatin1Char('@') +
                QString::number(reinterpret_cast<quintptr>(o), 16);
@@ -270,9 +271,11 @@ class TestGuiWindow : public QObject {
         QVERIFY(!rig->startDriving());
         QVERIFY(w.find<QLabel>("rigTrialInfo")->text().contains(QLatin1String("virtual rig's")));
         // This camera's own calibration: no warning, driving is no longer refused for it.
-        const std::vector<prisca::devices::CalibrationPoint> points = {
-            {{100, 100}, {0.0, 2.0}}, {{540, 100}, {3.0, 2.0}}, {{540, 380}, {3.0, 0.0}},
-            {{100, 380}, {0.0, 0.0}}, {{320, 240}, {1.5, 1.0}}};
+        const std::vector<prisca::devices::CalibrationPoint> points = {{{100, 100}, {0.0, 2.0}},
+                                                                       {{540, 100}, {3.0, 2.0}},
+                                                                       {{540, 380}, {3.0, 0.0}},
+                                                                       {{100, 380}, {0.0, 0.0}},
+                                                                       {{320, 240}, {1.5, 1.0}}};
         QString error;
         const auto own = prisca::devices::FloorCalibration::fit(points, &error);
         QVERIFY2(own, qPrintable(error));
@@ -292,14 +295,16 @@ class TestGuiWindow : public QObject {
         auto* calibrate = w.find<QPushButton>("calibrate");
         QVERIFY(calibrate);
         calibrate->click();
-        QVERIFY(w.find<QLabel>("calibrationInfo")->text().startsWith(QLatin1String("Calibrating:")));
+        QVERIFY(
+            w.find<QLabel>("calibrationInfo")->text().startsWith(QLatin1String("Calibrating:")));
         calibrate->click();
     }
 
     void fitWarning_followsALanguageSwitch() {
         Window w;
         // A demonstration whose steering never changes: the fit warns about it.
-        auto demo = std::make_shared<prisca::core::Demonstration>(*w.window.session().demonstration());
+        auto demo =
+            std::make_shared<prisca::core::Demonstration>(*w.window.session().demonstration());
         demo->actions.col(1).setConstant(0.0);
         w.window.session().setDemonstration(demo, QStringLiteral("held-steering.csv"));
         auto* warnings = w.find<QLabel>("fitWarnings");
@@ -333,31 +338,35 @@ class TestGuiWindow : public QObject {
             w.find<QSpinBox>("trials")->setValue(1);
             w.find<RunPanel>("runPanel")->startRun();
             QTRY_VERIFY_WITH_TIMEOUT(
-                std::any_of(log.entries().begin(), log.entries().end(),
-                            [](const LogEntry& e) { return e.text.startsWith(QLatin1String("Trial 1:")); }),
+                std::any_of(
+                    log.entries().begin(), log.entries().end(),
+                    [](const LogEntry& e) { return e.text.startsWith(QLatin1String("Trial 1:")); }),
                 kRunTimeoutMs);
             const auto has = [&](const QString& source, const QString& start, MessageLevel level) {
-                return std::any_of(log.entries().begin(), log.entries().end(), [&](const LogEntry& e) {
-                    return e.source == source && e.text.startsWith(start) && e.level == level &&
-                           e.time.isValid();
-                });
+                return std::any_of(log.entries().begin(), log.entries().end(),
+                                   [&](const LogEntry& e) {
+                                       return e.source == source && e.text.startsWith(start) &&
+                                              e.level == level && e.time.isValid();
+                                   });
             };
             QVERIFY(has(QStringLiteral("Run"), QStringLiteral("Run started:"), MessageLevel::Info));
-            QVERIFY(has(QStringLiteral("Run"), QStringLiteral("Trial 1: parked"), MessageLevel::Info));
+            QVERIFY(
+                has(QStringLiteral("Run"), QStringLiteral("Trial 1: parked"), MessageLevel::Info));
             // A worker's warning, from its own thread, under a prisca.* category.
             std::unique_ptr<QThread> worker(
                 QThread::create([] { qCWarning(lcTestWorker, "the worker's own warning"); }));
             worker->start();
             QVERIFY(worker->wait(10000));
-            QTRY_VERIFY(has(QStringLiteral("testworker"), QStringLiteral("the worker's own warning"),
-                            MessageLevel::Warning));
+            QTRY_VERIFY(has(QStringLiteral("testworker"),
+                            QStringLiteral("the worker's own warning"), MessageLevel::Warning));
             // Copy: time, level, source and text, tab-separated, on the clipboard.
             dockOf(w, "logDock")->raise();
             auto* panel = w.find<MessageLogPanel>("messageLogPanel");
             w.find<QPushButton>("copyMessages")->click();
             const QString copied = QApplication::clipboard()->text();
-            QVERIFY2(copied.contains(QLatin1String("\twarning\ttestworker\tthe worker's own warning")),
-                     qPrintable(copied));
+            QVERIFY2(
+                copied.contains(QLatin1String("\twarning\ttestworker\tthe worker's own warning")),
+                qPrintable(copied));
             QCOMPARE(copied, panel->selectedOrAllText());
             // The filter shows warnings and errors only.
             w.find<QComboBox>("messageFilter")->setCurrentIndex(1);
@@ -387,7 +396,8 @@ class TestGuiWindow : public QObject {
     void messageLog_survivesARestart() {
         {
             Window w;
-            logMessage(QStringLiteral("Test"), MessageLevel::Error, QStringLiteral("before the restart"));
+            logMessage(QStringLiteral("Test"), MessageLevel::Error,
+                       QStringLiteral("before the restart"));
             QTRY_VERIFY(!w.window.messageLog().entries().isEmpty());
             QVERIFY(w.window.close());  // nothing under way: no question
         }
@@ -401,7 +411,8 @@ class TestGuiWindow : public QObject {
     void quit_withNothingUnderWayClosesWithoutAsking() {
         Window w;
         bool closed = false;
-        const QString asked = answerQuitQuestion(&w.window, "quitCancel", [&] { closed = w.window.close(); });
+        const QString asked =
+            answerQuitQuestion(&w.window, "quitCancel", [&] { closed = w.window.close(); });
         QVERIFY(asked.isEmpty());
         QVERIFY(closed);
     }
@@ -414,7 +425,8 @@ class TestGuiWindow : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(w.results()->rowCount() >= 1, kRunTimeoutMs);
         // Cancel: the window stays and the run goes on.
         bool closed = true;
-        QString asked = answerQuitQuestion(&w.window, "quitCancel", [&] { closed = w.window.close(); });
+        QString asked =
+            answerQuitQuestion(&w.window, "quitCancel", [&] { closed = w.window.close(); });
         QVERIFY2(asked.contains(QLatin1String("a simulated run")), qPrintable(asked));
         QVERIFY(!closed);
         QVERIFY(w.window.isVisible());
@@ -442,7 +454,8 @@ class TestGuiWindow : public QObject {
         auto* experiments = w.find<ExperimentsPanel>("experimentsPanel");
         experiments->start();
         QVERIFY(experiments->isRunning());
-        const QString asked = answerQuitQuestion(&w.window, "quitFinish", [&] { w.window.close(); });
+        const QString asked =
+            answerQuitQuestion(&w.window, "quitFinish", [&] { w.window.close(); });
         QVERIFY2(asked.contains(QLatin1String("an experiment")), qPrintable(asked));
         QVERIFY(w.window.isVisible());  // still there while the experiment runs
         QTRY_VERIFY_WITH_TIMEOUT(!w.window.isVisible(), 240000);
@@ -470,7 +483,8 @@ class TestGuiWindow : public QObject {
         // Reset E-STOP: what happened, and when, stays readable.
         panel->resetEmergencyAction()->trigger();
         QTRY_VERIFY(status->text().contains(QLatin1String("E-STOP was pressed at")));
-        QVERIFY(status->text().contains(explanation.mid(explanation.indexOf(QLatin1String("at ")) + 3, 8)));
+        QVERIFY(status->text().contains(
+            explanation.mid(explanation.indexOf(QLatin1String("at ")) + 3, 8)));
         // Running again clears it.
         w.setSpeedIndex(2);
         w.find<QSpinBox>("trials")->setValue(1);
@@ -521,12 +535,14 @@ class TestGuiWindow : public QObject {
         dockOf(w, "rigDock")->raise();
         for (int page = 0; page < 3; ++page) {
             w.find<QTabWidget>("rigTabs")->setCurrentIndex(page);
-            for (const char* name : {"startCamera", "connectLink", "runOnRig", "stopOnRig", "driveOnRig"}) {
+            for (const char* name :
+                 {"startCamera", "connectLink", "runOnRig", "stopOnRig", "driveOnRig"}) {
                 QTRY_VERIFY2(wholeInView(w.find<QPushButton>(name)), name);
             }
             // Every page as wide as the panel: no sideways scrolling. On failure, the widgets
             // wider than the page say which.
-            auto* scroll = qobject_cast<QScrollArea*>(w.find<QTabWidget>("rigTabs")->currentWidget());
+            auto* scroll =
+                qobject_cast<QScrollArea*>(w.find<QTabWidget>("rigTabs")->currentWidget());
             QVERIFY(scroll);
             const auto tooWide = [scroll] {
                 QStringList wide;
@@ -585,11 +601,13 @@ class TestGuiWindow : public QObject {
             QCoreApplication::processEvents();
             // Every chart's vertical title fits the plot's height (else QtCharts elides it to
             // a sliver), with the chart dock at its smallest.
-            for (QChartView* view : w.find<LiveChartsPanel>("liveChartsPanel")->findChildren<QChartView*>()) {
+            for (QChartView* view :
+                 w.find<LiveChartsPanel>("liveChartsPanel")->findChildren<QChartView*>()) {
                 view->resize(view->width(), view->minimumHeight());
                 view->chart()->resize(view->size());
                 for (QAbstractAxis* axis : view->chart()->axes(Qt::Vertical)) {
-                    const int title = QFontMetrics(axis->titleFont()).horizontalAdvance(axis->titleText());
+                    const int title =
+                        QFontMetrics(axis->titleFont()).horizontalAdvance(axis->titleText());
                     QVERIFY2(title < view->chart()->plotArea().height(),
                              qPrintable(QStringLiteral("%1: \"%2\" is %3 px on a %4 px axis")
                                             .arg(QLatin1String(language), axis->titleText())
@@ -638,7 +656,8 @@ class TestGuiWindow : public QObject {
                      qPrintable(QString::number(r)));
         }
         QTRY_VERIFY(!results->horizontalScrollBar()->isVisible());
-        for (const char* name : {"startExperiment", "cancelExperiment", "exportTable", "exportFigure"}) {
+        for (const char* name :
+             {"startExperiment", "cancelExperiment", "exportTable", "exportFigure"}) {
             QVERIFY2(wholeInView(w.find<QWidget>(name)), name);
         }
         QVERIFY(wholeInView(w.find<QWidget>("experimentCount")));
@@ -671,10 +690,10 @@ class TestGuiWindow : public QObject {
         const QMap<QString, QString> chinese = visibleTexts(&w.window);
         // Texts with English words left after the switch (names and units aside).
         static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
-        static const QSet<QString> names = {
-            QStringLiteral("PRISCA"), QStringLiteral("PGSD"), QStringLiteral("PEGASUS"),
-            QStringLiteral("STOP"), QStringLiteral("CRSF"), QStringLiteral("SBUS"),
-            QStringLiteral("LATCHED"), QStringLiteral("V4L2")};
+        static const QSet<QString> names = {QStringLiteral("PRISCA"),  QStringLiteral("PGSD"),
+                                            QStringLiteral("PEGASUS"), QStringLiteral("STOP"),
+                                            QStringLiteral("CRSF"),    QStringLiteral("SBUS"),
+                                            QStringLiteral("LATCHED"), QStringLiteral("V4L2")};
         // Kept as they are in every language, by design: the methods' labels (Table I's row
         // names, as in the paper), a parameter's choices (its --param values), the plant's
         // control names (the demonstration file's columns), each language's own name, ports.
@@ -682,7 +701,8 @@ class TestGuiWindow : public QObject {
         for (const QString& id : prisca::sim::MethodCatalog::ids()) {
             asIs.insert(prisca::sim::MethodCatalog::get(id).label);
         }
-        for (const prisca::sim::MethodParameter* parameter : prisca::sim::MethodCatalog::parameters()) {
+        for (const prisca::sim::MethodParameter* parameter :
+             prisca::sim::MethodCatalog::parameters()) {
             for (const char* choice : parameter->choices) {
                 asIs.insert(QString::fromLatin1(choice));
             }
@@ -704,8 +724,8 @@ class TestGuiWindow : public QObject {
             while (match.hasNext()) {
                 const QString w = match.next().captured();
                 if (!names.contains(w.toUpper()) && !names.contains(w)) {
-                    english_left << it.key().section(QLatin1Char('@'), 0, 0) + QStringLiteral(" = ") +
-                                        it.value().left(80);
+                    english_left << it.key().section(QLatin1Char('@'), 0, 0) +
+                                        QStringLiteral(" = ") + it.value().left(80);
                     break;
                 }
             }

@@ -1,8 +1,8 @@
 // The main window driven offscreen: title, menus, run-time language switch, remembered settings,
 // clean close.
+#include "app/ExperimentArchive.h"
 #include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
-#include "app/ExperimentArchive.h"
 #include "app/MainWindow.h"
 #include "app/ModalDialog.h"
 
@@ -276,8 +276,8 @@ void TestMainWindow::wheel_overAnUnfocusedSettingScrollsAndLeavesIt() {
         // From the window system, as a real wheel: to the window at the setting's position;
         // the window finds the widget there, the application gives focus by policy, delivers
         // the event and propagates it.
-        const QPointF at = protocol->mapTo(&window, QPointF(protocol->width() / 2.0,
-                                                            protocol->height() / 2.0));
+        const QPointF at =
+            protocol->mapTo(&window, QPointF(protocol->width() / 2.0, protocol->height() / 2.0));
         QWheelEvent event(at, window.mapToGlobal(at), QPoint(), QPoint(0, -120 * steps),
                           Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
         QSpontaneKeyEvent::setSpontaneous(&event);
@@ -300,7 +300,8 @@ void TestMainWindow::wheel_overAnUnfocusedSettingScrollsAndLeavesIt() {
     QVERIFY(panel);
     panel->verticalScrollBar()->setValue(0);
     // The rig's Link page scrolls in a short window (its buttons stay above the pages).
-    for (int height = 800; height >= 500 && panel->verticalScrollBar()->maximum() == 0; height -= 50) {
+    for (int height = 800; height >= 500 && panel->verticalScrollBar()->maximum() == 0;
+         height -= 50) {
         window.resize(1280, height);
         QCoreApplication::processEvents();  // the new layout
     }

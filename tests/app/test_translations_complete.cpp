@@ -158,15 +158,17 @@ QStringList appSources() {
     }
     sources.sort();
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/PlantCatalog.cpp");  // the plants' names
-    for (const char* family : {"FeedbackMethods", "LearningMethods", "LqrMethod",
-                               "PlanningMethods", "PriscaMethods"}) {  // method parameters
-        sources << QStringLiteral(PRISCA_SOURCE_DIR "/sim/methods/%1.cpp").arg(QLatin1String(family));
+    for (const char* family : {"FeedbackMethods", "LearningMethods", "LqrMethod", "PlanningMethods",
+                               "PriscaMethods"}) {  // method parameters
+        sources
+            << QStringLiteral(PRISCA_SOURCE_DIR "/sim/methods/%1.cpp").arg(QLatin1String(family));
     }
-    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");    // the rig's messages
-    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");  // the pre-trial check
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");      // the rig's messages
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");   // the pre-trial check
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigCalibration.cpp");  // the set-up
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/core/ActionMapping.cpp");  // the fit's warnings
-    sources << QStringLiteral(PRISCA_SOURCE_DIR "/devices/TransmitterLink.cpp");  // failsafe reasons
+    sources << QStringLiteral(PRISCA_SOURCE_DIR
+                              "/devices/TransmitterLink.cpp");  // failsafe reasons
     return sources;
 }
 

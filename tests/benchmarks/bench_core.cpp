@@ -1,5 +1,6 @@
 // Core benchmarks (make bench): one PRISCA control step and the least-state-deviation match.
-// Prints medians over batches; compare with the targets in docs/architecture.md "Performance targets".
+// Prints medians over batches; compare with the targets in docs/architecture.md "Performance
+// targets".
 #include "core/Controller.h"
 #include "core/DemonstrationCsv.h"
 #include "core/DeviationModel.h"

@@ -107,10 +107,10 @@ double flatness(const char* what, const std::vector<std::pair<int, int>>& sizes,
         }
         const double total = median(totals), scoring = median(scorings);
         perSample.push_back(total / samples);
-        std::printf("one PRISCA trial on a %d-sample slide-car %s: median %.1f ms, %.2f us per "
-                    "sample (scoring %.2f us per sample), %d runs\n",
-                    samples, what, 1e3 * total, 1e6 * perSample.back(), 1e6 * scoring / samples,
-                    repeats);
+        std::printf(
+            "one PRISCA trial on a %d-sample slide-car %s: median %.1f ms, %.2f us per "
+            "sample (scoring %.2f us per sample), %d runs\n",
+            samples, what, 1e3 * total, 1e6 * perSample.back(), 1e6 * scoring / samples, repeats);
     }
     const double ratio = perSample.back() / perSample.front();
     std::printf("per-sample time, %d over %d samples (%s): %.2fx (limit %.0fx)\n",
@@ -122,10 +122,9 @@ double flatness(const char* what, const std::vector<std::pair<int, int>>& sizes,
 
 int main() {
     // Enough repeats for a second or more of trials at each size.
-    const double moving =
-        flatness("demonstration", {{1000, 31}, {10000, 5}, {100000, 3}}, -1);
-    const double still = flatness("take with a still tail after 5 s",
-                                  {{1000, 31}, {10000, 5}, {40000, 3}}, 200);
+    const double moving = flatness("demonstration", {{1000, 31}, {10000, 5}, {100000, 3}}, -1);
+    const double still =
+        flatness("take with a still tail after 5 s", {{1000, 31}, {10000, 5}, {40000, 3}}, 200);
     if (!(moving <= kFlatnessLimit) || !(still <= kFlatnessLimit)) {
         std::printf("FAIL: the time per sample grows with the demonstration's length\n");
         return 1;

@@ -21,7 +21,8 @@ int main() {
     sim::SimulationTiming timing;
     timing.controlPeriod = 0.04;  // 25 Hz
     auto demo = std::make_shared<core::Demonstration>(sim::SlideCarDemonstrator::record(1, timing));
-    sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    sim::MethodTuning profile =
+        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
     profile.mpcModel =
         std::make_shared<const sim::PlantParameters>(sim::defaultPlantParameters("slidecar"));
     const Eigen::MatrixXd B =
@@ -38,7 +39,8 @@ int main() {
         while (!stepper.finished()) {
             const auto start = Clock::now();
             stepper.step();
-            stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+            stepMs.push_back(
+                std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }
     }
     std::sort(stepMs.begin(), stepMs.end());
@@ -46,8 +48,9 @@ int main() {
         return stepMs[std::min(stepMs.size() - 1, static_cast<size_t>(q * stepMs.size()))];
     };
     const double p99 = at(0.99);
-    std::printf("mpc on the slide-car at 25 Hz, %zu control steps (plant step included): median "
-                "%.2f ms, p99 %.2f ms, worst %.2f ms (target p99 <= 20 ms)\n",
-                stepMs.size(), at(0.5), p99, stepMs.back());
+    std::printf(
+        "mpc on the slide-car at 25 Hz, %zu control steps (plant step included): median "
+        "%.2f ms, p99 %.2f ms, worst %.2f ms (target p99 <= 20 ms)\n",
+        stepMs.size(), at(0.5), p99, stepMs.back());
     return p99 <= 20.0 ? 0 : 1;
 }

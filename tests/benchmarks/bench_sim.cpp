@@ -1,11 +1,11 @@
 // Simulation benchmarks (make bench): slide-car speed against real time, and a 20-trial batch
 // of closed-loop PRISCA trials on 1 and 2 threads.
 #include "core/ActionMapping.h"
-#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
+#include "sim/MethodTuning.h"
 #include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
-#include "sim/MethodTuning.h"
 #include "sim/Table1Experiment.h"
 
 #include <algorithm>
@@ -117,9 +117,10 @@ int main() {
         const auto start = Clock::now();
         const sim::Table1Result result = sim::runTable1(settings, task);
         const auto rows = sim::table1Rows(result);
-        std::printf("table1, the oracle alone (20 trials) on 2 threads: %.2f s, %.0f us of CPU per "
-                    "control step\n",
-                    seconds(start), rows.front().cpuMicrosecondsPerStep);
+        std::printf(
+            "table1, the oracle alone (20 trials) on 2 threads: %.2f s, %.0f us of CPU per "
+            "control step\n",
+            seconds(start), rows.front().cpuMicrosecondsPerStep);
     }
     return 0;
 }

@@ -162,17 +162,18 @@ class TestActionMapping : public QObject {
             QVERIFY2(std::abs(fit.bv(0, 0) - 1.0) < 0.05 && std::abs(fit.bv(0, 1) - 3.0) < 0.15,
                      qPrintable(what));  // within 5 %
             QVERIFY2(std::abs(biased.bv(0, 1) - 3.0) > 0.3, qPrintable(what));
-            QVERIFY2((fit.a - A).cwiseAbs().maxCoeff() < 0.1,
-                     qPrintable(QStringLiteral("A off by %1").arg((fit.a - A).cwiseAbs().maxCoeff())));
+            QVERIFY2(
+                (fit.a - A).cwiseAbs().maxCoeff() < 0.1,
+                qPrintable(QStringLiteral("A off by %1").arg((fit.a - A).cwiseAbs().maxCoeff())));
             QVERIFY(biased.a.isZero());
             QVERIFY(fit.rSquared.minCoeff() > 0.99);
         }
         // The drift needs the one-step rate-change target.
         ActionMappingFitOptions bad = full;
         bad.responseSteps = 3;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                                 fitActionMapping(demonstrate(false), signs,
-                                                  DeviationModel::euclidean(2), bad));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            fitActionMapping(demonstrate(false), signs, DeviationModel::euclidean(2), bad));
     }
 
     void fit_stateChangeTargetRecoversDataOfItsOwnModel() {
@@ -350,7 +351,8 @@ class TestActionMapping : public QObject {
             outside += !robust.explained[k] && !sliding;
             inside += !robust.explained[k] && sliding;
         }
-        QVERIFY2(outside == 0 && inside > 200, qPrintable(QStringLiteral("%1 %2").arg(outside).arg(inside)));
+        QVERIFY2(outside == 0 && inside > 200,
+                 qPrintable(QStringLiteral("%1 %2").arg(outside).arg(inside)));
         QVERIFY(std::all_of(ols.explained.begin(), ols.explained.end(), [](bool b) { return b; }));
     }
 

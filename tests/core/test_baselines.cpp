@@ -186,11 +186,13 @@ class TestBaselines : public QObject {
             }
             return e.norm();
         };
-        QVERIFY2(finalError(1.0, false) < 0.01, qPrintable(QString::number(finalError(1.0, false))));
+        QVERIFY2(finalError(1.0, false) < 0.01,
+                 qPrintable(QString::number(finalError(1.0, false))));
         QVERIFY2(finalError(1.0, true) == finalError(1.0, false), "forward: nothing changes");
         QVERIFY2(!(finalError(-1.0, false) < 1.0),
                  qPrintable(QString::number(finalError(-1.0, false))));
-        QVERIFY2(finalError(-1.0, true) < 0.01, qPrintable(QString::number(finalError(-1.0, true))));
+        QVERIFY2(finalError(-1.0, true) < 0.01,
+                 qPrintable(QString::number(finalError(-1.0, true))));
     }
 
     void pdH_smoothsTheErrorWithTheNestedWeights() {
@@ -374,12 +376,11 @@ class TestBaselines : public QObject {
                 tracker->reset(ResetMode::Cold);
                 double worst = 0.0;
                 for (int k = 0; k < demo->length(); ++k) {
-                    const Eigen::VectorXd seen =
-                        demo->states.row(std::max(0, k - age)).transpose();
+                    const Eigen::VectorXd seen = demo->states.row(std::max(0, k - age)).transpose();
                     const ControlStep& out = tracker->step(seen);
-                    worst = std::max(worst, (out.action - demo->actions.row(k).transpose())
-                                                .cwiseAbs()
-                                                .maxCoeff());
+                    worst = std::max(
+                        worst,
+                        (out.action - demo->actions.row(k).transpose()).cwiseAbs().maxCoeff());
                 }
                 if (compensate) {
                     QVERIFY2(worst < 1e-12, qPrintable(tracker->name()));
@@ -404,8 +405,8 @@ class TestBaselines : public QObject {
         parameters.cutoff = 0.0;
         IlcController ilc(problemFor(demo, MatchingParameters::Mode::TimeDriven), parameters);
         QCOMPARE(ilc.name(), QStringLiteral("ilc"));
-        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven),
-                        parameters.feedback, "pd");
+        PdController pd(problemFor(demo, MatchingParameters::Mode::TimeDriven), parameters.feedback,
+                        "pd");
         const double feedbackOnly = closedLoopCost(pd, *demo, G, 1.6);
         std::vector<double> costs;
         for (int trial = 0; trial < 30; ++trial) {

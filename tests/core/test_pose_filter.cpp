@@ -77,7 +77,8 @@ Consistency ownModelRuns(const PoseFilterParameters& parameters, int runs, int s
         }
         for (int k = 0; k < steps; ++k) {
             if (k > 0) {
-                const Matrix6 q = PoseFilter::processNoise(truth, dt, parameters.accelerationDensity);
+                const Matrix6 q =
+                    PoseFilter::processNoise(truth, dt, parameters.accelerationDensity);
                 Vector6 w;
                 for (int i = 0; i < 6; ++i) {
                     w[i] = normal(random);
@@ -177,7 +178,10 @@ class TestPoseFilter : public QObject {
             const double q = core::chiSquareQuantile(row.p, row.dof);
             QVERIFY2(std::abs(q / row.value - 1.0) < row.tolerance,
                      qPrintable(QStringLiteral("chi2(%1, %2) = %3, table %4")
-                                    .arg(row.p).arg(row.dof).arg(q).arg(row.value)));
+                                    .arg(row.p)
+                                    .arg(row.dof)
+                                    .arg(q)
+                                    .arg(row.value)));
         }
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, core::normalQuantile(1.0));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, core::chiSquareQuantile(0.5, 0));
@@ -194,7 +198,8 @@ class TestPoseFilter : public QObject {
                 Vector6 plus = x, minus = x;
                 plus[j] += h;
                 minus[j] -= h;
-                Vector6 column = PoseFilter::propagate(plus, 0.04) - PoseFilter::propagate(minus, 0.04);
+                Vector6 column =
+                    PoseFilter::propagate(plus, 0.04) - PoseFilter::propagate(minus, 0.04);
                 column[2] = core::wrapAngle(column[2]);
                 column /= 2 * h;
                 QVERIFY2((column - f.col(j)).cwiseAbs().maxCoeff() < 1e-6,
@@ -228,11 +233,15 @@ class TestPoseFilter : public QObject {
         // Each step's average over the runs lies inside its 95% bounds about 95% of the time;
         // steps are correlated, so allow some slack, and check the overall mean too.
         const double neesInside = shareInside(c.nees, runs, 6, 0);
-        const double nisInside = shareInside(c.nis, runs, static_cast<int>(parameters.measured.size()), 1);
+        const double nisInside =
+            shareInside(c.nis, runs, static_cast<int>(parameters.measured.size()), 1);
         const double neesMean = mean(c.nees, 0);
         const double nisMean = mean(c.nis, 1);
         const QString report = QStringLiteral("NEES mean %1 (%2 inside), NIS mean %3 (%4 inside)")
-                                   .arg(neesMean).arg(neesInside).arg(nisMean).arg(nisInside);
+                                   .arg(neesMean)
+                                   .arg(neesInside)
+                                   .arg(nisMean)
+                                   .arg(nisInside);
         qInfo("%s", qPrintable(report));
         QVERIFY2(neesInside >= 0.9, qPrintable(report));
         QVERIFY2(nisInside >= 0.9, qPrintable(report));
@@ -267,7 +276,9 @@ class TestPoseFilter : public QObject {
         const double neesInside = shareInside(nees, runs, 6, 0);
         const double nisInside = shareInside(nis, runs, 6, 1);
         const QString report = QStringLiteral("NEES mean %1 (%2 inside), NIS mean %3 (%4 inside)")
-                                   .arg(mean(nees, 0)).arg(neesInside).arg(mean(nis, 1))
+                                   .arg(mean(nees, 0))
+                                   .arg(neesInside)
+                                   .arg(mean(nis, 1))
                                    .arg(nisInside);
         qInfo("%s", qPrintable(report));
         QVERIFY2(neesInside >= 0.9, qPrintable(report));
@@ -304,10 +315,12 @@ class TestPoseFilter : public QObject {
         }
         const double rmsFiltered = std::sqrt(filtered / counted);
         const double rmsRaw = std::sqrt(raw / counted);
-        const QString report = QStringLiteral("position RMS now %1 m, delayed %2 m; heading %3, %4 rad")
-                                   .arg(rmsFiltered).arg(rmsRaw)
-                                   .arg(std::sqrt(filteredHeading / counted))
-                                   .arg(std::sqrt(rawHeading / counted));
+        const QString report =
+            QStringLiteral("position RMS now %1 m, delayed %2 m; heading %3, %4 rad")
+                .arg(rmsFiltered)
+                .arg(rmsRaw)
+                .arg(std::sqrt(filteredHeading / counted))
+                .arg(std::sqrt(rawHeading / counted));
         qInfo("%s", qPrintable(report));
         QVERIFY2(rmsRaw > 0.1, qPrintable(report));  // 75 ms at 1.5 m/s
         QVERIFY2(rmsFiltered < 0.25 * rmsRaw, qPrintable(report));
@@ -354,10 +367,13 @@ class TestPoseFilter : public QObject {
                 truth[5] += 4.0 * dt / 50.0;
             }
         }
-        const QString report = QStringLiteral("velocity RMS error of now: random walk %1, with "
-                                              "accelerations %2; acceleration estimate %3, %4")
-                                   .arg(std::sqrt(plainError / 50)).arg(std::sqrt(trendError / 50))
-                                   .arg(b.nowAcceleration()[0]).arg(b.nowAcceleration()[2]);
+        const QString report = QStringLiteral(
+                                   "velocity RMS error of now: random walk %1, with "
+                                   "accelerations %2; acceleration estimate %3, %4")
+                                   .arg(std::sqrt(plainError / 50))
+                                   .arg(std::sqrt(trendError / 50))
+                                   .arg(b.nowAcceleration()[0])
+                                   .arg(b.nowAcceleration()[2]);
         qInfo("%s", qPrintable(report));
         QVERIFY2(trendError < 0.25 * plainError, qPrintable(report));
         QVERIFY2(std::abs(b.nowAcceleration()[0] - 2.0) < 0.5, qPrintable(report));
@@ -406,8 +422,11 @@ class TestPoseFilter : public QObject {
             previous = truth.state();
             truth.advance();
         }
-        const QString report = QStringLiteral("worst error before %1 m, in the gap %2 m, after %3 m")
-                                   .arg(beforeGap).arg(worstInGap).arg(afterGap);
+        const QString report =
+            QStringLiteral("worst error before %1 m, in the gap %2 m, after %3 m")
+                .arg(beforeGap)
+                .arg(worstInGap)
+                .arg(afterGap);
         qInfo("%s", qPrintable(report));
         QCOMPARE(filter.predictOnlyCount(), 12);
         QVERIFY2(worstInGap > beforeGap, qPrintable(report));  // it grows ...
@@ -579,15 +598,17 @@ class TestPoseFilter : public QObject {
             }
             return {};
         };
-        QVERIFY(message([&] { filter.step(Eigen::VectorXd::Zero(5)); })
-                    .contains(QStringLiteral("observation has 5 components, expected 6")));
+        QVERIFY(message([&] {
+                    filter.step(Eigen::VectorXd::Zero(5));
+                }).contains(QStringLiteral("observation has 5 components, expected 6")));
         Eigen::VectorXd nan = Eigen::VectorXd::Zero(6);
         nan[2] = std::numeric_limits<double>::quiet_NaN();
         QVERIFY(message([&] { filter.step(nan); }).contains(QStringLiteral("heading")));
         QVERIFY(!filter.status().initialised);  // nothing taken from a refused sample
         filter.step(Eigen::VectorXd::Zero(6));
-        QVERIFY(message([&] { filter.commanded(Eigen::VectorXd::Zero(3)); })
-                    .contains(QStringLiteral("action has 3 components")));
+        QVERIFY(message([&] {
+                    filter.commanded(Eigen::VectorXd::Zero(3));
+                }).contains(QStringLiteral("action has 3 components")));
         QVERIFY_THROWS_EXCEPTION(std::logic_error, PoseFilter(parameters).predictTo(0.0));
 
         PoseFilterParameters bad = parameters;

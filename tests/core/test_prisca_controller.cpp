@@ -495,15 +495,16 @@ class TestPriscaController : public QObject {
             }
             return thetas;
         };
-        for (auto gradient : {PriscaParameters::Gradient::ClosedLoop,
-                              PriscaParameters::Gradient::OneStep}) {
+        for (auto gradient :
+             {PriscaParameters::Gradient::ClosedLoop, PriscaParameters::Gradient::OneStep}) {
             const std::vector<double> base = learn(gradient, true, 1.0, 1.0);
             const std::vector<double> scaled = learn(gradient, true, c, costUnit);
             QVERIFY(std::abs(base.back()) > 1e-3);  // it learned something
             for (size_t t = 0; t < base.size(); ++t) {
-                QVERIFY2(std::abs(scaled[t] - base[t]) <= 1e-9 * std::abs(base[t]),
-                         qPrintable(QStringLiteral("trial %1: %2 vs %3")
-                                        .arg(t).arg(scaled[t]).arg(base[t])));
+                QVERIFY2(
+                    std::abs(scaled[t] - base[t]) <= 1e-9 * std::abs(base[t]),
+                    qPrintable(
+                        QStringLiteral("trial %1: %2 vs %3").arg(t).arg(scaled[t]).arg(base[t])));
             }
             const std::vector<double> plain = learn(gradient, false, 1.0, 1.0);
             const std::vector<double> plainScaled = learn(gradient, false, c, costUnit);
@@ -535,9 +536,11 @@ class TestPriscaController : public QObject {
         };
         QCOMPARE(firstGain(1), 0.0);
         const double three = firstGain(3), ten = firstGain(10);
-        QVERIFY2(three < 0.0 && ten < three, qPrintable(QStringLiteral("%1 %2").arg(three).arg(ten)));
+        QVERIFY2(three < 0.0 && ten < three,
+                 qPrintable(QStringLiteral("%1 %2").arg(three).arg(ten)));
         // sum_{i<N} (I + dt A)^i dt B = (dt^2 N(N-1)/2, N dt): the position part grows as N^2.
-        QVERIFY2(std::abs(ten / three - 45.0 / 3.0) < 1e-9, qPrintable(QString::number(ten / three)));
+        QVERIFY2(std::abs(ten / three - 45.0 / 3.0) < 1e-9,
+                 qPrintable(QString::number(ten / three)));
         std::mt19937 rng(61);
         auto other = randomDemonstration(10, 2, 1, 0.05, rng);
         PriscaParameters zero;
@@ -545,7 +548,8 @@ class TestPriscaController : public QObject {
         QVERIFY_THROWS_EXCEPTION(
             std::invalid_argument,
             PriscaController(problemFor(other, MatchingParameters::Mode::TimeDriven, 1.0),
-                             FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2), zero));
+                             FeatureMap::deviationFeatures(1, {0}), Eigen::MatrixXd::Ones(1, 2),
+                             zero));
     }
 
     void prior_withThetaZeroIsThePdLawExactly() {
@@ -584,7 +588,8 @@ class TestPriscaController : public QObject {
                 const Eigen::VectorXd u = pdStep.action;
                 const int j = pdStep.referenceIndex;
                 const ControlStep& v = fixed.step(s);
-                QVERIFY2(u == v.action, qPrintable(QStringLiteral("trial %1 step %2").arg(trial).arg(k)));
+                QVERIFY2(u == v.action,
+                         qPrintable(QStringLiteral("trial %1 step %2").arg(trial).arg(k)));
                 QCOMPARE(v.referenceIndex, j);
                 departed = departed || learner.step(s).action != u;
             }
@@ -621,8 +626,9 @@ class TestPriscaController : public QObject {
         const double c1 = -q * bd * bd;
         const double P = (-c1 + std::sqrt(c1 * c1 + 4.0 * bd * bd * q * r)) / (2.0 * bd * bd);
         const double expected = bd * P / (r + bd * bd * P);
-        QVERIFY2(std::abs(law.gain(0, 0) - expected) < 1e-9 * expected,
-                 qPrintable(QStringLiteral("K %1, closed form %2").arg(law.gain(0, 0)).arg(expected)));
+        QVERIFY2(
+            std::abs(law.gain(0, 0) - expected) < 1e-9 * expected,
+            qPrintable(QStringLiteral("K %1, closed form %2").arg(law.gain(0, 0)).arg(expected)));
         // As the PD family forms it: u = u* - 1 * (K e), smoothed over the horizon asked for.
         QCOMPARE(law.law.errorCombination.rows(), 1);
         QCOMPARE(law.law.errorCombination(0, 0), law.gain(0, 0));
@@ -649,8 +655,9 @@ class TestPriscaController : public QObject {
                 best = k;
             }
         }
-        QVERIFY2(std::abs(best - law.gain(0, 0)) <= expected / 200.0 + 1e-12,
-                 qPrintable(QStringLiteral("grid best %1, derived %2").arg(best).arg(law.gain(0, 0))));
+        QVERIFY2(
+            std::abs(best - law.gain(0, 0)) <= expected / 200.0 + 1e-12,
+            qPrintable(QStringLiteral("grid best %1, derived %2").arg(best).arg(law.gain(0, 0))));
     }
 
     // On a double integrator (position and speed, the speed driven by the control, the position
@@ -678,18 +685,18 @@ class TestPriscaController : public QObject {
         const double r = 1.0;
         const double k1 = std::sqrt(q1 / r);
         const double k2 = std::sqrt(q2 / r + 2.0 * std::sqrt(q1 / r) / b);
-        QVERIFY2(std::abs(law.gain(0, 0) - k1) < 0.01 * k1 &&
-                     std::abs(law.gain(0, 1) - k2) < 0.01 * k2,
-                 qPrintable(QStringLiteral("K (%1, %2), continuous optimum (%3, %4)")
-                                .arg(law.gain(0, 0))
-                                .arg(law.gain(0, 1))
-                                .arg(k1)
-                                .arg(k2)));
+        QVERIFY2(
+            std::abs(law.gain(0, 0) - k1) < 0.01 * k1 && std::abs(law.gain(0, 1) - k2) < 0.01 * k2,
+            qPrintable(QStringLiteral("K (%1, %2), continuous optimum (%3, %4)")
+                           .arg(law.gain(0, 0))
+                           .arg(law.gain(0, 1))
+                           .arg(k1)
+                           .arg(k2)));
         // Shapes it refuses.
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                                 deriveStartLaw(demo, Eigen::MatrixXd::Ones(2, 2),
-                                                DeviationModel::euclidean(2),
-                                                ActionLimits::symmetric(1, 1.0), options));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            deriveStartLaw(demo, Eigen::MatrixXd::Ones(2, 2), DeviationModel::euclidean(2),
+                           ActionLimits::symmetric(1, 1.0), options));
         options.scaleLag = T;
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  deriveStartLaw(demo, B, DeviationModel::euclidean(2),
@@ -705,8 +712,8 @@ class TestPriscaController : public QObject {
         const int T = 400, lag = 50;
         Demonstration demo = prisca::test::namedDemonstration(T, 2, 1, dt);
         for (int k = 0; k < T; ++k) {
-            demo.states(k, 0) = 0.5 * std::sin(0.9 * k * dt);        // heading
-            demo.states(k, 1) = 0.45 * std::cos(0.9 * k * dt);       // its rate
+            demo.states(k, 0) = 0.5 * std::sin(0.9 * k * dt);   // heading
+            demo.states(k, 1) = 0.45 * std::cos(0.9 * k * dt);  // its rate
             demo.actions(k, 0) = demo.states(k, 1) / g;
         }
         StartLawOptions options;
@@ -715,14 +722,14 @@ class TestPriscaController : public QObject {
         options.proportional = (Eigen::MatrixXd(1, 2) << 0.0, g).finished();
         const Eigen::MatrixXd B = (Eigen::MatrixXd(1, 2) << 0.0, 7.0).finished();  // ignored
         const ActionLimits limits = ActionLimits::symmetric(1, 1.0);
-        const StartLaw law =
-            deriveStartLaw(demo, B, DeviationModel::euclidean(2), limits, options);
+        const StartLaw law = deriveStartLaw(demo, B, DeviationModel::euclidean(2), limits, options);
         const double q = 1.0 / std::pow(law.errorScale[0], 2), r = 1.0, bd = dt * g;
         const double c1 = -q * bd * bd;
         const double P = (-c1 + std::sqrt(c1 * c1 + 4.0 * bd * bd * q * r)) / (2.0 * bd * bd);
         const double expected = bd * P / (r + bd * bd * P);
-        QVERIFY2(std::abs(law.gain(0, 0) - expected) < 1e-9 * expected,
-                 qPrintable(QStringLiteral("K %1, closed form %2").arg(law.gain(0, 0)).arg(expected)));
+        QVERIFY2(
+            std::abs(law.gain(0, 0) - expected) < 1e-9 * expected,
+            qPrintable(QStringLiteral("K %1, closed form %2").arg(law.gain(0, 0)).arg(expected)));
         QCOMPARE(law.gain(0, 1), 0.0);
         QCOMPARE(law.reducedEffect(0, 0), g);
         // Both given as set: the heading integrates the rate, so only the rate leaves.

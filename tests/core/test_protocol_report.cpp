@@ -91,10 +91,9 @@ class TestProtocolReport : public QObject {
         const QString md = formatProtocol(example(), TableFormat::Markdown, "caption");
         QVERIFY(md.startsWith("caption\n"));
         const double half = kT975dof3 * std::sqrt(20.0 / 3.0) / 2.0;
-        const QString expected =
-            QStringLiteral("| OURS (PRISCA) | 4 | 4 | 5.00 [%1, %2] | 5.0x | ")
-                .arg(5.0 - half, 0, 'f', 2)
-                .arg(5.0 + half, 0, 'f', 2);
+        const QString expected = QStringLiteral("| OURS (PRISCA) | 4 | 4 | 5.00 [%1, %2] | 5.0x | ")
+                                     .arg(5.0 - half, 0, 'f', 2)
+                                     .arg(5.0 + half, 0, 'f', 2);
         QVERIFY2(md.contains(expected), qPrintable(md));
         QVERIFY2(md.contains("| 25.0x | 2.5 |"), qPrintable(md));  // 50 deg / 2 deg; CPU
         QVERIFY(md.contains("| LIMIT (oracle) | 4 | 4 | 1.00 [1.00, 1.00] | 1.0x |"));
@@ -128,9 +127,13 @@ class TestProtocolReport : public QObject {
         const QJsonArray styles = prisca.value("styles").toArray();
         QCOMPARE(styles.size(), 2);
         QCOMPARE(styles[1].toObject().value("style").toString(), QStringLiteral("B"));
-        QCOMPARE(
-            styles[1].toObject().value("positionCm").toObject().value("meanAbsoluteError").toDouble(),
-            7.0);
+        QCOMPARE(styles[1]
+                     .toObject()
+                     .value("positionCm")
+                     .toObject()
+                     .value("meanAbsoluteError")
+                     .toDouble(),
+                 7.0);
         QCOMPARE(root.value("seedSets").toArray().size(), 2);
     }
 

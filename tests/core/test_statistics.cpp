@@ -1,6 +1,6 @@
 // Table I error statistics, the Student t distribution and the learning-curve confidence band
-// (docs/architecture.md "Metrics"), checked against hand-computed values, closed forms, tabulated quantiles
-// and plain brute-force computations written here independently of core/Statistics.cpp.
+// (docs/architecture.md "Metrics"), checked against hand-computed values, closed forms, tabulated
+// quantiles and plain brute-force computations written here independently of core/Statistics.cpp.
 
 #include <QtTest>
 
@@ -187,8 +187,9 @@ void TestStatistics::studentT_matchesTabulatedValues_data() {
     QTest::addColumn<int>("dof");
     QTest::addColumn<double>("expected");
     // Reference values: the 0.975 rows are the widely tabulated double-precision values; the
-    // others were computed at 40 significant digits in arbitrary-precision arithmetic. For (0.95, 10) the sometimes
-    // quoted 1.8124611228107335 is off by 9e-13, as the even-dof closed-form CDF confirms.
+    // others were computed at 40 significant digits in arbitrary-precision arithmetic. For (0.95,
+    // 10) the sometimes quoted 1.8124611228107335 is off by 9e-13, as the even-dof closed-form CDF
+    // confirms.
     QTest::newRow("0.975, 1") << 0.975 << 1 << 12.706204736174707;
     QTest::newRow("0.975, 2") << 0.975 << 2 << 4.302652729749464;
     QTest::newRow("0.975, 7") << 0.975 << 7 << 2.3646242515927847;

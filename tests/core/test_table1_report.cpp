@@ -36,8 +36,9 @@ class TestTable1Report : public QObject {
         const QString csv = formatTable1(rows(), TableFormat::Csv, "c");
         const QStringList lines = csv.trimmed().split('\n');
         QCOMPARE(lines.size(), 3);
-        QCOMPARE(lines[1],
-                 QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100,0.68149999999999999,3,false"));
+        QCOMPARE(
+            lines[1],
+            QStringLiteral("prisca,OURS (PRISCA),3,5,2,4,20,10,100,0.68149999999999999,3,false"));
         QCOMPARE(lines[0].split(',').size(), lines[1].split(',').size());
     }
 
@@ -45,11 +46,10 @@ class TestTable1Report : public QObject {
         const QString tex = formatTable1(rows(), TableFormat::Latex, "50% of trials_x");
         QVERIFY(tex.contains("\\begin{tabular}") && tex.contains("\\end{table}"));
         QVERIFY(tex.contains("50\\% of trials\\_x"));
-        QVERIFY2(
-            tex.contains(
-                "OURS (PRISCA) & 3 & $5.00 \\pm 2.00$ & 4.00 & $20.00 \\pm 10.00$ & 100.00 & "
-                "0.681 \\\\"),
-            qPrintable(tex));
+        QVERIFY2(tex.contains(
+                     "OURS (PRISCA) & 3 & $5.00 \\pm 2.00$ & 4.00 & $20.00 \\pm 10.00$ & 100.00 & "
+                     "0.681 \\\\"),
+                 qPrintable(tex));
     }
 
     void json_parsesAndHoldsTheSummaries() {
@@ -79,17 +79,19 @@ class TestTable1Report : public QObject {
                  qPrintable(md));
         QVERIFY(!md.trimmed().split('\n').last().contains(QStringLiteral("±")));  // the row
         const QString tex = formatTable1(one, TableFormat::Latex, "c");
-        QVERIFY2(tex.contains("PD+H (partial: 1 of 20 trials) & 1 & $274.93$ & n/a & $12.50$ & n/a"),
-                 qPrintable(tex));
+        QVERIFY2(
+            tex.contains("PD+H (partial: 1 of 20 trials) & 1 & $274.93$ & n/a & $12.50$ & n/a"),
+            qPrintable(tex));
         QVERIFY(!tex.contains(QStringLiteral("\\pm")));
         const QStringList csv = formatTable1(one, TableFormat::Csv, "c").trimmed().split('\n');
         QVERIFY(csv[0].endsWith(QStringLiteral(",trials_planned,partial")));
         QCOMPARE(csv[1], QStringLiteral("pd-h,PD+H,1,274.93000000000001,,,12.5,,,,20,true"));
-        const QJsonObject row = QJsonDocument::fromJson(formatTable1(one, TableFormat::Json, "c").toUtf8())
-                                    .object()
-                                    .value("rows")
-                                    .toArray()[0]
-                                    .toObject();
+        const QJsonObject row =
+            QJsonDocument::fromJson(formatTable1(one, TableFormat::Json, "c").toUtf8())
+                .object()
+                .value("rows")
+                .toArray()[0]
+                .toObject();
         QCOMPARE(row.value("partial").toBool(), true);
         QCOMPARE(row.value("trials").toInt(), 1);
         QCOMPARE(row.value("plannedTrials").toInt(), 20);
@@ -102,9 +104,8 @@ class TestTable1Report : public QObject {
     }
 
     void emptyRow_showsNotAvailableRatherThanNan() {
-        const std::vector<Table1Row> none = {
-            {"pd", summarizeErrors({}), summarizeErrors({}),
-             std::numeric_limits<double>::quiet_NaN(), "PD"}};
+        const std::vector<Table1Row> none = {{"pd", summarizeErrors({}), summarizeErrors({}),
+                                              std::numeric_limits<double>::quiet_NaN(), "PD"}};
         const QString md = formatTable1(none, TableFormat::Markdown, "c");
         QVERIFY2(md.contains("| PD | 0 | n/a | n/a | n/a | n/a |"), qPrintable(md));
         QVERIFY(md.trimmed().endsWith("| n/a |"));  // CPU time not measured

@@ -190,8 +190,8 @@ class TestCameraLens : public QObject {
         QVERIFY(error.contains("9 numbers"));
         QVERIFY(!CameraLens::fromJson(bad.toJson(), &error));
         QVERIFY(error.contains("folds"));
-        QVERIFY(!FloorCalibration::fromJson(
-            R"({"homography": [1,0,0,0,1,0,0,0,1], "camera": 3})", &error));
+        QVERIFY(!FloorCalibration::fromJson(R"({"homography": [1,0,0,0,1,0,0,0,1], "camera": 3})",
+                                            &error));
         QVERIFY(error.contains("'camera'"));
     }
 };

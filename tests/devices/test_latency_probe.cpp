@@ -30,7 +30,7 @@ LatencyProbe run(double latency, bool seen = true, bool answers = true) {
                     throttle = u;
                 }
             }
-            const double a = answers && throttle != 0.0 ? 3.0 * (throttle > 0 ? 1 : -1)
+            const double a = answers && throttle != 0.0    ? 3.0 * (throttle > 0 ? 1 : -1)
                              : std::abs(v) < 2.0 * physics ? -v / physics
                                                            : -2.0 * (v > 0 ? 1 : -1);
             v += a * physics;
@@ -58,8 +58,8 @@ class TestLatencyProbe : public QObject {
             QVERIFY2(probe.finished() && probe.failure().empty(), probe.failure().c_str());
             QCOMPARE(static_cast<int>(probe.steps().size()), 5);
             qInfo("latency %.0f ms: median %.1f ms, from %.1f to %.1f, std %.1f", latency * 1e3,
-                  probe.medianSeconds() * 1e3, probe.minSeconds() * 1e3,
-                  probe.maxSeconds() * 1e3, probe.spreadSeconds() * 1e3);
+                  probe.medianSeconds() * 1e3, probe.minSeconds() * 1e3, probe.maxSeconds() * 1e3,
+                  probe.spreadSeconds() * 1e3);
             QVERIFY(std::abs(probe.medianSeconds() - latency) < 0.006);
             QVERIFY(probe.maxSeconds() - probe.minSeconds() < 0.0125);
         }

@@ -72,14 +72,15 @@ class TestLedTracker : public QObject {
         // One mistyped floor coordinate (25 for 2.5) among five good points: named, with where
         // the others put it.
         std::vector<CalibrationPoint> six;
-        for (const cv::Point2d p : {cv::Point2d(0.0, -1.0), cv::Point2d(3.0, -1.0),
-                                    cv::Point2d(2.5, 0.3), cv::Point2d(0.0, 1.2),
-                                    cv::Point2d(3.0, 1.2), cv::Point2d(1.0, 0.3)}) {
+        for (const cv::Point2d p :
+             {cv::Point2d(0.0, -1.0), cv::Point2d(3.0, -1.0), cv::Point2d(2.5, 0.3),
+              cv::Point2d(0.0, 1.2), cv::Point2d(3.0, 1.2), cv::Point2d(1.0, 0.3)}) {
             six.push_back({camera.toImage(p), p});
         }
         six[2].floor.x = 25.0;
         QVERIFY(!FloorCalibration::fit(six, &error));
-        QVERIFY2(error.contains("calibration point 3") && error.contains("does not fit the others") &&
+        QVERIFY2(error.contains("calibration point 3") &&
+                     error.contains("does not fit the others") &&
                      error.contains("put it at (2.500, 0.300) m"),
                  qPrintable(error));
         // A point on the floor at 1e300 m, or in the image at 1e300 px: refused by number.
@@ -106,8 +107,8 @@ class TestLedTracker : public QObject {
         QVERIFY(error.contains("9 numbers"));
         QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0,0,0,0,0,0,0,0,0]}", &error));
         QVERIFY2(error.contains("all zeros"), qPrintable(error));
-        QVERIFY(!FloorCalibration::fromJson(
-            "{\"homography\": [0.01,0.02,0,0.02,0.04,0,0,0,1]}", &error));
+        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0.01,0.02,0,0.02,0.04,0,0,0,1]}",
+                                            &error));
         QVERIFY2(error.contains("singular"), qPrintable(error));
         // Finite but meaningless: 1e300 m per pixel, a horizon across the image, a negative rms,
         // points that are not numbers.
@@ -133,8 +134,8 @@ class TestLedTracker : public QObject {
         QVERIFY(!FloorCalibration::fromJson("[]", &error));
         QVERIFY2(error.contains("valid JSON, but not a floor calibration"), qPrintable(error));
         // An offset of 1e12 m maps the image far away; that is what is said, not "singular".
-        QVERIFY(!FloorCalibration::fromJson("{\"homography\": [0.01,0,1e12,0,0.01,0,0,0,1]}",
-                                            &error));
+        QVERIFY(
+            !FloorCalibration::fromJson("{\"homography\": [0.01,0,1e12,0,0.01,0,0,0,1]}", &error));
         QVERIFY2(error.contains("beyond") && !error.contains("singular"), qPrintable(error));
         QTemporaryDir dir;
         QVERIFY(camera.save(dir.filePath("cal.json"), &error));

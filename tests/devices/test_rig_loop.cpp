@@ -183,8 +183,8 @@ class TestRigLoop : public QObject {
         Recorder* filtered = ownedFiltered.get();
         RigLoop plainLoop(syntheticCeilingCamera(), TrackerSettings{}, std::move(ownedPlain),
                           ChannelMap::car(), link);
-        RigLoop filteredLoop(syntheticCeilingCamera(), TrackerSettings{},
-                             std::move(ownedFiltered), ChannelMap::car(), link);
+        RigLoop filteredLoop(syntheticCeilingCamera(), TrackerSettings{}, std::move(ownedFiltered),
+                             ChannelMap::car(), link);
         core::PoseFilterParameters parameters;
         parameters.measurementStd << 0.004, 0.004, 0.012, 0.03, 0.03, 0.05;
         // Densities for a car on a steady arc (pose only, the velocities' steady spread grows
@@ -237,10 +237,13 @@ class TestRigLoop : public QObject {
         double plainError = 0.0, plainRough = 0.0, filterError = 0.0, filterRough = 0.0;
         score(plain->states, &plainError, &plainRough);
         score(filtered->states, &filterError, &filterRough);
-        const QString report =
-            QStringLiteral("velocity RMS error: differences %1, filter %2; frame-to-frame "
-                           "change: differences %3, filter %4")
-                .arg(plainError).arg(filterError).arg(plainRough).arg(filterRough);
+        const QString report = QStringLiteral(
+                                   "velocity RMS error: differences %1, filter %2; frame-to-frame "
+                                   "change: differences %3, filter %4")
+                                   .arg(plainError)
+                                   .arg(filterError)
+                                   .arg(plainRough)
+                                   .arg(filterRough);
         qInfo("%s", qPrintable(report));
         QVERIFY2(filterError < 0.5 * plainError, qPrintable(report));
         QVERIFY2(filterRough < 0.3 * plainRough, qPrintable(report));

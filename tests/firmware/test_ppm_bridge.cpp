@@ -121,9 +121,9 @@ class Bridge {
 QByteArray sbus(const std::vector<double>& microseconds, bool failsafe = false) {
     ChannelValues values{};
     for (int c = 0; c < 16; ++c) {
-        values[c] = pulseToValue(RcProtocol::PpmBridge,
-                                 c < static_cast<int>(microseconds.size()) ? microseconds[c]
-                                                                           : 1500.0);
+        values[c] =
+            pulseToValue(RcProtocol::PpmBridge,
+                         c < static_cast<int>(microseconds.size()) ? microseconds[c] : 1500.0);
     }
     return encodeSbus(values, failsafe);
 }
@@ -186,9 +186,10 @@ class TestPpmBridge : public QObject {
         for (size_t i = 1; i < frames.size(); ++i) {
             QVERIFY(std::abs((frames[i].start - frames[i - 1].start) * 1e6 - 22500.0) < 2.0);
         }
-        qInfo("%d commanded frames, worst pulse error %.2f us; neutral %.1f ms after the last "
-              "byte",
-              commanded, worst, (firstNeutral - silentFrom) * 1e3);
+        qInfo(
+            "%d commanded frames, worst pulse error %.2f us; neutral %.1f ms after the last "
+            "byte",
+            commanded, worst, (firstNeutral - silentFrom) * 1e3);
         QVERIFY(commanded >= 18);
         QVERIFY(worst <= 2.0);
         QVERIFY(firstNeutral > 0 && firstNeutral - silentFrom <= 0.250);
@@ -261,10 +262,10 @@ class TestPpmBridge : public QObject {
         for (const auto& f : bridge.frames()) {
             if (f.start > 0.04) {
                 ++frames;
-                QVERIFY2(within(f.widths, kCommand, 2.0),
-                         qPrintable(QStringLiteral("frame at %1 s: ch1 %2 us")
-                                        .arg(f.start)
-                                        .arg(f.widths[0])));
+                QVERIFY2(
+                    within(f.widths, kCommand, 2.0),
+                    qPrintable(
+                        QStringLiteral("frame at %1 s: ch1 %2 us").arg(f.start).arg(f.widths[0])));
             }
         }
         QVERIFY(frames >= 5);

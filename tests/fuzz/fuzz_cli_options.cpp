@@ -166,9 +166,9 @@ const sim::MethodTuning& profileOf(const QString& plant) {
     static std::map<QString, sim::MethodTuning> profiles;
     auto found = profiles.find(plant);
     if (found == profiles.end()) {
-        found = profiles
-                    .emplace(plant, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)))
-                    .first;
+        found =
+            profiles.emplace(plant, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)))
+                .first;
     }
     return found->second;
 }
@@ -214,7 +214,8 @@ bool readPlant(const CommandLine& line, QString* plant) {
     } catch (const UsageError& e) {
         const QString message = QString::fromStdString(e.what());
         checkMessage(message);
-        FUZZ_CHECK(message.contains(QLatin1Char('\'') + core::printable(given) + QLatin1Char('\'')));
+        FUZZ_CHECK(
+            message.contains(QLatin1Char('\'') + core::printable(given) + QLatin1Char('\'')));
         return false;
     }
     FUZZ_CHECK(sim::PlantCatalog::contains(*plant));

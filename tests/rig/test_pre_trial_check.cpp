@@ -121,8 +121,8 @@ class TestPreTrialCheck : public QObject {
         QVERIFY(item(check, "latency").ok);
         QVERIFY(item(check, "latency").detail.contains(QLatin1String("declared: 80.0 ms")));
         in.latencySource = rig::LatencySource::Measured;
-        QVERIFY(item(rig::evaluatePreTrialCheck(in), "latency").detail.contains(
-            QLatin1String("measured")));
+        QVERIFY(item(rig::evaluatePreTrialCheck(in), "latency")
+                    .detail.contains(QLatin1String("measured")));
     }
 
     void theVirtualCamerasLatency_isKnownUnlessADelayIsInjected() {

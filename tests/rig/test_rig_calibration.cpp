@@ -57,7 +57,7 @@ class TestRigCalibration : public QObject {
         QCOMPARE(p->x, 1.5);
         QCOMPARE(p->y, -0.2);
         for (const QString& bad : {QStringLiteral("1.5"), QStringLiteral("1.5, a"),
-                                  QStringLiteral("1, 2, 3"), QString()}) {
+                                   QStringLiteral("1, 2, 3"), QString()}) {
             error.clear();
             QVERIFY(!RigCalibration::parseFloorPoint(bad, &error));
             QVERIFY2(error.contains(QStringLiteral("not two numbers")), qPrintable(error));
@@ -94,7 +94,8 @@ class TestRigCalibration : public QObject {
         QVERIFY2(homographyAlone > 0.01, qPrintable(QString::number(homographyAlone)));
 
         QVERIFY(!setup.captureBoardView(cv::Mat()).ok);
-        const rig::SetupStep blank = setup.captureBoardView(cv::Mat(480, 640, CV_8U, cv::Scalar(90)));
+        const rig::SetupStep blank =
+            setup.captureBoardView(cv::Mat(480, 640, CV_8U, cv::Scalar(90)));
         QVERIFY(!blank.ok);
         QVERIFY2(blank.message.contains(QStringLiteral("no whole 9 x 6 board")),
                  qPrintable(blank.message));
@@ -154,7 +155,8 @@ class TestRigCalibration : public QObject {
         QVERIFY(session.geofence().polygon.empty());
         QCOMPARE(session.geofence().maxSpeed, 2.5);  // the limits stay
         QVERIFY(setup.fenceSummary().startsWith(QStringLiteral("Fence: ")));
-        QVERIFY2(setup.fenceSummary().contains(QStringLiteral("cross")), qPrintable(setup.fenceSummary()));
+        QVERIFY2(setup.fenceSummary().contains(QStringLiteral("cross")),
+                 qPrintable(setup.fenceSummary()));
         // The corners round-trip through their text (what the window remembers).
         setup.setFenceCorners({{-0.5, -1.25}, {4.5, -1.25}, {4.5, 2.0}});
         QString error;

@@ -47,8 +47,7 @@ class TestRigLatency : public QObject {
             qInfo("injected %.0f ms: median %.1f ms, from %.1f to %.1f ms, std %.1f ms",
                   injected * 1e3, m.median * 1e3, m.min * 1e3, m.max * 1e3, m.spread * 1e3);
             QCOMPARE(static_cast<int>(m.stepsSeconds.size()), 3);
-            QVERIFY2(std::abs(m.median - injected) < frame,
-                     qPrintable(QString::number(m.median)));
+            QVERIFY2(std::abs(m.median - injected) < frame, qPrintable(QString::number(m.median)));
             medians.push_back(m.median);
             rig.stopCamera();
             rig.disconnectLink();

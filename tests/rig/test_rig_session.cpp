@@ -7,10 +7,10 @@
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
 #include "sim/MethodCatalog.h"
+#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
 #include "sim/Task.h"
-#include "sim/MethodTuning.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -47,8 +47,8 @@ struct SlideCar {
         sim::MethodTuning settling = profile;
         settling.settleTime = 0.5;
         rig::TrialRequest request;
-        request.setup = std::make_shared<const sim::RunSetup>(
-            sim::makeTask(settling, demonstration), method);
+        request.setup =
+            std::make_shared<const sim::RunSetup>(sim::makeTask(settling, demonstration), method);
         return request;
     }
 };

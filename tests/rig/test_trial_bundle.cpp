@@ -26,9 +26,9 @@ QString writeBundle(const QTemporaryDir& dir, const QString& name, const QString
     const QString folder = dir.filePath(name);
     TrialBundleWriter writer;
     QString error;
-    const bool opened = writer.open(
-        folder, QJsonObject{{"kind", "rig"}, {"method", "pd"}, {"plant", plant}}, slideCarDemo(),
-        &error);
+    const bool opened =
+        writer.open(folder, QJsonObject{{"kind", "rig"}, {"method", "pd"}, {"plant", plant}},
+                    slideCarDemo(), &error);
     if (!opened) {
         qWarning() << error;
         return {};
@@ -92,10 +92,11 @@ class TestTrialBundle : public QObject {
         QTest::addColumn<QByteArray>("line");
         QTest::addColumn<QString>("says");
         QTest::newRow("far out") << QByteArray("0.04,-1,1,1e9,0,0,s,u,0") << "not a floor pose";
-        QTest::newRow("not a number") << QByteArray("0.04,-1,1,nan,0,0,s,u,0") << "not a floor pose";
+        QTest::newRow("not a number")
+            << QByteArray("0.04,-1,1,nan,0,0,s,u,0") << "not a floor pose";
         QTest::newRow("empty pose") << QByteArray("0.04,-1,1,,,,s,u,0") << "not a floor pose";
-        QTest::newRow("infinite heading") << QByteArray("0.04,-1,1,0,0,inf,s,u,0")
-                                          << "not a floor pose";
+        QTest::newRow("infinite heading")
+            << QByteArray("0.04,-1,1,0,0,inf,s,u,0") << "not a floor pose";
         QTest::newRow("a 300-digit time")
             << (QByteArray(300, '9') + ",-1,1,0,0,0,s,u,0") << "is not a trial's time";
         QTest::newRow("no time") << QByteArray("x,-1,1,0,0,0,s,u,0") << "is not a trial's time";
@@ -136,8 +137,8 @@ class TestTrialBundle : public QObject {
         demo.stateUnits = demo.stateUnits.mid(0, 2);
         QFile::remove(QDir(folder).filePath("demonstration.csv"));
         prisca::core::FileError fileError;
-        QVERIFY2(prisca::core::writeDemonstrationCsv(demo, QDir(folder).filePath("demonstration.csv"),
-                                                     &fileError),
+        QVERIFY2(prisca::core::writeDemonstrationCsv(
+                     demo, QDir(folder).filePath("demonstration.csv"), &fileError),
                  qPrintable(fileError.toString()));
         QString error;
         QVERIFY(!TrialBundle::load(folder, &error));

@@ -1,11 +1,11 @@
 // The real-rig code end to end with no hardware: the synthetic camera renders a simulated car
 // driven by the bytes the link writes to a pseudo-terminal; tracker, estimator, PRISCA and the
 // link close the loop. The car parks; E-STOP leaves it neutral.
-#include "rigsim/VirtualRig.h"
 #include "core/ActionMapping.h"
+#include "rigsim/VirtualRig.h"
 #include "sim/MethodCatalog.h"
-#include "sim/PlantCatalog.h"
 #include "sim/MethodTuning.h"
+#include "sim/PlantCatalog.h"
 
 #include <QtTest>
 

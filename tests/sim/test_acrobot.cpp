@@ -23,7 +23,8 @@ double wrap(double a) {
     return std::remainder(a, 2.0 * kPi);
 }
 
-// The elbow acceleration of the underactuated acrobot exactly as the "book" dynamics write it (an independent transcription, not a call into AcrobotEquations).
+// The elbow acceleration of the underactuated acrobot exactly as the "book" dynamics write it (an
+// independent transcription, not a call into AcrobotEquations).
 double bookElbowAcceleration(const Eigen::Vector4d& s, double a) {
     const double m1 = 1.0, m2 = 1.0, l1 = 1.0, lc1 = 0.5, lc2 = 0.5, I1 = 1.0, I2 = 1.0, g = 9.8;
     const double theta1 = s[0], theta2 = s[1], dtheta1 = s[2], dtheta2 = s[3];

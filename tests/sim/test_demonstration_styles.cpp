@@ -18,7 +18,8 @@ double degrees(double radians) {
 }
 
 core::Demonstration car(const char* style, std::uint64_t seed = 1) {
-    return DemonstrationStyles::record(QStringLiteral("slidecar"), QString::fromLatin1(style), seed);
+    return DemonstrationStyles::record(QStringLiteral("slidecar"), QString::fromLatin1(style),
+                                       seed);
 }
 
 double finalHeadingDeg(const core::Demonstration& d) {
@@ -59,7 +60,8 @@ class TestDemonstrationStyles : public QObject {
     Q_OBJECT
   private slots:
     void catalog_listsEnoughDistinctStylesPerPlant() {
-        for (const auto& [plant, least] : {std::pair{"slidecar", 6}, {"acrobot", 3}, {"aircraft", 3}}) {
+        for (const auto& [plant, least] :
+             {std::pair{"slidecar", 6}, {"acrobot", 3}, {"aircraft", 3}}) {
             const auto styles = DemonstrationStyles::of(plant);
             QVERIFY2(static_cast<int>(styles.size()) >= least, plant);
             QStringList names;
@@ -71,7 +73,8 @@ class TestDemonstrationStyles : public QObject {
             QCOMPARE(names.removeDuplicates(), 0);
             QCOMPARE(DemonstrationStyles::classic(plant), names.front());
             // The classic style is the plant's scripted demonstration.
-            const core::Demonstration classic = DemonstrationStyles::record(plant, names.front(), 4);
+            const core::Demonstration classic =
+                DemonstrationStyles::record(plant, names.front(), 4);
             const core::Demonstration scripted = PlantCatalog::demonstrate(plant, 4);
             QCOMPARE(classic.states, scripted.states);
             QCOMPARE(classic.actions, scripted.actions);

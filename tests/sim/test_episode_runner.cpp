@@ -1,10 +1,10 @@
 // The closed loop: measurement model, episode runner, parallel trials, the controller factory.
 #include "core/ActionMapping.h"
-#include "sim/MethodCatalog.h"
 #include "sim/EpisodeRunner.h"
 #include "sim/MeasurementModel.h"
-#include "sim/ParallelTrials.h"
+#include "sim/MethodCatalog.h"
 #include "sim/MethodTuning.h"
+#include "sim/ParallelTrials.h"
 #include "sim/SlideCar.h"
 #include "sim/SlideCarDemonstrator.h"
 #include "sim/TrialMetrics.h"
@@ -146,8 +146,7 @@ class TestEpisodeRunner : public QObject {
     void stepper_stepByStepIsTheSameTrialAsRunEpisode() {
         const SlideCarSetup setup;
         SlideCar car;
-        auto controller =
-            MethodCatalog::create("prisca", setup.profile, setup.demo, setup.fittedB);
+        auto controller = MethodCatalog::create("prisca", setup.profile, setup.demo, setup.fittedB);
         const EpisodeResult whole = runEpisode(car, *controller, setup.settings(5));
         EpisodeSettings settings = setup.settings(5);
         settings.recordSteps = false;  // the live view keeps its own copy of each step
@@ -231,8 +230,10 @@ class TestEpisodeRunner : public QObject {
             return std::sqrt(sum / static_cast<double>(result.steps.size()));
         };
         const double raw = positionError(off), filtered = positionError(on);
-        qInfo("observation's position RMS error against the true state of now: raw %g m, "
-              "filtered %g m", raw, filtered);
+        qInfo(
+            "observation's position RMS error against the true state of now: raw %g m, "
+            "filtered %g m",
+            raw, filtered);
         QVERIFY2(filtered < 0.5 * raw, qPrintable(QStringLiteral("%1 %2").arg(filtered).arg(raw)));
         // Lagged: the estimate of the measurement's time, the controller compensating the latency
         // as without the filter; closer to the delayed true state than the raw observation.
@@ -246,9 +247,9 @@ class TestEpisodeRunner : public QObject {
             const int d = lagged.measurement.latencySteps;
             double filteredThen = 0.0, rawNoise = 0.0;
             for (std::size_t k = d; k < result.steps.size(); ++k) {
-                filteredThen += (result.steps[k].observation.head<2>() -
-                                 result.steps[k - d].state.head<2>())
-                                    .squaredNorm();
+                filteredThen +=
+                    (result.steps[k].observation.head<2>() - result.steps[k - d].state.head<2>())
+                        .squaredNorm();
             }
             rawNoise = std::pow(lagged.measurement.noise[0], 2) * 2;  // per sample, x and y
             filteredThen /= static_cast<double>(result.steps.size() - d);
@@ -265,8 +266,7 @@ class TestEpisodeRunner : public QObject {
     void episode_stopsAtRestAfterTheDemonstrationAndOnCancel() {
         const SlideCarSetup setup;
         SlideCar car;
-        auto playback =
-            MethodCatalog::create("playback", setup.profile, setup.demo, setup.fittedB);
+        auto playback = MethodCatalog::create("playback", setup.profile, setup.demo, setup.fittedB);
         EpisodeSettings s = setup.settings(3);
         s.duration = 60.0;
         const EpisodeResult rested = runEpisode(car, *playback, s);

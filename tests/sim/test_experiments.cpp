@@ -2,10 +2,10 @@
 // training seeds and PD (selected)'s grid, the profile's trial settings, and the run log.
 #include "core/ActionMapping.h"
 #include "core/RunLogCsv.h"
-#include "sim/MethodTraining.h"
-#include "sim/PlantCatalog.h"
 #include "sim/LearningCurveExperiment.h"
+#include "sim/MethodTraining.h"
 #include "sim/MethodTuning.h"
+#include "sim/PlantCatalog.h"
 #include "sim/RunSetup.h"
 #include "sim/Table1Experiment.h"
 
@@ -20,9 +20,9 @@ using namespace prisca::sim;
 namespace {
 
 struct CarTask {
-    Task task = makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
-                         std::make_shared<core::Demonstration>(
-                             PlantCatalog::demonstrate("slidecar", 1)));
+    Task task =
+        makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
+                 std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1)));
     const MethodTuning& profile = task.profile;
     std::shared_ptr<const core::Demonstration> demo = task.demonstration;
 };
@@ -31,9 +31,9 @@ struct CarTask {
 Task carTaskAt(double hertz) {
     SimulationTiming timing;
     timing.controlPeriod = 1.0 / hertz;
-    return makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
-                    std::make_shared<core::Demonstration>(
-                        PlantCatalog::demonstrate("slidecar", 1, timing)));
+    return makeTask(
+        MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
+        std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1, timing)));
 }
 
 RunSettings nominal() {
@@ -174,8 +174,9 @@ class TestExperiments : public QObject {
         const std::vector<MethodCurves> curve = runLearningCurves(curves, task);
         QVERIFY(!curve[0].runs[0].empty());
         // Mean squared position error over the trial [m^2].
-        QVERIFY2(curve[0].runs[0][0].trackingError < 1e-8,
-                 qPrintable(QStringLiteral("curve: %1 m^2").arg(curve[0].runs[0][0].trackingError)));
+        QVERIFY2(
+            curve[0].runs[0][0].trackingError < 1e-8,
+            qPrintable(QStringLiteral("curve: %1 m^2").arg(curve[0].runs[0][0].trackingError)));
     }
 
     void runSetup_oneSetOfDefaultsAndTrialSeeds() {
@@ -189,8 +190,7 @@ class TestExperiments : public QObject {
         QVERIFY(setup.trial(0).resetMode == core::ResetMode::Cold);
         QCOMPARE(setup.trainingSeeds(), trainingSeeds(defaults.seed, defaults.trainingTrials));
         // The slide-car's trackers compensate the camera's latency, on the rig as in simulation.
-        QCOMPARE(setup.episode().compensatedLatencySteps(),
-                 task.profile.measurement.latencySteps);
+        QCOMPARE(setup.episode().compensatedLatencySteps(), task.profile.measurement.latencySteps);
         QVERIFY(setup.episode().compensatedLatencySteps() > 0);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, RunSetup(task, "no-such-method"));
         RunSettings bad;

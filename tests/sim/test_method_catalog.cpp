@@ -3,12 +3,12 @@
 #include "core/ActionMapping.h"
 #include "core/IlcController.h"
 #include "core/PriscaController.h"
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/EpisodeRunner.h"
-#include "sim/TrialMetrics.h"
+#include "sim/MethodCatalog.h"
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
+#include "sim/TrialMetrics.h"
 
 #include <QSet>
 #include <QtTest>
@@ -25,8 +25,8 @@ class TestMethodCatalog : public QObject {
 
   private slots:
     void priscaPaper_isAlgorithm1AsPrinted() {
-        auto controller = MethodCatalog::create("prisca-paper", profile_, demo_,
-                                                    Eigen::MatrixXd::Zero(2, 6));
+        auto controller =
+            MethodCatalog::create("prisca-paper", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
         QCOMPARE(prisca->name(), QStringLiteral("prisca-paper"));
@@ -93,7 +93,10 @@ class TestMethodCatalog : public QObject {
         QVERIFY2(worst < 0.3, qPrintable(QString::number(worst)));
         QVERIFY2((end - middle).cwiseAbs().maxCoeff() <= 0.2 * end.cwiseAbs().maxCoeff(),
                  qPrintable(QStringLiteral("theta %1 %2 -> %3 %4")
-                                .arg(middle(0, 0)).arg(middle(0, 1)).arg(end(0, 0)).arg(end(0, 1))));
+                                .arg(middle(0, 0))
+                                .arg(middle(0, 1))
+                                .arg(end(0, 0))
+                                .arg(end(0, 1))));
         QVERIFY(end.cwiseAbs().maxCoeff() > 0.0);  // it did learn
     }
 
@@ -129,16 +132,16 @@ class TestMethodCatalog : public QObject {
         // The factory's PRISCA takes them when the profile asks, and the normalised step.
         QVERIFY(profile_.priscaAutomatic);
         auto shared = std::make_shared<const core::Demonstration>(*demo_);
-        auto controller = MethodCatalog::create("prisca", profile_, shared,
-                                                    Eigen::MatrixXd::Constant(2, 6, 0.5));
+        auto controller =
+            MethodCatalog::create("prisca", profile_, shared, Eigen::MatrixXd::Constant(2, 6, 0.5));
         auto* prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(prisca);
         QVERIFY(prisca->parameters().stepSize.normalised);
         QCOMPARE(prisca->parameters().stepSize.scale, MethodTuning::automaticStep);
         MethodTuning preset2 = profile_;
         preset2.priscaAutomatic = false;
-        controller = MethodCatalog::create("prisca", preset2, shared,
-                                               Eigen::MatrixXd::Constant(2, 6, 0.5));
+        controller =
+            MethodCatalog::create("prisca", preset2, shared, Eigen::MatrixXd::Constant(2, 6, 0.5));
         prisca = dynamic_cast<core::PriscaController*>(controller.get());
         QVERIFY(!prisca->parameters().stepSize.normalised);
         QCOMPARE(prisca->parameters().stepSize.scale, profile_.prisca.stepSize.scale);
@@ -161,8 +164,8 @@ class TestMethodCatalog : public QObject {
             MethodCatalog::create("ilc", profile_, demo_, Eigen::MatrixXd::Zero(2, 6));
         auto* ilc = dynamic_cast<core::IlcController*>(controller.get());
         QVERIFY(ilc);
-        QCOMPARE(ilc->parameters().feedback.kp, Eigen::VectorXd(profile_.pd.kp *
-                                                               profile_.ilcFeedbackScale));
+        QCOMPARE(ilc->parameters().feedback.kp,
+                 Eigen::VectorXd(profile_.pd.kp * profile_.ilcFeedbackScale));
         QCOMPARE(ilc->parameters().learningGain,
                  Eigen::VectorXd(profile_.ilcLearningScale * profile_.pd.kp));
         QCOMPARE(ilc->parameters().lead, profile_.ilcLead);
@@ -270,9 +273,12 @@ class TestMethodCatalog : public QObject {
         QVERIFY(MethodCatalog::curveIds().contains("pegasus"));
         QStringList online, limits, own;
         for (const MethodSpec& spec : MethodCatalog::all()) {
-            if (spec.learnsOnline) online << spec.id;
-            if (spec.limit) limits << spec.id;
-            if (spec.ownFeatures) own << spec.id;
+            if (spec.learnsOnline)
+                online << spec.id;
+            if (spec.limit)
+                limits << spec.id;
+            if (spec.ownFeatures)
+                own << spec.id;
         }
         QCOMPARE(online, QStringList({"prisca", "prisca-paper", "pgsd", "ilc", "mpc"}));
         QCOMPARE(limits, QStringList({"oracle"}));

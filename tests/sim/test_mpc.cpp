@@ -20,7 +20,8 @@ using namespace prisca::sim;
 
 namespace {
 
-PlantParameters withValues(PlantParameters p, const std::vector<std::pair<const char*, double>>& v) {
+PlantParameters withValues(PlantParameters p,
+                           const std::vector<std::pair<const char*, double>>& v) {
     const auto& specs = plantParameterSpecs(p.plant);
     for (const auto& [key, value] : v) {
         for (size_t i = 0; i < specs.size(); ++i) {
@@ -93,14 +94,16 @@ class TestMpc : public QObject {
         }
     }
 
-    // A deliberately wrong model (half the grip, a third of the motor): the measured pose leaves the
-    // predicted tube and the feedback law finishes the trial; the right model does not.
+    // A deliberately wrong model (half the grip, a third of the motor): the measured pose leaves
+    // the predicted tube and the feedback law finishes the trial; the right model does not.
     void wrongModel_theFallbackTakesOver() {
         Setup setup;
         setup.profile.mpc.poorFit = 100.0;  // only the tube may call the fallback here
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
-            withValues(defaultPlantParameters("slidecar"),
-                       {{"staticFriction", 0.3}, {"kineticFriction", 0.2}, {"maxDriveForce", 3.0}, {"topSpeed", 3.0}}));
+            withValues(defaultPlantParameters("slidecar"), {{"staticFriction", 0.3},
+                                                            {"kineticFriction", 0.2},
+                                                            {"maxDriveForce", 3.0},
+                                                            {"topSpeed", 3.0}}));
         auto mpc = setup.mpc();
         setup.trial(*mpc, 11, 0.0);
         QCOMPARE(mpc->mode(), MpcMode::Fallback);
@@ -241,8 +244,7 @@ class TestMpc : public QObject {
         QVERIFY(mpc->modelFit() < 0.05);
 
         const MethodTuning acrobot = MethodTuning::forPlant(PlantCatalog::describe("acrobot"));
-        auto demo =
-            std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("acrobot", 1));
+        auto demo = std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("acrobot", 1));
         try {
             MethodCatalog::create("mpc", acrobot, demo, Eigen::MatrixXd::Zero(1, 4));
             QFAIL("mpc on the acrobot was accepted");

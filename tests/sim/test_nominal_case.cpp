@@ -1,8 +1,8 @@
 // The nominal case: with no perturbation and a perfect sensor the plant is the one the
 // demonstration was recorded on, so every closed-loop method must repeat it (park within 1 cm on
 // every slide-car style) and action playback must repeat it.
-#include "sim/MethodCatalog.h"
 #include "sim/DemonstrationStyles.h"
+#include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/Table1Protocol.h"
 
@@ -47,7 +47,8 @@ class TestNominalCase : public QObject {
         settings.seedSets = {7};
         const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe(plant));
         const Table1ProtocolResult result = runTable1Protocol(settings, profile);
-        QCOMPARE(static_cast<int>(result.cells[0].size()), static_cast<int>(settings.styles.size()));
+        QCOMPARE(static_cast<int>(result.cells[0].size()),
+                 static_cast<int>(settings.styles.size()));
         for (const core::ProtocolCell& cell : result.cells[0]) {
             QCOMPARE(cell.row.position.count, 1);
             QVERIFY2(cell.row.position.maximum <= toleranceCm,

@@ -2,10 +2,10 @@
 // point whose actuator gains differ from the demonstration's: scaling the actions by the gain
 // ratio repeats the demonstration exactly) it must find that optimum without being told.
 #include "sim/EpisodeRunner.h"
+#include "sim/MethodCatalog.h"
+#include "sim/MethodTuning.h"
 #include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/MethodCatalog.h"
 #include "sim/TrialMetrics.h"
 
 #include <QtTest>
@@ -48,9 +48,7 @@ class GainPoint : public Plant {
         t_ += timing_.controlPeriod;
         return s_;
     }
-    std::unique_ptr<Plant> clone(bool) const override {
-        return std::make_unique<GainPoint>(*this);
-    }
+    std::unique_ptr<Plant> clone(bool) const override { return std::make_unique<GainPoint>(*this); }
     Eigen::VectorXd state() const override { return s_; }
     double time() const override { return t_; }
 
@@ -190,10 +188,10 @@ class TestOracle : public QObject {
         double shortMiss = 0.0, longMiss = 0.0;
         const double shortCost = perStep(400, &shortMiss);
         const double longCost = perStep(3200, &longMiss);
-        QVERIFY2(longCost < 1.5 * shortCost,
-                 qPrintable(QStringLiteral("%1 vs %2 simulated steps per step")
-                                .arg(longCost)
-                                .arg(shortCost)));
+        QVERIFY2(
+            longCost < 1.5 * shortCost,
+            qPrintable(
+                QStringLiteral("%1 vs %2 simulated steps per step").arg(longCost).arg(shortCost)));
         QVERIFY2(longMiss < 1e-2, qPrintable(QString::number(longMiss)));
     }
 
@@ -222,7 +220,7 @@ class TestOracle : public QObject {
             PlantCatalog::demonstrate(QStringLiteral("slidecar"), 3));
         const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
         auto oracle = MethodCatalog::create(QStringLiteral("oracle"), profile, demo,
-                                                Eigen::MatrixXd::Zero(2, 6));
+                                            Eigen::MatrixXd::Zero(2, 6));
         auto plant = PlantCatalog::create(QStringLiteral("slidecar"));
         EpisodeSettings episode = profile.episode(*demo, 0.0, 0.0);
         const EpisodeResult result = runEpisode(*plant, *oracle, episode);

@@ -1,7 +1,7 @@
 // The plant catalog: one entry per plant, everything the front ends need from it consistent.
 #include "sim/DemonstrationStyles.h"
-#include "sim/PlantCatalog.h"
 #include "sim/MethodTuning.h"
+#include "sim/PlantCatalog.h"
 #include "sim/TaskCheck.h"
 
 #include <QSet>

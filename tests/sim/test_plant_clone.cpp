@@ -18,8 +18,8 @@ std::vector<Eigen::VectorXd> actions(const PlantInfo& info, int steps, std::uint
     Eigen::VectorXd u = 0.5 * (info.actionLower + info.actionUpper);
     for (int k = 0; k < steps; ++k) {
         for (int l = 0; l < u.size(); ++l) {
-            const double target = info.actionLower[l] +
-                                  uniform(random) * (info.actionUpper[l] - info.actionLower[l]);
+            const double target =
+                info.actionLower[l] + uniform(random) * (info.actionUpper[l] - info.actionLower[l]);
             u[l] += 0.2 * (target - u[l]);
         }
         out.push_back(u);
@@ -57,8 +57,8 @@ class TestPlantClone : public QObject {
             const Eigen::VectorXd a = original->step(u[k]);
             const Eigen::VectorXd b = copy->step(u[k]);
             QVERIFY2((a - b).cwiseAbs().maxCoeff() <= std::max(tolerance, 0.0),
-                     qPrintable(QStringLiteral("step %1: %2").arg(k).arg(
-                         (a - b).cwiseAbs().maxCoeff())));
+                     qPrintable(
+                         QStringLiteral("step %1: %2").arg(k).arg((a - b).cwiseAbs().maxCoeff())));
         }
     }
 
@@ -79,8 +79,8 @@ class TestPlantClone : public QObject {
             for (const Eigen::VectorXd& action : u) {
                 const Eigen::VectorXd s = copy->step(action);
                 QCOMPARE(s, b->step(action));
-                differenceToNoisy = std::max(
-                    differenceToNoisy, (s - a->step(action)).cwiseAbs().maxCoeff());
+                differenceToNoisy =
+                    std::max(differenceToNoisy, (s - a->step(action)).cwiseAbs().maxCoeff());
             }
             QVERIFY2(differenceToNoisy > 1e-4, qPrintable(plant));  // the noise did act on a
         }
