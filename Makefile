@@ -2,6 +2,7 @@
 #   make run    install missing Debian packages, build, start the application
 #   make test   install missing Debian packages, build, run the whole test suite (offscreen)
 #   make bench  build in release mode and run the benchmarks
+#   make format the sources as .clang-format has them (make test checks it)
 #   make check-sanitizers  the suite under AddressSanitizer + UBSan, the threaded tests under TSan
 #   make fuzz FUZZ_SECONDS=N [FUZZ_TARGETS="a b"]  each fuzz target for N seconds (libFuzzer)
 #   make test-under-load RUNS=N  make test N times while busy loops keep every core busy
@@ -68,7 +69,7 @@ bench: build
 	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -L benchmark --verbose
 
 format:
-	find app core sim devices tests -name '*.h' -o -name '*.cpp' | xargs clang-format -i
+	find app core sim devices rigsim rig tools tests -path tests/data -prune -o \( -name '*.h' -o -name '*.cpp' \) -print | xargs clang-format -i
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -11,6 +11,7 @@ packages=(
     libgl-dev libeigen3-dev libopencv-dev libbox2d-dev libsdl2-dev libnlopt-dev
     gcc-avr avr-libc binutils-avr libsimavr-dev libelf-dev
     xvfb xauth
+    clang-format
     qt6-svg-dev qt6-translations-l10n fonts-noto-cjk
 )
 # make fuzz: clang with libFuzzer and its sanitizer runtimes.
