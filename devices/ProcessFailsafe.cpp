@@ -386,6 +386,9 @@ void injectFaultForTesting() {
     if (fault == nullptr || *fault == '\0') {
         return;
     }
+#ifndef PRISCA_FAULT_INJECTION
+    std::fprintf(stderr, "PRISCA_INJECT_FAULT is ignored: this build has no fault injection\n");
+#else
     const std::string kind = fault;
     if (kind == "exception") {
         throw std::runtime_error("injected fault (PRISCA_INJECT_FAULT=exception)");
@@ -402,6 +405,7 @@ void injectFaultForTesting() {
     if (kind == "segfault") {
         raise(SIGSEGV);
     }
+#endif
 }
 
 }  // namespace prisca::devices::processfailsafe

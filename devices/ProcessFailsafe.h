@@ -60,7 +60,9 @@ const char* signalName(int signal) noexcept;
 
 /// For the tests of the above on a real process (docs/testing.md): reads PRISCA_INJECT_FAULT
 /// (exception, assertion, terminate, segfault) and raises that fault; does nothing when unset.
-/// Only the link command calls it, once its first frames are out.
+/// Only the link command calls it, once its first frames are out. Built in only with the tests
+/// (CMake's PRISCA_FAULT_INJECTION, on with PRISCA_BUILD_TESTS); elsewhere it says on stderr
+/// that the variable is ignored and raises nothing.
 void injectFaultForTesting();
 
 }  // namespace prisca::devices::processfailsafe

@@ -132,6 +132,7 @@ void TestCliSignals::link_endsInFailsafe_data() {
                              << "crashed (SIGTRAP); failsafe sent on 1 link";
     // The second signal ends the process wherever the orderly stop is: failsafe either way.
     QTest::newRow("SIGTERM twice") << SIGTERM << true << "" << -1 << "failsafe";
+#ifdef PRISCA_FAULT_INJECTION  // the faults only a test build can raise
     QTest::newRow("exception") << 0 << false << "exception" << 2
                                << "injected fault (PRISCA_INJECT_FAULT=exception) (the link "
                                   "ended in failsafe)";
@@ -142,6 +143,7 @@ void TestCliSignals::link_endsInFailsafe_data() {
         << "uncaught exception: injected fault on a worker thread; failsafe sent";
     QTest::newRow("crash") << 0 << false << "segfault" << -1
                            << "crashed (SIGSEGV); failsafe sent on 1 link";
+#endif
 }
 
 void TestCliSignals::link_endsInFailsafe() {
