@@ -3240,184 +3240,184 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigSetupPage</name>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="130"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="240"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="96"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="244"/>
         <source>Open camera intrinsics</source>
         <translation>開啟攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="131"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="229"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="97"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="233"/>
         <source>Camera (*.json)</source>
         <translation>攝影機 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="143"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="149"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="254"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="259"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="109"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="115"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="258"/>
         <location filename="../app/rig/RigSetupPage.cpp" line="263"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="271"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="277"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="267"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="275"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="281"/>
         <source>Latency</source>
         <translation>延遲</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="144"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="110"/>
         <source>Loop latency: not measured (%1)</source>
         <translation>迴路延遲：未量度（%1）</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="150"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="116"/>
         <source>Loop latency: %1 ms (median of %2 steps, from %3 to %4 ms, std %5 ms); the trials compensate it</source>
         <translation>迴路延遲：%1 毫秒（%2 次階躍的中位數，由 %3 至 %4 毫秒，標準差 %5 毫秒）；試驗會補償此延遲</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="169"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="135"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="211"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="222"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="249"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="215"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="226"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="253"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="229"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="232"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="233"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="236"/>
         <source>Save camera intrinsics</source>
         <translation>儲存攝影機內參</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="259"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="263"/>
         <source>Loop latency: %1</source>
         <translation>迴路延遲：%1</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="264"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="268"/>
         <source>Loop latency: measuring (keep the car at rest in view)...</source>
         <translation>迴路延遲：量度中（讓車輛靜止於視野內）...</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="272"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="276"/>
         <source>Loop latency: %1 ms, declared; the trials compensate it.</source>
         <translation>迴路延遲：%1 毫秒（已申報）；試驗會補償它。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="278"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="282"/>
         <source>Loop latency: not declared any more (the controllers assume the profile&apos;s camera latency).</source>
         <translation>迴路延遲：已取消申報（控制器假設設定檔中的攝影機延遲）。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="317"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="321"/>
         <source>Fence</source>
         <translation>圍欄</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="336"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="340"/>
         <source>Capture board view</source>
         <translation>擷取棋盤視圖</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="338"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="342"/>
         <source>Find the 9 x 6 chessboard (40 mm squares) in the camera&apos;s image and keep its corners; capture views over the whole image, tilted, its corners too</source>
         <translation>在攝影機影像中找出 9 x 6 棋盤（40 毫米方格）並保留其角點；在整個影像範圍（包括四角）以傾斜角度擷取多個視圖</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="341"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="345"/>
         <source>Fit lens</source>
         <translation>擬合鏡頭</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="343"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="347"/>
         <source>Fit the camera&apos;s intrinsics and distortion to the views captured; the floor calibration is fitted again through them</source>
         <translation>以擷取的視圖擬合攝影機內參及畸變；地面校準會經其重新擬合</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="345"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="349"/>
         <source>Load lens...</source>
         <translation>載入鏡頭...</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="346"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="350"/>
         <source>Camera intrinsics from a file (prisca-cli calibrate-camera)</source>
         <translation>從檔案載入攝影機內參（prisca-cli calibrate-camera）</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="347"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="351"/>
         <source>Measure latency</source>
         <translation>量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="349"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="353"/>
         <source>With the car at rest in view and the link connected: step the throttle forward and back and time the response in the camera</source>
         <translation>車輛靜止於視野內且連結已接通時：前後階躍油門，並在攝影機中計時其反應</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="352"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="356"/>
         <source>or declare:</source>
         <translation>或申報：</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="353"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="357"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="354"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="358"/>
         <source>not declared</source>
         <translation>未申報</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="356"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="360"/>
         <source>A latency measured elsewhere [ms], for the trials to compensate; 0: not declared</source>
         <translation>在別處量得的延遲 [毫秒]，供試驗補償；0：未申報</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="358"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="362"/>
         <source>Draw fence</source>
         <translation>繪畫圍欄</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="359"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="363"/>
         <source>Clear fence</source>
         <translation>清除圍欄</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="360"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="364"/>
         <source>Speed limit:</source>
         <translation>速度上限：</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="361"/>
-        <location filename="../app/rig/RigSetupPage.cpp" line="363"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="365"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="367"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="362"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="366"/>
         <source>Longest lost track:</source>
         <translation>最長失去追蹤：</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="365"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="369"/>
         <source>Save every trial as a bundle</source>
         <translation>把每次試驗儲存為試驗包</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="366"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="370"/>
         <source>Poses, commands and 10 camera frames a second, in %1; File &gt; Replay a trial bundle opens one</source>
         <translation>位姿、指令及每秒 10 個攝影機影格，存於 %1；「檔案 &gt; 重播試驗包」可開啟</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="369"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="373"/>
         <source>Replay the last trial</source>
         <translation>重播上一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigSetupPage.cpp" line="373"/>
+        <location filename="../app/rig/RigSetupPage.cpp" line="377"/>
         <source>Loop latency: not measured (the controllers assume the camera&apos;s latency).</source>
         <translation>迴路延遲：未量度（控制器假設攝影機的延遲）。</translation>
     </message>

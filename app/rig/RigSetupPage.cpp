@@ -88,41 +88,7 @@ RigSetupPage::RigSetupPage(rig::RigSession& rig, rig::RigCalibration& setup,
     maxLost_->setSingleStep(0.1);
     maxLost_->setSuffix(QStringLiteral(" s"));
 
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(lensInfo_);
-    auto* lensButtons = new QHBoxLayout;
-    lensButtons->addWidget(captureBoard_);
-    lensButtons->addWidget(fitLens_);
-    lensButtons->addWidget(loadLens_);
-    layout->addLayout(lensButtons);
-    layout->addSpacing(12);
-    layout->addWidget(latencyInfo_);
-    auto* latencyRow = new QHBoxLayout;
-    latencyRow->addWidget(measureLatency_);
-    latencyRow->addSpacing(8);
-    latencyRow->addWidget(declaredLatencyLabel_);
-    latencyRow->addWidget(declaredLatency_);
-    layout->addLayout(latencyRow);
-    layout->addSpacing(12);
-    layout->addWidget(fenceInfo_);
-    auto* fenceButtons = new QHBoxLayout;
-    fenceButtons->addWidget(drawFence_);
-    fenceButtons->addWidget(clearFence_);
-    layout->addLayout(fenceButtons);
-    auto* fenceLimits = new QFormLayout;
-    fenceLimits->addRow(maxSpeedLabel_, maxSpeed_);
-    fenceLimits->addRow(maxLostLabel_, maxLost_);
-    layout->addLayout(fenceLimits);
-    layout->addSpacing(12);
-    layout->addWidget(saveBundles_);
-    layout->addWidget(replayLast_);
-    layout->addStretch(1);
-    // Room for three lines each, so the buttons below do not move as the messages change.
-    for (QLabel* info : {lensInfo_, latencyInfo_, fenceInfo_}) {
-        info->setWordWrap(true);
-        info->setMinimumHeight(3 * info->fontMetrics().lineSpacing());
-        info->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-    }
+    buildLayout();
 
     connect(captureBoard_, &QPushButton::clicked, this, &RigSetupPage::captureBoardView);
     connect(fitLens_, &QPushButton::clicked, this, &RigSetupPage::fitLens);
@@ -189,6 +155,44 @@ RigSetupPage::RigSetupPage(rig::RigSession& rig, rig::RigCalibration& setup,
                                settings.value(QStringLiteral("rig/fence")).toString(), &ignored)
                                .value_or(std::vector<cv::Point2d>{}));
     retranslateUi();
+}
+
+void RigSetupPage::buildLayout() {
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(lensInfo_);
+    auto* lensButtons = new QHBoxLayout;
+    lensButtons->addWidget(captureBoard_);
+    lensButtons->addWidget(fitLens_);
+    lensButtons->addWidget(loadLens_);
+    layout->addLayout(lensButtons);
+    layout->addSpacing(12);
+    layout->addWidget(latencyInfo_);
+    auto* latencyRow = new QHBoxLayout;
+    latencyRow->addWidget(measureLatency_);
+    latencyRow->addSpacing(8);
+    latencyRow->addWidget(declaredLatencyLabel_);
+    latencyRow->addWidget(declaredLatency_);
+    layout->addLayout(latencyRow);
+    layout->addSpacing(12);
+    layout->addWidget(fenceInfo_);
+    auto* fenceButtons = new QHBoxLayout;
+    fenceButtons->addWidget(drawFence_);
+    fenceButtons->addWidget(clearFence_);
+    layout->addLayout(fenceButtons);
+    auto* fenceLimits = new QFormLayout;
+    fenceLimits->addRow(maxSpeedLabel_, maxSpeed_);
+    fenceLimits->addRow(maxLostLabel_, maxLost_);
+    layout->addLayout(fenceLimits);
+    layout->addSpacing(12);
+    layout->addWidget(saveBundles_);
+    layout->addWidget(replayLast_);
+    layout->addStretch(1);
+    // Room for three lines each, so the buttons below do not move as the messages change.
+    for (QLabel* info : {lensInfo_, latencyInfo_, fenceInfo_}) {
+        info->setWordWrap(true);
+        info->setMinimumHeight(3 * info->fontMetrics().lineSpacing());
+        info->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    }
 }
 
 QString RigSetupPage::defaultBundleFolder() {

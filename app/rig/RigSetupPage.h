@@ -73,6 +73,8 @@ class RigSetupPage : public QWidget {
     void changeEvent(QEvent* event) override;
 
   private:
+    /// The lens, latency, fence and bundle rows, top to bottom.
+    void buildLayout();
     void retranslateUi();
     void showLens();
     void showFence();

@@ -1,6 +1,8 @@
 // prisca-cli's contract with scripts: --help and --version succeed, every other failure is one
 // line on stderr and exit code 2.
+#include <QFile>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QtTest>
 
 namespace {
@@ -38,6 +40,7 @@ class TestCli : public QObject {
     Q_OBJECT
   private slots:
     void help_exitsZeroAndListsEveryPlannedCommand();
+    void architectureDoc_namesTheCommandsHelpLists();
     void version_printsTheProjectVersion();
     void unknownCommand_exitsTwoWithOneLineError();
     void noCommand_exitsTwo();
@@ -53,6 +56,36 @@ void TestCli::help_exitsZeroAndListsEveryPlannedCommand() {
         QVERIFY2(result.out.contains(listed), qPrintable(command + u'\n' + result.out));
     }
     QVERIFY(result.out.contains(QStringLiteral("--version")));
+}
+
+void TestCli::architectureDoc_namesTheCommandsHelpLists() {
+    const CliResult result = runCli({QStringLiteral("--help")});
+    QCOMPARE(result.exitCode, 0);
+    // --help: one command a line between "Commands:" and the blank line after them.
+    QStringList listed;
+    const QString block =
+        result.out.section(QStringLiteral("Commands:\n"), 1).section(QStringLiteral("\n\n"), 0, 0);
+    for (const QString& line : block.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        listed << line.trimmed().section(QLatin1Char(' '), 0, 0);
+    }
+    QVERIFY2(listed.size() >= 10, qPrintable(result.out));
+    // docs/architecture.md, "Command line": "Commands (N, as `prisca-cli --help` lists them):
+    // `a`, `b`, ...;".
+    QFile doc(QStringLiteral(PRISCA_SOURCE_DIR "/docs/architecture.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(doc.readAll());
+    const QRegularExpression sentence(QStringLiteral(
+        "Commands \\((\\d+),\\s+as\\s+`prisca-cli\\s+--help`\\s+lists\\s+them\\):([^;]*);"));
+    const QRegularExpressionMatch match = sentence.match(text);
+    QVERIFY2(match.hasMatch(), "docs/architecture.md has no command list sentence");
+    QStringList documented;
+    QRegularExpressionMatchIterator names =
+        QRegularExpression(QStringLiteral("`([a-z0-9-]+)`")).globalMatch(match.captured(2));
+    while (names.hasNext()) {
+        documented << names.next().captured(1);
+    }
+    QCOMPARE(documented, listed);
+    QCOMPARE(match.captured(1).toInt(), static_cast<int>(listed.size()));
 }
 
 void TestCli::version_printsTheProjectVersion() {
