@@ -37,7 +37,8 @@ test: build
 SANITIZER_DIR := $(CURDIR)/tests/sanitizers
 TSAN_TESTS    := test_transmitter_link test_camera test_rig_loop test_rig_session \
                  test_virtual_rig test_gui_record test_gui_experiments test_gui_run \
-                 test_gui_session test_gui_rig test_gui_window test_gui_emergency test_recording_crash
+                 test_gui_session test_gui_rig test_gui_window test_gui_language test_gui_emergency \
+                 test_recording_crash
 check-sanitizers: deps
 	@test -f build-asan/build.ninja || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)

@@ -1,6 +1,6 @@
 #include "app/EmergencyStopGuard.h"
 
-#include "app/ModalDialog.h"
+#include "app/widgets/ModalDialog.h"
 
 #include <QAbstractButton>
 #include <QAbstractSpinBox>

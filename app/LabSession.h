@@ -2,9 +2,9 @@
 
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
-#include "sim/Identification.h"
-#include "sim/MethodTuning.h"
-#include "sim/Task.h"
+#include "sim/planning/Identification.h"
+#include "sim/run/Task.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QJsonArray>
 #include <QObject>

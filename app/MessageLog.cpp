@@ -1,6 +1,6 @@
 #include "app/MessageLog.h"
 
-#include "app/ModalDialog.h"
+#include "app/widgets/ModalDialog.h"
 
 #include <QCoreApplication>
 #include <QEvent>

@@ -4,7 +4,7 @@
 #include "devices/FloorCalibration.h"
 #include "devices/Geofence.h"
 #include "devices/TransmitterLink.h"
-#include "sim/Plant.h"
+#include "sim/plants/Plant.h"
 
 #include <QCoreApplication>
 #include <QString>

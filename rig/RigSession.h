@@ -12,10 +12,10 @@
 #include "rig/PreTrialCheck.h"
 #include "rig/TrialBundle.h"
 #include "sim/MethodCatalog.h"
-#include "sim/Plant.h"
-#include "sim/PlantParameters.h"
-#include "sim/RunSetup.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/plants/Plant.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/run/RunSetup.h"
 
 #include <QJsonObject>
 #include <QMetaType>

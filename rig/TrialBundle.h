@@ -1,9 +1,9 @@
 #pragma once
 
 #include "core/Demonstration.h"
-#include "sim/EpisodeRunner.h"
-#include "sim/Plant.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/plants/Plant.h"
 
 #include <QJsonObject>
 #include <QString>

@@ -3,8 +3,8 @@
 #include "devices/ChannelMap.h"
 #include "devices/LedTracker.h"
 #include "devices/RcProtocols.h"
-#include "sim/Plant.h"
-#include "sim/PlantParameters.h"
+#include "sim/plants/Plant.h"
+#include "sim/plants/PlantParameters.h"
 
 #include <QString>
 

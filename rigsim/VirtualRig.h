@@ -9,7 +9,7 @@
 #include "devices/SyntheticCamera.h"
 #include "devices/TransmitterLink.h"
 #include "rigsim/VirtualCar.h"
-#include "sim/Plant.h"
+#include "sim/plants/Plant.h"
 
 #include <QString>
 

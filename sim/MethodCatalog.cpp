@@ -88,6 +88,21 @@ const MethodSpec& MethodCatalog::get(const QString& id) {
                                     .toStdString());
 }
 
+Eigen::VectorXd MethodCatalog::value(const MethodTuning& profile, const QString& name) {
+    const MethodParameter* declared = parameter(name);
+    if (!declared) {
+        throw std::invalid_argument(
+            QStringLiteral("no method has a parameter '%1'").arg(name).toStdString());
+    }
+    return declared->value(profile);
+}
+
+const core::FeatureMap& MethodCatalog::featuresOf(const MethodTuning& profile,
+                                                  const QString& method) {
+    const MethodSpec* spec = find(method);
+    return profile.featuresFor(spec && spec->ownFeatures);
+}
+
 std::unique_ptr<core::Controller> MethodCatalog::create(
     const QString& method, const MethodTuning& profile,
     std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "MethodParameter.h"
-#include "MethodTuning.h"
 #include "core/Controller.h"
+#include "sim/tuning/MethodSpec.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QStringList>
 
@@ -10,55 +10,6 @@
 #include <vector>
 
 namespace prisca::sim {
-
-/// What a method's controller is made from: the plant's profile (features, limits, matching,
-/// gains), the demonstration, the fitted B = B_v (.) B~ (m x n) and, for a method trained
-/// offline into a policy, that policy's theta (p x m; null for none).
-struct MethodInput {
-    const MethodTuning& profile;
-    std::shared_ptr<const core::Demonstration> demonstration;
-    const Eigen::MatrixXd& fittedB;
-    const Eigen::MatrixXd* theta = nullptr;
-};
-
-/// One method: everything the window, the CLI, Table I and the learning curves need to know of
-/// it. Adding a method is one entry in MethodCatalog.cpp plus the method's own files.
-struct MethodSpec {
-    using Create = std::unique_ptr<core::Controller> (*)(const MethodSpec&, const MethodInput&);
-    /// How a method is trained before it is evaluated (MethodTraining).
-    enum class Training {
-        None,           ///< evaluated as it is (online learners learn trial after trial)
-        SelectPdGains,  ///< grid-searches the PD gains on the training trials
-        Pegasus         ///< searches a linear policy on fixed scenarios
-    };
-    QString id;                 ///< as the command line and session files spell it, e.g. "pd-h-lsd"
-    QString label;              ///< in tables, lists and figures, e.g. "PD+H+LSD"
-    const char* summary = "";   ///< one line for --help
-    bool learnsOnline = false;  ///< learns trial after trial (warm-started in training)
-    Training training = Training::None;
-    bool inTable1 = true;  ///< has a row in Table I
-    /// Runs in a Table I no one chose the methods of (false: only when named, as mpc, whose
-    /// identification takes seconds per cell and which runs on the slide-car alone).
-    bool inDefaultTable1 = true;
-    bool inCurves = true;         ///< can be drawn as a learning curve
-    bool ownFeatures = false;     ///< theta over the profile's PRISCA features (priscaFeatures)
-    bool usesFeatures = false;    ///< a policy theta^T phi over features (the panel shows phi)
-    bool limit = false;           ///< the ruler every accuracy figure is read against
-    bool simulationOnly = false;  ///< needs the simulated plant itself (not on the rig)
-    /// Plans through the car's identified model (MethodTuning::mpcModel); without one it
-    /// identifies the car itself when it is built, which takes seconds: the rig wants it first.
-    bool plansThroughModel = false;
-    /// The plants it runs on (empty: every plant).
-    QStringList plants;
-    bool runsOn(const QString& plant) const { return plants.isEmpty() || plants.contains(plant); }
-    /// What the method is tuned by, in the order the Controller panel shows them; a parameter
-    /// several methods share (the PD gains, the matching window) is the same declaration in
-    /// each of their lists.
-    std::vector<MethodParameter> parameters;
-    Create create = nullptr;  ///< builds the controller
-
-    bool trainsOffline() const { return training != Training::None; }
-};
 
 /// The methods, in the order every list shows them.
 class MethodCatalog {
@@ -79,6 +30,12 @@ class MethodCatalog {
     static std::vector<const MethodParameter*> parameters();
     /// The declaration of a parameter by name, or null.
     static const MethodParameter* parameter(const QString& name);
+    /// The value of a declared parameter in a profile; std::invalid_argument for a name no
+    /// method declares.
+    static Eigen::VectorXd value(const MethodTuning& profile, const QString& name);
+    /// The features `method`'s theta is over in a profile (MethodTuning::featuresFor with the
+    /// method's ownFeatures; the shared ones for an unknown id).
+    static const core::FeatureMap& featuresOf(const MethodTuning& profile, const QString& method);
     /// Applies "NAME=VALUE" (as --param and the session spell it) to a profile; throws
     /// std::invalid_argument naming the parameter, the value and what is allowed (an unknown
     /// name lists the known ones).

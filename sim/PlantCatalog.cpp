@@ -1,12 +1,13 @@
-#include "PlantCatalog.h"
+#include "sim/PlantCatalog.h"
 
-#include "Acrobot.h"
-#include "DiffDrive.h"
-#include "DiffDriveDemonstrator.h"
-#include "DiffDriveTuning.h"
-#include "MethodTuning.h"
-#include "PlanarAircraft.h"
-#include "SlideCar.h"
+#include "sim/MethodCatalog.h"
+#include "sim/demonstrations/DiffDriveDemonstrator.h"
+#include "sim/plants/Acrobot.h"
+#include "sim/plants/DiffDrive.h"
+#include "sim/plants/PlanarAircraft.h"
+#include "sim/plants/SlideCar.h"
+#include "sim/tuning/DiffDriveTuning.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtGlobal>
 
@@ -22,11 +23,6 @@ std::unique_ptr<Plant> make(const SimulationTiming& timing) {
     return std::make_unique<P>(Parameters{}, timing);
 }
 
-template <class P, auto typed>
-std::unique_ptr<Plant> makeWith(const PlantParameters& parameters, const SimulationTiming& timing) {
-    return std::make_unique<P>(typed(parameters), timing);
-}
-
 std::vector<PlantEntry> makeCatalog() {
     std::vector<PlantEntry> all;
     PlantEntry e;
@@ -34,7 +30,6 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated slide-car");
     e.drawing = PlantEntry::Drawing::Car;
     e.create = &make<SlideCar, SlideCarParameters>;
-    e.createWith = &makeWith<SlideCar, &slideCarParameters>;
     e.describe = &SlideCar::describe;
     e.profile = &slideCarTuning;
     e.styles = slideCarStyles();
@@ -45,7 +40,6 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated acrobot");
     e.drawing = PlantEntry::Drawing::Arm;
     e.create = &make<Acrobot, AcrobotParameters>;
-    e.createWith = &makeWith<Acrobot, &acrobotParameters>;
     e.describe = [] { return Acrobot::describe(); };
     e.profile = &acrobotTuning;
     e.styles = acrobotStyles();
@@ -56,7 +50,6 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated aircraft");
     e.drawing = PlantEntry::Drawing::Aircraft;
     e.create = &make<PlanarAircraft, PlanarAircraftParameters>;
-    e.createWith = &makeWith<PlanarAircraft, &aircraftParameters>;
     e.describe = &PlanarAircraft::describe;
     e.profile = &aircraftTuning;
     e.styles = aircraftStyles();
@@ -67,7 +60,6 @@ std::vector<PlantEntry> makeCatalog() {
     e.displayName = QT_TRANSLATE_NOOP("PlantCatalog", "Simulated differential-drive robot");
     e.drawing = PlantEntry::Drawing::Vehicle;
     e.create = &make<DiffDrive, DiffDriveParameters>;
-    e.createWith = &makeWith<DiffDrive, &diffDriveParameters>;
     e.describe = &DiffDrive::describe;
     e.profile = &diffDriveTuning;
     e.styles = diffDriveStyles();
@@ -120,12 +112,24 @@ std::unique_ptr<Plant> PlantCatalog::create(const QString& name, const Simulatio
 
 std::unique_ptr<Plant> PlantCatalog::create(const PlantParameters& parameters,
                                             const SimulationTiming& timing) {
-    const PlantEntry& entry = get(parameters.plant);
-    if (const QString problem = plantParametersProblem(parameters.plant, parameters.values);
-        !problem.isEmpty()) {
-        throw std::invalid_argument(problem.toStdString());
+    get(parameters.plant);  // an unknown plant is named with the known ones
+    return makePlant(parameters, timing);
+}
+
+MethodTuning PlantCatalog::tuning(const PlantInfo& info) {
+    const PlantEntry* entry = find(info.name);
+    if (!entry || !entry->profile) {
+        throw std::invalid_argument(
+            QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
     }
-    return entry.createWith(parameters, timing);
+    MethodTuning profile = entry->profile(info);
+    for (const MethodParameter* parameter : MethodCatalog::parameters()) {
+        if (!parameter->get && parameter->defaultFor) {
+            profile.methodValues[QString::fromLatin1(parameter->name)] =
+                parameter->defaultFor(profile);
+        }
+    }
+    return profile;
 }
 
 PlantInfo PlantCatalog::describe(const QString& name) {
@@ -134,8 +138,11 @@ PlantInfo PlantCatalog::describe(const QString& name) {
 
 core::Demonstration PlantCatalog::demonstrate(const QString& name, std::uint64_t seed,
                                               const SimulationTiming& timing) {
-    get(name);  // an unknown plant is named with the known ones
-    return DemonstrationStyles::record(name, DemonstrationStyles::classic(name), seed, timing);
+    const PlantEntry& entry = get(name);  // an unknown plant is named with the known ones
+    const QString classic = entry.styles.list().front().name;
+    core::Demonstration demonstration = entry.styles.record(classic, seed, timing, {});
+    demonstration.metadata.insert(QStringLiteral("style"), classic);  // as DemonstrationStyles
+    return demonstration;
 }
 
 }  // namespace prisca::sim

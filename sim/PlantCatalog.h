@@ -1,9 +1,9 @@
 #pragma once
 
-#include "DemonstrationStyles.h"
-#include "Plant.h"
-#include "PlantParameters.h"
 #include "core/Demonstration.h"
+#include "sim/demonstrations/ScriptedStyles.h"
+#include "sim/plants/Plant.h"
+#include "sim/plants/PlantParameters.h"
 
 #include <QStringList>
 
@@ -31,9 +31,6 @@ struct PlantEntry {
         "";  ///< for the window (translated there), e.g. "Simulated slide-car"
     Drawing drawing = Drawing::Vehicle;
     std::unique_ptr<Plant> (*create)(const SimulationTiming& timing) = nullptr;
-    /// The plant with physical parameters from a file (checked values of this plant).
-    std::unique_ptr<Plant> (*createWith)(const PlantParameters& parameters,
-                                         const SimulationTiming& timing) = nullptr;
     PlantInfo (*describe)() = nullptr;
     MethodTuning (*profile)(const PlantInfo& info) = nullptr;  ///< its tuned methods' settings
     StyleSet styles;  ///< its demonstration styles; the first is its classic one
@@ -58,9 +55,14 @@ class PlantCatalog {
     /// A new plant with default physical parameters; throws std::invalid_argument for an
     /// unknown name (the message lists the known ones).
     static std::unique_ptr<Plant> create(const QString& name, const SimulationTiming& timing = {});
-    /// A new plant with these physical parameters (defaultPlantParameters: the catalog's plant).
+    /// A new plant with these physical parameters (defaultPlantParameters: the catalog's plant;
+    /// makePlant, which the layers below the catalog call).
     static std::unique_ptr<Plant> create(const PlantParameters& parameters,
                                          const SimulationTiming& timing = {});
+    /// The tuned methods' settings for a plant by its info: its entry's profile with every
+    /// method parameter's per-plant default (MethodCatalog); std::invalid_argument for an unknown
+    /// plant.
+    static MethodTuning tuning(const PlantInfo& info);
     /// The plant's description without building it.
     static PlantInfo describe(const QString& name);
     /// The scripted, human-like demonstration of the plant for this seed, in its classic style

@@ -18,15 +18,15 @@
 #include "core/Statistics.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/Table1Experiment.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/experiments/Table1Experiment.h"
+#include "sim/run/MethodTraining.h"
+#include "sim/run/RunSetup.h"
 using namespace prisca;
 int main(int argc, char** argv) {
     const char* method = argv[1];
-    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     bool drift = false;
     for (int i = 2; i + 1 < argc; i += 2) {
         std::string k = argv[i];

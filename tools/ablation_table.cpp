@@ -8,7 +8,7 @@
 // Deterministic: the same build and arguments print the same table.
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/Table1Protocol.h"
+#include "sim/experiments/Table1Protocol.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     }
     using Profile = sim::MethodTuning;
     using Fit = core::ActionMappingFitOptions;
-    const Profile base = Profile::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const Profile base = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     using Gradient = core::PriscaParameters::Gradient;
     std::vector<Variant> variants = {
         {"PRISCA (product default)", "prisca", [](Profile&, Fit&) {}},

@@ -4,13 +4,13 @@
 //   mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]
 #include "core/ActionMapping.h"
 #include "sim/DemonstrationStyles.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MpcController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/Task.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/planning/MpcController.h"
+#include "sim/run/RunSetup.h"
+#include "sim/run/Task.h"
 
 #include <QCoreApplication>
 
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     const QString style = QString::fromLocal8Bit(argv[2]);
     const std::uint64_t set = std::stoull(argv[3]);
     const int trials = std::atoi(argv[4]);
-    MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+    MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
     MethodCatalog::setParameter(profile, QStringLiteral("start=demo"));
     for (int i = 5; i < argc; ++i) {
         MethodCatalog::setParameter(profile, QString::fromLocal8Bit(argv[i]));

@@ -10,12 +10,12 @@
 //
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/ParallelTrials.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/run/RunSetup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ struct Score {
 Score evaluate(const Setting& s, const char* method, std::uint64_t seedSet) {
     const QString plantName = QStringLiteral("aircraft");
     auto demo = std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate(plantName, 1));
-    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plantName));
+    sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plantName));
     core::ActionMappingFitOptions fitOptions;
     fitOptions.responseSteps = s.responseSteps;
     Eigen::MatrixXd B =

@@ -9,12 +9,12 @@
 // Deterministic: the same build prints the same list.
 #include "core/ActionMapping.h"
 #include "sim/DemonstrationStyles.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/ParallelTrials.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/run/RunSetup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +41,7 @@ T pick(std::mt19937& g, std::initializer_list<T> values) {
 }
 
 double score(const QString& plant, const QStringList& styles, const Setting& s) {
-    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
+    sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant));
     p.ilcLearningScale = s.scale;
     p.ilcLead = s.lead;
     p.ilcCutoff = s.cutoff;
@@ -94,8 +94,7 @@ int main(int argc, char** argv) {
                                    : QStringList{"s-turn", "circle"};
     std::mt19937 g(12345);
     std::vector<std::pair<double, Setting>> results;
-    const sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
+    const sim::MethodTuning profile = sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant));
     for (int i = 0; i < count; ++i) {
         Setting s;
         if (i == 0) {

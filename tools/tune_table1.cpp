@@ -14,8 +14,8 @@
 #include "core/Statistics.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/Table1Experiment.h"
+#include "sim/experiments/Table1Experiment.h"
+#include "sim/run/RunSetup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,8 +63,7 @@ struct Cell {
 
 std::vector<Cell> tuningCells() {
     std::vector<Cell> cells;
-    const sim::MethodTuning p =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     for (const char* style : kTuningStyles) {
         for (std::uint64_t set : kTuningSets) {
             Cell cell;
@@ -83,7 +82,7 @@ std::vector<Cell> tuningCells() {
 }
 
 sim::MethodTuning profileFor(const Setting& s, const char* method) {
-    sim::MethodTuning p = sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     if (!std::strcmp(method, "ilc")) {
         // ILC learns around the profile's tuned PD: only its own knobs are drawn.
         p.ilcLearningScale = s.ilcScale;
@@ -199,8 +198,7 @@ Setting draw(std::mt19937& g, const char* method) {
 
 // The first setting scored is the profile's current one, so a search never does worse than it.
 Setting current(const char* method) {
-    const sim::MethodTuning p =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    const sim::MethodTuning p = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     Setting s;
     s.stepScale = !std::strcmp(method, "pgsd") ? p.pgsd.stepSize : p.prisca.stepSize.scale;
     s.beta = p.prisca.stepSize.beta;

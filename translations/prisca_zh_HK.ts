@@ -558,22 +558,22 @@
 <context>
     <name>PlantCatalog</name>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="34"/>
+        <location filename="../sim/PlantCatalog.cpp" line="30"/>
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="45"/>
+        <location filename="../sim/PlantCatalog.cpp" line="40"/>
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="56"/>
+        <location filename="../sim/PlantCatalog.cpp" line="50"/>
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="67"/>
+        <location filename="../sim/PlantCatalog.cpp" line="60"/>
         <source>Simulated differential-drive robot</source>
         <translation>模擬差速驅動機械人</translation>
     </message>
@@ -609,27 +609,27 @@
 <context>
     <name>prisca::app::ArenaView</name>
     <message>
-        <location filename="../app/ArenaView.cpp" line="251"/>
+        <location filename="../app/widgets/ArenaView.cpp" line="251"/>
         <source>desired</source>
         <translation>期望</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="252"/>
+        <location filename="../app/widgets/ArenaView.cpp" line="252"/>
         <source>actual</source>
         <translation>實際</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="280"/>
+        <location filename="../app/widgets/ArenaView.cpp" line="280"/>
         <source>%1 cm</source>
         <translation>%1 厘米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="281"/>
+        <location filename="../app/widgets/ArenaView.cpp" line="281"/>
         <source>%1 m</source>
         <translation>%1 米</translation>
     </message>
     <message>
-        <location filename="../app/ArenaView.cpp" line="513"/>
+        <location filename="../app/widgets/ArenaView.cpp" line="513"/>
         <source>wind %1 m/s</source>
         <translation>風速 %1 米/秒</translation>
     </message>
@@ -637,68 +637,68 @@
 <context>
     <name>prisca::app::BundleChooser</name>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="62"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="62"/>
         <source>incomplete</source>
         <translation>不完整</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="64"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="64"/>
         <source>failsafe: %1</source>
         <translation>失效保護：%1</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="66"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="66"/>
         <source>parked %1 cm</source>
         <translation>停在 %1 厘米處</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="69"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="69"/>
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="82"/>
-        <location filename="../app/BundleChooser.cpp" line="134"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="82"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="134"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="85"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="85"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="85"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="85"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="85"/>
         <source>Outcome</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="103"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="103"/>
         <source>Trials on the rig (%1)</source>
         <translation>實機試驗（%1）</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="104"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="104"/>
         <source>Simulated trials (%1)</source>
         <translation>模擬試驗（%1）</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="121"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="121"/>
         <source>No trial bundles yet in %1.</source>
         <translation>%1 尚未有試驗包。</translation>
     </message>
     <message>
-        <location filename="../app/BundleChooser.cpp" line="126"/>
+        <location filename="../app/widgets/BundleChooser.cpp" line="126"/>
         <source>Other folder...</source>
         <translation>其他資料夾……</translation>
     </message>
@@ -706,22 +706,22 @@
 <context>
     <name>prisca::app::CameraView</name>
     <message>
-        <location filename="../app/CameraView.cpp" line="97"/>
+        <location filename="../app/widgets/CameraView.cpp" line="97"/>
         <source>No camera image</source>
         <translation>沒有攝影機影像</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="174"/>
+        <location filename="../app/widgets/CameraView.cpp" line="174"/>
         <source>x %1 m, y %2 m, heading %3°</source>
         <translation>x %1 米，y %2 米，航向 %3°</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="178"/>
+        <location filename="../app/widgets/CameraView.cpp" line="178"/>
         <source>no pose (failsafe)</source>
         <translation>沒有位姿（失效保護）</translation>
     </message>
     <message>
-        <location filename="../app/CameraView.cpp" line="183"/>
+        <location filename="../app/widgets/CameraView.cpp" line="183"/>
         <source>Calibrating: click a floor point whose position you know</source>
         <translation>校準中：點擊一個已知位置的地面點</translation>
     </message>
@@ -729,37 +729,37 @@
 <context>
     <name>prisca::app::ChannelMapEditor</name>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="84"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="84"/>
         <source>&apos;%1&apos; is not a number</source>
         <translation>「%1」不是數字</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="124"/>
         <source>CH</source>
         <translation>通道</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="124"/>
         <source>trim [µs]</source>
         <translation>微調 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="124"/>
         <source>min [µs]</source>
         <translation>最小 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="124"/>
         <source>max [µs]</source>
         <translation>最大 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="124"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="124"/>
         <source>reversed</source>
         <translation>反向</translation>
     </message>
     <message>
-        <location filename="../app/ChannelMapEditor.cpp" line="126"/>
+        <location filename="../app/widgets/ChannelMapEditor.cpp" line="126"/>
         <source>Which transmitter channel each control drives, its trim, its travel limits and its direction</source>
         <translation>每個控制驅動哪個發射器通道，及其微調、行程限值和方向</translation>
     </message>
@@ -767,90 +767,90 @@
 <context>
     <name>prisca::app::ControllerPanel</name>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="35"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="35"/>
         <source>steps</source>
         <translation>步</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="38"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="38"/>
         <source>samples</source>
         <translation>個樣本</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="224"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="224"/>
         <source>error in %1</source>
         <translation>%1 的誤差</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="225"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="225"/>
         <source>state %1</source>
         <translation>狀態 %1</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="226"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="226"/>
         <source>constant</source>
         <translation>常數</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="228"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="228"/>
         <source>Scale of φ%1 of %2: %3 (Algorithm 1, line 3)</source>
         <translation>%2 的 φ%1 比例：%3（演算法 1，第 3 行）</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="239"/>
-        <location filename="../app/ControllerPanel.cpp" line="392"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="239"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="393"/>
         <source>lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="239"/>
-        <location filename="../app/ControllerPanel.cpp" line="392"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="239"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="393"/>
         <source>upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="245"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="245"/>
         <source>The controller saturates %1 to this [%2]</source>
         <translation>控制器把 %1 限制於此 [%2]</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="323"/>
-        <location filename="../app/ControllerPanel.cpp" line="367"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="323"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="367"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="339"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="339"/>
         <source>Feature φ%1 of %2 must be a number.</source>
         <translation>%2 的特徵 φ%1 必須是數字。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="355"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="355"/>
         <source>Limits of %1 must be numbers with lower &lt; upper, within [%2, %3].</source>
         <translation>%1 的限值必須是數字，下限 &lt; 上限，並在 [%2, %3] 之內。</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="401"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="402"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="434"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="435"/>
         <source>Restore the plant&apos;s tuned preset</source>
         <translation>還原此對象的調校預設值</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="435"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="436"/>
         <source>Feature scales φ (per control; the policy is u = u* + θᵀφ):</source>
         <translation>特徵比例 φ（按控制通道；策略為 u = u* + θᵀφ）：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="436"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="437"/>
         <source>Action limits:</source>
         <translation>動作限值：</translation>
     </message>
     <message>
-        <location filename="../app/ControllerPanel.cpp" line="402"/>
+        <location filename="../app/panels/ControllerPanel.cpp" line="403"/>
         <source>PRISCA, or a comparison method of Table I (PD family, LQR, action playback, PGSD, PEGASUS, ILC), or the limit: the oracle, which plans on copies of the simulated plant itself (simulation only).</source>
         <translation>PRISCA，或表 I 的比較方法（PD 系列、LQR、動作重播、PGSD、PEGASUS、ILC），或極限：預言者，它在模擬對象本身的副本上規劃（只限模擬）。</translation>
     </message>
@@ -884,288 +884,288 @@
 <context>
     <name>prisca::app::ExperimentsPanel</name>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="190"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="232"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="187"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="225"/>
         <source>Experiment</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="233"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="226"/>
         <source>Table I compares final positions and headings, so it needs a vehicle: choose the slide-car or the aircraft as the target.</source>
         <translation>表 I 比較最終位置和航向，所以需要車輛或飛機：請選擇漂移車或飛機作為對象。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="252"/>
         <source>Starting...</source>
         <translation>開始中...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="273"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="265"/>
         <source>Cancelling: the trials under way finish first...</source>
         <translation>取消中：正在進行的試驗會先完成...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="314"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="306"/>
         <source> (cancelled: %1 trials finished)</source>
         <translation>（已取消：完成了 %1 次試驗）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="373"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="311"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="365"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="311"/>
         <source>Position [cm]</source>
         <translation>位置 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="311"/>
         <source>Var. [cm²]</source>
         <translation>方差 [厘米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="312"/>
         <source>Orientation [deg]</source>
         <translation>方向 [度]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="320"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="312"/>
         <source>Var. [deg²]</source>
         <translation>方差 [度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="307"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="299"/>
         <source>Slide parking in simulation (%1): %2 trials per method, seed %3; demonstration: %4</source>
         <translation>模擬漂移泊車（%1）：每種方法 %2 次試驗，種子 %3；示範：%4</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="203"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="225"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="259"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="272"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="423"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="436"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="453"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="678"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="197"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="218"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="252"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="264"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="415"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="428"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="445"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="569"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="204"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="198"/>
         <source>E-STOP: the experiment stops once the trials under way end; what finished is kept and marked partial.</source>
         <translation>緊急停止：進行中的試驗結束後實驗即停止；已完成的部分會保留並標為不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="319"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="311"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="325"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="317"/>
         <source> (partial)</source>
         <translation>（部分）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="359"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="351"/>
         <source>Learning curves (%1): %2 runs per method, %3 steps each, seed %4; demonstration: %5</source>
         <translation>學習曲線（%1）：每種方法 %2 次運行，每次 %3 步，種子 %4；示範：%5</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="367"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="359"/>
         <source> (cancelled)</source>
         <translation>（已取消）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="373"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="365"/>
         <source>First point</source>
         <translation>第一點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="373"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="365"/>
         <source>Half way</source>
         <translation>中段</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="373"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="365"/>
         <source>Last point reached</source>
         <translation>最後到達的點</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="402"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="394"/>
         <source>mean squared position error [m²]</source>
         <translation>均方位置誤差 [米²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="403"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="395"/>
         <source>mean squared joint-angle error [rad²]</source>
         <translation>均方關節角誤差 [弧度²]</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="424"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="416"/>
         <source>The result could not be kept for the next session: %1</source>
         <translation>結果未能保留至下次使用：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="437"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="429"/>
         <source>The last session&apos;s experiment could not be shown again: %1</source>
         <translation>上次的實驗未能再次顯示：%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="455"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="447"/>
         <source>The last experiment, cancelled %1 (its rows are partial), is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 取消的實驗（各行不完整）；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="458"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="450"/>
         <source>The last experiment, finished %1, is shown again; Start runs a new one.</source>
         <translation>再次顯示上次於 %1 完成的實驗；按「開始」執行新實驗。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="548"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="89"/>
         <source>There is no result to export yet.</source>
         <translation>尚未有可匯出的結果。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="561"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="102"/>
         <source>There is no figure to export yet.</source>
         <translation>尚未有可匯出的圖。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="570"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="582"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="111"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="123"/>
         <source>Export table</source>
         <translation>匯出表格</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="571"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="112"/>
         <source>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</source>
         <translation>Markdown (*.md);;CSV (*.csv);;LaTeX (*.tex)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="587"/>
-        <location filename="../app/ExperimentsPanel.cpp" line="597"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="128"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="138"/>
         <source>Export figure</source>
         <translation>匯出圖</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="588"/>
+        <location filename="../app/panels/ExperimentsExport.cpp" line="129"/>
         <source>PNG pictures (*.png);;SVG drawings (*.svg)</source>
         <translation>PNG 圖片 (*.png);;SVG 繪圖 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="609"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="500"/>
         <source>Table I: slide parking, every method</source>
         <translation>表 I：漂移泊車，所有方法</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="610"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="501"/>
         <source>Learning curves: PRISCA, PGSD, PEGASUS</source>
         <translation>學習曲線：PRISCA、PGSD、PEGASUS</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="503"/>
         <source>Runs per method:</source>
         <translation>每種方法的運行次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="612"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="503"/>
         <source>Trials per method:</source>
         <translation>每種方法的試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="613"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="504"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="614"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="505"/>
         <source>Budget:</source>
         <translation>預算：</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="615"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="506"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="616"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="507"/>
         <source>Simulated control steps each run may use (the same for every method)</source>
         <translation>每次運行可用的模擬控制步數（所有方法相同）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="618"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="509"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="619"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="510"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="620"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="511"/>
         <source>Export table...</source>
         <translation>匯出表格...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="621"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="512"/>
         <source>Export figure...</source>
         <translation>匯出圖...</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="622"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="513"/>
         <source>Click to open the figure large</source>
         <translation>按一下以大圖打開</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="651"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="542"/>
         <source>Starting... %1 so far</source>
         <translation>正在開始……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="653"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="544"/>
         <source>Run %1 of %2 done</source>
         <translation>已完成第 %1 次運行（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="654"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="545"/>
         <source>Trial %1 of %2 done</source>
         <translation>已完成第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="658"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="549"/>
         <source>E-STOP: stopping once the trials under way end. %1</source>
         <translation>緊急停止：進行中的試驗結束後即停止。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="660"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="551"/>
         <source>Cancelling: the trials under way finish first. %1</source>
         <translation>正在取消：先完成進行中的試驗。%1</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="671"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="562"/>
         <source>Cancelled: %v of %m runs</source>
         <translation>已取消：完成 %v / %m 次運行</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="672"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="563"/>
         <source>Cancelled: %v of %m trials</source>
         <translation>已取消：完成 %v / %m 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="680"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="571"/>
         <source>Finished in %1.</source>
         <translation>用時 %1 完成。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="682"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="573"/>
         <source>Stopped by E-STOP after %1: the rows are partial.</source>
         <translation>%1 後被緊急停止：各行不完整。</translation>
     </message>
     <message>
-        <location filename="../app/ExperimentsPanel.cpp" line="683"/>
+        <location filename="../app/panels/ExperimentsPanel.cpp" line="574"/>
         <source>Cancelled after %1: the rows are partial.</source>
         <translation>%1 後已取消：各行不完整。</translation>
     </message>
@@ -1173,7 +1173,7 @@
 <context>
     <name>prisca::app::GamepadEmergencyButton</name>
     <message>
-        <location filename="../app/GamepadEmergencyButton.cpp" line="55"/>
+        <location filename="../app/input/GamepadEmergencyButton.cpp" line="55"/>
         <source>gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
@@ -1181,188 +1181,188 @@
 <context>
     <name>prisca::app::LabSession</name>
     <message>
-        <location filename="../app/LabSession.cpp" line="49"/>
+        <location filename="../app/LabSessionFile.cpp" line="51"/>
         <source>&apos;%1&apos; must be a number from %2 to %3</source>
         <translation>「%1」必須是 %2 至 %3 之間的數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="63"/>
+        <location filename="../app/LabSessionFile.cpp" line="65"/>
         <source>&apos;%1&apos; must be a whole number</source>
         <translation>「%1」必須是整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="91"/>
+        <location filename="../app/LabSessionFile.cpp" line="93"/>
         <source>&apos;%1&apos; must have %2 lists of scales</source>
         <translation>「%1」必須有 %2 組比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="97"/>
+        <location filename="../app/LabSessionFile.cpp" line="99"/>
         <source>&apos;%1&apos; list %2 must have %3 scales</source>
         <translation>「%1」第 %2 組必須有 %3 個比例</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="105"/>
+        <location filename="../app/LabSessionFile.cpp" line="107"/>
         <source>&apos;%1&apos; list %2 entry %3 must be a number</source>
         <translation>「%1」第 %2 組第 %3 項必須是數字</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="138"/>
+        <location filename="../app/LabSession.cpp" line="30"/>
         <source>the plant file %1 describes a %2, not a %3</source>
         <translation>機型檔 %1 描述的是 %2，不是 %3</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="157"/>
+        <location filename="../app/LabSession.cpp" line="49"/>
         <source>the plant&apos;s physical parameters changed</source>
         <translation>對象的物理參數已改變</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="175"/>
+        <location filename="../app/LabSession.cpp" line="67"/>
         <source>the target changed</source>
         <translation>目標已改變</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="182"/>
+        <location filename="../app/LabSession.cpp" line="74"/>
         <source>no demonstration</source>
         <translation>沒有示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="190"/>
+        <location filename="../app/LabSession.cpp" line="82"/>
         <source>the demonstration does not fit the %1: %2</source>
         <translation>示範不適用於 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="198"/>
-        <location filename="../app/LabSession.cpp" line="228"/>
+        <location filename="../app/LabSession.cpp" line="90"/>
+        <location filename="../app/LabSession.cpp" line="120"/>
         <source>the demonstration changed</source>
         <translation>示範已改變</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="205"/>
+        <location filename="../app/LabSession.cpp" line="97"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="217"/>
+        <location filename="../app/LabSession.cpp" line="109"/>
         <source>the %1 has no demonstration style &apos;%2&apos;</source>
         <translation>%1 沒有示範風格「%2」</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="256"/>
+        <location filename="../app/LabSession.cpp" line="148"/>
         <source>an identification that was refused or cancelled is no model</source>
         <translation>被拒絕或已取消的辨識不是模型</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="261"/>
+        <location filename="../app/LabSession.cpp" line="153"/>
         <source>the model is of a %1, the target a %2</source>
         <translation>模型屬於 %1，目標卻是 %2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="267"/>
+        <location filename="../app/LabSession.cpp" line="159"/>
         <source>the demonstration changed while the model was identified</source>
         <translation>辨識模型期間示範已改變</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="399"/>
+        <location filename="../app/LabSessionFile.cpp" line="211"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="405"/>
+        <location filename="../app/LabSessionFile.cpp" line="217"/>
         <source>not valid JSON at byte %1 (%2)</source>
         <translation>第 %1 個位元組處不是有效的 JSON（%2）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="411"/>
+        <location filename="../app/LabSessionFile.cpp" line="223"/>
         <source>not a PRISCA Lab session (no &quot;format&quot;: &quot;prisca-session&quot;)</source>
         <translation>不是 PRISCA Lab 工作階段檔（沒有 &quot;format&quot;: &quot;prisca-session&quot;）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="414"/>
+        <location filename="../app/LabSessionFile.cpp" line="226"/>
         <source>written by a newer PRISCA Lab (session version %1)</source>
         <translation>由較新版本的 PRISCA Lab 寫入（工作階段版本 %1）</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="419"/>
+        <location filename="../app/LabSessionFile.cpp" line="231"/>
         <source>&apos;plant&apos; must be one of %1</source>
         <translation>「plant」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="426"/>
+        <location filename="../app/LabSessionFile.cpp" line="238"/>
         <source>&apos;mapping&apos;: %1</source>
         <translation>「mapping」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="430"/>
+        <location filename="../app/LabSessionFile.cpp" line="242"/>
         <source>&apos;mapping&apos; must have %1 rows of %2 signs for the %3</source>
         <translation>%3 的「mapping」必須有 %1 行、每行 %2 個符號</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="439"/>
+        <location filename="../app/LabSessionFile.cpp" line="251"/>
         <source>&apos;method&apos; must be one of %1</source>
         <translation>「method」必須是以下其中之一：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="461"/>
+        <location filename="../app/LabSessionFile.cpp" line="273"/>
         <source>&apos;%1&apos;: %2</source>
         <translation>「%1」：%2</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="528"/>
+        <location filename="../app/LabSessionFile.cpp" line="340"/>
         <source>&apos;parameters&apos; must be an object of &quot;name&quot;: &quot;value&quot;</source>
         <translation>「parameters」必須是 &quot;名稱&quot;: &quot;值&quot; 的物件</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="534"/>
+        <location filename="../app/LabSessionFile.cpp" line="346"/>
         <source>&apos;parameters.%1&apos; must be a string such as &quot;10&quot; or &quot;1,1.2&quot;</source>
         <translation>「parameters.%1」必須是如 &quot;10&quot; 或 &quot;1,1.2&quot; 的字串</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="555"/>
+        <location filename="../app/LabSessionFile.cpp" line="367"/>
         <source>&apos;limits.%1&apos; must be a list of %2 numbers</source>
         <translation>「limits.%1」必須是含 %2 個數字的列表</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="569"/>
+        <location filename="../app/LabSessionFile.cpp" line="381"/>
         <source>&apos;limits&apos; of %1 must have lower &lt; upper within [%2, %3]</source>
         <translation>%1 的「limits」必須下限 &lt; 上限，並在 [%2, %3] 之內</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="595"/>
+        <location filename="../app/LabSessionFile.cpp" line="407"/>
         <source>&apos;plantParameters&apos;: %1</source>
         <translation>「plantParameters」：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="609"/>
+        <location filename="../app/LabSessionFile.cpp" line="421"/>
         <source>its demonstration: %1</source>
         <translation>其示範：%1</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="613"/>
+        <location filename="../app/LabSessionFile.cpp" line="425"/>
         <source>its demonstration %1 is not a %2 demonstration</source>
         <translation>其示範 %1 不是 %2 的示範</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="620"/>
+        <location filename="../app/LabSessionFile.cpp" line="432"/>
         <source>&apos;scriptedStyle&apos; must be one of %1</source>
         <translation>「scriptedStyle」必須是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="625"/>
+        <location filename="../app/LabSessionFile.cpp" line="437"/>
         <source>&apos;scriptedSeed&apos; must be a whole number from 0 to 9e15</source>
         <translation>「scriptedSeed」必須是 0 至 9e15 的整數</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="653"/>
+        <location filename="../app/LabSessionFile.cpp" line="465"/>
         <source>The identified model saved with it could not be read (%1): identify the car again in the Model step.</source>
         <translation>無法讀取隨工作階段儲存的已辨識模型（%1）：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="658"/>
+        <location filename="../app/LabSessionFile.cpp" line="470"/>
         <source>Its demonstration is not the one the saved model was identified from: identify the car again in the Model step.</source>
         <translation>其示範並非儲存的模型辨識時所用的示範：請在「模型」步驟重新辨識車輛。</translation>
     </message>
     <message>
-        <location filename="../app/LabSession.cpp" line="675"/>
+        <location filename="../app/LabSessionFile.cpp" line="487"/>
         <source>Saved by an earlier PRISCA Lab: its PRISCA, PD and ILC parameters were tuned for an earlier PRISCA, so today&apos;s defaults are used instead.</source>
         <translation>由較早版本的 PRISCA Lab 儲存：其 PRISCA、PD 及 ILC 參數是為較早的 PRISCA 調校的，因此改用今日的預設值。</translation>
     </message>
@@ -1378,124 +1378,124 @@
 <context>
     <name>prisca::app::LiveChartsPanel</name>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="384"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="384"/>
         <source>Trial %1, run time %2 s</source>
         <translation>試驗 %1，運行時間 %2 s</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="387"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="387"/>
         <source>error %1 %2, smoothed %3 %2</source>
         <translation>誤差 %1 %2，平滑後 %3 %2</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="402"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="402"/>
         <source>%1: u %2, u* %3 %4</source>
         <translation>%1：u %2，u* %3 %4</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="533"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="141"/>
         <source>cannot encode the picture for %1</source>
         <translation>無法為 %1 編碼圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="555"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="560"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="163"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="168"/>
         <source>Export chart data</source>
         <translation>匯出圖表數據</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="556"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="164"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔案 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="566"/>
-        <location filename="../app/LiveChartsPanel.cpp" line="571"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="174"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="179"/>
         <source>Export charts as picture</source>
         <translation>把圖表匯出為圖片</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="567"/>
+        <location filename="../app/panels/LiveChartsExport.cpp" line="175"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="584"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="444"/>
         <source>Tracking error</source>
         <translation>追蹤誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="585"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="445"/>
         <source>Policy θ</source>
         <translation>策略 θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="586"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="446"/>
         <source>Action u and u*</source>
         <translation>動作 u 與 u*</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="587"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="447"/>
         <source>error</source>
         <translation>誤差</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="588"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="448"/>
         <source>smoothed (1 s)</source>
         <translation>平滑（1 秒）</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="451"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="591"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="451"/>
         <source>error [rad]</source>
         <translation>誤差 [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="593"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="453"/>
         <source>run time [s]</source>
         <translation>運行時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="595"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="455"/>
         <source>θ</source>
         <translation>θ</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="596"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="456"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="597"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="457"/>
         <source>Freeze</source>
         <translation>凍結</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="598"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="458"/>
         <source>Stop redrawing to look closely; the data keeps being recorded.</source>
         <translation>暫停重繪以便細看；數據仍會繼續記錄。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="599"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="459"/>
         <source>Fit</source>
         <translation>全部顯示</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="600"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="460"/>
         <source>Show all the data again after zooming (drag a box to zoom).</source>
         <translation>縮放後重新顯示全部數據（拖出方框即可縮放）。</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="601"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="461"/>
         <source>Export CSV...</source>
         <translation>匯出 CSV...</translation>
     </message>
     <message>
-        <location filename="../app/LiveChartsPanel.cpp" line="602"/>
+        <location filename="../app/panels/LiveChartsPanel.cpp" line="462"/>
         <source>Export PNG...</source>
         <translation>匯出 PNG...</translation>
     </message>
@@ -1503,166 +1503,166 @@
 <context>
     <name>prisca::app::MainWindow</name>
     <message>
-        <location filename="../app/MainWindow.cpp" line="134"/>
+        <location filename="../app/MainWindow.cpp" line="123"/>
         <source>the last session</source>
         <translation>上次的工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="161"/>
-        <location filename="../app/MainWindow.cpp" line="755"/>
-        <location filename="../app/MainWindow.cpp" line="762"/>
+        <location filename="../app/MainWindow.cpp" line="150"/>
+        <location filename="../app/MainWindow.cpp" line="469"/>
+        <location filename="../app/MainWindow.cpp" line="476"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="164"/>
-        <location filename="../app/MainWindow.cpp" line="676"/>
-        <location filename="../app/MainWindow.cpp" line="684"/>
-        <location filename="../app/MainWindow.cpp" line="686"/>
-        <location filename="../app/MainWindow.cpp" line="700"/>
+        <location filename="../app/MainWindow.cpp" line="153"/>
+        <location filename="../app/MainWindow.cpp" line="390"/>
+        <location filename="../app/MainWindow.cpp" line="398"/>
+        <location filename="../app/MainWindow.cpp" line="400"/>
+        <location filename="../app/MainWindow.cpp" line="414"/>
         <source>Session</source>
         <translation>工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="360"/>
+        <location filename="../app/MainWindow.cpp" line="349"/>
         <source>%1 on the %2; demonstration: %3</source>
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="417"/>
+        <location filename="../app/MainWindowMenus.cpp" line="102"/>
         <source>the E-STOP button</source>
         <translation>緊急停止按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="421"/>
-        <location filename="../app/MainWindow.cpp" line="544"/>
-        <location filename="../app/MainWindow.cpp" line="548"/>
+        <location filename="../app/MainWindowMenus.cpp" line="106"/>
+        <location filename="../app/MainWindowMenus.cpp" line="229"/>
+        <location filename="../app/MainWindowMenus.cpp" line="233"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="483"/>
+        <location filename="../app/MainWindowMenus.cpp" line="168"/>
         <source>The quit was called off; the work goes on.</source>
         <translation>已取消結束；工作繼續。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="490"/>
+        <location filename="../app/MainWindowMenus.cpp" line="175"/>
         <source>Quits when the work under way is done</source>
         <translation>進行中的工作完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="491"/>
+        <location filename="../app/MainWindowMenus.cpp" line="176"/>
         <source>Quits once the work has stopped</source>
         <translation>工作停止後即結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="492"/>
+        <location filename="../app/MainWindowMenus.cpp" line="177"/>
         <source>Don&apos;t quit</source>
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="500"/>
+        <location filename="../app/MainWindowMenus.cpp" line="185"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="503"/>
+        <location filename="../app/MainWindowMenus.cpp" line="188"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="506"/>
+        <location filename="../app/MainWindowMenus.cpp" line="191"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="513"/>
+        <location filename="../app/MainWindowMenus.cpp" line="198"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="516"/>
+        <location filename="../app/MainWindowMenus.cpp" line="201"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="519"/>
+        <location filename="../app/MainWindowMenus.cpp" line="204"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="528"/>
+        <location filename="../app/MainWindowMenus.cpp" line="213"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="531"/>
+        <location filename="../app/MainWindowMenus.cpp" line="216"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="534"/>
+        <location filename="../app/MainWindowMenus.cpp" line="219"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="544"/>
+        <location filename="../app/MainWindowMenus.cpp" line="229"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="576"/>
-        <location filename="../app/MainWindow.cpp" line="668"/>
+        <location filename="../app/MainWindow.cpp" line="382"/>
+        <location filename="../app/MainWindowMenus.cpp" line="261"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="577"/>
+        <location filename="../app/MainWindowMenus.cpp" line="262"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="588"/>
-        <location filename="../app/MainWindow.cpp" line="695"/>
+        <location filename="../app/MainWindow.cpp" line="409"/>
+        <location filename="../app/MainWindowMenus.cpp" line="273"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="589"/>
+        <location filename="../app/MainWindowMenus.cpp" line="274"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1023"/>
+        <location filename="../app/MainWindowMenus.cpp" line="451"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="635"/>
+        <location filename="../app/MainWindowMenus.cpp" line="320"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="523"/>
+        <location filename="../app/MainWindowMenus.cpp" line="208"/>
         <source>Job: identifying the model, %1 %</source>
         <translation>工作：正在辨識模型，%1 %</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="525"/>
+        <location filename="../app/MainWindowMenus.cpp" line="210"/>
         <source>Job: identifying the model</source>
         <translation>工作：正在辨識模型</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="635"/>
-        <location filename="../app/MainWindow.cpp" line="972"/>
-        <location filename="../app/MainWindow.cpp" line="1040"/>
-        <location filename="../app/MainWindow.cpp" line="1053"/>
-        <location filename="../app/MainWindow.cpp" line="1128"/>
+        <location filename="../app/MainWindowMenus.cpp" line="320"/>
+        <location filename="../app/MainWindowMenus.cpp" line="400"/>
+        <location filename="../app/MainWindowMenus.cpp" line="468"/>
+        <location filename="../app/MainWindowMenus.cpp" line="481"/>
+        <location filename="../app/MainWindowMenus.cpp" line="556"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="669"/>
+        <location filename="../app/MainWindow.cpp" line="383"/>
         <source>The session could not be opened.
 
 %1</source>
@@ -1671,348 +1671,348 @@
 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="677"/>
+        <location filename="../app/MainWindow.cpp" line="391"/>
         <source>The messages saved with %1 follow (%2 lines).</source>
         <translation>以下是與 %1 一同儲存的訊息（%2 行）。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="684"/>
+        <location filename="../app/MainWindow.cpp" line="398"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="686"/>
+        <location filename="../app/MainWindow.cpp" line="400"/>
         <source>Opened %1. %2</source>
         <translation>已開啟 %1。%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="700"/>
+        <location filename="../app/MainWindow.cpp" line="414"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="741"/>
+        <location filename="../app/MainWindow.cpp" line="455"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="742"/>
+        <location filename="../app/MainWindow.cpp" line="456"/>
         <source>&amp;Open session...</source>
         <translation>開啟工作階段(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="743"/>
+        <location filename="../app/MainWindow.cpp" line="457"/>
         <source>Open &amp;recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="744"/>
+        <location filename="../app/MainWindow.cpp" line="458"/>
         <source>&amp;Save session as...</source>
         <translation>工作階段另存為(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="745"/>
+        <location filename="../app/MainWindow.cpp" line="459"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="746"/>
+        <location filename="../app/MainWindow.cpp" line="460"/>
         <source>&amp;Replay a trial bundle...</source>
         <translation>重播試驗包(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="747"/>
+        <location filename="../app/MainWindow.cpp" line="461"/>
         <source>E-STOP &amp;inputs...</source>
         <translation>緊急停止輸入(&amp;I)……</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="749"/>
+        <location filename="../app/MainWindow.cpp" line="463"/>
         <source>A foot switch&apos;s key and a gamepad button that are E-STOP too</source>
         <translation>同樣觸發緊急停止的腳踏開關按鍵和手掣按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="753"/>
+        <location filename="../app/MainWindow.cpp" line="467"/>
         <source>Close the window and leave PRISCA Lab</source>
         <translation>關閉視窗並離開 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="754"/>
+        <location filename="../app/MainWindow.cpp" line="468"/>
         <source>&amp;Run</source>
         <translation>運行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="756"/>
+        <location filename="../app/MainWindow.cpp" line="470"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="757"/>
+        <location filename="../app/MainWindow.cpp" line="471"/>
         <source>Task</source>
         <translation>任務</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="758"/>
+        <location filename="../app/MainWindow.cpp" line="472"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="759"/>
+        <location filename="../app/MainWindow.cpp" line="473"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="760"/>
+        <location filename="../app/MainWindow.cpp" line="474"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="761"/>
+        <location filename="../app/MainWindow.cpp" line="475"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="763"/>
+        <location filename="../app/MainWindow.cpp" line="477"/>
         <source>Live charts</source>
         <translation>即時圖表</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="764"/>
+        <location filename="../app/MainWindow.cpp" line="478"/>
         <source>Experiments</source>
         <translation>實驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="765"/>
+        <location filename="../app/MainWindow.cpp" line="479"/>
         <source>Rig</source>
         <translation>實機</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="766"/>
+        <location filename="../app/MainWindow.cpp" line="480"/>
         <source>Messages</source>
         <translation>訊息</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="767"/>
+        <location filename="../app/MainWindow.cpp" line="481"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="768"/>
+        <location filename="../app/MainWindow.cpp" line="482"/>
         <source>&amp;About PRISCA Lab</source>
         <translation>關於 PRISCA Lab(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="769"/>
+        <location filename="../app/MainWindow.cpp" line="483"/>
         <source>Operator &amp;guide</source>
         <translation>操作指南(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="770"/>
+        <location filename="../app/MainWindow.cpp" line="484"/>
         <source>&amp;Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="771"/>
+        <location filename="../app/MainWindow.cpp" line="485"/>
         <source>Show the version and what PRISCA Lab does</source>
         <translation>顯示版本及 PRISCA Lab 的用途</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="773"/>
+        <location filename="../app/MainWindow.cpp" line="487"/>
         <source>Version %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="784"/>
+        <location filename="../app/MainWindowQuit.cpp" line="78"/>
         <source>a simulated run</source>
         <translation>一次模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="787"/>
+        <location filename="../app/MainWindowQuit.cpp" line="81"/>
         <source>an experiment (%1 of %2 done)</source>
         <translation>一個實驗（已完成 %1 / %2）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="792"/>
+        <location filename="../app/MainWindowQuit.cpp" line="86"/>
         <source>a trial on the rig</source>
         <translation>一次實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="795"/>
+        <location filename="../app/MainWindowQuit.cpp" line="89"/>
         <source>a latency measurement on the rig</source>
         <translation>一次實驗台延遲量度</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="798"/>
+        <location filename="../app/MainWindowQuit.cpp" line="92"/>
         <source>a recording</source>
         <translation>一次錄製</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="801"/>
+        <location filename="../app/MainWindowQuit.cpp" line="95"/>
         <source>an identification of the car&apos;s model</source>
         <translation>車輛模型的辨識</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="964"/>
+        <location filename="../app/MainWindowMenus.cpp" line="392"/>
         <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
         <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="969"/>
+        <location filename="../app/MainWindowMenus.cpp" line="397"/>
         <source>E-STOP (the foot switch&apos;s key)</source>
         <translation>緊急停止（腳踏開關的按鍵）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="972"/>
+        <location filename="../app/MainWindowMenus.cpp" line="400"/>
         <source>Gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1041"/>
+        <location filename="../app/MainWindowMenus.cpp" line="469"/>
         <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
         <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1054"/>
+        <location filename="../app/MainWindowMenus.cpp" line="482"/>
         <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
         <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1065"/>
+        <location filename="../app/MainWindowMenus.cpp" line="493"/>
         <source>E-STOP inputs</source>
         <translation>緊急停止輸入</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1067"/>
+        <location filename="../app/MainWindowMenus.cpp" line="495"/>
         <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
         <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1077"/>
+        <location filename="../app/MainWindowMenus.cpp" line="505"/>
         <source>No key</source>
         <translation>不設按鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1084"/>
+        <location filename="../app/MainWindowMenus.cpp" line="512"/>
         <source>None</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1086"/>
+        <location filename="../app/MainWindowMenus.cpp" line="514"/>
         <source>B (the red one on most pads)</source>
         <translation>B（大多數手掣上的紅色按鈕）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1087"/>
+        <location filename="../app/MainWindowMenus.cpp" line="515"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1088"/>
+        <location filename="../app/MainWindowMenus.cpp" line="516"/>
         <source>X</source>
         <translation>X</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1089"/>
+        <location filename="../app/MainWindowMenus.cpp" line="517"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1090"/>
+        <location filename="../app/MainWindowMenus.cpp" line="518"/>
         <source>Back / Select</source>
         <translation>Back / Select</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1091"/>
+        <location filename="../app/MainWindowMenus.cpp" line="519"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1092"/>
+        <location filename="../app/MainWindowMenus.cpp" line="520"/>
         <source>Left shoulder</source>
         <translation>左肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1093"/>
+        <location filename="../app/MainWindowMenus.cpp" line="521"/>
         <source>Right shoulder</source>
         <translation>右肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1094"/>
+        <location filename="../app/MainWindowMenus.cpp" line="522"/>
         <source>Paddle 1</source>
         <translation>背鍵 1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1100"/>
+        <location filename="../app/MainWindowMenus.cpp" line="528"/>
         <source>A gamepad is connected.</source>
         <translation>已連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1101"/>
+        <location filename="../app/MainWindowMenus.cpp" line="529"/>
         <source>No gamepad is connected now.</source>
         <translation>目前沒有連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1104"/>
+        <location filename="../app/MainWindowMenus.cpp" line="532"/>
         <source>Foot switch key:</source>
         <translation>腳踏開關按鍵：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1105"/>
+        <location filename="../app/MainWindowMenus.cpp" line="533"/>
         <source>Gamepad button:</source>
         <translation>手掣按鈕：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1129"/>
+        <location filename="../app/MainWindowMenus.cpp" line="557"/>
         <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
         <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1132"/>
+        <location filename="../app/MainWindowMenus.cpp" line="560"/>
         <source>, the key %1</source>
         <translation>、按鍵 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="1133"/>
+        <location filename="../app/MainWindowMenus.cpp" line="561"/>
         <source>, gamepad button %1</source>
         <translation>、手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="483"/>
-        <location filename="../app/MainWindow.cpp" line="824"/>
-        <location filename="../app/MainWindow.cpp" line="847"/>
-        <location filename="../app/MainWindow.cpp" line="850"/>
-        <location filename="../app/MainWindow.cpp" line="857"/>
-        <location filename="../app/MainWindow.cpp" line="860"/>
-        <location filename="../app/MainWindow.cpp" line="893"/>
+        <location filename="../app/MainWindowMenus.cpp" line="168"/>
+        <location filename="../app/MainWindowQuit.cpp" line="118"/>
+        <location filename="../app/MainWindowQuit.cpp" line="141"/>
+        <location filename="../app/MainWindowQuit.cpp" line="144"/>
+        <location filename="../app/MainWindowQuit.cpp" line="151"/>
+        <location filename="../app/MainWindowQuit.cpp" line="154"/>
+        <location filename="../app/MainWindowQuit.cpp" line="187"/>
         <source>Quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="825"/>
+        <location filename="../app/MainWindowQuit.cpp" line="119"/>
         <source>Quitting: the work under way is stopped and what is done kept.</source>
         <translation>結束中：進行中的工作已停止，已完成的部分已保留。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="826"/>
+        <location filename="../app/MainWindowQuit.cpp" line="120"/>
         <source>Quitting: the work under way is discarded.</source>
         <translation>結束中：進行中的工作已捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="848"/>
+        <location filename="../app/MainWindowQuit.cpp" line="142"/>
         <source>The run&apos;s log was kept in %1</source>
         <translation>運行記錄已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="858"/>
+        <location filename="../app/MainWindowQuit.cpp" line="152"/>
         <source>The experiment&apos;s table was kept in %1</source>
         <translation>實驗表格已保存於 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="871"/>
+        <location filename="../app/MainWindowQuit.cpp" line="165"/>
         <source>Quit PRISCA Lab</source>
         <translation>結束 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="872"/>
+        <location filename="../app/MainWindowQuit.cpp" line="166"/>
         <source>Work is under way:
 
 %1
@@ -2025,93 +2025,93 @@ What should happen to it?</source>
 要如何處理？</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="877"/>
+        <location filename="../app/MainWindowQuit.cpp" line="171"/>
         <source>Finish: quit once it is done. Keep: stop now, save what is done (the run&apos;s log, the experiment&apos;s table, the recording) and quit. Discard: stop now and quit.</source>
         <translation>完成：待其完成後結束。保留：立即停止，儲存已完成的部分（運行記錄、實驗表格、錄製）後結束。捨棄：立即停止並結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="879"/>
+        <location filename="../app/MainWindowQuit.cpp" line="173"/>
         <source>Finish, then quit</source>
         <translation>完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="880"/>
+        <location filename="../app/MainWindowQuit.cpp" line="174"/>
         <source>Keep what is done, quit</source>
         <translation>保留已完成的部分並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="881"/>
+        <location filename="../app/MainWindowQuit.cpp" line="175"/>
         <source>Discard, quit</source>
         <translation>捨棄並結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="893"/>
+        <location filename="../app/MainWindowQuit.cpp" line="187"/>
         <source>PRISCA Lab quits once the work under way is done.</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="925"/>
+        <location filename="../app/MainWindowMenus.cpp" line="353"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="925"/>
+        <location filename="../app/MainWindowMenus.cpp" line="353"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="937"/>
+        <location filename="../app/MainWindowMenus.cpp" line="365"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="939"/>
+        <location filename="../app/MainWindowMenus.cpp" line="367"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="943"/>
+        <location filename="../app/MainWindowMenus.cpp" line="371"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="946"/>
+        <location filename="../app/MainWindowMenus.cpp" line="374"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="963"/>
+        <location filename="../app/MainWindowMenus.cpp" line="391"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="978"/>
+        <location filename="../app/MainWindowMenus.cpp" line="406"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="979"/>
+        <location filename="../app/MainWindowMenus.cpp" line="407"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="981"/>
+        <location filename="../app/MainWindowMenus.cpp" line="409"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="988"/>
+        <location filename="../app/MainWindowMenus.cpp" line="416"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="997"/>
-        <location filename="../app/MainWindow.cpp" line="1004"/>
+        <location filename="../app/MainWindowMenus.cpp" line="425"/>
+        <location filename="../app/MainWindowMenus.cpp" line="432"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindow.cpp" line="998"/>
+        <location filename="../app/MainWindowMenus.cpp" line="426"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -2119,123 +2119,123 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MappingPanel</name>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="142"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="142"/>
         <source>Which way %1 moves %2: +1 increases it, −1 decreases it, 0 not at all (B~, eq. 6). Click to change.</source>
         <translation>%1 令 %2 往哪個方向變：+1 增加，−1 減少，0 無影響（B~，式 6）。點擊可更改。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="202"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="202"/>
         <source>R²</source>
         <translation>R²</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="202"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="202"/>
         <source>set aside</source>
         <translation>剔除</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="202"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="202"/>
         <source>RMS</source>
         <translation>均方根</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="214"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="214"/>
         <source>B[%1, %2] = B_v (.) B~ [%3 per unit of %1, per s]</source>
         <translation>B[%1, %2] = B_v (.) B~ [每單位 %1、每秒的 %3]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="221"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="221"/>
         <source>Share of the change of %1 the fit explains</source>
         <translation>擬合能解釋的 %1 變化比例</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="223"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="223"/>
         <source>RMS of what the fit leaves unexplained [%1]</source>
         <translation>擬合未能解釋部分的 RMS [%1]</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="228"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="228"/>
         <source>Samples the robust fit set aside (a car sliding, for example)</source>
         <translation>穩健擬合剔除的樣本（例如車輛打滑時）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="231"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="231"/>
         <source>Fit on %1 samples:</source>
         <translation>以 %1 個樣本擬合：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="233"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="233"/>
         <source>Residual RMS: what the fit leaves unexplained, per state</source>
         <translation>殘差均方根：擬合未能解釋的部分，按狀態計</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="246"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="246"/>
         <source>Mapping</source>
         <translation>映射</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="257"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="257"/>
         <source>R² below zero for %1: the fit predicts the change of that state worse than its average does. Check those columns&apos; signs in B~ and the latency; a state the controls barely move can also give it.</source>
         <translation>%1 的 R² 低於零：擬合對該狀態變化的預測比其平均值更差。請檢查 B~ 中這些欄的符號及延遲；控制幾乎不影響的狀態也會出現此情況。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="282"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="282"/>
         <source>Intuitive mapping B~ (which way each control moves each state):</source>
         <translation>直觀映射 B~（每個控制令每個狀態往哪個方向變）：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="283"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="283"/>
         <source>Latency:</source>
         <translation>延遲：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="284"/>
-        <location filename="../app/MappingPanel.cpp" line="289"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="284"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="289"/>
         <source> steps</source>
         <translation> 步</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="286"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="286"/>
         <source>Pairs the state change d steps later with each change of action (eq. 8).</source>
         <translation>把每次動作變化與 d 步之後的狀態變化配對（式 8）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="288"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="288"/>
         <source>Response horizon:</source>
         <translation>響應時域：</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="291"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="291"/>
         <source>How many steps of response the fit looks at: 1 is eq. 5&apos;s one-step model; more sees effects that build up (yaw rate into heading).</source>
         <translation>擬合考慮多少步的響應：1 即式 5 的單步模型；更多步可看到逐漸累積的效果（偏航率變成航向）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="293"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="293"/>
         <source>Keep the signs of B~ (B_v ≥ 0)</source>
         <translation>保持 B~ 的符號（B_v ≥ 0）</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="294"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="294"/>
         <source>An entry the data would make negative is reported and set to 0.</source>
         <translation>數據會令其變負的項目會被報告並設為 0。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="295"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="295"/>
         <source>Robust fit</source>
         <translation>穩健擬合</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="297"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="297"/>
         <source>Set aside samples the linear model cannot explain (reweighted least squares).</source>
         <translation>剔除線性模型無法解釋的樣本（重加權最小二乘法）。</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="299"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="299"/>
         <source>Fit B_v</source>
         <translation>擬合 B_v</translation>
     </message>
     <message>
-        <location filename="../app/MappingPanel.cpp" line="300"/>
+        <location filename="../app/panels/MappingPanel.cpp" line="300"/>
         <source>Fit B_v to the demonstration with this B~ (eq. 8)</source>
         <translation>用此 B~ 把 B_v 擬合到示範（式 8）</translation>
     </message>
@@ -2261,47 +2261,47 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLogPanel</name>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="173"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="173"/>
         <source>All messages</source>
         <translation>所有訊息</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="174"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="174"/>
         <source>Warnings and errors</source>
         <translation>警告與錯誤</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="176"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="176"/>
         <source>Copy</source>
         <translation>複製</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="177"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="177"/>
         <source>Copy the selected lines, or all shown, as tab-separated text (Ctrl+C)</source>
         <translation>以定位字元分隔的文字複製選取的行，或全部顯示的行 (Ctrl+C)</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="178"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="178"/>
         <source>Clear</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="179"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="179"/>
         <source>Level</source>
         <translation>級別</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="179"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../app/MessageLogPanel.cpp" line="179"/>
+        <location filename="../app/panels/MessageLogPanel.cpp" line="179"/>
         <source>Message</source>
         <translation>訊息</translation>
     </message>
@@ -2309,7 +2309,7 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::ModalDialog</name>
     <message>
-        <location filename="../app/ModalDialog.cpp" line="59"/>
+        <location filename="../app/widgets/ModalDialog.cpp" line="59"/>
         <source>%1 already exists.
 Do you want to replace it?</source>
         <translation>%1 已存在。
@@ -2319,233 +2319,233 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::ModelPanel</name>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="125"/>
-        <location filename="../app/ModelPanel.cpp" line="141"/>
-        <location filename="../app/ModelPanel.cpp" line="149"/>
-        <location filename="../app/ModelPanel.cpp" line="189"/>
-        <location filename="../app/ModelPanel.cpp" line="210"/>
-        <location filename="../app/ModelPanel.cpp" line="219"/>
-        <location filename="../app/ModelPanel.cpp" line="290"/>
-        <location filename="../app/ModelPanel.cpp" line="304"/>
-        <location filename="../app/ModelPanel.cpp" line="317"/>
-        <location filename="../app/ModelPanel.cpp" line="318"/>
-        <location filename="../app/ModelPanel.cpp" line="324"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="122"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="135"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="143"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="182"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="203"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="211"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="282"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="296"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="309"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="310"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="316"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="125"/>
-        <location filename="../app/ModelPanel.cpp" line="126"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="122"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="123"/>
         <source>The identification failed: %1</source>
         <translation>辨識失敗：%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="142"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="136"/>
         <source>E-STOP: the identification is cancelled; the session keeps the model it had.</source>
         <translation>緊急停止：辨識已取消；工作階段保留原有的模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="150"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="144"/>
         <source>The identified model was cleared: %1. Identify again for mpc to plan through a model of this car.</source>
         <translation>已辨識的模型已清除：%1。請重新辨識，讓 mpc 以這輛車的模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="211"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="204"/>
         <source>Identifying the car from %1...</source>
         <translation>正在從%1辨識車輛……</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="219"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="211"/>
         <source>Cancelling the identification...</source>
         <translation>正在取消辨識……</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="260"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="252"/>
         <source>Identifying... %1 so far</source>
         <translation>正在辨識……已用 %1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="261"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="253"/>
         <source>Identifying: %1 of about %2 model runs · %3</source>
         <translation>正在辨識：約 %2 次模型運算中已完成 %1 次 · %3</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="268"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="260"/>
         <source>E-STOP: cancelling. %1</source>
         <translation>緊急停止：正在取消。%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="270"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="262"/>
         <source>Cancelling. %1</source>
         <translation>正在取消。%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="287"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="279"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="291"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="283"/>
         <source>Stopped by E-STOP after %1.</source>
         <translation>%1 後被緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="292"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="284"/>
         <source>Cancelled after %1: the demonstration or the car changed.</source>
         <translation>%1 後已取消：示範或車輛已改變。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="295"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="287"/>
         <source>Cancelled after %1.</source>
         <translation>%1 後已取消。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="298"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="290"/>
         <source>The model identified before is kept.</source>
         <translation>之前辨識的模型已保留。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="298"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="290"/>
         <source>No model was kept.</source>
         <translation>沒有保留任何模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="301"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="293"/>
         <source>Refused</source>
         <translation>已拒絕</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="306"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="298"/>
         <source>This demonstration cannot identify the car: %1. Record one that drives the car through a slide, with throttle and steering that change.</source>
         <translation>此示範無法辨識車輛：%1。請錄製一段令車輛打滑、油門和轉向都有變化的示範。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="315"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="307"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="319"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="311"/>
         <source>Identified in %1; mpc plans through the new model.</source>
         <translation>用 %1 完成辨識；mpc 以新模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="377"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="369"/>
         <source>held</source>
         <translation>保持</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="378"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="370"/>
         <source>undetermined</source>
         <translation>未能確定</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="394"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="386"/>
         <source>%1: identified (prior %2)</source>
         <translation>%1：已辨識（先驗值 %2）</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="396"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="388"/>
         <source>%1: the data did not determine it; held at its prior</source>
         <translation>%1：數據未能確定其值；保持先驗值</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="397"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="389"/>
         <source>%1: fitted, but the data did not determine it</source>
         <translation>%1：已擬合，但數據未能確定其值</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="435"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="427"/>
         <source>model, replaying the recorded actions</source>
         <translation>模型，重播錄得的動作</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="495"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="487"/>
         <source>Fits the car&apos;s physical parameters to the demonstration (as prisca-cli identify). mpc plans through the model; the session saves it.</source>
         <translation>把車輛的物理參數擬合到示範（與 prisca-cli identify 相同）。mpc 以此模型規劃；工作階段會儲存它。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="325"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="317"/>
         <source>The model identified was not kept: %1.</source>
         <translation>辨識出的模型未有保留：%1。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="339"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="331"/>
         <source>Only the slide-car can be identified: the %1 has no model to identify here, and mpc does not run on it.</source>
         <translation>只有漂移車可以辨識：%1 在此沒有可辨識的模型，mpc 亦不能在其上運行。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="344"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="336"/>
         <source>No model yet. Identify fits the car&apos;s friction, grip, drive, steering and delays to the demonstration; until then a simulated run of mpc identifies one itself as it starts, and the rig waits for one.</source>
         <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 的模擬運行會在開始時自行辨識一個模型，而實驗台則會等候模型。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="353"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="345"/>
         <source>Model: pose error %1 cm RMS per segment over %2 segments (the prior&apos;s %3 cm); %4 of %5 fitted parameters identified, the rest held at their prior. mpc plans through this model.</source>
         <translation>模型：%2 個分段的每段位姿誤差均方根為 %1 cm（先驗模型為 %3 cm）；%5 個擬合參數中 %4 個已辨識，其餘保持先驗值。mpc 以此模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="376"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="368"/>
         <source>identified</source>
         <translation>已辨識</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="405"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="397"/>
         <source>Not fitted (measured, or the catalog&apos;s): %1</source>
         <translation>未擬合（量度所得或目錄值）：%1</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="413"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="405"/>
         <source>x [m]</source>
         <translation>x [m]</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="414"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="406"/>
         <source>y [m]</source>
         <translation>y [m]</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="415"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="407"/>
         <source>no path</source>
         <translation>沒有路徑</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="428"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="420"/>
         <source>recorded</source>
         <translation>錄得</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="497"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="489"/>
         <source>Identify</source>
         <translation>辨識</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="498"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="490"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="500"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="500"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
         <source>Value</source>
         <translation>數值</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="500"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="500"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
         <source>Std. dev.</source>
         <translation>標準差</translation>
     </message>
     <message>
-        <location filename="../app/ModelPanel.cpp" line="500"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
@@ -2553,144 +2553,144 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RecordPanel</name>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="99"/>
-        <location filename="../app/RecordPanel.cpp" line="143"/>
-        <location filename="../app/RecordPanel.cpp" line="171"/>
-        <location filename="../app/RecordPanel.cpp" line="178"/>
-        <location filename="../app/RecordPanel.cpp" line="231"/>
-        <location filename="../app/RecordPanel.cpp" line="262"/>
-        <location filename="../app/RecordPanel.cpp" line="274"/>
-        <location filename="../app/RecordPanel.cpp" line="291"/>
-        <location filename="../app/RecordPanel.cpp" line="299"/>
-        <location filename="../app/RecordPanel.cpp" line="327"/>
-        <location filename="../app/RecordPanel.cpp" line="338"/>
-        <location filename="../app/RecordPanel.cpp" line="371"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="95"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="135"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="161"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="168"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="221"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="250"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="262"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="279"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="287"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="315"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="326"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="359"/>
         <source>Record</source>
         <translation>錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="172"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="162"/>
         <source>Recording... drive, then press Stop.</source>
         <translation>錄製中……請駕駛，完成後按「停止」。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="179"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="169"/>
         <source>Recording starts in %1 s</source>
         <translation>%1 秒後開始錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="215"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="205"/>
         <source>Recording %1 s: %2. Press Stop when done.</source>
         <translation>錄製中 %1 秒：%2。完成後按停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="220"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="210"/>
         <source>The car has no brakes: let go of the throttle early, it slides on.</source>
         <translation>此車沒有煞車：請提早放開油門，車會繼續滑行。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="231"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="221"/>
         <source>Recording cancelled.</source>
         <translation>已取消錄製。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="264"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="252"/>
         <source>E-STOP ended the recording; nothing was recorded.</source>
         <translation>緊急停止結束了錄製；沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="265"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="253"/>
         <source>E-STOP ended the recording after %1 s; the demonstration is unchanged. The take is kept in %2 (open it from the Task panel to use it).</source>
         <translation>緊急停止在 %1 秒後結束了錄製；示範未有改變。該次錄製保存在 %2（可在任務面板開啟使用）。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="276"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="264"/>
         <source>Nothing recorded.</source>
         <translation>沒有錄得任何內容。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="277"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="265"/>
         <source>Too short to use (%1 samples, at least %2 are needed); the demonstration is unchanged.</source>
         <translation>太短無法使用（%1 個樣本，至少需要 %2 個）；示範未有改變。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="292"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="280"/>
         <source>The recording could not be used: %1. It is kept in %2.</source>
         <translation>錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="302"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="290"/>
         <source>Recorded %1 samples (%2 s), kept in %3. It is now the demonstration; save it or discard it.</source>
         <translation>已錄得 %1 個樣本（%2 秒），保存在 %3。它現在是示範；請儲存或捨棄。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="312"/>
-        <location filename="../app/RecordPanel.cpp" line="323"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="300"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="311"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="314"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="302"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="327"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="315"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="339"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="327"/>
         <source>Recording discarded; the previous demonstration is back.</source>
         <translation>已捨棄錄製；已恢復先前的示範。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="361"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="349"/>
         <source>Drive with ↑/W and ↓/S for %1, ←/A and →/D for %2. Space or Esc is E-STOP.</source>
         <translation>用 ↑/W 和 ↓/S 控制 %1，←/A 和 →/D 控制 %2。空格鍵或 Esc 為緊急停止。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="366"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="354"/>
         <source>Gamepad: %1 (left stick forward, right stick sideways)</source>
         <translation>遊戲手柄：%1（左搖桿前後，右搖桿左右）</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="368"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="356"/>
         <source>No gamepad found: the keyboard drives.</source>
         <translation>找不到遊戲手柄：以鍵盤駕駛。</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="369"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="357"/>
         <source>Countdown:</source>
         <translation>倒數：</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="370"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="358"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="372"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="360"/>
         <source>Count down, then record while you drive</source>
         <translation>倒數後，一邊駕駛一邊錄製</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="373"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="361"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="374"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="362"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="375"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="363"/>
         <source>Discard</source>
         <translation>捨棄</translation>
     </message>
     <message>
-        <location filename="../app/RecordPanel.cpp" line="376"/>
+        <location filename="../app/panels/RecordPanel.cpp" line="364"/>
         <source>Delete this recording and go back to the previous demonstration</source>
         <translation>刪除此錄製並返回先前的示範</translation>
     </message>
@@ -2698,12 +2698,12 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RecordingWorker</name>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="44"/>
+        <location filename="../app/workers/RecordingWorker.cpp" line="44"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../app/RecordingWorker.cpp" line="117"/>
+        <location filename="../app/workers/RecordingWorker.cpp" line="117"/>
         <source>Writing the recording failed: %1 (the take so far is in %2)</source>
         <translation>寫入錄製失敗：%1（目前錄得的內容在 %2）</translation>
     </message>
@@ -2711,74 +2711,74 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::ReplayDialog</name>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="42"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="42"/>
         <source>Replay: %1</source>
         <translation>重播：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="100"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="100"/>
         <source>distance from the path [m]</source>
         <translation>與路徑的距離 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="101"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="101"/>
         <source>now</source>
         <translation>現在</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="104"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="104"/>
         <source>trial time [s]</source>
         <translation>試驗時間 [秒]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="105"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="105"/>
         <source>error [m]</source>
         <translation>誤差 [米]</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="130"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="130"/>
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="130"/>
-        <location filename="../app/ReplayDialog.cpp" line="136"/>
-        <location filename="../app/ReplayDialog.cpp" line="141"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="130"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="136"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="141"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="144"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="144"/>
         <source>%1 trial, %2: %3 samples, %4 frames, %5 s</source>
         <translation>%1 試驗，%2：%3 個樣本，%4 個影格，%5 秒</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="150"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="150"/>
         <source>; last pose %1 cm, %2° from the lot</source>
         <translation>；最後位姿距泊車位 %1 厘米、%2°</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="156"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="156"/>
         <source> (incomplete: the writer stopped before the trial ended)</source>
         <translation>（不完整：試驗結束前寫入已停止）</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="158"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="158"/>
         <source>; ended in failsafe: %1</source>
         <translation>；以失效保護結束：%1</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="189"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="189"/>
         <source>no samples</source>
         <translation>沒有樣本</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="232"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="232"/>
         <source>%1 s, frame %2%3</source>
         <translation>%1 秒，影格 %2%3</translation>
     </message>
     <message>
-        <location filename="../app/ReplayDialog.cpp" line="235"/>
+        <location filename="../app/panels/ReplayDialog.cpp" line="235"/>
         <source>, failsafe</source>
         <translation>，失效保護</translation>
     </message>
@@ -3425,323 +3425,323 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/RunPanel.cpp" line="183"/>
-        <location filename="../app/RunPanel.cpp" line="193"/>
+        <location filename="../app/panels/RunPanel.cpp" line="183"/>
+        <location filename="../app/panels/RunPanel.cpp" line="193"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="184"/>
+        <location filename="../app/panels/RunPanel.cpp" line="184"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="198"/>
+        <location filename="../app/panels/RunPanel.cpp" line="198"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="370"/>
+        <location filename="../app/panels/RunPanel.cpp" line="370"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="413"/>
+        <location filename="../app/panels/RunPanel.cpp" line="413"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="413"/>
+        <location filename="../app/panels/RunPanel.cpp" line="413"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="311"/>
+        <location filename="../app/panels/RunPanel.cpp" line="311"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="211"/>
+        <location filename="../app/panels/RunPanel.cpp" line="211"/>
         <source>the Run menu</source>
         <translation>「運行」選單</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="242"/>
+        <location filename="../app/panels/RunPanel.cpp" line="242"/>
         <source>Training before the run: %1 of %2...</source>
         <translation>運行前訓練：%1 / %2……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="243"/>
-        <location filename="../app/RunPanel.cpp" line="403"/>
+        <location filename="../app/panels/RunPanel.cpp" line="243"/>
+        <location filename="../app/panels/RunPanel.cpp" line="403"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="292"/>
+        <location filename="../app/panels/RunPanel.cpp" line="292"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="298"/>
+        <location filename="../app/panels/RunPanel.cpp" line="298"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="407"/>
+        <location filename="../app/panels/RunPanel.cpp" line="407"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="415"/>
+        <location filename="../app/panels/RunPanel.cpp" line="415"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="432"/>
+        <location filename="../app/panels/RunPanel.cpp" line="432"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="439"/>
+        <location filename="../app/panels/RunPanel.cpp" line="439"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="440"/>
+        <location filename="../app/panels/RunPanel.cpp" line="440"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="455"/>
+        <location filename="../app/panels/RunPanel.cpp" line="455"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="464"/>
+        <location filename="../app/panels/RunPanel.cpp" line="464"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="499"/>
+        <location filename="../app/panels/RunPanel.cpp" line="499"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="500"/>
+        <location filename="../app/panels/RunPanel.cpp" line="500"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="501"/>
+        <location filename="../app/panels/RunPanel.cpp" line="501"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="503"/>
+        <location filename="../app/panels/RunPanel.cpp" line="503"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="505"/>
+        <location filename="../app/panels/RunPanel.cpp" line="505"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="507"/>
+        <location filename="../app/panels/RunPanel.cpp" line="507"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="509"/>
+        <location filename="../app/panels/RunPanel.cpp" line="509"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="511"/>
+        <location filename="../app/panels/RunPanel.cpp" line="511"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="513"/>
+        <location filename="../app/panels/RunPanel.cpp" line="513"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="514"/>
+        <location filename="../app/panels/RunPanel.cpp" line="514"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="515"/>
+        <location filename="../app/panels/RunPanel.cpp" line="515"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="516"/>
+        <location filename="../app/panels/RunPanel.cpp" line="516"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="526"/>
+        <location filename="../app/panels/RunPanel.cpp" line="526"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="412"/>
+        <location filename="../app/panels/RunPanel.cpp" line="412"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="197"/>
-        <location filename="../app/RunPanel.cpp" line="249"/>
-        <location filename="../app/RunPanel.cpp" line="291"/>
-        <location filename="../app/RunPanel.cpp" line="297"/>
-        <location filename="../app/RunPanel.cpp" line="310"/>
-        <location filename="../app/RunPanel.cpp" line="321"/>
-        <location filename="../app/RunPanel.cpp" line="357"/>
-        <location filename="../app/RunPanel.cpp" line="403"/>
-        <location filename="../app/RunPanel.cpp" line="407"/>
-        <location filename="../app/RunPanel.cpp" line="447"/>
+        <location filename="../app/panels/RunPanel.cpp" line="197"/>
+        <location filename="../app/panels/RunPanel.cpp" line="249"/>
+        <location filename="../app/panels/RunPanel.cpp" line="291"/>
+        <location filename="../app/panels/RunPanel.cpp" line="297"/>
+        <location filename="../app/panels/RunPanel.cpp" line="310"/>
+        <location filename="../app/panels/RunPanel.cpp" line="321"/>
+        <location filename="../app/panels/RunPanel.cpp" line="357"/>
+        <location filename="../app/panels/RunPanel.cpp" line="403"/>
+        <location filename="../app/panels/RunPanel.cpp" line="407"/>
+        <location filename="../app/panels/RunPanel.cpp" line="447"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="233"/>
+        <location filename="../app/panels/RunPanel.cpp" line="233"/>
         <source>Trial 1 of %1 running...</source>
         <translation>正在進行第 1 次試驗（共 %1 次）……</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="234"/>
+        <location filename="../app/panels/RunPanel.cpp" line="234"/>
         <source>Trial %1 of %2 running · %3</source>
         <translation>正在進行第 %1 次試驗（共 %2 次）· %3</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="250"/>
+        <location filename="../app/panels/RunPanel.cpp" line="250"/>
         <source>Run finished: 1 trial.</source>
         <translation>運行完成：1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="251"/>
+        <location filename="../app/panels/RunPanel.cpp" line="251"/>
         <source>Run finished: %1 trials.</source>
         <translation>運行完成：%1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="358"/>
+        <location filename="../app/panels/RunPanel.cpp" line="358"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="414"/>
+        <location filename="../app/panels/RunPanel.cpp" line="414"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="446"/>
+        <location filename="../app/panels/RunPanel.cpp" line="446"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="448"/>
+        <location filename="../app/panels/RunPanel.cpp" line="448"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="453"/>
+        <location filename="../app/panels/RunPanel.cpp" line="453"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="456"/>
+        <location filename="../app/panels/RunPanel.cpp" line="456"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="518"/>
+        <location filename="../app/panels/RunPanel.cpp" line="518"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="520"/>
+        <location filename="../app/panels/RunPanel.cpp" line="520"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="523"/>
+        <location filename="../app/panels/RunPanel.cpp" line="523"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="524"/>
+        <location filename="../app/panels/RunPanel.cpp" line="524"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="528"/>
+        <location filename="../app/panels/RunPanel.cpp" line="528"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="529"/>
+        <location filename="../app/panels/RunPanel.cpp" line="529"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="530"/>
+        <location filename="../app/panels/RunPanel.cpp" line="530"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="532"/>
+        <location filename="../app/panels/RunPanel.cpp" line="532"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="533"/>
+        <location filename="../app/panels/RunPanel.cpp" line="533"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="536"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="536"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="536"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="537"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="537"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="539"/>
+        <location filename="../app/panels/RunPanel.cpp" line="539"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="539"/>
+        <location filename="../app/panels/RunPanel.cpp" line="539"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="540"/>
+        <location filename="../app/panels/RunPanel.cpp" line="540"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/RunPanel.cpp" line="540"/>
+        <location filename="../app/panels/RunPanel.cpp" line="540"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -3749,37 +3749,37 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunWorker</name>
     <message>
-        <location filename="../app/RunWorker.cpp" line="46"/>
+        <location filename="../app/workers/RunWorker.cpp" line="46"/>
         <source>E-STOP is engaged: reset it before starting a run.</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="80"/>
+        <location filename="../app/workers/RunWorker.cpp" line="80"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="94"/>
+        <location filename="../app/workers/RunWorker.cpp" line="94"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="173"/>
+        <location filename="../app/workers/RunWorker.cpp" line="173"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="222"/>
+        <location filename="../app/workers/RunWorker.cpp" line="222"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="247"/>
+        <location filename="../app/workers/RunWorker.cpp" line="247"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/RunWorker.cpp" line="265"/>
+        <location filename="../app/workers/RunWorker.cpp" line="265"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>
@@ -3787,14 +3787,14 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::TaskPanel</name>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="182"/>
-        <location filename="../app/TaskPanel.cpp" line="189"/>
-        <location filename="../app/TaskPanel.cpp" line="242"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="182"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="189"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="242"/>
         <source>Open demonstration</source>
         <translation>開啟示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="183"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="183"/>
         <source>The demonstration could not be read.
 
 %1</source>
@@ -3803,156 +3803,156 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="190"/>
-        <location filename="../app/TaskPanel.cpp" line="210"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="190"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="210"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="243"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="243"/>
         <source>Demonstrations (*.csv);;All files (*)</source>
         <translation>示範 (*.csv);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="251"/>
-        <location filename="../app/TaskPanel.cpp" line="258"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="251"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="258"/>
         <source>Save demonstration</source>
         <translation>儲存示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="252"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="252"/>
         <source>Demonstrations (*.csv)</source>
         <translation>示範 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="174"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="174"/>
         <source>Scripted demonstration</source>
         <translation>腳本示範</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="121"/>
         <source>figure-eight</source>
         <translation>8 字形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="121"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="121"/>
         <source>s-turn</source>
         <translation>S 形轉彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="122"/>
         <source>u-turn</source>
         <translation>掉頭</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="122"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="122"/>
         <source>s-bend</source>
         <translation>S 形彎</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="124"/>
         <source>stick</source>
         <translation>搖桿</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="124"/>
         <source>keyboard</source>
         <translation>鍵盤</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="124"/>
         <source>standstill</source>
         <translation>靜止起步</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="124"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="124"/>
         <source>fast</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="125"/>
         <source>slow</source>
         <translation>慢速</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="125"/>
         <source>blip</source>
         <translation>點油</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="125"/>
         <source>jitter</source>
         <translation>抖動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="125"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="125"/>
         <source>coast</source>
         <translation>滑行</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="126"/>
         <source>left</source>
         <translation>左</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="126"/>
         <source>right</source>
         <translation>右</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="126"/>
         <source>swing</source>
         <translation>擺動</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="126"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="126"/>
         <source>medium</source>
         <translation>中</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="127"/>
         <source>small</source>
         <translation>小</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="127"/>
         <source>large</source>
         <translation>大</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="127"/>
         <source>circle</source>
         <translation>圓形</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="127"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="127"/>
         <source>wide</source>
         <translation>寬</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="128"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="128"/>
         <source>dock</source>
         <translation>泊位</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="128"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="128"/>
         <source>spin</source>
         <translation>原地轉</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="146"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="146"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="201"/>
-        <location filename="../app/TaskPanel.cpp" line="209"/>
-        <location filename="../app/TaskPanel.cpp" line="219"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="201"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="209"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="219"/>
         <source>Open plant file</source>
         <translation>開啟機型檔</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="202"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="202"/>
         <source>The plant file could not be used.
 
 %1</source>
@@ -3961,102 +3961,102 @@ Do you want to replace it?</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="220"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="220"/>
         <source>Plant files (*.json);;All files (*)</source>
         <translation>機型檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="230"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="230"/>
         <source>the catalog&apos;s</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="271"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="271"/>
         <source>the scripted operator (%1, seed %2)</source>
         <translation>腳本操作員（%1，種子 %2）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="275"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="275"/>
         <source>Demonstration: %1 samples, %2 s at %3 Hz, from %4.</source>
         <translation>示範：%1 個樣本，%2 秒，%3 Hz，來自%4。</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="290"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="290"/>
         <source>Target:</source>
         <translation>對象：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="301"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="301"/>
         <source>Open...</source>
         <translation>開啟...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="302"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="302"/>
         <source>Open a demonstration CSV recorded earlier</source>
         <translation>開啟先前錄製的示範 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="303"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="303"/>
         <source>Save as...</source>
         <translation>另存為...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="304"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="304"/>
         <source>Save the demonstration as CSV</source>
         <translation>把示範儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="305"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="305"/>
         <source>Scripted operator:</source>
         <translation>腳本操作員：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="307"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="307"/>
         <source>How the scripted operator demonstrates: keys or stick, left or right, how far and how fast (hover over a style for its description)</source>
         <translation>腳本操作員如何示範：按鍵或搖桿、向左或向右、轉多少、多快（將滑鼠停在風格上可看說明）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="309"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="309"/>
         <source>Seed of the operator&apos;s hand variation</source>
         <translation>操作員手部變化的種子</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="310"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="310"/>
         <source>seed </source>
         <translation>種子 </translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="311"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="311"/>
         <source>Physical parameters:</source>
         <translation>物理參數：</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="312"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="312"/>
         <source>Load...</source>
         <translation>載入...</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="314"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="314"/>
         <source>Load a plant file: the car&apos;s mass, wheelbase, grip, motor, steering and servo (prisca-cli plant --plant NAME --print-params --format json writes one to edit)</source>
         <translation>載入機型檔：車的質量、軸距、抓地力、馬達、轉向及伺服器（prisca-cli plant --plant NAME --print-params --format json 可寫出一份供編輯）</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="316"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="316"/>
         <source>Catalog</source>
         <translation>目錄預設</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="317"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="317"/>
         <source>Go back to the catalog&apos;s plant</source>
         <translation>回到目錄預設的機型</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="319"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="319"/>
         <source>Use scripted</source>
         <translation>使用腳本</translation>
     </message>
     <message>
-        <location filename="../app/TaskPanel.cpp" line="321"/>
+        <location filename="../app/panels/TaskPanel.cpp" line="321"/>
         <source>Use the scripted operator&apos;s demonstration in the chosen style and seed</source>
         <translation>使用所選風格與種子的腳本操作員示範</translation>
     </message>
@@ -4428,129 +4428,129 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::rig::RigSession</name>
     <message>
-        <location filename="../rig/RigSession.cpp" line="147"/>
+        <location filename="../rig/RigSession.cpp" line="94"/>
         <source>The virtual camera needs a frame rate above zero.</source>
         <translation>虛擬攝影機的影格率必須大於零。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="276"/>
+        <location filename="../rig/RigSession.cpp" line="223"/>
         <source>Start the camera first.</source>
         <translation>請先啟動攝影機。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="279"/>
+        <location filename="../rig/RigSession.cpp" line="226"/>
         <source>Connect the transmitter link first.</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="317"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="63"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="323"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="69"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="345"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="91"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="354"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="100"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="357"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="103"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="363"/>
-        <location filename="../rig/RigSession.cpp" line="792"/>
+        <location filename="../rig/RigSession.cpp" line="357"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="109"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="374"/>
-        <location filename="../rig/RigSession.cpp" line="397"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="120"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="143"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="623"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="369"/>
         <source>the process was stopped and continued: failsafe held</source>
         <translation>程式曾被暫停後再繼續：保持失效保護</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="678"/>
+        <location filename="../rig/RigSession.cpp" line="243"/>
         <source>The camera has not opened yet; try again in a moment.</source>
         <translation>攝影機尚未開啟，請稍後再試。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="681"/>
+        <location filename="../rig/RigSession.cpp" line="246"/>
         <source>A trial or a recording is already running.</source>
         <translation>已有試驗或錄製正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="690"/>
+        <location filename="../rig/RigSession.cpp" line="255"/>
         <source>Cannot record to %1</source>
         <translation>無法錄製到 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="752"/>
+        <location filename="../rig/RigSession.cpp" line="317"/>
         <source>Nothing recorded (no pose seen).</source>
         <translation>沒有錄得任何內容（未見位姿）。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="760"/>
+        <location filename="../rig/RigSession.cpp" line="325"/>
         <source>The rig recording could not be saved: %1 (the take so far is in %2)</source>
         <translation>無法儲存實驗台錄製：%1（目前錄得的內容在 %2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="789"/>
+        <location filename="../rig/RigSession.cpp" line="354"/>
         <source>A trial is running.</source>
         <translation>試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="795"/>
+        <location filename="../rig/RigSession.cpp" line="360"/>
         <source>The latency is being measured already.</source>
         <translation>已在量度延遲。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="808"/>
+        <location filename="../rig/RigSession.cpp" line="373"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="857"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="415"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="862"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="420"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="865"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="423"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="868"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="426"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="869"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="427"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSession.cpp" line="875"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="433"/>
         <source>%1; %2</source>
         <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
         <translation>%1；%2</translation>

@@ -1,5 +1,7 @@
 #include "app/cli/CliSupport.h"
 
+#include "app/plot/FigureFile.h"
+
 #include "core/DemonstrationCsv.h"
 #include "devices/ProcessFailsafe.h"
 

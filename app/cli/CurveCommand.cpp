@@ -7,9 +7,9 @@
 #include "core/FileIo.h"
 #include "core/Statistics.h"
 #include "sim/DemonstrationStyles.h"
-#include "sim/LearningCurveExperiment.h"
 #include "sim/PlantCatalog.h"
-#include "sim/Table1Protocol.h"
+#include "sim/experiments/LearningCurveExperiment.h"
+#include "sim/experiments/Table1Protocol.h"
 
 #include <QJsonArray>
 
@@ -105,7 +105,7 @@ int curveCommand(const QStringList& arguments) {
         protocol.seedSets =
             sim::consecutiveSeedSets(seed, static_cast<int>(line.integer("seed-sets", 1, 10000)));
         protocol.plantParameters = plantParametersOption(line, plant);
-        sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
+        sim::MethodTuning profile = sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant));
         applyMethodParameters(line, profile, protocol.plantParameters != nullptr);
         int cellNow = 0, cellsAll = 0;
         QString cellStyle;

@@ -4,10 +4,10 @@
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "rig/TrialBundle.h"
-#include "sim/Identification.h"
-#include "sim/IdentificationReport.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantParameters.h"
+#include "sim/planning/Identification.h"
+#include "sim/planning/IdentificationReport.h"
+#include "sim/plants/PlantParameters.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>

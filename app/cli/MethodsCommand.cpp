@@ -26,7 +26,7 @@ int methodsCommand(const QStringList& arguments) {
     }
     std::vector<sim::MethodTuning> profiles;
     for (const QString& plant : plants) {
-        profiles.push_back(sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)));
+        profiles.push_back(sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant)));
     }
     const QString format = line.format();
     QJsonArray methods;

@@ -4,7 +4,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantParameters.h"
+#include "sim/plants/PlantParameters.h"
 
 #include <QJsonDocument>
 

@@ -5,9 +5,9 @@
 #include "core/DeviationModel.h"
 #include "devices/ProcessFailsafe.h"
 #include "rig/RigSession.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

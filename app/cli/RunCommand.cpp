@@ -5,13 +5,13 @@
 #include "app/figures/PaperFigures.h"
 #include "core/RunLogCsv.h"
 #include "rig/TrialBundle.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTraining.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunLogBuilder.h"
-#include "sim/RunSetup.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/run/MethodTraining.h"
+#include "sim/run/RunLogBuilder.h"
+#include "sim/run/RunSetup.h"
 
 #include <QDir>
 #include <QJsonArray>

@@ -4,8 +4,8 @@
 #include "app/cli/CliSupport.h"
 #include "app/cli/Commands.h"
 #include "app/cli/TaskSetup.h"
-#include "sim/DemonstrationRecorder.h"
 #include "sim/PlantCatalog.h"
+#include "sim/demonstrations/DemonstrationRecorder.h"
 
 #include <QJsonArray>
 

@@ -9,9 +9,9 @@
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
-#include "sim/SlideCar.h"
-#include "sim/Table1Experiment.h"
-#include "sim/Table1Protocol.h"
+#include "sim/experiments/Table1Experiment.h"
+#include "sim/experiments/Table1Protocol.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QDir>
 
@@ -189,7 +189,7 @@ int table1ProtocolCommand(const CommandLine& line) {
                            "--styles"));
     }
     const QString plant = checkedPlant(line.value("plant"));
-    sim::MethodTuning profile = sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant));
+    sim::MethodTuning profile = sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant));
     if (!profile.info.pose) {
         throw UsageError(
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(plant));

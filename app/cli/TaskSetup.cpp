@@ -42,7 +42,7 @@ Task taskFor(const QString& plant, core::Demonstration demonstration,
                              .arg(demonstrationPath, name, sim::PlantCatalog::names().join(' ')));
     }
     const sim::PlantInfo info = sim::PlantCatalog::describe(name);
-    sim::MethodTuning profile = sim::MethodTuning::forPlant(info);
+    sim::MethodTuning profile = sim::PlantCatalog::tuning(info);
     if (!mask.isEmpty()) {
         QString error;
         auto parsed = core::IntuitiveMapping::parse(mask, &error);
@@ -173,14 +173,15 @@ void applyMethodParameters(const CommandLine& line, sim::MethodTuning& profile,
                            bool plantFromFile) {
     if (!line.isSet("start") && plantFromFile) {
         // Nobody tuned a car described by a file: start from its demonstration.
-        sim::MethodCatalog::setParameter(profile, QStringLiteral("start=demo"));
+        profile.start = sim::MethodTuning::Start::Demonstration;
     }
     if (line.isSet("start")) {
         const QString start = line.value("start");
         if (start != QLatin1String("demo") && start != QLatin1String("tuned")) {
             throw UsageError(QStringLiteral("--start: '%1' is not one of: demo tuned").arg(start));
         }
-        sim::MethodCatalog::setParameter(profile, QStringLiteral("start=") + start);
+        profile.start = start == QLatin1String("demo") ? sim::MethodTuning::Start::Demonstration
+                                                       : sim::MethodTuning::Start::Tuned;
     }
     if (line.isSet("model")) {
         QString error;

@@ -3,11 +3,11 @@
 #include "core/ActionMapping.h"
 #include "core/Demonstration.h"
 #include "sim/DemonstrationStyles.h"
-#include "sim/MethodTuning.h"
-#include "sim/Plant.h"
-#include "sim/PlantParameters.h"
-#include "sim/RunSetup.h"
-#include "sim/Task.h"
+#include "sim/plants/Plant.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/run/RunSetup.h"
+#include "sim/run/Task.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <memory>
 

@@ -3,8 +3,8 @@
 #include "app/plot/Figure.h"
 #include "core/Lemma41.h"
 #include "core/Statistics.h"
-#include "sim/LearningCurveExperiment.h"
-#include "sim/Table1Experiment.h"
+#include "sim/experiments/LearningCurveExperiment.h"
+#include "sim/experiments/Table1Experiment.h"
 
 #include <vector>
 

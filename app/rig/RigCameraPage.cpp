@@ -1,11 +1,11 @@
 #include "app/rig/RigCameraPage.h"
 
-#include "app/CameraView.h"
 #include "app/LabSession.h"
 #include "app/MessageLog.h"
-#include "app/ModalDialog.h"
+#include "app/widgets/CameraView.h"
+#include "app/widgets/ModalDialog.h"
 #include "rig/RigCalibration.h"
-#include "sim/Plant.h"
+#include "sim/plants/Plant.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -1,8 +1,8 @@
 #include "app/rig/RigLinkPage.h"
 
-#include "app/ChannelMapEditor.h"
 #include "app/LabSession.h"
 #include "app/MessageLog.h"
+#include "app/widgets/ChannelMapEditor.h"
 #include "rig/RigSession.h"
 
 #include <QComboBox>

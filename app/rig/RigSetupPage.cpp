@@ -1,9 +1,9 @@
 #include "app/rig/RigSetupPage.h"
 
-#include "app/CameraView.h"
 #include "app/EmergencyStop.h"
 #include "app/MessageLog.h"
-#include "app/ModalDialog.h"
+#include "app/widgets/CameraView.h"
+#include "app/widgets/ModalDialog.h"
 #include "devices/Geofence.h"
 #include "rig/RigCalibration.h"
 #include "rig/RigSession.h"

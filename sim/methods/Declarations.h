@@ -6,8 +6,8 @@
 // order and answers the queries. Internal to prisca_sim: the rest of the product reaches a
 // method through MethodCatalog.
 
-#include "sim/MethodCatalog.h"
-#include "sim/OracleController.h"
+#include "sim/planning/OracleController.h"
+#include "sim/tuning/MethodSpec.h"
 
 #include <Eigen/Core>
 
@@ -52,12 +52,14 @@ OracleParameters plannerFor(const MethodTuning& profile, const core::Demonstrati
 MethodSpec priscaMethod();                  // PriscaMethods.cpp
 MethodSpec priscaPaperMethod();             // PriscaMethods.cpp
 std::vector<MethodSpec> pdFamilyMethods();  // FeedbackMethods.cpp
-MethodSpec playbackMethod();                // FeedbackMethods.cpp
-MethodSpec lqrMethod();                     // LqrMethod.cpp
-MethodSpec pgsdMethod();                    // LearningMethods.cpp
-MethodSpec pegasusMethod();                 // LearningMethods.cpp
-MethodSpec ilcMethod();                     // LearningMethods.cpp
-MethodSpec mpcMethod();                     // PlanningMethods.cpp
-MethodSpec oracleMethod();                  // PlanningMethods.cpp
+/// "pd-lsd" made as the catalog makes it, for a method that falls back on it (FeedbackMethods.cpp).
+Made makePdLsd(const MethodInput& in);
+MethodSpec playbackMethod();  // FeedbackMethods.cpp
+MethodSpec lqrMethod();       // LqrMethod.cpp
+MethodSpec pgsdMethod();      // LearningMethods.cpp
+MethodSpec pegasusMethod();   // LearningMethods.cpp
+MethodSpec ilcMethod();       // LearningMethods.cpp
+MethodSpec mpcMethod();       // PlanningMethods.cpp
+MethodSpec oracleMethod();    // PlanningMethods.cpp
 
 }  // namespace prisca::sim::methods

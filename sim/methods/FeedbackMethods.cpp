@@ -5,7 +5,7 @@
 #include <QCoreApplication>
 #include "core/ActionPlayback.h"
 #include "core/PdController.h"
-#include "sim/MethodTuning.h"
+#include "sim/tuning/MethodTuning.h"
 
 namespace prisca::sim::methods {
 
@@ -250,6 +250,18 @@ std::vector<MethodSpec> pdFamilyMethods() {
         return s;
     }());
     return family;
+}
+
+Made makePdLsd(const MethodInput& in) {
+    static const MethodSpec pdLsd = [] {
+        for (MethodSpec& s : pdFamilyMethods()) {
+            if (s.id == QLatin1String("pd-lsd")) {
+                return s;
+            }
+        }
+        throw std::logic_error("the PD family declares no pd-lsd");
+    }();
+    return makePdFamily(pdLsd, in);
 }
 
 /// The demonstration's actions, open loop.

@@ -6,7 +6,7 @@
 #include "core/IlcController.h"
 #include "core/PgsdController.h"
 #include "core/PriscaController.h"
-#include "sim/MethodTuning.h"
+#include "sim/tuning/MethodTuning.h"
 
 namespace prisca::sim::methods {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include "core/ActionMapping.h"
 #include "core/LqrController.h"
-#include "sim/MethodTuning.h"
+#include "sim/tuning/MethodTuning.h"
 
 namespace prisca::sim::methods {
 
@@ -102,7 +102,7 @@ Made makeLqr(const MethodSpec&, const MethodInput& in) {
     const core::Demonstration& demonstration = *in.demonstration;
     const int n = demonstration.stateDimension();
     core::LqrParameters parameters;
-    if (profile.parameter(QStringLiteral("lqr.drift"))[0] != 0.0) {
+    if (lqrDrift().value(profile)[0] != 0.0) {
         core::ActionMappingFitOptions options;
         options.drift = true;
         const core::ActionMappingFit fit = core::fitActionMapping(
@@ -113,8 +113,8 @@ Made makeLqr(const MethodSpec&, const MethodInput& in) {
         parameters.a = Eigen::MatrixXd::Zero(n, n);
         parameters.b = in.fittedB;  // the task's own fit, as the Mapping panel shows it
     }
-    parameters.effort = profile.parameter(QStringLiteral("lqr.effort"));
-    parameters.terminalWeight = profile.parameter(QStringLiteral("lqr.terminal"))[0];
+    parameters.effort = lqrEffort().value(profile);
+    parameters.terminalWeight = lqrTerminal().value(profile)[0];
     // The trial goes on for the settle time past the demonstration: plan over it too.
     parameters.holdSteps = static_cast<int>(std::lround(profile.settleTime / demonstration.dt));
     return std::make_unique<core::LqrController>(

@@ -5,9 +5,9 @@
 #include <QCoreApplication>
 #include <limits>
 #include <stdexcept>
-#include "sim/Identification.h"
-#include "sim/MethodTuning.h"
-#include "sim/MpcController.h"
+#include "sim/planning/Identification.h"
+#include "sim/planning/MpcController.h"
+#include "sim/tuning/MethodTuning.h"
 
 namespace prisca::sim::methods {
 
@@ -160,7 +160,7 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     const OracleParameters planner = plannerFor(profile, *demonstration);
     // The fallback: the PD with the least-state-deviation reference, the profile's law.
     std::unique_ptr<core::Controller> fallback =
-        MethodCatalog::create(QStringLiteral("pd-lsd"), profile, demonstration, in.fittedB);
+        makePdLsd(MethodInput{profile, demonstration, in.fittedB, nullptr});
     std::vector<core::Demonstration> data{*demonstration};
     const IdentificationSettings settings = mpcIdentificationSettings(profile.mpc, false);
     PlantParameters model;

@@ -3,7 +3,7 @@
 
 #include <QCoreApplication>
 #include "core/PriscaController.h"
-#include "sim/MethodTuning.h"
+#include "sim/tuning/MethodTuning.h"
 
 namespace prisca::sim::methods {
 
@@ -270,7 +270,6 @@ const MethodParameter& priscaExplainedOnly() {
 }
 
 Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
-    const QString& method = spec.id;
     const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     const Eigen::MatrixXd& fittedB = in.fittedB;
@@ -306,8 +305,9 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
     if (automatic) {
         problem.matching.window = MethodTuning::automaticWindow(*demonstration);
     }
-    core::FeatureMap features =
-        automatic ? profile.automaticFeatures(method, *demonstration) : profile.featuresOf(method);
+    core::FeatureMap features = automatic
+                                    ? profile.automaticFeatures(spec.ownFeatures, *demonstration)
+                                    : profile.featuresFor(spec.ownFeatures);
     if (profile.priscaPhaseSeconds > 0.0) {
         features = features.withPhases(
             demonstration->length(),
@@ -334,7 +334,6 @@ Made makePrisca(const MethodSpec& spec, const MethodInput& in) {
 }
 
 Made makePriscaPaper(const MethodSpec& spec, const MethodInput& in) {
-    const QString& method = spec.id;
     const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
     // Algorithm 1 exactly as printed: eq. 8 literally (the state change against the action
@@ -359,8 +358,8 @@ Made makePriscaPaper(const MethodSpec& spec, const MethodInput& in) {
     paper.effectHorizon = 1;
     paper.prior = {};
     return std::make_unique<core::PriscaController>(profile.priscaProblem(demonstration),
-                                                    profile.featuresOf(method), fit.b, paper,
-                                                    QStringLiteral("prisca-paper"));
+                                                    profile.featuresFor(spec.ownFeatures), fit.b,
+                                                    paper, QStringLiteral("prisca-paper"));
 }
 
 }  // namespace

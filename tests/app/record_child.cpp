@@ -6,7 +6,7 @@
 // pose), so the test knows what was recorded when it sent SIGKILL.
 //
 //     record_child window|rig <path>
-#include "app/RecordingWorker.h"
+#include "app/workers/RecordingWorker.h"
 #include "rig/RigSession.h"
 #include "sim/PlantCatalog.h"
 

@@ -1,9 +1,9 @@
 // E-STOP over everything the window shows, one latch over every job, and the quit that keeps the
 // right run: driven offscreen with the keys and clicks an operator would use.
 #include "GuiTestSupport.h"
-#include "app/BundleChooser.h"
-#include "app/GamepadEmergencyButton.h"
-#include "app/ReplayDialog.h"
+#include "app/input/GamepadEmergencyButton.h"
+#include "app/panels/ReplayDialog.h"
+#include "app/widgets/BundleChooser.h"
 
 #include <QKeySequenceEdit>
 #include <QMenu>

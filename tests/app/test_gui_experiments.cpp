@@ -2,8 +2,8 @@
 // cancelled Table I and learning curves keeping what finished, the last result shown again after
 // a restart (and a damaged kept file refused, not shown).
 #include "GuiTestSupport.h"
-#include "app/ExperimentArchive.h"
 #include "app/MessageLog.h"
+#include "app/workers/ExperimentArchive.h"
 
 #include <cmath>
 

@@ -3,8 +3,8 @@
 // saved with the session and opened again, mpc's model set; Cancel and E-STOP keeping no model;
 // the model dropped when the demonstration changes; plants identification does not know.
 #include "GuiTestSupport.h"
-#include "app/ModelPanel.h"
-#include "sim/Identification.h"
+#include "app/panels/ModelPanel.h"
+#include "sim/planning/Identification.h"
 
 #include <QProgressBar>
 

@@ -1,8 +1,8 @@
 // The Rig panel driven offscreen on the virtual rig: camera, link, trials, driving and
 // recording, the channel map and the floor calibration.
 #include "GuiTestSupport.h"
-#include "app/BundleChooser.h"
-#include "app/ReplayDialog.h"
+#include "app/panels/ReplayDialog.h"
+#include "app/widgets/BundleChooser.h"
 #include "rig/TrialBundle.h"
 #include "sim/PlantCatalog.h"
 

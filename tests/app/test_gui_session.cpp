@@ -1,8 +1,9 @@
 // The Task and Controller panels and the session file driven offscreen: sessions saved and
 // opened with their parameters, scripted demonstrations, feature scales and limits, bad files.
 #include "GuiTestSupport.h"
-#include "sim/RunSetup.h"
-#include "sim/SlideCar.h"
+#include "sim/PlantCatalog.h"
+#include "sim/plants/SlideCar.h"
+#include "sim/run/RunSetup.h"
 
 using namespace prisca::app;
 using namespace prisca::test;
@@ -335,7 +336,7 @@ class TestGuiSession : public QObject {
         Window fresh;
         QCOMPARE(fresh.window.session().plant(), QStringLiteral("slidecar"));
         QCOMPARE(fresh.window.session().profile().prisca.horizon,
-                 prisca::sim::MethodTuning::forPlant(
+                 prisca::sim::PlantCatalog::tuning(
                      prisca::sim::PlantCatalog::describe(QStringLiteral("slidecar")))
                      .prisca.horizon);
     }
@@ -360,8 +361,8 @@ class TestGuiSession : public QObject {
             v.close();
             QVERIFY(w.window.openSession(old));
             const prisca::sim::MethodTuning& opened = w.window.session().profile();
-            const prisca::sim::MethodTuning defaults = prisca::sim::MethodTuning::forPlant(
-                prisca::sim::PlantCatalog::describe("slidecar"));
+            const prisca::sim::MethodTuning defaults =
+                prisca::sim::PlantCatalog::tuning(prisca::sim::PlantCatalog::describe("slidecar"));
             QCOMPARE(opened.matchingWindow, 33);
             const QString status = w.window.statusBar()->currentMessage();
             if (version == 1) {

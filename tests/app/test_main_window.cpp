@@ -1,10 +1,10 @@
 // The main window driven offscreen: title, menus, run-time language switch, remembered settings,
 // clean close.
-#include "app/ExperimentArchive.h"
 #include "app/LabSession.h"
 #include "app/LanguageSwitcher.h"
 #include "app/MainWindow.h"
-#include "app/ModalDialog.h"
+#include "app/widgets/ModalDialog.h"
+#include "app/workers/ExperimentArchive.h"
 
 #include <QtTest/qtestspontaneevent.h>
 #include <QAbstractButton>

@@ -163,7 +163,8 @@ QStringList appSources() {
         sources
             << QStringLiteral(PRISCA_SOURCE_DIR "/sim/methods/%1.cpp").arg(QLatin1String(family));
     }
-    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");      // the rig's messages
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSession.cpp");        // the rig's messages
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSessionTrials.cpp");  // and its trials'
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");   // the pre-trial check
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigCalibration.cpp");  // the set-up
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/core/ActionMapping.cpp");  // the fit's warnings

@@ -5,14 +5,14 @@
 // still tail) for 1,000, 10,000 and 40,000 samples. Fails if a sample of the longest costs more
 // than 3x a sample of the shortest, in either.
 #include "core/RunLogCsv.h"
-#include "sim/DemonstrationRecorder.h"
-#include "sim/EpisodeRunner.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunLogBuilder.h"
-#include "sim/RunSetup.h"
-#include "sim/Task.h"
-#include "sim/TrialMetrics.h"
+#include "sim/demonstrations/DemonstrationRecorder.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/run/RunLogBuilder.h"
+#include "sim/run/RunSetup.h"
+#include "sim/run/Task.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <algorithm>
 #include <chrono>
@@ -75,7 +75,7 @@ Timing runOnce(const std::shared_ptr<const core::Demonstration>& demonstration) 
     Timing timing;
     const auto start = Clock::now();
     const sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+        sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     const sim::RunSetup setup(sim::makeTask(profile, demonstration), "prisca");
     auto plant = setup.makePlant();
     auto controller = setup.makeController();

@@ -2,7 +2,7 @@
 // frame adds one 40 ms batch (2 samples), redraws the decimated series and paints the panel,
 // as the application does; the frame time must stay well under the 40 ms batch period for the
 // window to stay fluid.
-#include "app/LiveChartsPanel.h"
+#include "app/panels/LiveChartsPanel.h"
 #include "sim/PlantCatalog.h"
 
 #include <QApplication>

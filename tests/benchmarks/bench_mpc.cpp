@@ -2,12 +2,12 @@
 // rate, with the realistic perturbation and sensor; every control step of 10 trials timed on one
 // core. Target: p99 <= 20 ms per control step (issue 33; the rig's frame period is 40 ms).
 #include "core/ActionMapping.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/MpcController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/SlideCarDemonstrator.h"
+#include "sim/demonstrations/SlideCarDemonstrator.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/planning/MpcController.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,8 +21,7 @@ int main() {
     sim::SimulationTiming timing;
     timing.controlPeriod = 0.04;  // 25 Hz
     auto demo = std::make_shared<core::Demonstration>(sim::SlideCarDemonstrator::record(1, timing));
-    sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+    sim::MethodTuning profile = sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     profile.mpcModel =
         std::make_shared<const sim::PlantParameters>(sim::defaultPlantParameters("slidecar"));
     const Eigen::MatrixXd B =

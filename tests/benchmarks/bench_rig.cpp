@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     auto demo = std::make_shared<core::Demonstration>(
         sim::PlantCatalog::demonstrate(QStringLiteral("slidecar"), 1));
     const sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+        sim::PlantCatalog::tuning(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
     rigsim::VirtualRig rig({}, sim::MethodCatalog::create("prisca", profile, demo, b));

@@ -1,12 +1,12 @@
 // Simulation benchmarks (make bench): slide-car speed against real time, and a 20-trial batch
 // of closed-loop PRISCA trials on 1 and 2 threads.
 #include "core/ActionMapping.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/ParallelTrials.h"
 #include "sim/PlantCatalog.h"
-#include "sim/Table1Experiment.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/ParallelTrials.h"
+#include "sim/experiments/Table1Experiment.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <algorithm>
 #include <chrono>
@@ -58,7 +58,7 @@ int main() {
     auto demo =
         std::make_shared<core::Demonstration>(sim::PlantCatalog::demonstrate("slidecar", 1));
     const sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe("slidecar"));
+        sim::PlantCatalog::tuning(sim::PlantCatalog::describe("slidecar"));
     const Eigen::MatrixXd B =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
     const std::function<double(int)> trial = [&](int i) {

@@ -14,9 +14,9 @@
 #include "core/FileIo.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
+#include "sim/run/RunSetup.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QRegularExpression>
 
@@ -167,7 +167,7 @@ const sim::MethodTuning& profileOf(const QString& plant) {
     auto found = profiles.find(plant);
     if (found == profiles.end()) {
         found =
-            profiles.emplace(plant, sim::MethodTuning::forPlant(sim::PlantCatalog::describe(plant)))
+            profiles.emplace(plant, sim::PlantCatalog::tuning(sim::PlantCatalog::describe(plant)))
                 .first;
     }
     return found->second;

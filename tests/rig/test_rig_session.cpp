@@ -7,10 +7,10 @@
 #include "core/DemonstrationCsv.h"
 #include "core/DemonstrationStream.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/Task.h"
+#include "sim/run/RunSetup.h"
+#include "sim/run/Task.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -27,7 +27,7 @@ constexpr double kFps = 40.0;
 
 struct SlideCar {
     sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+        sim::PlantCatalog::tuning(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     std::shared_ptr<const core::Demonstration> demonstration;
     Eigen::MatrixXd b;
 

@@ -4,8 +4,8 @@
 #include "core/ActionMapping.h"
 #include "rigsim/VirtualRig.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtTest>
 
@@ -22,7 +22,7 @@ std::unique_ptr<core::Controller> makeController(const QString& method,
     *demo = std::make_shared<core::Demonstration>(
         sim::PlantCatalog::demonstrate(QStringLiteral("slidecar"), 1));
     const sim::MethodTuning profile =
-        sim::MethodTuning::forPlant(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
+        sim::PlantCatalog::tuning(sim::PlantCatalog::describe(QStringLiteral("slidecar")));
     const Eigen::MatrixXd b =
         core::fitActionMapping(**demo, profile.mapping, profile.info.deviationModel()).b;
     return sim::MethodCatalog::create(method, profile, *demo, b);

@@ -1,8 +1,8 @@
 // The acrobot: the analytic "book" equations, the Box2D plant against them, seeding, limits and
 // the scripted demonstrator.
-#include "sim/Acrobot.h"
-#include "sim/AcrobotDemonstrator.h"
-#include "sim/AcrobotEquations.h"
+#include "sim/demonstrations/AcrobotDemonstrator.h"
+#include "sim/plants/Acrobot.h"
+#include "sim/plants/AcrobotEquations.h"
 
 #include <QtTest>
 

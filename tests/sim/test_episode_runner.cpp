@@ -1,13 +1,14 @@
 // The closed loop: measurement model, episode runner, parallel trials, the controller factory.
 #include "core/ActionMapping.h"
-#include "sim/EpisodeRunner.h"
-#include "sim/MeasurementModel.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/ParallelTrials.h"
-#include "sim/SlideCar.h"
-#include "sim/SlideCarDemonstrator.h"
-#include "sim/TrialMetrics.h"
+#include "sim/PlantCatalog.h"
+#include "sim/demonstrations/SlideCarDemonstrator.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/ParallelTrials.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/plants/MeasurementModel.h"
+#include "sim/plants/SlideCar.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtTest>
 
@@ -27,7 +28,7 @@ bool identical(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 struct SlideCarSetup {
     std::shared_ptr<const core::Demonstration> demo =
         std::make_shared<core::Demonstration>(SlideCarDemonstrator::record(1));
-    MethodTuning profile = MethodTuning::forPlant(SlideCar::describe());
+    MethodTuning profile = PlantCatalog::tuning(SlideCar::describe());
     Eigen::MatrixXd fittedB =
         core::fitActionMapping(*demo, profile.mapping, profile.info.deviationModel()).b;
 

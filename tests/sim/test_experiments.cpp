@@ -2,12 +2,12 @@
 // training seeds and PD (selected)'s grid, the profile's trial settings, and the run log.
 #include "core/ActionMapping.h"
 #include "core/RunLogCsv.h"
-#include "sim/LearningCurveExperiment.h"
-#include "sim/MethodTraining.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
-#include "sim/RunSetup.h"
-#include "sim/Table1Experiment.h"
+#include "sim/experiments/LearningCurveExperiment.h"
+#include "sim/experiments/Table1Experiment.h"
+#include "sim/run/MethodTraining.h"
+#include "sim/run/RunSetup.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtTest>
 
@@ -21,7 +21,7 @@ namespace {
 
 struct CarTask {
     Task task =
-        makeTask(MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
+        makeTask(PlantCatalog::tuning(PlantCatalog::describe("slidecar")),
                  std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1)));
     const MethodTuning& profile = task.profile;
     std::shared_ptr<const core::Demonstration> demo = task.demonstration;
@@ -32,7 +32,7 @@ Task carTaskAt(double hertz) {
     SimulationTiming timing;
     timing.controlPeriod = 1.0 / hertz;
     return makeTask(
-        MethodTuning::forPlant(PlantCatalog::describe("slidecar")),
+        PlantCatalog::tuning(PlantCatalog::describe("slidecar")),
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1, timing)));
 }
 

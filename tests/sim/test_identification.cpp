@@ -1,9 +1,9 @@
 // Identification of the slide-car: the unmodelled effects kept out of the model, a cancel, and
 // every refusal (test_identification_recovery: a car of known parameters recovered).
-#include "sim/Identification.h"
-#include "sim/PlantParameters.h"
-#include "sim/SlideCar.h"
-#include "sim/SlideCarDemonstrator.h"
+#include "sim/demonstrations/SlideCarDemonstrator.h"
+#include "sim/planning/Identification.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QtTest>
 

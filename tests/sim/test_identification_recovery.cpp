@@ -1,10 +1,10 @@
 // Identification of the slide-car: a car of known parameters recovered from its noise-free
 // demonstration. A minute of model runs: left out of the sanitizer builds, which run the
 // identification's code through test_identification.
-#include "sim/Identification.h"
-#include "sim/PlantParameters.h"
-#include "sim/SlideCar.h"
-#include "sim/SlideCarDemonstrator.h"
+#include "sim/demonstrations/SlideCarDemonstrator.h"
+#include "sim/planning/Identification.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QtTest>
 

@@ -4,11 +4,11 @@
 #include "core/IlcController.h"
 #include "core/PriscaController.h"
 #include "sim/DemonstrationStyles.h"
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/planning/OracleController.h"
 
 #include <QSet>
 #include <QtTest>
@@ -21,7 +21,7 @@ class TestMethodCatalog : public QObject {
   private:
     std::shared_ptr<const core::Demonstration> demo_ =
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 2));
-    MethodTuning profile_ = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+    MethodTuning profile_ = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
 
   private slots:
     void priscaPaper_isAlgorithm1AsPrinted() {
@@ -115,7 +115,7 @@ class TestMethodCatalog : public QObject {
             demo.states(k, 3) = 2.0;
         }
         QCOMPARE(MethodTuning::automaticWindow(demo), 40);
-        const core::FeatureMap preset = profile_.featuresOf("prisca");
+        const core::FeatureMap preset = MethodCatalog::featuresOf(profile_, "prisca");
         const core::FeatureMap automatic = profile_.automaticFeatures("prisca", demo);
         QCOMPARE(automatic.terms().size(), preset.terms().size());
         for (size_t l = 0; l < preset.terms().size(); ++l) {
@@ -183,7 +183,7 @@ class TestMethodCatalog : public QObject {
             QVERIFY2(QString::fromUtf8(p->help).size() > 10, qPrintable(name));
             QCOMPARE(MethodCatalog::parameter(name), p);
             for (const QString& plant : PlantCatalog::names()) {
-                MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe(plant));
+                MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe(plant));
                 const Eigen::VectorXd value = p->value(profile);
                 const int m = profile.info.actionDimension();
                 QVERIFY2(p->check(value, m).isEmpty(),
@@ -224,7 +224,7 @@ class TestMethodCatalog : public QObject {
         QVERIFY(!profile.priscaAutomatic);
         // A method's own parameter with no field in the profile: kept by name.
         MethodCatalog::setParameter(profile, "lqr.terminal=3");
-        QCOMPARE(profile.parameter("lqr.terminal")[0], 3.0);
+        QCOMPARE(MethodCatalog::value(profile, "lqr.terminal")[0], 3.0);
         const auto refused = [&](const char* assignment, const char* words) {
             try {
                 MethodCatalog::setParameter(profile, QString::fromLatin1(assignment));
@@ -242,8 +242,9 @@ class TestMethodCatalog : public QObject {
         QVERIFY(refused("prisca.H", "is not NAME=VALUE"));
         QCOMPARE(profile.prisca.horizon, 17);  // nothing half-applied
         // Per-plant defaults: the LQR's effort is the acrobot's own.
-        const MethodTuning acrobot = MethodTuning::forPlant(PlantCatalog::describe("acrobot"));
-        QVERIFY(acrobot.parameter("lqr.effort")[0] != profile_.parameter("lqr.effort")[0]);
+        const MethodTuning acrobot = PlantCatalog::tuning(PlantCatalog::describe("acrobot"));
+        QVERIFY(MethodCatalog::value(acrobot, "lqr.effort")[0] !=
+                MethodCatalog::value(profile_, "lqr.effort")[0]);
     }
 
     void catalog_isOneTableEveryListComesFrom() {

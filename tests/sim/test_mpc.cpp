@@ -2,14 +2,14 @@
 // its feedback law under a model that is wrong (the predicted tube) or fits badly, refits after
 // each trial, and goes back to its first model on a cold reset.
 #include "core/ActionMapping.h"
-#include "sim/EpisodeRunner.h"
-#include "sim/Identification.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/MpcController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantParameters.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/planning/Identification.h"
+#include "sim/planning/MpcController.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtTest>
 
@@ -36,7 +36,7 @@ PlantParameters withValues(PlantParameters p,
 struct Setup {
     std::shared_ptr<const core::Demonstration> demonstration =
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
-    MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+    MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
     Eigen::MatrixXd b() const {
         return core::fitActionMapping(*demonstration, profile.mapping,
                                       profile.info.deviationModel())
@@ -243,7 +243,7 @@ class TestMpc : public QObject {
         QVERIFY(mpc->modelFit() >= 0.0);
         QVERIFY(mpc->modelFit() < 0.05);
 
-        const MethodTuning acrobot = MethodTuning::forPlant(PlantCatalog::describe("acrobot"));
+        const MethodTuning acrobot = PlantCatalog::tuning(PlantCatalog::describe("acrobot"));
         auto demo = std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("acrobot", 1));
         try {
             MethodCatalog::create("mpc", acrobot, demo, Eigen::MatrixXd::Zero(1, 4));

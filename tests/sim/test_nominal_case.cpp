@@ -4,7 +4,7 @@
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
-#include "sim/Table1Protocol.h"
+#include "sim/experiments/Table1Protocol.h"
 
 #include <QtTest>
 
@@ -45,7 +45,7 @@ class TestNominalCase : public QObject {
         settings.table.run.threads = 2;
         settings.styles = DemonstrationStyles::names(plant);
         settings.seedSets = {7};
-        const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe(plant));
+        const MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe(plant));
         const Table1ProtocolResult result = runTable1Protocol(settings, profile);
         QCOMPARE(static_cast<int>(result.cells[0].size()),
                  static_cast<int>(settings.styles.size()));

@@ -1,12 +1,12 @@
 // The oracle plans on copies of the trial's plant. On a plant whose optimum is known (a planar
 // point whose actuator gains differ from the demonstration's: scaling the actions by the gain
 // ratio repeats the demonstration exactly) it must find that optimum without being told.
-#include "sim/EpisodeRunner.h"
 #include "sim/MethodCatalog.h"
-#include "sim/MethodTuning.h"
-#include "sim/OracleController.h"
 #include "sim/PlantCatalog.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/EpisodeRunner.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/planning/OracleController.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QtTest>
 
@@ -218,7 +218,7 @@ class TestOracle : public QObject {
         // oracle must not move away from them.
         auto demo = std::make_shared<core::Demonstration>(
             PlantCatalog::demonstrate(QStringLiteral("slidecar"), 3));
-        const MethodTuning profile = MethodTuning::forPlant(PlantCatalog::describe("slidecar"));
+        const MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
         auto oracle = MethodCatalog::create(QStringLiteral("oracle"), profile, demo,
                                             Eigen::MatrixXd::Zero(2, 6));
         auto plant = PlantCatalog::create(QStringLiteral("slidecar"));

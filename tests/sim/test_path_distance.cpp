@@ -1,8 +1,8 @@
 // The indexed distance to a demonstrated path against the brute force (distanceToPath), bit for
 // bit: random paths and query points near, on and far off them, and the degenerate paths.
-#include "sim/PathDistance.h"
-#include "sim/SlideCar.h"
-#include "sim/TrialMetrics.h"
+#include "sim/episodes/PathDistance.h"
+#include "sim/episodes/TrialMetrics.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // The plant catalog: one entry per plant, everything the front ends need from it consistent.
 #include "sim/DemonstrationStyles.h"
-#include "sim/MethodTuning.h"
 #include "sim/PlantCatalog.h"
-#include "sim/TaskCheck.h"
+#include "sim/run/TaskCheck.h"
+#include "sim/tuning/MethodTuning.h"
 
 #include <QSet>
 #include <QtTest>
@@ -57,7 +57,7 @@ class TestPlantCatalog : public QObject {
             QCOMPARE(plant->info().stateDimension(), info.stateDimension());
             QCOMPARE(plant->info().actionDimension(), info.actionDimension());
             // Its profile's sign model is m x n for this plant.
-            const MethodTuning profile = MethodTuning::forPlant(info);
+            const MethodTuning profile = PlantCatalog::tuning(info);
             QCOMPARE(profile.mapping.controls(), info.actionDimension());
             QCOMPARE(profile.mapping.states(), info.stateDimension());
             // Its styles record demonstrations of it; the first is the classic one.

@@ -1,8 +1,8 @@
 // Plant files (the plants' physical parameters) and the lab-session perturbation model.
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
-#include "sim/PlantParameters.h"
-#include "sim/SlideCar.h"
+#include "sim/plants/PlantParameters.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

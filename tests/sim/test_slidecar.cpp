@@ -1,6 +1,6 @@
 // The Box2D slide-car: steady speed, sliding on full lock, coasting, determinism, bad input.
-#include "sim/SlideCar.h"
-#include "sim/SlideCarDemonstrator.h"
+#include "sim/demonstrations/SlideCarDemonstrator.h"
+#include "sim/plants/SlideCar.h"
 
 #include <QtTest>
 

@@ -1,0 +1,405 @@
+#include "sim/planning/MpcController.h"
+
+#include "core/DeviationModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace prisca::sim {
+
+namespace {
+
+// The commands in flight when the model restarts at a measured state: this many control steps
+// of history (covers the dead times and the servo's travel, as identification's segments).
+constexpr int kHistorySteps = 12;
+
+}  // namespace
+
+IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
+    IdentificationSettings settings;
+    settings.physicsSubsteps = parameters.substeps;
+    if (refit) {
+        settings.global = false;
+        settings.restarts = 0;
+        settings.passes = 1;
+        settings.evaluationsPerStart = parameters.refitEvaluations;
+    } else {
+        settings.restarts = 1;
+        settings.evaluationsPerStart = parameters.identifyEvaluations;
+    }
+    return settings;
+}
+
+MpcController::MpcController(core::TrackingProblem problem, MpcParameters parameters,
+                             OracleParameters planner, std::unique_ptr<core::Controller> fallback,
+                             PlantParameters model, double modelFit,
+                             std::vector<core::Demonstration> data)
+    : problem_(core::TrackingProblem::validated(std::move(problem))),
+      parameters_(parameters),
+      plannerParameters_(std::move(planner)),
+      fallback_(std::move(fallback)),
+      firstModel_(model),
+      firstFit_(modelFit),
+      model_(std::move(model)),
+      modelFit_(modelFit),
+      data_(data),
+      firstData_(std::move(data)) {
+    if (!fallback_) {
+        throw std::invalid_argument("MpcController: a fallback law is needed");
+    }
+    if (!problem_.deviation.pose) {
+        throw std::invalid_argument(
+            "MpcController: model-predictive parking needs a planar vehicle");
+    }
+    if (parameters_.replanEvery < 1 || parameters_.rollouts < 2 || parameters_.maxKnots < 2 ||
+        parameters_.substeps < 1 || !(parameters_.tubeSeconds > 0.0) ||
+        parameters_.tubeStrikes < 1 || !(parameters_.tubePosition > 0.0) ||
+        !(parameters_.tubeHeading > 0.0)) {
+        throw std::invalid_argument(
+            "MpcController: replanning, rollouts >= 2, knots >= 2, substeps, the tube's steps and "
+            "strikes >= 1 and positive tube bounds needed");
+    }
+    if (model_.plant != problem_.demonstration->plant && !problem_.demonstration->plant.isEmpty()) {
+        throw std::invalid_argument(
+            QStringLiteral("MpcController: the model is a '%1', the demonstration a '%2'")
+                .arg(model_.plant, problem_.demonstration->plant)
+                .toStdString());
+    }
+    plannerParameters_.objective = OracleParameters::Objective::FinalPose;
+    if (!parameters_.feedback) {
+        plannerParameters_.feedback.resize(0, 0);
+    }
+    plannerParameters_.replanEvery = parameters_.replanEvery;
+    plannerParameters_.samples = parameters_.rollouts;
+    plannerParameters_.maxKnots = parameters_.maxKnots;
+    plannerParameters_.correctionScale = parameters_.correctionScale;
+    plannerParameters_.maxCorrection = parameters_.maxCorrection;
+    plannerParameters_.trackingScale = parameters_.trackingScale;
+    record_.action.setZero(problem_.demonstration->actionDimension());
+    if (problem_.deviation.bodyVelocity) {
+        // A spin begins on the way into the slide; past the demonstration's fastest turn the
+        // car is parking, and a slide there (a counter-slide as it settles, a car that lags
+        // its demonstration) is the plan's to finish.
+        const int yawRate = problem_.deviation.bodyVelocity->yawRate;
+        const Eigen::MatrixXd& states = problem_.demonstration->states;
+        for (Eigen::Index j = 0; j < states.rows(); ++j) {
+            if (std::abs(states(j, yawRate)) > std::abs(states(spinUntil_, yawRate))) {
+                spinUntil_ = static_cast<int>(j);
+            }
+        }
+    }
+    reset(core::ResetMode::Cold);
+}
+
+MpcController::MpcController(const MpcController& other)
+    : problem_(other.problem_),
+      parameters_(other.parameters_),
+      plannerParameters_(other.plannerParameters_),
+      fallback_(other.fallback_->clone()),
+      firstModel_(other.firstModel_),
+      firstFit_(other.firstFit_),
+      model_(other.model_),
+      modelFit_(other.modelFit_),
+      data_(other.data_),
+      firstData_(other.firstData_),
+      latency_(other.latency_),
+      pendingLatency_(other.pendingLatency_),
+      observations_(other.observations_),
+      actions_(other.actions_),
+      mode_(other.mode_),
+      fallbackReason_(other.fallbackReason_),
+      fallbackStep_(other.fallbackStep_),
+      strikes_(other.strikes_),
+      spinStrikes_(other.spinStrikes_),
+      spinUntil_(other.spinUntil_),
+      refits_(other.refits_),
+      step_(other.step_),
+      record_(other.record_) {
+    buildModel();
+    if (other.planner_) {
+        planner_ = std::make_unique<OracleController>(*other.planner_);
+        attachModels();
+    }
+    if (other.modelPlant_) {
+        modelPlant_->resetTo(other.modelPlant_->state());
+    }
+}
+
+std::unique_ptr<core::Controller> MpcController::clone() const {
+    return std::make_unique<MpcController>(*this);
+}
+
+QString MpcController::trialNote() const {
+    if (mode_ == MpcMode::Planning) {
+        return modelFit_ >= 0.0 ? QStringLiteral("planned through the model (fit %1 cm)")
+                                      .arg(100.0 * modelFit_, 0, 'f', 1)
+                                : QStringLiteral("planned through the model");
+    }
+    return fallbackStep_ > 0 ? QStringLiteral("the feedback law drove from %1 s: %2")
+                                   .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
+                                   .arg(fallbackReason_)
+                             : QStringLiteral("the feedback law drove: %1").arg(fallbackReason_);
+}
+
+void MpcController::setLatencyCompensation(int steps) {
+    pendingLatency_ = std::max(0, steps);
+    fallback_->setLatencyCompensation(steps);
+}
+
+void MpcController::buildModel() {
+    SimulationTiming timing;
+    timing.controlPeriod = problem_.demonstration->dt;
+    timing.physicsSubsteps = parameters_.substeps;
+    modelPlant_ = makePlant(model_, timing);
+    scratch_ = makePlant(model_, timing);
+    planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
+    ensemble_.clear();
+    if (parameters_.gripSpread > 0.0) {
+        // The same car on less grip: the side a plan spins out on.
+        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
+        PlantParameters slippery = model_;
+        for (size_t i = 0; i < specs.size(); ++i) {
+            const QString& key = specs[i].key;
+            if (key == QLatin1String("staticFriction") || key == QLatin1String("kineticFriction")) {
+                slippery.values[i] = std::clamp(slippery.values[i] * (1.0 - parameters_.gripSpread),
+                                                specs[i].lower, specs[i].upper);
+            }
+        }
+        ensemble_.push_back(makePlant(slippery, timing));
+    }
+    attachModels();
+}
+
+void MpcController::attachModels() {
+    planner_->attachPlant(modelPlant_.get());
+    std::vector<const Plant*> others;
+    for (const auto& plant : ensemble_) {
+        others.push_back(plant.get());
+    }
+    planner_->attachEnsemble(std::move(others));
+}
+
+void MpcController::reset(core::ResetMode mode) {
+    if (mode == core::ResetMode::Cold) {
+        model_ = firstModel_;
+        modelFit_ = firstFit_;
+        data_ = firstData_;
+        refits_ = 0;
+    } else if (step_ > 0) {
+        refitOnLastTrial();
+    }
+    latency_ = pendingLatency_;
+    buildModel();
+    fallback_->reset(mode);
+    observations_.clear();
+    actions_.clear();
+    step_ = 0;
+    strikes_ = 0;
+    spinStrikes_ = 0;
+    mode_ = MpcMode::Planning;
+    fallbackReason_.clear();
+    fallbackStep_ = -1;
+    if (!(modelFit_ <= parameters_.poorFit) && modelFit_ >= 0.0) {
+        fallBack(QStringLiteral("the model fits its data to %1 cm, more than the %2 cm it may")
+                     .arg(100.0 * modelFit_, 0, 'f', 1)
+                     .arg(100.0 * parameters_.poorFit, 0, 'f', 1));
+    } else if (!std::isfinite(modelFit_)) {
+        fallBack(QStringLiteral("the model's fit is unknown"));
+    }
+}
+
+int MpcController::tubeSteps() const {
+    return std::max(
+        1, static_cast<int>(std::lround(parameters_.tubeSeconds / problem_.demonstration->dt)));
+}
+
+QString MpcController::spinOf(const Eigen::VectorXd& observation) const {
+    if (!problem_.deviation.bodyVelocity) {
+        return {};
+    }
+    const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+    const double forward = observation[v.forward];
+    const double lateral = observation[v.lateral];
+    if (!(std::hypot(forward, lateral) > parameters_.spinSpeed)) {
+        return {};
+    }
+    const double yawRate = observation[v.yawRate];
+    const double slip = std::atan2(lateral, std::abs(forward));
+    // The demonstration near this time (its own pace may differ by the window).
+    const core::Demonstration& demo = *problem_.demonstration;
+    const int k = step_ - latency_;
+    if (k > spinUntil_) {
+        return {};  // past the demonstration's fastest turn: the car is parking
+    }
+    const int w = std::max(0, static_cast<int>(std::lround(parameters_.spinWindow / demo.dt)));
+    double nearestRate = std::numeric_limits<double>::infinity();
+    double nearestSlip = std::numeric_limits<double>::infinity();
+    double demoRate = 0.0;
+    double demoSlip = 0.0;
+    for (int j = std::max(0, k - w); j <= std::min(demo.length() - 1, k + w); ++j) {
+        const double r = demo.states(j, v.yawRate);
+        const double speed = std::hypot(demo.states(j, v.forward), demo.states(j, v.lateral));
+        const double b = speed > 0.05 ? std::atan2(demo.states(j, v.lateral),
+                                                   std::abs(demo.states(j, v.forward)))
+                                      : 0.0;
+        if (std::abs(yawRate - r) < nearestRate) {
+            nearestRate = std::abs(yawRate - r);
+            demoRate = r;
+        }
+        if (std::abs(slip - b) < nearestSlip) {
+            nearestSlip = std::abs(slip - b);
+            demoSlip = b;
+        }
+    }
+    if (!std::isfinite(nearestRate)) {
+        return {};  // past the demonstration's end
+    }
+    if (parameters_.spinYawRate > 0.0 && nearestRate > parameters_.spinYawRate) {
+        return QStringLiteral("a yaw rate of %1 deg/s where the demonstration had %2 (bound %3)")
+            .arg(yawRate * 180.0 / M_PI, 0, 'f', 0)
+            .arg(demoRate * 180.0 / M_PI, 0, 'f', 0)
+            .arg(parameters_.spinYawRate * 180.0 / M_PI, 0, 'f', 0);
+    }
+    if (parameters_.spinSideSlip > 0.0 && nearestSlip > parameters_.spinSideSlip) {
+        return QStringLiteral(
+                   "a side-slip angle of %1 deg where the demonstration had %2 "
+                   "(bound %3)")
+            .arg(slip * 180.0 / M_PI, 0, 'f', 0)
+            .arg(demoSlip * 180.0 / M_PI, 0, 'f', 0)
+            .arg(parameters_.spinSideSlip * 180.0 / M_PI, 0, 'f', 0);
+    }
+    return {};
+}
+
+void MpcController::fallBack(const QString& reason) {
+    mode_ = MpcMode::Fallback;
+    fallbackReason_ = reason;
+    fallbackStep_ = step_;
+}
+
+void MpcController::predictInto(Plant& model, int from, int count) const {
+    model.resetTo(observations_[static_cast<size_t>(from)]);
+    const int m = problem_.demonstration->actionDimension();
+    auto sent = [&](int k) -> Eigen::VectorXd {
+        return k < 0 ? Eigen::VectorXd::Zero(m) : actions_[static_cast<size_t>(k)];
+    };
+    const int start = from - latency_;  // the observation's own time
+    std::vector<Eigen::VectorXd> history;
+    history.reserve(kHistorySteps);
+    for (int k = start - kHistorySteps; k < start; ++k) {
+        history.push_back(sent(k));
+    }
+    model.primeActuators(history);
+    for (int i = 0; i < count; ++i) {
+        model.step(sent(start + i));
+    }
+}
+
+const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::VectorXd>& observation) {
+    const int k = step_;
+    observations_.emplace_back(observation);
+    // The fallback follows every step, so that its reference is current when it takes over.
+    const core::ControlStep& law = fallback_->step(observation);
+    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+    const int lag = tubeSteps();
+    if (mode_ == MpcMode::Planning && k >= lag) {
+        // Where the model said the car would be, given the commands sent since then.
+        predictInto(*scratch_, k - lag, lag);
+        const Eigen::VectorXd predicted = scratch_->state();
+        const double position = std::hypot(predicted[pose.x] - observation[pose.x],
+                                           predicted[pose.y] - observation[pose.y]);
+        const double heading =
+            std::abs(core::wrapAngle(predicted[pose.heading] - observation[pose.heading]));
+        if (position > parameters_.tubePosition || heading > parameters_.tubeHeading) {
+            ++strikes_;
+        } else {
+            strikes_ = 0;
+        }
+        if (strikes_ >= parameters_.tubeStrikes) {
+            fallBack(QStringLiteral("the measured pose left the model's predicted tube at %1 s: "
+                                    "%2 cm and %3 deg from the prediction (bounds %4 cm, %5 deg)")
+                         .arg(k * problem_.demonstration->dt, 0, 'f', 2)
+                         .arg(100.0 * position, 0, 'f', 1)
+                         .arg(heading * 180.0 / M_PI, 0, 'f', 1)
+                         .arg(100.0 * parameters_.tubePosition, 0, 'f', 1)
+                         .arg(parameters_.tubeHeading * 180.0 / M_PI, 0, 'f', 1));
+        }
+    }
+    if (mode_ == MpcMode::Planning) {
+        const QString spin = spinOf(observations_.back());
+        spinStrikes_ = spin.isEmpty() ? 0 : spinStrikes_ + 1;
+        if (spinStrikes_ >= parameters_.tubeStrikes) {
+            fallBack(QStringLiteral("a spin the plan did not intend at %1 s: %2")
+                         .arg(k * problem_.demonstration->dt, 0, 'f', 2)
+                         .arg(spin));
+        }
+    }
+    if (mode_ == MpcMode::Fallback) {
+        record_ = law;
+    } else {
+        // The model at the state of now: the measurement predicted through the latency.
+        predictInto(*modelPlant_, k, latency_);
+        // The other grips are planned from, not stepped: they need the state of now only on
+        // the steps the planner plans.
+        if (k % parameters_.replanEvery == 0) {
+            for (const auto& other : ensemble_) {
+                predictInto(*other, k, latency_);
+            }
+        }
+        record_ = planner_->step(modelPlant_->state());
+    }
+    record_.step = k;
+    actions_.push_back(record_.action);
+    ++step_;
+    return record_;
+}
+
+void MpcController::refitOnLastTrial() {
+    const int L = latency_;
+    const int steps = static_cast<int>(actions_.size());
+    // Only a trial the plan drove is data for the model: one the fallback finished went where
+    // the model did not hold (a spin the model's tyres cannot have), and would pull the whole
+    // fit towards it.
+    if (!parameters_.refit || data_.empty() || steps - L < 4 || mode_ == MpcMode::Fallback) {
+        return;
+    }
+    // The trial as a run: the observation of step k + L is the state at step k.
+    const core::Demonstration& demonstration = data_.front();
+    core::Demonstration trial;
+    trial.plant = demonstration.plant;
+    trial.dt = demonstration.dt;
+    trial.stateNames = demonstration.stateNames;
+    trial.stateUnits = demonstration.stateUnits;
+    trial.actionNames = demonstration.actionNames;
+    trial.actionUnits = demonstration.actionUnits;
+    const int T = steps - L;
+    const int n = demonstration.stateDimension();
+    const int m = demonstration.actionDimension();
+    trial.time.resize(T);
+    trial.states.resize(T, n);
+    trial.actions.resize(T, m);
+    for (int i = 0; i < T; ++i) {
+        trial.time[i] = i * trial.dt;
+        trial.states.row(i) = observations_[static_cast<size_t>(i + L)].transpose();
+        trial.actions.row(i) = actions_[static_cast<size_t>(i)].transpose();
+    }
+    data_.push_back(std::move(trial));
+    std::vector<core::Demonstration> runs{data_.front()};  // data_ grew: no older reference
+    const int trials = static_cast<int>(data_.size()) - 1;
+    for (int i = std::max(1, trials + 1 - parameters_.refitTrials); i <= trials; ++i) {
+        runs.push_back(data_[static_cast<size_t>(i)]);
+    }
+    const IdentificationSettings settings = mpcIdentificationSettings(parameters_, true);
+    const IdentificationResult fit = identifyPlant(runs, model_, settings);
+    // A refit is kept only when it explains the data better than the model it started from.
+    const double before = modelPositionRms(runs, model_, settings);
+    if (fit.ok() && std::isfinite(fit.positionRms) && (before < 0.0 || fit.positionRms < before)) {
+        model_ = fit.parameters;
+        modelFit_ = fit.positionRms;
+        ++refits_;
+    }
+}
+
+}  // namespace prisca::sim

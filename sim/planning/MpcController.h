@@ -1,0 +1,164 @@
+#pragma once
+
+#include "core/Controller.h"
+#include "sim/planning/Identification.h"
+#include "sim/planning/OracleController.h"
+#include "sim/plants/PlantParameters.h"
+
+#include <Eigen/Core>
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace prisca::sim {
+
+/// Tuning of model-predictive parking (docs/architecture.md "Planning through the slide").
+/// Plain data.
+struct MpcParameters {
+    int replanEvery = 2;  ///< control steps between two plans (2 at 25 Hz: every 0.08 s)
+    int rollouts = 12;    ///< model runs per plan: the planning's budget (>= 2 m knots + 2)
+    int maxKnots = 4;     ///< knots per channel of the plan's correction (>= 2)
+    /// A correction of this share of the half range costs as much as 1 cm at the lot: the plan
+    /// stays near the demonstration's actions unless moving away pays (OracleParameters).
+    double correctionScale = 0.2;
+    double maxCorrection = 0.6;  ///< the largest correction, share of the half range
+    /// A root-mean-square distance from the demonstration's path this large [m] costs as much
+    /// as 1 cm at the lot: the plan keeps to where the car was identified.
+    double trackingScale = 0.3;
+    /// Whether the plan's actions carry the PD's time-aligned feedback between plannings (as the
+    /// oracle's do). Off: the plan is replayed as planned and the replanning is the feedback;
+    /// with it, a car that lags its demonstration on the straight (another day's grip, a
+    /// weaker battery) is pushed into the slide with throttle on, and spins.
+    bool feedback = false;
+    /// Robust planning: the plan must also park the model with its tyres' grips this share
+    /// lower (a floor of uneven grip, tyres the model's friction law only approximates: the
+    /// side a plan spins out on); 0: the model alone. (A third model with more grip as well
+    /// cost half again the planning time, over the real-time budget, for no dependable gain on
+    /// the development cells: docs/research-log.md.)
+    double gripSpread = 0.15;
+    /// Physics steps per control step of the model (it is identified with the same), fewer
+    /// than the simulator's for speed.
+    int substeps = 4;
+    /// The predicted tube: every control step, the model replays the commands sent over the
+    /// last `tubeSeconds` from the state measured then; a measured position this far [m] or a
+    /// heading this far [rad] from that prediction on `tubeStrikes` steps in a row, and the
+    /// trial is finished by the fallback law.
+    double tubePosition = 0.15;
+    double tubeHeading = 0.6;
+    double tubeSeconds = 0.4;
+    int tubeStrikes = 3;
+    /// The spin guard: up to the demonstration's fastest turn, a measured yaw rate this far
+    /// [rad/s] or a side-slip angle this far [rad] from every one the demonstration had within
+    /// `spinWindow` [s] of the same time, on `tubeStrikes` steps in a row while the car moves
+    /// faster than `spinSpeed` [m/s], and the trial is finished by the fallback law. A car
+    /// that enters the slide already sliding the wrong way (the model's Coulomb tyres held on
+    /// the straight where the car's did not) spins 2.5-3.6 m away under the plan; the tube cannot
+    /// see it, as the model predicts a spin once it has begun. 0 switches a check off.
+    double spinYawRate = 1.5;
+    double spinSideSlip = 0.17453292519943295;  // 10 deg
+    double spinWindow = 0.3;
+    double spinSpeed = 1.0;
+    /// The model's position RMS over its data's segments [m] above which it is not planned
+    /// through at all (the fallback from the start).
+    double poorFit = 0.10;
+    /// After each trial the model is refit on the demonstration and the day's newest trials.
+    bool refit = true;
+    int refitTrials = 4;            ///< at most this many of the newest trials, with the demo
+    int identifyEvaluations = 400;  ///< identification's budget from the demonstration
+    int refitEvaluations = 120;     ///< a refit's (a local search from the model)
+};
+
+/// Why a trial is (or is not) planned through the model.
+enum class MpcMode { Planning, Fallback };
+
+/// Model-predictive parking: each control step the model (an identified car, a plant file)
+/// is set to the measured state, predicted through the sensor's latency with the commands
+/// sent since, and every `replanEvery` steps the oracle's planner (OracleController) searches
+/// corrections to the demonstration's actions that bring the model's final pose onto the
+/// demonstration's, within a budget of model runs. It knows only what the rig knows: the
+/// measured (filtered) state and its own commands; nothing of the trial's draws.
+/// It falls back to a feedback law (the PD family's) for the whole trial when the model fits
+/// its data poorly, and for the rest of a trial once the measured state leaves the model's
+/// predicted tube. Learns across trials by refitting the model on the demonstration and the
+/// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it fits better; a
+/// cold reset goes back to the first model.
+class MpcController : public core::Controller {
+  public:
+    /// @param problem   the demonstration and limits (time-driven)
+    /// @param planner   the oracle's planner settings (final-pose objective, trial length)
+    /// @param fallback  the feedback law that takes over
+    /// @param model     the model planned through (its plant's parameters)
+    /// @param modelFit  the model's position RMS over its data [m] (negative: unknown)
+    /// @param data      what the model was identified from (the refits add trials to it;
+    ///                  empty: never refit)
+    MpcController(core::TrackingProblem problem, MpcParameters parameters, OracleParameters planner,
+                  std::unique_ptr<core::Controller> fallback, PlantParameters model,
+                  double modelFit, std::vector<core::Demonstration> data);
+    MpcController(const MpcController& other);
+    MpcController& operator=(const MpcController&) = delete;
+
+    QString name() const override { return QStringLiteral("mpc"); }
+    void reset(core::ResetMode mode = core::ResetMode::Cold) override;
+    const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
+    /// "planned through the model" or "fell back to the feedback law ...: why" (with when).
+    QString trialNote() const override;
+    std::unique_ptr<core::Controller> clone() const override;
+    void setLatencyCompensation(int steps) override;
+
+    MpcMode mode() const { return mode_; }
+    /// Why the fallback took over (empty while planning).
+    const QString& fallbackReason() const { return fallbackReason_; }
+    /// The step of this trial the fallback took over at (-1: it did not).
+    int fallbackStep() const { return fallbackStep_; }
+    const PlantParameters& model() const { return model_; }
+    double modelFit() const { return modelFit_; }
+    int refits() const { return refits_; }
+    const MpcParameters& parameters() const { return parameters_; }
+
+  private:
+    void buildModel();
+    /// Hands the planner its models: the model plant and the other grips.
+    void attachModels();
+    void fallBack(const QString& reason);
+    /// The model at recorded step `from`'s observation with the commands before it in flight,
+    /// stepped through `count` commands sent from step `from - latency` on.
+    void predictInto(Plant& model, int from, int count) const;
+    void refitOnLastTrial();
+    int tubeSteps() const;
+    /// The spin guard's verdict on a measured state: empty, or why it is a spin.
+    QString spinOf(const Eigen::VectorXd& observation) const;
+
+    core::TrackingProblem problem_;
+    MpcParameters parameters_;
+    OracleParameters plannerParameters_;
+    std::unique_ptr<core::Controller> fallback_;
+    PlantParameters firstModel_;
+    double firstFit_;
+    PlantParameters model_;
+    double modelFit_;
+    std::vector<core::Demonstration> data_;  // the demonstration first, then the day's trials
+    std::vector<core::Demonstration> firstData_;
+    std::unique_ptr<Plant> modelPlant_;             // the model at the current (predicted) state
+    std::unique_ptr<Plant> scratch_;                // the tube's prediction
+    std::vector<std::unique_ptr<Plant>> ensemble_;  // the model with other grips
+    std::unique_ptr<OracleController> planner_;
+    int latency_ = 0;
+    int pendingLatency_ = 0;
+    std::vector<Eigen::VectorXd> observations_;  // this trial's, one per step
+    std::vector<Eigen::VectorXd> actions_;       // this trial's commands, one per step
+    MpcMode mode_ = MpcMode::Planning;
+    QString fallbackReason_;
+    int fallbackStep_ = -1;
+    int strikes_ = 0;
+    int spinStrikes_ = 0;
+    int spinUntil_ = 0;  // the demonstration's step of fastest turn: the guard's last
+    int refits_ = 0;
+    int step_ = 0;
+    core::ControlStep record_;
+};
+
+/// The settings identification runs with for `mpc` (its model's substeps, its budget).
+IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit);
+
+}  // namespace prisca::sim
