@@ -121,7 +121,7 @@ void PriscaController::setModelValidity(std::vector<bool> valid) {
 }
 
 void PriscaController::setLatencyCompensation(int steps) {
-    latency_ = parameters_.compensateLatency ? std::max(0, steps) : 0;
+    latency_ = parameters_.honourLatencyCompensation ? std::max(0, steps) : 0;
     matcher_.setLatency(latency_);
 }
 

@@ -61,7 +61,7 @@ struct PriscaParameters {
     /// Honour latency compensation (Controller::setLatencyCompensation): the reference is
     /// matched for the time the observation was taken, the demonstration's action is the one of
     /// now. false: the paper's form, which pairs an old observation with today's reference.
-    bool compensateLatency = true;
+    bool honourLatencyCompensation = true;
     /// If > 0, theta is projected onto the box |theta_i| <= thetaBound after each update
     /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
     /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.

@@ -74,13 +74,11 @@ QString CommandLine::required(const QString& name) const {
     return parser_.value(name);
 }
 
-double CommandLine::number(const QString& name, double minimum, double maximum) const {
-    const QString text = parser_.value(name);
-    bool ok = false;
-    const double value = text.toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
-        throw UsageError(QStringLiteral("--%1 needs a number, got '%2'").arg(name, text));
-    }
+namespace {
+
+// UsageError naming the option, its range and the value when the value lies outside the range.
+template <typename T>
+void checkRange(const QString& name, T value, T minimum, T maximum) {
     if (value < minimum || value > maximum) {
         throw UsageError(QStringLiteral("--%1 must lie in [%2, %3], got %4")
                              .arg(name)
@@ -88,6 +86,18 @@ double CommandLine::number(const QString& name, double minimum, double maximum) 
                              .arg(maximum)
                              .arg(value));
     }
+}
+
+}  // namespace
+
+double CommandLine::number(const QString& name, double minimum, double maximum) const {
+    const QString text = parser_.value(name);
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        throw UsageError(QStringLiteral("--%1 needs a number, got '%2'").arg(name, text));
+    }
+    checkRange(name, value, minimum, maximum);
     return value;
 }
 
@@ -98,13 +108,7 @@ long long CommandLine::integer(const QString& name, long long minimum, long long
     if (!ok) {
         throw UsageError(QStringLiteral("--%1 needs a whole number, got '%2'").arg(name, text));
     }
-    if (value < minimum || value > maximum) {
-        throw UsageError(QStringLiteral("--%1 must lie in [%2, %3], got %4")
-                             .arg(name)
-                             .arg(minimum)
-                             .arg(maximum)
-                             .arg(value));
-    }
+    checkRange(name, value, minimum, maximum);
     return value;
 }
 

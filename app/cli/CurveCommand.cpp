@@ -131,16 +131,10 @@ int curveCommand(const QStringList& arguments) {
             throw UsageError(QStringLiteral("--seed-sets goes with --styles"));
         }
         const QString plantName = checkedPlant(line.value("plant"));
-        const auto parameters = plantParametersOption(line, plantName);
         // Recorded on the plant's car, as the window records its own (the protocol, --styles,
         // records each cell on its day's car).
-        sim::RecordingConditions conditions;
-        conditions.parameters = parameters.get();
-        Task task = loadOrDemonstrate(
-            plantName, line.value("demo"),
-            static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
-        task.plantParameters = parameters;
-        applyMethodParameters(line, task.profile, parameters != nullptr);
+        Task task = taskFromOptions(line, plantName);
+        applyMethodParameters(line, task.profile, task.plantParameters != nullptr);
         plant = task.plant;
         settings.progress = [](const QString& text) { printProgress(text); };
         result.pooled = sim::runLearningCurves(settings, task);

@@ -365,13 +365,9 @@ int rigCommand(const QStringList& arguments) {
     const bool text = line.format() == QLatin1String("text");
     const QString method = line.value("method");
     const sim::MethodSpec& spec = rigMethod(method);
-    const auto parameters = plantParametersOption(line, QStringLiteral("slidecar"));
-    sim::RecordingConditions conditions;  // the scripted operator drives the same car
-    conditions.parameters = parameters.get();
-    Task task = loadOrDemonstrate(
-        QStringLiteral("slidecar"), line.value("demo"),
-        static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
-    task.plantParameters = parameters;
+    // The scripted operator drives the same car as the trials.
+    Task task = taskFromOptions(line, QStringLiteral("slidecar"));
+    const std::shared_ptr<const sim::PlantParameters> parameters = task.plantParameters;
     applyMethodParameters(line, task.profile, parameters != nullptr);
     const devices::Geofence fence = fenceOption(line);
     const int trials = static_cast<int>(line.integer("trials", 0, 1000));

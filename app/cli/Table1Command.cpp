@@ -327,22 +327,16 @@ int table1Command(const QStringList& arguments) {
     sim::Table1Settings settings;
     readRunSettings(line, settings.run);
     const QString plantName = checkedPlant(line.value("plant"));
-    const auto parameters = plantParametersOption(line, plantName);
     // The scripted demonstration (checked as a file would be) is recorded on the plant's car, as
     // the window records its own; the protocol (--styles) records each cell on its day's car.
-    sim::RecordingConditions conditions;
-    conditions.parameters = parameters.get();
-    Task task = loadOrDemonstrate(
-        plantName, line.value("demo"),
-        static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
-    task.plantParameters = parameters;
+    Task task = taskFromOptions(line, plantName);
     if (!task.profile.info.pose) {
         throw UsageError(
             QStringLiteral("Table I is for planar vehicles; '%1' has no pose").arg(task.plant));
     }
     settings.methods = checkedMethods(line, settings.methods);
     settings.trials = static_cast<int>(line.integer("trials", 1, 100000));
-    applyMethodParameters(line, task.profile, parameters != nullptr);
+    applyMethodParameters(line, task.profile, task.plantParameters != nullptr);
     const auto format = core::parseTableFormat(line.format());
 
     settings.keepPaths = line.isSet("plot");

@@ -135,6 +135,17 @@ std::shared_ptr<const sim::PlantParameters> plantParametersOption(const CommandL
     return std::make_shared<const sim::PlantParameters>(std::move(*parameters));
 }
 
+Task taskFromOptions(const CommandLine& line, const QString& plant) {
+    const auto parameters = plantParametersOption(line, plant);
+    sim::RecordingConditions conditions;
+    conditions.parameters = parameters.get();
+    Task task = loadOrDemonstrate(
+        plant, line.value("demo"),
+        static_cast<std::uint64_t>(line.integer("demo-seed", 0, 1LL << 62)), conditions);
+    task.plantParameters = parameters;
+    return task;
+}
+
 QStringList stylesOption(const CommandLine& line, const QString& plant) {
     const QString value = line.value("styles");
     const QStringList styles = value == QLatin1String("all")

@@ -57,6 +57,11 @@ void addPlantParametersOption(CommandLine& line);
 std::shared_ptr<const sim::PlantParameters> plantParametersOption(const CommandLine& line,
                                                                   const QString& plant);
 
+/// The task of a command with --plant-params, --demo and --demo-seed: the demonstration file
+/// if one is given, else the plant's scripted demonstration recorded on the plant file's car (as
+/// the window records its own). The task keeps the plant file (null: the catalog's car).
+Task taskFromOptions(const CommandLine& line, const QString& plant);
+
 /// The styles --styles names for the plant ('all', or a comma-separated list); UsageError for
 /// none or an unknown one.
 QStringList stylesOption(const CommandLine& line, const QString& plant);
