@@ -83,4 +83,36 @@ inline void endWorkerThread(QThread& thread, QObject* worker, unsigned long wait
     delete worker;
 }
 
+/// A worker object on a thread of its own, hosted the one way the window hosts its workers: the
+/// worker moved onto a named thread when this is made, the thread started by start() (after the
+/// owner has connected to the worker), and ended when this goes (endWorkerThread: bounded, never
+/// terminated; the worker deleted after everything its thread did). Declare it after the worker
+/// it hosts; stop the worker's work (the flag it polls) before it goes.
+class WorkerThread {
+  public:
+    WorkerThread(QObject* worker, const QString& name, unsigned long waitMs)
+        : worker_(worker), waitMs_(waitMs) {
+        thread_.setObjectName(name);
+        worker_->moveToThread(&thread_);
+    }
+    ~WorkerThread() { endWorkerThread(thread_, worker_, waitMs_); }
+    WorkerThread(const WorkerThread&) = delete;
+    WorkerThread& operator=(const WorkerThread&) = delete;
+
+    void start() {
+        markThreadEnd(thread_);
+        thread_.start();
+    }
+    /// Runs f on the worker's thread, queued (postTo).
+    template <class F>
+    void post(F&& f) {
+        postTo(worker_, std::forward<F>(f));
+    }
+
+  private:
+    QThread thread_;
+    QObject* worker_;
+    unsigned long waitMs_;
+};
+
 }  // namespace prisca::devices

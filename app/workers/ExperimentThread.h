@@ -1,9 +1,9 @@
 #pragma once
 
 #include "app/workers/ExperimentWorker.h"
+#include "devices/ThreadHandOff.h"
 
 #include <QObject>
-#include <QThread>
 
 #include <memory>
 #include <vector>
@@ -35,8 +35,8 @@ class ExperimentThread : public QObject {
     void failed(const QString& message);
 
   private:
-    QThread thread_;
     ExperimentWorker* worker_;
+    devices::WorkerThread host_;  ///< the worker's thread (after the worker)
 };
 
 }  // namespace prisca::app

@@ -9,24 +9,23 @@ constexpr unsigned long kShutdownWaitMs = 5000;
 }
 
 IdentificationThread::IdentificationThread(QObject* parent)
-    : QObject(parent), worker_(new IdentificationWorker) {
-    thread_.setObjectName(QStringLiteral("prisca-identify"));
-    worker_->moveToThread(&thread_);
+    : QObject(parent),
+      worker_(new IdentificationWorker),
+      host_(worker_, QStringLiteral("prisca-identify"), kShutdownWaitMs) {
     connect(worker_, &IdentificationWorker::progress, this, &IdentificationThread::progress);
     connect(worker_, &IdentificationWorker::finished, this, &IdentificationThread::finished);
     connect(worker_, &IdentificationWorker::failed, this, &IdentificationThread::failed);
-    devices::markThreadEnd(thread_);
-    thread_.start();
+    host_.start();
 }
 
 IdentificationThread::~IdentificationThread() {
     worker_->cancel();
-    devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
+    // host_, destroyed next, ends the thread and deletes the worker.
 }
 
 void IdentificationThread::start(const IdentificationRequest& request) {
     worker_->prepare();
-    devices::postTo(worker_, [w = worker_, request] { w->run(request); });
+    host_.post([w = worker_, request] { w->run(request); });
 }
 
 void IdentificationThread::cancel() {

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "app/workers/IdentificationWorker.h"
+#include "devices/ThreadHandOff.h"
 
 #include <QObject>
-#include <QThread>
 
 #include <memory>
 
@@ -31,8 +31,8 @@ class IdentificationThread : public QObject {
     void failed(int id, const QString& message);
 
   private:
-    QThread thread_;
     IdentificationWorker* worker_;
+    devices::WorkerThread host_;  ///< the worker's thread (after the worker)
 };
 
 }  // namespace prisca::app

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "app/workers/RecordingWorker.h"
+#include "devices/ThreadHandOff.h"
 
 #include <QObject>
-#include <QThread>
 
 #include <memory>
 
@@ -37,8 +37,8 @@ class RecordingThread : public QObject {
     void failed(const QString& message);
 
   private:
-    QThread thread_;
     RecordingWorker* worker_;
+    devices::WorkerThread host_;  ///< the worker's thread (after the worker)
 };
 
 }  // namespace prisca::app

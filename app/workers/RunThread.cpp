@@ -8,15 +8,16 @@ namespace {
 constexpr unsigned long kShutdownWaitMs = 3000;
 }
 
-RunThread::RunThread(QObject* parent) : QObject(parent), worker_(new RunWorker) {
+RunThread::RunThread(QObject* parent)
+    : QObject(parent),
+      worker_(new RunWorker),
+      host_(worker_, QStringLiteral("prisca-run"), kShutdownWaitMs) {
     qRegisterMetaType<RunRequest>();
     qRegisterMetaType<LiveSample>();
     qRegisterMetaType<std::shared_ptr<const core::RunLog>>();
     qRegisterMetaType<QVector<LiveSample>>();
     qRegisterMetaType<RunPhase>();
     qRegisterMetaType<sim::TrialSummary>();
-    thread_.setObjectName(QStringLiteral("prisca-run"));
-    worker_->moveToThread(&thread_);
     connect(worker_, &RunWorker::samplesReady, this, &RunThread::samplesReady);
     connect(worker_, &RunWorker::phaseChanged, this, [this](RunPhase phase) {
         phase_ = phase;
@@ -33,44 +34,43 @@ RunThread::RunThread(QObject* parent) : QObject(parent), worker_(new RunWorker) 
                 emit runLogReady(lastRunLog_);
             });
     connect(worker_, &RunWorker::failed, this, &RunThread::failed);
-    devices::markThreadEnd(thread_);
-    thread_.start();
+    host_.start();
 }
 
 RunThread::~RunThread() {
     worker_->requestCancel();
-    devices::postTo(worker_, [w = worker_] { w->stop(); });
-    devices::endWorkerThread(thread_, worker_, kShutdownWaitMs);
+    host_.post([w = worker_] { w->stop(); });
+    // host_, destroyed next, ends the thread and deletes the worker.
 }
 
 void RunThread::start(const RunRequest& request) {
-    devices::postTo(worker_, [w = worker_, request] { w->start(request); });
+    host_.post([w = worker_, request] { w->start(request); });
 }
 
 void RunThread::pause() {
-    devices::postTo(worker_, [w = worker_] { w->pause(); });
+    host_.post([w = worker_] { w->pause(); });
 }
 
 void RunThread::resume() {
-    devices::postTo(worker_, [w = worker_] { w->resume(); });
+    host_.post([w = worker_] { w->resume(); });
 }
 
 void RunThread::stop() {
     worker_->requestCancel();  // training polls this; stop() itself waits in the queue
-    devices::postTo(worker_, [w = worker_] { w->stop(); });
+    host_.post([w = worker_] { w->stop(); });
 }
 
 void RunThread::emergencyStop() {
     worker_->requestEmergencyStop();
-    devices::postTo(worker_, [w = worker_] { w->engageEmergencyStop(); });
+    host_.post([w = worker_] { w->engageEmergencyStop(); });
 }
 
 void RunThread::resetEmergencyStop() {
-    devices::postTo(worker_, [w = worker_] { w->resetEmergencyStop(); });
+    host_.post([w = worker_] { w->resetEmergencyStop(); });
 }
 
 void RunThread::setSpeed(double speed) {
-    devices::postTo(worker_, [w = worker_, speed] { w->setSpeed(speed); });
+    host_.post([w = worker_, speed] { w->setSpeed(speed); });
 }
 
 }  // namespace prisca::app

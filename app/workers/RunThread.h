@@ -1,9 +1,9 @@
 #pragma once
 
 #include "app/workers/RunWorker.h"
+#include "devices/ThreadHandOff.h"
 
 #include <QObject>
-#include <QThread>
 
 namespace prisca::app {
 
@@ -44,8 +44,8 @@ class RunThread : public QObject {
     void failed(const QString& message);
 
   private:
-    QThread thread_;
     RunWorker* worker_;
+    devices::WorkerThread host_;  ///< the worker's thread (after the worker)
     RunPhase phase_ = RunPhase::Idle;
     std::shared_ptr<const core::RunLog> lastRunLog_;
 };
