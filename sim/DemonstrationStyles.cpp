@@ -61,9 +61,7 @@ core::Demonstration DemonstrationStyles::record(const QString& plant, const QStr
                                         .arg(plant, conditions.parameters->plant)
                                         .toStdString());
     }
-    core::Demonstration demonstration = entry->styles.record(style, seed, timing, conditions);
-    demonstration.metadata.insert(QStringLiteral("style"), style);
-    return demonstration;
+    return recordInStyle(entry->styles, style, seed, timing, conditions);
 }
 
 }  // namespace prisca::sim

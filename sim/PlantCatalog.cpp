@@ -112,8 +112,7 @@ std::unique_ptr<Plant> PlantCatalog::create(const QString& name, const Simulatio
 
 std::unique_ptr<Plant> PlantCatalog::create(const PlantParameters& parameters,
                                             const SimulationTiming& timing) {
-    get(parameters.plant);  // an unknown plant is named with the known ones
-    return makePlant(parameters, timing);
+    return makePlant(parameters, timing);  // an unknown plant is named with the known ones
 }
 
 MethodTuning PlantCatalog::tuning(const PlantInfo& info) {
@@ -139,10 +138,7 @@ PlantInfo PlantCatalog::describe(const QString& name) {
 core::Demonstration PlantCatalog::demonstrate(const QString& name, std::uint64_t seed,
                                               const SimulationTiming& timing) {
     const PlantEntry& entry = get(name);  // an unknown plant is named with the known ones
-    const QString classic = entry.styles.list().front().name;
-    core::Demonstration demonstration = entry.styles.record(classic, seed, timing, {});
-    demonstration.metadata.insert(QStringLiteral("style"), classic);  // as DemonstrationStyles
-    return demonstration;
+    return recordInStyle(entry.styles, entry.styles.list().front().name, seed, timing, {});
 }
 
 }  // namespace prisca::sim

@@ -34,6 +34,16 @@ struct StyleSet {
                                   const RecordingConditions& conditions) = nullptr;
 };
 
+/// A style of the set recorded, the style named in the demonstration's metadata ("style"): what
+/// every caller records through (DemonstrationStyles by name, the catalog's classic one).
+inline core::Demonstration recordInStyle(const StyleSet& styles, const QString& style,
+                                         std::uint64_t seed, const SimulationTiming& timing,
+                                         const RecordingConditions& conditions) {
+    core::Demonstration demonstration = styles.record(style, seed, timing, conditions);
+    demonstration.metadata.insert(QStringLiteral("style"), style);
+    return demonstration;
+}
+
 /// The slide-car's, the acrobot's and the aircraft's styles (their scripted operators).
 StyleSet slideCarStyles();
 StyleSet acrobotStyles();

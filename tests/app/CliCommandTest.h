@@ -86,4 +86,21 @@ inline QList<double> lastRow(const QString& path) {
     return values;
 }
 
+// A test's own folder, the CLI run in it, and the slide-car's demonstration (car.csv) every
+// command test starts from.
+class CliWorkspace {
+  protected:
+    QTemporaryDir dir_;
+    QString path(const QString& name) const { return dir_.filePath(name); }
+    CliResult cli(const QStringList& arguments) const { return runCli(arguments, dir_.path()); }
+    /// For initTestCase: the folder made and car.csv written in it.
+    void writeCarDemonstration() {
+        QVERIFY(dir_.isValid());
+        const CliResult demo =
+            cli({"demo", "--plant", "slidecar", "--seed", "2", "--out", "car.csv"});
+        QCOMPARE(demo.exitCode, 0);
+        QVERIFY(QFile::exists(path("car.csv")));
+    }
+};
+
 }  // namespace prisca::clitest

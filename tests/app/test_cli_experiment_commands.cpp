@@ -4,21 +4,10 @@
 
 using namespace prisca::clitest;
 
-class TestCliExperimentCommands : public QObject {
+class TestCliExperimentCommands : public QObject, private CliWorkspace {
     Q_OBJECT
-  private:
-    QTemporaryDir dir_;
-    QString path(const QString& name) const { return dir_.filePath(name); }
-    CliResult cli(const QStringList& arguments) const { return runCli(arguments, dir_.path()); }
-
   private slots:
-    void initTestCase() {
-        QVERIFY(dir_.isValid());
-        const CliResult demo =
-            cli({"demo", "--plant", "slidecar", "--seed", "2", "--out", "car.csv"});
-        QCOMPARE(demo.exitCode, 0);
-        QVERIFY(QFile::exists(path("car.csv")));
-    }
+    void initTestCase() { writeCarDemonstration(); }
 
     void table1_variantsGiveAPerVariantBreakdownAndLearningCurves() {
         QDir(dir_.path()).mkpath("variants");

@@ -4,21 +4,10 @@
 
 using namespace prisca::clitest;
 
-class TestCliRigCommands : public QObject {
+class TestCliRigCommands : public QObject, private CliWorkspace {
     Q_OBJECT
-  private:
-    QTemporaryDir dir_;
-    QString path(const QString& name) const { return dir_.filePath(name); }
-    CliResult cli(const QStringList& arguments) const { return runCli(arguments, dir_.path()); }
-
   private slots:
-    void initTestCase() {
-        QVERIFY(dir_.isValid());
-        const CliResult demo =
-            cli({"demo", "--plant", "slidecar", "--seed", "2", "--out", "car.csv"});
-        QCOMPARE(demo.exitCode, 0);
-        QVERIFY(QFile::exists(path("car.csv")));
-    }
+    void initTestCase() { writeCarDemonstration(); }
 
     void rig_virtualRunsTheWholeChainHeadless() {
         // Camera -> tracker -> estimator -> PRISCA -> link -> pseudo-terminal -> car, in real

@@ -73,6 +73,20 @@ Perturbation sessionTrial(std::uint64_t day, int index) {
 class TestPlantParameters : public QObject {
     Q_OBJECT
   private slots:
+    // The plants a file can describe are the catalog's, in its order (PlantParameters keeps its
+    // own table below the catalog), and an unknown one is named with them by both.
+    void plants_areTheCatalogsInItsOrder() {
+        QCOMPARE(plantParameterPlants(), PlantCatalog::names());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, plantParameterSpecs("boat"));
+        try {
+            makePlant(PlantParameters{QStringLiteral("boat"), {}, {}});
+            QFAIL("a plant nobody declared was built");
+        } catch (const std::invalid_argument& e) {
+            QVERIFY2(QString::fromUtf8(e.what()).contains(PlantCatalog::names().join(' ')),
+                     e.what());
+        }
+    }
+
     // Every plant declares its parameters, each default inside its own range, and the
     // catalog's values make exactly the catalog's plant.
     void specs_defaultsInRangeAndTheCatalogPlant() {
