@@ -103,7 +103,7 @@ MainWindow::MainWindow(LanguageSwitcher& languages, QWidget* parent)
       versionLabel_(new QLabel(this)) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(kProductName);
-    MessageLog::captureQtMessages();  // the workers' messages (prisca.* categories) in the log
+    log_->captureQtMessages();  // the workers' messages (prisca.* categories) in the log
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
     // The right-hand panels run the full height; the charts sit under the arena only.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -387,7 +387,7 @@ bool MainWindow::openSession(const QString& path) {
     rememberRecent(path);
     const QString file = QFileInfo(path).fileName();
     if (!session_->messages().isEmpty()) {
-        logMessage(tr("Session"), MessageLevel::Info,
+        logMessage(this, tr("Session"), MessageLevel::Info,
                    tr("The messages saved with %1 follow (%2 lines).")
                        .arg(file)
                        .arg(session_->messages().size()));
@@ -417,7 +417,7 @@ bool MainWindow::saveSession(const QString& path) {
 
 void MainWindow::say(const QString& source, const QString& text, int ms) {
     statusBar()->showMessage(text, ms);
-    logMessage(source, MessageLevel::Info, text);
+    logMessage(this, source, MessageLevel::Info, text);
 }
 
 void MainWindow::rememberRecent(const QString& path) {

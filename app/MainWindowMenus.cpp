@@ -465,7 +465,7 @@ void MainWindow::applyEmergencyInputs() {
         const QKeySequence key = QKeySequence::fromString(name, QKeySequence::PortableText);
         if (key.isEmpty()) {
             logMessage(
-                tr("E-STOP"), MessageLevel::Warning,
+                this, tr("E-STOP"), MessageLevel::Warning,
                 tr("The E-STOP key \"%1\" in the settings is no key; it is left out.").arg(name));
         } else {
             keys << key;
@@ -478,7 +478,7 @@ void MainWindow::applyEmergencyInputs() {
             .toStringList();
     for (const QString& name : buttons) {
         if (!GamepadEmergencyButton::knownButton(name)) {
-            logMessage(tr("E-STOP"), MessageLevel::Warning,
+            logMessage(this, tr("E-STOP"), MessageLevel::Warning,
                        tr("The gamepad button \"%1\" in the settings is no button SDL knows; it is "
                           "left out.")
                            .arg(name));

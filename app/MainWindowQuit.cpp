@@ -115,7 +115,7 @@ void MainWindow::stopWork(bool keep) {
         recordPanel_->stopRecording();
     }
     modelPanel_->cancel();  // nothing of it is kept: the session keeps the model it had
-    logMessage(tr("Quit"), MessageLevel::Info,
+    logMessage(this, tr("Quit"), MessageLevel::Info,
                keep ? tr("Quitting: the work under way is stopped and what is done kept.")
                     : tr("Quitting: the work under way is discarded."));
 }
@@ -138,20 +138,20 @@ void MainWindow::quitWhenIdle() {
             const QString path =
                 QDir(keptFolder()).filePath(QStringLiteral("run-%1.csv").arg(stamp));
             if (runPanel_->exportRunLog(path, &error)) {
-                logMessage(tr("Quit"), MessageLevel::Info,
+                logMessage(this, tr("Quit"), MessageLevel::Info,
                            tr("The run's log was kept in %1").arg(path));
             } else {
-                logMessage(tr("Quit"), MessageLevel::Error, error);
+                logMessage(this, tr("Quit"), MessageLevel::Error, error);
             }
         }
         if (!experimentsPanel_->tableText(core::TableFormat::Markdown).isEmpty()) {
             const QString path =
                 QDir(keptFolder()).filePath(QStringLiteral("experiment-%1.md").arg(stamp));
             if (experimentsPanel_->exportTable(path, &error)) {
-                logMessage(tr("Quit"), MessageLevel::Info,
+                logMessage(this, tr("Quit"), MessageLevel::Info,
                            tr("The experiment's table was kept in %1").arg(path));
             } else {
-                logMessage(tr("Quit"), MessageLevel::Error, error);
+                logMessage(this, tr("Quit"), MessageLevel::Error, error);
             }
         }
     }

@@ -15,10 +15,11 @@ namespace prisca::app {
 
 namespace {
 
-// Guards activeLog against a worker posting while the window closes; recursive because a line
+// The log that receives the prisca.* categories (Qt's handler is a plain function, one per
+// process). Guarded against a worker posting while the window closes; recursive because a line
 // added on the window's thread may make a slot log again (a warning from a slot).
-QRecursiveMutex activeMutex;
-MessageLog* activeLog = nullptr;
+QRecursiveMutex capturingMutex;
+MessageLog* capturingLog = nullptr;
 QtMessageHandler previousHandler = nullptr;
 
 void handleQtMessage(QtMsgType type, const QMessageLogContext& context, const QString& message) {
@@ -27,7 +28,10 @@ void handleQtMessage(QtMsgType type, const QMessageLogContext& context, const QS
         const MessageLevel level = type == QtInfoMsg      ? MessageLevel::Info
                                    : type == QtWarningMsg ? MessageLevel::Warning
                                                           : MessageLevel::Error;
-        logMessage(QString(category.mid(7)), level, message);
+        QMutexLocker lock(&capturingMutex);
+        if (capturingLog) {
+            capturingLog->post(QString(category.mid(7)), level, message);
+        }
     }
     if (previousHandler) {
         previousHandler(type, context, message);
@@ -37,20 +41,23 @@ void handleQtMessage(QtMsgType type, const QMessageLogContext& context, const QS
 }  // namespace
 
 MessageLog::MessageLog(QObject* parent) : QObject(parent) {
-    QMutexLocker lock(&activeMutex);
-    activeLog = this;
+    setObjectName(QStringLiteral("messageLog"));
 }
 
 MessageLog::~MessageLog() {
-    QMutexLocker lock(&activeMutex);
-    if (activeLog == this) {
-        activeLog = nullptr;
+    QMutexLocker lock(&capturingMutex);
+    if (capturingLog == this) {
+        capturingLog = nullptr;
     }
 }
 
-MessageLog* MessageLog::active() {
-    QMutexLocker lock(&activeMutex);
-    return activeLog;
+MessageLog* MessageLog::of(const QObject* context) {
+    for (const QObject* node = context; node; node = node->parent()) {
+        if (auto* log = node->findChild<MessageLog*>(QString(), Qt::FindDirectChildrenOnly)) {
+            return log;
+        }
+    }
+    return nullptr;
 }
 
 void MessageLog::post(const QString& source, MessageLevel level, const QString& text) {
@@ -177,12 +184,14 @@ void MessageLog::captureQtMessages() {
         return true;
     }();
     Q_UNUSED(installed);
+    QMutexLocker lock(&capturingMutex);
+    capturingLog = this;
 }
 
-void logMessage(const QString& source, MessageLevel level, const QString& text) {
-    QMutexLocker lock(&activeMutex);
-    if (activeLog) {
-        activeLog->post(source, level, text);
+void logMessage(const QObject* context, const QString& source, MessageLevel level,
+                const QString& text) {
+    if (MessageLog* log = MessageLog::of(context)) {
+        log->post(source, level, text);
     }
 }
 
@@ -228,14 +237,14 @@ void dropTranslator(QLabel* label) {
 void showStatus(QLabel* label, const QString& source, const QString& text, MessageLevel level) {
     dropTranslator(label);
     label->setText(text);
-    logMessage(source, level, text);
+    logMessage(label, source, level, text);
 }
 
 void showStatus(QLabel* label, const QString& source, std::function<QString()> text,
                 MessageLevel level) {
     dropTranslator(label);
     auto* translator = new LabelTranslator(label, std::move(text));
-    logMessage(source, level, translator->shown());
+    logMessage(label, source, level, translator->shown());
 }
 
 void setTranslatedText(QLabel* label, std::function<QString()> text) {
@@ -244,7 +253,7 @@ void setTranslatedText(QLabel* label, std::function<QString()> text) {
 }
 
 void warningBox(QWidget* parent, const QString& title, const QString& text) {
-    logMessage(title, MessageLevel::Warning, text);
+    logMessage(parent, title, MessageLevel::Warning, text);
     ModalDialog::warning(parent, title, text);
 }
 

@@ -27,8 +27,10 @@ struct LogEntry {
 
 /// The window's message log: every status, warning and error the panels show, and the info,
 /// warnings and errors the workers write under the `prisca.*` logging categories. One per
-/// window (MessageLog::active() while it lives); posting from any thread is safe (a worker's
-/// message is queued to the window's thread). Kept to the last kCapacity lines.
+/// window, a child of it: a panel, dialog or label finds its window's log by walking up the
+/// object tree (MessageLog::of), so two windows keep two logs and a panel built outside any
+/// window logs nowhere. Posting from any thread is safe (a worker's message is queued to the
+/// window's thread). Kept to the last kCapacity lines.
 class MessageLog : public QObject {
     Q_OBJECT
   public:
@@ -39,8 +41,10 @@ class MessageLog : public QObject {
     explicit MessageLog(QObject* parent = nullptr);
     ~MessageLog() override;
 
-    /// The log of the window alive now, or null (panels in a test without a window).
-    static MessageLog* active();
+    /// The log of the window `context` is in: the first MessageLog that is a direct child of
+    /// `context` or of one of its ancestors; null when there is none (a panel in a test without
+    /// a window, a page not yet placed). Call on the object's thread.
+    static MessageLog* of(const QObject* context);
     /// Adds a line; from another thread, queued to this object's thread.
     void post(const QString& source, MessageLevel level, const QString& text);
 
@@ -57,9 +61,12 @@ class MessageLog : public QObject {
     /// Lines read back from toJson()'s form; malformed ones are skipped. Appended in order.
     int append(const QJsonArray& saved);
 
-    /// Routes messages of the `prisca.*` logging categories (info and above) into the active
-    /// log, then on to the handler that was installed before (stderr). Once per process.
-    static void captureQtMessages();
+    /// Routes messages of the `prisca.*` logging categories (info and above) into this log, then
+    /// on to the handler that was installed before (stderr), until this log is destroyed or
+    /// another takes them. Qt's message handler is one per process and carries no context, so
+    /// this is the one place the log is reached without being handed: the window that owns it
+    /// calls this once.
+    void captureQtMessages();
 
   signals:
     /// A line was added (index in entries()), or the last line's repeat count grew.
@@ -75,9 +82,10 @@ class MessageLog : public QObject {
     QVector<LogEntry> entries_;
 };
 
-/// Posts to the active log, if any.
-void logMessage(const QString& source, MessageLevel level, const QString& text);
-/// Shows `text` on a panel's status label and logs it.
+/// Posts to the log of the window `context` is in (MessageLog::of), if any.
+void logMessage(const QObject* context, const QString& source, MessageLevel level,
+                const QString& text);
+/// Shows `text` on a panel's status label and logs it in the label's window's log.
 void showStatus(QLabel* label, const QString& source, const QString& text,
                 MessageLevel level = MessageLevel::Info);
 /// The same for a message that follows the interface language: `text` is called now and again

@@ -412,7 +412,7 @@ void ExperimentsPanel::keepResult() {
     kept.curvesCancelled = lastCurvesCancelled_;
     QString error;
     if (!saveKeptExperiment(keptExperimentPath(), kept, &error)) {
-        logMessage(tr("Experiments"), MessageLevel::Warning,
+        logMessage(this, tr("Experiments"), MessageLevel::Warning,
                    tr("The result could not be kept for the next session: %1").arg(error));
     }
 }
@@ -425,7 +425,7 @@ void ExperimentsPanel::restoreKeptResult() {
     QString error;
     const auto kept = loadKeptExperiment(path, &error);
     if (!kept) {
-        logMessage(tr("Experiments"), MessageLevel::Warning,
+        logMessage(this, tr("Experiments"), MessageLevel::Warning,
                    tr("The last session's experiment could not be shown again: %1").arg(error));
         return;
     }

@@ -243,7 +243,7 @@ void MappingPanel::showFit() {
     QStringList warnings = f.warnings;
     if (!refittingForLanguage_) {
         for (const QString& warning : f.warnings) {
-            logMessage(tr("Mapping"), MessageLevel::Warning, warning);
+            logMessage(this, tr("Mapping"), MessageLevel::Warning, warning);
         }
     }
     // A negative R² is not a typo: the fit predicts that state's change worse than its mean.

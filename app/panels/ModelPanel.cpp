@@ -306,7 +306,7 @@ void ModelPanel::showResult(int id, std::shared_ptr<const sim::IdentificationRes
             session_.setIdentifiedModel(result, from);
             progress_->setFormat(tr("Done"));
             // The figures are the summary's, just below (and in the log with this line).
-            logMessage(tr("Model"), MessageLevel::Info, summary_->text());
+            logMessage(this, tr("Model"), MessageLevel::Info, summary_->text());
             showStatus(status_, tr("Model"), [took] {
                 return tr("Identified in %1; mpc plans through the new model.").arg(took);
             });

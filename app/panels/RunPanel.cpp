@@ -354,7 +354,7 @@ void RunPanel::startRun() {
     divergence_->hide();
     exportLog_->setEnabled(false);
     emit runStarting();
-    logMessage(tr("Run"), MessageLevel::Info,
+    logMessage(this, tr("Run"), MessageLevel::Info,
                tr("Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5")
                    .arg(sim::MethodCatalog::get(request.method).label)
                    .arg(request.trials)
@@ -444,7 +444,7 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
                    : QStringLiteral("—"));
     cell(3, QString::number(summary.trackingRms, 'f', 3));
     const QString tracking = tr("tracking RMS %1 m").arg(summary.trackingRms, 0, 'f', 3);
-    logMessage(tr("Run"), MessageLevel::Info,
+    logMessage(this, tr("Run"), MessageLevel::Info,
                (planar ? tr("Trial %1: parked %2 cm and %3 deg off; %4")
                              .arg(trial + 1)
                              .arg(summary.finalPositionError * 100.0, 0, 'f', 1)

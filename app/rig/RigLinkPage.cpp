@@ -141,7 +141,7 @@ void RigLinkPage::showLinkStatus(const devices::LinkStatus& status) {
                             .arg(status.lastError);
     if (key != loggedLinkState_) {
         loggedLinkState_ = key;
-        logMessage(tr("Link"),
+        logMessage(this, tr("Link"),
                    status.lastError.isEmpty() ? MessageLevel::Info : MessageLevel::Warning, state);
     }
 }

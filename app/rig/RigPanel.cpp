@@ -65,9 +65,9 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
     statusTimer_ = new QTimer(this);
     statusTimer_->setInterval(1000);
     // The pages first: their handlers of the session's signals run before the panel's.
-    cameraPage_ = new RigCameraPage(rig_, *setup_, session_, *view_);
-    linkPage_ = new RigLinkPage(rig_, session_);
-    setupPage_ = new RigSetupPage(rig_, *setup_, emergency_, *view_);
+    cameraPage_ = new RigCameraPage(rig_, *setup_, session_, *view_, this);
+    linkPage_ = new RigLinkPage(rig_, session_, this);
+    setupPage_ = new RigSetupPage(rig_, *setup_, emergency_, *view_, this);
     buildLayout();
     connectParts();
     statusTimer_->start();
@@ -173,7 +173,7 @@ void RigPanel::connectParts() {
     connect(setupPage_, &RigSetupPage::replayRequested, this, &RigPanel::replayRequested);
     connect(setupPage_, &RigSetupPage::bundleFailed, this, [this](const QString& problem) {
         trialInfo_->setText(trialInfo_->text() + QLatin1Char('\n') + problem);
-        logMessage(tr("Rig trial"), MessageLevel::Warning, problem);
+        logMessage(this, tr("Rig trial"), MessageLevel::Warning, problem);
     });
     connect(&session_, &LabSession::demonstrationChanged, this, &RigPanel::showTask);
 }

@@ -273,10 +273,51 @@ class TestGuiWindow : public QObject {
         }));
     }
 
+    // No global log: a label's status goes to the log of the window it sits in, found up the
+    // object tree; a label in no window logs nowhere; the workers' categories go to the log
+    // that took them, and nowhere once it is gone.
+    void messageLog_isTheWindowsOwnFoundUpTheTree() {
+        QWidget first;
+        QWidget second;
+        auto* firstLog = new MessageLog(&first);
+        auto* secondLog = new MessageLog(&second);
+        auto* inner = new QWidget(&first);
+        auto* firstLabel = new QLabel(inner);
+        auto* secondLabel = new QLabel(&second);
+        QLabel orphan;
+        QCOMPARE(MessageLog::of(firstLabel), firstLog);
+        QCOMPARE(MessageLog::of(secondLabel), secondLog);
+        QCOMPARE(MessageLog::of(&orphan), nullptr);
+        showStatus(firstLabel, QStringLiteral("First"), QStringLiteral("to the first"));
+        showStatus(secondLabel, QStringLiteral("Second"), QStringLiteral("to the second"));
+        showStatus(&orphan, QStringLiteral("Orphan"), QStringLiteral("to no log"));
+        QCOMPARE(orphan.text(), QStringLiteral("to no log"));  // shown all the same
+        QCOMPARE(firstLog->entries().size(), 1);
+        QCOMPARE(firstLog->entries().front().text, QStringLiteral("to the first"));
+        QCOMPARE(secondLog->entries().size(), 1);
+        QCOMPARE(secondLog->entries().front().source, QStringLiteral("Second"));
+
+        secondLog->captureQtMessages();
+        const auto fromWorker = [](const char* text) {
+            std::unique_ptr<QThread> worker(
+                QThread::create([text] { qCWarning(lcTestWorker, "%s", text); }));
+            worker->start();
+            return worker->wait(10000);
+        };
+        QVERIFY(fromWorker("to the capturing log"));
+        QTRY_COMPARE(secondLog->entries().size(), 2);
+        QCOMPARE(secondLog->entries().back().text, QStringLiteral("to the capturing log"));
+        QCOMPARE(firstLog->entries().size(), 1);
+        delete secondLog;
+        QVERIFY(fromWorker("after the log is gone"));  // dropped, not posted to a dead log
+        QCoreApplication::processEvents();
+        QCOMPARE(firstLog->entries().size(), 1);
+    }
+
     void messageLog_survivesARestart() {
         {
             Window w;
-            logMessage(QStringLiteral("Test"), MessageLevel::Error,
+            logMessage(&w.window, QStringLiteral("Test"), MessageLevel::Error,
                        QStringLiteral("before the restart"));
             QTRY_VERIFY(!w.window.messageLog().entries().isEmpty());
             QVERIFY(w.window.close());  // nothing under way: no question
