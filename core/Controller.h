@@ -80,8 +80,8 @@ class Controller {
     /// the observation with the reference of the time it was taken and applies the
     /// demonstration's action of now (that index + the latency). Takes effect from the next
     /// reset(); controllers that track no reference ignore it. The simulation and the rig both
-    /// set it from EpisodeSettings::compensatedLatencySteps().
-    virtual void setLatencyCompensation(int steps) { (void)steps; }
+    /// set it from EpisodeSettings::compensatedLoopLatencySteps().
+    virtual void setLoopLatencySteps(int steps) { (void)steps; }
     /// The learned policy parameters theta (p x m) for logging and plotting, or nullptr for a
     /// controller that learns nothing.
     virtual const Eigen::MatrixXd* learnedParameters() const { return nullptr; }

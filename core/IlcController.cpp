@@ -80,8 +80,8 @@ const ControlStep& IlcController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     const Demonstration& demo = *problem_.demonstration;
     const int k = step_;
     const int j = std::min(k, demo.length() - 1);
-    // The observation is latency_ steps old: its error against the reference of that time.
-    const int seen = std::clamp(k - latency_, 0, demo.length() - 1);
+    // The observation is loopLatencySteps_ steps old: its error against the reference of that time.
+    const int seen = std::clamp(k - loopLatencySteps_, 0, demo.length() - 1);
     problem_.deviation.deviation(observation, demo.states.row(seen).transpose(), record_.deviation);
     feedback_.update(record_.deviation, seen);
     signals_.push_back(feedback_.signal());

@@ -43,7 +43,7 @@ class IlcController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
-    void setLatencyCompensation(int steps) override { latency_ = steps > 0 ? steps : 0; }
+    void setLoopLatencySteps(int steps) override { loopLatencySteps_ = steps > 0 ? steps : 0; }
 
     /// The learned feedforward f (m x steps it covers), column k for step k.
     const Eigen::MatrixXd& feedforward() const { return feedforward_; }
@@ -62,7 +62,7 @@ class IlcController : public Controller {
     ControlStep record_;
     int step_ = 0;
     int iterations_ = 0;
-    int latency_ = 0;  // the sensor latency compensated [steps]
+    int loopLatencySteps_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

@@ -64,13 +64,13 @@ double LeastStateDeviationMatcher::distance(const Eigen::Ref<const Eigen::Vector
 int LeastStateDeviationMatcher::match(const Eigen::Ref<const Eigen::VectorXd>& state) {
     const int T = length();
     if (parameters_.mode == MatchingParameters::Mode::TimeDriven) {
-        last_ = std::clamp(step_ - latency_, 0, T - 1);
+        last_ = std::clamp(step_ - loopLatencySteps_, 0, T - 1);
         ++step_;
         return last_;
     }
     int first = std::max(last_, 0);
     if (parameters_.maxLag > 0) {
-        first = std::max(first, std::min(step_ - latency_ - parameters_.maxLag, T - 1));
+        first = std::max(first, std::min(step_ - loopLatencySteps_ - parameters_.maxLag, T - 1));
     }
     const int end = std::min(T - 1, first + parameters_.window);
     constexpr double kTwoPi = 2.0 * M_PI;

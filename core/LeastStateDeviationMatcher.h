@@ -45,8 +45,8 @@ class LeastStateDeviationMatcher {
     /// The sensor latency compensated [steps] >= 0: time-driven matching returns
     /// j_k = k - latency (the sample of the time the observation was taken) and maxLag counts
     /// from there.
-    void setLatency(int steps) { latency_ = std::max(0, steps); }
-    int latency() const { return latency_; }
+    void setLoopLatencySteps(int steps) { loopLatencySteps_ = std::max(0, steps); }
+    int loopLatencySteps() const { return loopLatencySteps_; }
     /// The reference index for the next observation (call once per control step).
     int match(const Eigen::Ref<const Eigen::VectorXd>& state);
     /// Weighted L1 distance between a state and demonstration sample j.
@@ -65,7 +65,7 @@ class LeastStateDeviationMatcher {
     MatchingParameters parameters_;
     int last_ = -1;
     int step_ = 0;
-    int latency_ = 0;
+    int loopLatencySteps_ = 0;
 };
 
 }  // namespace prisca::core

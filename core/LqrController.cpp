@@ -71,9 +71,9 @@ void LqrController::reset(ResetMode) {
     step_ = 0;
 }
 
-void LqrController::setLatencyCompensation(int steps) {
-    latency_ = std::max(0, steps);
-    matcher_.setLatency(latency_);
+void LqrController::setLoopLatencySteps(int steps) {
+    loopLatencySteps_ = std::max(0, steps);
+    matcher_.setLoopLatencySteps(loopLatencySteps_);
 }
 
 std::unique_ptr<Controller> LqrController::clone() const {
@@ -89,7 +89,7 @@ const ControlStep& LqrController::step(const Eigen::Ref<const Eigen::VectorXd>& 
     // The observation's own time (latency compensated); the action of now.
     const int j = matcher_.match(observation);
     record_.deviation = problem_.deviation.deviation(observation, demo.states.row(j).transpose());
-    const int now = std::min(j + std::min(latency_, step_), demo.length() - 1);
+    const int now = std::min(j + std::min(loopLatencySteps_, step_), demo.length() - 1);
     record_.step = step_;
     record_.referenceIndex = j;
     record_.referenceAction = demo.actions.row(now).transpose();

@@ -46,7 +46,7 @@ class LqrController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
-    void setLatencyCompensation(int steps) override;
+    void setLoopLatencySteps(int steps) override;
 
     /// K_k (m x n) of step k (the last one past the trial's planned end).
     const Eigen::MatrixXd& gain(int k) const;
@@ -59,7 +59,7 @@ class LqrController : public Controller {
     std::vector<Eigen::MatrixXd> gains_;  // K_0 .. K_{T-1}
     ControlStep record_;
     int step_ = 0;
-    int latency_ = 0;  // the sensor latency compensated [steps]
+    int loopLatencySteps_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

@@ -32,7 +32,8 @@ const ControlStep& PdController::step(const Eigen::Ref<const Eigen::VectorXd>& o
     record_.step = step_;
     record_.referenceIndex = j;
     record_.referenceAction =
-        demo.actions.row(std::min(j + std::min(latency_, step_), demo.length() - 1)).transpose();
+        demo.actions.row(std::min(j + std::min(loopLatencySteps_, step_), demo.length() - 1))
+            .transpose();
     record_.action = record_.referenceAction;
     feedback_.apply(record_.action, j);
     problem_.limits.saturate(record_.action);

@@ -25,9 +25,9 @@ class PdController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
-    void setLatencyCompensation(int steps) override {
-        latency_ = std::max(0, steps);
-        matcher_.setLatency(latency_);
+    void setLoopLatencySteps(int steps) override {
+        loopLatencySteps_ = std::max(0, steps);
+        matcher_.setLoopLatencySteps(loopLatencySteps_);
     }
 
     const PdParameters& parameters() const { return feedback_.parameters(); }
@@ -46,7 +46,7 @@ class PdController : public Controller {
     PdFeedback feedback_;
     ControlStep record_;
     int step_ = 0;
-    int latency_ = 0;  // the sensor latency compensated [steps]
+    int loopLatencySteps_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

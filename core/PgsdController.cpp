@@ -44,7 +44,7 @@ const ControlStep& PgsdController::step(const Eigen::Ref<const Eigen::VectorXd>&
     const int m = demo.actionDimension();
     const int p = features_.featureCount();
     // The reference of the time the observation was taken; the action of now.
-    const int j = std::clamp(step_ - latency_, 0, demo.length() - 1);
+    const int j = std::clamp(step_ - loopLatencySteps_, 0, demo.length() - 1);
 
     Sample sample;
     sample.deviation = problem_.deviation.deviation(observation, demo.states.row(j).transpose());
@@ -77,7 +77,8 @@ const ControlStep& PgsdController::step(const Eigen::Ref<const Eigen::VectorXd>&
     record_.step = step_;
     record_.referenceIndex = j;
     record_.referenceAction =
-        demo.actions.row(std::min(j + std::min(latency_, step_), demo.length() - 1)).transpose();
+        demo.actions.row(std::min(j + std::min(loopLatencySteps_, step_), demo.length() - 1))
+            .transpose();
     record_.deviation = sample.deviation;
     record_.cost = problem_.cost(sample.deviation);
     record_.action.resize(m);

@@ -36,7 +36,7 @@ class PgsdController : public Controller {
     void reset(ResetMode mode = ResetMode::Cold) override;
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
-    void setLatencyCompensation(int steps) override { latency_ = steps > 0 ? steps : 0; }
+    void setLoopLatencySteps(int steps) override { loopLatencySteps_ = steps > 0 ? steps : 0; }
     const Eigen::MatrixXd* learnedParameters() const override { return &theta_; }
 
     const Eigen::MatrixXd& theta() const { return theta_; }
@@ -56,7 +56,7 @@ class PgsdController : public Controller {
     Eigen::MatrixXd gradient_;
     ControlStep record_;
     int step_ = 0;
-    int latency_ = 0;  // the sensor latency compensated [steps]
+    int loopLatencySteps_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

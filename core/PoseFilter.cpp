@@ -411,7 +411,7 @@ const Eigen::VectorXd& PoseFilter::step(const Eigen::Ref<const Eigen::VectorXd>&
     checkObservation(observation);
     const double dt = parameters_.controlPeriod;
     const double now = static_cast<double>(stepIndex_) * dt;
-    const double takenAt = static_cast<double>(stepIndex_ - parameters_.latencySteps) * dt;
+    const double takenAt = static_cast<double>(stepIndex_ - parameters_.loopLatencySteps) * dt;
     if (!status_.initialised || !dropped) {
         update(observation, takenAt);
     } else {

@@ -54,7 +54,7 @@ struct PoseFilterParameters {
     /// How many control steps old a measurement is when step() receives it (>= 0): step()
     /// returns the estimate predicted that many steps ahead, to now, through the actions
     /// commanded since.
-    int latencySteps = 0;
+    int loopLatencySteps = 0;
     /// Spectral densities of white jerks that drive body accelerations (ax, ay, ar) as random
     /// walks: forward and lateral [m^2/s^5], yaw [rad^2/s^5]. Zero (the default): no
     /// acceleration states, the velocities are pure random walks. Positive: the filter also
@@ -159,7 +159,7 @@ struct PoseFilterStatus {
 /// estimate) and the actions commanded since, and hands out that estimate predicted to now.
 /// Two ways to drive it, not to be mixed in one trial:
 /// - by control steps (simulation): step(observation, dropped) then commanded(action), once per
-///   control step; the observation is latencySteps steps old;
+///   control step; the observation is loopLatencySteps steps old;
 /// - by time stamps (the rig): update(observation, takenAt) per received measurement (none for a
 ///   dropped frame), commandedAt(action, from) per command, predictTo(now) for the estimate.
 /// Every call after construction is allocation-free (fixed-size matrices, a preallocated action
@@ -178,8 +178,8 @@ class PoseFilter {
     /// Forgets the estimate, the actions and the counters.
     void reset();
 
-    /// One control step: the observation (size n) of latencySteps steps ago, or a repeat of an old
-    /// one if `dropped` (then predict only). Returns the estimate predicted to now (size n; the
+    /// One control step: the observation (size n) of loopLatencySteps steps ago, or a repeat of an
+    /// old one if `dropped` (then predict only). Returns the estimate predicted to now (size n; the
     /// reference stays valid until the next call). The first call initialises from the
     /// observation even if flagged dropped. Throws std::invalid_argument for a wrong size or a
     /// non-finite measured component (the filter is left as it was).

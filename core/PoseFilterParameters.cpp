@@ -126,8 +126,8 @@ void PoseFilterParameters::validate() const {
     if (!(controlPeriod > 0.0) || !std::isfinite(controlPeriod)) {
         fail("control period " + std::to_string(controlPeriod) + " s (> 0 needed)");
     }
-    if (latencySteps < 0) {
-        fail("latency " + std::to_string(latencySteps) + " steps (>= 0 needed)");
+    if (loopLatencySteps < 0) {
+        fail("latency " + std::to_string(loopLatencySteps) + " steps (>= 0 needed)");
     }
     if (inputGain.size() && (inputGain.rows() != 3 || !inputGain.allFinite())) {
         fail("input gain is " + std::to_string(inputGain.rows()) + " x " +

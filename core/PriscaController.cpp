@@ -120,9 +120,9 @@ void PriscaController::setModelValidity(std::vector<bool> valid) {
     modelValid_ = std::move(valid);
 }
 
-void PriscaController::setLatencyCompensation(int steps) {
-    latency_ = parameters_.honourLatencyCompensation ? std::max(0, steps) : 0;
-    matcher_.setLatency(latency_);
+void PriscaController::setLoopLatencySteps(int steps) {
+    loopLatencySteps_ = parameters_.honourLoopLatency ? std::max(0, steps) : 0;
+    matcher_.setLoopLatencySteps(loopLatencySteps_);
 }
 
 void PriscaController::setDrift(const Eigen::MatrixXd& a) {
@@ -369,8 +369,8 @@ const ControlStep& PriscaController::step(const Eigen::Ref<const Eigen::VectorXd
     record_.referenceIndex = j;
     // The demonstration's action of now: the observation's sample plus its age (less at the
     // start, before the observations had any age to show).
-    record_.referenceAction = referenceActions_.col(
-        std::min(j + std::min(latency_, k), static_cast<int>(referenceActions_.cols()) - 1));
+    record_.referenceAction = referenceActions_.col(std::min(
+        j + std::min(loopLatencySteps_, k), static_cast<int>(referenceActions_.cols()) - 1));
     record_.action =
         (theta_.cwiseProduct(phi_)).colwise().sum().transpose() + record_.referenceAction;
     if (parameters_.prior.kp.size() != 0) {

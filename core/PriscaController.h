@@ -58,10 +58,10 @@ struct PriscaParameters {
     /// C = e^T W e + (u - u*)^T R (u - u*), as LQR does (ClosedLoop only). Its gradient pulls
     /// every gain back in proportion to how hard it pushes, whatever the model says.
     Eigen::VectorXd effortWeights;
-    /// Honour latency compensation (Controller::setLatencyCompensation): the reference is
+    /// Honour latency compensation (Controller::setLoopLatencySteps): the reference is
     /// matched for the time the observation was taken, the demonstration's action is the one of
     /// now. false: the paper's form, which pairs an old observation with today's reference.
-    bool honourLatencyCompensation = true;
+    bool honourLoopLatency = true;
     /// If > 0, theta is projected onto the box |theta_i| <= thetaBound after each update
     /// (projected subgradient descent, which keeps the convergence argument of Theorem 4.4 on a
     /// compact set) so an unlucky run of errors cannot carry the policy into an unstable loop.
@@ -96,7 +96,7 @@ class PriscaController : public Controller {
     const ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
     std::unique_ptr<Controller> clone() const override;
     const Eigen::MatrixXd* learnedParameters() const override { return &theta_; }
-    void setLatencyCompensation(int steps) override;
+    void setLoopLatencySteps(int steps) override;
 
     /// theta (p x m), column l = theta_l.
     const Eigen::MatrixXd& theta() const { return theta_; }
@@ -193,9 +193,9 @@ class PriscaController : public Controller {
     double alpha_ = 0.0;
     double curvatureSum_ = 0.0;  // sum of the steps' curvatures (StepSize::normalised)
     double curvatureSteps_ = 0.0;
-    int step_ = 0;          // k within the trial
-    int learningStep_ = 0;  // k of alpha_k, kept across warm starts
-    int latency_ = 0;       // the sensor latency compensated [steps]
+    int step_ = 0;              // k within the trial
+    int learningStep_ = 0;      // k of alpha_k, kept across warm starts
+    int loopLatencySteps_ = 0;  // the sensor latency compensated [steps]
 };
 
 }  // namespace prisca::core

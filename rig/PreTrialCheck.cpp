@@ -38,11 +38,11 @@ std::vector<cv::Point2d> path(const PreTrialInputs& in) {
 
 PreTrialItem latencyItem(const PreTrialInputs& in) {
     const QString label = Text::tr("Latency");
-    if (in.loopLatency && in.latencySource == LatencySource::Measured) {
+    if (in.loopLatency && in.loopLatencySource == LoopLatencySource::Measured) {
         return item("latency", label, true,
                     Text::tr("measured: %1 ms").arg(*in.loopLatency * 1000.0, 0, 'f', 1));
     }
-    if (in.loopLatency && in.latencySource == LatencySource::Declared) {
+    if (in.loopLatency && in.loopLatencySource == LoopLatencySource::Declared) {
         return item("latency", label, true,
                     Text::tr("declared: %1 ms").arg(*in.loopLatency * 1000.0, 0, 'f', 1));
     }

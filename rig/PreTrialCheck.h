@@ -17,7 +17,7 @@
 namespace prisca::rig {
 
 /// Where the loop latency the trials compensate comes from.
-enum class LatencySource {
+enum class LoopLatencySource {
     Assumed,   ///< the profile's assumption for the camera (known only for the virtual camera)
     Measured,  ///< RigSession::measureLatency
     Declared,  ///< given by the operator (a value measured elsewhere)
@@ -33,7 +33,7 @@ struct PreTrialInputs {
     bool calibrationIsVirtualRigs = true;  ///< still the synthetic camera's calibration
     devices::LinkStatus link;
     std::optional<double> loopLatency;  ///< [s]
-    LatencySource latencySource = LatencySource::Assumed;
+    LoopLatencySource loopLatencySource = LoopLatencySource::Assumed;
     double injectedCameraDelay = 0.0;  ///< the virtual camera's added delay [s]
     bool emergencyLatched = false;     ///< E-STOP (the window's, through the link's latch)
     /// Of the latch: the process was stopped and continued, and holds failsafe until E-STOP is

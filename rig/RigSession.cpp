@@ -395,16 +395,16 @@ QString RigSession::bundleParent() const {
     return loop_->bundleParent;
 }
 
-void RigSession::setLoopLatency(std::optional<double> seconds, LatencySource source) {
+void RigSession::setLoopLatency(std::optional<double> seconds, LoopLatencySource source) {
     std::lock_guard<std::mutex> lock(mutex_);
     loop_->loopLatency = seconds;
-    loop_->latencySource = seconds ? source : LatencySource::Assumed;
+    loop_->loopLatencySource = seconds ? source : LoopLatencySource::Assumed;
     loop_->stale = true;  // the compensation is set when the loop is built
 }
 
-LatencySource RigSession::loopLatencySource() const {
+LoopLatencySource RigSession::loopLatencySource() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return loop_->latencySource;
+    return loop_->loopLatencySource;
 }
 
 std::optional<double> RigSession::loopLatency() const {

@@ -90,7 +90,7 @@ struct RigTrialResult {
     long long frames = 0;  ///< frames it saw
     long long framesWithPose = 0;
     /// Per frame with a pose: from the frame's arrival to its command handed to the link [ms].
-    std::vector<double> latencyMs;
+    std::vector<double> loopLatencyMs;
     /// Where the car stopped relative to the demonstration's end; empty: no pose was seen.
     std::optional<sim::ParkingError> parked;
     QString controllerNote;  ///< the controller's word on the trial (Controller::trialNote)
@@ -204,12 +204,12 @@ class RigSession : public QObject {
     bool measuringLatency() const;
     /// The loop latency the controllers compensate on the next trials [s] (rounded to control
     /// periods); empty: the profile's assumption (the camera's latency in simulation). A
-    /// finished measurement sets it by itself (LatencySource::Measured); this is the operator's
+    /// finished measurement sets it by itself (LoopLatencySource::Measured); this is the operator's
     /// declared value (or empty, back to the assumption).
     void setLoopLatency(std::optional<double> seconds,
-                        LatencySource source = LatencySource::Declared);
+                        LoopLatencySource source = LoopLatencySource::Declared);
     std::optional<double> loopLatency() const;
-    LatencySource loopLatencySource() const;
+    LoopLatencySource loopLatencySource() const;
 
     // Trial bundles.
     /// Every trial from now on is saved as a bundle (rig::TrialBundleWriter) in a new folder

@@ -44,7 +44,7 @@ PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
     {
         std::lock_guard<std::mutex> lock(mutex_);
         in.loopLatency = loop_->loopLatency;
-        in.latencySource = loop_->latencySource;
+        in.loopLatencySource = loop_->loopLatencySource;
         in.fence = loop_->fence;
     }
     in.demonstration = task.demonstration;
@@ -125,17 +125,17 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
         // filter does not predict across it already (never twice).
         const double dt = setup.task().demonstration->dt;
         const sim::EpisodeSettings episode =
-            sim::withMeasuredLatency(setup.episode(), l.loopLatency, dt);
-        controller->setLatencyCompensation(episode.compensatedLatencySteps());
+            sim::withLoopLatency(setup.episode(), l.loopLatency, dt);
+        controller->setLoopLatencySteps(episode.compensatedLoopLatencySteps());
         l.loop = std::make_unique<devices::RigLoop>(l.calibration, devices::TrackerSettings{},
                                                     std::move(controller), channels_, link_);
         l.loop->setLostTrackDistance(setup.profile().lostTrackDistance);
         if (poseFilter) {
             // Pose-only frames, as old as the loop's latency (above); with the filter
-            // predicting, the controller was told latency 0 (compensatedLatencySteps).
+            // predicting, the controller was told latency 0 (compensatedLoopLatencySteps).
             try {
                 l.loop->usePoseFilter(episode.poseFilterParameters,
-                                      episode.measurement.latencySteps * dt,
+                                      episode.measurement.loopLatencySteps * dt,
                                       episode.poseFilterPredicts);
             } catch (const std::exception& e) {
                 l.loop.reset();
@@ -197,7 +197,7 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     l.lastFrameNs = -1;
     l.frames = 0;
     l.framesWithPose = 0;
-    l.latencyMs.clear();
+    l.loopLatencyMs.clear();
     l.lastTrackedPose.reset();
     l.plant = setup.profile().info;
     l.demonstration = setup.task().demonstration;
@@ -230,8 +230,8 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
     result.seconds = l.trialStartNs >= 0 ? (l.lastFrameNs - l.trialStartNs) * 1e-9 : 0.0;
     result.frames = l.frames;
     result.framesWithPose = l.framesWithPose;
-    result.latencyMs = std::move(l.latencyMs);
-    l.latencyMs.clear();
+    result.loopLatencyMs = std::move(l.loopLatencyMs);
+    l.loopLatencyMs.clear();
     if (l.loop) {
         result.controllerNote = l.loop->controller().trialNote();
     }
@@ -306,7 +306,7 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
                     m.spread = l.probe->spreadSeconds();
                     // The trials compensate what was measured, whoever shows it.
                     l.loopLatency = m.median;
-                    l.latencySource = LatencySource::Measured;
+                    l.loopLatencySource = LoopLatencySource::Measured;
                     l.stale = true;
                 }
                 l.probe.reset();
@@ -320,7 +320,7 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
             if (pose) {
                 ++l.framesWithPose;
                 l.lastTrackedPose = pose;
-                l.latencyMs.push_back((step.commandNs - step.frameNs) * 1e-6);
+                l.loopLatencyMs.push_back((step.commandNs - step.frameNs) * 1e-6);
             }
             if (l.trialStartNs < 0) {
                 l.trialStartNs = frame.steadyNs;

@@ -27,7 +27,7 @@ struct RigSession::Loop {
     devices::Geofence fence;                     ///< every trial's (RigLoop::setGeofence)
     std::optional<devices::LatencyProbe> probe;  ///< a latency measurement under way
     std::optional<double> loopLatency;           ///< measured [s], for the compensation
-    LatencySource latencySource = LatencySource::Assumed;
+    LoopLatencySource loopLatencySource = LoopLatencySource::Assumed;
     QString bundleParent;            ///< where trial bundles go (empty: none)
     double bundleFps = 10.0;         ///< their video's frame rate
     double lastBundleFrameT = -1.0;  ///< the trial's newest frame stored [s]
@@ -48,7 +48,7 @@ struct RigSession::Loop {
     std::int64_t lastFrameNs = -1;
     long long frames = 0;
     long long framesWithPose = 0;
-    std::vector<double> latencyMs;
+    std::vector<double> loopLatencyMs;
     std::optional<devices::PlanarPose> lastTrackedPose;
     sim::PlantInfo plant;
     std::shared_ptr<const core::Demonstration> demonstration;

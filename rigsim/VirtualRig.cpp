@@ -92,7 +92,7 @@ VirtualRig::Trial VirtualRig::runTrial(double seconds, core::ResetMode mode, std
                 std::this_thread::sleep_for(std::chrono::microseconds(50));
             }
             if (link_->lastCommandNs() >= step.frameNs) {
-                trial.latencyMs.push_back((link_->lastWriteNs() - step.frameNs) * 1e-6);
+                trial.loopLatencyMs.push_back((link_->lastWriteNs() - step.frameNs) * 1e-6);
             }
         }
     }

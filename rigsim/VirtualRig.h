@@ -55,9 +55,9 @@ class VirtualRig {
         devices::PlanarPose finalPose;          ///< the simulated car's true final pose
         std::vector<devices::PlanarPose> path;  ///< true pose per frame
         int frames = 0;
-        int framesWithPose = 0;           ///< frames the tracker found the car in
-        std::vector<double> latencyMs;    ///< camera frame -> its command's bytes written
-        long long linkFramesDecoded = 0;  ///< frames the far end decoded
+        int framesWithPose = 0;             ///< frames the tracker found the car in
+        std::vector<double> loopLatencyMs;  ///< camera frame -> its command's bytes written
+        long long linkFramesDecoded = 0;    ///< frames the far end decoded
         /// The frame in which the loop ended the trial in failsafe (the fence, the lost-track
         /// guard, a controller fault), and why; -1 and empty if it ran its length. The car is
         /// simulated on to the trial's length (it coasts, in failsafe), so `path` shows where

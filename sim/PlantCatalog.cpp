@@ -1,6 +1,5 @@
 #include "sim/PlantCatalog.h"
 
-#include "sim/MethodCatalog.h"
 #include "sim/demonstrations/DiffDriveDemonstrator.h"
 #include "sim/plants/Acrobot.h"
 #include "sim/plants/DiffDrive.h"
@@ -121,14 +120,7 @@ MethodTuning PlantCatalog::tuning(const PlantInfo& info) {
         throw std::invalid_argument(
             QStringLiteral("no profile for plant '%1'").arg(info.name).toStdString());
     }
-    MethodTuning profile = entry->profile(info);
-    for (const MethodParameter* parameter : MethodCatalog::parameters()) {
-        if (!parameter->get && parameter->defaultFor) {
-            profile.methodValues[QString::fromLatin1(parameter->name)] =
-                parameter->defaultFor(profile);
-        }
-    }
-    return profile;
+    return entry->profile(info);
 }
 
 PlantInfo PlantCatalog::describe(const QString& name) {

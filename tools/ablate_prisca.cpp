@@ -74,13 +74,13 @@ int main(int argc, char** argv) {
         else if (k == "lost")
             p.lostTrackDistance = v;
         else if (k == "age")
-            p.compensateLatency = v != 0.0;
+            p.compensateLoopLatency = v != 0.0;
     }
     // NOISE / LAT / DROP: the sensor's parts on their own (noise scale, latency, drop chance).
     if (getenv("NOISE"))
         p.measurement.noise *= atof(getenv("NOISE"));
     if (getenv("LAT"))
-        p.measurement.latencySteps = atoi(getenv("LAT"));
+        p.measurement.loopLatencySteps = atoi(getenv("LAT"));
     if (getenv("DROP"))
         p.measurement.dropProbability = atof(getenv("DROP"));
     if (getenv("PV")) {  // PV=initial,parameters,actuator: the perturbation's parts' shares

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
         {"- from theta = 0 (no PD+H+LSD start)", "prisca",
          [](Profile& p, Fit&) { p.priscaFromPd = false; }},
         {"- no latency compensation (every method)", "prisca",
-         [](Profile& p, Fit&) { p.compensateLatency = false; }},
+         [](Profile& p, Fit&) { p.compensateLoopLatency = false; }},
         {"- signs B~ only, no fit", "prisca",
          [](Profile& p, Fit&) { p.priscaModel = Profile::PriscaModel::Signs; }},
         {"- eq. 5 fitted in full (drift A)", "prisca",
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
         {"PRISCA (paper): Algorithm 1 as printed", "prisca-paper", [](Profile&, Fit&) {}},
         {"PD+H+LSD (best baseline)", "pd-h-lsd", [](Profile&, Fit&) {}},
         {"PD+H+LSD, no latency compensation", "pd-h-lsd",
-         [](Profile& p, Fit&) { p.compensateLatency = false; }},
+         [](Profile& p, Fit&) { p.compensateLoopLatency = false; }},
         {"PD+LSD", "pd-lsd", [](Profile&, Fit&) {}},
     };
     if (oracle) {

@@ -118,7 +118,7 @@ devices::Geofence fenceOption(const CommandLine& line) {
 }
 
 // --measure-latency: the loop's latency measured; what it found (empty when interrupted).
-QJsonObject measureLoopLatency(rig::RigSession& rig, const Wait& waitFor, int latencySteps,
+QJsonObject measureLoopLatency(rig::RigSession& rig, const Wait& waitFor, int probeSteps,
                                double cameraDelay, bool text) {
     std::optional<rig::LatencyMeasurement> measured;
     // Delivered on this thread (the session emits on the camera's), and not after the return.
@@ -126,15 +126,15 @@ QJsonObject measureLoopLatency(rig::RigSession& rig, const Wait& waitFor, int la
     QObject::connect(&rig, &rig::RigSession::latencyMeasured, &receiver,
                      [&measured](const rig::LatencyMeasurement& m) { measured = m; });
     devices::LatencyProbeSettings probe;
-    probe.steps = latencySteps;
+    probe.steps = probeSteps;
     // A camera delayed on purpose answers that much later: the step waits for it.
     probe.giveUpAfter += cameraDelay;
     QString error;
     if (!rig.measureLatency(probe, &error)) {
         throw UsageError(QStringLiteral("the latency measurement could not start: %1").arg(error));
     }
-    printProgress(QStringLiteral("rig: measuring the loop's latency (%1 steps)").arg(latencySteps));
-    waitFor([&] { return measured.has_value(); }, 20000 * latencySteps, true);
+    printProgress(QStringLiteral("rig: measuring the loop's latency (%1 steps)").arg(probeSteps));
+    waitFor([&] { return measured.has_value(); }, 20000 * probeSteps, true);
     printProgress(QString());
     if (!measured) {
         rig.cancelLatencyMeasurement();
@@ -203,7 +203,7 @@ QJsonArray checkBeforeTrials(const rig::PreTrialCheck& check, bool text) {
 QJsonObject reportTrial(const rig::RigTrialResult& trial, int number, long long decoded,
                         const QString& method, bool text) {
     // Frame-to-command latency: the median, the 99th percentile (nearest rank) and the worst.
-    std::vector<double> latency = trial.latencyMs;
+    std::vector<double> latency = trial.loopLatencyMs;
     std::sort(latency.begin(), latency.end());
     const auto percentile = [&latency](double p) {
         if (latency.empty()) {
@@ -397,7 +397,7 @@ int rigCommand(const QStringList& arguments) {
     if (line.isSet("loop-latency")) {
         rig.setLoopLatency(line.number("loop-latency", 0.0, 1000.0) / 1000.0);
     }
-    const int latencySteps = static_cast<int>(line.integer("latency-steps", 2, 50));
+    const int probeSteps = static_cast<int>(line.integer("latency-steps", 2, 50));
     QString error;
     if (!rig.startCamera(camera, &error)) {
         throw UsageError(QStringLiteral("the virtual rig could not start: %1").arg(error));
@@ -435,7 +435,7 @@ int rigCommand(const QStringList& arguments) {
     }
     const QJsonObject latencyJson =
         line.isSet("measure-latency") && !interrupted()
-            ? measureLoopLatency(rig, waitFor, latencySteps, camera.virtualCameraDelay, text)
+            ? measureLoopLatency(rig, waitFor, probeSteps, camera.virtualCameraDelay, text)
             : QJsonObject();
     const QJsonArray checkJson = checkBeforeTrials(rig.preTrialCheck(task, spec), text);
     const double seconds = demo.length() * demo.dt + task.profile.settleTime;

@@ -271,12 +271,12 @@ bool RigSetupPage::measureLatency() {
 
 void RigSetupPage::declareLoopLatency(double milliseconds) {
     if (milliseconds > 0.0) {
-        rig_.setLoopLatency(milliseconds / 1000.0, rig::LatencySource::Declared);
+        rig_.setLoopLatency(milliseconds / 1000.0, rig::LoopLatencySource::Declared);
         showStatus(latencyInfo_, tr("Latency"), [milliseconds] {
             return tr("Loop latency: %1 ms, declared; the trials compensate it.")
                 .arg(milliseconds, 0, 'f', 1);
         });
-    } else if (rig_.loopLatencySource() == rig::LatencySource::Declared) {
+    } else if (rig_.loopLatencySource() == rig::LoopLatencySource::Declared) {
         rig_.setLoopLatency(std::nullopt);
         showStatus(latencyInfo_, tr("Latency"), [] {
             return tr(

@@ -18,13 +18,13 @@ double threadCpuSeconds() {
 
 }  // namespace
 
-EpisodeSettings withMeasuredLatency(EpisodeSettings settings, std::optional<double> seconds,
-                                    double controlPeriod, int maxSteps) {
+EpisodeSettings withLoopLatency(EpisodeSettings settings, std::optional<double> seconds,
+                                double controlPeriod, int maxSteps) {
     if (seconds && std::isfinite(*seconds) && controlPeriod > 0.0) {
         // Clamped before rounding: a huge value must not wrap.
         const double steps =
             std::clamp(*seconds / controlPeriod, 0.0, static_cast<double>(maxSteps));
-        settings.measurement.latencySteps = static_cast<int>(std::lround(steps));
+        settings.measurement.loopLatencySteps = static_cast<int>(std::lround(steps));
     }
     return settings;
 }
@@ -48,7 +48,7 @@ core::PoseFilterParameters poseFilterFor(const PlantInfo& info,
     if (measurement.noise.size() == parameters.stateDimension) {
         parameters.measurementStd = measurement.noise.cwiseMax(1e-6);
     }
-    parameters.latencySteps = measurement.latencySteps;
+    parameters.loopLatencySteps = measurement.loopLatencySteps;
     parameters.controlPeriod = controlPeriod;
     return parameters;
 }
@@ -70,7 +70,7 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
         parameters.pose = own.pose;
         parameters.velocity = own.velocity;
         parameters.controlPeriod = own.controlPeriod;
-        parameters.latencySteps = own.latencySteps;
+        parameters.loopLatencySteps = own.loopLatencySteps;
         if (parameters.measurementStd.size() != own.stateDimension) {
             parameters.measurementStd = own.measurementStd;
         }
@@ -82,7 +82,7 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
         aware->attachPlant(&plant_);  // the oracle plans on copies of this very plant
     }
     // The sensor's latency is known to the loop; the rig sets the same from its RunSetup.
-    controller_.setLatencyCompensation(settings_.compensatedLatencySteps());
+    controller_.setLoopLatencySteps(settings_.compensatedLoopLatencySteps());
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
 }
@@ -104,9 +104,9 @@ const StepRecord& EpisodeStepper::step() {
         last_.observation = filter_->step(last_.observation, sensor_.lastDropped());
         if (!settings_.poseFilterPredicts) {
             // The estimate of the measurement's own time; the controller compensates the latency.
-            last_.observation =
-                filter_->predictTo(static_cast<double>(k_ - settings_.measurement.latencySteps) *
-                                   plant_.timing().controlPeriod);
+            last_.observation = filter_->predictTo(
+                static_cast<double>(k_ - settings_.measurement.loopLatencySteps) *
+                plant_.timing().controlPeriod);
         }
     }
     if (!guard_.tripped()) {

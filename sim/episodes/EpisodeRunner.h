@@ -25,14 +25,14 @@ struct EpisodeSettings {
     double stopAtRestAfter = -1.0;
     core::ResetMode resetMode = core::ResetMode::Cold;  ///< how the controller starts the trial
     /// Latency compensation: tell the controller how old its observations are (the sensor's
-    /// latency), so that trackers compensate it (Controller::setLatencyCompensation). Off: they
+    /// latency), so that trackers compensate it (Controller::setLoopLatencySteps). Off: they
     /// are told 0.
-    bool compensateLatency = false;
+    bool compensateLoopLatency = false;
     /// Pose filter (core::PoseFilter, planar vehicles only): the sensor's observation passes
     /// through an extended Kalman filter before the controller sees it, and what the controller
     /// sees is the estimate predicted across the sensor's latency to now (dropped samples
     /// bridged by prediction, outliers gated). The controller is then told latency 0
-    /// (compensatedLatencySteps()). Off by default.
+    /// (compensatedLoopLatencySteps()). Off by default.
     bool poseFilter = false;
     /// With the pose filter: hand the controller the estimate predicted to now and tell it
     /// latency 0 (true, the default), or the estimate at the measurement's own time and let the
@@ -51,19 +51,20 @@ struct EpisodeSettings {
 
     /// The latency the controller compensates [control steps]: the sensor's, if compensated
     /// and no pose filter has already predicted the observation to now.
-    int compensatedLatencySteps() const {
-        return compensateLatency && !(poseFilter && poseFilterPredicts) ? measurement.latencySteps
-                                                                        : 0;
+    int compensatedLoopLatencySteps() const {
+        return compensateLoopLatency && !(poseFilter && poseFilterPredicts)
+                   ? measurement.loopLatencySteps
+                   : 0;
     }
 };
 
 /// The settings with the sensor's latency replaced by a measured one (a rig's loop latency
 /// from its probe): `seconds` rounded to control steps of `controlPeriod`, at most `maxSteps`;
 /// no measurement (nullopt) leaves them as they are. Everything that follows from the latency,
-/// the controller's compensation (compensatedLatencySteps(): the tuning's switch, none while
+/// the controller's compensation (compensatedLoopLatencySteps(): the tuning's switch, none while
 /// the pose filter predicts) and the pose filter's prediction, then follows the one rule.
-EpisodeSettings withMeasuredLatency(EpisodeSettings settings, std::optional<double> seconds,
-                                    double controlPeriod, int maxSteps = 40);
+EpisodeSettings withLoopLatency(EpisodeSettings settings, std::optional<double> seconds,
+                                double controlPeriod, int maxSteps = 40);
 
 /// The pose filter's parameters for a plant behind a sensor: full-state measurement with the
 /// sensor's noise (each std at least 1e-6 of its unit, so a perfect sensor is simply believed),

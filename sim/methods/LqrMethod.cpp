@@ -1,5 +1,4 @@
-// A time-varying LQR on the model fitted from the demonstration (eq. 5), with its per-plant
-// defaults.
+// A time-varying LQR on the model fitted from the demonstration (eq. 5).
 #include "sim/methods/Declarations.h"
 
 #include <QCoreApplication>
@@ -13,31 +12,7 @@ namespace prisca::sim::methods {
 namespace {
 
 // ---- lqr: a time-varying LQR on the model fitted from the demonstration ----------------------
-// Its per-plant defaults, from grids on each plant's tuning cells only (docs/results.md, "LQR").
-struct LqrDefaults {
-    const char* plant;
-    double throttleEffort, otherEffort;  // R of the first control, and of the others
-    double terminal;
-    bool drift;
-};
-
-constexpr LqrDefaults kLqrDefaults[] = {
-    {"slidecar", 30.0, 100.0, 100.0, false},
-    {"acrobot", 1e-6, 1e-6, 100.0, true},
-    {"aircraft", 3.0, 3.0, 100.0, false},
-    {"diffdrive", 1e-3, 1e-3, 100.0, false},
-};
-
-// Null for a plant with no entry: its parameters then have no value, which the catalog's tests
-// catch for every catalog plant.
-const LqrDefaults* lqrDefaults(const MethodTuning& f) {
-    for (const LqrDefaults& d : kLqrDefaults) {
-        if (f.info.name == QLatin1String(d.plant)) {
-            return &d;
-        }
-    }
-    return nullptr;
-}
+// Its values per plant are the plant's tuning's (MethodTuning::lqrEffort, lqrTerminal, lqrDrift).
 
 const MethodParameter& lqrEffort() {
     static const MethodParameter p = [] {
@@ -48,15 +23,8 @@ const MethodParameter& lqrEffort() {
                               "R per control in the LQR's cost e^T W e + (u − u*)^T R (u − u*): "
                               "larger is gentler."));
         p.perChannel = true;
-        p.defaultFor = [](const MethodTuning& f) -> Eigen::VectorXd {
-            const LqrDefaults* d = lqrDefaults(f);
-            if (!d) {
-                return Eigen::VectorXd();
-            }
-            Eigen::VectorXd r = Eigen::VectorXd::Constant(f.info.actionDimension(), d->otherEffort);
-            r[0] = d->throttleEffort;
-            return r;
-        };
+        p.get = [](const MethodTuning& f) { return f.lqrEffort; };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.lqrEffort = v; };
         return p;
     }();
     return p;
@@ -70,10 +38,8 @@ const MethodParameter& lqrTerminal() {
             QT_TRANSLATE_NOOP("MethodParameter",
                               "The deviation at the demonstration's end costs this many times a "
                               "step's (where a parking manoeuvre is judged)."));
-        p.defaultFor = [](const MethodTuning& f) {
-            const LqrDefaults* d = lqrDefaults(f);
-            return d ? one(d->terminal) : Eigen::VectorXd();
-        };
+        p.get = [](const MethodTuning& f) { return one(f.lqrTerminal); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.lqrTerminal = v[0]; };
         return p;
     }();
     return p;
@@ -86,10 +52,8 @@ const MethodParameter& lqrDrift() {
             QT_TRANSLATE_NOOP("MethodParameter",
                               "Fit eq. 5 in full (the state's own drift A with B); off: B alone, "
                               "each state driven only by the controls."));
-        p.defaultFor = [](const MethodTuning& f) {
-            const LqrDefaults* d = lqrDefaults(f);
-            return d ? one(d->drift ? 1 : 0) : Eigen::VectorXd();
-        };
+        p.get = [](const MethodTuning& f) { return one(f.lqrDrift ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.lqrDrift = v[0] != 0.0; };
         return p;
     }();
     return p;

@@ -354,7 +354,7 @@ Made makePriscaPaper(const MethodSpec& spec, const MethodInput& in) {
     paper.thetaBound = 0.0;
     paper.gradient = core::PriscaParameters::Gradient::OneStep;
     paper.effortWeights.resize(0);
-    paper.honourLatencyCompensation = false;
+    paper.honourLoopLatency = false;
     paper.effectHorizon = 1;
     paper.prior = {};
     return std::make_unique<core::PriscaController>(profile.priscaProblem(demonstration),

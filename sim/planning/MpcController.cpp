@@ -143,9 +143,9 @@ QString MpcController::trialNote() const {
                              : QStringLiteral("the feedback law drove: %1").arg(fallbackReason_);
 }
 
-void MpcController::setLatencyCompensation(int steps) {
+void MpcController::setLoopLatencySteps(int steps) {
     pendingLatency_ = std::max(0, steps);
-    fallback_->setLatencyCompensation(steps);
+    fallback_->setLoopLatencySteps(steps);
 }
 
 void MpcController::buildModel() {

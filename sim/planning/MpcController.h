@@ -104,7 +104,7 @@ class MpcController : public core::Controller {
     /// "planned through the model" or "fell back to the feedback law ...: why" (with when).
     QString trialNote() const override;
     std::unique_ptr<core::Controller> clone() const override;
-    void setLatencyCompensation(int steps) override;
+    void setLoopLatencySteps(int steps) override;
 
     MpcMode mode() const { return mode_; }
     /// Why the fallback took over (empty while planning).

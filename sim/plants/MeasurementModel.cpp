@@ -6,7 +6,7 @@ namespace prisca::sim {
 
 MeasurementModel::MeasurementModel(MeasurementParameters parameters, std::uint64_t seed)
     : parameters_(std::move(parameters)), random_(seed) {
-    if (parameters_.latencySteps < 0 || parameters_.dropProbability < 0.0 ||
+    if (parameters_.loopLatencySteps < 0 || parameters_.dropProbability < 0.0 ||
         parameters_.dropProbability >= 1.0 ||
         (parameters_.noise.size() && (parameters_.noise.array() < 0).any())) {
         throw std::invalid_argument(
@@ -15,7 +15,7 @@ MeasurementModel::MeasurementModel(MeasurementParameters parameters, std::uint64
 }
 
 void MeasurementModel::reset(const Eigen::VectorXd& initialState) {
-    delayLine_.assign(parameters_.latencySteps, initialState);
+    delayLine_.assign(parameters_.loopLatencySteps, initialState);
     lastObservation_ = initialState;
     lastDropped_ = false;
 }

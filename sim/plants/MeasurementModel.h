@@ -12,7 +12,7 @@ namespace prisca::sim {
 /// latency and occasional dropped samples (the last good sample is held). Seeded; no wall clock.
 struct MeasurementParameters {
     Eigen::VectorXd noise;         ///< std of additive noise per state component (empty: none)
-    int latencySteps = 0;          ///< delay of the observation [control steps]
+    int loopLatencySteps = 0;      ///< delay of the observation [control steps]
     double dropProbability = 0.0;  ///< chance a sample is lost and the previous one repeats
 };
 

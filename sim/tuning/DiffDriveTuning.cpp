@@ -28,9 +28,9 @@ MethodTuning diffDriveTuning(const PlantInfo& info) {
     p.costWeights = (Eigen::VectorXd(6) << 1.0, 1.0, 0.3, 0.03, 0.03, 0.006).finished();
     // A ceiling camera at 40 Hz, as on the car's rig.
     p.measurement.noise = (Eigen::VectorXd(6) << 0.005, 0.005, 0.01, 0.03, 0.03, 0.05).finished();
-    p.measurement.latencySteps = 1;
+    p.measurement.loopLatencySteps = 1;
     p.measurement.dropProbability = 0.02;
-    p.compensateLatency = true;
+    p.compensateLoopLatency = true;
     p.lostTrackDistance = 1.0;
     p.settleTime = 2.0;
     // PRISCA as on the car: from the PD+H+LSD law below, the closed-loop gradient with an
@@ -59,6 +59,7 @@ MethodTuning diffDriveTuning(const PlantInfo& info) {
     p.ilcLead = 10;
     p.ilcCutoff = 0.5;
     p.ilcFeedbackScale = 0.5;
+    p.lqrEffort = Eigen::Vector2d(1e-3, 1e-3);
     p.pegasus.scenarios = 4;
     p.pegasus.stepSize = 0.5;
     p.pegasus.perturbation = 0.05;

@@ -16,25 +16,14 @@ QString number(double v) {
 }  // namespace
 
 Eigen::VectorXd MethodParameter::value(const MethodTuning& profile) const {
-    if (get) {
-        return get(profile);
-    }
-    const auto kept = profile.methodValues.find(QString::fromLatin1(name));
-    if (kept != profile.methodValues.end()) {
-        return kept->second;
-    }
-    return defaultFor ? defaultFor(profile) : Eigen::VectorXd();
+    return get(profile);
 }
 
 void MethodParameter::assign(MethodTuning& profile, const Eigen::VectorXd& value) const {
     if (const QString why = check(value, profile.info.actionDimension()); !why.isEmpty()) {
         throw std::invalid_argument(why.toStdString());
     }
-    if (set) {
-        set(profile, value);
-    } else {
-        profile.methodValues[QString::fromLatin1(name)] = value;
-    }
+    set(profile, value);
 }
 
 QString MethodParameter::format(const Eigen::VectorXd& value) const {

@@ -15,9 +15,10 @@ struct MethodTuning;
 /// One number a method is tuned by, declared once in the method's catalog entry
 /// (MethodCatalog.cpp): the Controller panel, the session file, the command line
 /// (`--param NAME=VALUE`, `prisca-cli methods`) and docs/methods.md all read the declaration.
-/// Its value lives in the plant's profile, so its default is per plant: the value in
-/// PlantCatalog::tuning(plant). Plain data; label and help are translated in the context
-/// "MethodParameter".
+/// Its value lives in a field of the plant's tuning (MethodTuning), so its default is per plant
+/// and has one home: the value the plant's tuning function sets (MethodTuning.cpp,
+/// DiffDriveTuning.cpp), else the field's own initial value in MethodTuning.h. Plain data; label
+/// and help are translated in the context "MethodParameter".
 struct MethodParameter {
     enum class Kind {
         Real,     ///< a number in [minimum, maximum]
@@ -39,13 +40,9 @@ struct MethodParameter {
     const char* zeroMeans = nullptr;
     const char* help = "";  ///< one line: what it does, the paper's equation where there is one
     /// Where the value lives in a profile: read (size 1, or the number of controls if
-    /// perChannel) and write (a value check() allows). Null for a method whose tuning has no
-    /// field of its own: the value is then kept in MethodTuning::methodValues under `name`,
-    /// starting from defaultFor(the plant).
+    /// perChannel) and write (a value check() allows). Both set in every declaration.
     Eigen::VectorXd (*get)(const MethodTuning&) = nullptr;
     void (*set)(MethodTuning&, const Eigen::VectorXd&) = nullptr;
-    /// The per-plant default of a parameter kept in MethodTuning::methodValues.
-    Eigen::VectorXd (*defaultFor)(const MethodTuning&) = nullptr;
 
     /// The value in `profile`.
     Eigen::VectorXd value(const MethodTuning& profile) const;

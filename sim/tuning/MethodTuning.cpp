@@ -53,7 +53,7 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     p.costWeights = vector({1.0, 1.0, 0.3, 0.03, 0.03, 0.006});
     // A ceiling camera at 40 Hz: millimetre-level pose noise, velocities from differences.
     p.measurement.noise = vector({0.005, 0.005, 0.01, 0.03, 0.03, 0.05});
-    p.measurement.latencySteps = 1;
+    p.measurement.loopLatencySteps = 1;
     p.measurement.dropProbability = 0.02;
     p.settleTime = 2.0;
     // Two metres off the path in an arena of a few metres: the car has left the demonstration
@@ -61,7 +61,7 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     // and goes to failsafe instead of driving into the wall (what it cost and saved on the
     // development cells: docs/research-log.md, "What the profiles' numbers rest on").
     p.lostTrackDistance = 2.0;
-    p.compensateLatency = true;
+    p.compensateLoopLatency = true;
     p.prisca.horizon = 10;
     p.prisca.gamma = 0.95;
     p.prisca.stepSize.beta = 300.0;
@@ -97,6 +97,7 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     p.ilcLead = 10;
     p.ilcCutoff = 0.5;
     p.ilcFeedbackScale = 0.5;
+    p.lqrEffort = vector({30.0, 100.0});
     p.pegasus.scenarios = 4;
     p.pegasus.stepSize = 0.5;
     p.pegasus.perturbation = 0.05;
@@ -147,6 +148,8 @@ MethodTuning acrobotTuning(const PlantInfo& info) {
     p.ilcLead = 0;
     p.ilcCutoff = 0.5;
     p.ilcFeedbackScale = 1.0;
+    p.lqrEffort = vector({1e-6, 1e-6});
+    p.lqrDrift = true;
     // From a sweep on tuning seeds (docs/research-log.md).
     p.pegasus.scenarios = 2;
     p.pegasus.stepSize = 1e5;
@@ -177,7 +180,7 @@ MethodTuning aircraftTuning(const PlantInfo& info) {
     p.costWeights = vector({1.0, 1.0, 10.0, 1.0, 1.0, 10.0});
     // A GPS-and-compass autopilot sensor: metre-level position noise, 50 ms late.
     p.measurement.noise = vector({0.5, 0.5, 0.02, 0.2, 0.2, 0.02});
-    p.measurement.latencySteps = 2;
+    p.measurement.loopLatencySteps = 2;
     p.settleTime = 0.0;
     // PRISCA's tuned choice: the signs B~ as its model (every one of the five best settings
     // chose them over the fit, which on this closed-loop demonstration gives the rudder a
@@ -211,6 +214,7 @@ MethodTuning aircraftTuning(const PlantInfo& info) {
     p.ilcLead = 6;
     p.ilcCutoff = 0.0;
     p.ilcFeedbackScale = 2.0;
+    p.lqrEffort = vector({3.0, 3.0});
     p.pegasus.scenarios = 4;
     p.pegasus.stepSize = 1e-3;
     p.pegasus.perturbation = 0.01;
@@ -236,10 +240,10 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
         episode.measurement.noise *= sensor;
     }
     if (sensor == 0.0) {
-        episode.measurement.latencySteps = 0;
+        episode.measurement.loopLatencySteps = 0;
         episode.measurement.dropProbability = 0.0;
     }
-    episode.compensateLatency = compensateLatency;
+    episode.compensateLoopLatency = compensateLoopLatency;
     if (info.pose && info.bodyVelocity) {
         // Ready for a run that turns the pose filter on: the sensor's noise and latency, and
         // velocities and accelerations as quick as the demonstration's sharpest changes.
@@ -347,7 +351,7 @@ core::PdParameters MethodTuning::startLaw(const core::Demonstration& demonstrati
             smoothingAge += w[t] * (horizon - t);
         }
     }
-    options.delay = (deadTime + measurement.latencySteps + 1 + smoothingAge) * demonstration.dt;
+    options.delay = (deadTime + measurement.loopLatencySteps + 1 + smoothingAge) * demonstration.dt;
     return core::deriveStartLaw(demonstration, fittedB, info.deviationModel(),
                                 core::ActionLimits{info.actionLower, info.actionUpper}, options)
         .law;

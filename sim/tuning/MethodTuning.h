@@ -15,7 +15,6 @@
 
 #include <Eigen/Core>
 
-#include <map>
 #include <memory>
 #include <optional>
 
@@ -43,7 +42,7 @@ struct MethodTuning {
     /// matched for the time the observation was taken. The slide-car's are (with every method
     /// re-tuned and the lost-track failsafe below); the acrobot's sensor has no latency, the
     /// aircraft's methods were tuned without.
-    bool compensateLatency = false;
+    bool compensateLoopLatency = false;
     /// Position deviation [m] past which a trial ends in failsafe (EpisodeSettings); 0: never.
     double lostTrackDistance = 0.0;
     /// Each part of a perturbation level (initial state, parameters, actuator noise) as a share
@@ -122,10 +121,16 @@ struct MethodTuning {
     core::PdParameters pd;      ///< PD gains (error combination, Kp, Kd; horizon 0)
     int pdHorizon = 10;         ///< H for PD+H and PD+H+LSD [steps]
     /// ILC's learning (its error combination is the PD's, its feedback the PD's gains scaled).
-    double ilcLearningScale = 0.3;    ///< learning gain Gamma = this x the PD's Kp, per control
-    int ilcLead = 2;                  ///< the error this many steps later corrects u_k [steps]
-    double ilcCutoff = 2.0;           ///< Q filter, zero-phase low-pass cutoff [Hz]
-    double ilcFeedbackScale = 1.0;    ///< the PD gains in ILC's loop, scaled by this
+    double ilcLearningScale = 0.3;  ///< learning gain Gamma = this x the PD's Kp, per control
+    int ilcLead = 2;                ///< the error this many steps later corrects u_k [steps]
+    double ilcCutoff = 2.0;         ///< Q filter, zero-phase low-pass cutoff [Hz]
+    double ilcFeedbackScale = 1.0;  ///< the PD gains in ILC's loop, scaled by this
+    /// The time-varying LQR (eq. 5), from grids on each plant's tuning cells (docs/results.md,
+    /// "LQR"): R per control (empty: the plant has no LQR tuning), the terminal weight, and
+    /// whether A is fitted with B.
+    Eigen::VectorXd lqrEffort;
+    double lqrTerminal = 100.0;
+    bool lqrDrift = false;
     core::PegasusParameters pegasus;  ///< PEGASUS defaults
     /// The oracle's planner (the limit every accuracy figure is read against); its trial
     /// length is filled in from the demonstration when it is created.
@@ -140,10 +145,6 @@ struct MethodTuning {
     std::shared_ptr<const PlantParameters> mpcModel;
     std::shared_ptr<const PlantParameters> mpcPrior;
     int pegasusIterations = 10;  ///< gradient steps PEGASUS takes before it is evaluated
-    /// The values of parameters a method declares with no field here (MethodParameter without
-    /// get/set), by parameter name; PlantCatalog::tuning() fills in each one's per-plant default
-    /// (MethodCatalog::value reads any declared parameter by name).
-    std::map<QString, Eigen::VectorXd> methodValues;
 
     /// How a trial of this plant repeating `demonstration` runs: the perturbation and the
     /// sensor scaled by their levels (0 nominal / perfect, 1 realistic; a perfect sensor also has

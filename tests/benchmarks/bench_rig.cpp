@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
             const auto t = rig.runTrial(
                 demo->length() * demo->dt + 1.5,
                 trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart, trial + 1);
-            latency.insert(latency.end(), t.latencyMs.begin(), t.latencyMs.end());
+            latency.insert(latency.end(), t.loopLatencyMs.begin(), t.loopLatencyMs.end());
         }
         std::sort(latency.begin(), latency.end());
         std::printf(

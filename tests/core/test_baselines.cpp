@@ -372,7 +372,7 @@ class TestBaselines : public QObject {
         const int age = 2;
         for (auto& tracker : trackers) {
             for (bool compensate : {false, true}) {
-                tracker->setLatencyCompensation(compensate ? age : 0);
+                tracker->setLoopLatencySteps(compensate ? age : 0);
                 tracker->reset(ResetMode::Cold);
                 double worst = 0.0;
                 for (int k = 0; k < demo->length(); ++k) {

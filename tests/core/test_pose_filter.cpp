@@ -211,7 +211,7 @@ class TestPoseFilter : public QObject {
         bad.stateDimension = 4;
         QVERIFY(message([&] { PoseFilter f(bad); }).contains(QStringLiteral("state dimension")));
         bad = parameters;
-        bad.latencySteps = -1;
+        bad.loopLatencySteps = -1;
         QVERIFY(message([&] { PoseFilter f(bad); }).contains(QStringLiteral("latency")));
     }
 

@@ -11,7 +11,7 @@ class TestPoseFilterTracking : public QObject {
     void latency_predictionToNowBeatsTheDelayedMeasurement() {
         // A turn at 1.5 m/s and 1.2 rad/s, seen 3 steps (75 ms) late.
         PoseFilterParameters parameters;
-        parameters.latencySteps = 3;
+        parameters.loopLatencySteps = 3;
         parameters.accelerationDensity = {0.05, 0.05, 0.2};
         PoseFilter filter(parameters);
         FineTruth truth(turnStart(), {0.0, 0.0, 0.0}, parameters.controlPeriod, 3);
@@ -21,7 +21,7 @@ class TestPoseFilterTracking : public QObject {
         int counted = 0;
         for (int k = 0; k < 200; ++k) {
             past.push_back(truth.state());
-            if (static_cast<int>(past.size()) > parameters.latencySteps + 1) {
+            if (static_cast<int>(past.size()) > parameters.loopLatencySteps + 1) {
                 past.pop_front();
             }
             const Eigen::VectorXd z = measure(past.front(), parameters, noise);
@@ -55,7 +55,7 @@ class TestPoseFilterTracking : public QObject {
         // seen 3 steps late: with jerk densities the filter estimates the trend and its velocity
         // of now is far closer than the random walk's, which is the velocity of then.
         PoseFilterParameters plain;
-        plain.latencySteps = 3;
+        plain.loopLatencySteps = 3;
         plain.accelerationDensity = {0.05, 0.05, 0.2};
         PoseFilterParameters trend = plain;
         trend.jerkDensity = {0.5, 0.5, 2.0};
@@ -68,7 +68,7 @@ class TestPoseFilterTracking : public QObject {
         truth << 0.0, 0.0, 0.0, 0.5, 0.0, 0.0;
         for (int k = 0; k < 80; ++k) {
             past.push_back(truth);
-            if (static_cast<int>(past.size()) > plain.latencySteps + 1) {
+            if (static_cast<int>(past.size()) > plain.loopLatencySteps + 1) {
                 past.pop_front();
             }
             const Eigen::VectorXd z = measure(past.front(), plain, noise);
@@ -115,7 +115,7 @@ class TestPoseFilterTracking : public QObject {
     void droppedFrames_bridgedAndFlagged() {
         PoseFilterParameters parameters;
         parameters.measurePoseOnly();
-        parameters.latencySteps = 1;
+        parameters.loopLatencySteps = 1;
         parameters.accelerationDensity = {0.05, 0.05, 0.2};
         PoseFilter filter(parameters);
         FineTruth truth(turnStart(), {0.0, 0.0, 0.0}, parameters.controlPeriod, 5);
@@ -240,7 +240,7 @@ class TestPoseFilterTracking : public QObject {
         // until the measurement catches up (it shows the plant did not move: at rest the filter
         // believes the measurement of velocity).
         PoseFilterParameters parameters;
-        parameters.latencySteps = 2;
+        parameters.loopLatencySteps = 2;
         parameters.accelerationDensity = {0.01, 0.01, 0.01};
         parameters.inputGain = Eigen::MatrixXd::Zero(3, 2);
         parameters.inputGain(0, 0) = 2.0;

@@ -115,12 +115,12 @@ class TestPreTrialCheck : public QObject {
         in.calibrationIsVirtualRigs = false;
         in.calibration.lens = devices::CameraLens{};
         in.loopLatency = 0.080;
-        in.latencySource = rig::LatencySource::Declared;
+        in.loopLatencySource = rig::LoopLatencySource::Declared;
         check = rig::evaluatePreTrialCheck(in);
         QVERIFY(item(check, "lens").ok);
         QVERIFY(item(check, "latency").ok);
         QVERIFY(item(check, "latency").detail.contains(QLatin1String("declared: 80.0 ms")));
-        in.latencySource = rig::LatencySource::Measured;
+        in.loopLatencySource = rig::LoopLatencySource::Measured;
         QVERIFY(item(rig::evaluatePreTrialCheck(in), "latency")
                     .detail.contains(QLatin1String("measured")));
     }

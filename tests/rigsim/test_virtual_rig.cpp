@@ -69,7 +69,7 @@ class TestVirtualRig : public QObject {
                 seconds, trial == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart,
                 trial + 1);
             const double miss = std::hypot(t.finalPose.x - lot[0], t.finalPose.y - lot[1]);
-            std::vector<double> latency = t.latencyMs;
+            std::vector<double> latency = t.loopLatencyMs;
             std::sort(latency.begin(), latency.end());
             qInfo(
                 "trial %d: parked %.1f cm from the lot; %d of %d frames with a pose; %lld link "

@@ -70,7 +70,7 @@ class TestEpisodeRunner : public QObject {
   private slots:
     void measurement_delaysByItsLatency() {
         MeasurementParameters p;
-        p.latencySteps = 3;
+        p.loopLatencySteps = 3;
         MeasurementModel sensor(p, 1);
         sensor.reset(Eigen::VectorXd::Constant(1, -1.0));
         for (int k = 0; k < 10; ++k) {
@@ -176,32 +176,32 @@ class TestEpisodeRunner : public QObject {
         const SlideCarSetup setup;
         const double dt = setup.demo->dt;
         EpisodeSettings base = setup.profile.episode(*setup.demo, 1.0, 1.0);
-        QVERIFY(base.compensateLatency);
-        QVERIFY(base.measurement.latencySteps != 5);
-        const EpisodeSettings none = withMeasuredLatency(base, std::nullopt, dt);
-        QCOMPARE(none.measurement.latencySteps, base.measurement.latencySteps);
-        QCOMPARE(none.compensatedLatencySteps(), base.compensatedLatencySteps());
-        const EpisodeSettings measured = withMeasuredLatency(base, 5.2 * dt, dt);
-        QCOMPARE(measured.measurement.latencySteps, 5);
-        QCOMPARE(measured.compensatedLatencySteps(), 5);
+        QVERIFY(base.compensateLoopLatency);
+        QVERIFY(base.measurement.loopLatencySteps != 5);
+        const EpisodeSettings none = withLoopLatency(base, std::nullopt, dt);
+        QCOMPARE(none.measurement.loopLatencySteps, base.measurement.loopLatencySteps);
+        QCOMPARE(none.compensatedLoopLatencySteps(), base.compensatedLoopLatencySteps());
+        const EpisodeSettings measured = withLoopLatency(base, 5.2 * dt, dt);
+        QCOMPARE(measured.measurement.loopLatencySteps, 5);
+        QCOMPARE(measured.compensatedLoopLatencySteps(), 5);
         // The tuning's switch off: told 0, measured or not.
         EpisodeSettings off = base;
-        off.compensateLatency = false;
-        QCOMPARE(withMeasuredLatency(off, 5.2 * dt, dt).compensatedLatencySteps(), 0);
+        off.compensateLoopLatency = false;
+        QCOMPARE(withLoopLatency(off, 5.2 * dt, dt).compensatedLoopLatencySteps(), 0);
         // The filter predicting: the controller is told 0, the filter's latency is the measured.
         EpisodeSettings filtered = base;
         filtered.poseFilter = true;
         filtered.poseFilterPredicts = true;
-        const EpisodeSettings predicted = withMeasuredLatency(filtered, 5.2 * dt, dt);
-        QCOMPARE(predicted.compensatedLatencySteps(), 0);
-        QCOMPARE(predicted.measurement.latencySteps, 5);
+        const EpisodeSettings predicted = withLoopLatency(filtered, 5.2 * dt, dt);
+        QCOMPARE(predicted.compensatedLoopLatencySteps(), 0);
+        QCOMPARE(predicted.measurement.loopLatencySteps, 5);
         filtered.poseFilterPredicts = false;
-        QCOMPARE(withMeasuredLatency(filtered, 5.2 * dt, dt).compensatedLatencySteps(), 5);
+        QCOMPARE(withLoopLatency(filtered, 5.2 * dt, dt).compensatedLoopLatencySteps(), 5);
         // Bounded, and a measurement that is not a number changes nothing.
-        QCOMPARE(withMeasuredLatency(base, 100.0, dt).measurement.latencySteps, 40);
-        QCOMPARE(withMeasuredLatency(base, -1.0, dt).measurement.latencySteps, 0);
-        QCOMPARE(withMeasuredLatency(base, std::nan(""), dt).measurement.latencySteps,
-                 base.measurement.latencySteps);
+        QCOMPARE(withLoopLatency(base, 100.0, dt).measurement.loopLatencySteps, 40);
+        QCOMPARE(withLoopLatency(base, -1.0, dt).measurement.loopLatencySteps, 0);
+        QCOMPARE(withLoopLatency(base, std::nan(""), dt).measurement.loopLatencySteps,
+                 base.measurement.loopLatencySteps);
     }
 
     void poseFilter_controllerSeesTheEstimateOfNow() {
@@ -213,13 +213,14 @@ class TestEpisodeRunner : public QObject {
         EpisodeSettings off = setup.profile.episode(*setup.demo, 1.0, 1.0);
         off.seed = 3;
         QVERIFY(!off.poseFilter);
-        QCOMPARE(off.compensatedLatencySteps(), setup.profile.measurement.latencySteps);
-        QVERIFY(off.compensatedLatencySteps() > 0);
-        QCOMPARE(off.poseFilterParameters.latencySteps, setup.profile.measurement.latencySteps);
+        QCOMPARE(off.compensatedLoopLatencySteps(), setup.profile.measurement.loopLatencySteps);
+        QVERIFY(off.compensatedLoopLatencySteps() > 0);
+        QCOMPARE(off.poseFilterParameters.loopLatencySteps,
+                 setup.profile.measurement.loopLatencySteps);
         QVERIFY((off.poseFilterParameters.accelerationDensity.array() > 0.0).all());
         EpisodeSettings on = off;
         on.poseFilter = true;
-        QCOMPARE(on.compensatedLatencySteps(), 0);
+        QCOMPARE(on.compensatedLoopLatencySteps(), 0);
         auto positionError = [&](const EpisodeSettings& settings) {
             SlideCar car;
             auto controller = MethodCatalog::create("pd", setup.profile, setup.demo, setup.fittedB);
@@ -240,12 +241,12 @@ class TestEpisodeRunner : public QObject {
         // as without the filter; closer to the delayed true state than the raw observation.
         EpisodeSettings lagged = on;
         lagged.poseFilterPredicts = false;
-        QCOMPARE(lagged.compensatedLatencySteps(), setup.profile.measurement.latencySteps);
+        QCOMPARE(lagged.compensatedLoopLatencySteps(), setup.profile.measurement.loopLatencySteps);
         {
             SlideCar car;
             auto controller = MethodCatalog::create("pd", setup.profile, setup.demo, setup.fittedB);
             const EpisodeResult result = runEpisode(car, *controller, lagged);
-            const int d = lagged.measurement.latencySteps;
+            const int d = lagged.measurement.loopLatencySteps;
             double filteredThen = 0.0, rawNoise = 0.0;
             for (std::size_t k = d; k < result.steps.size(); ++k) {
                 filteredThen +=

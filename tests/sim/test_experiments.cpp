@@ -190,8 +190,9 @@ class TestExperiments : public QObject {
         QVERIFY(setup.trial(0).resetMode == core::ResetMode::Cold);
         QCOMPARE(setup.trainingSeeds(), trainingSeeds(defaults.seed, defaults.trainingTrials));
         // The slide-car's trackers compensate the camera's latency, on the rig as in simulation.
-        QCOMPARE(setup.episode().compensatedLatencySteps(), task.profile.measurement.latencySteps);
-        QVERIFY(setup.episode().compensatedLatencySteps() > 0);
+        QCOMPARE(setup.episode().compensatedLoopLatencySteps(),
+                 task.profile.measurement.loopLatencySteps);
+        QVERIFY(setup.episode().compensatedLoopLatencySteps() > 0);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, RunSetup(task, "no-such-method"));
         RunSettings bad;
         bad.threads = 0;
@@ -201,10 +202,10 @@ class TestExperiments : public QObject {
     void profileEpisode_perfectSensorHasNoLatencyAndTheTrialTheDemonstrationsLength() {
         CarTask task;
         const EpisodeSettings real = task.profile.episode(*task.demo, 1.0, 1.0);
-        QCOMPARE(real.measurement.latencySteps, task.profile.measurement.latencySteps);
-        QVERIFY(real.measurement.latencySteps > 0);
+        QCOMPARE(real.measurement.loopLatencySteps, task.profile.measurement.loopLatencySteps);
+        QVERIFY(real.measurement.loopLatencySteps > 0);
         const EpisodeSettings perfect = task.profile.episode(*task.demo, 0.0, 0.0);
-        QCOMPARE(perfect.measurement.latencySteps, 0);
+        QCOMPARE(perfect.measurement.loopLatencySteps, 0);
         QCOMPARE(perfect.measurement.dropProbability, 0.0);
         QCOMPARE(perfect.perturbation.parameters, 0.0);
         const double length = task.demo->length() * task.demo->dt;

@@ -172,7 +172,8 @@ class TestMethodCatalog : public QObject {
     }
 
     // Every parameter is declared once, and its declaration is what reads, writes, formats,
-    // parses and checks it: on every plant, each default round-trips through the text the
+    // parses and checks it; its value lives in a field of the plant's tuning (every plant has
+    // one that check() allows): on every plant, each default round-trips through the text the
     // command line and the session use.
     void parameters_areDeclaredOnceAndRoundTripOnEveryPlant() {
         QSet<QString> names;
@@ -182,6 +183,7 @@ class TestMethodCatalog : public QObject {
             names.insert(name);
             QVERIFY2(QString::fromUtf8(p->help).size() > 10, qPrintable(name));
             QCOMPARE(MethodCatalog::parameter(name), p);
+            QVERIFY2(p->get && p->set, qPrintable(name));  // every value in a tuning's field
             for (const QString& plant : PlantCatalog::names()) {
                 MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe(plant));
                 const Eigen::VectorXd value = p->value(profile);
