@@ -2,6 +2,8 @@
 #   make run    install missing Debian packages, build, start the application
 #   make test   install missing Debian packages, build, run the whole test suite (offscreen)
 #   make bench  build in release mode and run the benchmarks
+#   make package  the Debian package prisca-lab_<version>-1_<arch>.deb here (release build, no
+#               tests; then: sudo apt install ./prisca-lab_*.deb; docs/install.md)
 #   make format the sources as .clang-format has them (make test checks it)
 #   make check-sanitizers  the suite under AddressSanitizer + UBSan, the threaded tests under TSan
 #   make fuzz FUZZ_SECONDS=N [FUZZ_TARGETS="a b"]  each fuzz target for N seconds (libFuzzer)
@@ -10,7 +12,7 @@ BUILD_DIR ?= build
 PRESET    ?= default
 JOBS      ?= $(shell nproc)
 
-.PHONY: all deps configure build run test bench format clean check-sanitizers fuzz test-under-load
+.PHONY: all deps configure build run test bench package format clean check-sanitizers fuzz test-under-load
 
 all: build
 
@@ -68,6 +70,14 @@ test-under-load: build
 
 bench: build
 	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -L benchmark --verbose
+
+PACKAGE_DIR := build-package
+package: deps
+	@test -f $(PACKAGE_DIR)/build.ninja || cmake --preset package
+	cmake --build $(PACKAGE_DIR) -j $(JOBS) --target package
+	rm -f prisca-lab_*.deb
+	cp $(PACKAGE_DIR)/prisca-lab_*.deb .
+	@ls -l prisca-lab_*.deb
 
 format:
 	find app core sim devices rigsim rig tools tests -path tests/data -prune -o \( -name '*.h' -o -name '*.cpp' \) -print | xargs clang-format -i

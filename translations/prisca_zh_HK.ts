@@ -439,32 +439,32 @@
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="45"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="20"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="47"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="22"/>
         <source>R per control in the LQR&apos;s cost e^T W e + (u − u*)^T R (u − u*): larger is gentler.</source>
         <translation>LQR 成本 e^T W e + (u − u*)^T R (u − u*) 中每個控制量的 R：越大越溫和。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="68"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="36"/>
         <source>LQR terminal weight</source>
         <translation>LQR 終端權重</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="70"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="38"/>
         <source>The deviation at the demonstration&apos;s end costs this many times a step&apos;s (where a parking manoeuvre is judged).</source>
         <translation>示範結束時的偏差成本為每步的這麼多倍（泊車動作在此評定）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="85"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="51"/>
         <source>LQR models the drift</source>
         <translation>LQR 模型包含漂移</translation>
     </message>
     <message>
-        <location filename="../sim/methods/LqrMethod.cpp" line="86"/>
+        <location filename="../sim/methods/LqrMethod.cpp" line="52"/>
         <source>Fit eq. 5 in full (the state&apos;s own drift A with B); off: B alone, each state driven only by the controls.</source>
         <translation>完整擬合式 5（狀態本身的漂移 A 連同 B）；關閉：只用 B，每個狀態只受控制量驅動。</translation>
     </message>
@@ -558,22 +558,22 @@
 <context>
     <name>PlantCatalog</name>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="30"/>
+        <location filename="../sim/PlantCatalog.cpp" line="29"/>
         <source>Simulated slide-car</source>
         <translation>模擬漂移車</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="40"/>
+        <location filename="../sim/PlantCatalog.cpp" line="39"/>
         <source>Simulated acrobot</source>
         <translation>模擬雙擺機械臂</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="50"/>
+        <location filename="../sim/PlantCatalog.cpp" line="49"/>
         <source>Simulated aircraft</source>
         <translation>模擬飛機</translation>
     </message>
     <message>
-        <location filename="../sim/PlantCatalog.cpp" line="60"/>
+        <location filename="../sim/PlantCatalog.cpp" line="59"/>
         <source>Simulated differential-drive robot</source>
         <translation>模擬差速驅動機械人</translation>
     </message>
@@ -2243,17 +2243,17 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLog</name>
     <message>
-        <location filename="../app/MessageLog.cpp" line="96"/>
+        <location filename="../app/MessageLog.cpp" line="103"/>
         <source>info</source>
         <translation>資訊</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="98"/>
+        <location filename="../app/MessageLog.cpp" line="105"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="100"/>
+        <location filename="../app/MessageLog.cpp" line="107"/>
         <source>error</source>
         <translation>錯誤</translation>
     </message>
@@ -2947,6 +2947,71 @@ Do you want to replace it?</source>
     </message>
 </context>
 <context>
+    <name>prisca::app::RigDoctorPage</name>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="76"/>
+        <source>Checking this computer...</source>
+        <translation>正在檢查這部電腦……</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="90"/>
+        <source>This computer</source>
+        <translation>這部電腦</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="92"/>
+        <source>The rig has what it needs on this computer.</source>
+        <translation>這部電腦具備實機所需的一切。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/rig/RigDoctorPage.cpp" line="93"/>
+        <source>%n line(s) to fix before the rig can run.</source>
+        <translation>
+            <numerusform>實機運行前有 %n 項須修正。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <source>OK</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <source>Fix</source>
+        <translation>須修正</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <source>Note</source>
+        <translation>注意</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="134"/>
+        <source>Check this computer</source>
+        <translation>檢查這部電腦</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="136"/>
+        <source>The serial ports and whether you may open them, the cameras, the display and the free space: what prisca-cli doctor checks</source>
+        <translation>序列埠及你能否開啟它們、攝影機、顯示器及可用空間：即 prisca-cli doctor 所檢查的項目</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="138"/>
+        <source>What</source>
+        <translation>項目</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="138"/>
+        <source>Found, or what to do</source>
+        <translation>結果，或應如何處理</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="140"/>
+        <source>Not checked yet.</source>
+        <translation>尚未檢查。</translation>
+    </message>
+</context>
+<context>
     <name>prisca::app::RigLinkPage</name>
     <message>
         <location filename="../app/rig/RigLinkPage.cpp" line="44"/>
@@ -3021,218 +3086,223 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigPanel</name>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="319"/>
+        <location filename="../app/rig/RigPanel.cpp" line="313"/>
         <source>Trial %1 running...</source>
         <translation>第 %1 次試驗進行中...</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="402"/>
+        <location filename="../app/rig/RigPanel.cpp" line="396"/>
         <source>Driving and recording: arrows or WASD (or a gamepad); press Drive again to stop.</source>
         <translation>駕駛並錄製中：方向鍵或 WASD（或遊戲手柄）；再按「駕駛」即停止。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="442"/>
+        <location filename="../app/rig/RigPanel.cpp" line="436"/>
         <source>The rig recording could not be used: %1. It is kept in %2.</source>
         <translation>實驗台錄製無法使用：%1。檔案保留在 %2。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="437"/>
+        <location filename="../app/rig/RigPanel.cpp" line="431"/>
         <source>Recorded %1 samples on the rig, kept in %2; it is now the demonstration.</source>
         <translation>已在實機上錄得 %1 個樣本，保存在 %2；它現在是示範。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="196"/>
+        <location filename="../app/rig/RigPanel.cpp" line="190"/>
         <source>Fence: click its corners in order around the floor; click Draw fence again to finish</source>
         <translation>圍欄：沿地面依次點擊各角；再按「繪畫圍欄」完成</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="421"/>
+        <location filename="../app/rig/RigPanel.cpp" line="415"/>
         <source>Saving the recording...</source>
         <translation>正在儲存錄製內容...</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="430"/>
+        <location filename="../app/rig/RigPanel.cpp" line="424"/>
         <source>E-STOP ended the rig recording; the demonstration is unchanged. The take is kept in %1.</source>
         <translation>緊急停止結束了實機錄製；示範未有改變。該次錄製保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="463"/>
+        <location filename="../app/rig/RigPanel.cpp" line="457"/>
         <source>E-STOP: the transmitter sends failsafe until E-STOP is reset.</source>
         <translation>緊急停止：在重設緊急停止之前，發射器會一直發送失效保護訊號。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="176"/>
-        <location filename="../app/rig/RigPanel.cpp" line="294"/>
-        <location filename="../app/rig/RigPanel.cpp" line="301"/>
+        <location filename="../app/rig/RigPanel.cpp" line="170"/>
+        <location filename="../app/rig/RigPanel.cpp" line="288"/>
+        <location filename="../app/rig/RigPanel.cpp" line="295"/>
+        <location filename="../app/rig/RigPanel.cpp" line="304"/>
         <location filename="../app/rig/RigPanel.cpp" line="310"/>
-        <location filename="../app/rig/RigPanel.cpp" line="316"/>
-        <location filename="../app/rig/RigPanel.cpp" line="319"/>
-        <location filename="../app/rig/RigPanel.cpp" line="363"/>
-        <location filename="../app/rig/RigPanel.cpp" line="366"/>
-        <location filename="../app/rig/RigPanel.cpp" line="379"/>
-        <location filename="../app/rig/RigPanel.cpp" line="384"/>
+        <location filename="../app/rig/RigPanel.cpp" line="313"/>
+        <location filename="../app/rig/RigPanel.cpp" line="357"/>
+        <location filename="../app/rig/RigPanel.cpp" line="360"/>
+        <location filename="../app/rig/RigPanel.cpp" line="373"/>
+        <location filename="../app/rig/RigPanel.cpp" line="378"/>
+        <location filename="../app/rig/RigPanel.cpp" line="389"/>
         <location filename="../app/rig/RigPanel.cpp" line="395"/>
-        <location filename="../app/rig/RigPanel.cpp" line="401"/>
-        <location filename="../app/rig/RigPanel.cpp" line="421"/>
-        <location filename="../app/rig/RigPanel.cpp" line="447"/>
-        <location filename="../app/rig/RigPanel.cpp" line="459"/>
+        <location filename="../app/rig/RigPanel.cpp" line="415"/>
+        <location filename="../app/rig/RigPanel.cpp" line="441"/>
+        <location filename="../app/rig/RigPanel.cpp" line="453"/>
+        <location filename="../app/rig/RigPanel.cpp" line="464"/>
         <location filename="../app/rig/RigPanel.cpp" line="470"/>
-        <location filename="../app/rig/RigPanel.cpp" line="476"/>
         <source>Rig trial</source>
         <translation>實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="592"/>
+        <location filename="../app/rig/RigPanel.cpp" line="586"/>
         <source>Link</source>
         <translation>鏈路</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="198"/>
+        <location filename="../app/rig/RigPanel.cpp" line="192"/>
         <source>Floor calibration: click a point of known floor position</source>
         <translation>地面校準：點選一個已知地面位置的點</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="302"/>
+        <location filename="../app/rig/RigPanel.cpp" line="296"/>
         <source>Not ready for a trial: %1</source>
         <translation>未能進行試驗：%1</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="345"/>
+        <location filename="../app/rig/RigPanel.cpp" line="339"/>
         <source>Ready for a trial</source>
         <translation>可以進行試驗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="346"/>
+        <location filename="../app/rig/RigPanel.cpp" line="340"/>
         <source>Ready for a trial (note: %1)</source>
         <translation>可以進行試驗（注意：%1）</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="348"/>
+        <location filename="../app/rig/RigPanel.cpp" line="342"/>
         <source>Not ready: %1</source>
         <translation>未準備好：%1</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="366"/>
+        <location filename="../app/rig/RigPanel.cpp" line="360"/>
         <source>The virtual car is back at its start.</source>
         <translation>虛擬車已回到起點。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="471"/>
+        <location filename="../app/rig/RigPanel.cpp" line="465"/>
         <source>E-STOP is reset: the link sends the commands again.</source>
         <translation>緊急停止已重設：鏈路再次發送指令。</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="498"/>
+        <location filename="../app/rig/RigPanel.cpp" line="492"/>
         <source>Link: off</source>
         <translation>鏈路：關閉</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="498"/>
+        <location filename="../app/rig/RigPanel.cpp" line="492"/>
         <source>Link: port error</source>
         <translation>鏈路：連接埠錯誤</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="501"/>
+        <location filename="../app/rig/RigPanel.cpp" line="495"/>
         <source>Link: %1 failsafe (%2)</source>
         <translation>鏈路：%1 失效保護（%2）</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="506"/>
+        <location filename="../app/rig/RigPanel.cpp" line="500"/>
         <source>Link: %1 %2/s</source>
         <translation>鏈路：%1 %2/s</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="511"/>
+        <location filename="../app/rig/RigPanel.cpp" line="505"/>
         <source>Camera: %1 fps, tracking</source>
         <translation>攝影機：%1 fps，追蹤中</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="512"/>
+        <location filename="../app/rig/RigPanel.cpp" line="506"/>
         <source>Camera: %1 fps, no car in view</source>
         <translation>攝影機：%1 fps，視野內沒有車</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="515"/>
+        <location filename="../app/rig/RigPanel.cpp" line="509"/>
         <source>Camera: failed</source>
         <translation>攝影機：失敗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="516"/>
+        <location filename="../app/rig/RigPanel.cpp" line="510"/>
         <source>Camera: video ended</source>
         <translation>攝影機：影片已結束</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="517"/>
+        <location filename="../app/rig/RigPanel.cpp" line="511"/>
         <source>Camera: off</source>
         <translation>攝影機：關閉</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="543"/>
+        <location filename="../app/rig/RigPanel.cpp" line="537"/>
         <source>the process being stopped and continued</source>
         <translation>程式被暫停後再繼續</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="574"/>
+        <location filename="../app/rig/RigPanel.cpp" line="568"/>
         <source>Start camera</source>
         <translation>啟動攝影機</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="575"/>
+        <location filename="../app/rig/RigPanel.cpp" line="569"/>
         <source>Stop camera</source>
         <translation>停止攝影機</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="576"/>
+        <location filename="../app/rig/RigPanel.cpp" line="570"/>
         <source>Connect</source>
         <translation>連接</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="577"/>
+        <location filename="../app/rig/RigPanel.cpp" line="571"/>
         <source>Disconnect</source>
         <translation>中斷連接</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="578"/>
+        <location filename="../app/rig/RigPanel.cpp" line="572"/>
         <source>Drive and record</source>
         <translation>駕駛並錄製</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="580"/>
+        <location filename="../app/rig/RigPanel.cpp" line="574"/>
         <source>Drive the car through the link (arrows or WASD, or a gamepad) and record a demonstration from the camera</source>
         <translation>經連線駕駛車輛（方向鍵或 WASD，或遊戲手柄），並由攝影機錄製示範</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="582"/>
+        <location filename="../app/rig/RigPanel.cpp" line="576"/>
         <source>Run a trial on the rig</source>
         <translation>在實機上運行一次試驗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="584"/>
+        <location filename="../app/rig/RigPanel.cpp" line="578"/>
         <source>The session&apos;s method drives the car through the link, with the camera&apos;s pose as its state</source>
         <translation>以攝影機測得的位姿作為狀態，由工作階段的方法經連線驅動車輛</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="586"/>
+        <location filename="../app/rig/RigPanel.cpp" line="580"/>
         <source>Stop the trial</source>
         <translation>停止試驗</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="591"/>
+        <location filename="../app/rig/RigPanel.cpp" line="585"/>
         <source>Camera and floor</source>
         <translation>攝影機與地面</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="593"/>
+        <location filename="../app/rig/RigPanel.cpp" line="587"/>
         <source>Lens, latency, fence</source>
         <translation>鏡頭、延遲、圍欄</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="587"/>
+        <location filename="../app/rig/RigPanel.cpp" line="588"/>
+        <source>This computer</source>
+        <translation>這部電腦</translation>
+    </message>
+    <message>
+        <location filename="../app/rig/RigPanel.cpp" line="581"/>
         <source>Put the car back</source>
         <translation>把車放回起點</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigPanel.cpp" line="589"/>
+        <location filename="../app/rig/RigPanel.cpp" line="583"/>
         <source>The virtual car back at its start, at rest (after a trial that left it out of view)</source>
         <translation>把虛擬車靜止放回起點（試驗後車駛出畫面時用）</translation>
     </message>
@@ -4423,6 +4493,209 @@ Do you want to replace it?</source>
         <location filename="../rig/RigCalibration.cpp" line="237"/>
         <source>Fence: none (%1 corner(s) clicked; 3 or more make one).</source>
         <translation>圍欄：無（已點擊 %1 個角；需 3 個或以上）。</translation>
+    </message>
+</context>
+<context>
+    <name>prisca::rig::RigDoctor</name>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="22"/>
+        <source>%1 GiB</source>
+        <translation>%1 GiB</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="23"/>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="35"/>
+        <source>not there (%1)</source>
+        <translation>不存在（%1）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="41"/>
+        <source>cannot be opened (%1)</source>
+        <translation>無法開啟（%1）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="44"/>
+        <source>cannot be opened: you were added to the group %1 but have not logged in since; log out and in again</source>
+        <translation>無法開啟：你已加入群組 %1，但之後尚未重新登入；請登出再登入</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="49"/>
+        <source>cannot be opened: it belongs to the group %1, which you are not in; run sudo usermod -aG %1 $USER and log in again</source>
+        <translation>無法開啟：它屬於群組 %1，而你不在該群組；請執行 sudo usermod -aG %1 $USER，然後重新登入</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="82"/>
+        <source>Serial port %1</source>
+        <translation>序列埠 %1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="83"/>
+        <source>can be opened%1</source>
+        <translation>可以開啟%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="89"/>
+        <source>Transmitter link</source>
+        <translation>發射器鏈路</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="90"/>
+        <source>a serial port this user can open</source>
+        <translation>有此用戶可開啟的序列埠</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="91"/>
+        <source>no USB serial adapter found: plug in the transmitter&apos;s USB-serial adapter or the bridge board (the kernel&apos;s log, dmesg, says what it saw)</source>
+        <translation>找不到 USB 序列轉接器：請插上發射器的 USB 序列轉接器或橋接板（核心日誌 dmesg 會列出所見裝置）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="94"/>
+        <source>no serial port this user can open: see the ports above</source>
+        <translation>沒有此用戶可開啟的序列埠：見上面各埠</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="100"/>
+        <source>Serial adapter rule</source>
+        <translation>序列轉接器規則</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="102"/>
+        <source>installed: %1</source>
+        <translation>已安裝：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="103"/>
+        <source>not installed: the package installs it; from a build, sudo cp packaging/70-prisca-lab.rules /etc/udev/rules.d/ (or join the group dialout)</source>
+        <translation>未安裝：安裝套件時會一併安裝；由原始碼建置時，請執行 sudo cp packaging/70-prisca-lab.rules /etc/udev/rules.d/（或加入群組 dialout）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="124"/>
+        <source>cannot be queried: %1</source>
+        <translation>無法查詢：%1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="126"/>
+        <source>%1: no video capture</source>
+        <translation>%1：不能擷取影像</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="128"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="129"/>
+        <source>no modes listed</source>
+        <translation>沒有列出模式</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="133"/>
+        <source>Camera %1</source>
+        <translation>攝影機 %1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="137"/>
+        <source>Camera</source>
+        <translation>攝影機</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="138"/>
+        <source>a video capture device this user can open</source>
+        <translation>有此用戶可開啟的影像擷取裝置</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="140"/>
+        <source>no camera found (/dev/video*): plug in the ceiling camera; the virtual rig needs none</source>
+        <translation>找不到攝影機（/dev/video*）：請插上天花板攝影機；虛擬實機不需要攝影機</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="142"/>
+        <source>no camera this user can open: see the devices above</source>
+        <translation>沒有此用戶可開啟的攝影機：見上面各裝置</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="153"/>
+        <source>%1 reads and is valid</source>
+        <translation>%1 可讀取且有效</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="155"/>
+        <source>%1 was not read</source>
+        <translation>未讀取 %1</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="211"/>
+        <source>Floor calibration</source>
+        <translation>地面校準</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="213"/>
+        <source>Lens</source>
+        <translation>鏡頭</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="215"/>
+        <source>Display</source>
+        <translation>顯示器</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="218"/>
+        <source>none (DISPLAY and WAYLAND_DISPLAY unset): the window needs one; prisca-cli does not</source>
+        <translation>無（未設定 DISPLAY 及 WAYLAND_DISPLAY）：視窗需要顯示器；prisca-cli 不需要</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="222"/>
+        <source>OpenGL</source>
+        <translation>OpenGL</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="224"/>
+        <source>%1, a GPU render node</source>
+        <translation>%1，有 GPU 渲染節點</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="225"/>
+        <source>%1, software rendering (no GPU render node)</source>
+        <translation>%1，軟件渲染（沒有 GPU 渲染節點）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="227"/>
+        <source>no OpenGL library: install libgl1 (the window&apos;s charts need it)</source>
+        <translation>沒有 OpenGL 程式庫：請安裝 libgl1（視窗的圖表需要它）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="232"/>
+        <source>cannot read the free space under %1</source>
+        <translation>無法讀取 %1 的可用空間</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="234"/>
+        <source>%1 free under %2</source>
+        <translation>%2 有 %1 可用空間</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="237"/>
+        <source>only %1 free under %2: a session&apos;s bundles need %3; free some space or choose another folder</source>
+        <translation>%2 只有 %1 可用空間：一節工作的試驗包需要 %3；請騰出空間或選擇其他資料夾</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="244"/>
+        <source>Free space for trial bundles</source>
+        <translation>試驗包的可用空間</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="245"/>
+        <source>Folders</source>
+        <translation>資料夾</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigDoctor.cpp" line="246"/>
+        <source>settings %1; recordings %2; trial bundles %3; cache %4</source>
+        <translation>設定 %1；錄製 %2；試驗包 %3；快取 %4</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "core/DemonstrationCsv.h"
 #include "devices/ProcessFailsafe.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLoggingCategory>
@@ -53,7 +54,14 @@ bool CommandLine::parse(const QStringList& arguments) {
         throw UsageError(parser_.errorText());
     }
     if (parser_.isSet(QStringLiteral("help"))) {
-        std::printf("%s", parser_.helpText().toLocal8Bit().constData());
+        // The usage line names the command as it is typed, not the path the program ran from.
+        QString help = parser_.helpText();
+        const QString usage =
+            QStringLiteral("Usage: %1").arg(QCoreApplication::arguments().value(0));
+        if (help.startsWith(usage)) {
+            help.replace(0, usage.size(), QStringLiteral("Usage: prisca-cli %1").arg(command_));
+        }
+        std::printf("%s", help.toLocal8Bit().constData());
         return false;
     }
     if (parser_.positionalArguments().size() > positionals_) {

@@ -31,6 +31,8 @@ const std::vector<CliCommand>& commandTable() {
         {"rig", "Trials on the virtual rig: camera, tracker, controller, link and car, headless",
          rigCommand},
         {"replay", "A trial bundle's summary and scores", replayCommand},
+        {"doctor", "Check this computer for the rig: ports, permissions, cameras, files, disk",
+         doctorCommand},
     };
     return table;
 }

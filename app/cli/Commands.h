@@ -18,6 +18,7 @@ int calibrateCameraCommand(const QStringList& arguments);
 int calibrateFloorCommand(const QStringList& arguments);
 int rigCommand(const QStringList& arguments);
 int replayCommand(const QStringList& arguments);
+int doctorCommand(const QStringList& arguments);
 int methodsCommand(const QStringList& arguments);
 int plantCommand(const QStringList& arguments);
 int identifyCommand(const QStringList& arguments);

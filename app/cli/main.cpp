@@ -36,9 +36,7 @@ QString describeCommands() {
                     .arg(QLatin1String(command.name), -9)
                     .arg(QLatin1String(command.summary), state);
     }
-    text += QStringLiteral(
-        "\nCommands marked (planned) are not available in this version.\n"
-        "Run 'prisca-cli <command> --help' for the options of an available command.");
+    text += QStringLiteral("\nRun 'prisca-cli <command> --help' for the options of a command.");
     return text;
 }
 

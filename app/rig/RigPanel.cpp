@@ -6,9 +6,11 @@
 #include "app/input/DrivingInput.h"
 #include "app/panels/RecordPanel.h"
 #include "app/rig/RigCameraPage.h"
+#include "app/rig/RigDoctorPage.h"
 #include "app/rig/RigLinkPage.h"
 #include "app/rig/RigSetupPage.h"
 #include "app/widgets/CameraView.h"
+#include "app/widgets/NamedWidget.h"
 #include "devices/ProcessFailsafe.h"
 #include "rig/RigCalibration.h"
 #include "sim/MethodCatalog.h"
@@ -34,30 +36,20 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
       emergency_(emergency),
       setup_(std::make_unique<rig::RigCalibration>(rig_)),
       view_(new CameraView(this)),
-      startCamera_(new QPushButton(this)),
-      stopCamera_(new QPushButton(this)),
-      connect_(new QPushButton(this)),
-      disconnect_(new QPushButton(this)),
-      drive_(new QPushButton(this)),
-      runTrial_(new QPushButton(this)),
-      stopTrial_(new QPushButton(this)),
-      readiness_(new QLabel(this)),
-      putBack_(new QPushButton(this)),
-      trialInfo_(new QLabel(this)) {
+      startCamera_(named<QPushButton>(this, "startCamera")),
+      stopCamera_(named<QPushButton>(this, "stopCamera")),
+      connect_(named<QPushButton>(this, "connectLink")),
+      disconnect_(named<QPushButton>(this, "disconnectLink")),
+      drive_(named<QPushButton>(this, "driveOnRig")),
+      runTrial_(named<QPushButton>(this, "runOnRig")),
+      stopTrial_(named<QPushButton>(this, "stopOnRig")),
+      readiness_(named<QLabel>(this, "rigReadiness")),
+      putBack_(named<QPushButton>(this, "putCarBack")),
+      trialInfo_(named<QLabel>(this, "rigTrialInfo")) {
     setObjectName(QStringLiteral("rigPanel"));
-    startCamera_->setObjectName(QStringLiteral("startCamera"));
-    stopCamera_->setObjectName(QStringLiteral("stopCamera"));
-    connect_->setObjectName(QStringLiteral("connectLink"));
-    disconnect_->setObjectName(QStringLiteral("disconnectLink"));
-    drive_->setObjectName(QStringLiteral("driveOnRig"));
     drive_->setCheckable(true);
-    runTrial_->setObjectName(QStringLiteral("runOnRig"));
-    stopTrial_->setObjectName(QStringLiteral("stopOnRig"));
-    readiness_->setObjectName(QStringLiteral("rigReadiness"));
     readiness_->setWordWrap(true);
     readiness_->setTextFormat(Qt::PlainText);
-    putBack_->setObjectName(QStringLiteral("putCarBack"));
-    trialInfo_->setObjectName(QStringLiteral("rigTrialInfo"));
     trialInfo_->setWordWrap(true);
     driving_ = new DrivingInput(this);
     driveTimer_ = new QTimer(this);
@@ -68,6 +60,7 @@ RigPanel::RigPanel(LabSession& session, EmergencyStop& emergency, QWidget* paren
     cameraPage_ = new RigCameraPage(rig_, *setup_, session_, *view_, this);
     linkPage_ = new RigLinkPage(rig_, session_, this);
     setupPage_ = new RigSetupPage(rig_, *setup_, emergency_, *view_, this);
+    doctorPage_ = new RigDoctorPage(this);
     buildLayout();
     connectParts();
     statusTimer_->start();
@@ -99,7 +92,8 @@ void RigPanel::buildLayout() {
     tabs_ = new QTabWidget(this);
     tabs_->setObjectName(QStringLiteral("rigTabs"));
     // Each page scrolls on its own, so the buttons above stay in view at any height.
-    for (QWidget* page : std::initializer_list<QWidget*>{cameraPage_, linkPage_, setupPage_}) {
+    for (QWidget* page :
+         std::initializer_list<QWidget*>{cameraPage_, linkPage_, setupPage_, doctorPage_}) {
         auto* scroll = new QScrollArea(tabs_);
         scroll->setWidgetResizable(true);
         scroll->setFrameShape(QFrame::NoFrame);
@@ -591,6 +585,7 @@ void RigPanel::retranslateUi() {
     tabs_->setTabText(0, tr("Camera and floor"));
     tabs_->setTabText(1, tr("Link"));
     tabs_->setTabText(2, tr("Lens, latency, fence"));
+    tabs_->setTabText(3, tr("This computer"));
     setClickMode();
     emitStatus();  // the status bar's fields in the new language
     showReadiness();

@@ -28,6 +28,7 @@ class LabSession;
 class RigCameraPage;
 class RigLinkPage;
 class RigSetupPage;
+class RigDoctorPage;
 
 /// The real rig (or the virtual one), shown and commanded: the camera (a V4L2 device, a video
 /// file, or the virtual rig's synthetic camera over a simulated car driven through the link)
@@ -178,6 +179,7 @@ class RigPanel : public QWidget {
     RigCameraPage* cameraPage_ = nullptr;
     RigLinkPage* linkPage_ = nullptr;
     RigSetupPage* setupPage_ = nullptr;
+    RigDoctorPage* doctorPage_ = nullptr;
     QTabWidget* tabs_ = nullptr;
     QPushButton* startCamera_;
     QPushButton* stopCamera_;

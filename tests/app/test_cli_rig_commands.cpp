@@ -276,6 +276,52 @@ class TestCliRigCommands : public QObject, private CliWorkspace {
         QVERIFY(out["receiverNeutral"].toBool());
     }
 
+    // doctor: a port this process opened is listed as one the user can open; a calibration
+    // that does not read keeps the rig from being ready (exit 1) and is named; the window's
+    // folders are the XDG ones; the text says FIX where something is missing.
+    void doctor_listsWhatTheRigNeedsAndExitsOneWhenSomethingIsMissing() {
+        int master = -1;
+        int slave = -1;
+        char name[256] = {};
+        QCOMPARE(openpty(&master, &slave, name, nullptr, nullptr), 0);
+        const QString pty = QString::fromLocal8Bit(name);
+        writeFile(path("broken-floor.json"), "{ \"points\": ");
+        const QByteArray oldData = qgetenv("XDG_DATA_HOME");
+        qputenv("XDG_DATA_HOME", path("xdg-data").toLocal8Bit());
+        const CliResult r = cli({"doctor", "--port", pty, "--calibration",
+                                 path("broken-floor.json"), "--format", "json"});
+        const CliResult text =
+            cli({"doctor", "--port", pty, "--calibration", path("broken-floor.json")});
+        qputenv("XDG_DATA_HOME", oldData);
+        ::close(slave);
+        ::close(master);
+        QVERIFY2(r.exitCode == 1, qPrintable(r.err + r.out));
+        const QJsonObject root = parseJson(r.out);
+        QCOMPARE(root.value("ready").toBool(true), false);
+        bool portListed = false;
+        bool calibrationNamed = false;
+        for (const QJsonValue& v : root.value("items").toArray()) {
+            const QJsonObject item = v.toObject();
+            portListed =
+                portListed || (item.value("key").toString() == "serial-port" &&
+                               item.value("label").toString().contains(pty) &&
+                               item.value("ok").toBool() && item.value("required").toBool());
+            calibrationNamed =
+                calibrationNamed ||
+                (item.value("key").toString() == "calibration" && !item.value("ok").toBool(true) &&
+                 item.value("detail").toString().contains("broken-floor"));
+        }
+        QVERIFY2(portListed, qPrintable(r.out));
+        QVERIFY2(calibrationNamed, qPrintable(r.out));
+        QCOMPARE(root.value("folders").toObject().value("bundles").toString(),
+                 path("xdg-data") + "/PRISCA Lab/prisca/trials");
+        QCOMPARE(text.exitCode, 1);
+        QVERIFY2(text.out.contains(QRegularExpression("^FIX +Floor calibration: ",
+                                                      QRegularExpression::MultilineOption)),
+                 qPrintable(text.out));
+        QVERIFY(text.out.contains(QStringLiteral("OK    Serial port %1: can be opened").arg(pty)));
+    }
+
     void link_badInputGivesOneLineAndExitTwo() {
         CliResult r = cli({"link", "--port", "/dev/null", "--channels", "1500,abc"});
         QCOMPARE(r.exitCode, 2);

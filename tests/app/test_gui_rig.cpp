@@ -2,13 +2,17 @@
 // recording, the channel map and the floor calibration.
 #include "GuiTestSupport.h"
 #include "app/panels/ReplayDialog.h"
+#include "app/rig/RigDoctorPage.h"
 #include "app/widgets/BundleChooser.h"
 #include "rig/TrialBundle.h"
 #include "sim/PlantCatalog.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QJsonObject>
+#include <QSettings>
 #include <QSlider>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTreeWidget>
@@ -42,6 +46,35 @@ class TestGuiRig : public QObject {
         rig->stopCamera();
         rig->disconnectLink();
         QTRY_VERIFY(!rig->linkStatus().connected);
+    }
+
+    // The Rig tab's "This computer" page: checked when first shown, on its own thread, with
+    // prisca-cli doctor's lines; the port the window is set to is among them; checked again
+    // on the button; the summary is logged.
+    void rig_thisComputerPageShowsTheDoctorsLines() {
+        QSettings().setValue("rig/port", QStringLiteral("/dev/prisca-test-no-such-port"));
+        Window w;
+        auto* page = w.find<RigDoctorPage>("rigDoctorPage");
+        QVERIFY(!page->report().has_value());
+        auto* tabs = w.find<QTabWidget>("rigTabs");
+        w.find<QDockWidget>("rigDock")->raise();
+        tabs->setCurrentIndex(3);
+        QTRY_VERIFY_WITH_TIMEOUT(page->report().has_value() && !page->checking(), 10000);
+        auto* lines = w.find<QTreeWidget>("computerReport");
+        QCOMPARE(lines->topLevelItemCount(), static_cast<int>(page->report()->items.size()));
+        bool named = false;
+        for (int i = 0; i < lines->topLevelItemCount(); ++i) {
+            const QTreeWidgetItem* line = lines->topLevelItem(i);
+            named = named || (line->text(1).contains("/dev/prisca-test-no-such-port") &&
+                              line->text(0) == "Fix" && line->text(2).contains("not there"));
+        }
+        QVERIFY(named);
+        QVERIFY(!page->report()->ready());  // the port it is set to is not there
+        QVERIFY(w.find<QLabel>("computerSummary")->text().contains("to fix"));
+        QSignalSpy again(page, &RigDoctorPage::checked);
+        QTest::mouseClick(w.find<QPushButton>("checkComputer"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(again.count(), 1, 10000);
+        QVERIFY(w.find<QPushButton>("checkComputer")->isEnabled());
     }
 
     void rig_priscaParksTheVirtualCarThroughTheLinkAndEstopLatchesFailsafe() {

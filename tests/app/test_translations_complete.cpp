@@ -167,6 +167,7 @@ QStringList appSources() {
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigSessionTrials.cpp");  // and its trials'
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/PreTrialCheck.cpp");   // the pre-trial check
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigCalibration.cpp");  // the set-up
+    sources << QStringLiteral(PRISCA_SOURCE_DIR "/rig/RigDoctor.cpp");       // doctor's lines
     sources << QStringLiteral(PRISCA_SOURCE_DIR "/core/ActionMapping.cpp");  // the fit's warnings
     sources << QStringLiteral(PRISCA_SOURCE_DIR
                               "/devices/TransmitterLink.cpp");  // failsafe reasons
