@@ -25,8 +25,8 @@ void describe(QCommandLineParser& parser) {
         "The PRISCA Lab window: record a demonstration from the ceiling camera or a keyboard or "
         "gamepad, fit the action mapping, identify the car, run PRISCA and its baselines on a "
         "simulated plant or on the rig, watch the tracking errors live and export Table I. "
-        "E-STOP is Space or Esc, everywhere in the window. The headless commands are "
-        "prisca-cli's."));
+        "E-STOP is Space or Esc, everywhere in the window. Help > Operator guide (F1) is the full "
+        "guide; the headless commands are prisca-cli's."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(
