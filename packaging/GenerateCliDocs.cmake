@@ -74,8 +74,16 @@ set(cases "")
 set(value_options "")
 foreach(command IN LISTS commands)
     run_cli(help ${command} --help)
-    roff_escape(escaped "${help}")
-    string(APPEND h2m ".SS ${command}\n.nf\n${escaped}.fi\n")
+    # The usage and the description as filled text (they are long lines); the option table as
+    # --help aligns it.
+    string(FIND "${help}" "\nOptions:\n" options_at)
+    string(SUBSTRING "${help}" 0 ${options_at} head)
+    math(EXPR options_at "${options_at} + 1")
+    string(SUBSTRING "${help}" ${options_at} -1 table)
+    roff_escape(head "${head}")
+    roff_escape(table "${table}")
+    string(REPLACE "\n" "\n.br\n" head "${head}")
+    string(APPEND h2m ".SS ${command}\n${head}\n.nf\n${table}.fi\n")
     string(REPLACE ";" "," listable "${help}")  # a ; would split CMake's list
     string(REGEX MATCHALL "\n  (-[a-z], )?--[a-z0-9-]+( <[^>]+>)?" option_lines "${listable}")
     set(options "")
