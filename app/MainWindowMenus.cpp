@@ -45,6 +45,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QKeyEvent>
 #include <QKeySequenceEdit>
 #include <QLabel>
@@ -62,8 +63,12 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QTextEdit>
+#include <QTextImageFormat>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -419,6 +424,33 @@ void MainWindow::showShortcuts() {
     ModalDialog::exec(box);
 }
 
+namespace {
+
+// Pictures wider than `room` [px] shown at that width, in proportion.
+void fitPictures(QTextDocument& document, int room) {
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            if (!fragment.isValid() || !fragment.charFormat().isImageFormat()) {
+                continue;
+            }
+            QTextImageFormat picture = fragment.charFormat().toImageFormat();
+            const QImage image(QStringLiteral(":/docs/") + picture.name());
+            if (image.isNull() || image.width() <= room) {
+                continue;
+            }
+            picture.setWidth(room);
+            picture.setHeight(static_cast<double>(image.height()) * room / image.width());
+            QTextCursor cursor(&document);
+            cursor.setPosition(fragment.position());
+            cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
+            cursor.setCharFormat(picture);
+        }
+    }
+}
+
+}  // namespace
+
 void MainWindow::showGuide() {
     QFile file(QStringLiteral(":/docs/operator-guide.md"));
     if (!file.open(QIODevice::ReadOnly)) {
@@ -433,7 +465,9 @@ void MainWindow::showGuide() {
     auto* text = new QTextBrowser(dialog);
     text->setObjectName(QStringLiteral("guideText"));
     text->setOpenExternalLinks(true);
+    text->setSearchPaths({QStringLiteral(":/docs")});  // its pictures, built in with it
     text->setMarkdown(QString::fromUtf8(file.readAll()));
+    fitPictures(*text->document(), std::min(900, width() * 3 / 4) - 60);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
     connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
     auto* layout = new QVBoxLayout(dialog);
