@@ -40,9 +40,17 @@ bool processHasGroup(gid_t gid) {
            std::find(groups.begin(), groups.begin() + read, gid) != groups.begin() + read;
 }
 
+// The reentrant lookups: the Rig tab probes on a thread of its own.
+std::vector<char> lookupBuffer() {
+    const long size = sysconf(_SC_GETPW_R_SIZE_MAX);
+    return std::vector<char>(static_cast<size_t>(size > 0 ? size : 16384));
+}
+
 bool userListedInGroup(gid_t gid) {
-    const passwd* user = getpwuid(geteuid());
-    if (!user) {
+    passwd entry{};
+    passwd* user = nullptr;
+    std::vector<char> buffer = lookupBuffer();
+    if (getpwuid_r(geteuid(), &entry, buffer.data(), buffer.size(), &user) != 0 || !user) {
         return false;
     }
     int count = 64;
@@ -140,7 +148,10 @@ NodeAccess probeAccess(const QString& path) {
         return access;
     }
     access.exists = true;
-    if (const group* owner = getgrgid(info.st_gid)) {
+    group entry{};
+    group* owner = nullptr;
+    std::vector<char> buffer = lookupBuffer();
+    if (getgrgid_r(info.st_gid, &entry, buffer.data(), buffer.size(), &owner) == 0 && owner) {
         access.group = QString::fromLocal8Bit(owner->gr_name);
     }
     access.inGroupNow = processHasGroup(info.st_gid);
@@ -171,7 +182,15 @@ std::vector<SerialPortFacts> probeSerialPorts(const QStringList& extra) {
         ports.push_back(std::move(port));
     }
     for (const QString& path : extra) {
-        if (path.isEmpty() || seen.contains(QFileInfo(path).canonicalFilePath())) {
+        if (path.isEmpty()) {
+            continue;
+        }
+        // A name for a listed port (/dev/serial/by-id/...): that port, known by it too.
+        if (const qsizetype listed = seen.indexOf(QFileInfo(path).canonicalFilePath());
+            listed >= 0 && !seen[listed].isEmpty()) {
+            if (ports[static_cast<size_t>(listed)].path != path) {
+                ports[static_cast<size_t>(listed)].aliases << path;
+            }
             continue;
         }
         SerialPortFacts port;
@@ -245,7 +264,7 @@ std::optional<std::int64_t> freeBytes(const QString& folder) {
         existing = QFileInfo(parent);
     }
     const QStorageInfo storage(existing.absoluteFilePath());
-    if (!storage.isValid()) {
+    if (!storage.isValid() || storage.bytesAvailable() < 0) {
         return std::nullopt;
     }
     return storage.bytesAvailable();

@@ -26,7 +26,8 @@ struct NodeAccess {
 
 /// A serial port as the system lists it.
 struct SerialPortFacts {
-    QString path;  ///< "/dev/ttyUSB0"
+    QString path;         ///< "/dev/ttyUSB0"
+    QStringList aliases;  ///< other names asked for that lead to it (/dev/serial/by-id/...)
     QString description;
     QString manufacturer;
     std::optional<std::uint16_t> vendorId, productId;

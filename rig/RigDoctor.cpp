@@ -71,7 +71,10 @@ void serialItems(const DoctorRequest& request, const HostFacts& facts, DoctorRep
     bool askedOpen = true;
     bool anyAdapter = false;
     for (const devices::SerialPortFacts& port : facts.ports) {
-        const bool asked = request.ports.contains(port.path);
+        const bool asked =
+            request.ports.contains(port.path) ||
+            std::any_of(port.aliases.begin(), port.aliases.end(),
+                        [&](const QString& alias) { return request.ports.contains(alias); });
         // A link goes through a USB adapter or a port the operator names; a motherboard's
         // legacy UART (ttyS0, no USB identity) is listed but does not make the link ready.
         const bool candidate = asked || port.vendorId.has_value();

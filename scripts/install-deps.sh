@@ -15,7 +15,7 @@ packages=(
     qt6-svg-dev qt6-translations-l10n fonts-noto-cjk
     # make package and its checks: manual pages, the .deb's dependencies and lint, the desktop
     # entry and metainfo validators, the completion's framework
-    help2man dpkg-dev lintian desktop-file-utils appstream man-db bash-completion
+    help2man dpkg-dev file lintian desktop-file-utils appstream man-db bash-completion
 )
 # make fuzz: clang with libFuzzer and its sanitizer runtimes.
 if [ "${1:-}" = "fuzz" ]; then

@@ -47,7 +47,7 @@ for file in usr/bin/prisca usr/bin/prisca-cli \
     usr/share/doc/prisca-lab/operator-guide.md usr/share/doc/prisca-lab/install.md; do
     [ -f "$root/$file" ] || fail "the package has no /$file"
 done
-if [ -d "$build/devices/firmware" ]; then  # built where avr-gcc is (make test's machines)
+if [ -f "$build/devices/firmware/ppm_bridge.hex" ]; then  # built where avr-gcc is
     [ -f "$root/usr/share/prisca-lab/firmware/ppm_bridge.hex" ] || fail "no firmware in the package"
     grep -q '^:00000001FF' "$root/usr/share/prisca-lab/firmware/ppm_bridge.hex" ||
         fail "the firmware is not an Intel hex file"
@@ -88,6 +88,7 @@ grep -qx slidecar <<<"$(complete prisca-cli demo --plant s)" || fail "--plant s<
 grep -qx prisca.H= <<<"$(complete prisca-cli run --param prisca.)" || fail "--param: no prisca.H="
 
 # The programs from the package, in an empty home, far from the build and the sources.
+unset XDG_DATA_HOME XDG_CONFIG_HOME XDG_CACHE_HOME
 home=$work/home
 mkdir -p "$home"
 cd "$home"

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include <QDeadlineTimer>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -42,9 +43,17 @@ RigDoctorPage::RigDoctorPage(QWidget* parent)
 }
 
 RigDoctorPage::~RigDoctorPage() {
-    if (thread_) {
-        thread_->wait();  // a query of the system: it ends by itself, within a second
+    if (!thread_) {
+        return;
+    }
+    // A query of the system ends by itself within a second; a wedged driver must not hold the
+    // window's closing: the thread then ends on its own (it holds nothing of this page) and is
+    // deleted when it does.
+    if (thread_->wait(QDeadlineTimer(2000))) {
         delete thread_;
+    } else {
+        disconnect(thread_, nullptr, this, nullptr);
+        connect(thread_, &QThread::finished, thread_, &QObject::deleteLater);
     }
 }
 

@@ -144,6 +144,23 @@ class TestRigDoctor : public QObject {
         QVERIFY(find(report, "serial-port", QStringLiteral("ttyACM0"))->required);
     }
 
+    // The window set to a stable name of the adapter (/dev/serial/by-id/...): the port it
+    // leads to is the one that must open.
+    void aPortNamedThroughAnAlias_isTheOneRequired() {
+        HostFacts facts = allThere();
+        const QString alias = QStringLiteral("/dev/serial/by-id/usb-FTDI_FT232R-if00-port0");
+        facts.ports[0].aliases = {alias};
+        facts.ports[0].access.canOpen = false;
+        facts.ports[0].access.error = QStringLiteral("Permission denied");
+        devices::SerialPortFacts other = usbPort(QStringLiteral("/dev/ttyUSB1"));
+        facts.ports.push_back(other);
+        DoctorRequest request;
+        request.ports = {alias};
+        const rig::DoctorReport report = rig::diagnose(request, facts);
+        QVERIFY(!report.ready());
+        QVERIFY(find(report, "serial-port", QStringLiteral("ttyUSB0"))->required);
+    }
+
     void noCaptureCamera_isNotReady() {
         HostFacts facts = allThere();
         facts.cameras.clear();
