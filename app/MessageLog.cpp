@@ -7,9 +7,9 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QMessageBox>
-#include <QMutexLocker>
-#include <QRecursiveMutex>
 #include <QThread>
+
+#include <mutex>
 
 namespace prisca::app {
 
@@ -17,8 +17,9 @@ namespace {
 
 // The log that receives the prisca.* categories (Qt's handler is a plain function, one per
 // process). Guarded against a worker posting while the window closes; recursive because a line
-// added on the window's thread may make a slot log again (a warning from a slot).
-QRecursiveMutex capturingMutex;
+// added on the window's thread may make a slot log again (a warning from a slot). A standard
+// mutex, which ThreadSanitizer sees (QRecursiveMutex locks inside Qt's uninstrumented library).
+std::recursive_mutex capturingMutex;
 MessageLog* capturingLog = nullptr;
 QtMessageHandler previousHandler = nullptr;
 
@@ -28,7 +29,7 @@ void handleQtMessage(QtMsgType type, const QMessageLogContext& context, const QS
         const MessageLevel level = type == QtInfoMsg      ? MessageLevel::Info
                                    : type == QtWarningMsg ? MessageLevel::Warning
                                                           : MessageLevel::Error;
-        QMutexLocker lock(&capturingMutex);
+        const std::lock_guard<std::recursive_mutex> lock(capturingMutex);
         if (capturingLog) {
             capturingLog->post(QString(category.mid(7)), level, message);
         }
@@ -45,7 +46,7 @@ MessageLog::MessageLog(QObject* parent) : QObject(parent) {
 }
 
 MessageLog::~MessageLog() {
-    QMutexLocker lock(&capturingMutex);
+    const std::lock_guard<std::recursive_mutex> lock(capturingMutex);
     if (capturingLog == this) {
         capturingLog = nullptr;
     }
@@ -184,7 +185,7 @@ void MessageLog::captureQtMessages() {
         return true;
     }();
     Q_UNUSED(installed);
-    QMutexLocker lock(&capturingMutex);
+    const std::lock_guard<std::recursive_mutex> lock(capturingMutex);
     capturingLog = this;
 }
 
