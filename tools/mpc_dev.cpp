@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
         profile.mpc.rollouts = qEnvironmentVariable("MPC_RO").toInt();
     if (qEnvironmentVariableIsSet("MPC_TS"))
         profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_IE"))
+        profile.mpc.identifyEvaluations = qEnvironmentVariable("MPC_IE").toInt();
     RunSettings settings;
     settings.seed = set;
     const Task task = makeTask(profile,

@@ -420,21 +420,31 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="111"/>
+        <source>Corrections before the turn</source>
+        <translation>轉彎前的修正</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="113"/>
+        <source>The largest change the plan makes to the demonstration&apos;s actions before its turn, as a share of each action&apos;s half range (2: no bound).</source>
+        <translation>計劃在示範轉彎之前對其動作所作的最大改動，以每個動作半幅度的比例表示（2：不設限）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="127"/>
         <source>Spin guard</source>
         <translation>打轉防護</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="113"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="129"/>
         <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
         <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="131"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="147"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="132"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="148"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
@@ -1529,135 +1539,135 @@
         <translation>%1，對象：%2；示範：%3</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="102"/>
+        <location filename="../app/MainWindowMenus.cpp" line="107"/>
         <source>the E-STOP button</source>
         <translation>緊急停止按鈕</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="106"/>
-        <location filename="../app/MainWindowMenus.cpp" line="229"/>
-        <location filename="../app/MainWindowMenus.cpp" line="233"/>
+        <location filename="../app/MainWindowMenus.cpp" line="111"/>
+        <location filename="../app/MainWindowMenus.cpp" line="234"/>
+        <location filename="../app/MainWindowMenus.cpp" line="238"/>
         <source>E-STOP LATCHED</source>
         <translation>緊急停止已鎖定</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="168"/>
+        <location filename="../app/MainWindowMenus.cpp" line="173"/>
         <source>The quit was called off; the work goes on.</source>
         <translation>已取消結束；工作繼續。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="175"/>
+        <location filename="../app/MainWindowMenus.cpp" line="180"/>
         <source>Quits when the work under way is done</source>
         <translation>進行中的工作完成後結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="176"/>
+        <location filename="../app/MainWindowMenus.cpp" line="181"/>
         <source>Quits once the work has stopped</source>
         <translation>工作停止後即結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="177"/>
+        <location filename="../app/MainWindowMenus.cpp" line="182"/>
         <source>Don&apos;t quit</source>
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="185"/>
+        <location filename="../app/MainWindowMenus.cpp" line="190"/>
         <source>Job: training before the run</source>
         <translation>工作：運行前訓練中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="188"/>
+        <location filename="../app/MainWindowMenus.cpp" line="193"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="191"/>
+        <location filename="../app/MainWindowMenus.cpp" line="196"/>
         <source>Job: simulated run, PAUSED</source>
         <translation>工作：模擬運行，已暫停</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="198"/>
+        <location filename="../app/MainWindowMenus.cpp" line="203"/>
         <source>Job: experiment, %1 of %2</source>
         <translation>工作：實驗，%1 / %2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="201"/>
+        <location filename="../app/MainWindowMenus.cpp" line="206"/>
         <source>Job: experiment, starting</source>
         <translation>工作：實驗，啟動中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="204"/>
+        <location filename="../app/MainWindowMenus.cpp" line="209"/>
         <source>Job: rig trial</source>
         <translation>工作：實驗台試驗</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="213"/>
+        <location filename="../app/MainWindowMenus.cpp" line="218"/>
         <source>Job: measuring latency</source>
         <translation>工作：量度延遲</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="216"/>
+        <location filename="../app/MainWindowMenus.cpp" line="221"/>
         <source>Job: recording</source>
         <translation>工作：錄製中</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="219"/>
+        <location filename="../app/MainWindowMenus.cpp" line="224"/>
         <source>Job: none</source>
         <translation>工作：無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="229"/>
+        <location filename="../app/MainWindowMenus.cpp" line="234"/>
         <source>E-STOP ready</source>
         <translation>緊急停止就緒</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="382"/>
-        <location filename="../app/MainWindowMenus.cpp" line="261"/>
+        <location filename="../app/MainWindowMenus.cpp" line="266"/>
         <source>Open session</source>
         <translation>開啟工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="262"/>
+        <location filename="../app/MainWindowMenus.cpp" line="267"/>
         <source>PRISCA Lab sessions (*.json);;All files (*)</source>
         <translation>PRISCA Lab 工作階段 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
         <location filename="../app/MainWindow.cpp" line="409"/>
-        <location filename="../app/MainWindowMenus.cpp" line="273"/>
+        <location filename="../app/MainWindowMenus.cpp" line="278"/>
         <source>Save session</source>
         <translation>儲存工作階段</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="274"/>
+        <location filename="../app/MainWindowMenus.cpp" line="279"/>
         <source>PRISCA Lab sessions (*.json)</source>
         <translation>PRISCA Lab 工作階段 (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="451"/>
+        <location filename="../app/MainWindowMenus.cpp" line="485"/>
         <source>Replay a trial bundle</source>
         <translation>重播試驗包</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="320"/>
+        <location filename="../app/MainWindowMenus.cpp" line="325"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="208"/>
+        <location filename="../app/MainWindowMenus.cpp" line="213"/>
         <source>Job: identifying the model, %1 %</source>
         <translation>工作：正在辨識模型，%1 %</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="210"/>
+        <location filename="../app/MainWindowMenus.cpp" line="215"/>
         <source>Job: identifying the model</source>
         <translation>工作：正在辨識模型</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="320"/>
-        <location filename="../app/MainWindowMenus.cpp" line="400"/>
-        <location filename="../app/MainWindowMenus.cpp" line="468"/>
-        <location filename="../app/MainWindowMenus.cpp" line="481"/>
-        <location filename="../app/MainWindowMenus.cpp" line="556"/>
+        <location filename="../app/MainWindowMenus.cpp" line="325"/>
+        <location filename="../app/MainWindowMenus.cpp" line="405"/>
+        <location filename="../app/MainWindowMenus.cpp" line="502"/>
+        <location filename="../app/MainWindowMenus.cpp" line="515"/>
+        <location filename="../app/MainWindowMenus.cpp" line="590"/>
         <source>E-STOP</source>
         <translation>緊急停止</translation>
     </message>
@@ -1851,132 +1861,132 @@
         <translation>車輛模型的辨識</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="392"/>
+        <location filename="../app/MainWindowMenus.cpp" line="397"/>
         <source>E-STOP, in every window while something runs (a dialog, a menu, the guide and the replay too; Shift+Space types a space then). With nothing running, in the main window: Space types a space in a text field, Esc first closes an open list</source>
         <translation>有工作進行時，在每個視窗（包括對話框、選單、指南和重播）都是緊急停止；此時按 Shift+空白鍵輸入空格。沒有工作進行時，在主視窗內：空白鍵在文字欄輸入空格，Esc 先關閉已打開的清單</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="397"/>
+        <location filename="../app/MainWindowMenus.cpp" line="402"/>
         <source>E-STOP (the foot switch&apos;s key)</source>
         <translation>緊急停止（腳踏開關的按鍵）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="400"/>
+        <location filename="../app/MainWindowMenus.cpp" line="405"/>
         <source>Gamepad button %1</source>
         <translation>手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="469"/>
+        <location filename="../app/MainWindowMenus.cpp" line="503"/>
         <source>The E-STOP key &quot;%1&quot; in the settings is no key; it is left out.</source>
         <translation>設定中的緊急停止按鍵「%1」不是按鍵，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="482"/>
+        <location filename="../app/MainWindowMenus.cpp" line="516"/>
         <source>The gamepad button &quot;%1&quot; in the settings is no button SDL knows; it is left out.</source>
         <translation>設定中的手掣按鈕「%1」不是 SDL 認識的按鈕，已略去。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="493"/>
+        <location filename="../app/MainWindowMenus.cpp" line="527"/>
         <source>E-STOP inputs</source>
         <translation>緊急停止輸入</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="495"/>
+        <location filename="../app/MainWindowMenus.cpp" line="529"/>
         <source>Space, Esc and the red button are always E-STOP. A USB foot switch can be set to send a key (F13, Pause, ...): press that key here. A gamepad&apos;s button is E-STOP too, whatever the window shows.</source>
         <translation>空白鍵、Esc 和紅色按鈕永遠是緊急停止。USB 腳踏開關可設定為發出某個按鍵（F13、Pause 等）：在這裏按下該按鍵。手掣的按鈕也可作緊急停止，不論視窗顯示甚麼。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="505"/>
+        <location filename="../app/MainWindowMenus.cpp" line="539"/>
         <source>No key</source>
         <translation>不設按鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="512"/>
+        <location filename="../app/MainWindowMenus.cpp" line="546"/>
         <source>None</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="514"/>
+        <location filename="../app/MainWindowMenus.cpp" line="548"/>
         <source>B (the red one on most pads)</source>
         <translation>B（大多數手掣上的紅色按鈕）</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="515"/>
+        <location filename="../app/MainWindowMenus.cpp" line="549"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="516"/>
+        <location filename="../app/MainWindowMenus.cpp" line="550"/>
         <source>X</source>
         <translation>X</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="517"/>
+        <location filename="../app/MainWindowMenus.cpp" line="551"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="518"/>
+        <location filename="../app/MainWindowMenus.cpp" line="552"/>
         <source>Back / Select</source>
         <translation>Back / Select</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="519"/>
+        <location filename="../app/MainWindowMenus.cpp" line="553"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="520"/>
+        <location filename="../app/MainWindowMenus.cpp" line="554"/>
         <source>Left shoulder</source>
         <translation>左肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="521"/>
+        <location filename="../app/MainWindowMenus.cpp" line="555"/>
         <source>Right shoulder</source>
         <translation>右肩鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="522"/>
+        <location filename="../app/MainWindowMenus.cpp" line="556"/>
         <source>Paddle 1</source>
         <translation>背鍵 1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="528"/>
+        <location filename="../app/MainWindowMenus.cpp" line="562"/>
         <source>A gamepad is connected.</source>
         <translation>已連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="529"/>
+        <location filename="../app/MainWindowMenus.cpp" line="563"/>
         <source>No gamepad is connected now.</source>
         <translation>目前沒有連接手掣。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="532"/>
+        <location filename="../app/MainWindowMenus.cpp" line="566"/>
         <source>Foot switch key:</source>
         <translation>腳踏開關按鍵：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="533"/>
+        <location filename="../app/MainWindowMenus.cpp" line="567"/>
         <source>Gamepad button:</source>
         <translation>手掣按鈕：</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="557"/>
+        <location filename="../app/MainWindowMenus.cpp" line="591"/>
         <source>E-STOP inputs: Space, Esc, the red button%1%2</source>
         <translation>緊急停止輸入：空白鍵、Esc、紅色按鈕%1%2</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="560"/>
+        <location filename="../app/MainWindowMenus.cpp" line="594"/>
         <source>, the key %1</source>
         <translation>、按鍵 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="561"/>
+        <location filename="../app/MainWindowMenus.cpp" line="595"/>
         <source>, gamepad button %1</source>
         <translation>、手掣按鈕 %1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="168"/>
+        <location filename="../app/MainWindowMenus.cpp" line="173"/>
         <location filename="../app/MainWindowQuit.cpp" line="118"/>
         <location filename="../app/MainWindowQuit.cpp" line="141"/>
         <location filename="../app/MainWindowQuit.cpp" line="144"/>
@@ -2050,68 +2060,68 @@ What should happen to it?</source>
         <translation>進行中的工作完成後，PRISCA Lab 便會結束。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="353"/>
+        <location filename="../app/MainWindowMenus.cpp" line="358"/>
         <source>Interface language: %1</source>
         <translation>介面語言：%1</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="353"/>
+        <location filename="../app/MainWindowMenus.cpp" line="358"/>
         <source>Language</source>
         <translation>語言</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="365"/>
+        <location filename="../app/MainWindowMenus.cpp" line="370"/>
         <source>Teaches a robot to repeat one demonstrated manoeuvre precisely.</source>
         <translation>教機械人精準地重複一次示範過的動作。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="367"/>
+        <location filename="../app/MainWindowMenus.cpp" line="372"/>
         <source>PRISCA (Policy Reasoning In State-and-Cost Adaptation) learns online from a single demonstration and a coarse sign model of the dynamics, such as &quot;steer left to turn left&quot;.</source>
         <translation>PRISCA（Policy Reasoning In State-and-Cost Adaptation）只需一次示範，加上一個粗略的動態正負號模型（例如「方向盤向左扭，車便向左轉」），便能在線學習。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="371"/>
+        <location filename="../app/MainWindowMenus.cpp" line="376"/>
         <source>Built with Qt %1, running on Qt %2.</source>
         <translation>以 Qt %1 建置，現於 Qt %2 上執行。</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="374"/>
+        <location filename="../app/MainWindowMenus.cpp" line="379"/>
         <source>About PRISCA Lab</source>
         <translation>關於 PRISCA Lab</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="391"/>
+        <location filename="../app/MainWindowMenus.cpp" line="396"/>
         <source>Space or Esc</source>
         <translation>空白鍵或 Esc</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="406"/>
+        <location filename="../app/MainWindowMenus.cpp" line="411"/>
         <source>Arrow keys or W A S D</source>
         <translation>方向鍵或 W A S D</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="407"/>
+        <location filename="../app/MainWindowMenus.cpp" line="412"/>
         <source>Drive while recording: throttle up/down, steer left/right</source>
         <translation>錄製時駕駛：油門加／減，轉向左／右</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="409"/>
+        <location filename="../app/MainWindowMenus.cpp" line="414"/>
         <source>Copy the selected lines of the message log</source>
         <translation>複製訊息記錄中選取的行</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="416"/>
+        <location filename="../app/MainWindowMenus.cpp" line="421"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="425"/>
-        <location filename="../app/MainWindowMenus.cpp" line="432"/>
+        <location filename="../app/MainWindowMenus.cpp" line="457"/>
+        <location filename="../app/MainWindowMenus.cpp" line="464"/>
         <source>Operator guide</source>
         <translation>操作指南</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="426"/>
+        <location filename="../app/MainWindowMenus.cpp" line="458"/>
         <source>The operator guide is not built into this copy.</source>
         <translation>此版本未內置操作指南。</translation>
     </message>
@@ -2243,17 +2253,17 @@ What should happen to it?</source>
 <context>
     <name>prisca::app::MessageLog</name>
     <message>
-        <location filename="../app/MessageLog.cpp" line="103"/>
+        <location filename="../app/MessageLog.cpp" line="104"/>
         <source>info</source>
         <translation>資訊</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="105"/>
+        <location filename="../app/MessageLog.cpp" line="106"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../app/MessageLog.cpp" line="107"/>
+        <location filename="../app/MessageLog.cpp" line="108"/>
         <source>error</source>
         <translation>錯誤</translation>
     </message>
@@ -2949,64 +2959,64 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RigDoctorPage</name>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="76"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="85"/>
         <source>Checking this computer...</source>
         <translation>正在檢查這部電腦……</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="90"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="99"/>
         <source>This computer</source>
         <translation>這部電腦</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="92"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="101"/>
         <source>The rig has what it needs on this computer.</source>
         <translation>這部電腦具備實機所需的一切。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/rig/RigDoctorPage.cpp" line="93"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="102"/>
         <source>%n line(s) to fix before the rig can run.</source>
         <translation>
             <numerusform>實機運行前有 %n 項須修正。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="115"/>
         <source>OK</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="115"/>
         <source>Fix</source>
         <translation>須修正</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="106"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="115"/>
         <source>Note</source>
         <translation>注意</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="134"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="143"/>
         <source>Check this computer</source>
         <translation>檢查這部電腦</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="136"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="145"/>
         <source>The serial ports and whether you may open them, the cameras, the display and the free space: what prisca-cli doctor checks</source>
         <translation>序列埠及你能否開啟它們、攝影機、顯示器及可用空間：即 prisca-cli doctor 所檢查的項目</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="138"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="147"/>
         <source>What</source>
         <translation>項目</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="138"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="147"/>
         <source>Found, or what to do</source>
         <translation>結果，或應如何處理</translation>
     </message>
     <message>
-        <location filename="../app/rig/RigDoctorPage.cpp" line="140"/>
+        <location filename="../app/rig/RigDoctorPage.cpp" line="149"/>
         <source>Not checked yet.</source>
         <translation>尚未檢查。</translation>
     </message>
@@ -4528,172 +4538,172 @@ Do you want to replace it?</source>
         <translation>無法開啟：它屬於群組 %1，而你不在該群組；請執行 sudo usermod -aG %1 $USER，然後重新登入</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="82"/>
+        <location filename="../rig/RigDoctor.cpp" line="85"/>
         <source>Serial port %1</source>
         <translation>序列埠 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="83"/>
+        <location filename="../rig/RigDoctor.cpp" line="86"/>
         <source>can be opened%1</source>
         <translation>可以開啟%1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="89"/>
+        <location filename="../rig/RigDoctor.cpp" line="92"/>
         <source>Transmitter link</source>
         <translation>發射器鏈路</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="90"/>
+        <location filename="../rig/RigDoctor.cpp" line="93"/>
         <source>a serial port this user can open</source>
         <translation>有此用戶可開啟的序列埠</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="91"/>
+        <location filename="../rig/RigDoctor.cpp" line="94"/>
         <source>no USB serial adapter found: plug in the transmitter&apos;s USB-serial adapter or the bridge board (the kernel&apos;s log, dmesg, says what it saw)</source>
         <translation>找不到 USB 序列轉接器：請插上發射器的 USB 序列轉接器或橋接板（核心日誌 dmesg 會列出所見裝置）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="94"/>
+        <location filename="../rig/RigDoctor.cpp" line="97"/>
         <source>no serial port this user can open: see the ports above</source>
         <translation>沒有此用戶可開啟的序列埠：見上面各埠</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="100"/>
+        <location filename="../rig/RigDoctor.cpp" line="103"/>
         <source>Serial adapter rule</source>
         <translation>序列轉接器規則</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="102"/>
+        <location filename="../rig/RigDoctor.cpp" line="105"/>
         <source>installed: %1</source>
         <translation>已安裝：%1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="103"/>
+        <location filename="../rig/RigDoctor.cpp" line="106"/>
         <source>not installed: the package installs it; from a build, sudo cp packaging/70-prisca-lab.rules /etc/udev/rules.d/ (or join the group dialout)</source>
         <translation>未安裝：安裝套件時會一併安裝；由原始碼建置時，請執行 sudo cp packaging/70-prisca-lab.rules /etc/udev/rules.d/（或加入群組 dialout）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="124"/>
+        <location filename="../rig/RigDoctor.cpp" line="127"/>
         <source>cannot be queried: %1</source>
         <translation>無法查詢：%1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="126"/>
+        <location filename="../rig/RigDoctor.cpp" line="129"/>
         <source>%1: no video capture</source>
         <translation>%1：不能擷取影像</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="128"/>
+        <location filename="../rig/RigDoctor.cpp" line="131"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="129"/>
+        <location filename="../rig/RigDoctor.cpp" line="132"/>
         <source>no modes listed</source>
         <translation>沒有列出模式</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="133"/>
+        <location filename="../rig/RigDoctor.cpp" line="136"/>
         <source>Camera %1</source>
         <translation>攝影機 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="137"/>
+        <location filename="../rig/RigDoctor.cpp" line="140"/>
         <source>Camera</source>
         <translation>攝影機</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="138"/>
+        <location filename="../rig/RigDoctor.cpp" line="141"/>
         <source>a video capture device this user can open</source>
         <translation>有此用戶可開啟的影像擷取裝置</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="140"/>
+        <location filename="../rig/RigDoctor.cpp" line="143"/>
         <source>no camera found (/dev/video*): plug in the ceiling camera; the virtual rig needs none</source>
         <translation>找不到攝影機（/dev/video*）：請插上天花板攝影機；虛擬實機不需要攝影機</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="142"/>
+        <location filename="../rig/RigDoctor.cpp" line="145"/>
         <source>no camera this user can open: see the devices above</source>
         <translation>沒有此用戶可開啟的攝影機：見上面各裝置</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="153"/>
+        <location filename="../rig/RigDoctor.cpp" line="156"/>
         <source>%1 reads and is valid</source>
         <translation>%1 可讀取且有效</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="155"/>
+        <location filename="../rig/RigDoctor.cpp" line="158"/>
         <source>%1 was not read</source>
         <translation>未讀取 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="211"/>
+        <location filename="../rig/RigDoctor.cpp" line="214"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="213"/>
+        <location filename="../rig/RigDoctor.cpp" line="216"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="215"/>
+        <location filename="../rig/RigDoctor.cpp" line="218"/>
         <source>Display</source>
         <translation>顯示器</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="218"/>
+        <location filename="../rig/RigDoctor.cpp" line="221"/>
         <source>none (DISPLAY and WAYLAND_DISPLAY unset): the window needs one; prisca-cli does not</source>
         <translation>無（未設定 DISPLAY 及 WAYLAND_DISPLAY）：視窗需要顯示器；prisca-cli 不需要</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="222"/>
+        <location filename="../rig/RigDoctor.cpp" line="225"/>
         <source>OpenGL</source>
         <translation>OpenGL</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="224"/>
+        <location filename="../rig/RigDoctor.cpp" line="227"/>
         <source>%1, a GPU render node</source>
         <translation>%1，有 GPU 渲染節點</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="225"/>
+        <location filename="../rig/RigDoctor.cpp" line="228"/>
         <source>%1, software rendering (no GPU render node)</source>
         <translation>%1，軟件渲染（沒有 GPU 渲染節點）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="227"/>
+        <location filename="../rig/RigDoctor.cpp" line="230"/>
         <source>no OpenGL library: install libgl1 (the window&apos;s charts need it)</source>
         <translation>沒有 OpenGL 程式庫：請安裝 libgl1（視窗的圖表需要它）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="232"/>
+        <location filename="../rig/RigDoctor.cpp" line="235"/>
         <source>cannot read the free space under %1</source>
         <translation>無法讀取 %1 的可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="234"/>
+        <location filename="../rig/RigDoctor.cpp" line="237"/>
         <source>%1 free under %2</source>
         <translation>%2 有 %1 可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="237"/>
+        <location filename="../rig/RigDoctor.cpp" line="240"/>
         <source>only %1 free under %2: a session&apos;s bundles need %3; free some space or choose another folder</source>
         <translation>%2 只有 %1 可用空間：一節工作的試驗包需要 %3；請騰出空間或選擇其他資料夾</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="244"/>
+        <location filename="../rig/RigDoctor.cpp" line="247"/>
         <source>Free space for trial bundles</source>
         <translation>試驗包的可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="245"/>
+        <location filename="../rig/RigDoctor.cpp" line="248"/>
         <source>Folders</source>
         <translation>資料夾</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="246"/>
+        <location filename="../rig/RigDoctor.cpp" line="249"/>
         <source>settings %1; recordings %2; trial bundles %3; cache %4</source>
         <translation>設定 %1；錄製 %2；試驗包 %3；快取 %4</translation>
     </message>

@@ -105,6 +105,22 @@ const MethodParameter& mpcTube() {
     return p;
 }
 
+const MethodParameter& mpcStraight() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.straight", QT_TRANSLATE_NOOP("MethodParameter", "Corrections before the turn"), "",
+            0.0, 2.0, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The largest change the plan makes to the demonstration's "
+                              "actions before its turn, as a share of each action's half "
+                              "range (2: no bound)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.straightCorrection); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.straightCorrection = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcSpinGuard() {
     static const MethodParameter p = [] {
         MethodParameter p =
@@ -171,7 +187,7 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     } else {
         const PlantParameters prior =
             profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
-        const IdentificationResult identified = identifyPlant(data, prior, settings);
+        const IdentificationResult identified = identifyForMpc(data, prior, profile.mpc);
         if (identified.ok()) {
             model = identified.parameters;
             fit = identified.positionRms;
@@ -196,7 +212,8 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(), mpcRollouts(), mpcTube(), mpcSpinGuard(), mpcRefit()};
+    s.parameters = {mpcReplan(),   mpcRollouts(),  mpcTube(),
+                    mpcStraight(), mpcSpinGuard(), mpcRefit()};
     return s;
 }
 

@@ -219,8 +219,11 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
     const double noiseFloor = settings.poseNoise / settings.positionScale;
     outcome->variance = std::max(r0.squaredNorm() / dof, noiseFloor * noiseFloor);
     const Eigen::MatrixXd information = jacobian.transpose() * jacobian;
+    // A pass with every parameter held (each undetermined in the last) has nothing to invert.
     const Eigen::MatrixXd covariance =
-        outcome->variance * information.completeOrthogonalDecomposition().pseudoInverse();
+        n > 0 ? Eigen::MatrixXd(outcome->variance *
+                                information.completeOrthogonalDecomposition().pseudoInverse())
+              : Eigen::MatrixXd(0, 0);
     outcome->values = values;
     outcome->relativeStd.assign(static_cast<size_t>(n), 0.0);
     for (int i = 0; i < n; ++i) {

@@ -32,6 +32,20 @@ IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters
     return settings;
 }
 
+IdentificationResult identifyForMpc(const std::vector<core::Demonstration>& data,
+                                    const PlantParameters& prior, const MpcParameters& parameters) {
+    IdentificationResult quick =
+        identifyPlant(data, prior, mpcIdentificationSettings(parameters, false));
+    if (!quick.ok() || quick.positionRms <= parameters.poorFit || parameters.retryEvaluations < 1) {
+        return quick;
+    }
+    IdentificationSettings thorough = mpcIdentificationSettings(parameters, false);
+    thorough.evaluationsPerStart = parameters.retryEvaluations;
+    thorough.restarts = 2;
+    IdentificationResult again = identifyPlant(data, prior, thorough);
+    return again.ok() && again.positionRms < quick.positionRms ? again : quick;
+}
+
 MpcController::MpcController(core::TrackingProblem problem, MpcParameters parameters,
                              OracleParameters planner, std::unique_ptr<core::Controller> fallback,
                              PlantParameters model, double modelFit,
@@ -56,10 +70,12 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
     if (parameters_.replanEvery < 1 || parameters_.rollouts < 2 || parameters_.maxKnots < 2 ||
         parameters_.substeps < 1 || !(parameters_.tubeSeconds > 0.0) ||
         parameters_.tubeStrikes < 1 || !(parameters_.tubePosition > 0.0) ||
-        !(parameters_.tubeHeading > 0.0)) {
+        !(parameters_.tubeHeading > 0.0) || !(parameters_.straightCorrection >= 0.0) ||
+        !(parameters_.turnShare > 0.0 && parameters_.turnShare <= 1.0)) {
         throw std::invalid_argument(
             "MpcController: replanning, rollouts >= 2, knots >= 2, substeps, the tube's steps and "
-            "strikes >= 1 and positive tube bounds needed");
+            "strikes >= 1, positive tube bounds, a correction before the turn >= 0 and a turn's "
+            "share in (0, 1] needed");
     }
     if (model_.plant != problem_.demonstration->plant && !problem_.demonstration->plant.isEmpty()) {
         throw std::invalid_argument(
@@ -89,6 +105,14 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
                 spinUntil_ = static_cast<int>(j);
             }
         }
+        const double fastest = std::abs(states(spinUntil_, yawRate));
+        turnStart_ = spinUntil_;
+        while (turnStart_ > 0 &&
+               std::abs(states(turnStart_ - 1, yawRate)) > parameters_.turnShare * fastest) {
+            --turnStart_;
+        }
+        plannerParameters_.calmUntil = turnStart_;
+        plannerParameters_.calmCorrection = parameters_.straightCorrection;
     }
     reset(core::ResetMode::Cold);
 }
@@ -114,6 +138,7 @@ MpcController::MpcController(const MpcController& other)
       strikes_(other.strikes_),
       spinStrikes_(other.spinStrikes_),
       spinUntil_(other.spinUntil_),
+      turnStart_(other.turnStart_),
       refits_(other.refits_),
       step_(other.step_),
       record_(other.record_) {

@@ -59,6 +59,14 @@ struct MpcParameters {
     double spinSideSlip = 0.17453292519943295;  // 10 deg
     double spinWindow = 0.3;
     double spinSpeed = 1.0;
+    /// On the way into the slide (before the demonstration's yaw rate first reaches
+    /// `turnShare` of its largest) the plan corrects the demonstration's actions by at most this
+    /// share of the half range. There the model's Coulomb tyres hold where the car's, sharing
+    /// their grip with the drive, may not, and the motor is known only near the demonstration's
+    /// throttle: a plan that steered or eased off on the straight to save the slide later spun
+    /// the car or left it metres short (docs/research-log.md, issue 33's sixth step).
+    double straightCorrection = 0.2;
+    double turnShare = 0.3;
     /// The model's position RMS over its data's segments [m] above which it is not planned
     /// through at all (the fallback from the start).
     double poorFit = 0.10;
@@ -66,7 +74,11 @@ struct MpcParameters {
     bool refit = true;
     int refitTrials = 4;            ///< at most this many of the newest trials, with the demo
     int identifyEvaluations = 400;  ///< identification's budget from the demonstration
-    int refitEvaluations = 120;     ///< a refit's (a local search from the model)
+    /// A fit from that budget worse than `poorFit` is searched again with this budget per
+    /// start and two restarts, and the better kept: a poor fit from the quick search was a
+    /// local minimum on a development car (16 cm; 2.6 cm with 1,000 evaluations); 0: never.
+    int retryEvaluations = 1200;
+    int refitEvaluations = 120;  ///< a refit's (a local search from the model)
 };
 
 /// Why a trial is (or is not) planned through the model.
@@ -115,6 +127,9 @@ class MpcController : public core::Controller {
     double modelFit() const { return modelFit_; }
     int refits() const { return refits_; }
     const MpcParameters& parameters() const { return parameters_; }
+    /// The demonstration's step its turn begins at: the plan's corrections are bounded by
+    /// straightCorrection before it.
+    int turnStart() const { return turnStart_; }
 
   private:
     void buildModel();
@@ -153,6 +168,7 @@ class MpcController : public core::Controller {
     int strikes_ = 0;
     int spinStrikes_ = 0;
     int spinUntil_ = 0;  // the demonstration's step of fastest turn: the guard's last
+    int turnStart_ = 0;  // the demonstration's first step of that turn: the straight's end
     int refits_ = 0;
     int step_ = 0;
     core::ControlStep record_;
@@ -160,5 +176,10 @@ class MpcController : public core::Controller {
 
 /// The settings identification runs with for `mpc` (its model's substeps, its budget).
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit);
+
+/// `mpc`'s model from its data (the demonstration): the quick search, and when that fits worse
+/// than `poorFit` a thorough one from the same prior (retryEvaluations), the better kept.
+IdentificationResult identifyForMpc(const std::vector<core::Demonstration>& data,
+                                    const PlantParameters& prior, const MpcParameters& parameters);
 
 }  // namespace prisca::sim

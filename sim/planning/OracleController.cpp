@@ -74,6 +74,11 @@ Eigen::VectorXd OracleController::actionAt(int t, const Eigen::VectorXd& correct
     const core::Demonstration& demo = *problem_.demonstration;
     const int j = std::min(t, demo.length() - 1);
     Eigen::VectorXd u = demo.actions.row(j).transpose() + correction;
+    if (j < parameters_.calmUntil) {
+        const Eigen::VectorXd most = parameters_.calmCorrection * halfRange_;
+        u = u.cwiseMax(demo.actions.row(j).transpose() - most)
+                .cwiseMin(demo.actions.row(j).transpose() + most);
+    }
     if (parameters_.feedback.size() > 0) {
         problem_.deviation.deviation(state, demo.states.row(j).transpose(), deviation_);
         u.noalias() += parameters_.feedback * deviation_;

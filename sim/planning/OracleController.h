@@ -54,6 +54,11 @@ struct OracleParameters {
     double trackingScale = 0.0;
     /// The largest correction, as a share of the half range [1] (1: the whole range).
     double maxCorrection = 2.0;
+    /// Before the demonstration's step `calmUntil` the correction is at most `calmCorrection`
+    /// of the half range [1], whatever the knots say: the plan keeps to the demonstration's
+    /// actions on the way into a slide (-1: no such stretch).
+    int calmUntil = -1;
+    double calmCorrection = 2.0;
 };
 
 /// The limit of what a controller could do on this simulation: it is given the trial's own

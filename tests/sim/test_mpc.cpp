@@ -193,6 +193,66 @@ class TestMpc : public QObject {
         QVERIFY(setup.profile.mpc.spinYawRate > 0.0);
     }
 
+    // Before the demonstration's turn the plan changes its actions by at most the bound
+    // (mpc.straight); from the turn on it corrects freely. Under a wrong model, which the plan
+    // corrects hard, and with the tube and the spin guard out of the way.
+    void straightCorrection_boundsThePlanBeforeTheTurn() {
+        Setup setup;
+        setup.profile.mpc.poorFit = 100.0;
+        setup.profile.mpc.tubePosition = 100.0;
+        setup.profile.mpc.tubeHeading = 100.0;
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.spin-slip=0"));
+        setup.profile.mpcModel = std::make_shared<const PlantParameters>(withValues(
+            defaultPlantParameters("slidecar"),
+            {{"staticFriction", 0.6}, {"kineticFriction", 0.45}, {"maxDriveForce", 5.0}}));
+        const core::Demonstration& demo = *setup.demonstration;
+        const Eigen::VectorXd half =
+            0.5 * (setup.profile.info.actionUpper - setup.profile.info.actionLower);
+        // The largest change to the demonstration's actions, share of the half range, before
+        // and from the turn; whether the plan drove throughout; where the turn begins.
+        struct Changes {
+            double before = 0.0;
+            double after = 0.0;
+            bool planned = false;
+            int turn = 0;
+        };
+        const auto largest = [&](double bound) {
+            MethodCatalog::setParameter(setup.profile,
+                                        QStringLiteral("mpc.straight=%1").arg(bound));
+            auto mpc = setup.mpc();
+            auto plant = PlantCatalog::create("slidecar");
+            EpisodeSettings s = setup.profile.episode(demo, 0.0, 0.0);
+            s.seed = 11;
+            EpisodeStepper stepper(*plant, *mpc, s);
+            Changes most;
+            most.turn = mpc->turnStart();
+            while (!stepper.finished()) {
+                const int k = stepper.stepCount();
+                const StepRecord& taken = stepper.step();
+                if (k >= demo.length()) {
+                    break;
+                }
+                const double change =
+                    ((taken.action - demo.actions.row(k).transpose()).array() / half.array())
+                        .abs()
+                        .maxCoeff();
+                double& side = k < most.turn ? most.before : most.after;
+                side = std::max(side, change);
+            }
+            most.planned = mpc->mode() == MpcMode::Planning;
+            return most;
+        };
+        const Changes bounded = largest(0.05);
+        QVERIFY(bounded.planned);
+        QVERIFY2(bounded.turn > 10 && bounded.turn < demo.length() - 10,
+                 qPrintable(QString::number(bounded.turn)));
+        QVERIFY2(bounded.before <= 0.05 + 1e-9, qPrintable(QString::number(bounded.before)));
+        QVERIFY2(bounded.after > 0.1, qPrintable(QString::number(bounded.after)));
+        const Changes free = largest(2.0);
+        QVERIFY(free.planned);
+        QVERIFY2(free.before > 0.1, qPrintable(QString::number(free.before)));
+    }
+
     // A model that fits its data worse than the bound is not planned through at all.
     void poorFit_fallsBackFromTheStart() {
         Setup setup;
@@ -231,6 +291,32 @@ class TestMpc : public QObject {
         QCOMPARE(mpc->refits(), 0);
         QCOMPARE(mpc->model().values, off.values);
         QCOMPARE(copied->refits(), 1);
+    }
+
+    // A quick identification that fits worse than poorFit is searched again with the thorough
+    // budget, and the better model kept; one that fits well is not searched again.
+    void poorQuickFit_isSearchedAgain() {
+        Setup setup;
+        const std::vector<core::Demonstration> data{*setup.demonstration};
+        const PlantParameters prior = withValues(
+            defaultPlantParameters("slidecar"), {{"kineticFriction", 0.3}, {"maxDriveForce", 6.0}});
+        MpcParameters p;
+        p.identifyEvaluations = 8;
+        p.retryEvaluations = 0;
+        const IdentificationResult quick = identifyForMpc(data, prior, p);
+        QVERIFY2(quick.ok(), qPrintable(quick.refusal));
+        p.poorFit = quick.positionRms / 2.0;
+        p.retryEvaluations = 24;
+        const IdentificationResult again = identifyForMpc(data, prior, p);
+        QVERIFY(again.ok());
+        QVERIFY2(
+            again.positionRms < quick.positionRms,
+            qPrintable(
+                QStringLiteral("%1 against %2").arg(again.positionRms).arg(quick.positionRms)));
+        p.poorFit = 2.0 * quick.positionRms;
+        const IdentificationResult kept = identifyForMpc(data, prior, p);
+        QCOMPARE(kept.positionRms, quick.positionRms);
+        QCOMPARE(kept.parameters.values, quick.parameters.values);
     }
 
     // Without a model it identifies one from the demonstration; a plant identification does
