@@ -1,8 +1,10 @@
 // Identification of the slide-car: a car of known parameters recovered from its noise-free
-// demonstration. A minute of model runs: left out of the sanitizer builds, which run the
-// identification's code through test_identification.
+// demonstration, and mpc's second search of a poor quick fit. A minute of model runs: left out
+// of the sanitizer builds, which run the identification's code through test_identification.
+#include "sim/PlantCatalog.h"
 #include "sim/demonstrations/SlideCarDemonstrator.h"
 #include "sim/planning/Identification.h"
+#include "sim/planning/MpcController.h"
 #include "sim/plants/PlantParameters.h"
 #include "sim/plants/SlideCar.h"
 
@@ -91,6 +93,38 @@ class TestIdentificationRecovery : public QObject {
         const Eigen::MatrixXd replay = replayRun(demonstration, result.parameters);
         QCOMPARE(replay.rows(), demonstration.length());
         QCOMPARE(replay.row(0), demonstration.states.row(0));
+    }
+
+    // A quick identification that fits worse than poorFit is searched again with the thorough
+    // budget, and the better model kept; one that fits well is not searched again.
+    void poorQuickFit_isSearchedAgain() {
+        const std::vector<core::Demonstration> data{PlantCatalog::demonstrate("slidecar", 1)};
+        PlantParameters prior = defaultPlantParameters("slidecar");
+        const auto& specs = plantParameterSpecs("slidecar");
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == QLatin1String("kineticFriction")) {
+                prior.values[i] = 0.3;
+            } else if (specs[i].key == QLatin1String("maxDriveForce")) {
+                prior.values[i] = 6.0;
+            }
+        }
+        MpcParameters p;
+        p.identifyEvaluations = 8;
+        p.retryEvaluations = 0;
+        const IdentificationResult quick = identifyForMpc(data, prior, p);
+        QVERIFY2(quick.ok(), qPrintable(quick.refusal));
+        p.poorFit = quick.positionRms / 2.0;
+        p.retryEvaluations = 24;
+        const IdentificationResult again = identifyForMpc(data, prior, p);
+        QVERIFY(again.ok());
+        QVERIFY2(
+            again.positionRms < quick.positionRms,
+            qPrintable(
+                QStringLiteral("%1 against %2").arg(again.positionRms).arg(quick.positionRms)));
+        p.poorFit = 2.0 * quick.positionRms;
+        const IdentificationResult kept = identifyForMpc(data, prior, p);
+        QCOMPARE(kept.positionRms, quick.positionRms);
+        QCOMPARE(kept.parameters.values, quick.parameters.values);
     }
 };
 

@@ -293,32 +293,6 @@ class TestMpc : public QObject {
         QCOMPARE(copied->refits(), 1);
     }
 
-    // A quick identification that fits worse than poorFit is searched again with the thorough
-    // budget, and the better model kept; one that fits well is not searched again.
-    void poorQuickFit_isSearchedAgain() {
-        Setup setup;
-        const std::vector<core::Demonstration> data{*setup.demonstration};
-        const PlantParameters prior = withValues(
-            defaultPlantParameters("slidecar"), {{"kineticFriction", 0.3}, {"maxDriveForce", 6.0}});
-        MpcParameters p;
-        p.identifyEvaluations = 8;
-        p.retryEvaluations = 0;
-        const IdentificationResult quick = identifyForMpc(data, prior, p);
-        QVERIFY2(quick.ok(), qPrintable(quick.refusal));
-        p.poorFit = quick.positionRms / 2.0;
-        p.retryEvaluations = 24;
-        const IdentificationResult again = identifyForMpc(data, prior, p);
-        QVERIFY(again.ok());
-        QVERIFY2(
-            again.positionRms < quick.positionRms,
-            qPrintable(
-                QStringLiteral("%1 against %2").arg(again.positionRms).arg(quick.positionRms)));
-        p.poorFit = 2.0 * quick.positionRms;
-        const IdentificationResult kept = identifyForMpc(data, prior, p);
-        QCOMPARE(kept.positionRms, quick.positionRms);
-        QCOMPARE(kept.parameters.values, quick.parameters.values);
-    }
-
     // Without a model it identifies one from the demonstration; a plant identification does
     // not know is refused with the reason.
     void noModel_identifiesFromTheDemonstration() {
