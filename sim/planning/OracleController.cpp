@@ -75,9 +75,10 @@ Eigen::VectorXd OracleController::actionAt(int t, const Eigen::VectorXd& correct
     const int j = std::min(t, demo.length() - 1);
     Eigen::VectorXd u = demo.actions.row(j).transpose() + correction;
     if (j < parameters_.calmUntil) {
-        const Eigen::VectorXd most = parameters_.calmCorrection * halfRange_;
-        u = u.cwiseMax(demo.actions.row(j).transpose() - most)
-                .cwiseMin(demo.actions.row(j).transpose() + most);
+        for (Eigen::Index l = 0; l < u.size(); ++l) {
+            const double most = parameters_.calmCorrection * halfRange_[l];
+            u[l] = std::clamp(u[l], demo.actions(j, l) - most, demo.actions(j, l) + most);
+        }
     }
     if (parameters_.feedback.size() > 0) {
         problem_.deviation.deviation(state, demo.states.row(j).transpose(), deviation_);
