@@ -162,6 +162,20 @@ struct Window {
         return window.findChild<T*>(QLatin1String(name));
     }
     void setSpeedIndex(int index) { find<QComboBox>("speed")->setCurrentIndex(index); }
+    // Presses Run as the operator does and waits for the run's end and for the panel to be idle
+    // again: the worker tells the end before its phase, so Run pressed again in between would
+    // meet a disabled button. False when either does not come within kRunTimeoutMs.
+    bool runToEnd() {
+        auto* run = find<QAbstractButton>("runButton");
+        if (!QTest::qWaitFor([&] { return run->isEnabled(); }, kRunTimeoutMs)) {
+            qWarning("the Run button stayed disabled");
+            return false;
+        }
+        QSignalSpy finished(&window.run(), &RunThread::runFinished);
+        run->click();
+        return QTest::qWaitFor([&] { return finished.count() > 0; }, kRunTimeoutMs) &&
+               QTest::qWaitFor([&] { return run->isEnabled(); }, kRunTimeoutMs);
+    }
     QTableWidget* results() { return find<QTableWidget>("trialResults"); }
 };
 

@@ -45,13 +45,7 @@ class TestGuiCliParity : public QObject {
             w.find<QSpinBox>("seed")->setValue(5);
             w.find<QDoubleSpinBox>("perturbation")->setValue(perturbation);
             w.find<QDoubleSpinBox>("sensor")->setValue(sensor);
-            QSignalSpy finished(&w.window.run(), &RunThread::runFinished);
-            w.find<QAbstractButton>("runButton")->click();
-            if (!finished.wait(kRunTimeoutMs)) {
-                return QByteArray();
-            }
-            if (!QTest::qWaitFor(
-                    [&] { return w.find<QAbstractButton>("exportRunLog")->isEnabled(); }, 5000)) {
+            if (!w.runToEnd() || !w.find<QAbstractButton>("exportRunLog")->isEnabled()) {
                 return QByteArray();
             }
             QString error;

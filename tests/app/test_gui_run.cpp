@@ -50,10 +50,8 @@ class TestGuiRun : public QObject {
         QVERIFY(!exportButton->isEnabled());  // nothing run yet
         w.setSpeedIndex(2);
         w.find<QSpinBox>("trials")->setValue(2);
-        QSignalSpy finished(&w.window.run(), &RunThread::runFinished);
-        w.find<QAbstractButton>("runButton")->click();
-        QVERIFY(finished.wait(kRunTimeoutMs));
-        QTRY_VERIFY(exportButton->isEnabled());
+        QVERIFY(w.runToEnd());
+        QVERIFY(exportButton->isEnabled());  // the log is told before the end
         const QString path = dir.filePath("run.csv");
         QString error;
         QVERIFY2(w.find<RunPanel>("runPanel")->exportRunLog(path, &error), qPrintable(error));
@@ -97,9 +95,7 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.window.session().method(), QStringLiteral("prisca"));
         w.setSpeedIndex(2);  // as fast as possible
         w.find<QSpinBox>("trials")->setValue(2);
-        QSignalSpy finished(&w.window.run(), &RunThread::runFinished);
-        w.find<QAbstractButton>("runButton")->click();
-        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(w.runToEnd());
         QCOMPARE(w.results()->rowCount(), 2);
         // A slide-park ends within a metre of the lot even on the first, untrained trial.
         for (int row = 0; row < 2; ++row) {
@@ -192,9 +188,7 @@ class TestGuiRun : public QObject {
         QVector<LiveSample> seen;
         connect(&w.window.run(), &RunThread::samplesReady, this,
                 [&](const QVector<LiveSample>& s) { seen += s; });
-        QSignalSpy finished(&w.window.run(), &RunThread::runFinished);
-        w.find<QAbstractButton>("runButton")->click();
-        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(w.runToEnd());
         QVERIFY(!seen.isEmpty());
         QVERIFY(!seen.back().wind.has_value());
 
@@ -202,8 +196,7 @@ class TestGuiRun : public QObject {
         emit w.find<QComboBox>("target")->activated(2);
         QCOMPARE(w.window.session().plant(), QStringLiteral("aircraft"));
         seen.clear();
-        w.find<QAbstractButton>("runButton")->click();
-        QVERIFY(finished.wait(kRunTimeoutMs));
+        QVERIFY(w.runToEnd());
         QVERIFY(seen.size() > 100);
         QVERIFY(seen.back().wind.has_value());
         // The trial's wind is a steady part plus gusts: not zero, not the same at every step.
