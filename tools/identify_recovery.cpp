@@ -1,6 +1,7 @@
 // Developer tool (not installed): how well identification recovers cars of known parameters.
 // For each plant file given, records the style's demonstration on that car (nominal: no day's
-// mismatch, no unmodelled effect added), identifies from the demonstration alone, starting from
+// mismatch, no unmodelled effect added; STYLE may name several, comma-separated, one
+// demonstration each), identifies from the demonstrations alone, starting from
 // the prior an operator has (sim::measuredPrior: the car's measured mass and geometry, the
 // catalog's values for everything fitted), and prints each fitted parameter's error against the
 // car's true value. Identification's own defaults (IdentificationSettings{}), as `prisca-cli
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace prisca;
 using namespace prisca::sim;
@@ -41,8 +43,11 @@ int main(int argc, char** argv) {
         }
         RecordingConditions conditions;
         conditions.parameters = &*car;
-        const core::Demonstration demonstration = DemonstrationStyles::record(
-            QStringLiteral("slidecar"), style, seed, SimulationTiming{}, conditions);
+        std::vector<core::Demonstration> demonstrations;
+        for (const QString& one : style.split(QLatin1Char(','))) {
+            demonstrations.push_back(DemonstrationStyles::record(
+                QStringLiteral("slidecar"), one, seed, SimulationTiming{}, conditions));
+        }
         IdentificationSettings settings;
         // Development overrides.
         if (qEnvironmentVariableIsSet("IR_RESTARTS"))
@@ -50,7 +55,7 @@ int main(int argc, char** argv) {
         if (qEnvironmentVariableIsSet("IR_EVALUATIONS"))
             settings.evaluationsPerStart = qEnvironmentVariableIntValue("IR_EVALUATIONS");
         const IdentificationResult result =
-            identifyPlant({demonstration}, measuredPrior(*car), settings);
+            identifyPlant(demonstrations, measuredPrior(*car), settings);
         const QString name = QFileInfo(file).completeBaseName();
         if (!result.ok()) {
             std::printf("%-14s refused: %s\n", qPrintable(name), qPrintable(result.refusal));
