@@ -30,6 +30,21 @@ int main(int argc, char** argv) {
     }
     const QString style = QString::fromLocal8Bit(argv[1]);
     const std::uint64_t seed = std::stoull(argv[2]);
+    IdentificationSettings settings;
+    // Development overrides.
+    if (qEnvironmentVariableIsSet("IR_RESTARTS"))
+        settings.restarts = qEnvironmentVariableIntValue("IR_RESTARTS");
+    if (qEnvironmentVariableIsSet("IR_EVALUATIONS"))
+        settings.evaluationsPerStart = qEnvironmentVariableIntValue("IR_EVALUATIONS");
+    for (const QString& one : style.split(QLatin1Char(','))) {
+        if (!DemonstrationStyles::contains(QStringLiteral("slidecar"), one)) {
+            std::fprintf(
+                stderr, "unknown slidecar style '%s' (one of: %s)\n", qPrintable(one),
+                qPrintable(
+                    DemonstrationStyles::names(QStringLiteral("slidecar")).join(QLatin1Char(' '))));
+            return 2;
+        }
+    }
     double worstError = 0.0;
     QString worstKey;
     int failures = 0;
@@ -48,12 +63,6 @@ int main(int argc, char** argv) {
             demonstrations.push_back(DemonstrationStyles::record(
                 QStringLiteral("slidecar"), one, seed, SimulationTiming{}, conditions));
         }
-        IdentificationSettings settings;
-        // Development overrides.
-        if (qEnvironmentVariableIsSet("IR_RESTARTS"))
-            settings.restarts = qEnvironmentVariableIntValue("IR_RESTARTS");
-        if (qEnvironmentVariableIsSet("IR_EVALUATIONS"))
-            settings.evaluationsPerStart = qEnvironmentVariableIntValue("IR_EVALUATIONS");
         const IdentificationResult result =
             identifyPlant(demonstrations, measuredPrior(*car), settings);
         const QString name = QFileInfo(file).completeBaseName();
@@ -86,7 +95,7 @@ int main(int argc, char** argv) {
         }
         std::fflush(stdout);
     }
-    std::printf("worst identified parameter: %s %.1f %%; outside 10 %%: %d\n", qPrintable(worstKey),
-                100.0 * worstError, failures);
+    std::printf("worst identified parameter: %s %.1f %%; outside 10 %% or refused: %d\n",
+                qPrintable(worstKey), 100.0 * worstError, failures);
     return failures == 0 ? 0 : 1;
 }

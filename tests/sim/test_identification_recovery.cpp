@@ -11,27 +11,32 @@
 #include <QtTest>
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 using namespace prisca;
 using namespace prisca::sim;
 
 namespace {
 
-// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
-PlantParameters knownCar() {
+// The catalog's slide-car with these values set.
+PlantParameters catalogCarWith(std::initializer_list<std::pair<const char*, double>> values) {
     PlantParameters p = defaultPlantParameters("slidecar");
-    auto set = [&](const char* key, double value) {
-        const auto& specs = plantParameterSpecs("slidecar");
+    const auto& specs = plantParameterSpecs("slidecar");
+    for (const auto& [key, value] : values) {
         for (size_t i = 0; i < specs.size(); ++i) {
             if (specs[i].key == QLatin1String(key)) {
                 p.values[i] = value;
             }
         }
-    };
-    set("kineticFriction", 0.40);
-    set("maxDriveForce", 8.0);
-    set("yawInertia", 0.017);
+    }
     return p;
+}
+
+// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
+PlantParameters knownCar() {
+    return catalogCarWith(
+        {{"kineticFriction", 0.40}, {"maxDriveForce", 8.0}, {"yawInertia", 0.017}});
 }
 
 core::Demonstration demonstrationOf(const PlantParameters& car) {
@@ -99,15 +104,8 @@ class TestIdentificationRecovery : public QObject {
     // budget, and the better model kept; one that fits well is not searched again.
     void poorQuickFit_isSearchedAgain() {
         const std::vector<core::Demonstration> data{PlantCatalog::demonstrate("slidecar", 1)};
-        PlantParameters prior = defaultPlantParameters("slidecar");
-        const auto& specs = plantParameterSpecs("slidecar");
-        for (size_t i = 0; i < specs.size(); ++i) {
-            if (specs[i].key == QLatin1String("kineticFriction")) {
-                prior.values[i] = 0.3;
-            } else if (specs[i].key == QLatin1String("maxDriveForce")) {
-                prior.values[i] = 6.0;
-            }
-        }
+        const PlantParameters prior =
+            catalogCarWith({{"kineticFriction", 0.3}, {"maxDriveForce", 6.0}});
         MpcParameters p;
         p.identifyEvaluations = 8;
         p.retryEvaluations = 0;
