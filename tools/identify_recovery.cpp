@@ -5,7 +5,8 @@
 // the prior an operator has (sim::measuredPrior: the car's measured mass and geometry, the
 // catalog's values for everything fitted), and prints each fitted parameter's error against the
 // car's true value. Identification's own defaults (IdentificationSettings{}), as `prisca-cli
-// identify` and the Model step use (IR_RESTARTS, IR_EVALUATIONS: development overrides).
+// identify` and the Model step use (IR_RESTARTS, IR_EVALUATIONS, IR_SEGMENT in ms: development
+// overrides).
 //   identify_recovery STYLE SEED CAR.json [CAR.json ...]
 // Exit 0 when every parameter reported identified on every car is within 10 % of its true value.
 #include "sim/DemonstrationStyles.h"
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
         settings.restarts = qEnvironmentVariableIntValue("IR_RESTARTS");
     if (qEnvironmentVariableIsSet("IR_EVALUATIONS"))
         settings.evaluationsPerStart = qEnvironmentVariableIntValue("IR_EVALUATIONS");
+    if (qEnvironmentVariableIsSet("IR_SEGMENT"))
+        settings.segmentSeconds = qEnvironmentVariableIntValue("IR_SEGMENT") / 1000.0;
     for (const QString& one : style.split(QLatin1Char(','))) {
         if (!DemonstrationStyles::contains(QStringLiteral("slidecar"), one)) {
             std::fprintf(
@@ -82,8 +85,11 @@ int main(int argc, char** argv) {
                                                  : (p.value == 0.0 ? 0.0 : INFINITY);
             const bool within = std::abs(relative) <= 0.10;
             std::printf("  %-18s %-10s %9.4g  true %9.4g  prior %9.4g  %+7.1f %%  std %.2g%s\n",
-                        qPrintable(p.key), p.identified ? "identified" : "held", p.value, truth,
-                        p.prior, 100.0 * relative, p.std,
+                        qPrintable(p.key),
+                        p.identified         ? "identified"
+                        : p.value == p.prior ? "held"
+                                             : "undetermined",
+                        p.value, truth, p.prior, 100.0 * relative, p.std,
                         p.identified && !within ? "  OUTSIDE 10 %" : "");
             if (p.identified) {
                 failures += within ? 0 : 1;

@@ -440,11 +440,21 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="147"/>
+        <source>Model fit&apos;s segments</source>
+        <translation>模型擬合的分段</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="149"/>
+        <source>How long a stretch of the data the model is fitted to predict from each recorded state (identification&apos;s segment).</source>
+        <translation>模型由每個記錄狀態起須預測的數據片段長度（辨識的分段）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="162"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="148"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="163"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
@@ -2440,37 +2450,42 @@ Do you want to replace it?</source>
         <translation>用 %1 完成辨識；mpc 以新模型規劃。</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="369"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="345"/>
+        <source>Model: pose error %1 cm RMS per segment over %2 segments (the prior&apos;s %3 cm); %4 of %5 fitted parameters identified, the rest held at their prior or, where the data reject it, undetermined. mpc plans through this model.</source>
+        <translation>模型：%2 個分段的每段位姿誤差均方根為 %1 cm（先驗模型為 %3 cm）；%5 個擬合參數中 %4 個已辨識，其餘保持先驗值，或在數據否定先驗值時列為未確定。mpc 以此模型規劃。</translation>
+    </message>
+    <message>
+        <location filename="../app/panels/ModelPanel.cpp" line="370"/>
         <source>held</source>
         <translation>保持</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="370"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="371"/>
         <source>undetermined</source>
         <translation>未能確定</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="386"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="387"/>
         <source>%1: identified (prior %2)</source>
         <translation>%1：已辨識（先驗值 %2）</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="388"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="389"/>
         <source>%1: the data did not determine it; held at its prior</source>
         <translation>%1：數據未能確定其值；保持先驗值</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="389"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="390"/>
         <source>%1: fitted, but the data did not determine it</source>
         <translation>%1：已擬合，但數據未能確定其值</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="427"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="428"/>
         <source>model, replaying the recorded actions</source>
         <translation>模型，重播錄得的動作</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="487"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="488"/>
         <source>Fits the car&apos;s physical parameters to the demonstration (as prisca-cli identify). mpc plans through the model; the session saves it.</source>
         <translation>把車輛的物理參數擬合到示範（與 prisca-cli identify 相同）。mpc 以此模型規劃；工作階段會儲存它。</translation>
     </message>
@@ -2490,72 +2505,67 @@ Do you want to replace it?</source>
         <translation>尚未有模型。「辨識」會把車輛的摩擦、抓地力、驅動、轉向及延遲擬合到示範；在此之前，mpc 的模擬運行會在開始時自行辨識一個模型，而實驗台則會等候模型。</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="345"/>
-        <source>Model: pose error %1 cm RMS per segment over %2 segments (the prior&apos;s %3 cm); %4 of %5 fitted parameters identified, the rest held at their prior. mpc plans through this model.</source>
-        <translation>模型：%2 個分段的每段位姿誤差均方根為 %1 cm（先驗模型為 %3 cm）；%5 個擬合參數中 %4 個已辨識，其餘保持先驗值。mpc 以此模型規劃。</translation>
-    </message>
-    <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="368"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="369"/>
         <source>identified</source>
         <translation>已辨識</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="397"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="398"/>
         <source>Not fitted (measured, or the catalog&apos;s): %1</source>
         <translation>未擬合（量度所得或目錄值）：%1</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="405"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="406"/>
         <source>x [m]</source>
         <translation>x [m]</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="406"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="407"/>
         <source>y [m]</source>
         <translation>y [m]</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="407"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="408"/>
         <source>no path</source>
         <translation>沒有路徑</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="420"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="421"/>
         <source>recorded</source>
         <translation>錄得</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="489"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="490"/>
         <source>Identify</source>
         <translation>辨識</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="490"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="491"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="493"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="493"/>
         <source>Value</source>
         <translation>數值</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="493"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="493"/>
         <source>Std. dev.</source>
         <translation>標準差</translation>
     </message>
     <message>
-        <location filename="../app/panels/ModelPanel.cpp" line="492"/>
+        <location filename="../app/panels/ModelPanel.cpp" line="493"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>

@@ -343,8 +343,9 @@ void ModelPanel::showModel() {
             identified += p.identified ? 1 : 0;
         }
         summary_->setText(tr("Model: pose error %1 cm RMS per segment over %2 segments (the "
-                             "prior's %3 cm); %4 of %5 fitted parameters identified, the rest "
-                             "held at their prior. mpc plans through this model.")
+                             "prior's %3 cm); %4 of %5 fitted parameters identified, the rest held "
+                             "at their prior or, where the data reject it, undetermined. mpc "
+                             "plans through this model.")
                               .arg(centimetres(model->positionRms))
                               .arg(model->segments.size())
                               .arg(centimetres(model->priorPositionRms))

@@ -141,6 +141,21 @@ const MethodParameter& mpcSpinGuard() {
     return p;
 }
 
+const MethodParameter& mpcSegment() {
+    static const MethodParameter p = [] {
+        MethodParameter p =
+            real("mpc.segment", QT_TRANSLATE_NOOP("MethodParameter", "Model fit's segments"), "s",
+                 0.2, 3.0, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "How long a stretch of the data the model is fitted to predict "
+                                   "from each recorded state (identification's segment)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.modelSegment); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.modelSegment = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcRefit() {
     static const MethodParameter p = [] {
         MethodParameter p = onOff(
@@ -212,8 +227,8 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),   mpcRollouts(),  mpcTube(),
-                    mpcStraight(), mpcSpinGuard(), mpcRefit()};
+    s.parameters = {mpcReplan(),    mpcRollouts(), mpcTube(), mpcStraight(),
+                    mpcSpinGuard(), mpcSegment(),  mpcRefit()};
     return s;
 }
 

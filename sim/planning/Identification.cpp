@@ -223,6 +223,9 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     PlantParameters start = prior;
     std::vector<double> values = prior.values;
     long long evaluations = 0;
+    double previousCost = 0.0;
+    int rejectedKeys = 0;
+    std::vector<double> lastFitted = prior.values;
     for (int pass = 0; pass < std::max(1, settings.passes); ++pass) {
         Problem problem(runs, start, settings, plan);
         context.problem = &problem;
@@ -243,7 +246,17 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             result.evaluations = evaluations;
             return result;
         }
+        if (pass > 0 &&
+            outcome.cost - previousCost > 4.0 * std::max(1, rejectedKeys) * outcome.variance) {
+            // The data reject the prior of what the last pass left undetermined (it is determined
+            // only together with others, as the two static grips): the last pass's values stay,
+            // those parameters reported as not identified.
+            values = lastFitted;
+            break;
+        }
+        previousCost = outcome.cost;
         values = outcome.values;
+        lastFitted = outcome.values;
         Plan kept;
         std::vector<double> next = outcome.values;
         for (int i = 0; i < plan.continuous.size(); ++i) {
@@ -277,6 +290,8 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             break;  // the prior's values do not fit with the rest: this pass's whole set stays
         }
         // The undetermined at their prior; out of passes, the rest as last fitted.
+        rejectedKeys = static_cast<int>((plan.continuous.size() - kept.continuous.size()) +
+                                        (plan.delays.size() - kept.delays.size()));
         values = next;
         plan = kept;
         start.values = next;

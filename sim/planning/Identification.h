@@ -19,8 +19,10 @@ namespace prisca::sim {
 struct IdentificationSettings {
     /// Multiple shooting: each run is cut into segments this long; each segment restarts the
     /// model at the recorded state, with the commands of the steps before it still in flight,
-    /// and replays the recorded commands [s].
-    double segmentSeconds = 1.0;
+    /// and replays the recorded commands [s]. Half a second: over a whole second the moment
+    /// the tyres break away shifts with every parameter, and the cost is too rugged for the
+    /// search to find its floor (docs/research-log.md, issue 33's eighth step).
+    double segmentSeconds = 0.5;
     int evaluationsPerStart = 1500;   ///< model evaluations per local search
     int restarts = 2;                 ///< further local searches from perturbed starts
     double positionScale = 0.01;      ///< this much position error [m] ...
@@ -47,8 +49,11 @@ struct IdentificationSettings {
 struct IdentifiedParameter {
     QString key;
     QString unit;
-    double prior = 0.0;       ///< the value it started from (the prior plant file's)
-    double value = 0.0;       ///< the identified value (the prior where not identified)
+    double prior = 0.0;  ///< the value it started from (the prior plant file's)
+    /// The identified value. Where not identified, the prior; but where the data reject the
+    /// prior (the parameter is determined only together with others, as the two static grips
+    /// on some cars), the value fitted with the rest, so that the rest stay right.
+    double value = 0.0;
     double std = 0.0;         ///< its standard deviation (fitted ones; 0 for the held)
     bool fitted = false;      ///< the identification varied it
     bool identified = false;  ///< the data determined it (std below the threshold)

@@ -165,6 +165,16 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
             best = localSearch(context, u, 3 * evaluations, 0.2, NLOPT_GN_CRS2_LM);
         }
         best = localSearch(context, u, evaluations, settings.global ? 0.1 : 0.05);
+        if (settings.global && !context.cancelled) {
+            // The prior itself as a start too: the box search may settle in a valley where
+            // parameters trade (a slow servo for a small lock) far from a prior that was close.
+            std::vector<double> fromPrior(static_cast<size_t>(n), 0.0);
+            const double reached = localSearch(context, fromPrior, evaluations, 0.1);
+            if (reached < best) {
+                best = reached;
+                u = fromPrior;
+            }
+        }
     }
     if (context.cancelled) {
         return false;
@@ -255,7 +265,7 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
             std::vector<double> from = uBest;
             from[static_cast<size_t>(i)] += side;
             const double reached =
-                localSearch(context, from, evaluations / 10, 0.03, NLOPT_LN_SBPLX, i);
+                localSearch(context, from, evaluations / 2, 0.03, NLOPT_LN_SBPLX, i);
             if (reached - bestCost <= 4.0 * outcome->variance) {
                 outcome->relativeStd[static_cast<size_t>(i)] =
                     std::numeric_limits<double>::infinity();
@@ -269,8 +279,10 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
     if (context.cancelled) {
         return false;
     }
+    outcome->cost = bestCost;
     if (!better.empty()) {
         outcome->values = problem.valuesAt(better);
+        outcome->cost = lowest;
     }
 
     // The dead times: determined when the profile's better neighbour costs at least four

@@ -201,6 +201,7 @@ struct FitOutcome {
     std::vector<double> relativeStd;    // per continuous key of the plan
     std::vector<bool> delayDetermined;  // per dead time of the plan
     double variance = 0.0;
+    double cost = 0.0;  // the cost at `values`
 };
 
 bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSettings& settings,

@@ -20,6 +20,7 @@ constexpr int kHistorySteps = 12;
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
     IdentificationSettings settings;
     settings.physicsSubsteps = parameters.substeps;
+    settings.segmentSeconds = parameters.modelSegment;
     if (refit) {
         settings.global = false;
         settings.restarts = 0;

@@ -70,6 +70,9 @@ struct MpcParameters {
     /// The model's position RMS over its data's segments [m] above which it is not planned
     /// through at all (the fallback from the start).
     double poorFit = 0.10;
+    /// The model is fitted over stretches of its data this long [s] (identification's
+    /// segmentSeconds).
+    double modelSegment = 1.0;
     /// After each trial the model is refit on the demonstration and the day's newest trials.
     bool refit = true;
     int refitTrials = 4;            ///< at most this many of the newest trials, with the demo

@@ -93,7 +93,7 @@ class TestIdentification : public QObject {
         };
         QCOMPARE(refusal(d), QString());
 
-        const QString tooShort = refusal(cut(d, 0, 50));
+        const QString tooShort = refusal(cut(d, 0, 25));
         QVERIFY2(tooShort.startsWith(QLatin1String("too short:")), qPrintable(tooShort));
 
         core::Demonstration gap = d;
@@ -139,7 +139,7 @@ class TestIdentification : public QObject {
 
         // identifyPlant refuses the same way, without fitting anything.
         const IdentificationResult refused =
-            identifyPlant({cut(d, 0, 50)}, defaultPlantParameters("slidecar"));
+            identifyPlant({cut(d, 0, 25)}, defaultPlantParameters("slidecar"));
         QVERIFY(refused.refusal.startsWith(QLatin1String("too short:")));
         QCOMPARE(refused.evaluations, 0LL);
     }
