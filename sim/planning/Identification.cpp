@@ -192,12 +192,14 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     SearchContext context;
     context.progress = &progress;
     // About how many model runs a fit with this budget per search takes (fitOnce: the search
-    // over the box, the local searches and restarts, each dead time's profile of about five
-    // candidates twice), for the progress report.
-    const auto fitRuns = [&](int evaluations, int delays) {
+    // over the box and the one from the prior, the local searches and restarts, each dead
+    // time's profile of about five candidates twice, the profile check's half budget either
+    // way of each continuous parameter), for the progress report.
+    const auto fitRuns = [&](int evaluations, const Plan& fitted) {
         return static_cast<long long>(evaluations) *
-                   ((settings.global ? 3 : 0) + 3 + settings.restarts) +
-               static_cast<long long>(delays) * 2 * 5 * (evaluations / 8);
+                   ((settings.global ? 4 : 0) + 3 + settings.restarts +
+                    static_cast<int>(fitted.continuous.size())) +
+               static_cast<long long>(fitted.delays.size()) * 2 * 5 * (evaluations / 8);
     };
     const double physicsStep = runs.front().dt / settings.physicsSubsteps;
     {
@@ -233,11 +235,10 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
             pass == 0 ? settings.evaluationsPerStart : settings.evaluationsPerStart / 2;
         // This pass, and (while passes are left) one more on what it leaves undetermined.
         context.before = evaluations;
-        context.budget =
-            evaluations + fitRuns(budget, static_cast<int>(plan.delays.size())) +
-            (pass + 1 < std::max(1, settings.passes)
-                 ? fitRuns(settings.evaluationsPerStart / 2, static_cast<int>(plan.delays.size()))
-                 : 0);
+        context.budget = evaluations + fitRuns(budget, plan) +
+                         (pass + 1 < std::max(1, settings.passes)
+                              ? fitRuns(settings.evaluationsPerStart / 2, plan)
+                              : 0);
         FitOutcome outcome;
         const bool done = fitOnce(problem, context, settings, physicsStep, budget, &outcome);
         evaluations += problem.evaluations();
