@@ -54,8 +54,8 @@ class TestIdentificationRecovery : public QObject {
   private slots:
     // Noise-free, from the catalog's values as the prior: the three parameters in which the
     // car differs from the prior are identified within 2 %, every other parameter reported
-    // identified within 5 % (measured: the driveline drag lands 2.9 % off, traded against the
-    // rolling resistance and the top speed), and the model replays the demonstration to
+    // identified within 5 % (measured: the driveline drag lands 1.4 % off, the rolling resistance
+    // undetermined), and the model replays the demonstration to
     // within millimetres.
     void knownCar_recoveredFromItsDemonstration() {
         const PlantParameters truth = knownCar();
