@@ -86,9 +86,9 @@ int main(int argc, char** argv) {
             const bool within = std::abs(relative) <= 0.10;
             std::printf("  %-18s %-10s %9.4g  true %9.4g  prior %9.4g  %+7.1f %%  std %.2g%s\n",
                         qPrintable(p.key),
-                        p.identified         ? "identified"
-                        : p.value == p.prior ? "held"
-                                             : "undetermined",
+                        p.identified      ? "identified"
+                        : p.heldAtPrior() ? "held"
+                                          : "undetermined",
                         p.value, truth, p.prior, 100.0 * relative, p.std,
                         p.identified && !within ? "  OUTSIDE 10 %" : "");
             if (p.identified) {

@@ -54,9 +54,9 @@ QString reportText(const sim::IdentificationResult& result, const QString& out) 
                     .arg(p.value, 9, 'g', 4)
                     .arg(p.std, -8, 'g', 2)
                     .arg(unit, -8)
-                    .arg(p.identified         ? QStringLiteral("identified")
-                         : p.value == p.prior ? QStringLiteral("held at its prior")
-                                              : QStringLiteral("not determined (fitted value)"))
+                    .arg(p.identified      ? QStringLiteral("identified")
+                         : p.heldAtPrior() ? QStringLiteral("held at its prior")
+                                           : QStringLiteral("not determined (fitted value)"))
                     .arg(p.prior, 0, 'g', 4);
     }
     QStringList held;

@@ -366,9 +366,9 @@ void ModelPanel::showModel() {
             }
             const int row = table_->rowCount();
             table_->insertRow(row);
-            const QString verdict = p.identified         ? tr("identified")
-                                    : p.value == p.prior ? tr("held")
-                                                         : tr("undetermined");
+            const QString verdict = p.identified      ? tr("identified")
+                                    : p.heldAtPrior() ? tr("held")
+                                                      : tr("undetermined");
             const QString deviation = std::isfinite(p.std) && p.std > 0.0
                                           ? QStringLiteral("± %1").arg(p.std, 0, 'g', 2)
                                           : QStringLiteral("—");
@@ -385,7 +385,7 @@ void ModelPanel::showModel() {
                 item->setToolTip(
                     p.identified
                         ? tr("%1: identified (prior %2)").arg(p.key).arg(p.prior, 0, 'g', 4)
-                    : p.value == p.prior
+                    : p.heldAtPrior()
                         ? tr("%1: the data did not determine it; held at its prior").arg(p.key)
                         : tr("%1: fitted, but the data did not determine it").arg(p.key));
                 table_->setItem(row, c, item);

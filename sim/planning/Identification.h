@@ -57,6 +57,9 @@ struct IdentifiedParameter {
     double std = 0.0;         ///< its standard deviation (fitted ones; 0 for the held)
     bool fitted = false;      ///< the identification varied it
     bool identified = false;  ///< the data determined it (std below the threshold)
+    /// Not identified and at its prior; not identified and elsewhere is undetermined (the data
+    /// rejected the prior: the value fitted with the rest). One rule for every front end.
+    bool heldAtPrior() const { return !identified && value == prior; }
 };
 
 /// The fit over one segment. Plain data.
