@@ -193,13 +193,25 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     context.progress = &progress;
     // About how many model runs a fit with this budget per search takes (fitOnce: the search
     // over the box and the one from the prior, the local searches and restarts, each dead
-    // time's profile of about five candidates twice, the profile check's half budget either
-    // way of each continuous parameter), for the progress report.
+    // time's profile of about five candidates twice and its check on half the budget either
+    // way, the profile check's half budget either way of each continuous parameter), for the
+    // progress report.
     const auto fitRuns = [&](int evaluations, const Plan& fitted) {
+        // The profile check's traded pairs: a 25 x 25 grid each, a re-search per side and key.
+        long long pairs = 0;
+        for (const QStringList& group : fitted.traded) {
+            long long m = 0;
+            for (const QString& key : group) {
+                m += fitted.continuous.contains(key) ? 1 : 0;
+            }
+            pairs += m * (m - 1);
+        }
         return static_cast<long long>(evaluations) *
                    ((settings.global ? 4 : 0) + 3 + settings.restarts +
                     static_cast<int>(fitted.continuous.size())) +
-               static_cast<long long>(fitted.delays.size()) * 2 * 5 * (evaluations / 8);
+               static_cast<long long>(fitted.delays.size()) * 2 * 5 * (evaluations / 8) +
+               static_cast<long long>(fitted.delays.size()) * evaluations + pairs * evaluations +
+               pairs / 2 * 625;
     };
     const double physicsStep = runs.front().dt / settings.physicsSubsteps;
     {
@@ -259,6 +271,7 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
         values = outcome.values;
         lastFitted = outcome.values;
         Plan kept;
+        kept.traded = plan.traded;
         std::vector<double> next = outcome.values;
         for (int i = 0; i < plan.continuous.size(); ++i) {
             const QString& key = plan.continuous[i];
@@ -324,10 +337,11 @@ IdentificationResult identifyModel(const std::vector<core::Demonstration>& runs,
     double sumPosition = 0.0;
     double sumHeading = 0.0;
     int steps = 0;
-    for (const Segment& s : first.segments()) {  // the same segments in every pass
+    const std::vector<Eigen::MatrixXd> predictions = first.predict(result.parameters);
+    for (size_t i = 0; i < first.segments().size(); ++i) {  // the same segments in every pass
+        const Segment& s = first.segments()[i];
         const core::Demonstration& run = runs[static_cast<size_t>(s.run)];
-        const Eigen::MatrixXd predicted =
-            Problem::simulate(run, result.parameters, s.begin, s.length, settings.physicsSubsteps);
+        const Eigen::MatrixXd& predicted = predictions[i];
         double position = 0.0;
         double heading = 0.0;
         for (int k = 0; k < s.length; ++k) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 #include <QMap>
 #include <random>
@@ -26,7 +27,11 @@ Plan planFor(const QString& plant) {
         return {{"maxDriveForce", "topSpeed", "staticFriction", "kineticFriction", "rearStaticGrip",
                  "rearKineticGrip", "yawInertia", "maxSteeringAngle", "servoRate", "drivelineDrag",
                  "rollingResistance"},
-                {"servoDelay", "throttleDelay"}};
+                {"servoDelay", "throttleDelay"},
+                // A static grip shows only when its axle breaks away: one grip lower and the
+                // other higher can let go at the same physics steps (research-log.md, issue
+                // 33's ninth step).
+                {{"staticFriction", "rearStaticGrip"}}};
     }
     return {};
 }
@@ -60,7 +65,8 @@ double objective(unsigned n, const double* x, double* gradient, void* data) {
 
 // A local search from u (in place) over the fitted log-factors; returns the cost reached.
 double localSearch(SearchContext& context, std::vector<double>& u, int evaluations,
-                   double initialStep, nlopt_algorithm algorithm, int held) {
+                   double initialStep, nlopt_algorithm algorithm, int held, double heldFrom,
+                   double heldTo) {
     const unsigned n = static_cast<unsigned>(u.size());
     nlopt_opt opt = nlopt_create(algorithm, n);
     nlopt_srand(7);
@@ -71,7 +77,12 @@ double localSearch(SearchContext& context, std::vector<double>& u, int evaluatio
     for (unsigned i = 0; i < n; ++i) {
         u[i] = std::clamp(u[i], lower[i], upper[i]);
     }
-    if (held >= 0) {
+    if (held >= 0 && heldFrom < heldTo) {
+        const size_t k = static_cast<size_t>(held);
+        lower[k] = std::max(lower[k], heldFrom);
+        upper[k] = std::min(upper[k], heldTo);
+        u[k] = std::clamp(u[k], lower[k], upper[k]);
+    } else if (held >= 0) {
         lower[static_cast<size_t>(held)] = upper[static_cast<size_t>(held)] =
             u[static_cast<size_t>(held)];
         step[static_cast<size_t>(held)] = 0.0;
@@ -152,6 +163,78 @@ void profileDelays(Problem& problem, SearchContext& context, std::vector<double>
     }
 }
 
+// The cost over a grid spanning the whole range of fitted coordinates i and k (localSearch's
+// bounds), the rest as in u: where a traded pair's other fits lie, past steps in the cost that a
+// local search does not cross.
+struct GridPoint {
+    double ui = 0.0;
+    double uk = 0.0;
+    double cost = 0.0;
+};
+
+static std::vector<GridPoint> pairGrid(Problem& problem, const std::vector<double>& u, int i,
+                                       int k) {
+    constexpr int kPoints = 25;
+    const double range = std::log(3.0);
+    std::vector<GridPoint> grid;
+    std::vector<double> at = u;
+    for (int a = 0; a < kPoints; ++a) {
+        for (int b = 0; b < kPoints; ++b) {
+            at[static_cast<size_t>(i)] = -range + 2.0 * range * a / (kPoints - 1);
+            at[static_cast<size_t>(k)] = -range + 2.0 * range * b / (kPoints - 1);
+            grid.push_back({at[static_cast<size_t>(i)], at[static_cast<size_t>(k)],
+                            problem.cost(problem.valuesAt(at))});
+        }
+    }
+    return grid;
+}
+
+// Each dead time's verdict, after a thorough re-fit on either side: its neighbours on the physics
+// grid with the continuous parameters searched again on `evaluations` each (the profile's brief
+// re-searches stop on a step of the cost, and a neighbour that the rest can make up for looks
+// worse than it is). A neighbour that fits better is moved to (three times at most). gaps[d]: how
+// much more the better neighbour costs than the value kept (negative: a neighbour of the last
+// move fitted better still).
+static void checkDelays(Problem& problem, SearchContext& context, std::vector<double>& u,
+                        double physicsStep, int evaluations, std::vector<double>* gaps) {
+    const int last = static_cast<int>(std::floor(0.1 / physicsStep + 1e-9));
+    gaps->clear();
+    for (const int jIndex : problem.delays()) {
+        const size_t j = static_cast<size_t>(jIndex);
+        double gap = std::numeric_limits<double>::infinity();
+        for (int round = 0; round < 3 && !context.cancelled; ++round) {
+            const int at = static_cast<int>(std::lround(problem.current()[j] / physicsStep));
+            const double here = problem.cost(problem.valuesAt(u));
+            double neighbourCost = std::numeric_limits<double>::infinity();
+            int neighbour = at;
+            std::vector<double> neighbourU;
+            for (const int step : {at - 1, at + 1}) {
+                if (step < 0 || step > last) {
+                    continue;
+                }
+                problem.current()[j] = step * physicsStep;
+                std::vector<double> from = u;
+                const double reached = u.empty() ? problem.cost(problem.current())
+                                                 : localSearch(context, from, evaluations, 0.03);
+                if (reached < neighbourCost) {
+                    neighbourCost = reached;
+                    neighbour = step;
+                    neighbourU = from;
+                }
+            }
+            gap = neighbourCost - here;
+            if (gap >= 0.0) {
+                problem.current()[j] = at * physicsStep;
+                break;
+            }
+            problem.current()[j] = neighbour * physicsStep;
+            u = neighbourU;
+        }
+        gaps->push_back(gap);
+    }
+    problem.current() = problem.valuesAt(u);
+}
+
 bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSettings& settings,
              double physicsStep, int evaluations, FitOutcome* outcome) {
     const int n = static_cast<int>(problem.fitted().size());
@@ -202,6 +285,7 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
         localSearch(context, u, evaluations, 0.02);
         problem.current() = problem.valuesAt(u);
     }
+    checkDelays(problem, context, u, physicsStep, evaluations / 2, &gaps);
     if (context.cancelled) {
         return false;
     }
@@ -257,6 +341,7 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
     }
     double lowest = bestCost;
     std::vector<double> better;
+    std::map<std::pair<int, int>, std::vector<GridPoint>> grids;
     for (int i = 0; i < n && !context.cancelled; ++i) {
         if (!(outcome->relativeStd[static_cast<size_t>(i)] < settings.identifiedBelow)) {
             continue;
@@ -264,8 +349,39 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
         for (const double side : {-shift, shift}) {
             std::vector<double> from = uBest;
             from[static_cast<size_t>(i)] += side;
-            const double reached =
-                localSearch(context, from, evaluations / 2, 0.03, NLOPT_LN_SBPLX, i);
+            double reached = localSearch(context, from, evaluations / 2, 0.03, NLOPT_LN_SBPLX, i);
+            for (const int k : problem.partners(i)) {
+                // A traded pair's other fits may lie anywhere on this side, not only 10 % away:
+                // the grid's best point at least that far is searched from as well.
+                const std::pair<int, int> pair = std::minmax(i, k);
+                if (grids.count(pair) == 0) {
+                    grids[pair] = pairGrid(problem, uBest, pair.first, pair.second);
+                }
+                const GridPoint* start = nullptr;
+                for (const GridPoint& point : grids[pair]) {
+                    const double ui = i == pair.first ? point.ui : point.uk;
+                    if ((ui - uBest[static_cast<size_t>(i)]) * side >= side * side * (1 - 1e-9) &&
+                        (start == nullptr || point.cost < start->cost)) {
+                        start = &point;
+                    }
+                }
+                if (start == nullptr || context.cancelled) {
+                    continue;
+                }
+                std::vector<double> scanned = uBest;
+                scanned[static_cast<size_t>(pair.first)] = start->ui;
+                scanned[static_cast<size_t>(pair.second)] = start->uk;
+                // The grid's value is one of many this side: free on it, 10 % away at least.
+                const double edge = uBest[static_cast<size_t>(i)] + side;
+                const double alternative =
+                    localSearch(context, scanned, evaluations / 2, 0.03, NLOPT_LN_SBPLX, i,
+                                side < 0.0 ? -std::numeric_limits<double>::infinity() : edge,
+                                side < 0.0 ? edge : std::numeric_limits<double>::infinity());
+                if (alternative < reached) {
+                    reached = alternative;
+                    from = scanned;
+                }
+            }
             if (reached - bestCost <= 4.0 * outcome->variance) {
                 outcome->relativeStd[static_cast<size_t>(i)] =
                     std::numeric_limits<double>::infinity();

@@ -27,6 +27,10 @@ namespace prisca::sim::identification {
 struct Plan {
     QStringList continuous;  // fitted as log-factors of the prior
     QStringList delays;      // searched on the grid of physics steps [s]
+    // Continuous keys that show in the data only at discrete events (the instant an axle's
+    // tyres break away), so that the cost is piecewise constant in them and one may make up
+    // for another far away: the profile check scans each one's partners over their range.
+    std::vector<QStringList> traded;
 };
 
 Plan planFor(const QString& plant);
@@ -62,6 +66,17 @@ class Problem {
         for (const QString& key : plan.delays) {
             delays_.push_back(indexOfKey(specs_, key));
         }
+        partners_.resize(fitted_.size());
+        for (const QStringList& group : plan.traded) {
+            for (int i = 0; i < plan.continuous.size(); ++i) {
+                for (int k = 0; k < plan.continuous.size(); ++k) {
+                    if (i != k && group.contains(plan.continuous[i]) &&
+                        group.contains(plan.continuous[k])) {
+                        partners_[static_cast<size_t>(i)].push_back(k);
+                    }
+                }
+            }
+        }
         for (int r = 0; r < static_cast<int>(runs_.size()); ++r) {
             const core::Demonstration& run = runs_[static_cast<size_t>(r)];
             const int length =
@@ -86,6 +101,8 @@ class Problem {
     const std::vector<Segment>& segments() const { return segments_; }
     const std::vector<int>& fitted() const { return fitted_; }
     const std::vector<int>& delays() const { return delays_; }
+    // The fitted coordinates that trade with fitted coordinate i (Plan::traded).
+    const std::vector<int>& partners(int i) const { return partners_[static_cast<size_t>(i)]; }
     const std::vector<PlantParameterSpec>& specs() const { return specs_; }
     std::vector<double>& current() { return current_; }
     double priorValue(int index) const { return prior_.values[static_cast<size_t>(index)]; }
@@ -116,10 +133,11 @@ class Problem {
         }
         Eigen::VectorXd r(total);
         int at = 0;
-        for (const Segment& s : segments_) {
+        const std::vector<Eigen::MatrixXd> predictions = predict(parameters);
+        for (size_t i = 0; i < segments_.size(); ++i) {
+            const Segment& s = segments_[i];
             const core::Demonstration& run = runs_[static_cast<size_t>(s.run)];
-            const Eigen::MatrixXd predicted =
-                simulate(run, parameters, s.begin, s.length, settings_.physicsSubsteps);
+            const Eigen::MatrixXd& predicted = predictions[i];
             for (int k = 0; k < s.length; ++k) {
                 const int recorded = s.begin + k + 1;
                 r[at++] = (predicted(k, 0) - run.states(recorded, 0)) / settings_.positionScale;
@@ -131,6 +149,26 @@ class Problem {
         return r;
     }
 
+    // Each segment's prediction by this model: length x n states after each step. Each segment
+    // restarts at the recorded state with the hidden state (Plant::hiddenState: whether the
+    // tyres slide) of this model's run through the segment before it, which it overlaps by
+    // half; the recorded poses do not show it, and a restart that guessed it wrong (gripping
+    // wheels where they spin at the launch) kept even the true car from fitting its data.
+    std::vector<Eigen::MatrixXd> predict(const PlantParameters& parameters) const {
+        std::vector<Eigen::MatrixXd> out;
+        out.reserve(segments_.size());
+        Carried carried;
+        for (const Segment& s : segments_) {
+            const core::Demonstration& run = runs_[static_cast<size_t>(s.run)];
+            const bool follows = carried.run == s.run && carried.step == s.begin;
+            Carried next{s.run, s.begin + std::max(1, s.length / 2), {}};
+            out.push_back(simulate(run, parameters, s.begin, s.length, settings_.physicsSubsteps,
+                                   follows ? &carried.hidden : nullptr, next.step, &next.hidden));
+            carried = next;
+        }
+        return out;
+    }
+
     double cost(const std::vector<double>& values) {
         const Eigen::VectorXd r = residuals(values);
         return r.size() == 0 ? std::numeric_limits<double>::max() / 4 : r.squaredNorm();
@@ -138,9 +176,12 @@ class Problem {
 
     // The model restarted at step `begin` of the run with the commands before it in flight,
     // replaying `length` recorded commands: length x n predicted states (after each step).
+    // With hiddenIn, the plant's hidden state at the restart; with hiddenOut, its hidden state
+    // after the step that reaches recorded step `captureAt`.
     static Eigen::MatrixXd simulate(const core::Demonstration& run,
                                     const PlantParameters& parameters, int begin, int length,
-                                    int substeps) {
+                                    int substeps, const std::vector<double>* hiddenIn = nullptr,
+                                    int captureAt = -1, std::vector<double>* hiddenOut = nullptr) {
         SimulationTiming timing;
         timing.controlPeriod = run.dt;
         timing.physicsSubsteps = substeps;
@@ -152,20 +193,32 @@ class Problem {
                                     : Eigen::VectorXd(run.actions.row(k).transpose()));
         }
         plant->primeActuators(history);
+        if (hiddenIn != nullptr) {
+            plant->setHiddenState(*hiddenIn);
+        }
         Eigen::MatrixXd out(length, run.stateDimension());
         for (int k = 0; k < length; ++k) {
             out.row(k) = plant->step(run.actions.row(begin + k).transpose()).transpose();
+            if (hiddenOut != nullptr && begin + k + 1 == captureAt) {
+                *hiddenOut = plant->hiddenState();
+            }
         }
         return out;
     }
 
   private:
+    struct Carried {
+        int run = -1;
+        int step = -1;
+        std::vector<double> hidden;
+    };
     const std::vector<core::Demonstration>& runs_;
     PlantParameters prior_;
     IdentificationSettings settings_;
     const std::vector<PlantParameterSpec>& specs_;
     std::vector<int> fitted_;
     std::vector<int> delays_;
+    std::vector<std::vector<int>> partners_;
     std::vector<Segment> segments_;
     std::vector<double> current_;
     long long evaluations_ = 0;
@@ -183,13 +236,16 @@ struct SearchContext {
 double objective(unsigned n, const double* x, double* gradient, void* data);
 
 // A local search from u (in place) over the fitted log-factors; returns the cost reached.
+// Coordinate `held` stays where it is, or with heldFrom < heldTo within [heldFrom, heldTo].
 double localSearch(SearchContext& context, std::vector<double>& u, int evaluations,
-                   double initialStep, nlopt_algorithm algorithm = NLOPT_LN_SBPLX, int held = -1);
+                   double initialStep, nlopt_algorithm algorithm = NLOPT_LN_SBPLX, int held = -1,
+                   double heldFrom = 0.0, double heldTo = 0.0);
 
 // Each dead time's profile: on the physics grid around its current value, the continuous
 // parameters searched again (briefly) for each candidate; the best candidate is kept, the window
 // following it if it lies at an edge. gaps[d]: how much more the better neighbour of the chosen
-// value costs (the profile's curvature there, for whether the data determined it).
+// value costs (the profile's curvature there; fitOnce's verdict is taken after a thorough
+// re-search of both neighbours instead).
 void profileDelays(Problem& problem, SearchContext& context, std::vector<double>& u,
                    double physicsStep, int evaluations, std::vector<double>* gaps);
 

@@ -138,6 +138,13 @@ class Plant {
     virtual void primeActuators(const std::vector<Eigen::VectorXd>& recentActions) {
         (void)recentActions;
     }
+    /// What the plant carries between steps beyond its state and its actuators, which a
+    /// restart at a recorded state cannot read from it (the slide-car: whether each axle's
+    /// tyres slide, and the load the last step's acceleration moved between the axles): read
+    /// from one run of a model to carry into a restart of another (identification's segments).
+    /// Empty for plants without it; setHiddenState after resetTo, ignoring a wrong size.
+    virtual std::vector<double> hiddenState() const { return {}; }
+    virtual void setHiddenState(const std::vector<double>& hidden) { (void)hidden; }
 
     /// An independent copy of this trial's plant as it is now: the same perturbed parameters,
     /// wind, commands in flight and state, for a planner that simulates ahead (the oracle).

@@ -179,6 +179,18 @@ void SlideCar::primeActuators(const std::vector<Eigen::VectorXd>& recentActions)
     }
 }
 
+std::vector<double> SlideCar::hiddenState() const {
+    return {sliding_[0] ? 1.0 : 0.0, sliding_[1] ? 1.0 : 0.0, longitudinalAcceleration_};
+}
+
+void SlideCar::setHiddenState(const std::vector<double>& hidden) {
+    if (hidden.size() != 3 || !std::isfinite(hidden[2])) {
+        return;
+    }
+    sliding_ = {hidden[0] != 0.0, hidden[1] != 0.0};
+    longitudinalAcceleration_ = hidden[2];
+}
+
 std::pair<double, double> SlideCar::actuatorStep(double throttleCommand, double steeringCommand) {
     const SlideCarParameters& p = parameters_;
     const double h = timing_.physicsStep();

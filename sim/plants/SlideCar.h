@@ -109,6 +109,9 @@ class SlideCar : public Plant {
     Eigen::VectorXd resetTo(const Eigen::VectorXd& state) override;
     Eigen::VectorXd step(const Eigen::VectorXd& action) override;
     void primeActuators(const std::vector<Eigen::VectorXd>& recentActions) override;
+    /// {front sliding, rear sliding, longitudinal acceleration [m/s^2]}.
+    std::vector<double> hiddenState() const override;
+    void setHiddenState(const std::vector<double>& hidden) override;
     std::unique_ptr<Plant> clone(bool actuatorNoise = false) const override;
     Eigen::VectorXd state() const override;
     double time() const override { return time_; }

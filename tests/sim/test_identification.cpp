@@ -1,5 +1,6 @@
 // Identification of the slide-car: the unmodelled effects kept out of the model, a cancel, and
 // every refusal (test_identification_recovery: a car of known parameters recovered).
+#include "sim/DemonstrationStyles.h"
 #include "sim/demonstrations/SlideCarDemonstrator.h"
 #include "sim/planning/Identification.h"
 #include "sim/plants/PlantParameters.h"
@@ -50,6 +51,40 @@ core::Demonstration cut(const core::Demonstration& d, int from, int to) {
 class TestIdentification : public QObject {
     Q_OBJECT
   private slots:
+    // Each segment restarts at a recorded state, and whether the tyres slide is not in it: it
+    // is carried from the model's run through the segment before. So the true car fits its own
+    // noise-free demonstration exactly, also a light car that spins its front wheels at the
+    // launch (restarted with gripping wheels, the true car was 2.2 cm off at the end of the
+    // segment after the launch, 0.35 cm over the run, and a wrong car fitted better).
+    void trueCar_fitsItsOwnDemonstrationExactly() {
+        PlantParameters light = defaultPlantParameters("slidecar");
+        const auto& specs = plantParameterSpecs("slidecar");
+        for (size_t i = 0; i < specs.size(); ++i) {
+            const QString& key = specs[i].key;
+            light.values[i] = key == QLatin1String("mass")            ? 1.1
+                              : key == QLatin1String("yawInertia")    ? 0.011
+                              : key == QLatin1String("maxDriveForce") ? 8.0
+                                                                      : light.values[i];
+        }
+        RecordingConditions conditions;
+        conditions.parameters = &light;
+        const core::Demonstration demonstration = DemonstrationStyles::record(
+            QStringLiteral("slidecar"), QStringLiteral("stick-180-left"), 300, SimulationTiming{},
+            conditions);
+        // It does spin them: the front wheels, unloaded as the car accelerates, slide in the
+        // first second (the second segment restarts in the middle of it).
+        SlideCar car(slideCarParameters(light));
+        car.resetTo(demonstration.states.row(0).transpose());
+        bool spun = false;
+        for (int k = 0; k < 25 && k < demonstration.length(); ++k) {
+            car.step(demonstration.actions.row(k).transpose());
+            spun = spun || car.sliding(0);
+        }
+        QVERIFY(spun);
+        const double rms = modelPositionRms({demonstration}, light);
+        QVERIFY2(rms >= 0.0 && rms < 1e-5, qPrintable(QString::number(rms)));
+    }
+
     // The model identified is the model: a prior with the reality gap's effects switched on
     // gives a model with them off.
     void unmodelledEffects_areNeverPartOfTheModel() {

@@ -103,12 +103,15 @@ class TestIdentificationRecovery : public QObject {
         QCOMPARE(replay.row(0), demonstration.states.row(0));
     }
 
-    // A car whose static grips the demonstration determines only together (front against
-    // rear): they are reported undetermined, and since the data reject their prior (the
-    // catalog's 0.65 where the car has 0.50) they keep the values fitted with the rest, so that
-    // the motor and the top speed are not bent to make up for a wrong static grip (they were,
-    // by 20-40 %, before the prior was checked against the data). The operator's prior:
-    // measured mass and geometry, the catalog's values for the rest.
+    // A car whose static grips one slide hardly determines (they show only at the instants
+    // the tyres break away, and front trades against rear): both are reported undetermined (on
+    // this day's demonstration the rear one was reported identified 29 % off before segments
+    // carried the tyres' sliding from one to the next and the profile check scanned the pair
+    // over its range), and since the data reject their prior (the catalog's 0.65 where the car
+    // has 0.50) they keep the values fitted with the rest, so that the motor and the top speed
+    // are not bent to make up for a wrong static grip (they were, by 20-40 %, before the prior
+    // was checked against the data). The operator's prior: measured mass and geometry, the
+    // catalog's values for the rest.
     void tradedStaticGrips_priorRejected_theRestRecovered() {
         const PlantParameters truth = catalogCarWith({{"staticFriction", 0.5},
                                                       {"kineticFriction", 0.35},
@@ -117,7 +120,7 @@ class TestIdentificationRecovery : public QObject {
         RecordingConditions conditions;
         conditions.parameters = &truth;
         const core::Demonstration demonstration = DemonstrationStyles::record(
-            QStringLiteral("slidecar"), QStringLiteral("stick-180-left"), 300, SimulationTiming{},
+            QStringLiteral("slidecar"), QStringLiteral("stick-180-left"), 301, SimulationTiming{},
             conditions);
         const IdentificationResult result = identifyPlant({demonstration}, measuredPrior(truth));
         QVERIFY2(result.ok(), qPrintable(result.refusal));
@@ -136,11 +139,16 @@ class TestIdentificationRecovery : public QObject {
              {"kineticFriction", "rearKineticGrip", "maxDriveForce", "topSpeed"}) {
             QVERIFY2(identified.contains(QLatin1String(key)), key);
         }
+        for (const char* key : {"staticFriction", "rearStaticGrip"}) {
+            const auto grip = std::find_if(
+                result.table.begin(), result.table.end(),
+                [&](const IdentifiedParameter& p) { return p.key == QLatin1String(key); });
+            QVERIFY(grip != result.table.end());
+            QVERIFY2(!grip->identified, key);
+        }
         const auto front = std::find_if(
             result.table.begin(), result.table.end(),
             [](const IdentifiedParameter& p) { return p.key == QLatin1String("staticFriction"); });
-        QVERIFY(front != result.table.end());
-        QVERIFY(!front->identified);
         QVERIFY2(front->value != front->prior, "the rejected prior was put back");
         QVERIFY2(result.positionRms < 0.005, qPrintable(QString::number(result.positionRms)));
     }
