@@ -1,6 +1,6 @@
 // Identification of the slide-car: a car of known parameters recovered from its noise-free
 // demonstration, a car whose static grips trade, and mpc's second search of a poor quick fit.
-// About four minutes of model runs: left out of the sanitizer builds, which run the
+// About ten minutes of model runs: left out of the sanitizer builds, which run the
 // identification's code through test_identification.
 #include "sim/DemonstrationStyles.h"
 #include "sim/PlantCatalog.h"
