@@ -110,12 +110,10 @@ double localSearch(SearchContext& context, std::vector<double>& u, int evaluatio
 
 // Each dead time's profile: on the physics grid around its current value, the continuous
 // parameters searched again (briefly) for each candidate; the best candidate is kept, the window
-// following it if it lies at an edge. gaps[d]: how much more the better neighbour of the chosen
-// value costs (the profile's curvature there, for whether the data determined it).
+// following it if it lies at an edge.
 void profileDelays(Problem& problem, SearchContext& context, std::vector<double>& u,
-                   double physicsStep, int evaluations, std::vector<double>* gaps) {
+                   double physicsStep, int evaluations) {
     const int last = static_cast<int>(std::floor(0.1 / physicsStep + 1e-9));
-    gaps->clear();
     for (const int jIndex : problem.delays()) {
         const size_t j = static_cast<size_t>(jIndex);
         std::map<int, std::pair<double, std::vector<double>>> profile;
@@ -153,13 +151,6 @@ void profileDelays(Problem& problem, SearchContext& context, std::vector<double>
         }
         problem.current()[j] = best * physicsStep;
         u = profile[best].second;
-        double gap = std::numeric_limits<double>::infinity();
-        for (const int neighbour : {best - 1, best + 1}) {
-            if (profile.count(neighbour) != 0) {
-                gap = std::min(gap, profile[neighbour].first - profile[best].first);
-            }
-        }
-        gaps->push_back(gap);
     }
 }
 
@@ -263,7 +254,7 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
         return false;
     }
     problem.current() = problem.valuesAt(u);
-    profileDelays(problem, context, u, physicsStep, evaluations / 8, &gaps);
+    profileDelays(problem, context, u, physicsStep, evaluations / 8);
     if (n > 0) {
         best = localSearch(context, u, evaluations, 0.05);
         std::mt19937_64 draw(settings.seed);
@@ -281,7 +272,7 @@ bool fitOnce(Problem& problem, SearchContext& context, const IdentificationSetti
         }
         problem.current() = problem.valuesAt(u);
         // The dead times once more on the model the restarts found, and a last polish.
-        profileDelays(problem, context, u, physicsStep, evaluations / 8, &gaps);
+        profileDelays(problem, context, u, physicsStep, evaluations / 8);
         localSearch(context, u, evaluations, 0.02);
         problem.current() = problem.valuesAt(u);
     }

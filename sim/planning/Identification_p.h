@@ -83,7 +83,7 @@ class Problem {
                 std::max(2, static_cast<int>(std::lround(settings_.segmentSeconds / run.dt)));
             // Overlapping by half: an event (the snap into the slide) near one segment's end
             // is in the middle of the next.
-            const int stride = std::max(1, length / 2);
+            const int stride = strideOf(length);
             for (int begin = 0; begin + length < run.length(); begin += stride) {
                 // Segments with motion only: a car at rest says nothing of its parameters.
                 double speed = 0.0;
@@ -161,7 +161,7 @@ class Problem {
         for (const Segment& s : segments_) {
             const core::Demonstration& run = runs_[static_cast<size_t>(s.run)];
             const bool follows = carried.run == s.run && carried.step == s.begin;
-            Carried next{s.run, s.begin + std::max(1, s.length / 2), {}};
+            Carried next{s.run, s.begin + strideOf(s.length), {}};
             out.push_back(simulate(run, parameters, s.begin, s.length, settings_.physicsSubsteps,
                                    follows ? &carried.hidden : nullptr, next.step, &next.hidden));
             carried = next;
@@ -207,6 +207,8 @@ class Problem {
     }
 
   private:
+    // Segments overlap by half: the next one starts this many steps after one of this length.
+    static int strideOf(int length) { return std::max(1, length / 2); }
     struct Carried {
         int run = -1;
         int step = -1;
@@ -243,11 +245,10 @@ double localSearch(SearchContext& context, std::vector<double>& u, int evaluatio
 
 // Each dead time's profile: on the physics grid around its current value, the continuous
 // parameters searched again (briefly) for each candidate; the best candidate is kept, the window
-// following it if it lies at an edge. gaps[d]: how much more the better neighbour of the chosen
-// value costs (the profile's curvature there; fitOnce's verdict is taken after a thorough
-// re-search of both neighbours instead).
+// following it if it lies at an edge (whether the data determined it is fitOnce's verdict,
+// after a thorough re-search of both neighbours).
 void profileDelays(Problem& problem, SearchContext& context, std::vector<double>& u,
-                   double physicsStep, int evaluations, std::vector<double>* gaps);
+                   double physicsStep, int evaluations);
 
 // One fit of the plan's parameters from `start` (log-factors relative to it): the dead times,
 // local searches and restarts; then each fitted parameter's relative standard deviation from

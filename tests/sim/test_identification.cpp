@@ -9,27 +9,32 @@
 #include <QtTest>
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 using namespace prisca;
 using namespace prisca::sim;
 
 namespace {
 
-// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
-PlantParameters knownCar() {
+// The catalog's slide-car with these values set.
+PlantParameters catalogCarWith(std::initializer_list<std::pair<const char*, double>> values) {
     PlantParameters p = defaultPlantParameters("slidecar");
-    auto set = [&](const char* key, double value) {
-        const auto& specs = plantParameterSpecs("slidecar");
+    const auto& specs = plantParameterSpecs("slidecar");
+    for (const auto& [key, value] : values) {
         for (size_t i = 0; i < specs.size(); ++i) {
             if (specs[i].key == QLatin1String(key)) {
                 p.values[i] = value;
             }
         }
-    };
-    set("kineticFriction", 0.40);
-    set("maxDriveForce", 8.0);
-    set("yawInertia", 0.017);
+    }
     return p;
+}
+
+// A car unlike the catalog's: less grip in the slide, a weaker motor, more inertia.
+PlantParameters knownCar() {
+    return catalogCarWith(
+        {{"kineticFriction", 0.40}, {"maxDriveForce", 8.0}, {"yawInertia", 0.017}});
 }
 
 core::Demonstration demonstrationOf(const PlantParameters& car) {
@@ -57,15 +62,8 @@ class TestIdentification : public QObject {
     // launch (restarted with gripping wheels, the true car was 2.2 cm off at the end of the
     // segment after the launch, 0.35 cm over the run, and a wrong car fitted better).
     void trueCar_fitsItsOwnDemonstrationExactly() {
-        PlantParameters light = defaultPlantParameters("slidecar");
-        const auto& specs = plantParameterSpecs("slidecar");
-        for (size_t i = 0; i < specs.size(); ++i) {
-            const QString& key = specs[i].key;
-            light.values[i] = key == QLatin1String("mass")            ? 1.1
-                              : key == QLatin1String("yawInertia")    ? 0.011
-                              : key == QLatin1String("maxDriveForce") ? 8.0
-                                                                      : light.values[i];
-        }
+        const PlantParameters light =
+            catalogCarWith({{"mass", 1.1}, {"yawInertia", 0.011}, {"maxDriveForce", 8.0}});
         RecordingConditions conditions;
         conditions.parameters = &light;
         const core::Demonstration demonstration = DemonstrationStyles::record(
