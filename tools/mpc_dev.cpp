@@ -14,6 +14,7 @@
 
 #include <QCoreApplication>
 
+#include <cmath>
 #include <cstdio>
 
 using namespace prisca;
@@ -62,6 +63,8 @@ int main(int argc, char** argv) {
         profile.mpc.trackingScale = qEnvironmentVariable("MPC_TS").toDouble();
     if (qEnvironmentVariableIsSet("MPC_IE"))
         profile.mpc.identifyEvaluations = qEnvironmentVariable("MPC_IE").toInt();
+    if (qEnvironmentVariableIsSet("MPC_RB"))
+        profile.mpc.rollingBiasGain = qEnvironmentVariable("MPC_RB").toDouble();
     RunSettings settings;
     settings.seed = set;
     const Task task = makeTask(profile,
@@ -69,12 +72,16 @@ int main(int argc, char** argv) {
                                    "slidecar", style, set, {},
                                    demonstrationConditions(settings, profile, variant.get(), set))),
                                {}, variant);
-    const RunSetup mpcRun(task, "mpc", settings);
+    const RunSetup mpcRun(task,
+                          qEnvironmentVariableIsSet("METHOD") ? qEnvironmentVariable("METHOD")
+                                                              : QStringLiteral("mpc"),
+                          settings);
     const RunSetup lawRun(task, "pd-lsd", settings);
     auto mpc = mpcRun.makeController();
     auto law = lawRun.makeController();
     auto* planner = dynamic_cast<MpcController*>(mpc.get());
-    std::printf("model fit %.2f cm\n", 100.0 * planner->modelFit());
+    if (planner)
+        std::printf("model fit %.2f cm\n", 100.0 * planner->modelFit());
     const core::Demonstration& demo = *task.demonstration;
     const PlantInfo& info = profile.info;
     double sumMpc = 0.0, sumLaw = 0.0;
@@ -85,6 +92,8 @@ int main(int argc, char** argv) {
             const bool trace = qEnvironmentVariableIntValue("TRACE") == t + 1 && &c == mpc.get();
             e.recordSteps = trace;
             const EpisodeResult r = runEpisode(*plant, c, e);
+            if (qEnvironmentVariableIsSet("SPLIT"))
+                std::printf("    ran out %.2f s, trial %.2f s\n", r.runOutSeconds, r.duration);
             for (size_t k = 0; trace && k < r.steps.size(); k += 5) {
                 const StepRecord& s = r.steps[k];
                 const int j = std::min<int>(static_cast<int>(k), demo.length() - 1);
@@ -96,6 +105,27 @@ int main(int argc, char** argv) {
                     s.action[1], demo.actions(j, 0), demo.actions(j, 1));
             }
             const core::PlanarPoseIndices p = *info.pose;
+            if (qEnvironmentVariableIntValue("SPLIT") != 0) {
+                // The miss in the lot's frame: along the parked heading (+ beyond), and across.
+                const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
+                const double dx = r.finalState[p.x] - lot[p.x], dy = r.finalState[p.y] - lot[p.y];
+                const double ch = std::cos(lot[p.heading]), sh = std::sin(lot[p.heading]);
+                // Where the car comes to rest when the trial ends in neutral.
+                int coast = 0;
+                while (!plant->atRest() && coast < 250) {
+                    plant->step(Eigen::VectorXd::Zero(demo.actionDimension()));
+                    ++coast;
+                }
+                const Eigen::VectorXd rest = plant->state();
+                std::printf(
+                    "    at rest after %.2f s: %.1f cm\n", coast * demo.dt,
+                    100.0 *
+                        parkingError(info, demo, rest[p.x], rest[p.y], rest[p.heading]).position);
+                std::printf("    %s along %+6.1f cm across %+6.1f cm  speed at end %.2f m/s\n",
+                            &c == mpc.get() ? "mpc   " : "pd-lsd", 100.0 * (ch * dx + sh * dy),
+                            100.0 * (-sh * dx + ch * dy),
+                            std::hypot(r.finalState[3], r.finalState[4]));
+            }
             return 100.0 * parkingError(info, demo, r.finalState[p.x], r.finalState[p.y],
                                         r.finalState[p.heading])
                                .position;
@@ -105,8 +135,9 @@ int main(int argc, char** argv) {
         sumMpc += a;
         sumLaw += b;
         std::printf("trial %2d: mpc %6.1f cm  pd-lsd %6.1f cm  fit %.2f cm refits %d  %s\n", t + 1,
-                    a, b, 100.0 * planner->modelFit(), planner->refits(),
-                    qPrintable(planner->fallbackReason()));
+                    a, b, planner ? 100.0 * planner->modelFit() : -1.0,
+                    planner ? planner->refits() : 0,
+                    planner ? qPrintable(planner->fallbackReason()) : "");
     }
     std::printf("mean: mpc %.1f cm, pd-lsd %.1f cm\n", sumMpc / trials, sumLaw / trials);
     return 0;

@@ -430,31 +430,41 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="127"/>
+        <source>Rolling correction</source>
+        <translation>滾動阻力修正</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="129"/>
+        <source>While the car parks, how fast the model&apos;s rolling resistance follows the deceleration it failed to predict (0: never).</source>
+        <translation>泊車期間，模型的滾動阻力跟隨其未能預測的減速度的快慢（0：從不）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="142"/>
         <source>Spin guard</source>
         <translation>打轉防護</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="129"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="144"/>
         <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
         <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="147"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="162"/>
         <source>Model fit&apos;s segments</source>
         <translation>模型擬合的分段</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="149"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="164"/>
         <source>How long a stretch of the data the model is fitted to predict from each recorded state (identification&apos;s segment).</source>
         <translation>模型由每個記錄狀態起須預測的數據片段長度（辨識的分段）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="162"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="177"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="163"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="178"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>

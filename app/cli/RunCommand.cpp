@@ -45,7 +45,8 @@ sim::EpisodeResult runTrial(sim::Plant& plant, core::Controller& controller,
     const int tenth = stepper.maxSteps() >= kLongTrialSteps ? stepper.maxSteps() / 10 : 0;
     while (!stepper.finished()) {
         stepper.step();
-        if (tenth > 0 && stepper.stepCount() % tenth == 0 && !stepper.finished()) {
+        if (tenth > 0 && stepper.stepCount() % tenth == 0 && !stepper.finished() &&
+            !stepper.runningOut()) {
             printProgress(
                 QStringLiteral("%1, %2%").arg(label).arg(10 * (stepper.stepCount() / tenth)));
             reported = true;

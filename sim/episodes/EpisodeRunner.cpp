@@ -85,11 +85,13 @@ EpisodeStepper::EpisodeStepper(Plant& plant, core::Controller& controller,
     controller_.setLoopLatencySteps(settings_.compensatedLoopLatencySteps());
     controller_.reset(settings_.resetMode);
     maxSteps_ = static_cast<int>(settings_.duration / plant_.timing().controlPeriod + 0.5);
+    runOutSteps_ = static_cast<int>(
+        std::max(0.0, settings_.runOutLimit) / plant_.timing().controlPeriod + 0.5);
 }
 
 bool EpisodeStepper::finished() const {
     if (k_ >= maxSteps_) {
-        return true;
+        return k_ >= maxSteps_ + runOutSteps_ || plant_.atRest();
     }
     const double t = k_ * plant_.timing().controlPeriod;
     return settings_.stopAtRestAfter >= 0.0 && t >= settings_.stopAtRestAfter && plant_.atRest();
@@ -109,7 +111,7 @@ const StepRecord& EpisodeStepper::step() {
                 plant_.timing().controlPeriod);
         }
     }
-    if (!guard_.tripped()) {
+    if (!guard_.tripped() && !runningOut()) {
         const double before = threadCpuSeconds();
         const core::ControlStep& control = controller_.step(last_.observation);
         controllerSeconds_ += threadCpuSeconds() - before;
@@ -120,8 +122,9 @@ const StepRecord& EpisodeStepper::step() {
         last_.cost = control.cost;
         guard_.check(control.deviation);
     }
-    if (guard_.tripped()) {
-        last_.action.setZero();  // failsafe from the step that saw it on; the controller rests
+    if (guard_.tripped() || runningOut()) {
+        // Failsafe from the step that saw it on, and after the duration: the controller rests.
+        last_.action = Eigen::VectorXd::Zero(plant_.info().actionDimension());
     }
     if (filter_) {
         filter_->commanded(last_.action);  // the action the plant is given from now on
@@ -143,6 +146,7 @@ EpisodeResult EpisodeStepper::result() const {
     result.finalState = state_;
     result.stepCount = k_;
     result.duration = k_ * plant_.timing().controlPeriod;
+    result.runOutSeconds = std::max(0, k_ - maxSteps_) * plant_.timing().controlPeriod;
     result.meanCost = k_ > 0 ? costSum_ / k_ : 0.0;
     result.controllerSeconds = controllerSeconds_;
     result.lostTrack = guard_.tripped();

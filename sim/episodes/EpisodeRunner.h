@@ -23,6 +23,12 @@ struct EpisodeSettings {
     /// End early once the plant is at rest and at least this much time has passed [s]
     /// (negative: never end early).
     double stopAtRestAfter = -1.0;
+    /// A trial whose duration ends with the plant still moving runs out in failsafe: the zero
+    /// action (throttle neutral, steering centred: what the rig sends when a trial ends), the
+    /// controller no longer stepped, until the plant rests or this much longer [s]. A car that
+    /// passes through the lot at the last step is scored where it comes to rest, not there.
+    /// 0: the trial ends at its duration, moving or not.
+    double runOutLimit = 0.0;
     core::ResetMode resetMode = core::ResetMode::Cold;  ///< how the controller starts the trial
     /// Latency compensation: tell the controller how old its observations are (the sensor's
     /// latency), so that trackers compensate it (Controller::setLoopLatencySteps). Off: they
@@ -100,6 +106,8 @@ struct EpisodeResult {
     double controllerSeconds = 0.0;
     bool cancelled = false;  ///< stopped by the cancel predicate
     bool lostTrack = false;  ///< ended in failsafe: the robot left the demonstration
+    /// Time the plant ran out in failsafe after the duration, still moving (runOutLimit) [s].
+    double runOutSeconds = 0.0;
     QString controllerNote;  ///< the controller's word on the trial (Controller::trialNote)
 };
 
@@ -112,7 +120,8 @@ class EpisodeStepper {
     /// Resets the plant (seed, perturbation), the sensor and the controller (settings.resetMode).
     EpisodeStepper(Plant& plant, core::Controller& controller, const EpisodeSettings& settings);
 
-    /// True once the duration is reached, or the plant rests past settings.stopAtRestAfter.
+    /// True once the duration is reached and the plant rests (or has run out for
+    /// settings.runOutLimit), or once it rests past settings.stopAtRestAfter.
     bool finished() const;
     /// Takes one control step: observe, control, step the plant. Returns the step's record (the
     /// state and observation at its start, the action applied over it). Must not be called once
@@ -122,9 +131,12 @@ class EpisodeStepper {
     const Eigen::VectorXd& state() const { return state_; }
     /// Control steps taken so far.
     int stepCount() const { return k_; }
-    /// Control steps the trial takes at most (its duration over the control period); it may end
-    /// sooner at rest.
+    /// Control steps of the trial's duration (over the control period); it may end sooner at
+    /// rest, or run out in failsafe after them for at most runOutSteps() while still moving.
     int maxSteps() const { return maxSteps_; }
+    int runOutSteps() const { return runOutSteps_; }
+    /// True while the trial runs out in failsafe after its duration.
+    bool runningOut() const { return k_ >= maxSteps_; }
     /// The trial so far (steps only if settings.recordSteps).
     EpisodeResult result() const;
     /// The same, moving the recorded steps out (the stepper keeps none afterwards).
@@ -144,6 +156,7 @@ class EpisodeStepper {
     double controllerSeconds_ = 0.0;
     int k_ = 0;
     int maxSteps_ = 0;
+    int runOutSteps_ = 0;
 };
 
 /// The reset of trial `trial` (0-based) in a row of trials: a cold start for the first (the

@@ -121,6 +121,21 @@ const MethodParameter& mpcStraight() {
     return p;
 }
 
+const MethodParameter& mpcRollingBias() {
+    static const MethodParameter p = [] {
+        MethodParameter p =
+            real("mpc.rolling-bias", QT_TRANSLATE_NOOP("MethodParameter", "Rolling correction"), "",
+                 0.0, 1.0, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "While the car parks, how fast the model's rolling resistance "
+                                   "follows the deceleration it failed to predict (0: never)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.rollingBiasGain); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.rollingBiasGain = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcSpinGuard() {
     static const MethodParameter p = [] {
         MethodParameter p =
@@ -188,7 +203,10 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
                 .arg(QStringLiteral("slidecar"), profile.info.name)
                 .toStdString());
     }
-    const OracleParameters planner = plannerFor(profile, *demonstration);
+    OracleParameters planner = plannerFor(profile, *demonstration);
+    // A plan is scored where the car comes to rest after its trial, as the trial is.
+    planner.runOutSteps = static_cast<int>(
+        profile.episode(*demonstration, 1.0, 1.0).runOutLimit / demonstration->dt + 0.5);
     // The fallback: the PD with the least-state-deviation reference, the profile's law.
     std::unique_ptr<core::Controller> fallback =
         makePdLsd(MethodInput{profile, demonstration, in.fittedB, nullptr});
@@ -227,8 +245,8 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),    mpcRollouts(), mpcTube(), mpcStraight(),
-                    mpcSpinGuard(), mpcSegment(),  mpcRefit()};
+    s.parameters = {mpcReplan(),    mpcRollouts(), mpcTube(),        mpcStraight(),
+                    mpcSpinGuard(), mpcSegment(),  mpcRollingBias(), mpcRefit()};
     return s;
 }
 

@@ -15,6 +15,17 @@ namespace {
 // of history (covers the dead times and the servo's travel, as identification's segments).
 constexpr int kHistorySteps = 12;
 
+// Where the model's rolling resistance is among its parameters.
+int rollingIndex(const PlantParameters& model) {
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model.plant);
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].key == QLatin1String("rollingResistance")) {
+            return static_cast<int>(i);
+        }
+    }
+    throw std::invalid_argument("mpc's model has no rolling resistance");
+}
+
 }  // namespace
 
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
@@ -142,8 +153,15 @@ MpcController::MpcController(const MpcController& other)
       turnStart_(other.turnStart_),
       refits_(other.refits_),
       step_(other.step_),
+      rollingBias_(other.rollingBias_),
       record_(other.record_) {
     buildModel();
+    if (other.appliedBias_ != 0.0) {
+        PlantParameters biased = model_;
+        biased.values[static_cast<size_t>(rollingIndex(model_))] += other.appliedBias_;
+        makeModels(biased);
+        appliedBias_ = other.appliedBias_;
+    }
     if (other.planner_) {
         planner_ = std::make_unique<OracleController>(*other.planner_);
         attachModels();
@@ -175,17 +193,22 @@ void MpcController::setLoopLatencySteps(int steps) {
 }
 
 void MpcController::buildModel() {
+    planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
+    appliedBias_ = 0.0;
+    makeModels(model_);
+}
+
+void MpcController::makeModels(const PlantParameters& parameters) {
     SimulationTiming timing;
     timing.controlPeriod = problem_.demonstration->dt;
     timing.physicsSubsteps = parameters_.substeps;
-    modelPlant_ = makePlant(model_, timing);
-    scratch_ = makePlant(model_, timing);
-    planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
+    modelPlant_ = makePlant(parameters, timing);
+    scratch_ = makePlant(parameters, timing);
     ensemble_.clear();
     if (parameters_.gripSpread > 0.0) {
         // The same car on less grip: the side a plan spins out on.
-        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
-        PlantParameters slippery = model_;
+        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(parameters.plant);
+        PlantParameters slippery = parameters;
         for (size_t i = 0; i < specs.size(); ++i) {
             const QString& key = specs[i].key;
             if (key == QLatin1String("staticFriction") || key == QLatin1String("kineticFriction")) {
@@ -196,6 +219,29 @@ void MpcController::buildModel() {
         ensemble_.push_back(makePlant(slippery, timing));
     }
     attachModels();
+}
+
+void MpcController::correctRolling(const Eigen::VectorXd& predicted,
+                                   const Eigen::VectorXd& observation) {
+    if (!(parameters_.rollingBiasGain > 0.0) || !problem_.deviation.bodyVelocity ||
+        step_ - latency_ <= spinUntil_) {
+        return;
+    }
+    const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+    const double forward = observation[v.forward];
+    // Rolling straight: no side slip or turn for the rolling resistance to hide behind.
+    if (std::abs(forward) < 0.05 || std::abs(observation[v.lateral]) > 0.1 ||
+        std::abs(observation[v.yawRate]) > 0.3) {
+        return;
+    }
+    const double window = tubeSteps() * problem_.demonstration->dt;
+    // The deceleration the model missed (positive: the car slows more than the model says).
+    const double missed = -std::copysign(1.0, forward) * (forward - predicted[v.forward]) / window;
+    const int i = rollingIndex(model_);
+    const PlantParameterSpec& spec = plantParameterSpecs(model_.plant)[static_cast<size_t>(i)];
+    const double base = model_.values[static_cast<size_t>(i)];
+    rollingBias_ = std::clamp(rollingBias_ + parameters_.rollingBiasGain * missed / 9.81,
+                              spec.lower - base, spec.upper - base);
 }
 
 void MpcController::attachModels() {
@@ -224,6 +270,7 @@ void MpcController::reset(core::ResetMode mode) {
     step_ = 0;
     strikes_ = 0;
     spinStrikes_ = 0;
+    rollingBias_ = 0.0;
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
@@ -338,6 +385,7 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
                                            predicted[pose.y] - observation[pose.y]);
         const double heading =
             std::abs(core::wrapAngle(predicted[pose.heading] - observation[pose.heading]));
+        correctRolling(predicted, observation);
         if (position > parameters_.tubePosition || heading > parameters_.tubeHeading) {
             ++strikes_;
         } else {
@@ -365,6 +413,12 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     if (mode_ == MpcMode::Fallback) {
         record_ = law;
     } else {
+        if (k % parameters_.replanEvery == 0 && std::abs(rollingBias_ - appliedBias_) > 1e-3) {
+            PlantParameters biased = model_;
+            biased.values[static_cast<size_t>(rollingIndex(model_))] += rollingBias_;
+            makeModels(biased);
+            appliedBias_ = rollingBias_;
+        }
         // The model at the state of now: the measurement predicted through the latency.
         predictInto(*modelPlant_, k, latency_);
         // The other grips are planned from, not stepped: they need the state of now only on

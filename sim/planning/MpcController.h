@@ -82,6 +82,13 @@ struct MpcParameters {
     /// local minimum on a development car (16 cm; 2.6 cm with 1,000 evaluations); 0: never.
     int retryEvaluations = 1200;
     int refitEvaluations = 120;  ///< a refit's (a local search from the model)
+    /// Inside a trial, once the car is parking (past the demonstration's fastest turn) and
+    /// rolls straight, the model's rolling resistance is corrected from its own prediction
+    /// errors, as offset-free model-predictive control corrects a model by an estimated
+    /// disturbance: each step it moves by this share of the deceleration [m/s^2] (over g) the
+    /// model missed over the tube's window. 0: off. The development run went from 14.2 to
+    /// 9.2 cm at 0.05 and at 0.2 alike (docs/research-log.md, issue 33's tenth step).
+    double rollingBiasGain = 0.05;
 };
 
 /// Why a trial is (or is not) planned through the model.
@@ -129,6 +136,8 @@ class MpcController : public core::Controller {
     const PlantParameters& model() const { return model_; }
     double modelFit() const { return modelFit_; }
     int refits() const { return refits_; }
+    /// This trial's correction of the model's rolling resistance so far (rollingBiasGain).
+    double rollingCorrection() const { return rollingBias_; }
     const MpcParameters& parameters() const { return parameters_; }
     /// The demonstration's step its turn begins at: the plan's corrections are bounded by
     /// straightCorrection before it.
@@ -138,6 +147,10 @@ class MpcController : public core::Controller {
     void buildModel();
     /// Hands the planner its models: the model plant and the other grips.
     void attachModels();
+    /// The model's plants (the model, the tube's scratch, the other grips) for `parameters`.
+    void makeModels(const PlantParameters& parameters);
+    /// The rolling-resistance correction (rollingBiasGain) from the tube's prediction.
+    void correctRolling(const Eigen::VectorXd& predicted, const Eigen::VectorXd& observation);
     void fallBack(const QString& reason);
     /// The model at recorded step `from`'s observation with the commands before it in flight,
     /// stepped through `count` commands sent from step `from - latency` on.
@@ -174,6 +187,8 @@ class MpcController : public core::Controller {
     int turnStart_ = 0;  // the demonstration's first step of that turn: the straight's end
     int refits_ = 0;
     int step_ = 0;
+    double rollingBias_ = 0.0;  // the estimated extra rolling resistance [1] (this trial's)
+    double appliedBias_ = 0.0;  // ... as the model's plants have it
     core::ControlStep record_;
 };
 

@@ -137,6 +137,13 @@ Eigen::Vector3d OracleController::finalPoseOf(Plant& copy, const Eigen::MatrixXd
             away->push_back(s[at.y] - demo.states(j, at.y));
         }
     }
+    if (t >= parameters_.trialSteps && parameters_.runOutSteps > 0 && !copy.atRest()) {
+        const Eigen::VectorXd neutral = Eigen::VectorXd::Zero(copy.info().actionDimension());
+        for (int out = 0; out < parameters_.runOutSteps && !copy.atRest(); ++out) {
+            copy.step(neutral);
+            ++t;
+        }
+    }
     simulatedSteps_ += t - k;
     const Eigen::VectorXd s = copy.state();
     const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();

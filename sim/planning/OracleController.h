@@ -31,6 +31,14 @@ struct OracleParameters {
     /// once the plant is at rest (EpisodeSettings::duration and stopAtRestAfter).
     int trialSteps = 0;
     int restAfterStep = -1;
+    /// FinalPose: a plant still moving at the trial's end runs on with the zero action for at
+    /// most this many control steps, or until it rests, and the final pose is where it then is
+    /// (EpisodeSettings::runOutLimit): a plan that drives through the lot at the last step is
+    /// scored where the car coasts to, as the trial is. `mpc` plans so (its plans had learnt to
+    /// creep through the lot at the last step); the oracle does not (0): planning for the coast
+    /// it found, on one evaluation trial, a plan that ended 2.9 m away (docs/research-log.md,
+    /// issue 33's tenth step).
+    int runOutSteps = 0;
     /// Feedback u += K e around the time-aligned demonstration (m x n on the deviation e;
     /// empty: none). Planned through, so corrections are found for the closed loop, which
     /// keeps the plant on its plan between two plannings despite the actuator noise.

@@ -56,6 +56,8 @@ MethodTuning slideCarTuning(const PlantInfo& info) {
     p.measurement.loopLatencySteps = 1;
     p.measurement.dropProbability = 0.02;
     p.settleTime = 2.0;
+    // A brakeless car coasts on when the trial ends: from 2 m/s it rests within about 3 s.
+    p.runOutLimit = 5.0;
     // Two metres off the path in an arena of a few metres: the car has left the demonstration
     // (a reference stalled on a full-throttle sample, feedback saturated on metres of error)
     // and goes to failsafe instead of driving into the wall (what it cost and saved on the
@@ -264,6 +266,7 @@ EpisodeSettings MethodTuning::episode(const core::Demonstration& demonstration, 
     const double demoDuration = demonstration.length() * demonstration.dt;
     episode.duration = demoDuration + settleTime;
     episode.stopAtRestAfter = info.pose ? demoDuration : -1.0;
+    episode.runOutLimit = runOutLimit;
     return episode;
 }
 

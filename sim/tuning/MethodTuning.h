@@ -38,6 +38,9 @@ struct MethodTuning {
     Eigen::VectorXd costWeights;        ///< W in C = e^T W e (n)
     MeasurementParameters measurement;  ///< the sensor at "realistic" level
     double settleTime = 2.0;            ///< a trial runs this long past the demonstration [s]
+    /// A vehicle still moving when its trial ends runs out in failsafe (neutral) until it rests,
+    /// at most this long [s], and is scored where it rests (EpisodeSettings::runOutLimit).
+    double runOutLimit = 0.0;
     /// Whether the trackers compensate the sensor's latency (EpisodeSettings): the reference is
     /// matched for the time the observation was taken. The slide-car's are (with every method
     /// re-tuned and the lost-track failsafe below); the acrobot's sensor has no latency, the

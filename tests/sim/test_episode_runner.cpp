@@ -281,6 +281,45 @@ class TestEpisodeRunner : public QObject {
         QCOMPARE(cancelled.stepCount, 10);
     }
 
+    // A car still moving when the duration ends runs out in neutral, the controller no longer
+    // asked, and is scored where it rests; without a run-out it ends where the duration left it.
+    void runOut_scoresTheCarWhereItRests() {
+        const SlideCarSetup setup;
+        EpisodeSettings s = setup.settings(5);
+        s.duration = 1.0;  // full throttle to the end: moving at metres a second
+        s.stopAtRestAfter = -1.0;
+        SlideCar moving;
+        Runaway first;
+        const EpisodeResult cut = runEpisode(moving, first, s);
+        QCOMPARE(cut.stepCount, 40);
+        QCOMPARE(cut.runOutSeconds, 0.0);
+        QVERIFY(!moving.atRest());
+        s.runOutLimit = 10.0;
+        SlideCar coasting;
+        Runaway second;
+        const EpisodeResult out = runEpisode(coasting, second, s);
+        QVERIFY(coasting.atRest());
+        QCOMPARE(second.steps, 40);  // the controller was not asked after the duration
+        QVERIFY2(out.stepCount > 40 && out.stepCount < 40 + 400,
+                 qPrintable(QString::number(out.stepCount)));
+        QCOMPARE(out.runOutSeconds, (out.stepCount - 40) * 0.025);
+        QCOMPARE(static_cast<int>(out.steps.size()), out.stepCount);
+        for (size_t k = 40; k < out.steps.size(); ++k) {
+            QVERIFY(out.steps[k].action.isZero());
+        }
+        QVERIFY(identical(out.steps[39].action, cut.steps[39].action));
+        const core::PlanarPoseIndices at = *SlideCar::describe().pose;
+        QVERIFY2(std::hypot(out.finalState[at.x] - cut.finalState[at.x],
+                            out.finalState[at.y] - cut.finalState[at.y]) > 0.1,
+                 "the car coasted on");
+        // A run-out shorter than the coast: it ends there, still moving.
+        s.runOutLimit = 0.1;
+        SlideCar shortOut;
+        Runaway third;
+        QCOMPARE(runEpisode(shortOut, third, s).stepCount, 44);
+        QVERIFY(!shortOut.atRest());
+    }
+
     void lostTrack_endsTheTrialInFailsafe() {
         SlideCarSetup setup;
         for (const double distance : {0.0, 0.5}) {

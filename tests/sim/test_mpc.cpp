@@ -140,6 +140,32 @@ class TestMpc : public QObject {
         QVERIFY(compared > 10);
     }
 
+    // While the car parks, the model's rolling resistance follows what the model failed to
+    // predict: a model with a third of the car's rolling resistance (and everything else right)
+    // is corrected towards the car's, and parks closer than without the correction; with the
+    // gain at 0 nothing is corrected.
+    void rollingBias_followsTheCarWhileItParks() {
+        Setup setup;
+        const PlantParameters car = defaultPlantParameters("slidecar");
+        const double rolling = car.value(QStringLiteral("rollingResistance"));
+        setup.profile.mpcModel = std::make_shared<const PlantParameters>(
+            withValues(car, {{"rollingResistance", rolling / 3.0}}));
+        setup.profile.mpc.rollingBiasGain = 0.0;
+        auto off = setup.mpc();
+        const double uncorrected = setup.trial(*off, 11, 0.0);
+        QCOMPARE(off->rollingCorrection(), 0.0);
+        setup.profile.mpc.rollingBiasGain = 0.1;
+        auto on = setup.mpc();
+        const double corrected = setup.trial(*on, 11, 0.0);
+        QCOMPARE(on->mode(), MpcMode::Planning);
+        const double gap = rolling - rolling / 3.0;
+        QVERIFY2(
+            on->rollingCorrection() > 0.3 * gap && on->rollingCorrection() < 1.5 * gap,
+            qPrintable(QStringLiteral("%1 for a gap of %2").arg(on->rollingCorrection()).arg(gap)));
+        QVERIFY2(corrected < uncorrected,
+                 qPrintable(QStringLiteral("%1 against %2").arg(corrected).arg(uncorrected)));
+    }
+
     // The spin guard: on the way into the slide, a measured side slip far from every one the
     // demonstration had near that time hands the trial to the fallback law; the same slip
     // past the demonstration's fastest turn, or with the guard off, does not.
