@@ -110,17 +110,6 @@ int main(int argc, char** argv) {
                 const Eigen::VectorXd lot = demo.states.row(demo.length() - 1).transpose();
                 const double dx = r.finalState[p.x] - lot[p.x], dy = r.finalState[p.y] - lot[p.y];
                 const double ch = std::cos(lot[p.heading]), sh = std::sin(lot[p.heading]);
-                // Where the car comes to rest when the trial ends in neutral.
-                int coast = 0;
-                while (!plant->atRest() && coast < 250) {
-                    plant->step(Eigen::VectorXd::Zero(demo.actionDimension()));
-                    ++coast;
-                }
-                const Eigen::VectorXd rest = plant->state();
-                std::printf(
-                    "    at rest after %.2f s: %.1f cm\n", coast * demo.dt,
-                    100.0 *
-                        parkingError(info, demo, rest[p.x], rest[p.y], rest[p.heading]).position);
                 std::printf("    %s along %+6.1f cm across %+6.1f cm  speed at end %.2f m/s\n",
                             &c == mpc.get() ? "mpc   " : "pd-lsd", 100.0 * (ch * dx + sh * dy),
                             100.0 * (-sh * dx + ch * dy),

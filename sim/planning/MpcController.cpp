@@ -157,10 +157,7 @@ MpcController::MpcController(const MpcController& other)
       record_(other.record_) {
     buildModel();
     if (other.appliedBias_ != 0.0) {
-        PlantParameters biased = model_;
-        biased.values[static_cast<size_t>(rollingIndex(model_))] += other.appliedBias_;
-        makeModels(biased);
-        appliedBias_ = other.appliedBias_;
+        applyRollingBias(other.appliedBias_);
     }
     if (other.planner_) {
         planner_ = std::make_unique<OracleController>(*other.planner_);
@@ -242,6 +239,13 @@ void MpcController::correctRolling(const Eigen::VectorXd& predicted,
     const double base = model_.values[static_cast<size_t>(i)];
     rollingBias_ = std::clamp(rollingBias_ + parameters_.rollingBiasGain * missed / 9.81,
                               spec.lower - base, spec.upper - base);
+}
+
+void MpcController::applyRollingBias(double bias) {
+    PlantParameters biased = model_;
+    biased.values[static_cast<size_t>(rollingIndex(model_))] += bias;
+    makeModels(biased);
+    appliedBias_ = bias;
 }
 
 void MpcController::attachModels() {
@@ -414,10 +418,7 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
         record_ = law;
     } else {
         if (k % parameters_.replanEvery == 0 && std::abs(rollingBias_ - appliedBias_) > 1e-3) {
-            PlantParameters biased = model_;
-            biased.values[static_cast<size_t>(rollingIndex(model_))] += rollingBias_;
-            makeModels(biased);
-            appliedBias_ = rollingBias_;
+            applyRollingBias(rollingBias_);
         }
         // The model at the state of now: the measurement predicted through the latency.
         predictInto(*modelPlant_, k, latency_);

@@ -149,6 +149,8 @@ class MpcController : public core::Controller {
     void attachModels();
     /// The model's plants (the model, the tube's scratch, the other grips) for `parameters`.
     void makeModels(const PlantParameters& parameters);
+    /// The model's plants with `bias` added to its rolling resistance.
+    void applyRollingBias(double bias);
     /// The rolling-resistance correction (rollingBiasGain) from the tube's prediction.
     void correctRolling(const Eigen::VectorXd& predicted, const Eigen::VectorXd& observation);
     void fallBack(const QString& reason);
