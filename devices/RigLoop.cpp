@@ -51,6 +51,7 @@ void RigLoop::startTrial(core::ResetMode mode) {
     guard_.reset();
     tripped_.clear();
     fenceTripped_ = false;
+    runningOut_ = false;
     lostSinceNs_ = -1;
     estimator_.reset();
     if (filter_) {
@@ -150,6 +151,16 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
         if (const QString why = fence_.breach(tracked.pose, speed, 0.0); !why.isEmpty()) {
             return trip(why, true);
         }
+    }
+    if (runningOut_) {
+        step.action = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(channels_.controls.size()));
+        link_.setCommand(channels_.command(step.action));
+        link_.setPoseLost(false);
+        if (filter_ && step.action.size() == filter_->actionDimension()) {
+            filter_->commandedAt(step.action, static_cast<double>(frame.steadyNs) * 1e-9);
+        }
+        step.commandNs = steadyNowNs();
+        return step;
     }
     bool offTrack = false;
     try {

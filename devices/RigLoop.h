@@ -60,6 +60,12 @@ class RigLoop {
     RigStep onFrame(const CameraFrame& frame);
     /// A new trial: the controller resets (warm start keeps what it learnt), the estimator too.
     void startTrial(core::ResetMode mode);
+    /// The trial's time is up but the car still moves: from the next frame until the next
+    /// startTrial, the car is tracked and fenced as before but the controller is no longer
+    /// asked; the link is sent the zero action (throttle neutral, steering centred), and the
+    /// lost-track guard no longer applies (a coasting car may leave the demonstration's end).
+    void runOut() { runningOut_ = true; }
+    bool runningOut() const { return runningOut_; }
     /// A car further than this [m] from its matched reference has left the demonstration: the
     /// link goes to failsafe as on a controller fault (core::LostTrackGuard); 0: never.
     void setLostTrackDistance(double metres) {
@@ -102,6 +108,7 @@ class RigLoop {
     Geofence fence_;
     QString tripped_;                ///< why the trial ended in failsafe (latched until startTrial)
     bool fenceTripped_ = false;      ///< ... and whether that was the fence
+    bool runningOut_ = false;        ///< runOut(): neutral, the controller no longer asked
     std::int64_t lostSinceNs_ = -1;  ///< when the pose was lost (-1: tracked)
     ChannelMap channels_;
     TransmitterLink& link_;

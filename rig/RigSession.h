@@ -87,6 +87,9 @@ struct RigTrialResult {
     bool fault = false;    ///< ended in failsafe: the fence, the lost-track guard, a fault
     QString reason;        ///< why, when `fault`
     double seconds = 0.0;  ///< its length by the camera's frame clock [s]
+    /// Of those, run out in neutral after its time, the car still moving [s] (the controller no
+    /// longer asked; the car scored where it came to rest or where the limit left it).
+    double runOutSeconds = 0.0;
     long long frames = 0;  ///< frames it saw
     long long framesWithPose = 0;
     /// Per frame with a pose: from the frame's arrival to its command handed to the link [ms].

@@ -21,11 +21,32 @@
 #include <QJsonObject>
 #include <QMetaObject>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 #include <utility>
 
 namespace prisca::rig {
+
+namespace {
+
+/// Whether the car rests: tracked over the whole of the last kRestWindowSeconds, within
+/// kRestDistance and kRestTurn of its newest pose all along.
+bool resting(const std::deque<std::pair<std::int64_t, devices::PlanarPose>>& poses) {
+    if (poses.empty() ||
+        (poses.back().first - poses.front().first) * 1e-9 < 0.9 * kRestWindowSeconds) {
+        return false;
+    }
+    const devices::PlanarPose& now = poses.back().second;
+    return std::all_of(poses.begin(), poses.end(), [&](const auto& p) {
+        return std::hypot(p.second.x - now.x, p.second.y - now.y) < kRestDistance &&
+               std::abs(std::remainder(p.second.heading - now.heading, 2.0 * core::kPi)) <
+                   kRestTurn;
+    });
+}
+
+}  // namespace
 
 PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
                                         const sim::MethodSpec& method) const {
@@ -199,6 +220,9 @@ bool RigSession::startTrial(const TrialRequest& request, QString* error) {
     l.framesWithPose = 0;
     l.loopLatencyMs.clear();
     l.lastTrackedPose.reset();
+    l.recentPoses.clear();
+    l.runOutLimit = setup.profile().runOutLimit;
+    l.runOutStartNs = -1;
     l.plant = setup.profile().info;
     l.demonstration = setup.task().demonstration;
     l.running = true;
@@ -228,6 +252,8 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
     result.fault = fault;
     result.reason = reason;
     result.seconds = l.trialStartNs >= 0 ? (l.lastFrameNs - l.trialStartNs) * 1e-9 : 0.0;
+    result.runOutSeconds =
+        l.runOutStartNs >= 0 ? std::max(0.0, (l.lastFrameNs - l.runOutStartNs) * 1e-9) : 0.0;
     result.frames = l.frames;
     result.framesWithPose = l.framesWithPose;
     result.loopLatencyMs = std::move(l.loopLatencyMs);
@@ -244,6 +270,7 @@ RigTrialResult RigSession::finishTrialLocked(bool stopped, bool fault, const QSt
                       {"failsafe", fault},
                       {"reason", reason},
                       {"seconds", result.seconds},
+                      {"runOutSeconds", result.runOutSeconds},
                       {"frames", static_cast<double>(result.frames)},
                       {"framesWithPose", static_cast<double>(result.framesWithPose)}};
         if (!result.controllerNote.isEmpty()) {
@@ -320,7 +347,16 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
             if (pose) {
                 ++l.framesWithPose;
                 l.lastTrackedPose = pose;
-                l.loopLatencyMs.push_back((step.commandNs - step.frameNs) * 1e-6);
+                if (l.runOutStartNs < 0) {  // a run-out's command is no controller's
+                    l.loopLatencyMs.push_back((step.commandNs - step.frameNs) * 1e-6);
+                }
+                l.recentPoses.emplace_back(frame.steadyNs, *pose);
+                while (l.recentPoses.front().first <
+                       frame.steadyNs - static_cast<std::int64_t>(kRestWindowSeconds * 1e9)) {
+                    l.recentPoses.pop_front();
+                }
+            } else {
+                l.recentPoses.clear();  // a gap: rest is seen afresh
             }
             if (l.trialStartNs < 0) {
                 l.trialStartNs = frame.steadyNs;
@@ -360,8 +396,18 @@ void RigSession::onFrame(const devices::CameraFrame& frame) {
             }
             // A trial lasts its length by the camera's own frame clock, whatever the frame rate.
             const double elapsed = (frame.steadyNs - l.trialStartNs) * 1e-9;
-            if (elapsed >= l.trialSeconds || step.fault) {
-                finished = finishTrialLocked(false, step.fault, step.stopReason);
+            if (step.fault) {
+                finished = finishTrialLocked(false, true, step.stopReason);
+            } else if (elapsed >= l.trialSeconds && l.runOutStartNs < 0 && l.runOutLimit > 0.0 &&
+                       !resting(l.recentPoses)) {
+                // Still moving: the car runs out in neutral and is scored where it rests, as
+                // in simulation (sim::EpisodeSettings::runOutLimit).
+                l.runOutStartNs = frame.steadyNs;
+                l.loop->runOut();
+            } else if (elapsed >= l.trialSeconds &&
+                       (l.runOutStartNs < 0 || resting(l.recentPoses) ||
+                        (frame.steadyNs - l.runOutStartNs) * 1e-9 >= l.runOutLimit)) {
+                finished = finishTrialLocked(false, false, QString());
             } else if (devices::processfailsafe::held()) {
                 // The process was stopped and continued: the link holds failsafe, and a trial
                 // that lost its time cannot go on (the next one needs E-STOP reset first).
@@ -418,6 +464,11 @@ QString trialSentence(const RigTrialResult& result) {
                        .arg(result.parked->heading * 180.0 / core::kPi, 0, 'f', 1);
     } else {
         sentence = RigSession::tr("Trial %1 ended without a pose").arg(result.trial);
+    }
+    if (result.runOutSeconds > 0.0) {
+        //: The car still moved when the trial's time was up and rolled on in neutral.
+        sentence += RigSession::tr(" after running out %1 s in neutral")
+                        .arg(result.runOutSeconds, 0, 'f', 1);
     }
     if (result.stopped) {
         sentence += RigSession::tr(" (stopped after %1 s)").arg(result.seconds, 0, 'f', 1);

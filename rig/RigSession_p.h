@@ -11,6 +11,7 @@
 #include "rig/RigSession.h"
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -20,6 +21,14 @@ namespace prisca::rig {
 
 /// How long the session waits for its threads when it goes [ms].
 constexpr int kShutdownWaitMs = 3000;
+
+/// A car rests when its tracked pose moved less than kRestDistance [m] and turned less than
+/// kRestTurn [rad] over the last kRestWindowSeconds: the simulator's rest (0.02 m/s, 0.05 rad/s)
+/// measured over frames, as one frame's finite difference is swamped by the camera's few mm of
+/// noise.
+constexpr double kRestWindowSeconds = 0.5;
+constexpr double kRestDistance = 0.01;
+constexpr double kRestTurn = 0.03;
 
 /// What the camera thread and the commands share (under mutex_).
 struct RigSession::Loop {
@@ -50,6 +59,13 @@ struct RigSession::Loop {
     long long framesWithPose = 0;
     std::vector<double> loopLatencyMs;
     std::optional<devices::PlanarPose> lastTrackedPose;
+    /// The tracked poses of the last kRestWindowSeconds (with their frames' times): whether
+    /// the car rests.
+    std::deque<std::pair<std::int64_t, devices::PlanarPose>> recentPoses;
+    /// A car still moving when the trial's time is up runs out in neutral for at most this
+    /// long [s] and is scored where it rests (sim::MethodTuning::runOutLimit); 0: never.
+    double runOutLimit = 0.0;
+    std::int64_t runOutStartNs = -1;  ///< when the run-out began; -1: none
     sim::PlantInfo plant;
     std::shared_ptr<const core::Demonstration> demonstration;
     // Recording by driving.

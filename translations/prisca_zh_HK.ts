@@ -3612,77 +3612,77 @@ Do you want to replace it?</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="455"/>
+        <location filename="../app/panels/RunPanel.cpp" line="460"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="464"/>
+        <location filename="../app/panels/RunPanel.cpp" line="469"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="499"/>
+        <location filename="../app/panels/RunPanel.cpp" line="504"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="500"/>
+        <location filename="../app/panels/RunPanel.cpp" line="505"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="501"/>
+        <location filename="../app/panels/RunPanel.cpp" line="506"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="503"/>
+        <location filename="../app/panels/RunPanel.cpp" line="508"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="505"/>
+        <location filename="../app/panels/RunPanel.cpp" line="510"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="507"/>
+        <location filename="../app/panels/RunPanel.cpp" line="512"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="509"/>
+        <location filename="../app/panels/RunPanel.cpp" line="514"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="511"/>
+        <location filename="../app/panels/RunPanel.cpp" line="516"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="513"/>
+        <location filename="../app/panels/RunPanel.cpp" line="518"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="514"/>
+        <location filename="../app/panels/RunPanel.cpp" line="519"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="515"/>
+        <location filename="../app/panels/RunPanel.cpp" line="520"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="516"/>
+        <location filename="../app/panels/RunPanel.cpp" line="521"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="526"/>
+        <location filename="../app/panels/RunPanel.cpp" line="531"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
@@ -3752,96 +3752,101 @@ Do you want to replace it?</source>
     </message>
     <message>
         <location filename="../app/panels/RunPanel.cpp" line="456"/>
+        <source>; ran out %1 s in neutral, scored where it rests</source>
+        <translation>；油門回中後滑行 %1 秒，以停定的位置計分</translation>
+    </message>
+    <message>
+        <location filename="../app/panels/RunPanel.cpp" line="461"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="518"/>
+        <location filename="../app/panels/RunPanel.cpp" line="523"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="520"/>
+        <location filename="../app/panels/RunPanel.cpp" line="525"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="523"/>
+        <location filename="../app/panels/RunPanel.cpp" line="528"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="524"/>
+        <location filename="../app/panels/RunPanel.cpp" line="529"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="528"/>
+        <location filename="../app/panels/RunPanel.cpp" line="533"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="529"/>
+        <location filename="../app/panels/RunPanel.cpp" line="534"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="530"/>
+        <location filename="../app/panels/RunPanel.cpp" line="535"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="532"/>
+        <location filename="../app/panels/RunPanel.cpp" line="537"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="533"/>
+        <location filename="../app/panels/RunPanel.cpp" line="538"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="541"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="541"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="541"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="542"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="542"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="539"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="539"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="540"/>
+        <location filename="../app/panels/RunPanel.cpp" line="545"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="540"/>
+        <location filename="../app/panels/RunPanel.cpp" line="545"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -4746,44 +4751,44 @@ Do you want to replace it?</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="63"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="84"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="69"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="90"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="91"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="112"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="100"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="121"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="103"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="124"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="357"/>
-        <location filename="../rig/RigSessionTrials.cpp" line="109"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="130"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="120"/>
-        <location filename="../rig/RigSessionTrials.cpp" line="143"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="141"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="164"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="369"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="415"/>
         <source>the process was stopped and continued: failsafe held</source>
         <translation>程式曾被暫停後再繼續：保持失效保護</translation>
     </message>
@@ -4828,32 +4833,38 @@ Do you want to replace it?</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="415"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="461"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="420"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="466"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="423"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="470"/>
+        <source> after running out %1 s in neutral</source>
+        <extracomment>The car still moved when the trial&apos;s time was up and rolled on in neutral.</extracomment>
+        <translation>（油門回中後滑行 %1 秒）</translation>
+    </message>
+    <message>
+        <location filename="../rig/RigSessionTrials.cpp" line="474"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="426"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="477"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="427"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="478"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="433"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="484"/>
         <source>%1; %2</source>
         <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
         <translation>%1；%2</translation>

@@ -226,6 +226,7 @@ QJsonObject reportTrial(const rig::RigTrialResult& trial, int number, long long 
                     {"medianFrameToCommandMs", medianLatency},
                     {"p99FrameToCommandMs", p99Latency},
                     {"worstFrameToCommandMs", worstLatency}};
+    row.insert("runOutSeconds", trial.runOutSeconds);
     if (trial.parked) {
         row.insert("finalPositionErrorCm", trial.parked->position * 100.0);
         row.insert("finalHeadingErrorDeg", trial.parked->heading * 180.0 / core::kPi);
@@ -245,11 +246,15 @@ QJsonObject reportTrial(const rig::RigTrialResult& trial, int number, long long 
                                  : QStringLiteral(" (stopped early: %1)").arg(trial.reason))
             : trial.fault ? QStringLiteral(" (failsafe: %1)").arg(trial.reason)
                           : QString();
+        const QString ranOut = trial.runOutSeconds > 0.0
+                                   ? QStringLiteral(" after running out %1 s in neutral")
+                                         .arg(trial.runOutSeconds, 0, 'f', 1)
+                                   : QString();
         printText(QStringLiteral("trial %1: %2%3; %4 of %5 frames with a pose; %6 link "
                                  "frames decoded; frame -> command median %7 ms, p99 %8 ms, "
                                  "worst %9 ms\n")
                       .arg(number)
-                      .arg(where, ending)
+                      .arg(where + ranOut, ending)
                       .arg(trial.framesWithPose)
                       .arg(trial.frames)
                       .arg(decoded)

@@ -202,7 +202,8 @@ int runCommand(const QStringList& arguments) {
                               {"duration", summary.duration},
                               {"trackingRms", summary.trackingRms},
                               {"meanCost", summary.meanCost},
-                              {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep}};
+                              {"cpuMicrosecondsPerStep", summary.controllerMicrosecondsPerStep},
+                              {"runOutSeconds", result.runOutSeconds}};
         if (!result.controllerNote.isEmpty()) {
             trialJson.insert("controllerNote", result.controllerNote);
         }
@@ -231,6 +232,12 @@ int runCommand(const QStringList& arguments) {
                         .arg(summary.trackingRms, 0, 'f', 4)
                         .arg(summary.meanCost, 0, 'g', 4)
                         .arg(core::formatCpuMicroseconds(summary.controllerMicrosecondsPerStep));
+        }
+        if (result.runOutSeconds > 0.0) {
+            text += QStringLiteral(
+                        "  still moving at its end: ran out %1 s in neutral, scored "
+                        "where it rests\n")
+                        .arg(result.runOutSeconds, 0, 'f', 1);
         }
         if (!result.controllerNote.isEmpty()) {
             text += QStringLiteral("  %1: %2\n").arg(method, result.controllerNote);

@@ -451,6 +451,11 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
                              .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
                              .arg(tracking)
                        : tr("Trial %1: %2").arg(trial + 1).arg(tracking)) +
+                   (summary.runOutSeconds > 0.0
+                        //: The car still moved when the trial's time was up.
+                        ? tr("; ran out %1 s in neutral, scored where it rests")
+                              .arg(summary.runOutSeconds, 0, 'f', 1)
+                        : QString()) +
                    (summary.complete ? QString()
                     : byEmergency    ? tr(" (cut short by E-STOP)")
                                      : tr(" (stopped part-way)")));

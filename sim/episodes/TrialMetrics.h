@@ -19,6 +19,9 @@ struct TrialSummary {
     double pathRms = 0.0;
     double meanCost = 0.0;  ///< mean C_k the controller saw
     double duration = 0.0;  ///< simulated time [s]
+    /// Of it, run out in neutral after the trial's time, the vehicle still moving [s]
+    /// (EpisodeResult::runOutSeconds): it was scored where it came to rest.
+    double runOutSeconds = 0.0;
     /// The controller's CPU time per control step [us] (reports only).
     double controllerMicrosecondsPerStep = 0.0;
     /// False for a trial stopped before its end (its numbers cover only what was run).

@@ -277,6 +277,7 @@ class TestCliExperimentCommands : public QObject, private CliWorkspace {
         const QJsonObject trial = parseJson(r.out).value("trials").toArray().at(0).toObject();
         QVERIFY(trial.value("trackingRms").toDouble(-1) >= 0.0);
         QVERIFY(trial.value("cpuMicrosecondsPerStep").toDouble(-1) > 0.0);
+        QVERIFY(trial.value("runOutSeconds").toDouble(-1) >= 0.0);
         QVERIFY(QFile::exists(path(plant + "-" + method + ".csv")));
     }
 

@@ -43,9 +43,11 @@ struct SlideCar {
                 .b;
     }
 
-    rig::TrialRequest trial(const QString& method) const {
+    /// @param runOutLimit  how long a car still moving at the trial's end may run out [s]
+    rig::TrialRequest trial(const QString& method, double runOutLimit = 0.0) const {
         sim::MethodTuning settling = profile;
         settling.settleTime = 0.5;
+        settling.runOutLimit = runOutLimit;
         rig::TrialRequest request;
         request.setup =
             std::make_shared<const sim::RunSetup>(sim::makeTask(settling, demonstration), method);
@@ -151,6 +153,57 @@ class TestRigSession : public QObject {
         QVERIFY(stopped.stopped);
         QVERIFY(stopped.seconds < length);
         QVERIFY(!rig.trialRunning());
+    }
+
+    void runOut_aCarStillMovingCoastsInNeutralAndIsScoredWhereItRests() {
+        // The manoeuvre cut at 1.5 s, the car at speed on the straight when the time is up.
+        rig::RigSession rig;
+        QVERIFY(startVirtual(rig));
+        QTemporaryDir bundles;
+        rig.setBundles(bundles.path(), 0.0);
+        const SlideCar car(1.5);
+        const double length = car.demonstration->length() * car.demonstration->dt + 0.5;
+        QSignalSpy finished(&rig, &rig::RigSession::trialFinished);
+        QSignalSpy saved(&rig, &rig::RigSession::bundleSaved);
+        QString error;
+        QVERIFY2(rig.startTrial(car.trial(QStringLiteral("pd"), 10.0), &error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 30000);
+        const auto result = finished.last().at(0).value<rig::RigTrialResult>();
+        QVERIFY(!result.stopped && !result.fault);
+        QVERIFY2(result.runOutSeconds > 0.2 && result.runOutSeconds < 10.0,
+                 qPrintable(QString::number(result.runOutSeconds)));
+        QVERIFY2(std::abs(result.seconds - length - result.runOutSeconds) < 3.0 / kFps,
+                 qPrintable(QStringLiteral("%1 %2").arg(result.seconds).arg(length)));
+        QVERIFY(rig::trialSentence(result).contains(QLatin1String("in neutral")));
+        // Loop latencies are the controller's frames only.
+        QVERIFY(static_cast<double>(result.loopLatencyMs.size()) <
+                result.framesWithPose - 0.2 * kFps);
+        // Scored where it rests: the car is where the score says a while later.
+        QVERIFY(result.parked.has_value());
+        QTRY_VERIFY_WITH_TIMEOUT(saved.count() == 1, 10000);
+        const QString folder = saved.last().at(0).toString();
+        const auto bundle = rig::TrialBundle::load(folder, &error);
+        QVERIFY2(bundle.has_value(), qPrintable(error));
+        QVERIFY(!bundle->samples.empty());
+        const rig::BundleSample& last = bundle->samples.back();
+        QVERIFY(last.found);
+        const double moved = std::hypot(rig.lastPose()->x - last.x, rig.lastPose()->y - last.y);
+        QVERIFY2(moved < 0.02, qPrintable(QString::number(moved)));
+        // The run-out's commands were neutral: the zero action, not the controller's.
+        int neutral = 0;
+        int driven = 0;
+        for (const rig::BundleSample& sample : bundle->samples) {
+            if (sample.t >= length + 1.0 / kFps && !sample.action.empty()) {
+                QVERIFY2(std::abs(sample.action[0]) < 1e-12 && std::abs(sample.action[1]) < 1e-12,
+                         qPrintable(QString::number(sample.t)));
+                ++neutral;
+            } else if (sample.t < 1.0 && !sample.action.empty() &&
+                       std::abs(sample.action[0]) > 1e-3) {
+                ++driven;
+            }
+        }
+        QVERIFY(neutral >= 5);
+        QVERIFY(driven >= 5);
     }
 
     void emergencyStop_endsTheTrialAndLatchesFailsafe() {

@@ -303,6 +303,9 @@ class TestEpisodeRunner : public QObject {
         QVERIFY2(out.stepCount > 40 && out.stepCount < 40 + 400,
                  qPrintable(QString::number(out.stepCount)));
         QCOMPARE(out.runOutSeconds, (out.stepCount - 40) * 0.025);
+        // The summary carries it to what the operator reads ("ran out 1.2 s in neutral").
+        QCOMPARE(summarizeTrial(SlideCar::describe(), *setup.demo, out).runOutSeconds,
+                 out.runOutSeconds);
         QCOMPARE(static_cast<int>(out.steps.size()), out.stepCount);
         for (size_t k = 40; k < out.steps.size(); ++k) {
             QVERIFY(out.steps[k].action.isZero());
