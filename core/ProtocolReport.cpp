@@ -4,6 +4,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -48,6 +49,50 @@ QJsonObject intervalJson(const MeanInterval& m) {
             {"lower", jsonNumber(m.lower)},
             {"upper", jsonNumber(m.upper)},
             {"cells", m.count}};
+}
+
+// The spread of cells' position MAEs (non-finite ones skipped), `names` naming each.
+CellSpread spreadOf(const std::vector<double>& values, const QStringList& names) {
+    CellSpread out;
+    std::vector<double> finite;
+    int worst = -1;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (std::isfinite(values[i])) {
+            finite.push_back(values[i]);
+            if (worst < 0 || values[i] > values[static_cast<size_t>(worst)]) {
+                worst = static_cast<int>(i);
+            }
+        }
+    }
+    out.cells = static_cast<int>(finite.size());
+    if (finite.empty()) {
+        out.mean = out.median = out.worst = kNaN;
+        return out;
+    }
+    out.mean = mean(finite);
+    std::sort(finite.begin(), finite.end());
+    const size_t n = finite.size();
+    out.median = n % 2 == 1 ? finite[n / 2] : 0.5 * (finite[n / 2 - 1] + finite[n / 2]);
+    out.worst = finite.back();
+    out.worstCell = names[worst];
+    return out;
+}
+
+// "4.21 / 3.10 / 9.80 (u on day 7102)": mean / median / worst cell.
+QString spreadText(const CellSpread& s) {
+    if (s.cells == 0) {
+        return QStringLiteral("n/a");
+    }
+    return QStringLiteral("%1 / %2 / %3 (%4)")
+        .arg(fixed(s.mean), fixed(s.median), fixed(s.worst), s.worstCell);
+}
+
+QJsonObject spreadJson(const CellSpread& s) {
+    return {{"cells", s.cells},
+            {"meanCm", jsonNumber(s.mean)},
+            {"medianCm", jsonNumber(s.median)},
+            {"worstCm", jsonNumber(s.worst)},
+            {"worstCell", s.worstCell}};
 }
 
 QString escapeLatex(QString text) {
@@ -109,6 +154,9 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
         std::vector<double> position, orientation, cpu;
         std::vector<std::vector<double>> stylePosition(styles.size()),
             styleOrientation(styles.size());
+        QStringList names;
+        std::vector<std::vector<double>> dayPosition(seedSets.size());
+        std::vector<QStringList> dayNames(seedSets.size());
         for (const ProtocolCell& cell : cells[m]) {
             row.label = cell.row.label;
             row.limit = cell.row.limit;
@@ -125,6 +173,22 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
             }
             stylePosition[s].push_back(cell.row.position.meanAbsoluteError);
             styleOrientation[s].push_back(cell.row.orientation.meanAbsoluteError);
+            const QString name = QStringLiteral("%1 on day %2").arg(cell.style).arg(cell.seedSet);
+            names.append(name);
+            const auto day = std::find(seedSets.begin(), seedSets.end(), cell.seedSet);
+            if (day == seedSets.end()) {
+                throw std::invalid_argument(
+                    QStringLiteral("summarizeProtocol: cell of unknown seed set %1")
+                        .arg(cell.seedSet)
+                        .toStdString());
+            }
+            const size_t d = static_cast<size_t>(day - seedSets.begin());
+            dayPosition[d].push_back(cell.row.position.meanAbsoluteError);
+            dayNames[d].append(name);
+        }
+        row.spread = spreadOf(position, names);
+        for (size_t d = 0; d < seedSets.size(); ++d) {
+            row.days.push_back({seedSets[d], spreadOf(dayPosition[d], dayNames[d])});
         }
         row.position = meanInterval(position);
         row.orientation = meanInterval(orientation);
@@ -178,29 +242,63 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                 }
                 out += QLatin1Char('\n');
             }
+            out += QStringLiteral(
+                "\nPer day (seed set), position MAE [cm] over the day's cells: mean / median / "
+                "worst (its cell):\n\n| method | all |");
+            rule = QStringLiteral("| --- | ---: |");
+            for (std::uint64_t set : summary.seedSets) {
+                out += QStringLiteral(" %1 |").arg(set);
+                rule += QStringLiteral(" ---: |");
+            }
+            out += QLatin1Char('\n') + rule + QLatin1Char('\n');
+            for (const ProtocolRow& r : summary.rows) {
+                out += QStringLiteral("| %1 | %2 |").arg(r.shownLabel(), spreadText(r.spread));
+                for (const DaySpread& day : r.days) {
+                    out += QStringLiteral(" %1 |").arg(spreadText(day.position));
+                }
+                out += QLatin1Char('\n');
+            }
             break;
         }
         case TableFormat::Csv: {
             out += QStringLiteral(
                 "scope,method,label,cells,position_mae_cm,position_lower_cm,position_upper_cm,"
                 "orientation_mae_deg,orientation_lower_deg,orientation_upper_deg,trials,"
-                "cpu_us_per_step\n");
+                "cpu_us_per_step,position_median_cm,position_worst_cm,worst_cell\n");
             auto line = [&](const QString& scope, const ProtocolRow& r, const MeanInterval& p,
-                            const MeanInterval& o, const QString& trials, const QString& cpu) {
-                out += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12\n")
+                            const MeanInterval& o, const QString& trials, const QString& cpu,
+                            const CellSpread* spread) {
+                out += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12,%13,%14,%15\n")
                            .arg(scope, r.method, r.shownLabel())
                            .arg(p.count)
                            .arg(full(p.mean), full(p.lower), full(p.upper), full(o.mean),
-                                full(o.lower), full(o.upper), trials, cpu);
+                                full(o.lower), full(o.upper), trials, cpu)
+                           .arg(spread ? full(spread->median) : QString(),
+                                spread ? full(spread->worst) : QString(),
+                                spread ? spread->worstCell : QString());
             };
             for (const ProtocolRow& r : summary.rows) {
                 line(QStringLiteral("all"), r, r.position, r.orientation, QString::number(r.trials),
-                     full(r.cpuMicrosecondsPerStep));
+                     full(r.cpuMicrosecondsPerStep), &r.spread);
             }
             for (int s = 0; s < summary.styles.size(); ++s) {
                 for (const ProtocolRow& r : summary.rows) {
                     line(summary.styles[s], r, r.stylePosition[s], r.styleOrientation[s], QString(),
-                         QString());
+                         QString(), nullptr);
+                }
+            }
+            for (size_t d = 0; d < summary.seedSets.size(); ++d) {
+                for (const ProtocolRow& r : summary.rows) {
+                    // A day's mean without its interval: the day's cells are not independent
+                    // units of the day's hand and perturbations.
+                    MeanInterval p;
+                    p.count = r.days[d].position.cells;
+                    p.mean = r.days[d].position.mean;
+                    p.lower = p.upper = kNaN;
+                    MeanInterval o;
+                    o.mean = o.lower = o.upper = kNaN;
+                    line(QStringLiteral("day %1").arg(summary.seedSets[d]), r, p, o, QString(),
+                         QString(), &r.days[d].position);
                 }
             }
             break;
@@ -237,12 +335,38 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                 }
                 out += QStringLiteral(" \\\\\n");
             }
+            out += QStringLiteral("\\hline\n\\end{tabular}\n\n");
+            // Per day: mean / median / worst cell's position MAE [cm].
+            out += QStringLiteral("\\begin{tabular}{lr%1}\n\\hline\nMethod & all")
+                       .arg(QString(static_cast<int>(summary.seedSets.size()), QLatin1Char('r')));
+            for (std::uint64_t set : summary.seedSets) {
+                out += QStringLiteral(" & %1").arg(set);
+            }
+            out += QStringLiteral(" \\\\\n\\hline\n");
+            const auto latexSpread = [](const CellSpread& c) {
+                return c.cells == 0 ? QStringLiteral("n/a")
+                                    : QStringLiteral("%1 / %2 / %3")
+                                          .arg(fixed(c.mean), fixed(c.median), fixed(c.worst));
+            };
+            for (const ProtocolRow& r : summary.rows) {
+                out += r.shownLabel() + QStringLiteral(" & ") + latexSpread(r.spread);
+                for (const DaySpread& day : r.days) {
+                    out += QStringLiteral(" & ") + latexSpread(day.position);
+                }
+                out += QStringLiteral(" \\\\\n");
+            }
             out += QStringLiteral("\\hline\n\\end{tabular}\n\\end{table}\n");
             break;
         }
         case TableFormat::Json: {
             QJsonArray rows;
             for (const ProtocolRow& r : summary.rows) {
+                QJsonArray days;
+                for (const DaySpread& day : r.days) {
+                    QJsonObject o = spreadJson(day.position);
+                    o.insert("seedSet", static_cast<double>(day.seedSet));
+                    days.append(o);
+                }
                 QJsonArray styles;
                 for (int s = 0; s < summary.styles.size(); ++s) {
                     styles.append(
@@ -263,7 +387,9 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                                                              ? r.orientation.mean / limitOrientation
                                                              : kNaN)},
                     {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)},
-                    {"styles", styles}});
+                    {"styles", styles},
+                    {"cellSpread", spreadJson(r.spread)},
+                    {"days", days}});
             }
             QJsonArray styles, seedSets;
             for (const QString& style : summary.styles) {

@@ -29,8 +29,26 @@ struct ProtocolCell {
     Table1Row row;          ///< the method's trials there
 };
 
+/// How a set of cells spreads: the median and the worst of their position MAEs, and which cell
+/// the worst is, so that one hard cell or day
+/// shows as one.
+struct CellSpread {
+    int cells = 0;
+    double mean = 0.0;    ///< [cm]; NaN without a finite cell
+    double median = 0.0;  ///< [cm]
+    double worst = 0.0;   ///< [cm]
+    QString worstCell;    ///< "u on day 7102" (its style or variant, and seed set)
+};
+
+/// One day (seed set) of a method: its cells there.
+struct DaySpread {
+    std::uint64_t seedSet = 0;
+    CellSpread position;
+};
+
 /// A method over every cell: the cells' mean absolute errors averaged with a 95% interval over
-/// the cells, and per style the same over that style's seed sets.
+/// the cells, and per style the same over that style's seed sets; the cells' spread over all and
+/// per day.
 struct ProtocolRow {
     QString method;
     QString label;       ///< as tables show it (the id where empty)
@@ -42,6 +60,8 @@ struct ProtocolRow {
     double cpuMicrosecondsPerStep = 0.0;         ///< mean over the cells [us]
     std::vector<MeanInterval> stylePosition;     ///< per style, in ProtocolSummary::styles order
     std::vector<MeanInterval> styleOrientation;  ///< per style
+    CellSpread spread;                           ///< over every cell (position)
+    std::vector<DaySpread> days;                 ///< per seed set, in ProtocolSummary order
 };
 
 /// The evaluation of several methods on the same cells.
@@ -61,9 +81,10 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
 
 /// The summary as text: the methods' means with 95% intervals, how many times the oracle's
 /// error each is (n/a where the oracle's is below 0.005, too small for a ratio), the CPU time per
-/// step, and a per-style breakdown. Markdown and LaTeX round for reading; CSV (long format: one
-/// line per method and scope, "all" or a style) and JSON carry full precision. JSON rows keep Table
-/// I's keys (`method`, `positionCm.meanAbsoluteError`, `orientationDeg.meanAbsoluteError`).
+/// step, a per-style breakdown, and per day (seed set) the mean, median and worst cell. Markdown
+/// and LaTeX round for reading; CSV (long format: one line per method and scope, "all" or a style)
+/// and JSON carry full precision. JSON rows keep Table I's keys (`method`,
+/// `positionCm.meanAbsoluteError`, `orientationDeg.meanAbsoluteError`).
 QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const QString& caption);
 
 }  // namespace prisca::core

@@ -301,10 +301,17 @@ void runTrial(rig::RigSession& rig, const Wait& waitFor, const rig::TrialRequest
             if (const int second = static_cast<int>(sinceStart.elapsed() / 1000);
                 second > shownSecond && !last) {
                 shownSecond = second;
-                printProgress(QStringLiteral("rig: trial %1: %2 of %3 s")
-                                  .arg(which)
-                                  .arg(second)
-                                  .arg(seconds, 0, 'f', 1));
+                printProgress(second <= seconds
+                                  ? QStringLiteral("rig: trial %1: %2 of %3 s")
+                                        .arg(which)
+                                        .arg(second)
+                                        .arg(seconds, 0, 'f', 1)
+                                  // A car still moving at the end runs out in neutral.
+                                  : QStringLiteral("rig: trial %1: %2 s, past its %3 s: "
+                                                   "ending, or running out in neutral")
+                                        .arg(which)
+                                        .arg(second)
+                                        .arg(seconds, 0, 'f', 1));
             }
             return last.has_value();
         },

@@ -87,6 +87,36 @@ class TestProtocolReport : public QObject {
         QCOMPARE(s.rows[1].position.lower, 1.0);  // no spread
     }
 
+    void summarize_perDayMeanMedianAndWorstCell() {
+        // PRISCA's day 1: A 2, B 6; day 2: A 4, B 8. A hard day shows as one.
+        const ProtocolSummary s = example();
+        const ProtocolRow& prisca = s.rows[0];
+        QCOMPARE(prisca.spread.cells, 4);
+        QVERIFY(near(prisca.spread.median, 5.0));  // of 2, 4, 6, 8
+        QVERIFY(near(prisca.spread.worst, 8.0));
+        QCOMPARE(prisca.spread.worstCell, QStringLiteral("B on day 2"));
+        QCOMPARE(prisca.days.size(), size_t(2));
+        QCOMPARE(prisca.days[0].seedSet, std::uint64_t(1));
+        QVERIFY(near(prisca.days[0].position.mean, 4.0));
+        QVERIFY(near(prisca.days[0].position.median, 4.0));
+        QVERIFY(near(prisca.days[0].position.worst, 6.0));
+        QCOMPARE(prisca.days[0].position.worstCell, QStringLiteral("B on day 1"));
+        QVERIFY(near(prisca.days[1].position.mean, 6.0));
+        QVERIFY(near(prisca.days[1].position.worst, 8.0));
+        // An odd count's median is its middle cell.
+        std::vector<std::vector<ProtocolCell>> cells(1);
+        for (std::uint64_t set : {1, 2, 3}) {
+            cells[0].push_back({"A", set, row("pd", set == 2 ? 30.0 : 1.0 * set, 1.0, 1.0)});
+        }
+        const ProtocolSummary odd = summarizeProtocol({"pd"}, {"A"}, {1, 2, 3}, cells);
+        QVERIFY(near(odd.rows[0].spread.median, 3.0));  // of 1, 3, 30
+        QCOMPARE(odd.rows[0].spread.worstCell, QStringLiteral("A on day 2"));
+        QCOMPARE(odd.rows[0].days[2].position.cells, 1);
+        // A cell of a seed set the summary does not list is refused.
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 summarizeProtocol({"pd"}, {"A"}, {1, 3}, cells));
+    }
+
     void markdown_showsIntervalsTheGapToTheLimitAndEveryStyle() {
         const QString md = formatProtocol(example(), TableFormat::Markdown, "caption");
         QVERIFY(md.startsWith("caption\n"));
@@ -99,15 +129,22 @@ class TestProtocolReport : public QObject {
         QVERIFY(md.contains("| LIMIT (oracle) | 4 | 4 | 1.00 [1.00, 1.00] | 1.0x |"));
         QVERIFY(md.contains("| method | A | B |"));
         QVERIFY2(md.contains("| OURS (PRISCA) | 3.00 / 30.00 | 7.00 / 70.00 |"), qPrintable(md));
+        QVERIFY2(md.contains("| method | all | 1 | 2 |"), qPrintable(md));
+        QVERIFY2(md.contains("| OURS (PRISCA) | 5.00 / 5.00 / 8.00 (B on day 2) | 4.00 / 4.00 / "
+                             "6.00 (B on day 1) | 6.00 / 6.00 / 8.00 (B on day 2) |"),
+                 qPrintable(md));
     }
 
     void csv_hasOneLinePerMethodAndScope() {
         const QStringList lines =
             formatProtocol(example(), TableFormat::Csv, "c").trimmed().split('\n');
-        QCOMPARE(lines.size(), 1 + 2 * 3);  // header, (all, A, B) x 2 methods
+        QCOMPARE(lines.size(), 1 + 2 * 5);  // header, (all, A, B, day 1, day 2) x 2 methods
         QVERIFY(lines[0].startsWith("scope,method,label,cells,position_mae_cm"));
         QVERIFY2(lines[1].startsWith("all,prisca,OURS (PRISCA),4,5,"), qPrintable(lines[1]));
         QVERIFY2(lines[3].startsWith("A,prisca,OURS (PRISCA),2,3,"), qPrintable(lines[3]));
+        QVERIFY2(lines[1].endsWith(",5,8,B on day 2"), qPrintable(lines[1]));
+        QVERIFY2(lines[9].startsWith("day 2,prisca,OURS (PRISCA),2,6,"), qPrintable(lines[9]));
+        QVERIFY2(lines[9].endsWith(",6,8,B on day 2"), qPrintable(lines[9]));
         for (const QString& line : lines)
             QCOMPARE(line.count(','), lines[0].count(','));
     }
@@ -135,6 +172,12 @@ class TestProtocolReport : public QObject {
                      .toDouble(),
                  7.0);
         QCOMPARE(root.value("seedSets").toArray().size(), 2);
+        QCOMPARE(prisca.value("cellSpread").toObject().value("worstCm").toDouble(), 8.0);
+        const QJsonObject day2 = prisca.value("days").toArray().at(1).toObject();
+        QCOMPARE(day2.value("seedSet").toDouble(), 2.0);
+        QCOMPARE(day2.value("meanCm").toDouble(), 6.0);
+        QCOMPARE(day2.value("medianCm").toDouble(), 6.0);
+        QCOMPARE(day2.value("worstCell").toString(), QStringLiteral("B on day 2"));
     }
 
     void latex_escapesAndListsEveryStyle() {
