@@ -73,7 +73,8 @@ struct MpcParameters {
     /// The model is fitted over stretches of its data this long [s] (identification's
     /// segmentSeconds).
     double modelSegment = 1.0;
-    /// After each trial the model is refit on the demonstration and the day's newest trials.
+    /// After each trial the model is refit on the demonstration and the day's trials before
+    /// it, and kept only when it predicts that trial better.
     bool refit = true;
     int refitTrials = 4;            ///< at most this many of the newest trials, with the demo
     int identifyEvaluations = 400;  ///< identification's budget from the demonstration
@@ -103,8 +104,8 @@ enum class MpcMode { Planning, Fallback };
 /// It falls back to a feedback law (the PD family's) for the whole trial when the model fits
 /// its data poorly, and for the rest of a trial once the measured state leaves the model's
 /// predicted tube. Learns across trials by refitting the model on the demonstration and the
-/// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it fits better; a
-/// cold reset goes back to the first model.
+/// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it predicts the
+/// newest trial, which it was not fitted on, better; a cold reset goes back to the first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)

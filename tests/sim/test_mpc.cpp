@@ -295,8 +295,9 @@ class TestMpc : public QObject {
         QVERIFY(mpc->modelFit() > 0.0);
     }
 
-    // After each trial the model is refit on the demonstration and the trial; a cold reset goes
-    // back to the first model. A clone carries the refit model and is independent.
+    // After each trial the model is refit on the demonstration and the trials before it, and
+    // kept when it predicts that trial better; a cold reset goes back to the first model. A
+    // clone carries the refit model and is independent.
     void refit_afterEachTrial_coldResetForgets() {
         Setup setup;
         // A start a little off the car, so the refit has something to move.
@@ -306,9 +307,12 @@ class TestMpc : public QObject {
         auto mpc = setup.mpc();
         setup.trial(*mpc, 5, 1.0, core::ResetMode::Cold);
         QCOMPARE(mpc->refits(), 0);
+        // Refit on the demonstration, judged on trial 5; then on it and trial 5, judged on 6.
         setup.trial(*mpc, 6, 1.0, core::ResetMode::WarmStart);
-        QCOMPARE(mpc->refits(), 1);
+        setup.trial(*mpc, 7, 1.0, core::ResetMode::WarmStart);
+        QVERIFY2(mpc->refits() >= 1, qPrintable(QString::number(mpc->refits())));
         QVERIFY(mpc->model().values != off.values);
+        const int refits = mpc->refits();
         auto copy = mpc->clone();
         auto* copied = dynamic_cast<MpcController*>(copy.get());
         QVERIFY(copied);
@@ -316,7 +320,7 @@ class TestMpc : public QObject {
         mpc->reset(core::ResetMode::Cold);
         QCOMPARE(mpc->refits(), 0);
         QCOMPARE(mpc->model().values, off.values);
-        QCOMPARE(copied->refits(), 1);
+        QCOMPARE(copied->refits(), refits);
     }
 
     // Without a model it identifies one from the demonstration; a plant identification does
