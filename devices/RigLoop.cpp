@@ -152,26 +152,22 @@ RigStep RigLoop::onFrame(const CameraFrame& frame) {
             return trip(why, true);
         }
     }
-    if (runningOut_) {
-        step.action = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(channels_.controls.size()));
-        link_.setCommand(channels_.command(step.action));
-        link_.setPoseLost(false);
-        if (filter_ && step.action.size() == filter_->actionDimension()) {
-            filter_->commandedAt(step.action, static_cast<double>(frame.steadyNs) * 1e-9);
-        }
-        step.commandNs = steadyNowNs();
-        return step;
-    }
     bool offTrack = false;
-    try {
-        const core::ControlStep& control = controller_->step(step.state);
-        step.action = control.action;
-        if (!step.action.allFinite()) {
-            throw std::runtime_error("its action is not finite");
+    if (runningOut_) {
+        // Neutral: the zero action, the controller not asked, no lost-track guard.
+        step.action = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(channels_.controls.size()));
+    } else {
+        try {
+            const core::ControlStep& control = controller_->step(step.state);
+            step.action = control.action;
+            if (!step.action.allFinite()) {
+                throw std::runtime_error("its action is not finite");
+            }
+            offTrack = guard_.check(control.deviation);
+        } catch (const std::exception& e) {
+            return trip(
+                QStringLiteral("the controller failed: %1").arg(QString::fromUtf8(e.what())));
         }
-        offTrack = guard_.check(control.deviation);
-    } catch (const std::exception& e) {
-        return trip(QStringLiteral("the controller failed: %1").arg(QString::fromUtf8(e.what())));
     }
     if (offTrack) {
         return trip(QStringLiteral("the car left the demonstration (more than %1 m from it)")

@@ -65,7 +65,6 @@ class RigLoop {
     /// asked; the link is sent the zero action (throttle neutral, steering centred), and the
     /// lost-track guard no longer applies (a coasting car may leave the demonstration's end).
     void runOut() { runningOut_ = true; }
-    bool runningOut() const { return runningOut_; }
     /// A car further than this [m] from its matched reference has left the demonstration: the
     /// link goes to failsafe as on a controller fault (core::LostTrackGuard); 0: never.
     void setLostTrackDistance(double metres) {
