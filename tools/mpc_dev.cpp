@@ -76,7 +76,10 @@ int main(int argc, char** argv) {
                           qEnvironmentVariableIsSet("METHOD") ? qEnvironmentVariable("METHOD")
                                                               : QStringLiteral("mpc"),
                           settings);
-    const RunSetup lawRun(task, "pd-lsd", settings);
+    const RunSetup lawRun(
+        task,
+        qEnvironmentVariableIsSet("LAW") ? qEnvironmentVariable("LAW") : QStringLiteral("pd-lsd"),
+        settings);
     auto mpc = mpcRun.makeController();
     auto law = lawRun.makeController();
     auto* planner = dynamic_cast<MpcController*>(mpc.get());

@@ -369,102 +369,112 @@
         <translation>ILC 迴路中的 PD 增益以此比例縮放。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="34"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="35"/>
         <source>Oracle samples</source>
         <translation>理想控制器樣本數</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="35"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="36"/>
         <source>Candidate plans the oracle simulates at each planning.</source>
         <translation>理想控制器每次規劃時模擬的候選方案數目。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="49"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="50"/>
         <source>Oracle replanning</source>
         <translation>理想控制器重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="51"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="52"/>
         <source>Control steps between two plans of the oracle.</source>
         <translation>理想控制器兩次規劃之間的控制步數。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="64"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="65"/>
         <source>Replanning</source>
         <translation>重新規劃</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="65"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="66"/>
         <source>Control steps between two plans through the model (2 at 25 Hz: every 0.08 s).</source>
         <translation>兩次經模型規劃之間的控制步數（25 Hz 時為 2：每 0.08 秒）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="80"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="81"/>
         <source>Model runs per plan</source>
         <translation>每次規劃的模型模擬次數</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="82"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="83"/>
         <source>The planning&apos;s budget: runs of the model to the trial&apos;s end per plan.</source>
         <translation>規劃的預算：每次規劃把模型模擬到試驗結束的次數。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="97"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="98"/>
         <source>Predicted tube</source>
         <translation>預測管道</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="98"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="99"/>
         <source>How far the measured position may stray from the model&apos;s prediction before the fallback law finishes the trial.</source>
         <translation>量得的位置可偏離模型預測多遠，超出後由後備控制律完成該次試驗。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="111"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="112"/>
+        <source>Model good enough to plan</source>
+        <translation>模型足以規劃</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="114"/>
+        <source>How closely the model must fit its data to be planned through; a model that fits worse leaves the whole trial to the feedback law.</source>
+        <translation>模型須與其數據吻合到多近才可據以規劃；吻合得更差的模型，整次試驗交由回饋控制律駕駛。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="128"/>
         <source>Corrections before the turn</source>
         <translation>轉彎前的修正</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="113"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="130"/>
         <source>The largest change the plan makes to the demonstration&apos;s actions before its turn, as a share of each action&apos;s half range (2: no bound).</source>
         <translation>計劃在示範轉彎之前對其動作所作的最大改動，以每個動作半幅度的比例表示（2：不設限）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="127"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="144"/>
         <source>Rolling correction</source>
         <translation>滾動阻力修正</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="129"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="146"/>
         <source>While the car parks, how fast the model&apos;s rolling resistance follows the deceleration it failed to predict (0: never).</source>
         <translation>泊車期間，模型的滾動阻力跟隨其未能預測的減速度的快慢（0：從不）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="142"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="159"/>
         <source>Spin guard</source>
         <translation>打轉防護</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="144"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="161"/>
         <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
         <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="162"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="179"/>
         <source>Model fit&apos;s segments</source>
         <translation>模型擬合的分段</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="164"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="181"/>
         <source>How long a stretch of the data the model is fitted to predict from each recorded state (identification&apos;s segment).</source>
         <translation>模型由每個記錄狀態起須預測的數據片段長度（辨識的分段）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="177"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="194"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="178"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="195"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>

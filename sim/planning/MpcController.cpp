@@ -61,11 +61,13 @@ IdentificationResult identifyForMpc(const std::vector<core::Demonstration>& data
 MpcController::MpcController(core::TrackingProblem problem, MpcParameters parameters,
                              OracleParameters planner, std::unique_ptr<core::Controller> fallback,
                              PlantParameters model, double modelFit,
-                             std::vector<core::Demonstration> data)
+                             std::vector<core::Demonstration> data,
+                             std::unique_ptr<core::Controller> startLaw)
     : problem_(core::TrackingProblem::validated(std::move(problem))),
       parameters_(parameters),
       plannerParameters_(std::move(planner)),
       fallback_(std::move(fallback)),
+      startLaw_(std::move(startLaw)),
       firstModel_(model),
       firstFit_(modelFit),
       model_(std::move(model)),
@@ -134,6 +136,8 @@ MpcController::MpcController(const MpcController& other)
       parameters_(other.parameters_),
       plannerParameters_(other.plannerParameters_),
       fallback_(other.fallback_->clone()),
+      startLaw_(other.startLaw_ ? other.startLaw_->clone() : nullptr),
+      fromStart_(other.fromStart_),
       firstModel_(other.firstModel_),
       firstFit_(other.firstFit_),
       model_(other.model_),
@@ -187,6 +191,9 @@ QString MpcController::trialNote() const {
 void MpcController::setLoopLatencySteps(int steps) {
     pendingLatency_ = std::max(0, steps);
     fallback_->setLoopLatencySteps(steps);
+    if (startLaw_) {
+        startLaw_->setLoopLatencySteps(steps);
+    }
 }
 
 void MpcController::buildModel() {
@@ -269,6 +276,9 @@ void MpcController::reset(core::ResetMode mode) {
     latency_ = pendingLatency_;
     buildModel();
     fallback_->reset(mode);
+    if (startLaw_) {
+        startLaw_->reset(mode);
+    }
     observations_.clear();
     actions_.clear();
     step_ = 0;
@@ -278,12 +288,15 @@ void MpcController::reset(core::ResetMode mode) {
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
-    if (!(modelFit_ <= parameters_.poorFit) && modelFit_ >= 0.0) {
+    fromStart_ = false;
+    if (!(modelFit_ <= parameters_.planFit) && modelFit_ >= 0.0) {
         fallBack(QStringLiteral("the model fits its data to %1 cm, more than the %2 cm it may")
                      .arg(100.0 * modelFit_, 0, 'f', 1)
-                     .arg(100.0 * parameters_.poorFit, 0, 'f', 1));
+                     .arg(100.0 * parameters_.planFit, 0, 'f', 1));
+        fromStart_ = true;
     } else if (!std::isfinite(modelFit_)) {
         fallBack(QStringLiteral("the model's fit is unknown"));
+        fromStart_ = true;
     }
 }
 
@@ -377,8 +390,10 @@ void MpcController::predictInto(Plant& model, int from, int count) const {
 const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::VectorXd>& observation) {
     const int k = step_;
     observations_.emplace_back(observation);
-    // The fallback follows every step, so that its reference is current when it takes over.
-    const core::ControlStep& law = fallback_->step(observation);
+    // The fallback follows every step, so that its reference is current when it takes over;
+    // a trial not planned through at all is the start law's from its first step.
+    const core::ControlStep& law =
+        fromStart_ && startLaw_ ? startLaw_->step(observation) : fallback_->step(observation);
     const core::PlanarPoseIndices pose = *problem_.deviation.pose;
     const int lag = tubeSteps();
     if (mode_ == MpcMode::Planning && k >= lag) {

@@ -67,9 +67,15 @@ struct MpcParameters {
     /// the car or left it metres short (docs/research-log.md, issue 33's sixth step).
     double straightCorrection = 0.2;
     double turnShare = 0.3;
-    /// The model's position RMS over its data's segments [m] above which it is not planned
-    /// through at all (the fallback from the start).
+    /// The model's position RMS over its data's segments [m] above which identification
+    /// searches again (`retryEvaluations`).
     double poorFit = 0.10;
+    /// The model's position RMS over its data's segments [m] above which it is not planned
+    /// through at all: the start law drives the whole trial. On the development cells with the
+    /// reality gap the models that fitted worse than about 3.5 cm planned the car into spins
+    /// 1.7-5.4 m from the lot, where a feedback law from the start parked within 20 cm
+    /// (docs/research-log.md, issue 33's twelfth step).
+    double planFit = 0.03;
     /// The model is fitted over stretches of its data this long [s] (identification's
     /// segmentSeconds).
     double modelSegment = 1.0;
@@ -101,23 +107,27 @@ enum class MpcMode { Planning, Fallback };
 /// corrections to the demonstration's actions that bring the model's final pose onto the
 /// demonstration's, within a budget of model runs. It knows only what the rig knows: the
 /// measured (filtered) state and its own commands; nothing of the trial's draws.
-/// It falls back to a feedback law (the PD family's) for the whole trial when the model fits
-/// its data poorly, and for the rest of a trial once the measured state leaves the model's
-/// predicted tube. Learns across trials by refitting the model on the demonstration and the
+/// A trial the model is not planned through (it fits its data worse than `planFit`, or there
+/// is none) is driven by a start law from its start; a planned trial is handed to a fallback
+/// law (the PD family's) for its rest once the measured state leaves the model's predicted
+/// tube or spins. Learns across trials by refitting the model on the demonstration and the
 /// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it predicts the
 /// newest trial, which it was not fitted on, better; a cold reset goes back to the first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)
     /// @param planner   the oracle's planner settings (final-pose objective, trial length)
-    /// @param fallback  the feedback law that takes over
+    /// @param fallback  the feedback law that takes over a planned trial
     /// @param model     the model planned through (its plant's parameters)
     /// @param modelFit  the model's position RMS over its data [m] (negative: unknown)
     /// @param data      what the model was identified from (the refits add trials to it;
     ///                  empty: never refit)
+    /// @param startLaw  the feedback law that drives a trial not planned through from its start
+    ///                  (null: the fallback)
     MpcController(core::TrackingProblem problem, MpcParameters parameters, OracleParameters planner,
                   std::unique_ptr<core::Controller> fallback, PlantParameters model,
-                  double modelFit, std::vector<core::Demonstration> data);
+                  double modelFit, std::vector<core::Demonstration> data,
+                  std::unique_ptr<core::Controller> startLaw = nullptr);
     MpcController(const MpcController& other);
     MpcController& operator=(const MpcController&) = delete;
 
@@ -167,6 +177,8 @@ class MpcController : public core::Controller {
     MpcParameters parameters_;
     OracleParameters plannerParameters_;
     std::unique_ptr<core::Controller> fallback_;
+    std::unique_ptr<core::Controller> startLaw_;  // may be null: the fallback drives then
+    bool fromStart_ = false;                      // this trial is not planned through at all
     PlantParameters firstModel_;
     double firstFit_;
     PlantParameters model_;

@@ -98,7 +98,7 @@ class TestMpc : public QObject {
     // the predicted tube and the feedback law finishes the trial; the right model does not.
     void wrongModel_theFallbackTakesOver() {
         Setup setup;
-        setup.profile.mpc.poorFit = 100.0;  // only the tube may call the fallback here
+        setup.profile.mpc.planFit = 100.0;  // only the tube may call the fallback here
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
             withValues(defaultPlantParameters("slidecar"), {{"staticFriction", 0.3},
                                                             {"kineticFriction", 0.2},
@@ -150,6 +150,7 @@ class TestMpc : public QObject {
         const double rolling = car.value(QStringLiteral("rollingResistance"));
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
             withValues(car, {{"rollingResistance", rolling / 3.0}}));
+        setup.profile.mpc.planFit = 1.0;  // planned through however it fits
         setup.profile.mpc.rollingBiasGain = 0.0;
         auto off = setup.mpc();
         const double uncorrected = setup.trial(*off, 11, 0.0);
@@ -224,7 +225,7 @@ class TestMpc : public QObject {
     // corrects hard, and with the tube and the spin guard out of the way.
     void straightCorrection_boundsThePlanBeforeTheTurn() {
         Setup setup;
-        setup.profile.mpc.poorFit = 100.0;
+        setup.profile.mpc.planFit = 100.0;
         setup.profile.mpc.tubePosition = 100.0;
         setup.profile.mpc.tubeHeading = 100.0;
         MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.spin-slip=0"));
@@ -279,10 +280,12 @@ class TestMpc : public QObject {
         QVERIFY2(free.before > 0.1, qPrintable(QString::number(free.before)));
     }
 
-    // A model that fits its data worse than the bound is not planned through at all.
-    void poorFit_fallsBackFromTheStart() {
+    // A model that fits its data worse than the bound is not planned through at all: ILC's
+    // loop with its learning off drives the whole trial (not PD+LSD, the planned trials'
+    // fallback).
+    void poorFit_theStartLawDrivesFromTheStart() {
         Setup setup;
-        setup.profile.mpc.poorFit = 1e-6;
+        setup.profile.mpc.planFit = 1e-6;
         setup.profile.mpcModel =
             std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
         auto mpc = setup.mpc();
@@ -293,6 +296,14 @@ class TestMpc : public QObject {
         QCOMPARE(mpc->trialNote(),
                  QStringLiteral("the feedback law drove: %1").arg(mpc->fallbackReason()));
         QVERIFY(mpc->modelFit() > 0.0);
+        MethodTuning gentle = setup.profile;
+        gentle.ilcLearningScale = 0.0;
+        auto ilc = MethodCatalog::create("ilc", gentle, setup.demonstration, setup.b());
+        auto lsd = MethodCatalog::create("pd-lsd", setup.profile, setup.demonstration, setup.b());
+        const double byMpc = setup.trial(*mpc, 3, 1.0);
+        QCOMPARE(byMpc, setup.trial(*ilc, 3, 1.0));
+        QVERIFY(byMpc != setup.trial(*lsd, 3, 1.0));
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
     }
 
     // After each trial the model is refit on the demonstration and the trials before it, and
@@ -304,6 +315,7 @@ class TestMpc : public QObject {
         const PlantParameters off = withValues(defaultPlantParameters("slidecar"),
                                                {{"maxDriveForce", 8.2}, {"drivelineDrag", 0.6}});
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(off);
+        setup.profile.mpc.planFit = 1.0;  // planned through however it fits: trials are data
         auto mpc = setup.mpc();
         setup.trial(*mpc, 5, 1.0, core::ResetMode::Cold);
         QCOMPARE(mpc->refits(), 0);
