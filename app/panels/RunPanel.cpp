@@ -444,21 +444,24 @@ void RunPanel::addTrialRow(int trial, const sim::TrialSummary& summary) {
                    : QStringLiteral("—"));
     cell(3, QString::number(summary.trackingRms, 'f', 3));
     const QString tracking = tr("tracking RMS %1 m").arg(summary.trackingRms, 0, 'f', 3);
-    logMessage(this, tr("Run"), MessageLevel::Info,
-               (planar ? tr("Trial %1: parked %2 cm and %3 deg off; %4")
-                             .arg(trial + 1)
-                             .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
-                             .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
-                             .arg(tracking)
-                       : tr("Trial %1: %2").arg(trial + 1).arg(tracking)) +
-                   (summary.runOutSeconds > 0.0
-                        //: The car still moved when the trial's time was up.
-                        ? tr("; ran out %1 s in neutral, scored where it rests")
-                              .arg(summary.runOutSeconds, 0, 'f', 1)
-                        : QString()) +
-                   (summary.complete ? QString()
-                    : byEmergency    ? tr(" (cut short by E-STOP)")
-                                     : tr(" (stopped part-way)")));
+    logMessage(
+        this, tr("Run"), MessageLevel::Info,
+        (planar ? tr("Trial %1: parked %2 cm and %3 deg off; %4")
+                      .arg(trial + 1)
+                      .arg(summary.finalPositionError * 100.0, 0, 'f', 1)
+                      .arg(summary.finalHeadingError * 180.0 / M_PI, 0, 'f', 1)
+                      .arg(tracking)
+                : tr("Trial %1: %2").arg(trial + 1).arg(tracking)) +
+            (summary.runOutSeconds > 0.0
+                 //: The car still moved when the trial's time was up.
+                 ? tr("; ran out %1 s in neutral, scored where it rests")
+                       .arg(summary.runOutSeconds, 0, 'f', 1)
+                 : QString()) +
+            (summary.controllerNote.isEmpty() ? QString()
+                                              : QStringLiteral("; ") + summary.controllerNote) +
+            (summary.complete ? QString()
+             : byEmergency    ? tr(" (cut short by E-STOP)")
+                              : tr(" (stopped part-way)")));
     if (row == 0 && summary.complete) {
         firstTrialRms_ = summary.trackingRms;
     } else if (diverged(summary, firstTrialRms_)) {

@@ -62,6 +62,7 @@ TrialSummary summarizeTrial(const PlantInfo& info, const core::Demonstration& de
     summary.meanCost = result.meanCost;
     summary.duration = result.duration;
     summary.runOutSeconds = result.runOutSeconds;
+    summary.controllerNote = result.controllerNote;
     summary.controllerMicrosecondsPerStep =
         result.stepCount > 0 ? 1e6 * result.controllerSeconds / result.stepCount : 0.0;
     const Eigen::VectorXd lot = demonstration.states.row(demonstration.length() - 1).transpose();

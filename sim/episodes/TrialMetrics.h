@@ -26,6 +26,9 @@ struct TrialSummary {
     double controllerMicrosecondsPerStep = 0.0;
     /// False for a trial stopped before its end (its numbers cover only what was run).
     bool complete = true;
+    /// The controller's word on the trial (Controller::trialNote): mpc's "planned through
+    /// the model" or why a feedback law drove; empty for most controllers.
+    QString controllerNote;
 };
 
 /// The error that "tracking error" means for a plant at step k, against the demonstration

@@ -304,6 +304,13 @@ class TestMpc : public QObject {
         QCOMPARE(byMpc, setup.trial(*ilc, 3, 1.0));
         QVERIFY(byMpc != setup.trial(*lsd, 3, 1.0));
         QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        // The trial's summary carries why (the window's Messages line says it).
+        auto plant = PlantCatalog::create("slidecar");
+        EpisodeSettings settings = setup.profile.episode(*setup.demonstration, 1.0, 1.0);
+        settings.seed = 3;
+        const EpisodeResult result = runEpisode(*plant, *mpc, settings);
+        QCOMPARE(summarizeTrial(setup.profile.info, *setup.demonstration, result).controllerNote,
+                 mpc->trialNote());
     }
 
     // After each trial the model is refit on the demonstration and the trials before it, and
