@@ -74,8 +74,8 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
       modelFit_(modelFit),
       data_(data),
       firstData_(std::move(data)) {
-    if (!fallback_) {
-        throw std::invalid_argument("MpcController: a fallback law is needed");
+    if (!fallback_ || !startLaw_) {
+        throw std::invalid_argument("MpcController: a fallback law and a start law are needed");
     }
     if (!problem_.deviation.pose) {
         throw std::invalid_argument(
@@ -136,8 +136,7 @@ MpcController::MpcController(const MpcController& other)
       parameters_(other.parameters_),
       plannerParameters_(other.plannerParameters_),
       fallback_(other.fallback_->clone()),
-      startLaw_(other.startLaw_ ? other.startLaw_->clone() : nullptr),
-      fromStart_(other.fromStart_),
+      startLaw_(other.startLaw_->clone()),
       firstModel_(other.firstModel_),
       firstFit_(other.firstFit_),
       model_(other.model_),
@@ -191,9 +190,7 @@ QString MpcController::trialNote() const {
 void MpcController::setLoopLatencySteps(int steps) {
     pendingLatency_ = std::max(0, steps);
     fallback_->setLoopLatencySteps(steps);
-    if (startLaw_) {
-        startLaw_->setLoopLatencySteps(steps);
-    }
+    startLaw_->setLoopLatencySteps(steps);
 }
 
 void MpcController::buildModel() {
@@ -276,9 +273,7 @@ void MpcController::reset(core::ResetMode mode) {
     latency_ = pendingLatency_;
     buildModel();
     fallback_->reset(mode);
-    if (startLaw_) {
-        startLaw_->reset(mode);
-    }
+    startLaw_->reset(mode);
     observations_.clear();
     actions_.clear();
     step_ = 0;
@@ -288,15 +283,12 @@ void MpcController::reset(core::ResetMode mode) {
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
-    fromStart_ = false;
     if (!(modelFit_ <= parameters_.planFit) && modelFit_ >= 0.0) {
         fallBack(QStringLiteral("the model fits its data to %1 cm, more than the %2 cm it may")
                      .arg(100.0 * modelFit_, 0, 'f', 1)
                      .arg(100.0 * parameters_.planFit, 0, 'f', 1));
-        fromStart_ = true;
     } else if (!std::isfinite(modelFit_)) {
         fallBack(QStringLiteral("the model's fit is unknown"));
-        fromStart_ = true;
     }
 }
 
@@ -391,9 +383,10 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     const int k = step_;
     observations_.emplace_back(observation);
     // The fallback follows every step, so that its reference is current when it takes over;
-    // a trial not planned through at all is the start law's from its first step.
+    // a trial not planned through at all (handed over at reset, step 0) is the start law's.
+    const bool fromStart = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
     const core::ControlStep& law =
-        fromStart_ && startLaw_ ? startLaw_->step(observation) : fallback_->step(observation);
+        fromStart ? startLaw_->step(observation) : fallback_->step(observation);
     const core::PlanarPoseIndices pose = *problem_.deviation.pose;
     const int lag = tubeSteps();
     if (mode_ == MpcMode::Planning && k >= lag) {

@@ -123,11 +123,10 @@ class MpcController : public core::Controller {
     /// @param data      what the model was identified from (the refits add trials to it;
     ///                  empty: never refit)
     /// @param startLaw  the feedback law that drives a trial not planned through from its start
-    ///                  (null: the fallback)
     MpcController(core::TrackingProblem problem, MpcParameters parameters, OracleParameters planner,
                   std::unique_ptr<core::Controller> fallback, PlantParameters model,
                   double modelFit, std::vector<core::Demonstration> data,
-                  std::unique_ptr<core::Controller> startLaw = nullptr);
+                  std::unique_ptr<core::Controller> startLaw);
     MpcController(const MpcController& other);
     MpcController& operator=(const MpcController&) = delete;
 
@@ -177,8 +176,7 @@ class MpcController : public core::Controller {
     MpcParameters parameters_;
     OracleParameters plannerParameters_;
     std::unique_ptr<core::Controller> fallback_;
-    std::unique_ptr<core::Controller> startLaw_;  // may be null: the fallback drives then
-    bool fromStart_ = false;                      // this trial is not planned through at all
+    std::unique_ptr<core::Controller> startLaw_;
     PlantParameters firstModel_;
     double firstFit_;
     PlantParameters model_;
