@@ -32,6 +32,7 @@ run: build
 test: build
 	cd $(BUILD_DIR) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j $(JOBS) -LE benchmark
 
+# Both are unity builds (a target's sources compiled eight at a time: docs/testing.md).
 # AddressSanitizer + UndefinedBehaviorSanitizer on the whole suite (less the minutes-long
 # tests labelled slow, whose code the quick ones run too); ThreadSanitizer on the tests
 # whose code runs on several threads (link, camera, rig loop and session, virtual rig, GUI runs,

@@ -14,7 +14,7 @@ namespace prisca::rig {
 namespace {
 
 // The report's sentences, in the window's language where a translator is installed.
-class Text {
+class DoctorText {
     Q_DECLARE_TR_FUNCTIONS(prisca::rig::RigDoctor)
   public:
     static QString bytes(std::int64_t count) {
@@ -24,29 +24,29 @@ class Text {
     }
 };
 
-DoctorItem item(const char* key, const QString& label, bool ok, const QString& detail,
-                bool required) {
+DoctorItem doctorItem(const char* key, const QString& label, bool ok, const QString& detail,
+                      bool required) {
     return {QString::fromLatin1(key), label, ok, required, detail};
 }
 
 // What to do about a node this user cannot open.
 QString accessAdvice(const devices::NodeAccess& access) {
     if (!access.exists) {
-        return Text::tr("not there (%1)").arg(access.error);
+        return DoctorText::tr("not there (%1)").arg(access.error);
     }
     if (access.canOpen) {
         return QString();
     }
     if (access.group.isEmpty()) {
-        return Text::tr("cannot be opened (%1)").arg(access.error);
+        return DoctorText::tr("cannot be opened (%1)").arg(access.error);
     }
     if (access.inGroupListed && !access.inGroupNow) {
-        return Text::tr(
+        return DoctorText::tr(
                    "cannot be opened: you were added to the group %1 but have not logged in "
                    "since; log out and in again")
             .arg(access.group);
     }
-    return Text::tr(
+    return DoctorText::tr(
                "cannot be opened: it belongs to the group %1, which you are not in; run "
                "sudo usermod -aG %1 $USER and log in again")
         .arg(access.group);
@@ -81,32 +81,32 @@ void serialItems(const DoctorRequest& request, const HostFacts& facts, DoctorRep
         anyAdapter = anyAdapter || candidate;
         anyOpens = anyOpens || (candidate && port.access.canOpen);
         askedOpen = askedOpen && (!asked || port.access.canOpen);
-        report.items.push_back(
-            item("serial-port", Text::tr("Serial port %1").arg(port.path), port.access.canOpen,
-                 port.access.canOpen ? Text::tr("can be opened%1").arg(portName(port))
-                                     : accessAdvice(port.access) + portName(port),
-                 asked));
+        report.items.push_back(doctorItem(
+            "serial-port", DoctorText::tr("Serial port %1").arg(port.path), port.access.canOpen,
+            port.access.canOpen ? DoctorText::tr("can be opened%1").arg(portName(port))
+                                : accessAdvice(port.access) + portName(port),
+            asked));
     }
     const bool ok = anyOpens && askedOpen;
-    report.items.push_back(
-        item("serial", Text::tr("Transmitter link"), ok,
-             ok            ? Text::tr("a serial port this user can open")
-             : !anyAdapter ? Text::tr("no USB serial adapter found: plug in the transmitter's "
-                                      "USB-serial adapter or the "
-                                      "bridge board (the kernel's log, dmesg, says what it saw)")
-                           : Text::tr("no serial port this user can open: see the ports above"),
-             true));
+    report.items.push_back(doctorItem(
+        "serial", DoctorText::tr("Transmitter link"), ok,
+        ok            ? DoctorText::tr("a serial port this user can open")
+        : !anyAdapter ? DoctorText::tr("no USB serial adapter found: plug in the transmitter's "
+                                       "USB-serial adapter or the "
+                                       "bridge board (the kernel's log, dmesg, says what it saw)")
+                      : DoctorText::tr("no serial port this user can open: see the ports above"),
+        true));
 }
 
 void udevItem(const HostFacts& facts, DoctorReport& report) {
-    report.items.push_back(
-        item("udev", Text::tr("Serial adapter rule"), !facts.udevRules.isEmpty(),
-             !facts.udevRules.isEmpty()
-                 ? Text::tr("installed: %1").arg(facts.udevRules.join(QStringLiteral(", ")))
-                 : Text::tr("not installed: the package installs it; from a build, sudo cp "
-                            "packaging/70-prisca-lab.rules /etc/udev/rules.d/ (or join the group "
-                            "dialout)"),
-             false));
+    report.items.push_back(doctorItem(
+        "udev", DoctorText::tr("Serial adapter rule"), !facts.udevRules.isEmpty(),
+        !facts.udevRules.isEmpty()
+            ? DoctorText::tr("installed: %1").arg(facts.udevRules.join(QStringLiteral(", ")))
+            : DoctorText::tr("not installed: the package installs it; from a build, sudo cp "
+                             "packaging/70-prisca-lab.rules /etc/udev/rules.d/ (or join the group "
+                             "dialout)"),
+        false));
 }
 
 void cameraItems(const DoctorRequest& request, const HostFacts& facts, DoctorReport& report) {
@@ -124,25 +124,26 @@ void cameraItems(const DoctorRequest& request, const HostFacts& facts, DoctorRep
         if (!camera.access.canOpen) {
             detail = accessAdvice(camera.access);
         } else if (!camera.error.isEmpty()) {
-            detail = Text::tr("cannot be queried: %1").arg(camera.error);
+            detail = DoctorText::tr("cannot be queried: %1").arg(camera.error);
         } else if (!camera.capture) {
-            detail = Text::tr("%1: no video capture").arg(camera.card);
+            detail = DoctorText::tr("%1: no video capture").arg(camera.card);
         } else {
-            detail = Text::tr("%1: %2").arg(
-                camera.card, camera.modes.isEmpty() ? Text::tr("no modes listed")
+            detail = DoctorText::tr("%1: %2").arg(
+                camera.card, camera.modes.isEmpty() ? DoctorText::tr("no modes listed")
                                                     : camera.modes.join(QStringLiteral(", ")));
         }
-        report.items.push_back(
-            item("camera-device", Text::tr("Camera %1").arg(camera.path), ok, detail, asked));
+        report.items.push_back(doctorItem(
+            "camera-device", DoctorText::tr("Camera %1").arg(camera.path), ok, detail, asked));
     }
     const bool ok = anyCaptures && askedOpen;
-    report.items.push_back(item(
-        "camera", Text::tr("Camera"), ok,
-        ok ? Text::tr("a video capture device this user can open")
+    report.items.push_back(doctorItem(
+        "camera", DoctorText::tr("Camera"), ok,
+        ok ? DoctorText::tr("a video capture device this user can open")
         : facts.cameras.empty()
-            ? Text::tr("no camera found (/dev/video*): plug in the ceiling camera; the virtual "
-                       "rig needs none")
-            : Text::tr("no camera this user can open: see the devices above"),
+            ? DoctorText::tr(
+                  "no camera found (/dev/video*): plug in the ceiling camera; the virtual "
+                  "rig needs none")
+            : DoctorText::tr("no camera this user can open: see the devices above"),
         true));
 }
 
@@ -152,11 +153,11 @@ void fileItem(const char* key, const QString& label, const QString& path,
         return;  // not asked: the session's own are the pre-trial check's
     }
     const bool ok = problem && problem->isEmpty();
-    report.items.push_back(item(key, label, ok,
-                                ok        ? Text::tr("%1 reads and is valid").arg(path)
-                                : problem ? *problem
-                                          : Text::tr("%1 was not read").arg(path),
-                                true));
+    report.items.push_back(doctorItem(key, label, ok,
+                                      ok        ? DoctorText::tr("%1 reads and is valid").arg(path)
+                                      : problem ? *problem
+                                                : DoctorText::tr("%1 was not read").arg(path),
+                                      true));
 }
 
 }  // namespace
@@ -211,45 +212,47 @@ DoctorReport diagnose(const DoctorRequest& request, const HostFacts& facts) {
     serialItems(request, facts, report);
     udevItem(facts, report);
     cameraItems(request, facts, report);
-    fileItem("calibration", Text::tr("Floor calibration"), request.calibrationFile,
+    fileItem("calibration", DoctorText::tr("Floor calibration"), request.calibrationFile,
              facts.calibrationProblem, report);
-    fileItem("lens", Text::tr("Lens"), request.lensFile, facts.lensProblem, report);
-    report.items.push_back(
-        item("display", Text::tr("Display"), !facts.display.isEmpty(),
-             !facts.display.isEmpty()
-                 ? facts.display
-                 : Text::tr("none (DISPLAY and WAYLAND_DISPLAY unset): the window needs one; "
-                            "prisca-cli does not"),
-             false));
-    report.items.push_back(item(
-        "opengl", Text::tr("OpenGL"), facts.openGl.libraryFound,
+    fileItem("lens", DoctorText::tr("Lens"), request.lensFile, facts.lensProblem, report);
+    report.items.push_back(doctorItem(
+        "display", DoctorText::tr("Display"), !facts.display.isEmpty(),
+        !facts.display.isEmpty()
+            ? facts.display
+            : DoctorText::tr("none (DISPLAY and WAYLAND_DISPLAY unset): the window needs one; "
+                             "prisca-cli does not"),
+        false));
+    report.items.push_back(doctorItem(
+        "opengl", DoctorText::tr("OpenGL"), facts.openGl.libraryFound,
         facts.openGl.libraryFound
-            ? (facts.openGl.renderNode ? Text::tr("%1, a GPU render node").arg(facts.openGl.library)
-                                       : Text::tr("%1, software rendering (no GPU render node)")
-                                             .arg(facts.openGl.library))
-            : Text::tr("no OpenGL library: install libgl1 (the window's charts need it)"),
+            ? (facts.openGl.renderNode
+                   ? DoctorText::tr("%1, a GPU render node").arg(facts.openGl.library)
+                   : DoctorText::tr("%1, software rendering (no GPU render node)")
+                         .arg(facts.openGl.library))
+            : DoctorText::tr("no OpenGL library: install libgl1 (the window's charts need it)"),
         false));
     const bool roomy = facts.freeBytes && *facts.freeBytes >= request.minimumFreeBytes;
     QString space;
     if (!facts.freeBytes) {
-        space = Text::tr("cannot read the free space under %1").arg(request.folders.bundles);
+        space = DoctorText::tr("cannot read the free space under %1").arg(request.folders.bundles);
     } else if (roomy) {
-        space = Text::tr("%1 free under %2")
-                    .arg(Text::bytes(*facts.freeBytes), request.folders.bundles);
+        space = DoctorText::tr("%1 free under %2")
+                    .arg(DoctorText::bytes(*facts.freeBytes), request.folders.bundles);
     } else {
-        space = Text::tr(
+        space = DoctorText::tr(
                     "only %1 free under %2: a session's bundles need %3; free some space "
                     "or choose another folder")
-                    .arg(Text::bytes(*facts.freeBytes), request.folders.bundles,
-                         Text::bytes(request.minimumFreeBytes));
+                    .arg(DoctorText::bytes(*facts.freeBytes), request.folders.bundles,
+                         DoctorText::bytes(request.minimumFreeBytes));
     }
     report.items.push_back(
-        item("disk", Text::tr("Free space for trial bundles"), roomy, space, true));
-    report.items.push_back(item("folders", Text::tr("Folders"), true,
-                                Text::tr("settings %1; recordings %2; trial bundles %3; cache %4")
-                                    .arg(request.folders.settingsFile, request.folders.recordings,
-                                         request.folders.bundles, request.folders.cache),
-                                false));
+        doctorItem("disk", DoctorText::tr("Free space for trial bundles"), roomy, space, true));
+    report.items.push_back(
+        doctorItem("folders", DoctorText::tr("Folders"), true,
+                   DoctorText::tr("settings %1; recordings %2; trial bundles %3; cache %4")
+                       .arg(request.folders.settingsFile, request.folders.recordings,
+                            request.folders.bundles, request.folders.cache),
+                   false));
     return report;
 }
 

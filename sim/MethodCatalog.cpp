@@ -11,7 +11,7 @@ namespace prisca::sim {
 
 namespace {
 
-std::vector<MethodSpec> makeCatalog() {
+std::vector<MethodSpec> makeMethodCatalog() {
     using namespace methods;
     // The order is Table I's and every list's.
     std::vector<MethodSpec> all{priscaMethod(), priscaPaperMethod()};
@@ -28,7 +28,7 @@ std::vector<MethodSpec> makeCatalog() {
 }  // namespace
 
 const std::vector<MethodSpec>& MethodCatalog::all() {
-    static const std::vector<MethodSpec> catalog = makeCatalog();
+    static const std::vector<MethodSpec> catalog = makeMethodCatalog();
     return catalog;
 }
 

@@ -22,7 +22,7 @@ std::unique_ptr<Plant> make(const SimulationTiming& timing) {
     return std::make_unique<P>(Parameters{}, timing);
 }
 
-std::vector<PlantEntry> makeCatalog() {
+std::vector<PlantEntry> makePlantCatalog() {
     std::vector<PlantEntry> all;
     PlantEntry e;
     e.name = QStringLiteral("slidecar");
@@ -75,7 +75,7 @@ std::vector<PlantEntry> makeCatalog() {
 }  // namespace
 
 const std::vector<PlantEntry>& PlantCatalog::all() {
-    static const std::vector<PlantEntry> catalog = makeCatalog();
+    static const std::vector<PlantEntry> catalog = makePlantCatalog();
     return catalog;
 }
 

@@ -35,7 +35,7 @@
 namespace prisca::app {
 
 namespace {
-constexpr int kTickMs = 25;  // keyboard ramp and countdown resolution [ms]
+constexpr int kRampTickMs = 25;  // keyboard ramp and countdown resolution [ms]
 }  // namespace
 
 RecordPanel::RecordPanel(LabSession& session, EmergencyStop& emergency, QWidget* parent)
@@ -94,7 +94,7 @@ RecordPanel::RecordPanel(LabSession& session, EmergencyStop& emergency, QWidget*
         status_->setText(message);
         warningBox(this, tr("Record"), message);
     });
-    timer_->setInterval(kTickMs);
+    timer_->setInterval(kRampTickMs);
     connect(timer_, &QTimer::timeout, this, &RecordPanel::tick);
     connect(record_, &QPushButton::clicked, this, &RecordPanel::startCountdown);
     connect(&emergency_, &EmergencyStop::engaged, this, &RecordPanel::emergencyStop);
@@ -137,7 +137,7 @@ void RecordPanel::startCountdown() {
     }
     // Driving keys reach the input wherever the focus is, for as long as the recording lasts.
     driving_->start(session_.profile().info.actionDimension());
-    countdownLeft_ = countdown_->value() * 1000 / kTickMs;
+    countdownLeft_ = countdown_->value() * 1000 / kRampTickMs;
     timer_->start();
     if (countdownLeft_ == 0) {
         beginRecording();
@@ -166,7 +166,7 @@ void RecordPanel::beginRecording() {
 void RecordPanel::tick() {
     if (countdownLeft_ > 0) {
         showStatus(status_, tr("Record"),
-                   tr("Recording starts in %1 s").arg((countdownLeft_ * kTickMs + 999) / 1000));
+                   tr("Recording starts in %1 s").arg((countdownLeft_ * kRampTickMs + 999) / 1000));
         if (--countdownLeft_ == 0) {
             beginRecording();
         }
@@ -177,7 +177,7 @@ void RecordPanel::tick() {
         return;
     }
     const sim::PlantInfo& info = session_.profile().info;
-    Eigen::VectorXd input = driving_->advance(kTickMs / 1000.0);
+    Eigen::VectorXd input = driving_->advance(kRampTickMs / 1000.0);
     if (driving_->gamepadAvailable() != padShown_) {
         retranslateUi();  // plugged in or pulled out mid-recording
     }

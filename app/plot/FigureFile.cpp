@@ -13,14 +13,8 @@ namespace prisca::app::plot {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
 // An SVG keeps four points per pixel column of a long line, so a reader may zoom in four times.
 constexpr int kSvgColumnsPerPixel = 4;
-
-bool validSize(QSize size) {
-    return size.width() > 0 && size.height() > 0 && size.width() <= kMaxImageSide &&
-           size.height() <= kMaxImageSide;
-}
 
 bool fail(QString* error, const QString& message) {
     if (error) {
@@ -51,7 +45,7 @@ bool saveFigure(const Figure& figure, const QString& path, QString* error) {
             error,
             QStringLiteral("%1: unknown plot format \"%2\" (use .png or .svg)").arg(path, suffix));
     }
-    if (!validSize(figure.size)) {
+    if (!drawableFigureSize(figure.size)) {
         return fail(error, QStringLiteral("%1: bad figure size %2 x %3")
                                .arg(path)
                                .arg(figure.size.width())

@@ -106,9 +106,13 @@ FigureScene::FigureScene(const Figure& figure, int columnsPerPixel)
 
 FigureScene::~FigureScene() = default;
 
+bool drawableFigureSize(QSize size) {
+    return size.width() > 0 && size.height() > 0 && size.width() <= kMaxImageSide &&
+           size.height() <= kMaxImageSide;
+}
+
 bool FigureScene::isValid() const {
-    return size_.width() > 0 && size_.height() > 0 && size_.width() <= kMaxImageSide &&
-           size_.height() <= kMaxImageSide &&
+    return drawableFigureSize(size_) &&
            qobject_cast<QApplication*>(QCoreApplication::instance()) != nullptr;
 }
 

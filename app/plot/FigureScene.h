@@ -4,6 +4,7 @@
 
 #include <QPointF>
 #include <QRectF>
+#include <QSize>
 
 #include <memory>
 #include <vector>
@@ -19,6 +20,9 @@ namespace prisca::app::plot {
 /// render. Lines, bands and shapes become series cut to the visible range (so an SVG needs no
 /// clip), texts and heatmap cells items placed where the chart maps their data.
 /// Needs a QApplication; create, use and destroy on its thread.
+/// Whether a figure of this size can be drawn: not empty, and no side over 16384 px.
+bool drawableFigureSize(QSize size);
+
 class FigureScene {
   public:
     /// How finely long lines are kept: min/max decimated to this many points per pixel column

@@ -5,13 +5,13 @@
 namespace prisca::app {
 
 namespace {
-constexpr unsigned long kShutdownWaitMs = 5000;
+constexpr unsigned long kExperimentShutdownMs = 5000;
 }
 
 ExperimentThread::ExperimentThread(QObject* parent)
     : QObject(parent),
       worker_(new ExperimentWorker),
-      host_(worker_, QStringLiteral("prisca-experiments"), kShutdownWaitMs) {
+      host_(worker_, QStringLiteral("prisca-experiments"), kExperimentShutdownMs) {
     connect(worker_, &ExperimentWorker::progress, this, &ExperimentThread::progress);
     connect(worker_, &ExperimentWorker::table1Finished, this, &ExperimentThread::table1Finished);
     connect(worker_, &ExperimentWorker::curvesFinished, this, &ExperimentThread::curvesFinished);

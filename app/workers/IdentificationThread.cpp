@@ -5,13 +5,13 @@
 namespace prisca::app {
 
 namespace {
-constexpr unsigned long kShutdownWaitMs = 5000;
+constexpr unsigned long kIdentificationShutdownMs = 5000;
 }
 
 IdentificationThread::IdentificationThread(QObject* parent)
     : QObject(parent),
       worker_(new IdentificationWorker),
-      host_(worker_, QStringLiteral("prisca-identify"), kShutdownWaitMs) {
+      host_(worker_, QStringLiteral("prisca-identify"), kIdentificationShutdownMs) {
     connect(worker_, &IdentificationWorker::progress, this, &IdentificationThread::progress);
     connect(worker_, &IdentificationWorker::finished, this, &IdentificationThread::finished);
     connect(worker_, &IdentificationWorker::failed, this, &IdentificationThread::failed);

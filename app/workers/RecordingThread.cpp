@@ -5,13 +5,13 @@
 namespace prisca::app {
 
 namespace {
-constexpr unsigned long kShutdownWaitMs = 3000;
+constexpr unsigned long kRecordingShutdownMs = 3000;
 }
 
 RecordingThread::RecordingThread(QObject* parent)
     : QObject(parent),
       worker_(new RecordingWorker),
-      host_(worker_, QStringLiteral("prisca-record"), kShutdownWaitMs) {
+      host_(worker_, QStringLiteral("prisca-record"), kRecordingShutdownMs) {
     connect(worker_, &RecordingWorker::samplesReady, this, &RecordingThread::samplesReady);
     connect(worker_, &RecordingWorker::finished, this, &RecordingThread::finished);
     connect(worker_, &RecordingWorker::failed, this, &RecordingThread::failed);

@@ -11,13 +11,13 @@
 namespace prisca::app {
 
 namespace {
-constexpr int kTickMs = 5;
+constexpr int kRecordingTickMs = 5;
 constexpr int kSampleFlushMs = 40;
 }  // namespace
 
 RecordingWorker::RecordingWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
     timer_->setTimerType(Qt::PreciseTimer);
-    timer_->setInterval(kTickMs);
+    timer_->setInterval(kRecordingTickMs);
     connect(timer_, &QTimer::timeout, this, &RecordingWorker::tick);
 }
 

@@ -5,13 +5,13 @@
 namespace prisca::app {
 
 namespace {
-constexpr unsigned long kShutdownWaitMs = 3000;
+constexpr unsigned long kRunShutdownMs = 3000;
 }
 
 RunThread::RunThread(QObject* parent)
     : QObject(parent),
       worker_(new RunWorker),
-      host_(worker_, QStringLiteral("prisca-run"), kShutdownWaitMs) {
+      host_(worker_, QStringLiteral("prisca-run"), kRunShutdownMs) {
     qRegisterMetaType<RunRequest>();
     qRegisterMetaType<LiveSample>();
     qRegisterMetaType<std::shared_ptr<const core::RunLog>>();

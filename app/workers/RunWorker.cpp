@@ -23,7 +23,7 @@ namespace prisca::app {
 
 namespace {
 
-constexpr int kTickMs = 5;             // how often the pace is checked [ms]
+constexpr int kPaceTickMs = 5;         // how often the pace is checked [ms]
 constexpr int kFlushMs = 40;           // samples are sent at most this often [ms]
 constexpr qint64 kFastSliceMs = 12;    // "as fast as possible": wall time per slice [ms]
 constexpr int kMaxCatchUpSteps = 400;  // a stalled pace never runs more than this per tick
@@ -32,7 +32,7 @@ constexpr int kMaxCatchUpSteps = 400;  // a stalled pace never runs more than th
 
 RunWorker::RunWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
     timer_->setTimerType(Qt::PreciseTimer);
-    timer_->setInterval(kTickMs);
+    timer_->setInterval(kPaceTickMs);
     connect(timer_, &QTimer::timeout, this, &RunWorker::tick);
 }
 

@@ -15,15 +15,15 @@ namespace prisca::sim {
 
 namespace {
 
-struct Style {
+struct DriveStyle {
     const char* name;
     const char* description;
     std::function<void(DiffDriveDemonstrator::Script&)> adjust;
 };
 
-const std::vector<Style>& styles() {
+const std::vector<DriveStyle>& styles() {
     using Script = DiffDriveDemonstrator::Script;
-    static const std::vector<Style> all = {
+    static const std::vector<DriveStyle> all = {
         {"dock-90-left", "a straight, a 90 deg turn to the left and into the dock (the classic)",
          [](Script&) {}},
         {"dock-90-right", "the same to the right", [](Script& s) { s.direction = -1.0; }},
@@ -158,14 +158,14 @@ StyleSet diffDriveStyles() {
     return {
         [] {
             std::vector<DemonstrationStyle> out;
-            for (const Style& s : styles()) {
+            for (const DriveStyle& s : styles()) {
                 out.push_back({QString::fromLatin1(s.name), QString::fromLatin1(s.description)});
             }
             return out;
         },
         [](const QString& style, std::uint64_t seed, const SimulationTiming& timing,
            const RecordingConditions& conditions) {
-            for (const Style& s : styles()) {
+            for (const DriveStyle& s : styles()) {
                 if (style == QLatin1String(s.name)) {
                     DiffDriveDemonstrator::Script script;
                     s.adjust(script);
@@ -177,7 +177,7 @@ StyleSet diffDriveStyles() {
                 }
             }
             QStringList known;
-            for (const Style& s : styles()) {
+            for (const DriveStyle& s : styles()) {
                 known << QString::fromLatin1(s.name);
             }
             throw std::invalid_argument(QStringLiteral("unknown diffdrive style '%1' (one of: %2)")

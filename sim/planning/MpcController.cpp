@@ -1,6 +1,7 @@
 #include "sim/planning/MpcController.h"
 
 #include "core/DeviationModel.h"
+#include "sim/planning/Identification_p.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,10 +11,6 @@
 namespace prisca::sim {
 
 namespace {
-
-// The commands in flight when the model restarts at a measured state: this many control steps
-// of history (covers the dead times and the servo's travel, as identification's segments).
-constexpr int kHistorySteps = 12;
 
 // Where the model's rolling resistance is among its parameters.
 int rollingIndex(const PlantParameters& model) {
@@ -369,8 +366,8 @@ void MpcController::predictInto(Plant& model, int from, int count) const {
     };
     const int start = from - latency_;  // the observation's own time
     std::vector<Eigen::VectorXd> history;
-    history.reserve(kHistorySteps);
-    for (int k = start - kHistorySteps; k < start; ++k) {
+    history.reserve(identification::kHistorySteps);
+    for (int k = start - identification::kHistorySteps; k < start; ++k) {
         history.push_back(sent(k));
     }
     model.primeActuators(history);

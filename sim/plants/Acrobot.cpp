@@ -25,10 +25,6 @@ constexpr double kActuatorNoiseFraction = 0.02;  // of the torque limit
 
 using core::wrapAngle;
 
-b2Vec2 toBox2d(const Eigen::Vector2d& v) {
-    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
-}
-
 // Velocity of a point at offset r from a pivot moving at v, turning at rate w (2-D cross product).
 Eigen::Vector2d pointVelocity(const Eigen::Vector2d& v, double w, const Eigen::Vector2d& r) {
     return v + w * Eigen::Vector2d(-r.y(), r.x());
