@@ -64,8 +64,11 @@ struct MpcParameters {
     /// share of the half range. There the model's Coulomb tyres hold where the car's, sharing
     /// their grip with the drive, may not, and the motor is known only near the demonstration's
     /// throttle: a plan that steered or eased off on the straight to save the slide later spun
-    /// the car or left it metres short (docs/research-log.md, issue 33's sixth step).
-    double straightCorrection = 0.2;
+    /// the car or left it metres short (docs/research-log.md, issue 33's sixth step). At 0.2
+    /// a planned car still left the straight 36-39 deg off its predicted heading on one
+    /// development cell in three trials of eight (1.5-2.6 m); 0.05 parked that cell at 5.9 cm
+    /// and halved the mean over eleven planned cells (thirteenth step).
+    double straightCorrection = 0.05;
     double turnShare = 0.3;
     /// The model's position RMS over its data's segments [m] above which identification
     /// searches again (`retryEvaluations`).
