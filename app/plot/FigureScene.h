@@ -15,14 +15,14 @@ class QPainter;
 
 namespace prisca::app::plot {
 
+/// Whether a figure of this size can be drawn: not empty, and no side over 16384 px.
+bool drawableFigureSize(QSize size);
+
 /// A Figure built as QtCharts objects: one QChart per panel laid out in a grid in a
 /// QGraphicsScene of the figure's size, the figure's title above them, laid out and ready to
 /// render. Lines, bands and shapes become series cut to the visible range (so an SVG needs no
 /// clip), texts and heatmap cells items placed where the chart maps their data.
 /// Needs a QApplication; create, use and destroy on its thread.
-/// Whether a figure of this size can be drawn: not empty, and no side over 16384 px.
-bool drawableFigureSize(QSize size);
-
 class FigureScene {
   public:
     /// How finely long lines are kept: min/max decimated to this many points per pixel column
