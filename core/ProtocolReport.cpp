@@ -224,9 +224,11 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                                 ratio(r.orientation.mean, limitOrientation),
                                 formatCpuMicroseconds(r.cpuMicrosecondsPerStep));
             }
-            out += QStringLiteral(
-                "\nPer style, position MAE [cm] / orientation MAE [deg] "
-                "(mean over seed sets):\n\n| method |");
+            out +=
+                QStringLiteral(
+                    "\nPer %1, position MAE [cm] / orientation MAE [deg] "
+                    "(mean over seed sets):\n\n| method |")
+                    .arg(summary.byVariant ? QStringLiteral("variant") : QStringLiteral("style"));
             QString rule = QStringLiteral("| --- |");
             for (const QString& style : summary.styles) {
                 out += QStringLiteral(" %1 |").arg(style);

@@ -67,6 +67,8 @@ struct ProtocolRow {
 /// The evaluation of several methods on the same cells.
 struct ProtocolSummary {
     QStringList styles;  ///< in the order given
+    /// The breakdown's columns (`styles`) are plant variants, each over every style.
+    bool byVariant = false;
     std::vector<std::uint64_t> seedSets;
     std::vector<ProtocolRow> rows;  ///< one per method, in the order given
     /// The row of the oracle (the limit), or -1 when it did not run.

@@ -132,6 +132,7 @@ Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
     result.summary =
         core::summarizeProtocol(settings.table.methods, byVariant ? variantNames : settings.styles,
                                 settings.seedSets, result.cells);
+    result.summary.byVariant = byVariant;
     return result;
 }
 

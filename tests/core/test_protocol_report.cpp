@@ -128,10 +128,19 @@ class TestProtocolReport : public QObject {
         QVERIFY2(md.contains("| 25.0x | 2.5 |"), qPrintable(md));  // 50 deg / 2 deg; CPU
         QVERIFY(md.contains("| LIMIT (oracle) | 4 | 4 | 1.00 [1.00, 1.00] | 1.0x |"));
         QVERIFY(md.contains("| method | A | B |"));
+        QVERIFY2(md.contains("\nPer style, position MAE"), qPrintable(md));
         QVERIFY2(md.contains("| OURS (PRISCA) | 3.00 / 30.00 | 7.00 / 70.00 |"), qPrintable(md));
         QVERIFY2(md.contains("| method | all | 1 | 2 |"), qPrintable(md));
         QVERIFY2(md.contains("| OURS (PRISCA) | 5.00 / 5.00 / 8.00 (B on day 2) | 4.00 / 4.00 / "
                              "6.00 (B on day 1) | 6.00 / 6.00 / 8.00 (B on day 2) |"),
+                 qPrintable(md));
+    }
+
+    void markdown_namesABreakdownByVariantSo() {
+        ProtocolSummary s = example();
+        s.byVariant = true;
+        const QString md = formatProtocol(s, TableFormat::Markdown, "c");
+        QVERIFY2(md.contains("\nPer variant, position MAE") && !md.contains("Per style"),
                  qPrintable(md));
     }
 
