@@ -1,6 +1,7 @@
 // Developer tool (not installed): model-predictive parking trial by trial on one cell of the
-// new-car protocol (a variant, a style, a seed set), with PD+LSD on the same trials, and what
-// mpc did each trial (planned or fell back, and why; its model's fit; refits).
+// new-car protocol (a variant, a style, a seed set), with a feedback law on the same trials (LAW=,
+// PD+LSD by default), what mpc did each trial (planned or fell back, and why; its model's fit;
+// refits; its rolling correction at the end).
 //   mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]
 #include "core/ActionMapping.h"
 #include "sim/DemonstrationStyles.h"
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
         profile.mpc.identifyEvaluations = qEnvironmentVariable("MPC_IE").toInt();
     if (qEnvironmentVariableIsSet("MPC_RB"))
         profile.mpc.rollingBiasGain = qEnvironmentVariable("MPC_RB").toDouble();
+    if (qEnvironmentVariableIsSet("MPC_PARK"))
+        profile.mpc.parkingSpeed = qEnvironmentVariable("MPC_PARK").toDouble();
     RunSettings settings;
     settings.seed = set;
     const Task task = makeTask(profile,
@@ -85,6 +88,12 @@ int main(int argc, char** argv) {
     auto* planner = dynamic_cast<MpcController*>(mpc.get());
     if (planner)
         std::printf("model fit %.2f cm\n", 100.0 * planner->modelFit());
+    if (planner && qEnvironmentVariableIsSet("MODEL")) {
+        const auto& specs = plantParameterSpecs(planner->model().plant);
+        for (size_t i = 0; i < specs.size(); ++i)
+            std::printf("  %-18s %g (variant %g)\n", qPrintable(specs[i].key),
+                        planner->model().values[i], variant->values[i]);
+    }
     const core::Demonstration& demo = *task.demonstration;
     const PlantInfo& info = profile.info;
     double sumMpc = 0.0, sumLaw = 0.0;
@@ -114,7 +123,7 @@ int main(int argc, char** argv) {
                 const double dx = r.finalState[p.x] - lot[p.x], dy = r.finalState[p.y] - lot[p.y];
                 const double ch = std::cos(lot[p.heading]), sh = std::sin(lot[p.heading]);
                 std::printf("    %s along %+6.1f cm across %+6.1f cm  speed at end %.2f m/s\n",
-                            &c == mpc.get() ? "mpc   " : "pd-lsd", 100.0 * (ch * dx + sh * dy),
+                            &c == mpc.get() ? "mpc" : "law", 100.0 * (ch * dx + sh * dy),
                             100.0 * (-sh * dx + ch * dy),
                             std::hypot(r.finalState[3], r.finalState[4]));
             }
@@ -126,11 +135,12 @@ int main(int argc, char** argv) {
         const double b = errorOf(lawRun, *law);
         sumMpc += a;
         sumLaw += b;
-        std::printf("trial %2d: mpc %6.1f cm  pd-lsd %6.1f cm  fit %.2f cm refits %d  %s\n", t + 1,
-                    a, b, planner ? 100.0 * planner->modelFit() : -1.0,
-                    planner ? planner->refits() : 0,
-                    planner ? qPrintable(planner->fallbackReason()) : "");
+        std::printf(
+            "trial %2d: mpc %6.1f cm  law %6.1f cm  fit %.2f cm refits %d rolling %+.3f  %s\n",
+            t + 1, a, b, planner ? 100.0 * planner->modelFit() : -1.0,
+            planner ? planner->refits() : 0, planner ? planner->rollingCorrection() : 0.0,
+            planner ? qPrintable(planner->fallbackReason()) : "");
     }
-    std::printf("mean: mpc %.1f cm, pd-lsd %.1f cm\n", sumMpc / trials, sumLaw / trials);
+    std::printf("mean: mpc %.1f cm, law %.1f cm\n", sumMpc / trials, sumLaw / trials);
     return 0;
 }

@@ -470,11 +470,21 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="194"/>
+        <source>Parking hand-over</source>
+        <translation>泊車交接</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="196"/>
+        <source>Past the demonstration&apos;s fastest turn, the feedback law parks the car once it is slower than this (0: the plan drives to the end).</source>
+        <translation>越過示範最急的轉彎後，車速低於此值時由回饋控制律泊車（0：由規劃一直駕駛到完結）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="210"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="195"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="211"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
@@ -3622,77 +3632,77 @@ Do you want to replace it?</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="460"/>
+        <location filename="../app/panels/RunPanel.cpp" line="463"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="469"/>
+        <location filename="../app/panels/RunPanel.cpp" line="472"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="504"/>
+        <location filename="../app/panels/RunPanel.cpp" line="507"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="505"/>
+        <location filename="../app/panels/RunPanel.cpp" line="508"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="506"/>
+        <location filename="../app/panels/RunPanel.cpp" line="509"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="508"/>
+        <location filename="../app/panels/RunPanel.cpp" line="511"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="510"/>
+        <location filename="../app/panels/RunPanel.cpp" line="513"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="512"/>
+        <location filename="../app/panels/RunPanel.cpp" line="515"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="514"/>
+        <location filename="../app/panels/RunPanel.cpp" line="517"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="516"/>
+        <location filename="../app/panels/RunPanel.cpp" line="519"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="518"/>
+        <location filename="../app/panels/RunPanel.cpp" line="521"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="519"/>
+        <location filename="../app/panels/RunPanel.cpp" line="522"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="520"/>
+        <location filename="../app/panels/RunPanel.cpp" line="523"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="521"/>
+        <location filename="../app/panels/RunPanel.cpp" line="524"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="531"/>
+        <location filename="../app/panels/RunPanel.cpp" line="534"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
@@ -3711,7 +3721,7 @@ Do you want to replace it?</source>
         <location filename="../app/panels/RunPanel.cpp" line="357"/>
         <location filename="../app/panels/RunPanel.cpp" line="403"/>
         <location filename="../app/panels/RunPanel.cpp" line="407"/>
-        <location filename="../app/panels/RunPanel.cpp" line="447"/>
+        <location filename="../app/panels/RunPanel.cpp" line="448"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
@@ -3751,112 +3761,112 @@ Do you want to replace it?</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="448"/>
+        <location filename="../app/panels/RunPanel.cpp" line="449"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="453"/>
+        <location filename="../app/panels/RunPanel.cpp" line="454"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="456"/>
+        <location filename="../app/panels/RunPanel.cpp" line="457"/>
         <source>; ran out %1 s in neutral, scored where it rests</source>
         <translation>；油門回中後滑行 %1 秒，以停定的位置計分</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="461"/>
+        <location filename="../app/panels/RunPanel.cpp" line="464"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="523"/>
+        <location filename="../app/panels/RunPanel.cpp" line="526"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="525"/>
+        <location filename="../app/panels/RunPanel.cpp" line="528"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="528"/>
+        <location filename="../app/panels/RunPanel.cpp" line="531"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="529"/>
+        <location filename="../app/panels/RunPanel.cpp" line="532"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="533"/>
+        <location filename="../app/panels/RunPanel.cpp" line="536"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="534"/>
+        <location filename="../app/panels/RunPanel.cpp" line="537"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="535"/>
+        <location filename="../app/panels/RunPanel.cpp" line="538"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="540"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="538"/>
+        <location filename="../app/panels/RunPanel.cpp" line="541"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="541"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="541"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="541"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="542"/>
+        <location filename="../app/panels/RunPanel.cpp" line="545"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="542"/>
+        <location filename="../app/panels/RunPanel.cpp" line="545"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="544"/>
+        <location filename="../app/panels/RunPanel.cpp" line="547"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="544"/>
+        <location filename="../app/panels/RunPanel.cpp" line="547"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="545"/>
+        <location filename="../app/panels/RunPanel.cpp" line="548"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="545"/>
+        <location filename="../app/panels/RunPanel.cpp" line="548"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -4658,87 +4668,87 @@ Do you want to replace it?</source>
         <translation>找不到攝影機（/dev/video*）：請插上天花板攝影機；虛擬實機不需要攝影機</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="145"/>
+        <location filename="../rig/RigDoctor.cpp" line="146"/>
         <source>no camera this user can open: see the devices above</source>
         <translation>沒有此用戶可開啟的攝影機：見上面各裝置</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="156"/>
+        <location filename="../rig/RigDoctor.cpp" line="157"/>
         <source>%1 reads and is valid</source>
         <translation>%1 可讀取且有效</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="158"/>
+        <location filename="../rig/RigDoctor.cpp" line="159"/>
         <source>%1 was not read</source>
         <translation>未讀取 %1</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="214"/>
+        <location filename="../rig/RigDoctor.cpp" line="215"/>
         <source>Floor calibration</source>
         <translation>地面校準</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="216"/>
+        <location filename="../rig/RigDoctor.cpp" line="217"/>
         <source>Lens</source>
         <translation>鏡頭</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="218"/>
+        <location filename="../rig/RigDoctor.cpp" line="219"/>
         <source>Display</source>
         <translation>顯示器</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="221"/>
+        <location filename="../rig/RigDoctor.cpp" line="222"/>
         <source>none (DISPLAY and WAYLAND_DISPLAY unset): the window needs one; prisca-cli does not</source>
         <translation>無（未設定 DISPLAY 及 WAYLAND_DISPLAY）：視窗需要顯示器；prisca-cli 不需要</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="225"/>
+        <location filename="../rig/RigDoctor.cpp" line="226"/>
         <source>OpenGL</source>
         <translation>OpenGL</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="227"/>
+        <location filename="../rig/RigDoctor.cpp" line="229"/>
         <source>%1, a GPU render node</source>
         <translation>%1，有 GPU 渲染節點</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="228"/>
+        <location filename="../rig/RigDoctor.cpp" line="230"/>
         <source>%1, software rendering (no GPU render node)</source>
         <translation>%1，軟件渲染（沒有 GPU 渲染節點）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="230"/>
+        <location filename="../rig/RigDoctor.cpp" line="232"/>
         <source>no OpenGL library: install libgl1 (the window&apos;s charts need it)</source>
         <translation>沒有 OpenGL 程式庫：請安裝 libgl1（視窗的圖表需要它）</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="235"/>
+        <location filename="../rig/RigDoctor.cpp" line="237"/>
         <source>cannot read the free space under %1</source>
         <translation>無法讀取 %1 的可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="237"/>
+        <location filename="../rig/RigDoctor.cpp" line="239"/>
         <source>%1 free under %2</source>
         <translation>%2 有 %1 可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="240"/>
+        <location filename="../rig/RigDoctor.cpp" line="242"/>
         <source>only %1 free under %2: a session&apos;s bundles need %3; free some space or choose another folder</source>
         <translation>%2 只有 %1 可用空間：一節工作的試驗包需要 %3；請騰出空間或選擇其他資料夾</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="247"/>
+        <location filename="../rig/RigDoctor.cpp" line="249"/>
         <source>Free space for trial bundles</source>
         <translation>試驗包的可用空間</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="248"/>
+        <location filename="../rig/RigDoctor.cpp" line="251"/>
         <source>Folders</source>
         <translation>資料夾</translation>
     </message>
     <message>
-        <location filename="../rig/RigDoctor.cpp" line="249"/>
+        <location filename="../rig/RigDoctor.cpp" line="252"/>
         <source>settings %1; recordings %2; trial bundles %3; cache %4</source>
         <translation>設定 %1；錄製 %2；試驗包 %3；快取 %4</translation>
     </message>

@@ -59,7 +59,7 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
                              OracleParameters planner, std::unique_ptr<core::Controller> fallback,
                              PlantParameters model, double modelFit,
                              std::vector<core::Demonstration> data,
-                             std::unique_ptr<core::Controller> startLaw)
+                             std::unique_ptr<core::Controller> startLaw, QString noModel)
     : problem_(core::TrackingProblem::validated(std::move(problem))),
       parameters_(parameters),
       plannerParameters_(std::move(planner)),
@@ -70,7 +70,8 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
       model_(std::move(model)),
       modelFit_(modelFit),
       data_(data),
-      firstData_(std::move(data)) {
+      firstData_(std::move(data)),
+      noModel_(std::move(noModel)) {
     if (!fallback_ || !startLaw_) {
         throw std::invalid_argument("MpcController: a fallback law and a start law are needed");
     }
@@ -140,6 +141,7 @@ MpcController::MpcController(const MpcController& other)
       modelFit_(other.modelFit_),
       data_(other.data_),
       firstData_(other.firstData_),
+      noModel_(other.noModel_),
       latency_(other.latency_),
       pendingLatency_(other.pendingLatency_),
       observations_(other.observations_),
@@ -173,10 +175,16 @@ std::unique_ptr<core::Controller> MpcController::clone() const {
 }
 
 QString MpcController::trialNote() const {
-    if (mode_ == MpcMode::Planning) {
-        return modelFit_ >= 0.0 ? QStringLiteral("planned through the model (fit %1 cm)")
-                                      .arg(100.0 * modelFit_, 0, 'f', 1)
-                                : QStringLiteral("planned through the model");
+    if (mode_ != MpcMode::Fallback) {
+        const QString planned = modelFit_ >= 0.0
+                                    ? QStringLiteral("planned through the model (fit %1 cm)")
+                                          .arg(100.0 * modelFit_, 0, 'f', 1)
+                                    : QStringLiteral("planned through the model");
+        return mode_ == MpcMode::Planning
+                   ? planned
+                   : QStringLiteral("%1; the feedback law parked it from %2 s")
+                         .arg(planned)
+                         .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2);
     }
     return fallbackStep_ > 0 ? QStringLiteral("the feedback law drove from %1 s: %2")
                                    .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
@@ -285,7 +293,9 @@ void MpcController::reset(core::ResetMode mode) {
                      .arg(100.0 * modelFit_, 0, 'f', 1)
                      .arg(100.0 * parameters_.planFit, 0, 'f', 1));
     } else if (!std::isfinite(modelFit_)) {
-        fallBack(QStringLiteral("the model's fit is unknown"));
+        fallBack(noModel_.isEmpty()
+                     ? QStringLiteral("the model's fit is unknown")
+                     : QStringLiteral("no model to plan through (%1)").arg(noModel_));
     }
 }
 
@@ -419,7 +429,16 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
                          .arg(spin));
         }
     }
-    if (mode_ == MpcMode::Fallback) {
+    if (mode_ == MpcMode::Planning && parameters_.parkingSpeed > 0.0 && k - latency_ > spinUntil_ &&
+        problem_.deviation.bodyVelocity) {
+        const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+        const double speed = std::hypot(observation[v.forward], observation[v.lateral]);
+        if (speed < parameters_.parkingSpeed) {
+            mode_ = MpcMode::Parking;
+            fallbackStep_ = k;
+        }
+    }
+    if (mode_ != MpcMode::Planning) {
         record_ = law;
     } else {
         if (k % parameters_.replanEvery == 0 && std::abs(rollingBias_ - appliedBias_) > 1e-3) {

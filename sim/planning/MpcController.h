@@ -99,10 +99,20 @@ struct MpcParameters {
     /// model missed over the tube's window. 0: off. The development run went from 14.2 to
     /// 9.2 cm at 0.05 and at 0.2 alike (docs/research-log.md, issue 33's tenth step).
     double rollingBiasGain = 0.05;
+    /// Past the demonstration's fastest turn, once the measured speed falls below this [m/s],
+    /// the feedback law (the fallback's, PD+LSD) parks the car; 0: the plan drives to the end.
+    /// The plan creeps to the lot with throttles of a few hundredths the model believes and a
+    /// car it does not match (tyres, motor, floor, the ESC's neutral band) may not follow. At
+    /// 0.5 eleven planned development cells with the reality gap went from 7.55 cm to 3.35, but
+    /// held out (the fourth round's cars) 10.55 cm to 10.93 and the heading 5.1 deg to 8.1: off
+    /// (docs/research-log.md, issue 33's fourteenth step).
+    double parkingSpeed = 0.0;
 };
 
-/// Why a trial is (or is not) planned through the model.
-enum class MpcMode { Planning, Fallback };
+/// Who drives a trial now: the plan through the model; the feedback law because the model could
+/// not be planned through or stopped holding (a fallback); or the feedback law parking the car
+/// the plan brought out of its slide (a hand-over, no fault of the model's).
+enum class MpcMode { Planning, Fallback, Parking };
 
 /// Model-predictive parking: each control step the model (an identified car, a plant file)
 /// is set to the measured state, predicted through the sensor's latency with the commands
@@ -113,9 +123,10 @@ enum class MpcMode { Planning, Fallback };
 /// A trial the model is not planned through (it fits its data worse than `planFit`, or there
 /// is none) is driven by a start law from its start; a planned trial is handed to a fallback
 /// law (the PD family's) for its rest once the measured state leaves the model's predicted
-/// tube or spins. Learns across trials by refitting the model on the demonstration and the
-/// day's trials the plan drove (reset(WarmStart)), keeping a refit only when it predicts the
-/// newest trial, which it was not fitted on, better; a cold reset goes back to the first model.
+/// tube or spins, and to the same law to park once it is past the slide and slow. Learns across
+/// trials by refitting the model on the demonstration and the day's trials the plan drove
+/// (reset(WarmStart)), keeping a refit only when it predicts the newest trial, which it was not
+/// fitted on, better; a cold reset goes back to the first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)
@@ -126,10 +137,12 @@ class MpcController : public core::Controller {
     /// @param data      what the model was identified from (the refits add trials to it;
     ///                  empty: never refit)
     /// @param startLaw  the feedback law that drives a trial not planned through from its start
+    /// @param noModel   why there is no model, when there is none (identification's refusal;
+    ///                  modelFit is then NaN): the trial note says it
     MpcController(core::TrackingProblem problem, MpcParameters parameters, OracleParameters planner,
                   std::unique_ptr<core::Controller> fallback, PlantParameters model,
                   double modelFit, std::vector<core::Demonstration> data,
-                  std::unique_ptr<core::Controller> startLaw);
+                  std::unique_ptr<core::Controller> startLaw, QString noModel = {});
     MpcController(const MpcController& other);
     MpcController& operator=(const MpcController&) = delete;
 
@@ -144,7 +157,8 @@ class MpcController : public core::Controller {
     MpcMode mode() const { return mode_; }
     /// Why the fallback took over (empty while planning).
     const QString& fallbackReason() const { return fallbackReason_; }
-    /// The step of this trial the fallback took over at (-1: it did not).
+    /// The step of this trial the feedback law took over at, as a fallback or to park (-1: it
+    /// did not).
     int fallbackStep() const { return fallbackStep_; }
     const PlantParameters& model() const { return model_; }
     double modelFit() const { return modelFit_; }
@@ -186,6 +200,7 @@ class MpcController : public core::Controller {
     double modelFit_;
     std::vector<core::Demonstration> data_;  // the demonstration first, then the day's trials
     std::vector<core::Demonstration> firstData_;
+    QString noModel_;                               // why there is no model (empty: there is one)
     std::unique_ptr<Plant> modelPlant_;             // the model at the current (predicted) state
     std::unique_ptr<Plant> scratch_;                // the tube's prediction
     std::vector<std::unique_ptr<Plant>> ensemble_;  // the model with other grips

@@ -2,6 +2,7 @@
 // its feedback law under a model that is wrong (the predicted tube) or fits badly, refits after
 // each trial, and goes back to its first model on a cold reset.
 #include "core/ActionMapping.h"
+#include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
 #include "sim/episodes/EpisodeRunner.h"
@@ -51,6 +52,25 @@ struct Setup {
         controller.release();
         return std::unique_ptr<MpcController>(mpc);
     }
+    // One trial (seed 11, no perturbation) of `mpc` with PD+LSD stepped beside it on the same
+    // observations: per step, what mpc sent, what the law would have sent, and what was seen.
+    struct Beside {
+        Eigen::VectorXd sent, law, observation;
+    };
+    std::vector<Beside> besideTheLaw(MpcController& mpc) const {
+        auto law = MethodCatalog::create("pd-lsd", profile, demonstration, b());
+        auto plant = PlantCatalog::create("slidecar");
+        EpisodeSettings s = profile.episode(*demonstration, 0.0, 0.0);
+        s.seed = 11;
+        EpisodeStepper stepper(*plant, mpc, s);
+        law->reset();
+        std::vector<Beside> steps;
+        while (!stepper.finished()) {
+            const StepRecord& taken = stepper.step();
+            steps.push_back({taken.action, law->step(taken.observation).action, taken.observation});
+        }
+        return steps;
+    }
     // One trial of the catalog car at these levels; the parking error [m].
     double trial(core::Controller& controller, std::uint64_t seed, double level,
                  core::ResetMode reset = core::ResetMode::Cold) const {
@@ -81,7 +101,7 @@ class TestMpc : public QObject {
         auto mpc = setup.mpc();
         QVERIFY(mpc);
         const double error = setup.trial(*mpc, 11, 0.0);
-        QCOMPARE(mpc->mode(), MpcMode::Planning);
+        QVERIFY2(mpc->mode() != MpcMode::Fallback, qPrintable(mpc->fallbackReason()));
         QVERIFY2(mpc->fallbackReason().isEmpty(), qPrintable(mpc->fallbackReason()));
         // The operator is told which law drove (the rig's result line, run's report).
         QVERIFY2(mpc->trialNote().startsWith(QLatin1String("planned through the model")),
@@ -90,7 +110,7 @@ class TestMpc : public QObject {
         // With the realistic perturbation and sensor the measurements stay inside the tube too.
         for (std::uint64_t seed : {3, 4}) {
             setup.trial(*mpc, seed, 1.0);
-            QVERIFY2(mpc->mode() == MpcMode::Planning, qPrintable(mpc->fallbackReason()));
+            QVERIFY2(mpc->mode() != MpcMode::Fallback, qPrintable(mpc->fallbackReason()));
         }
     }
 
@@ -121,23 +141,13 @@ class TestMpc : public QObject {
 
         // From the step it took over, its actions are the feedback law's own.
         auto again = setup.mpc();
-        auto law = MethodCatalog::create("pd-lsd", setup.profile, setup.demonstration, setup.b());
-        auto plant = PlantCatalog::create("slidecar");
-        EpisodeSettings s = setup.profile.episode(*setup.demonstration, 0.0, 0.0);
-        s.seed = 11;
-        EpisodeStepper stepper(*plant, *again, s);
-        law->reset();
-        int compared = 0;
-        while (!stepper.finished()) {
-            const int k = stepper.stepCount();
-            const StepRecord& taken = stepper.step();
-            const Eigen::VectorXd lawAction = law->step(taken.observation).action;
-            if (again->mode() == MpcMode::Fallback && k > again->fallbackStep()) {
-                QVERIFY((taken.action - lawAction).norm() < 1e-12);
-                ++compared;
-            }
+        const auto steps = setup.besideTheLaw(*again);
+        QCOMPARE(again->mode(), MpcMode::Fallback);
+        const int from = again->fallbackStep() + 1;
+        QVERIFY(from > 0 && from < static_cast<int>(steps.size()) - 10);
+        for (size_t k = static_cast<size_t>(from); k < steps.size(); ++k) {
+            QVERIFY((steps[k].sent - steps[k].law).norm() < 1e-12);
         }
-        QVERIFY(compared > 10);
     }
 
     // While the car parks, the model's rolling resistance follows what the model failed to
@@ -150,7 +160,8 @@ class TestMpc : public QObject {
         const double rolling = car.value(QStringLiteral("rollingResistance"));
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
             withValues(car, {{"rollingResistance", rolling / 3.0}}));
-        setup.profile.mpc.planFit = 1.0;  // planned through however it fits
+        setup.profile.mpc.planFit = 1.0;       // planned through however it fits
+        setup.profile.mpc.parkingSpeed = 0.0;  // and the plan parks it: no hand-over
         setup.profile.mpc.rollingBiasGain = 0.0;
         auto off = setup.mpc();
         const double uncorrected = setup.trial(*off, 11, 0.0);
@@ -229,6 +240,7 @@ class TestMpc : public QObject {
         setup.profile.mpc.tubePosition = 100.0;
         setup.profile.mpc.tubeHeading = 100.0;
         MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.spin-slip=0"));
+        setup.profile.mpc.parkingSpeed = 0.0;  // every action after the turn the plan's
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(withValues(
             defaultPlantParameters("slidecar"),
             {{"staticFriction", 0.6}, {"kineticFriction", 0.45}, {"maxDriveForce", 5.0}}));
@@ -280,6 +292,42 @@ class TestMpc : public QObject {
         QVERIFY2(free.before > 0.1, qPrintable(QString::number(free.before)));
     }
 
+    // Past the demonstration's fastest turn, once the car is slower than mpc.park-speed, the
+    // feedback law (PD+LSD) parks it: from that step on the actions are the law's own, the
+    // trial note says so, and it is no fallback (the trial stays data for a refit). With the
+    // hand-over off the plan drives to the end.
+    void parking_theLawParksTheCarAfterTheSlide() {
+        Setup setup;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.park-speed=0.5"));
+        QCOMPARE(setup.profile.mpc.parkingSpeed, 0.5);
+        auto mpc = setup.mpc();
+        const auto steps = setup.besideTheLaw(*mpc);
+        QCOMPARE(mpc->mode(), MpcMode::Parking);
+        QVERIFY(mpc->fallbackReason().isEmpty());
+        const int from = mpc->fallbackStep();
+        QVERIFY2(from > mpc->turnStart() && from < static_cast<int>(steps.size()) - 10,
+                 qPrintable(QString::number(from)));
+        const core::BodyVelocityIndices v = *setup.profile.info.bodyVelocity;
+        const Eigen::VectorXd& seen = steps[static_cast<size_t>(from)].observation;
+        const double speedAtHandOver = std::hypot(seen[v.forward], seen[v.lateral]);
+        QVERIFY2(speedAtHandOver < 0.5, qPrintable(QString::number(speedAtHandOver)));
+        for (size_t k = static_cast<size_t>(from); k < steps.size(); ++k) {
+            QVERIFY((steps[k].sent - steps[k].law).norm() < 1e-12);
+        }
+        const QString note = mpc->trialNote();
+        QVERIFY2(note.startsWith(QLatin1String("planned through the model")) &&
+                     note.contains(QLatin1String("the feedback law parked it from")),
+                 qPrintable(note));
+
+        setup.profile.mpc.parkingSpeed = 0.0;
+        auto off = setup.mpc();
+        setup.trial(*off, 11, 0.0);
+        QCOMPARE(off->mode(), MpcMode::Planning);
+        QCOMPARE(off->fallbackStep(), -1);
+    }
+
     // A model that fits its data worse than the bound is not planned through at all: ILC's
     // loop with its learning off drives the whole trial (not PD+LSD, the planned trials'
     // fallback).
@@ -311,6 +359,31 @@ class TestMpc : public QObject {
         const EpisodeResult result = runEpisode(*plant, *mpc, settings);
         QCOMPARE(summarizeTrial(setup.profile.info, *setup.demonstration, result).controllerNote,
                  mpc->trialNote());
+    }
+
+    // A demonstration identification refuses (this one has no slide) has no model to plan
+    // through: the start law, ILC's loop with its learning off, drives every trial from its
+    // start, and the trial note names the refusal.
+    void refusedDemonstration_theStartLawDrives() {
+        Setup setup;
+        setup.demonstration = std::make_shared<core::Demonstration>(
+            DemonstrationStyles::record("slidecar", "keyboard-90-right", 1));
+        QVERIFY(identificationDataProblem("slidecar", {*setup.demonstration})
+                    .startsWith(QLatin1String("no slide")));
+        auto mpc = setup.mpc();
+        QVERIFY(mpc);
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        QCOMPARE(mpc->fallbackStep(), 0);
+        QVERIFY2(mpc->trialNote().startsWith(
+                     QLatin1String("the feedback law drove: no model to plan through (no slide: ")),
+                 qPrintable(mpc->trialNote()));
+        auto lsd = MethodCatalog::create("pd-lsd", setup.profile, setup.demonstration, setup.b());
+        MethodTuning gentle = setup.profile;
+        gentle.ilcLearningScale = 0.0;
+        auto ilc = MethodCatalog::create("ilc", gentle, setup.demonstration, setup.b());
+        const double byMpc = setup.trial(*mpc, 3, 1.0);
+        QCOMPARE(byMpc, setup.trial(*ilc, 3, 1.0));
+        QVERIFY(byMpc != setup.trial(*lsd, 3, 1.0));
     }
 
     // After each trial the model is refit on the demonstration and the trials before it, and
