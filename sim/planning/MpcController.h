@@ -123,10 +123,10 @@ enum class MpcMode { Planning, Fallback, Parking };
 /// A trial the model is not planned through (it fits its data worse than `planFit`, or there
 /// is none) is driven by a start law from its start; a planned trial is handed to a fallback
 /// law (the PD family's) for its rest once the measured state leaves the model's predicted
-/// tube or spins, and to the same law to park once it is past the slide and slow. Learns across
-/// trials by refitting the model on the demonstration and the day's trials the plan drove
-/// (reset(WarmStart)), keeping a refit only when it predicts the newest trial, which it was not
-/// fitted on, better; a cold reset goes back to the first model.
+/// tube or spins, and (an option, `parkingSpeed`) to the same law to park once past the slide
+/// and slow. Learns across trials by refitting the model on the demonstration and the day's
+/// trials the plan drove (reset(WarmStart)), keeping a refit only when it predicts the newest
+/// trial, which it was not fitted on, better; a cold reset goes back to the first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)
