@@ -66,8 +66,6 @@ int main(int argc, char** argv) {
         profile.mpc.identifyEvaluations = qEnvironmentVariable("MPC_IE").toInt();
     if (qEnvironmentVariableIsSet("MPC_RB"))
         profile.mpc.rollingBiasGain = qEnvironmentVariable("MPC_RB").toDouble();
-    if (qEnvironmentVariableIsSet("MPC_PARK"))
-        profile.mpc.parkingSpeed = qEnvironmentVariable("MPC_PARK").toDouble();
     RunSettings settings;
     settings.seed = set;
     const Task task = makeTask(profile,
