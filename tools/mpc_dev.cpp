@@ -15,6 +15,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -73,6 +74,27 @@ int main(int argc, char** argv) {
                                    "slidecar", style, set, {},
                                    demonstrationConditions(settings, profile, variant.get(), set))),
                                {}, variant);
+    {
+        // The demonstration's slide: the largest sideways speed, side-slip angle (moving faster
+        // than 0.5 m/s) and yaw rate.
+        const Eigen::MatrixXd& st = task.demonstration->states;
+        double lateral = 0.0, slip = 0.0, yaw = 0.0, slid = 0.0, turned = 0.0, top = 0.0;
+        for (Eigen::Index j = 0; j < st.rows(); ++j) {
+            lateral = std::max(lateral, std::abs(st(j, 4)));
+            slid += std::abs(st(j, 4)) * task.demonstration->dt;
+            top = std::max(top, std::hypot(st(j, 3), st(j, 4)));
+            turned += std::abs(st(j, 5)) * task.demonstration->dt;
+            yaw = std::max(yaw, std::abs(st(j, 5)));
+            if (std::hypot(st(j, 3), st(j, 4)) > 0.5)
+                slip = std::max(slip, std::abs(std::atan2(st(j, 4), std::abs(st(j, 3)))));
+        }
+        std::printf(
+            "demo: sideways %.2f m/s, side slip %.1f deg, yaw rate %.2f rad/s, slid %.2f m, "
+            "turned %.2f rad, top speed %.2f m/s\n",
+            lateral, slip * 180.0 / M_PI, yaw, slid, turned, top);
+        if (trials <= 0)
+            return 0;
+    }
     const RunSetup mpcRun(task,
                           qEnvironmentVariableIsSet("METHOD") ? qEnvironmentVariable("METHOD")
                                                               : QStringLiteral("mpc"),

@@ -480,11 +480,21 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="210"/>
+        <source>Slide worth planning</source>
+        <translation>值得規劃的滑行</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="212"/>
+        <source>A demonstration whose largest sideways speed is under this is driven by the feedback law, not planned through (0: every slide is planned).</source>
+        <translation>示範的最大側向速度低於此值時，由回饋控制律駕駛，不經模型規劃（0：每次滑行都規劃）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="226"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="211"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="227"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>

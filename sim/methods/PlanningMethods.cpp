@@ -204,6 +204,22 @@ const MethodParameter& mpcParking() {
     return p;
 }
 
+const MethodParameter& mpcPlanSlide() {
+    static const MethodParameter p = [] {
+        MethodParameter p =
+            real("mpc.plan-slide", QT_TRANSLATE_NOOP("MethodParameter", "Slide worth planning"),
+                 "m/s", 0.0, 5.0, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "A demonstration whose largest sideways speed is under this is "
+                                   "driven by the feedback law, not planned through (0: every "
+                                   "slide is planned)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.planSlide); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.planSlide = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcRefit() {
     static const MethodParameter p = [] {
         MethodParameter p = onOff(
@@ -260,6 +276,12 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     if (profile.mpcModel) {
         model = *profile.mpcModel;
         fit = modelPositionRms(data, model, settings);
+    } else if (largestSidewaysSpeed(*demonstration, profile.info.bodyVelocity) <
+               profile.mpc.planSlide) {
+        // A demonstration with too little slide to plan through (the controller says so and
+        // the start law drives): no identification is run for it.
+        model = profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
+        fit = std::numeric_limits<double>::quiet_NaN();
     } else {
         const PlantParameters prior =
             profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
@@ -294,8 +316,9 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),    mpcRollouts(), mpcTube(),        mpcPlanFit(), mpcStraight(),
-                    mpcSpinGuard(), mpcSegment(),  mpcRollingBias(), mpcParking(), mpcRefit()};
+    s.parameters = {mpcReplan(),      mpcRollouts(), mpcTube(),      mpcPlanFit(),
+                    mpcPlanSlide(),   mpcStraight(), mpcSpinGuard(), mpcSegment(),
+                    mpcRollingBias(), mpcParking(),  mpcRefit()};
     return s;
 }
 

@@ -25,6 +25,14 @@ int rollingIndex(const PlantParameters& model) {
 
 }  // namespace
 
+double largestSidewaysSpeed(const core::Demonstration& demonstration,
+                            const std::optional<core::BodyVelocityIndices>& velocity) {
+    if (!velocity || demonstration.states.rows() == 0) {
+        return std::numeric_limits<double>::infinity();
+    }
+    return demonstration.states.col(velocity->lateral).cwiseAbs().maxCoeff();
+}
+
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
     IdentificationSettings settings;
     settings.physicsSubsteps = parameters.substeps;
@@ -126,6 +134,8 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
         plannerParameters_.calmUntil = turnStart_;
         plannerParameters_.calmCorrection = parameters_.straightCorrection;
     }
+    demonstrationSlide_ =
+        largestSidewaysSpeed(*problem_.demonstration, problem_.deviation.bodyVelocity);
     reset(core::ResetMode::Cold);
 }
 
@@ -153,6 +163,7 @@ MpcController::MpcController(const MpcController& other)
       spinStrikes_(other.spinStrikes_),
       spinUntil_(other.spinUntil_),
       turnStart_(other.turnStart_),
+      demonstrationSlide_(other.demonstrationSlide_),
       refits_(other.refits_),
       step_(other.step_),
       rollingBias_(other.rollingBias_),
@@ -288,7 +299,12 @@ void MpcController::reset(core::ResetMode mode) {
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
-    if (!(modelFit_ <= parameters_.planFit) && modelFit_ >= 0.0) {
+    if (demonstrationSlide_ < parameters_.planSlide) {
+        fallBack(QStringLiteral("the demonstration slides at most %1 m/s sideways, and a plan is "
+                                "for slides of %2 m/s or more")
+                     .arg(demonstrationSlide_, 0, 'f', 2)
+                     .arg(parameters_.planSlide, 0, 'f', 2));
+    } else if (!(modelFit_ <= parameters_.planFit) && modelFit_ >= 0.0) {
         fallBack(QStringLiteral("the model fits its data to %1 cm, more than the %2 cm it may")
                      .arg(100.0 * modelFit_, 0, 'f', 1)
                      .arg(100.0 * parameters_.planFit, 0, 'f', 1));

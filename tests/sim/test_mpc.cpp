@@ -37,7 +37,13 @@ PlantParameters withValues(PlantParameters p,
 struct Setup {
     std::shared_ptr<const core::Demonstration> demonstration =
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
-    MethodTuning profile = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
+    MethodTuning profile = [] {
+        MethodTuning p = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
+        // The tests are of the plan; this demonstration slides at about mpc.plan-slide's
+        // bound (1.0 m/s), which smallSlide_... tests on its own.
+        p.mpc.planSlide = 0.0;
+        return p;
+    }();
     Eigen::MatrixXd b() const {
         return core::fitActionMapping(*demonstration, profile.mapping,
                                       profile.info.deviationModel())
@@ -370,6 +376,9 @@ class TestMpc : public QObject {
             DemonstrationStyles::record("slidecar", "keyboard-90-right", 1));
         QVERIFY(identificationDataProblem("slidecar", {*setup.demonstration})
                     .startsWith(QLatin1String("no slide")));
+        // Identification's refusal is tested, not mpc's own bound (a slide under it too).
+        QVERIFY(largestSidewaysSpeed(*setup.demonstration, setup.profile.info.bodyVelocity) <
+                MpcParameters{}.planSlide);
         auto mpc = setup.mpc();
         QVERIFY(mpc);
         QCOMPARE(mpc->mode(), MpcMode::Fallback);
@@ -384,6 +393,40 @@ class TestMpc : public QObject {
         const double byMpc = setup.trial(*mpc, 3, 1.0);
         QCOMPARE(byMpc, setup.trial(*ilc, 3, 1.0));
         QVERIFY(byMpc != setup.trial(*lsd, 3, 1.0));
+    }
+
+    // A demonstration whose slide is smaller than mpc.plan-slide is not planned through: no
+    // model is identified for it, the start law drives every trial from its start, and the note
+    // says why. Just over its largest sideways speed the bound applies to a given model too; just
+    // under it the model is planned through.
+    void smallSlide_theStartLawDrivesWithoutAModel() {
+        Setup setup;
+        const double slide =
+            largestSidewaysSpeed(*setup.demonstration, setup.profile.info.bodyVelocity);
+        QVERIFY2(slide > 0.5 && slide < 3.0, qPrintable(QString::number(slide)));
+        setup.profile.mpc.planSlide = slide + 0.01;
+        auto mpc = setup.mpc();
+        QVERIFY(mpc);
+        QCOMPARE(mpc->demonstrationSlide(), slide);
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+        QCOMPARE(mpc->fallbackStep(), 0);
+        QVERIFY(std::isnan(mpc->modelFit()));  // nothing identified
+        QVERIFY2(mpc->trialNote().startsWith(
+                     QStringLiteral("the feedback law drove: the demonstration slides at most %1 "
+                                    "m/s sideways")
+                         .arg(slide, 0, 'f', 2)),
+                 qPrintable(mpc->trialNote()));
+        MethodTuning gentle = setup.profile;
+        gentle.ilcLearningScale = 0.0;
+        auto ilc = MethodCatalog::create("ilc", gentle, setup.demonstration, setup.b());
+        QCOMPARE(setup.trial(*mpc, 3, 1.0), setup.trial(*ilc, 3, 1.0));
+        QCOMPARE(mpc->mode(), MpcMode::Fallback);
+
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        QCOMPARE(setup.mpc()->mode(), MpcMode::Fallback);
+        setup.profile.mpc.planSlide = slide - 0.01;
+        QCOMPARE(setup.mpc()->mode(), MpcMode::Planning);
     }
 
     // After each trial the model is refit on the demonstration and the trials before it, and
