@@ -12,6 +12,7 @@
 #include "rigsim/VirtualCar.h"
 #include "sim/demonstrations/DemonstrationRecorder.h"
 #include "sim/episodes/EpisodeRunner.h"
+#include "sim/planning/MpcController.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -73,7 +74,13 @@ PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
     in.methodLabel = method.label;
     in.methodSimulationOnly = method.simulationOnly;
     in.methodTrainsOffline = method.trainsOffline();
-    in.methodPlansThroughModel = method.plansThroughModel;
+    // mpc needs the car's model only for a demonstration it plans through: one sliding less
+    // than mpc.plan-slide is the feedback law's from the start (MpcController).
+    in.methodPlansThroughModel =
+        method.plansThroughModel &&
+        (!task.demonstration ||
+         sim::largestSidewaysSpeed(*task.demonstration, task.profile.info.bodyVelocity) >=
+             task.profile.mpc.planSlide);
     in.modelIdentified = task.profile.mpcModel != nullptr;
     return evaluatePreTrialCheck(in);
 }

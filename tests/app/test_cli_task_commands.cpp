@@ -219,6 +219,21 @@ class TestCliTaskCommands : public QObject, private CliWorkspace {
         QVERIFY(!QFile::exists(path("id-short.json")));
     }
 
+    // On the rig mpc waits for the car's model only where it would plan through one: a turn
+    // sliding less than mpc.plan-slide runs without a model, the feedback law driving it, and
+    // the trial's line says why.
+    void rig_mpcRunsATurnWithoutASlideWithoutAModel() {
+        QCOMPARE(cli({"demo", "--plant", "slidecar", "--style", "keyboard-90-right", "--seed", "4",
+                      "--out", "turn.csv"})
+                     .exitCode,
+                 0);
+        const CliResult turn =
+            cli({"rig", "--virtual", "--demo", "turn.csv", "--method", "mpc", "--trials", "1"});
+        QVERIFY2(turn.exitCode == 0, qPrintable(turn.err));
+        QVERIFY2(turn.out.contains("mpc: the feedback law drove: the demonstration slides at most"),
+                 qPrintable(turn.out));
+    }
+
     void fit_worksOnARobotOutsideTheCatalog() {
         // A robot no catalog knows, flown in closed loop, whose data follow eq. 5 exactly:
         // s_{k+1} = s_k + dt (A s_k + B^T u_k), B = (1, 3).
