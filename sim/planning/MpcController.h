@@ -114,10 +114,12 @@ struct MpcParameters {
     /// the feedback law (the fallback's, PD+LSD) parks the car; 0: the plan drives to the end.
     /// The plan creeps to the lot with throttles of a few hundredths the model believes and a
     /// car it does not match (tyres, motor, floor, the ESC's neutral band) may not follow. At
-    /// 0.5 eleven planned development cells with the reality gap went from 7.55 cm to 3.35, but
-    /// held out (the fourth round's cars) 10.55 cm to 10.93 and the heading 5.1 deg to 8.1: off
-    /// (docs/research-log.md, issue 33's fourteenth step).
-    double parkingSpeed = 0.0;
+    /// 0.5 eleven planned development cells with the reality gap went from 7.55 cm to 3.35; held
+    /// out (the fourth round's cars) 10.55 cm to 10.93, the loss on 90-degree turns that
+    /// `planSlide` now leaves to the start law; on those cars' 13 planned demonstrations over
+    /// that bound 5.64 to 3.00
+    /// (docs/research-log.md, issue 33's fourteenth and fifteenth steps).
+    double parkingSpeed = 0.5;
 };
 
 /// Who drives a trial now: the plan through the model; the feedback law because the model could
@@ -131,13 +133,14 @@ enum class MpcMode { Planning, Fallback, Parking };
 /// corrections to the demonstration's actions that bring the model's final pose onto the
 /// demonstration's, within a budget of model runs. It knows only what the rig knows: the
 /// measured (filtered) state and its own commands; nothing of the trial's draws.
-/// A trial the model is not planned through (it fits its data worse than `planFit`, or there
-/// is none) is driven by a start law from its start; a planned trial is handed to a fallback
-/// law (the PD family's) for its rest once the measured state leaves the model's predicted
-/// tube or spins, and (an option, `parkingSpeed`) to the same law to park once past the slide
-/// and slow. Learns across trials by refitting the model on the demonstration and the day's
-/// trials the plan drove (reset(WarmStart)), keeping a refit only when it predicts the newest
-/// trial, which it was not fitted on, better; a cold reset goes back to the first model.
+/// A trial the model is not planned through (it fits its data worse than `planFit`, there is
+/// none, or the demonstration slides less than `planSlide`) is driven by a start law from its
+/// start; a planned trial is handed to a fallback law (the PD family's) for its rest once the
+/// measured state leaves the model's predicted tube or spins, and (`parkingSpeed`) to the same law
+/// to park once past the slide and slow. Learns across trials by refitting the model on the
+/// demonstration and the day's trials the plan drove (reset(WarmStart)), keeping a refit only when
+/// it predicts the newest trial, which it was not fitted on, better; a cold reset goes back to the
+/// first model.
 class MpcController : public core::Controller {
   public:
     /// @param problem   the demonstration and limits (time-driven)
