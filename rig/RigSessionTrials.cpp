@@ -79,8 +79,8 @@ PreTrialCheck RigSession::preTrialCheck(const sim::Task& task,
     in.methodPlansThroughModel =
         method.plansThroughModel &&
         (!task.demonstration ||
-         sim::largestSidewaysSpeed(*task.demonstration, task.profile.info.bodyVelocity) >=
-             task.profile.mpc.planSlide);
+         sim::slideWorthPlanning(*task.demonstration, task.profile.info.bodyVelocity,
+                                 task.profile.mpc));
     in.modelIdentified = task.profile.mpcModel != nullptr;
     return evaluatePreTrialCheck(in);
 }

@@ -276,8 +276,7 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     if (profile.mpcModel) {
         model = *profile.mpcModel;
         fit = modelPositionRms(data, model, settings);
-    } else if (largestSidewaysSpeed(*demonstration, profile.info.bodyVelocity) <
-               profile.mpc.planSlide) {
+    } else if (!slideWorthPlanning(*demonstration, profile.info.bodyVelocity, profile.mpc)) {
         // A demonstration with too little slide to plan through (the controller says so and
         // the start law drives): no identification is run for it.
         model = profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);

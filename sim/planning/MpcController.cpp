@@ -33,6 +33,12 @@ double largestSidewaysSpeed(const core::Demonstration& demonstration,
     return demonstration.states.col(velocity->lateral).cwiseAbs().maxCoeff();
 }
 
+bool slideWorthPlanning(const core::Demonstration& demonstration,
+                        const std::optional<core::BodyVelocityIndices>& velocity,
+                        const MpcParameters& parameters) {
+    return largestSidewaysSpeed(demonstration, velocity) >= parameters.planSlide;
+}
+
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit) {
     IdentificationSettings settings;
     settings.physicsSubsteps = parameters.substeps;

@@ -245,6 +245,12 @@ class MpcController : public core::Controller {
 double largestSidewaysSpeed(const core::Demonstration& demonstration,
                             const std::optional<core::BodyVelocityIndices>& velocity);
 
+/// Whether `mpc` plans through a model for this demonstration: it slides at least `planSlide`
+/// (the controller, its factory and the rig's pre-trial check ask this one question).
+bool slideWorthPlanning(const core::Demonstration& demonstration,
+                        const std::optional<core::BodyVelocityIndices>& velocity,
+                        const MpcParameters& parameters);
+
 /// The settings identification runs with for `mpc` (its model's substeps, its budget).
 IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters, bool refit);
 

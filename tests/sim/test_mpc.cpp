@@ -376,7 +376,8 @@ class TestMpc : public QObject {
             DemonstrationStyles::record("slidecar", "keyboard-90-right", 1));
         QVERIFY(identificationDataProblem("slidecar", {*setup.demonstration})
                     .startsWith(QLatin1String("no slide")));
-        // Identification's refusal is tested, not mpc's own bound (a slide under it too).
+        // Setup switches mpc's own bound off, so the refusal is identification's; by default
+        // the bound would hand this demonstration to the start law first.
         QVERIFY(largestSidewaysSpeed(*setup.demonstration, setup.profile.info.bodyVelocity) <
                 MpcParameters{}.planSlide);
         auto mpc = setup.mpc();
