@@ -450,51 +450,61 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="159"/>
+        <source>Steering correction</source>
+        <translation>轉向修正</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="161"/>
+        <source>On the way into the slide, how fast the model&apos;s steering offset follows the heading it failed to predict: a trim the car has and the model has not (0: never).</source>
+        <translation>進入滑行途中，模型的轉向偏移跟隨其未能預測的車頭方向的速度：即車有而模型沒有的微調偏差（0：從不）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="175"/>
         <source>Spin guard</source>
         <translation>打轉防護</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="161"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="177"/>
         <source>How far the side-slip angle may stray from the demonstration&apos;s on the way into the slide before the fallback law finishes the trial (0: no guard).</source>
         <translation>進入滑行途中，側滑角可偏離示範的側滑角多遠，超出後由後備控制律完成該次試驗（0：不設防護）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="179"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="195"/>
         <source>Model fit&apos;s segments</source>
         <translation>模型擬合的分段</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="181"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="197"/>
         <source>How long a stretch of the data the model is fitted to predict from each recorded state (identification&apos;s segment).</source>
         <translation>模型由每個記錄狀態起須預測的數據片段長度（辨識的分段）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="194"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="210"/>
         <source>Parking hand-over</source>
         <translation>泊車交接</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="196"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="212"/>
         <source>Past the demonstration&apos;s fastest turn, the feedback law parks the car once it is slower than this (0: the plan drives to the end).</source>
         <translation>越過示範最急的轉彎後，車速低於此值時由回饋控制律泊車（0：由規劃一直駕駛到完結）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="210"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="226"/>
         <source>Slide worth planning</source>
         <translation>值得規劃的滑行</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="212"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="228"/>
         <source>A demonstration whose largest sideways speed is under this is driven by the feedback law, not planned through (0: every slide is planned).</source>
         <translation>示範的最大側向速度低於此值時，由回饋控制律駕駛，不經模型規劃（0：每次滑行都規劃）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="226"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="242"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="227"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="243"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
@@ -4781,44 +4791,44 @@ Do you want to replace it?</source>
         <translation>請先連接發射器。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="84"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="91"/>
         <source>Only the virtual rig&apos;s car can be put back; carry a real one.</source>
         <translation>只有虛擬實機的車可以自動放回；真車請用手搬回。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="90"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="97"/>
         <source>A trial is running: stop it first.</source>
         <translation>試驗正在進行：請先停止。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="112"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="119"/>
         <source>The rig needs a demonstration of a planar vehicle.</source>
         <translation>實驗台需要平面車輛的示範。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="121"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="128"/>
         <source>A trial is already running.</source>
         <translation>已有一次試驗正在進行。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="124"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="131"/>
         <source>The latency is being measured.</source>
         <translation>正在量度延遲。</translation>
     </message>
     <message>
         <location filename="../rig/RigSession.cpp" line="357"/>
-        <location filename="../rig/RigSessionTrials.cpp" line="130"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="137"/>
         <source>Stop driving first.</source>
         <translation>請先停止駕駛。</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="141"/>
-        <location filename="../rig/RigSessionTrials.cpp" line="164"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="148"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="171"/>
         <source>%1 could not be set up: %2</source>
         <translation>無法設定 %1：%2</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="415"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="422"/>
         <source>the process was stopped and continued: failsafe held</source>
         <translation>程式曾被暫停後再繼續：保持失效保護</translation>
     </message>
@@ -4863,38 +4873,38 @@ Do you want to replace it?</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="461"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="468"/>
         <source>Trial %1: parked %2 cm from the lot, heading off by %3°</source>
         <translation>第 %1 次試驗：停在距泊車位 %2 厘米處，航向偏差 %3°</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="466"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="473"/>
         <source>Trial %1 ended without a pose</source>
         <translation>第 %1 次試驗結束時沒有位姿</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="470"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="477"/>
         <source> after running out %1 s in neutral</source>
         <extracomment>The car still moved when the trial&apos;s time was up and rolled on in neutral.</extracomment>
         <translation>（油門回中後滑行 %1 秒）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="474"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="481"/>
         <source> (stopped after %1 s)</source>
         <translation>（%1 秒後停止）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="477"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="484"/>
         <source> (failsafe after %1 s)</source>
         <translation>（%1 秒後進入失效保護）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="478"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="485"/>
         <source> (failsafe after %1 s: %2)</source>
         <translation>（%1 秒後失效保護：%2）</translation>
     </message>
     <message>
-        <location filename="../rig/RigSessionTrials.cpp" line="484"/>
+        <location filename="../rig/RigSessionTrials.cpp" line="491"/>
         <source>%1; %2</source>
         <extracomment>A rig trial&apos;s result, then what the method says of it (which law drove, and why).</extracomment>
         <translation>%1；%2</translation>

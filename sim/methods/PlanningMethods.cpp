@@ -153,6 +153,22 @@ const MethodParameter& mpcRollingBias() {
     return p;
 }
 
+const MethodParameter& mpcSteeringBias() {
+    static const MethodParameter p = [] {
+        MethodParameter p =
+            real("mpc.steer-bias", QT_TRANSLATE_NOOP("MethodParameter", "Steering correction"), "",
+                 0.0, 1.0, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "On the way into the slide, how fast the model's steering "
+                                   "offset follows the heading it failed to predict: a trim the "
+                                   "car has and the model has not (0: never)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.steeringBiasGain); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.steeringBiasGain = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcSpinGuard() {
     static const MethodParameter p = [] {
         MethodParameter p =
@@ -315,9 +331,9 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),      mpcRollouts(), mpcTube(),      mpcPlanFit(),
-                    mpcPlanSlide(),   mpcStraight(), mpcSpinGuard(), mpcSegment(),
-                    mpcRollingBias(), mpcParking(),  mpcRefit()};
+    s.parameters = {mpcReplan(),    mpcRollouts(),    mpcTube(),         mpcPlanFit(),
+                    mpcPlanSlide(), mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
+                    mpcSegment(),   mpcRollingBias(), mpcParking(),      mpcRefit()};
     return s;
 }
 

@@ -241,6 +241,7 @@ void MpcController::makeModels(const PlantParameters& parameters) {
         }
         ensemble_.push_back(makePlant(slippery, timing));
     }
+    applySteeringBias();
     attachModels();
 }
 
@@ -265,6 +266,48 @@ void MpcController::correctRolling(const Eigen::VectorXd& predicted,
     const double base = model_.values[static_cast<size_t>(i)];
     rollingBias_ = std::clamp(rollingBias_ + parameters_.rollingBiasGain * missed / 9.81,
                               spec.lower - base, spec.upper - base);
+}
+
+void MpcController::correctSteering(const Eigen::VectorXd& predicted,
+                                    const Eigen::VectorXd& observation) {
+    if (!(parameters_.steeringBiasGain > 0.0) || !problem_.deviation.bodyVelocity ||
+        step_ - latency_ >= turnStart_) {
+        return;
+    }
+    const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+    const double forward = observation[v.forward];
+    if (!(forward > 1.0)) {
+        return;
+    }
+    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+    const double window = tubeSteps() * problem_.demonstration->dt;
+    // The yaw rate the model missed, and the wheel angle that turns the car so at this speed.
+    const double missed =
+        core::wrapAngle(observation[pose.heading] - predicted[pose.heading]) / window;
+    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
+    double wheelbase = 0.0;
+    double lock = 0.0;
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].key == QLatin1String("wheelbase")) {
+            wheelbase = model_.values[i];
+        } else if (specs[i].key == QLatin1String("maxSteeringAngle")) {
+            lock = model_.values[i];
+        }
+    }
+    if (!(wheelbase > 0.0 && lock > 0.0)) {
+        return;
+    }
+    const double offset = std::atan(missed * wheelbase / forward) / lock;
+    steeringBias_ = std::clamp(steeringBias_ + parameters_.steeringBiasGain * offset, -0.15, 0.15);
+    applySteeringBias();
+}
+
+void MpcController::applySteeringBias() {
+    modelPlant_->setSteeringOffset(steeringBias_);
+    scratch_->setSteeringOffset(steeringBias_);
+    for (const auto& plant : ensemble_) {
+        plant->setSteeringOffset(steeringBias_);
+    }
 }
 
 void MpcController::applyRollingBias(double bias) {
@@ -301,6 +344,8 @@ void MpcController::reset(core::ResetMode mode) {
     step_ = 0;
     strikes_ = 0;
     spinStrikes_ = 0;
+    steeringBias_ = 0.0;
+    applySteeringBias();
     rollingBias_ = 0.0;
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
@@ -427,6 +472,7 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
         const double heading =
             std::abs(core::wrapAngle(predicted[pose.heading] - observation[pose.heading]));
         correctRolling(predicted, observation);
+        correctSteering(predicted, observation);
         if (position > parameters_.tubePosition || heading > parameters_.tubeHeading) {
             ++strikes_;
         } else {

@@ -110,6 +110,11 @@ struct MpcParameters {
     /// model missed over the tube's window. 0: off. The development run went from 14.2 to
     /// 9.2 cm at 0.05 and at 0.2 alike (docs/research-log.md, issue 33's tenth step).
     double rollingBiasGain = 0.05;
+    /// On the way into the slide, while the car rolls faster than 1 m/s, the model's steering
+    /// offset (a trim the car has and the model has not) follows the heading the model missed
+    /// over the tube's window: each step it moves by this share of the offset that would have
+    /// explained it (kinematic steering). 0: off.
+    double steeringBiasGain = 0.1;
     /// Past the demonstration's fastest turn, once the measured speed falls below this [m/s],
     /// the feedback law (the fallback's, PD+LSD) parks the car; 0: the plan drives to the end.
     /// The plan creeps to the lot with throttles of a few hundredths the model believes and a
@@ -185,6 +190,8 @@ class MpcController : public core::Controller {
     /// The demonstration's step its turn begins at: the plan's corrections are bounded by
     /// straightCorrection before it.
     int turnStart() const { return turnStart_; }
+    /// The model's steering offset this trial (steeringBiasGain), share of full lock.
+    double steeringBias() const { return steeringBias_; }
 
   private:
     void buildModel();
@@ -194,6 +201,9 @@ class MpcController : public core::Controller {
     void makeModels(const PlantParameters& parameters);
     /// The model's plants with `bias` added to its rolling resistance.
     void applyRollingBias(double bias);
+    /// The steering offset (steeringBiasGain) from the tube's prediction.
+    void correctSteering(const Eigen::VectorXd& predicted, const Eigen::VectorXd& observation);
+    void applySteeringBias();
     /// The rolling-resistance correction (rollingBiasGain) from the tube's prediction.
     void correctRolling(const Eigen::VectorXd& predicted, const Eigen::VectorXd& observation);
     void fallBack(const QString& reason);
@@ -230,8 +240,9 @@ class MpcController : public core::Controller {
     int fallbackStep_ = -1;
     int strikes_ = 0;
     int spinStrikes_ = 0;
-    int spinUntil_ = 0;  // the demonstration's step of fastest turn: the guard's last
-    int turnStart_ = 0;  // the demonstration's first step of that turn: the straight's end
+    double steeringBias_ = 0.0;  // the model's steering offset (steeringBiasGain)
+    int spinUntil_ = 0;          // the demonstration's step of fastest turn: the guard's last
+    int turnStart_ = 0;          // the demonstration's first step of that turn: the straight's end
     double demonstrationSlide_ = std::numeric_limits<double>::infinity();  // see planSlide
     int refits_ = 0;
     int step_ = 0;

@@ -145,6 +145,13 @@ class Plant {
     /// Empty for plants without it; setHiddenState after resetTo, ignoring a wrong size.
     virtual std::vector<double> hiddenState() const { return {}; }
     virtual void setHiddenState(const std::vector<double>& hidden) { (void)hidden; }
+    /// A model's estimate of the steering trim its car has (share of full lock), added to every
+    /// steering command; kept over resetTo and copied by clone. False: the plant has no
+    /// steering to trim.
+    virtual bool setSteeringOffset(double offset) {
+        (void)offset;
+        return false;
+    }
 
     /// An independent copy of this trial's plant as it is now: the same perturbed parameters,
     /// wind, commands in flight and state, for a planner that simulates ahead (the oracle).

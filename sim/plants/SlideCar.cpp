@@ -130,6 +130,7 @@ std::unique_ptr<Plant> SlideCar::clone(bool actuatorNoise) const {
     copy->frictionScale_ = frictionScale_;
     copy->throttleGain_ = throttleGain_;
     copy->steeringTrim_ = steeringTrim_;
+    copy->steeringOffset_ = steeringOffset_;
     copy->actuatorNoise_ = actuatorNoise ? actuatorNoise_ : 0.0;
     copy->noise_ = noise_;
     return copy;
@@ -191,6 +192,11 @@ void SlideCar::setHiddenState(const std::vector<double>& hidden) {
     longitudinalAcceleration_ = hidden[2];
 }
 
+bool SlideCar::setSteeringOffset(double offset) {
+    steeringOffset_ = offset;
+    return true;
+}
+
 std::pair<double, double> SlideCar::actuatorStep(double throttleCommand, double steeringCommand) {
     const SlideCarParameters& p = parameters_;
     const double h = timing_.physicsStep();
@@ -203,7 +209,8 @@ std::pair<double, double> SlideCar::actuatorStep(double throttleCommand, double 
         const double magnitude = std::max(0.0, std::abs(throttle) - p.escDeadband);
         throttle = std::copysign(magnitude / (1.0 - p.escDeadband), throttle);
     }
-    const double steering = std::clamp(steeringQueue_.front() + steeringTrim_, -1.0, 1.0);
+    const double steering =
+        std::clamp(steeringQueue_.front() + steeringTrim_ + steeringOffset_, -1.0, 1.0);
     throttleQueue_.pop_front();
     steeringQueue_.pop_front();
 

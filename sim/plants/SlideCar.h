@@ -112,6 +112,7 @@ class SlideCar : public Plant {
     /// {front sliding, rear sliding, longitudinal acceleration [m/s^2]}.
     std::vector<double> hiddenState() const override;
     void setHiddenState(const std::vector<double>& hidden) override;
+    bool setSteeringOffset(double offset) override;
     std::unique_ptr<Plant> clone(bool actuatorNoise = false) const override;
     Eigen::VectorXd state() const override;
     double time() const override { return time_; }
@@ -163,6 +164,7 @@ class SlideCar : public Plant {
     double frictionScale_ = 1.0;
     double throttleGain_ = 1.0;
     double steeringTrim_ = 0.0;
+    double steeringOffset_ = 0.0;  // a model's estimate of its car's trim (setSteeringOffset)
     double actuatorNoise_ = 0.0;
     std::mt19937_64 noise_;
 };

@@ -184,6 +184,42 @@ class TestMpc : public QObject {
                  qPrintable(QStringLiteral("%1 against %2").arg(corrected).arg(uncorrected)));
     }
 
+    // On the way into the slide the model's steering offset follows a trim the car has and the
+    // model has not (mpc.steer-bias), either way; with the gain 0 it stays 0.
+    void steeringBias_followsTheCarsTrimOnTheStraight() {
+        Setup setup;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        setup.profile.mpc.planFit = 1.0;  // planned through however it fits
+        const auto trimmed = [&](MpcController& mpc, double trim) {
+            auto plant = PlantCatalog::create("slidecar");
+            QVERIFY(plant->setSteeringOffset(trim));  // the car's own trim
+            EpisodeSettings s = setup.profile.episode(*setup.demonstration, 0.0, 0.0);
+            s.seed = 11;
+            s.recordSteps = false;
+            runEpisode(*plant, mpc, s);
+        };
+        for (const double trim : {0.04, -0.04}) {
+            setup.profile.mpc.steeringBiasGain = 0.1;
+            auto on = setup.mpc();
+            trimmed(*on, trim);
+            QVERIFY2(std::abs(on->steeringBias() - trim) < 0.5 * std::abs(trim),
+                     qPrintable(
+                         QStringLiteral("%1 for a trim of %2").arg(on->steeringBias()).arg(trim)));
+            setup.profile.mpc.steeringBiasGain = 0.0;
+            auto off = setup.mpc();
+            trimmed(*off, trim);
+            QCOMPARE(off->steeringBias(), 0.0);
+        }
+        // A cold reset forgets it.
+        setup.profile.mpc.steeringBiasGain = 0.1;
+        auto mpc = setup.mpc();
+        trimmed(*mpc, 0.04);
+        QVERIFY(mpc->steeringBias() != 0.0);
+        mpc->reset(core::ResetMode::Cold);
+        QCOMPARE(mpc->steeringBias(), 0.0);
+    }
+
     // The spin guard: on the way into the slide, a measured side slip far from every one the
     // demonstration had near that time hands the trial to the fallback law; the same slip
     // past the demonstration's fastest turn, or with the guard off, does not.
