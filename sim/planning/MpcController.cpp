@@ -218,6 +218,9 @@ void MpcController::setLoopLatencySteps(int steps) {
 void MpcController::buildModel() {
     planner_ = std::make_unique<OracleController>(problem_, plannerParameters_);
     appliedBias_ = 0.0;
+    // The model's steering geometry, read once per model (the steering correction's every step).
+    wheelbase_ = model_.value(QStringLiteral("wheelbase"));
+    steeringLock_ = model_.value(QStringLiteral("maxSteeringAngle"));
     makeModels(model_);
 }
 
@@ -284,20 +287,10 @@ void MpcController::correctSteering(const Eigen::VectorXd& predicted,
     // The yaw rate the model missed, and the wheel angle that turns the car so at this speed.
     const double missed =
         core::wrapAngle(observation[pose.heading] - predicted[pose.heading]) / window;
-    const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
-    double wheelbase = 0.0;
-    double lock = 0.0;
-    for (size_t i = 0; i < specs.size(); ++i) {
-        if (specs[i].key == QLatin1String("wheelbase")) {
-            wheelbase = model_.values[i];
-        } else if (specs[i].key == QLatin1String("maxSteeringAngle")) {
-            lock = model_.values[i];
-        }
-    }
-    if (!(wheelbase > 0.0 && lock > 0.0)) {
+    if (!(wheelbase_ > 0.0 && steeringLock_ > 0.0)) {
         return;
     }
-    const double offset = std::atan(missed * wheelbase / forward) / lock;
+    const double offset = std::atan(missed * wheelbase_ / forward) / steeringLock_;
     steeringBias_ = std::clamp(steeringBias_ + parameters_.steeringBiasGain * offset, -0.15, 0.15);
     applySteeringBias();
 }
@@ -336,6 +329,7 @@ void MpcController::reset(core::ResetMode mode) {
         refitOnLastTrial();
     }
     latency_ = pendingLatency_;
+    steeringBias_ = 0.0;  // makeModels gives the new models this
     buildModel();
     fallback_->reset(mode);
     startLaw_->reset(mode);
@@ -344,8 +338,6 @@ void MpcController::reset(core::ResetMode mode) {
     step_ = 0;
     strikes_ = 0;
     spinStrikes_ = 0;
-    steeringBias_ = 0.0;
-    applySteeringBias();
     rollingBias_ = 0.0;
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();

@@ -241,6 +241,8 @@ class MpcController : public core::Controller {
     int strikes_ = 0;
     int spinStrikes_ = 0;
     double steeringBias_ = 0.0;  // the model's steering offset (steeringBiasGain)
+    double wheelbase_ = 0.0;     // the model's, for the steering correction
+    double steeringLock_ = 0.0;  // the model's full-lock wheel angle [rad]
     int spinUntil_ = 0;          // the demonstration's step of fastest turn: the guard's last
     int turnStart_ = 0;          // the demonstration's first step of that turn: the straight's end
     double demonstrationSlide_ = std::numeric_limits<double>::infinity();  // see planSlide
