@@ -156,9 +156,11 @@ int main(int argc, char** argv) {
         sumMpc += a;
         sumLaw += b;
         std::printf(
-            "trial %2d: mpc %6.1f cm  law %6.1f cm  fit %.2f cm refits %d rolling %+.3f  %s\n",
+            "trial %2d: mpc %6.1f cm  law %6.1f cm  fit %.2f cm refits %d rolling %+.3f steer "
+            "%+.3f  %s\n",
             t + 1, a, b, planner ? 100.0 * planner->modelFit() : -1.0,
             planner ? planner->refits() : 0, planner ? planner->rollingCorrection() : 0.0,
+            planner ? planner->steeringBias() : 0.0,
             planner ? qPrintable(planner->fallbackReason()) : "");
     }
     std::printf("mean: mpc %.1f cm, law %.1f cm\n", sumMpc / trials, sumLaw / trials);

@@ -167,6 +167,7 @@ MpcController::MpcController(const MpcController& other)
       fallbackStep_(other.fallbackStep_),
       strikes_(other.strikes_),
       spinStrikes_(other.spinStrikes_),
+      steeringBias_(other.steeringBias_),
       spinUntil_(other.spinUntil_),
       turnStart_(other.turnStart_),
       demonstrationSlide_(other.demonstrationSlide_),

@@ -211,11 +211,13 @@ class TestMpc : public QObject {
             trimmed(*off, trim);
             QCOMPARE(off->steeringBias(), 0.0);
         }
-        // A cold reset forgets it.
+        // A copy keeps it; a cold reset forgets it.
         setup.profile.mpc.steeringBiasGain = 0.1;
         auto mpc = setup.mpc();
         trimmed(*mpc, 0.04);
         QVERIFY(mpc->steeringBias() != 0.0);
+        const auto copy = mpc->clone();
+        QCOMPARE(dynamic_cast<const MpcController&>(*copy).steeringBias(), mpc->steeringBias());
         mpc->reset(core::ResetMode::Cold);
         QCOMPARE(mpc->steeringBias(), 0.0);
     }
