@@ -326,7 +326,7 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
 /// MPC, with the PD+LSD law as its fallback.
 MethodSpec mpcMethod() {
     MethodSpec s = entry("mpc", "MPC", &makeMpc);
-    s.learnsOnline = true;  // the model is refit on each trial
+    s.learnsOnline = true;  // the model may be refit on each trial (mpc.refit)
     s.inDefaultTable1 = false;
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows

@@ -94,8 +94,9 @@ struct MpcParameters {
     /// segmentSeconds).
     double modelSegment = 1.0;
     /// After each trial the model is refit on the demonstration and the day's trials before
-    /// it, and kept only when it predicts that trial better.
-    bool refit = true;
+    /// it, and kept only when it predicts that trial better. Off: on two development days the
+    /// refits cost about 4 cm a trial (docs/research-log.md, issue 33's seventeenth step).
+    bool refit = false;
     int refitTrials = 4;            ///< at most this many of the newest trials, with the demo
     int identifyEvaluations = 400;  ///< identification's budget from the demonstration
     /// A fit from that budget worse than `poorFit` is searched again with this budget per

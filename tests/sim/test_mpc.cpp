@@ -125,6 +125,7 @@ class TestMpc : public QObject {
     void wrongModel_theFallbackTakesOver() {
         Setup setup;
         setup.profile.mpc.planFit = 100.0;  // only the tube may call the fallback here
+        setup.profile.mpc.refit = true;     // and no refit after the trial it finished
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(
             withValues(defaultPlantParameters("slidecar"), {{"staticFriction", 0.3},
                                                             {"kineticFriction", 0.2},
@@ -478,6 +479,7 @@ class TestMpc : public QObject {
                                                {{"maxDriveForce", 8.2}, {"drivelineDrag", 0.6}});
         setup.profile.mpcModel = std::make_shared<const PlantParameters>(off);
         setup.profile.mpc.planFit = 1.0;  // planned through however it fits: trials are data
+        setup.profile.mpc.refit = true;
         auto mpc = setup.mpc();
         setup.trial(*mpc, 5, 1.0, core::ResetMode::Cold);
         QCOMPARE(mpc->refits(), 0);
@@ -495,6 +497,14 @@ class TestMpc : public QObject {
         QCOMPARE(mpc->refits(), 0);
         QCOMPARE(mpc->model().values, off.values);
         QCOMPARE(copied->refits(), refits);
+        // Off (the default), the trials change nothing.
+        setup.profile.mpc.refit = false;
+        auto fixed = setup.mpc();
+        setup.trial(*fixed, 5, 1.0, core::ResetMode::Cold);
+        setup.trial(*fixed, 6, 1.0, core::ResetMode::WarmStart);
+        setup.trial(*fixed, 7, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(fixed->refits(), 0);
+        QCOMPARE(fixed->model().values, off.values);
     }
 
     // Without a model it identifies one from the demonstration; a plant identification does
