@@ -490,21 +490,31 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="226"/>
+        <source>Hand-over near the lot</source>
+        <translation>近車位先交接</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="228"/>
+        <source>The parking hand-over waits until the car is this close to the lot; farther away the plan drives on (0: at any distance).</source>
+        <translation>泊車交接要等車駛到離車位這個距離以內；離得更遠時由規劃繼續駕駛（0：任何距離都交接）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="241"/>
         <source>Slide worth planning</source>
         <translation>值得規劃的滑行</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="228"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="243"/>
         <source>A demonstration whose largest sideways speed is under this is driven by the feedback law, not planned through (0: every slide is planned).</source>
         <translation>示範的最大側向速度低於此值時，由回饋控制律駕駛，不經模型規劃（0：每次滑行都規劃）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="242"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="257"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="243"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="258"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>

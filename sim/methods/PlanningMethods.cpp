@@ -220,6 +220,21 @@ const MethodParameter& mpcParking() {
     return p;
 }
 
+const MethodParameter& mpcParkingDistance() {
+    static const MethodParameter p = [] {
+        MethodParameter p =
+            real("mpc.park-near", QT_TRANSLATE_NOOP("MethodParameter", "Hand-over near the lot"),
+                 "m", 0.0, 2.0, 2,
+                 QT_TRANSLATE_NOOP("MethodParameter",
+                                   "The parking hand-over waits until the car is this close to the "
+                                   "lot; farther away the plan drives on (0: at any distance)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.parkingDistance); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.parkingDistance = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcPlanSlide() {
     static const MethodParameter p = [] {
         MethodParameter p =
@@ -333,7 +348,8 @@ MethodSpec mpcMethod() {
     s.summary = "model-predictive parking through the car identified from its demonstration";
     s.parameters = {mpcReplan(),    mpcRollouts(),    mpcTube(),         mpcPlanFit(),
                     mpcPlanSlide(), mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
-                    mpcSegment(),   mpcRollingBias(), mpcParking(),      mpcRefit()};
+                    mpcSegment(),   mpcRollingBias(), mpcParking(),      mpcParkingDistance(),
+                    mpcRefit()};
     return s;
 }
 

@@ -494,7 +494,12 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
         problem_.deviation.bodyVelocity) {
         const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
         const double speed = std::hypot(observation[v.forward], observation[v.lateral]);
-        if (speed < parameters_.parkingSpeed) {
+        const core::Demonstration& demo = *problem_.demonstration;
+        const double fromLot =
+            std::hypot(observation[pose.x] - demo.states(demo.length() - 1, pose.x),
+                       observation[pose.y] - demo.states(demo.length() - 1, pose.y));
+        if (speed < parameters_.parkingSpeed &&
+            (parameters_.parkingDistance <= 0.0 || fromLot < parameters_.parkingDistance)) {
             mode_ = MpcMode::Parking;
             fallbackStep_ = k;
         }

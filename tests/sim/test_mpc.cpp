@@ -339,8 +339,9 @@ class TestMpc : public QObject {
 
     // Past the demonstration's fastest turn, once the car is slower than mpc.park-speed, the
     // feedback law (PD+LSD) parks it: from that step on the actions are the law's own, the
-    // trial note says so, and it is no fallback (the trial stays data for a refit). With the
-    // hand-over off the plan drives to the end.
+    // trial note says so, and it is no fallback (the trial stays data for a refit). With
+    // mpc.park-near, not before the car is that near the lot. With the hand-over off the plan
+    // drives to the end.
     void parking_theLawParksTheCarAfterTheSlide() {
         Setup setup;
         setup.profile.mpcModel =
@@ -365,6 +366,33 @@ class TestMpc : public QObject {
         QVERIFY2(note.startsWith(QLatin1String("planned through the model")) &&
                      note.contains(QLatin1String("the feedback law parked it from")),
                  qPrintable(note));
+        // With mpc.park-near (off by default) only once the car is that near the lot.
+        QCOMPARE(setup.profile.mpc.parkingDistance, 0.0);
+        setup.profile.mpc.parkingDistance = 0.2;
+        auto near = setup.mpc();
+        const auto nearSteps = setup.besideTheLaw(*near);
+        QCOMPARE(near->mode(), MpcMode::Parking);
+        const core::PlanarPoseIndices p = *setup.profile.info.pose;
+        const Eigen::VectorXd lot =
+            setup.demonstration->states.row(setup.demonstration->length() - 1).transpose();
+        auto fromLot = [&](const Eigen::VectorXd& o) {
+            return std::hypot(o[p.x] - lot[p.x], o[p.y] - lot[p.y]);
+        };
+        const double nearAtHandOver =
+            fromLot(nearSteps[static_cast<size_t>(near->fallbackStep())].observation);
+        QVERIFY2(nearAtHandOver < 0.2, qPrintable(QString::number(nearAtHandOver)));
+        // At half that distance the hand-over waits until the car is nearer still (or never).
+        setup.profile.mpc.parkingDistance = 0.5 * nearAtHandOver;
+        auto nearer = setup.mpc();
+        const auto planned = setup.besideTheLaw(*nearer);
+        QVERIFY(nearer->fallbackReason().isEmpty());
+        if (nearer->mode() == MpcMode::Parking) {
+            const Eigen::VectorXd& at =
+                planned[static_cast<size_t>(nearer->fallbackStep())].observation;
+            QVERIFY2(fromLot(at) < 0.5 * nearAtHandOver, qPrintable(QString::number(fromLot(at))));
+        }
+        QVERIFY(nearer->fallbackStep() != near->fallbackStep());
+        setup.profile.mpc.parkingDistance = 0.0;
 
         setup.profile.mpc.parkingSpeed = 0.0;
         auto off = setup.mpc();
