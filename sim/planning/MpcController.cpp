@@ -494,12 +494,16 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
         problem_.deviation.bodyVelocity) {
         const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
         const double speed = std::hypot(observation[v.forward], observation[v.lateral]);
-        const core::Demonstration& demo = *problem_.demonstration;
-        const double fromLot =
-            std::hypot(observation[pose.x] - demo.states(demo.length() - 1, pose.x),
-                       observation[pose.y] - demo.states(demo.length() - 1, pose.y));
+        // mpc.park-near: the lot is the demonstration's last pose (as parkingError measures).
+        auto nearTheLot = [&] {
+            const core::Demonstration& demo = *problem_.demonstration;
+            const int end = demo.length() - 1;
+            return std::hypot(observation[pose.x] - demo.states(end, pose.x),
+                              observation[pose.y] - demo.states(end, pose.y)) <
+                   parameters_.parkingDistance;
+        };
         if (speed < parameters_.parkingSpeed &&
-            (parameters_.parkingDistance <= 0.0 || fromLot < parameters_.parkingDistance)) {
+            (parameters_.parkingDistance <= 0.0 || nearTheLot())) {
             mode_ = MpcMode::Parking;
             fallbackStep_ = k;
         }

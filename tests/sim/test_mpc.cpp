@@ -373,10 +373,10 @@ class TestMpc : public QObject {
         const auto nearSteps = setup.besideTheLaw(*near);
         QCOMPARE(near->mode(), MpcMode::Parking);
         const core::PlanarPoseIndices p = *setup.profile.info.pose;
-        const Eigen::VectorXd lot =
-            setup.demonstration->states.row(setup.demonstration->length() - 1).transpose();
         auto fromLot = [&](const Eigen::VectorXd& o) {
-            return std::hypot(o[p.x] - lot[p.x], o[p.y] - lot[p.y]);
+            return parkingError(setup.profile.info, *setup.demonstration, o[p.x], o[p.y],
+                                o[p.heading])
+                .position;
         };
         const double nearAtHandOver =
             fromLot(nearSteps[static_cast<size_t>(near->fallbackStep())].observation);
