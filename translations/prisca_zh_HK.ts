@@ -500,21 +500,31 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="241"/>
+        <source>Approach to the lot</source>
+        <translation>駛近車位</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="243"/>
+        <source>Once the feedback law parks the car, a car that would coast to rest more than this short of the lot is driven on towards it (0: off, the law&apos;s throttle).</source>
+        <translation>回授律停車時，若車滑行停下的位置會比車位短超過此距離，就繼續推車駛向車位（0：關閉，用回授律的油門）。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="257"/>
         <source>Slide worth planning</source>
         <translation>值得規劃的滑行</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="243"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="259"/>
         <source>A demonstration whose largest sideways speed is under this is driven by the feedback law, not planned through (0: every slide is planned).</source>
         <translation>示範的最大側向速度低於此值時，由回饋控制律駕駛，不經模型規劃（0：每次滑行都規劃）。</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="257"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="273"/>
         <source>Refit after each trial</source>
         <translation>每次試驗後重新擬合</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="258"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="274"/>
         <source>Refit the model on the demonstration and the day&apos;s newest trials after each trial.</source>
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>

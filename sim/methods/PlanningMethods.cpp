@@ -235,6 +235,22 @@ const MethodParameter& mpcParkingDistance() {
     return p;
 }
 
+const MethodParameter& mpcParkingApproach() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.park-approach", QT_TRANSLATE_NOOP("MethodParameter", "Approach to the lot"), "m",
+            0.0, 1.0, 2,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Once the feedback law parks the car, a car that would coast to "
+                              "rest more than this short of the lot is driven on towards it (0: "
+                              "off, the law's throttle)."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.parkingApproach); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.parkingApproach = v[0]; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcPlanSlide() {
     static const MethodParameter p = [] {
         MethodParameter p =
@@ -346,10 +362,10 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),    mpcRollouts(),    mpcTube(),         mpcPlanFit(),
-                    mpcPlanSlide(), mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
-                    mpcSegment(),   mpcRollingBias(), mpcParking(),      mpcParkingDistance(),
-                    mpcRefit()};
+    s.parameters = {mpcReplan(),          mpcRollouts(),    mpcTube(),         mpcPlanFit(),
+                    mpcPlanSlide(),       mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
+                    mpcSegment(),         mpcRollingBias(), mpcParking(),      mpcParkingDistance(),
+                    mpcParkingApproach(), mpcRefit()};
     return s;
 }
 

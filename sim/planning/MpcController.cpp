@@ -142,6 +142,41 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
     }
     demonstrationSlide_ =
         largestSidewaysSpeed(*problem_.demonstration, problem_.deviation.bodyVelocity);
+    // The approach to the lot (parkingApproach): the throttle's index, and the way the
+    // demonstration last moved, forwards or backwards, into its last pose.
+    const core::Demonstration& demo = *problem_.demonstration;
+    const int throttle = static_cast<int>(
+        std::find(demo.actionNames.begin(), demo.actionNames.end(), QStringLiteral("throttle")) -
+        demo.actionNames.begin());
+    if (problem_.deviation.bodyVelocity && throttle < demo.actionDimension()) {
+        const int forward = problem_.deviation.bodyVelocity->forward;
+        for (Eigen::Index j = demo.length() - 1; j >= 0 && arrival_ == 0.0; --j) {
+            if (std::abs(demo.states(j, forward)) > 0.05) {
+                arrival_ = std::copysign(1.0, demo.states(j, forward));
+            }
+        }
+        throttle_ = arrival_ != 0.0 ? throttle : -1;
+        // The demonstration's own coast into the lot (the same car): its last stretch with
+        // nothing sent and the car moving; the deceleration less the model's drag over it.
+        const double dt = demo.dt;
+        Eigen::Index last = demo.length() - 1;
+        while (last > 0 && std::abs(demo.states(last, forward)) < 0.1) {
+            --last;
+        }
+        Eigen::Index begin = last;
+        while (begin > 0 && std::abs(demo.actions(begin - 1, throttle)) < 1e-3 &&
+               std::abs(demo.states(begin - 1, forward)) > 0.1) {
+            --begin;
+        }
+        // The commands take effect a dead time later: the first 0.2 s are left out.
+        begin += static_cast<Eigen::Index>(0.2 / dt);
+        if (last - begin >= static_cast<Eigen::Index>(0.4 / dt)) {
+            const double from = std::abs(demo.states(begin, forward));
+            const double to = std::abs(demo.states(last, forward));
+            demonstrationCoast_ = (from - to) / ((last - begin) * dt);
+            demonstrationCoastSpeed_ = 0.5 * (from + to);
+        }
+    }
     reset(core::ResetMode::Cold);
 }
 
@@ -174,6 +209,13 @@ MpcController::MpcController(const MpcController& other)
       refits_(other.refits_),
       step_(other.step_),
       rollingBias_(other.rollingBias_),
+      throttle_(other.throttle_),
+      arrival_(other.arrival_),
+      approachIntegral_(other.approachIntegral_),
+      approaching_(other.approaching_),
+      approachStep_(other.approachStep_),
+      demonstrationCoast_(other.demonstrationCoast_),
+      demonstrationCoastSpeed_(other.demonstrationCoastSpeed_),
       record_(other.record_) {
     buildModel();
     if (other.appliedBias_ != 0.0) {
@@ -198,11 +240,17 @@ QString MpcController::trialNote() const {
                                     ? QStringLiteral("planned through the model (fit %1 cm)")
                                           .arg(100.0 * modelFit_, 0, 'f', 1)
                                     : QStringLiteral("planned through the model");
-        return mode_ == MpcMode::Planning
-                   ? planned
-                   : QStringLiteral("%1; the feedback law parked it from %2 s")
-                         .arg(planned)
-                         .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2);
+        if (mode_ == MpcMode::Planning) {
+            return planned;
+        }
+        const double dt = problem_.demonstration->dt;
+        const QString parked = QStringLiteral("%1; the feedback law parked it from %2 s")
+                                   .arg(planned)
+                                   .arg(fallbackStep_ * dt, 0, 'f', 2);
+        return approachStep_ < 0 ? parked
+                                 : QStringLiteral("%1, pushed on towards the lot from %2 s")
+                                       .arg(parked)
+                                       .arg(approachStep_ * dt, 0, 'f', 2);
     }
     return fallbackStep_ > 0 ? QStringLiteral("the feedback law drove from %1 s: %2")
                                    .arg(fallbackStep_ * problem_.demonstration->dt, 0, 'f', 2)
@@ -340,6 +388,9 @@ void MpcController::reset(core::ResetMode mode) {
     strikes_ = 0;
     spinStrikes_ = 0;
     rollingBias_ = 0.0;
+    approachIntegral_ = 0.0;
+    approaching_ = false;
+    approachStep_ = -1;
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
@@ -357,6 +408,93 @@ void MpcController::reset(core::ResetMode mode) {
                      ? QStringLiteral("the model's fit is unknown")
                      : QStringLiteral("no model to plan through (%1)").arg(noModel_));
     }
+}
+
+double MpcController::approachThrottle(double law) {
+    const double nothing = std::numeric_limits<double>::quiet_NaN();
+    if (!(parameters_.parkingApproach > 0.0) || throttle_ < 0) {
+        return nothing;
+    }
+    const core::Demonstration& demo = *problem_.demonstration;
+    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+    const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
+    const Eigen::VectorXd& now = observations_.back();
+    const double dt = demo.dt;
+    auto value = [&](const char* key) {
+        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
+        for (size_t i = 0; i < specs.size(); ++i) {
+            if (specs[i].key == QLatin1String(key)) {
+                return model_.values[i];
+            }
+        }
+        throw std::invalid_argument(
+            QStringLiteral("mpc's model has no '%1'").arg(QLatin1String(key)).toStdString());
+    };
+    const double mass = value("mass");
+    const double drag = value("drivelineDrag") / mass;                          // [1/s]
+    const double rolling = 9.81 * (value("rollingResistance") + rollingBias_);  // [m/s^2]
+    const double pushPerThrottle = value("maxDriveForce") / mass;               // [m/s^2]
+    // The speed towards the lot (over the last three measurements: one is noisy), and the
+    // distance to go along the lot's heading, both of the time of now (the measurement is the
+    // latency old).
+    const size_t seen = observations_.size();
+    const size_t from = seen - std::min<size_t>(seen, 3);
+    double speed = 0.0;
+    for (size_t i = from; i < seen; ++i) {
+        speed += arrival_ * observations_[i][v.forward] / static_cast<double>(seen - from);
+    }
+    const int end = demo.length() - 1;
+    const double heading = demo.states(end, pose.heading);
+    const double toGo = arrival_ * (std::cos(heading) * (demo.states(end, pose.x) - now[pose.x]) +
+                                    std::sin(heading) * (demo.states(end, pose.y) - now[pose.y])) -
+                        std::max(0.0, speed) * latency_ * dt;
+    // The car coasts at a0 + drag * speed: the model's drag, and the rest of the deceleration
+    // the demonstration's own coast into the lot had (the same car); the model's rolling
+    // resistance for a demonstration that did not coast in.
+    const double a0 = demonstrationCoast_ > 0.0
+                          ? std::max(0.05, demonstrationCoast_ - drag * demonstrationCoastSpeed_)
+                          : std::max(0.05, rolling);
+    // How far the car coasts from a speed: the integral of u du / (a0 + drag u).
+    auto coast = [&](double u) {
+        return drag > 1e-9 ? u / drag - a0 / (drag * drag) * std::log1p(drag * u / a0)
+                           : u * u / (2.0 * a0);
+    };
+    // Pushed once its coast would end more than parkingApproach short, until it ends
+    // kApproachAim short: a car that coasts in about right is the law's alone.
+    constexpr double kApproachAim = 0.02;  // [m]
+    const double coasted = coast(std::max(0.0, speed));
+    if (!approaching_ && toGo - coasted > parameters_.parkingApproach) {
+        approaching_ = true;
+        approachIntegral_ = 0.0;
+        if (approachStep_ < 0) {
+            approachStep_ = step_;
+        }
+    }
+    const double room = toGo - kApproachAim;
+    if (approaching_ && !(room > 0.0 && coasted < room)) {
+        approaching_ = false;
+    }
+    if (!approaching_) {
+        return nothing;
+    }
+    double low = std::max(0.0, speed), high = low + 1.0;
+    while (coast(high) < room) {
+        high *= 2.0;
+    }
+    for (int i = 0; i < 30; ++i) {
+        const double middle = 0.5 * (low + high);
+        (coast(middle) < room ? low : high) = middle;
+    }
+    const double wanted = low;
+    // A PI law on the speed, with the force that holds the speed against the coast's
+    // deceleration fed forward; the integral finds what the model lacks (the ESC's neutral
+    // band, a slower motor). The law's own throttle stands where it pushes harder.
+    const double error = wanted - speed;
+    const double gain = 1.0 / (0.5 * pushPerThrottle);  // the speed within about 0.5 s
+    approachIntegral_ += gain * error * dt;
+    const double hold = (a0 + drag * std::max(0.0, speed)) / pushPerThrottle;
+    const double push = std::clamp(hold + gain * error + approachIntegral_, 0.0, 0.3);
+    return arrival_ * std::max(push, arrival_ * law);
 }
 
 int MpcController::tubeSteps() const {
@@ -510,6 +648,13 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     }
     if (mode_ != MpcMode::Planning) {
         record_ = law;
+        if (mode_ == MpcMode::Parking) {
+            const double approach = approachThrottle(record_.action[throttle_]);
+            if (std::isfinite(approach)) {
+                record_.action[throttle_] = approach;
+                problem_.limits.saturate(record_.action);
+            }
+        }
     } else {
         if (k % parameters_.replanEvery == 0 && std::abs(rollingBias_ - appliedBias_) > 1e-3) {
             applyRollingBias(rollingBias_);

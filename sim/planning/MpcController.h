@@ -134,6 +134,13 @@ struct MpcParameters {
     /// (the tenth round) from 8.54 to 9.54: off (research-log.md, issue 33's eighteenth
     /// step). 0: at any distance.
     double parkingDistance = 0.0;
+    /// Once the feedback law parks the car, a car whose coast would end more than this [m]
+    /// short of the lot (along the lot's heading, the way the demonstration arrived) is pushed
+    /// on until its coast ends 2 cm short: the throttle follows the speed from which the car,
+    /// coasting as the demonstration coasted into the lot, would come to rest there. The law's
+    /// reference follows the car along the path, so it gives a car that slowed short no
+    /// throttle. 0: off.
+    double parkingApproach = 0.1;
 };
 
 /// Who drives a trial now: the plan through the model; the feedback law because the model could
@@ -177,7 +184,8 @@ class MpcController : public core::Controller {
     QString name() const override { return QStringLiteral("mpc"); }
     void reset(core::ResetMode mode = core::ResetMode::Cold) override;
     const core::ControlStep& step(const Eigen::Ref<const Eigen::VectorXd>& observation) override;
-    /// "planned through the model" or "fell back to the feedback law ...: why" (with when).
+    /// "planned through the model" (with when the law parked it and the approach pushed it on)
+    /// or "fell back to the feedback law ...: why" (with when).
     QString trialNote() const override;
     std::unique_ptr<core::Controller> clone() const override;
     void setLoopLatencySteps(int steps) override;
@@ -221,6 +229,10 @@ class MpcController : public core::Controller {
     void predictInto(Plant& model, int from, int count) const;
     void refitOnLastTrial();
     int tubeSteps() const;
+    /// The throttle that carries the parking car on to the lot (parkingApproach), or NaN where
+    /// the feedback law's is kept: the car's coast already ends there, or it is past the lot.
+    /// `law`: the feedback law's throttle this step.
+    double approachThrottle(double law);
     /// The spin guard's verdict on a measured state: empty, or why it is a spin.
     QString spinOf(const Eigen::VectorXd& observation) const;
 
@@ -257,8 +269,15 @@ class MpcController : public core::Controller {
     double demonstrationSlide_ = std::numeric_limits<double>::infinity();  // see planSlide
     int refits_ = 0;
     int step_ = 0;
-    double rollingBias_ = 0.0;  // the estimated extra rolling resistance [1] (this trial's)
-    double appliedBias_ = 0.0;  // ... as the model's plants have it
+    double rollingBias_ = 0.0;       // the estimated extra rolling resistance [1] (this trial's)
+    double appliedBias_ = 0.0;       // ... as the model's plants have it
+    int throttle_ = -1;              // the throttle's action index (-1: none; no approach)
+    double arrival_ = 0.0;           // the demonstration's direction of travel into the lot: +1, -1
+    double approachIntegral_ = 0.0;  // the approach's integral term (this trial's)
+    bool approaching_ = false;       // the approach pushes the car on (this trial's)
+    int approachStep_ = -1;          // the step it first did (-1: it did not)
+    double demonstrationCoast_ = 0.0;       // the demonstration's coast into the lot [m/s^2]
+    double demonstrationCoastSpeed_ = 0.0;  // ... at this mean speed [m/s]
     core::ControlStep record_;
 };
 

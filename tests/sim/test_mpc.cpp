@@ -77,15 +77,20 @@ struct Setup {
         }
         return steps;
     }
-    // One trial of the catalog car at these levels; the parking error [m].
+    // One trial of the catalog car (or `car`) at these levels; the parking error [m].
     double trial(core::Controller& controller, std::uint64_t seed, double level,
-                 core::ResetMode reset = core::ResetMode::Cold) const {
-        auto plant = PlantCatalog::create("slidecar");
+                 core::ResetMode reset = core::ResetMode::Cold,
+                 const PlantParameters* car = nullptr,
+                 std::vector<StepRecord>* steps = nullptr) const {
+        auto plant = car ? PlantCatalog::create(*car) : PlantCatalog::create("slidecar");
         EpisodeSettings s = profile.episode(*demonstration, level, level);
         s.seed = seed;
         s.resetMode = reset;
-        s.recordSteps = false;
+        s.recordSteps = steps != nullptr;
         const EpisodeResult r = runEpisode(*plant, controller, s);
+        if (steps) {
+            *steps = r.steps;
+        }
         const core::PlanarPoseIndices pose = *profile.info.pose;
         return parkingError(profile.info, *demonstration, r.finalState[pose.x],
                             r.finalState[pose.y], r.finalState[pose.heading])
@@ -399,6 +404,68 @@ class TestMpc : public QObject {
         setup.trial(*off, 11, 0.0);
         QCOMPARE(off->mode(), MpcMode::Planning);
         QCOMPARE(off->fallbackStep(), -1);
+    }
+
+    // mpc.park-approach: a car that rolls harder than the demonstration's (and the model's)
+    // comes to rest short of the lot once the law parks it, the law's reference following it
+    // along the path. With the approach on, after the hand-over the throttle pushes it on
+    // towards the lot, the way the demonstration arrived, and it stops nearer. (A car that
+    // coasts in about right gets the law's throttle unchanged:
+    // parking_theLawParksTheCarAfterTheSlide, at the default 0.1 m.)
+    void parkingApproach_carriesACarThatCoastsShortOn() {
+        Setup setup;
+        const PlantParameters model = defaultPlantParameters("slidecar");
+        setup.profile.mpcModel = std::make_shared<const PlantParameters>(model);
+        const PlantParameters car = withValues(
+            model, {{"rollingResistance", 4.0 * model.value(QStringLiteral("rollingResistance"))}});
+        QCOMPARE(setup.profile.mpc.parkingApproach, 0.1);
+        setup.profile.mpc.parkingApproach = 0.0;
+        const core::PlanarPoseIndices p = *setup.profile.info.pose;
+        const core::Demonstration& demo = *setup.demonstration;
+        const int end = demo.length() - 1;
+        // How far short of the lot, along its heading the way the demonstration arrived.
+        const double arrival =
+            std::copysign(1.0, demo.states(end - static_cast<int>(0.5 / demo.dt),
+                                           setup.profile.info.bodyVelocity->forward));
+        auto shortOf = [&](const Eigen::VectorXd& s) {
+            const double heading = demo.states(end, p.heading);
+            return arrival * (std::cos(heading) * (demo.states(end, p.x) - s[p.x]) +
+                              std::sin(heading) * (demo.states(end, p.y) - s[p.y]));
+        };
+        std::vector<StepRecord> off;
+        auto law = setup.mpc();
+        const double parkedByTheLaw = setup.trial(*law, 11, 0.0, core::ResetMode::Cold, &car, &off);
+        QCOMPARE(law->mode(), MpcMode::Parking);
+        const double shortByTheLaw = shortOf(off.back().state);
+        QVERIFY2(shortByTheLaw > 0.08, qPrintable(QString::number(shortByTheLaw)));
+
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.park-approach=0.03"));
+        QCOMPARE(setup.profile.mpc.parkingApproach, 0.03);
+        std::vector<StepRecord> on;
+        auto approach = setup.mpc();
+        const double parked = setup.trial(*approach, 11, 0.0, core::ResetMode::Cold, &car, &on);
+        QCOMPARE(approach->mode(), MpcMode::Parking);
+        const double shortBy = shortOf(on.back().state);
+        // Along the lot's heading it stops near it (this car also misses across: the model's
+        // rolling is a quarter of its own), and no farther from the lot over all.
+        QVERIFY2(std::abs(shortBy) < 0.4 * shortByTheLaw && parked < parkedByTheLaw,
+                 qPrintable(QStringLiteral("%1 m short, %2 m from the lot; the law's %3, %4")
+                                .arg(shortBy)
+                                .arg(parked)
+                                .arg(shortByTheLaw)
+                                .arg(parkedByTheLaw)));
+        // The push: after the hand-over, throttle the way the demonstration arrived.
+        const int throttle = 0;
+        QCOMPARE(demo.actionNames[throttle], QStringLiteral("throttle"));
+        double pushed = 0.0;
+        for (size_t k = static_cast<size_t>(approach->fallbackStep()); k < on.size(); ++k) {
+            pushed = std::max(pushed, arrival * on[k].action[throttle]);
+        }
+        QVERIFY2(pushed > 0.05, qPrintable(QString::number(pushed)));
+        QVERIFY2(approach->trialNote().contains(QLatin1String("pushed on towards the lot from")),
+                 qPrintable(approach->trialNote()));
+        QVERIFY2(!law->trialNote().contains(QLatin1String("pushed on")),
+                 qPrintable(law->trialNote()));
     }
 
     // A model that fits its data worse than the bound is not planned through at all: ILC's
