@@ -145,10 +145,8 @@ MpcController::MpcController(core::TrackingProblem problem, MpcParameters parame
     // The approach to the lot (parkingApproach): the throttle's index, and the way the
     // demonstration last moved, forwards or backwards, into its last pose.
     const core::Demonstration& demo = *problem_.demonstration;
-    const int throttle = static_cast<int>(
-        std::find(demo.actionNames.begin(), demo.actionNames.end(), QStringLiteral("throttle")) -
-        demo.actionNames.begin());
-    if (problem_.deviation.bodyVelocity && throttle < demo.actionDimension()) {
+    const int throttle = static_cast<int>(demo.actionNames.indexOf(QStringLiteral("throttle")));
+    if (problem_.deviation.bodyVelocity && throttle >= 0 && throttle < demo.actionDimension()) {
         const int forward = problem_.deviation.bodyVelocity->forward;
         for (Eigen::Index j = demo.length() - 1; j >= 0 && arrival_ == 0.0; --j) {
             if (std::abs(demo.states(j, forward)) > 0.05) {
@@ -412,7 +410,7 @@ void MpcController::reset(core::ResetMode mode) {
 
 double MpcController::approachThrottle(double law) {
     const double nothing = std::numeric_limits<double>::quiet_NaN();
-    if (!(parameters_.parkingApproach > 0.0) || throttle_ < 0) {
+    if (!(parameters_.parkingApproach > 0.0)) {
         return nothing;
     }
     const core::Demonstration& demo = *problem_.demonstration;
@@ -648,7 +646,7 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     }
     if (mode_ != MpcMode::Planning) {
         record_ = law;
-        if (mode_ == MpcMode::Parking) {
+        if (mode_ == MpcMode::Parking && throttle_ >= 0) {
             const double approach = approachThrottle(record_.action[throttle_]);
             if (std::isfinite(approach)) {
                 record_.action[throttle_] = approach;

@@ -234,7 +234,7 @@ class MpcController : public core::Controller {
     int tubeSteps() const;
     /// The throttle that carries the parking car on to the lot (parkingApproach), or NaN where
     /// the feedback law's is kept: the car's coast already ends there, or it is past the lot.
-    /// `law`: the feedback law's throttle this step.
+    /// `law`: the feedback law's throttle this step. Only with a throttle (`throttle_` >= 0).
     double approachThrottle(double law);
     /// The spin guard's verdict on a measured state: empty, or why it is a spin.
     QString spinOf(const Eigen::VectorXd& observation) const;
