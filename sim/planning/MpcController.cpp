@@ -418,20 +418,11 @@ double MpcController::approachThrottle(double law) {
     const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
     const Eigen::VectorXd& now = observations_.back();
     const double dt = demo.dt;
-    auto value = [&](const char* key) {
-        const std::vector<PlantParameterSpec>& specs = plantParameterSpecs(model_.plant);
-        for (size_t i = 0; i < specs.size(); ++i) {
-            if (specs[i].key == QLatin1String(key)) {
-                return model_.values[i];
-            }
-        }
-        throw std::invalid_argument(
-            QStringLiteral("mpc's model has no '%1'").arg(QLatin1String(key)).toStdString());
-    };
-    const double mass = value("mass");
-    const double drag = value("drivelineDrag") / mass;                          // [1/s]
-    const double rolling = 9.81 * (value("rollingResistance") + rollingBias_);  // [m/s^2]
-    const double pushPerThrottle = value("maxDriveForce") / mass;               // [m/s^2]
+    const double mass = model_.value(QStringLiteral("mass"));
+    const double drag = model_.value(QStringLiteral("drivelineDrag")) / mass;  // [1/s]
+    const double rolling =
+        9.81 * (model_.value(QStringLiteral("rollingResistance")) + rollingBias_);        // [m/s^2]
+    const double pushPerThrottle = model_.value(QStringLiteral("maxDriveForce")) / mass;  // [m/s^2]
     // The speed towards the lot (over the last three measurements: one is noisy), and the
     // distance to go along the lot's heading, both of the time of now (the measurement is the
     // latency old).
