@@ -187,7 +187,7 @@ void MainWindow::updateStatusFields() {
     QString job;
     switch (run_->phase()) {
         case RunPhase::Training:
-            job = tr("Job: training before the run");
+            job = tr("Job: preparing the run (training, or identifying the model)");
             break;
         case RunPhase::Running:
             job = tr("Job: simulated run");

@@ -529,6 +529,16 @@
         <translation>每次試驗後，用示範及當日最新的試驗重新擬合模型。</translation>
     </message>
     <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="288"/>
+        <source>Plan kept while it parks within</source>
+        <translation>計劃停車誤差上限</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="290"/>
+        <source>Once a planned trial parks farther than this from the lot, the next trial is the feedback law&apos;s, and from then on each trial goes to whichever has parked the day&apos;s trials closer (0: the plan drives every trial it may).</source>
+        <translation>按計劃駕駛的試驗一旦停在離車位超過此距離之處，下一次試驗交由回饋律駕駛；此後每次試驗交給當日試驗平均停得較近的一方（0：計劃駕駛每次可駕駛的試驗）。</translation>
+    </message>
+    <message>
         <location filename="../sim/methods/LqrMethod.cpp" line="20"/>
         <source>LQR effort weight R</source>
         <translation>LQR 施力權重 R</translation>
@@ -1651,11 +1661,6 @@
         <translation>不要結束</translation>
     </message>
     <message>
-        <location filename="../app/MainWindowMenus.cpp" line="190"/>
-        <source>Job: training before the run</source>
-        <translation>工作：運行前訓練中</translation>
-    </message>
-    <message>
         <location filename="../app/MainWindowMenus.cpp" line="193"/>
         <source>Job: simulated run</source>
         <translation>工作：模擬運行</translation>
@@ -1731,6 +1736,11 @@
         <location filename="../app/MainWindowMenus.cpp" line="325"/>
         <source>E-STOP reset</source>
         <translation>緊急停止已重設</translation>
+    </message>
+    <message>
+        <location filename="../app/MainWindowMenus.cpp" line="190"/>
+        <source>Job: preparing the run (training, or identifying the model)</source>
+        <translation>工作：準備運行（訓練，或識別模型）</translation>
     </message>
     <message>
         <location filename="../app/MainWindowMenus.cpp" line="213"/>
@@ -3585,328 +3595,334 @@ Do you want to replace it?</source>
 <context>
     <name>prisca::app::RunPanel</name>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="183"/>
-        <location filename="../app/panels/RunPanel.cpp" line="193"/>
+        <location filename="../app/panels/RunPanel.cpp" line="184"/>
+        <location filename="../app/panels/RunPanel.cpp" line="194"/>
         <source>Export run log</source>
         <translation>匯出運行記錄</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="184"/>
+        <location filename="../app/panels/RunPanel.cpp" line="185"/>
         <source>Run logs (*.csv)</source>
         <translation>運行記錄 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="198"/>
+        <location filename="../app/panels/RunPanel.cpp" line="199"/>
         <source>Run log written to %1</source>
         <translation>運行記錄已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="370"/>
+        <location filename="../app/panels/RunPanel.cpp" line="371"/>
         <source>No finished trial to write yet: run first.</source>
         <translation>尚未有完成的試驗可寫入：請先運行。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="413"/>
+        <location filename="../app/panels/RunPanel.cpp" line="420"/>
         <source>Resume (F6)</source>
         <translation>繼續 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="413"/>
+        <location filename="../app/panels/RunPanel.cpp" line="420"/>
         <source>Pause (F6)</source>
         <translation>暫停 (F6)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="311"/>
+        <location filename="../app/panels/RunPanel.cpp" line="312"/>
         <source>The task changed: the previous results were cleared.</source>
         <translation>任務已改變：先前的結果已清除。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="211"/>
+        <location filename="../app/panels/RunPanel.cpp" line="212"/>
         <source>the Run menu</source>
         <translation>「運行」選單</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="242"/>
+        <location filename="../app/panels/RunPanel.cpp" line="243"/>
         <source>Training before the run: %1 of %2...</source>
         <translation>運行前訓練：%1 / %2……</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="243"/>
-        <location filename="../app/panels/RunPanel.cpp" line="403"/>
+        <location filename="../app/panels/RunPanel.cpp" line="244"/>
+        <location filename="../app/panels/RunPanel.cpp" line="409"/>
         <source>Training before the run...</source>
         <translation>運行前訓練中...</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="292"/>
+        <location filename="../app/panels/RunPanel.cpp" line="293"/>
         <source>E-STOP pressed at %1 (%2): nothing runs until Reset E-STOP.</source>
         <translation>%1 按下緊急停止（%2）：按「重設緊急停止」前不會運行任何工作。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="298"/>
+        <location filename="../app/panels/RunPanel.cpp" line="299"/>
         <source>E-STOP was pressed at %1; it is reset now: ready to run.</source>
         <translation>緊急停止曾於 %1 按下；現已重設：可以運行。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="407"/>
+        <location filename="../app/panels/RunPanel.cpp" line="414"/>
         <source>Run stopped.</source>
         <translation>運行已停止。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="415"/>
+        <location filename="../app/panels/RunPanel.cpp" line="422"/>
         <source>Reset (Ctrl+R)</source>
         <translation>重設 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="432"/>
+        <location filename="../app/panels/RunPanel.cpp" line="439"/>
         <source>Stopped after %1 s: not a finished trial</source>
         <translation>在 %1 秒後停止：並非完成的試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="439"/>
+        <location filename="../app/panels/RunPanel.cpp" line="446"/>
         <source>%1 (E-STOP)</source>
         <translation>%1（緊急停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="440"/>
+        <location filename="../app/panels/RunPanel.cpp" line="447"/>
         <source>%1 (stopped)</source>
         <translation>%1（已停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="463"/>
+        <location filename="../app/panels/RunPanel.cpp" line="470"/>
         <source> (cut short by E-STOP)</source>
         <translation>（被緊急停止中斷）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="472"/>
+        <location filename="../app/panels/RunPanel.cpp" line="479"/>
         <source>Trial %1 diverged: its tracking error is %2 times the first trial&apos;s. The learner may have gone unstable; stop the run, or start learning again from the start.</source>
         <translation>第 %1 次試驗發散：其追蹤誤差是第一次試驗的 %2 倍。學習可能已變得不穩定；請停止運行，或由頭再開始學習。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="507"/>
+        <location filename="../app/panels/RunPanel.cpp" line="514"/>
         <source>Trials in a row:</source>
         <translation>連續試驗次數：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="508"/>
+        <location filename="../app/panels/RunPanel.cpp" line="515"/>
         <source>Learners keep what they learnt from one trial to the next.</source>
         <translation>學習方法會把一次試驗學到的保留到下一次。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="509"/>
+        <location filename="../app/panels/RunPanel.cpp" line="516"/>
         <source>Seed:</source>
         <translation>隨機種子：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="511"/>
+        <location filename="../app/panels/RunPanel.cpp" line="518"/>
         <source>Draws the perturbation and sensor noise of each trial; the same seed gives the same trials.</source>
         <translation>決定每次試驗的擾動與感測器噪聲；相同種子產生相同試驗。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="513"/>
+        <location filename="../app/panels/RunPanel.cpp" line="520"/>
         <source>Perturbation:</source>
         <translation>擾動：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="515"/>
+        <location filename="../app/panels/RunPanel.cpp" line="522"/>
         <source>Start offsets, friction and gain variation, trim and actuator noise: 0 nominal, 1 a realistic lab.</source>
         <translation>起始偏移、摩擦與增益變化、微調偏差及致動器噪聲：0 為標稱，1 為真實實驗室水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="517"/>
+        <location filename="../app/panels/RunPanel.cpp" line="524"/>
         <source>Sensor noise:</source>
         <translation>感測器噪聲：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="519"/>
+        <location filename="../app/panels/RunPanel.cpp" line="526"/>
         <source>Measurement noise, latency and dropped samples: 0 perfect, 1 realistic.</source>
         <translation>量測噪聲、延遲及丟失樣本：0 為完美，1 為真實水平。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="521"/>
+        <location filename="../app/panels/RunPanel.cpp" line="528"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="522"/>
+        <location filename="../app/panels/RunPanel.cpp" line="529"/>
         <source>Real time (1x)</source>
         <translation>實時 (1x)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="523"/>
+        <location filename="../app/panels/RunPanel.cpp" line="530"/>
         <source>10x</source>
         <translation>10 倍</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="524"/>
+        <location filename="../app/panels/RunPanel.cpp" line="531"/>
         <source>As fast as possible</source>
         <translation>盡快</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="534"/>
+        <location filename="../app/panels/RunPanel.cpp" line="541"/>
         <source>Stops the run, a recording and the rig at once (within one control period) and stays engaged until reset. Space outside text fields, or Esc.</source>
         <translation>立即停止運行、錄製及實機（在一個控制週期內），並保持啟動直至重設。在文字欄以外按空格鍵，或按 Esc。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="412"/>
+        <location filename="../app/panels/RunPanel.cpp" line="419"/>
         <source>Run (F5)</source>
         <translation>運行 (F5)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="197"/>
-        <location filename="../app/panels/RunPanel.cpp" line="249"/>
-        <location filename="../app/panels/RunPanel.cpp" line="291"/>
-        <location filename="../app/panels/RunPanel.cpp" line="297"/>
-        <location filename="../app/panels/RunPanel.cpp" line="310"/>
-        <location filename="../app/panels/RunPanel.cpp" line="321"/>
-        <location filename="../app/panels/RunPanel.cpp" line="357"/>
-        <location filename="../app/panels/RunPanel.cpp" line="403"/>
-        <location filename="../app/panels/RunPanel.cpp" line="407"/>
-        <location filename="../app/panels/RunPanel.cpp" line="448"/>
+        <location filename="../app/panels/RunPanel.cpp" line="198"/>
+        <location filename="../app/panels/RunPanel.cpp" line="250"/>
+        <location filename="../app/panels/RunPanel.cpp" line="292"/>
+        <location filename="../app/panels/RunPanel.cpp" line="298"/>
+        <location filename="../app/panels/RunPanel.cpp" line="311"/>
+        <location filename="../app/panels/RunPanel.cpp" line="322"/>
+        <location filename="../app/panels/RunPanel.cpp" line="358"/>
+        <location filename="../app/panels/RunPanel.cpp" line="406"/>
+        <location filename="../app/panels/RunPanel.cpp" line="409"/>
+        <location filename="../app/panels/RunPanel.cpp" line="414"/>
+        <location filename="../app/panels/RunPanel.cpp" line="455"/>
         <source>Run</source>
         <translation>運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="233"/>
+        <location filename="../app/panels/RunPanel.cpp" line="234"/>
         <source>Trial 1 of %1 running...</source>
         <translation>正在進行第 1 次試驗（共 %1 次）……</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="234"/>
+        <location filename="../app/panels/RunPanel.cpp" line="235"/>
         <source>Trial %1 of %2 running · %3</source>
         <translation>正在進行第 %1 次試驗（共 %2 次）· %3</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="250"/>
+        <location filename="../app/panels/RunPanel.cpp" line="251"/>
         <source>Run finished: 1 trial.</source>
         <translation>運行完成：1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="251"/>
+        <location filename="../app/panels/RunPanel.cpp" line="252"/>
         <source>Run finished: %1 trials.</source>
         <translation>運行完成：%1 次試驗。</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="358"/>
+        <location filename="../app/panels/RunPanel.cpp" line="359"/>
         <source>Run started: %1, %2 trial(s), seed %3, perturbation %4, sensor noise %5</source>
         <translation>運行開始：%1，%2 次試驗，種子 %3，擾動 %4，感測器雜訊 %5</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="414"/>
+        <location filename="../app/panels/RunPanel.cpp" line="407"/>
+        <source>Identifying the car&apos;s model before the run...</source>
+        <translation>運行前識別車輛模型中...</translation>
+    </message>
+    <message>
+        <location filename="../app/panels/RunPanel.cpp" line="421"/>
         <source>Stop (Shift+F5)</source>
         <translation>停止 (Shift+F5)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="446"/>
+        <location filename="../app/panels/RunPanel.cpp" line="453"/>
         <source>tracking RMS %1 m</source>
         <translation>追蹤 RMS %1 m</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="449"/>
+        <location filename="../app/panels/RunPanel.cpp" line="456"/>
         <source>Trial %1: parked %2 cm and %3 deg off; %4</source>
         <translation>試驗 %1：泊車偏差 %2 cm 及 %3 度；%4</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="454"/>
+        <location filename="../app/panels/RunPanel.cpp" line="461"/>
         <source>Trial %1: %2</source>
         <translation>試驗 %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="457"/>
+        <location filename="../app/panels/RunPanel.cpp" line="464"/>
         <source>; ran out %1 s in neutral, scored where it rests</source>
         <translation>；油門回中後滑行 %1 秒，以停定的位置計分</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="464"/>
+        <location filename="../app/panels/RunPanel.cpp" line="471"/>
         <source> (stopped part-way)</source>
         <translation>（中途停止）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="526"/>
+        <location filename="../app/panels/RunPanel.cpp" line="533"/>
         <source>Export run log...</source>
         <translation>匯出運行記錄...</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="528"/>
+        <location filename="../app/panels/RunPanel.cpp" line="535"/>
         <source>Every control step of the last run&apos;s finished trials, in the format of prisca-cli run --out (state, observation, reference, error, u, u*, cost, θ)</source>
         <translation>上次運行中已完成試驗的每一個控制步，格式與 prisca-cli run --out 相同（狀態、觀測、參考、誤差、u、u*、成本、θ）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="531"/>
+        <location filename="../app/panels/RunPanel.cpp" line="538"/>
         <source>Stop the run and clear the trails, charts and results (Ctrl+R)</source>
         <translation>停止運行並清除軌跡、圖表和結果 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="532"/>
+        <location filename="../app/panels/RunPanel.cpp" line="539"/>
         <source>E-STOP (Space / Esc)</source>
         <translation>緊急停止（空格鍵 / Esc）</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="536"/>
+        <location filename="../app/panels/RunPanel.cpp" line="543"/>
         <source>Reset E-STOP</source>
         <translation>重設緊急停止</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="537"/>
+        <location filename="../app/panels/RunPanel.cpp" line="544"/>
         <source>Stop the run</source>
         <translation>停止運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="538"/>
+        <location filename="../app/panels/RunPanel.cpp" line="545"/>
         <source>Start learning again</source>
         <translation>重新開始學習</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="540"/>
+        <location filename="../app/panels/RunPanel.cpp" line="547"/>
         <source>Stop this run and start a new one: the method starts again from its initial policy</source>
         <translation>停止本次運行並開始新的一次：方法由其初始策略重新開始</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="541"/>
+        <location filename="../app/panels/RunPanel.cpp" line="548"/>
         <source>Release the E-STOP latch so a run can start again</source>
         <translation>解除緊急停止鎖定，以便再次開始運行</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="544"/>
+        <location filename="../app/panels/RunPanel.cpp" line="551"/>
         <source>Trial</source>
         <translation>試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="544"/>
+        <location filename="../app/panels/RunPanel.cpp" line="551"/>
         <source>Δp [cm]</source>
         <translation>Δp [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="544"/>
+        <location filename="../app/panels/RunPanel.cpp" line="551"/>
         <source>Δψ [deg]</source>
         <translation>Δψ [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="545"/>
+        <location filename="../app/panels/RunPanel.cpp" line="552"/>
         <source>RMS [m]</source>
         <translation>RMS [米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="545"/>
+        <location filename="../app/panels/RunPanel.cpp" line="552"/>
         <source>RMS [rad]</source>
         <translation>RMS [弧度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="547"/>
+        <location filename="../app/panels/RunPanel.cpp" line="554"/>
         <source>Trial in the run</source>
         <translation>本次運行中的試驗</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="547"/>
+        <location filename="../app/panels/RunPanel.cpp" line="554"/>
         <source>Final position error: distance from the lot [cm]</source>
         <translation>最終位置誤差：與泊車位的距離 [厘米]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="548"/>
+        <location filename="../app/panels/RunPanel.cpp" line="555"/>
         <source>Final heading error [deg]</source>
         <translation>最終航向誤差 [度]</translation>
     </message>
     <message>
-        <location filename="../app/panels/RunPanel.cpp" line="548"/>
+        <location filename="../app/panels/RunPanel.cpp" line="555"/>
         <source>Time-aligned RMS tracking error over the trial</source>
         <translation>整次試驗按時間對齊的均方根追蹤誤差</translation>
     </message>
@@ -3919,32 +3935,32 @@ Do you want to replace it?</source>
         <translation>緊急停止已啟動：開始運行前請先重設。</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="80"/>
+        <location filename="../app/workers/RunWorker.cpp" line="81"/>
         <source>Cannot start the run: %1</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="94"/>
+        <location filename="../app/workers/RunWorker.cpp" line="100"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="173"/>
+        <location filename="../app/workers/RunWorker.cpp" line="179"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="222"/>
+        <location filename="../app/workers/RunWorker.cpp" line="228"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="247"/>
+        <location filename="../app/workers/RunWorker.cpp" line="253"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="265"/>
+        <location filename="../app/workers/RunWorker.cpp" line="271"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>

@@ -8,6 +8,7 @@
 #include "app/widgets/ModalDialog.h"
 #include "app/workers/RunThread.h"
 #include "core/RunLogCsv.h"
+#include "sim/MethodCatalog.h"
 
 #include <QAction>
 #include <QApplication>
@@ -400,7 +401,13 @@ void RunPanel::updateButtons(RunPhase phase) {
         return;
     }
     if (phase == RunPhase::Training) {
-        showStatus(status_, tr("Run"), [this] { return tr("Training before the run..."); });
+        const sim::MethodSpec* method = sim::MethodCatalog::find(session_.method());
+        if (method && method->plansThroughModel && !method->trainsOffline()) {
+            showStatus(status_, tr("Run"),
+                       [this] { return tr("Identifying the car's model before the run..."); });
+        } else {
+            showStatus(status_, tr("Run"), [this] { return tr("Training before the run..."); });
+        }
     } else if (phase == RunPhase::Idle && previous != RunPhase::Idle &&
                previous != RunPhase::EmergencyStopped && !finishedSeen_) {
         // Ended without finishing and without E-STOP (which says so itself): stopped.

@@ -54,8 +54,9 @@ void RunWorker::start(const RunRequest& request) {
         // trials' seeds, the training, the run log.
         setup_.emplace(request_.task, request_.method, request_.settings);
         plant_ = setup_->makePlant();
-        // Offline methods train first, on seeds the run never uses.
-        if (setup_->method().trainsOffline()) {
+        // Offline methods train first, on seeds the run never uses; a method that plans through
+        // a model identifies it first (seconds). Either is work under way for E-STOP.
+        if (setup_->method().trainsOffline() || setup_->method().plansThroughModel) {
             setPhase(RunPhase::Training);
         }
         controller_ = setup_->makeController(
@@ -78,6 +79,11 @@ void RunWorker::start(const RunRequest& request) {
     } catch (const std::exception& e) {
         setPhase(RunPhase::Idle);
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
+        return;
+    }
+    if (emergency_.load()) {
+        // E-STOP while the controller was made (a model identified to its end): no trial starts.
+        enterEmergencyStop();
         return;
     }
     runLog_ = setup_->startRunLog(*controller_, request_.trials, request_.demonstrationSource);

@@ -61,8 +61,11 @@ struct LiveSample {
 
 /// What the worker is doing.
 enum class RunPhase {
-    Idle,              ///< nothing to run (finished, stopped or never started)
-    Training,          ///< training an offline method (PD (selected), PEGASUS) before the run
+    Idle,  ///< nothing to run (finished, stopped or never started)
+    /// Preparing before the first step: training an offline method (PD (selected), PEGASUS), or
+    /// identifying the model a method plans through (mpc). Work under way: E-STOP wins over
+    /// every menu and dialog, as while running.
+    Training,
     Running,           ///< stepping the plant
     Paused,            ///< stepping suspended; resume() continues the same trial
     EmergencyStopped,  ///< E-STOP: stepping stopped, latched until resetEmergencyStop()

@@ -210,6 +210,33 @@ class TestGuiEmergency : public QObject {
         guide->close();
     }
 
+    // A method that plans through a model identifies it when the run starts (seconds): that is
+    // work under way, so Space in an open menu is E-STOP then too, and no trial starts after it.
+    void emergencyStop_winsWhileTheRunIdentifiesItsModel() {
+        Window w;
+        w.setSpeedIndex(0);
+        auto* method = w.find<QComboBox>("method");
+        method->setCurrentIndex(method->findData(QStringLiteral("mpc")));
+        emit method->activated(method->currentIndex());
+        QCOMPARE(w.window.session().method(), QStringLiteral("mpc"));
+        w.find<QSpinBox>("trials")->setValue(3);
+        const RunWorker* worker = w.window.run().worker();
+        w.find<RunPanel>("runPanel")->startRun();
+        QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::Training, kRunTimeoutMs);
+        QVERIFY(!w.window.workInProgress().isEmpty());
+        QMenu* runMenu = w.window.menuBar()->findChild<QMenu*>(QStringLiteral("runMenu"));
+        QVERIFY(runMenu);
+        runMenu->popup(w.window.mapToGlobal(QPoint(40, 40)));
+        QTRY_VERIFY(QApplication::activePopupWidget() == runMenu);
+        QTest::keyClick(runMenu, Qt::Key_Space);
+        QVERIFY(w.window.emergencyStop().isLatched());
+        QTRY_VERIFY(QApplication::activePopupWidget() == nullptr);
+        QTRY_COMPARE_WITH_TIMEOUT(w.window.run().phase(), RunPhase::EmergencyStopped,
+                                  kRunTimeoutMs);
+        QCOMPARE(worker->stepsTaken(), 0);
+        resetEmergencyStop(w);
+    }
+
     void emergencyStop_winsOverTheReplayWindow() {
         Window w;
         // A finished simulated trial leaves a bundle (the trials are kept as bundles).
