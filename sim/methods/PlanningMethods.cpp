@@ -281,6 +281,24 @@ const MethodParameter& mpcRefit() {
     return p;
 }
 
+const MethodParameter& mpcPlanTrust() {
+    static const MethodParameter p = [] {
+        MethodParameter p = real(
+            "mpc.plan-trust",
+            QT_TRANSLATE_NOOP("MethodParameter", "Plan kept while it parks within"), "cm", 0.0,
+            500.0, 1,
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Once a planned trial parks farther than this from the lot, the "
+                              "next trial is the feedback law's, and from then on each trial "
+                              "goes to whichever has parked the day's trials closer (0: the plan "
+                              "drives every trial it may)."));
+        p.get = [](const MethodTuning& f) { return one(100.0 * f.mpc.planTrust); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.planTrust = v[0] / 100.0; };
+        return p;
+    }();
+    return p;
+}
+
 Made makeOracle(const MethodSpec&, const MethodInput& in) {
     const MethodTuning& profile = in.profile;
     const auto& demonstration = in.demonstration;
@@ -365,7 +383,7 @@ MethodSpec mpcMethod() {
     s.parameters = {mpcReplan(),          mpcRollouts(),    mpcTube(),         mpcPlanFit(),
                     mpcPlanSlide(),       mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
                     mpcSegment(),         mpcRollingBias(), mpcParking(),      mpcParkingDistance(),
-                    mpcParkingApproach(), mpcRefit()};
+                    mpcParkingApproach(), mpcPlanTrust(),   mpcRefit()};
     return s;
 }
 

@@ -214,6 +214,7 @@ MpcController::MpcController(const MpcController& other)
       approachStep_(other.approachStep_),
       demonstrationCoast_(other.demonstrationCoast_),
       demonstrationCoastSpeed_(other.demonstrationCoastSpeed_),
+      day_(other.day_),
       record_(other.record_) {
     buildModel();
     if (other.appliedBias_ != 0.0) {
@@ -372,7 +373,9 @@ void MpcController::reset(core::ResetMode mode) {
         modelFit_ = firstFit_;
         data_ = firstData_;
         refits_ = 0;
+        day_ = {};
     } else if (step_ > 0) {
+        recordLastTrial();
         refitOnLastTrial();
     }
     latency_ = pendingLatency_;
@@ -405,7 +408,61 @@ void MpcController::reset(core::ResetMode mode) {
         fallBack(noModel_.isEmpty()
                      ? QStringLiteral("the model's fit is unknown")
                      : QStringLiteral("no model to plan through (%1)").arg(noModel_));
+    } else if (const QString why = dayPrefersStartLaw(); !why.isEmpty()) {
+        fallBack(why);
     }
+}
+
+void MpcController::recordLastTrial() {
+    if (observations_.empty() || !problem_.deviation.pose) {
+        return;
+    }
+    // The distance from the lot as the last measurement has it (the car is at rest by the
+    // trial's end, or what is left of its motion counts against whoever drove it).
+    const core::Demonstration& demo = *problem_.demonstration;
+    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
+    const int end = demo.length() - 1;
+    const Eigen::VectorXd& last = observations_.back();
+    const double miss = std::hypot(last[pose.x] - demo.states(end, pose.x),
+                                   last[pose.y] - demo.states(end, pose.y));
+    const bool startLawDrove = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
+    (startLawDrove ? day_.startLaw : day_.planned).push_back(miss);
+}
+
+QString MpcController::dayPrefersStartLaw() const {
+    if (!(parameters_.planTrust > 0.0) || day_.planned.empty()) {
+        return {};
+    }
+    auto mean = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (const double x : v) {
+            sum += x;
+        }
+        return sum / static_cast<double>(v.size());
+    };
+    // "trial 5.0 cm" or "3 trials 5.0 cm ... on average"
+    auto trials = [&](const std::vector<double>& v) {
+        return v.size() == 1
+                   ? QStringLiteral("trial %1 cm from the lot").arg(100.0 * v.front(), 0, 'f', 1)
+                   : QStringLiteral("%1 trials %2 cm from the lot on average")
+                         .arg(v.size())
+                         .arg(100.0 * mean(v), 0, 'f', 1);
+    };
+    const double planned = mean(day_.planned);
+    if (day_.startLaw.empty()) {
+        if (planned <= parameters_.planTrust) {
+            return {};
+        }
+        return QStringLiteral("the plan parked this day's %1, more than the %2 cm it may")
+            .arg(trials(day_.planned))
+            .arg(100.0 * parameters_.planTrust, 0, 'f', 1);
+    }
+    if (planned <= mean(day_.startLaw)) {
+        return {};
+    }
+    return QStringLiteral("the start law parked this day's %1, the plan its %2")
+        .arg(trials(day_.startLaw))
+        .arg(trials(day_.planned));
 }
 
 double MpcController::approachThrottle(double law) {

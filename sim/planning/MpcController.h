@@ -79,8 +79,10 @@ struct MpcParameters {
     /// through at all: the start law drives the whole trial. On the development cells with the
     /// reality gap the models that fitted worse than about 3.5 cm planned the car into spins
     /// 1.7-5.4 m from the lot, where a feedback law from the start parked within 20 cm
-    /// (docs/research-log.md, issue 33's twelfth step).
-    double planFit = 0.03;
+    /// (docs/research-log.md, issue 33's twelfth step); 3 cm until the day's trials could take a
+    /// plan that parks badly off the car (`planTrust`): with it, 4.5 cm took 136 seen cells
+    /// from 10.04 cm to 8.42, where 7 cm let single trials spin metres away (twentieth step).
+    double planFit = 0.045;
     /// A demonstration whose largest sideways speed [m/s] is under this is not planned
     /// through: the start law drives every trial. The plan is for the slide a feedback law
     /// cannot hold. On the third and fourth held-out rounds' cars (then seen; 4 trials a cell)
@@ -144,6 +146,22 @@ struct MpcParameters {
     /// short instead was worse on 37 of the 67 (research-log.md, issue 33's nineteenth step).
     /// 0: off.
     double parkingApproach = 0.1;
+    /// The day's trials choose who drives: once a planned trial has parked farther than this
+    /// [m] from the lot (measured, as the camera sees the car at the trial's end), the next
+    /// trial is the start law's, and from then on each trial goes to whichever of the two has
+    /// parked the day's trials closer on average (the plan on a tie). A model that fits its
+    /// data well can still plan one car's slide wrongly every trial (the tube left at the same
+    /// moment each time) where the start law parks it; the fit alone does not tell the two
+    /// apart (docs/research-log.md, issue 33's twentieth step). 0: the plan drives every trial
+    /// it may.
+    double planTrust = 0.1;
+};
+
+/// What the day's trials gave each driver: the measured distance [m] from the lot at each
+/// trial's end, the planned trials' and the start law's. Plain data.
+struct MpcDayRecord {
+    std::vector<double> planned;
+    std::vector<double> startLaw;
 };
 
 /// Who drives a trial now: the plan through the model; the feedback law because the model could
@@ -212,6 +230,8 @@ class MpcController : public core::Controller {
     int turnStart() const { return turnStart_; }
     /// The model's steering offset this trial (steeringBiasGain), share of full lock.
     double steeringBias() const { return steeringBias_; }
+    /// What this day's finished trials gave the plan and the start law (planTrust's choice).
+    const MpcDayRecord& dayRecord() const { return day_; }
 
   private:
     void buildModel();
@@ -231,6 +251,10 @@ class MpcController : public core::Controller {
     /// stepped through `count` commands sent from step `from - latency` on.
     void predictInto(Plant& model, int from, int count) const;
     void refitOnLastTrial();
+    /// Adds the trial just finished to the day's record (planTrust).
+    void recordLastTrial();
+    /// Why the day's record sends this trial to the start law (planTrust), or empty.
+    QString dayPrefersStartLaw() const;
     int tubeSteps() const;
     /// The throttle that carries the parking car on to the lot (parkingApproach), or NaN where
     /// the feedback law's is kept: the car's coast already ends there, or it is past the lot.
@@ -281,6 +305,7 @@ class MpcController : public core::Controller {
     int approachStep_ = -1;          // the step it first did (-1: it did not)
     double demonstrationCoast_ = 0.0;       // the demonstration's coast into the lot [m/s^2]
     double demonstrationCoastSpeed_ = 0.0;  // ... at this mean speed [m/s]
+    MpcDayRecord day_;                      // the day's finished trials (planTrust)
     core::ControlStep record_;
 };
 

@@ -602,6 +602,73 @@ class TestMpc : public QObject {
         QCOMPARE(fixed->model().values, off.values);
     }
 
+    // mpc.plan-trust: the day's trials choose who drives. A planned trial that parks farther
+    // than the bound sends the next trial to the start law; after that the one with the lower
+    // mean of the day drives (the plan on a tie). Each trial's measured miss is recorded for
+    // whoever drove it; a copy keeps the day, a cold reset forgets it; off (0) the plan drives
+    // every trial.
+    void planTrust_theDaysTrialsChooseWhoDrives() {
+        Setup setup;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        QCOMPARE(setup.profile.mpc.planTrust, 0.1);
+        setup.profile.mpc.planTrust = 0.0;
+        auto planned = [](const MpcController& c) {
+            return !(c.mode() == MpcMode::Fallback && c.fallbackStep() == 0);
+        };
+        auto off = setup.mpc();
+        for (int t = 0; t < 3; ++t) {
+            setup.trial(*off, 5 + t, 1.0,
+                        t == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart);
+            QVERIFY(planned(*off));
+        }
+
+        // A bound no trial meets: the second trial is the start law's.
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.plan-trust=0.1"));
+        QCOMPARE(setup.profile.mpc.planTrust, 0.001);
+        auto mpc = setup.mpc();
+        const double first = setup.trial(*mpc, 5, 1.0, core::ResetMode::Cold);
+        QVERIFY(planned(*mpc));
+        QVERIFY(mpc->dayRecord().planned.empty() && mpc->dayRecord().startLaw.empty());
+        const double second = setup.trial(*mpc, 6, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(mpc->dayRecord().planned.size(), size_t{1});
+        QVERIFY(mpc->dayRecord().startLaw.empty());
+        // The record is the measured miss: the camera's view of where the trial ended.
+        QVERIFY2(std::abs(mpc->dayRecord().planned[0] - first) < 0.01,
+                 qPrintable(
+                     QStringLiteral("%1 against %2").arg(mpc->dayRecord().planned[0]).arg(first)));
+        QVERIFY(!planned(*mpc));
+        QVERIFY2(mpc->trialNote().contains(QLatin1String("more than the 0.1 cm it may")),
+                 qPrintable(mpc->trialNote()));
+        setup.trial(*mpc, 7, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(mpc->dayRecord().startLaw.size(), size_t{1});
+        QVERIFY(std::abs(mpc->dayRecord().startLaw[0] - second) < 0.01);
+        const bool planWins = mpc->dayRecord().planned[0] <= mpc->dayRecord().startLaw[0];
+        QCOMPARE(planned(*mpc), planWins);
+        if (!planWins) {
+            QVERIFY2(
+                mpc->trialNote().contains(QLatin1String("the start law parked this day's trial ")),
+                qPrintable(mpc->trialNote()));
+        }
+        auto copy = mpc->clone();
+        auto* copied = dynamic_cast<MpcController*>(copy.get());
+        QVERIFY(copied);
+        QCOMPARE(copied->dayRecord().planned, mpc->dayRecord().planned);
+        QCOMPARE(copied->dayRecord().startLaw, mpc->dayRecord().startLaw);
+        mpc->reset(core::ResetMode::Cold);
+        QVERIFY(mpc->dayRecord().planned.empty() && mpc->dayRecord().startLaw.empty());
+        QVERIFY(planned(*mpc));
+
+        // A bound every trial meets: the plan keeps the day.
+        MethodCatalog::setParameter(setup.profile, QStringLiteral("mpc.plan-trust=500"));
+        auto trusted = setup.mpc();
+        for (int t = 0; t < 3; ++t) {
+            setup.trial(*trusted, 5 + t, 1.0,
+                        t == 0 ? core::ResetMode::Cold : core::ResetMode::WarmStart);
+            QVERIFY(planned(*trusted));
+        }
+    }
+
     // Without a model it identifies one from the demonstration; a plant identification does
     // not know is refused with the reason.
     void noModel_identifiesFromTheDemonstration() {
