@@ -106,9 +106,9 @@ const core::FeatureMap& MethodCatalog::featuresOf(const MethodTuning& profile,
 std::unique_ptr<core::Controller> MethodCatalog::create(
     const QString& method, const MethodTuning& profile,
     std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
-    const Eigen::MatrixXd* theta) {
+    const Eigen::MatrixXd* theta, const std::function<bool()>& cancelled) {
     const MethodSpec& s = get(method);
-    return s.create(s, MethodInput{profile, std::move(demonstration), fittedB, theta});
+    return s.create(s, MethodInput{profile, std::move(demonstration), fittedB, theta, cancelled});
 }
 
 std::vector<const MethodParameter*> MethodCatalog::parameters() {

@@ -6,6 +6,7 @@
 
 #include <QStringList>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -45,7 +46,7 @@ class MethodCatalog {
     static std::unique_ptr<core::Controller> create(
         const QString& method, const MethodTuning& profile,
         std::shared_ptr<const core::Demonstration> demonstration, const Eigen::MatrixXd& fittedB,
-        const Eigen::MatrixXd* theta = nullptr);
+        const Eigen::MatrixXd* theta = nullptr, const std::function<bool()>& cancelled = {});
 };
 
 }  // namespace prisca::sim

@@ -349,7 +349,8 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     } else {
         const PlantParameters prior =
             profile.mpcPrior ? *profile.mpcPrior : defaultPlantParameters(profile.info.name);
-        const IdentificationResult identified = identifyForMpc(data, prior, profile.mpc);
+        const IdentificationResult identified =
+            identifyForMpc(data, prior, profile.mpc, in.cancelled);
         if (identified.ok()) {
             model = identified.parameters;
             fit = identified.positionRms;

@@ -56,16 +56,20 @@ IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters
 }
 
 IdentificationResult identifyForMpc(const std::vector<core::Demonstration>& data,
-                                    const PlantParameters& prior, const MpcParameters& parameters) {
+                                    const PlantParameters& prior, const MpcParameters& parameters,
+                                    const std::function<bool()>& cancelled) {
+    const IdentificationProgress goOn = [&cancelled](long long, long long) {
+        return !(cancelled && cancelled());
+    };
     IdentificationResult quick =
-        identifyPlant(data, prior, mpcIdentificationSettings(parameters, false));
+        identifyPlant(data, prior, mpcIdentificationSettings(parameters, false), goOn);
     if (!quick.ok() || quick.positionRms <= parameters.poorFit || parameters.retryEvaluations < 1) {
         return quick;
     }
     IdentificationSettings thorough = mpcIdentificationSettings(parameters, false);
     thorough.evaluationsPerStart = parameters.retryEvaluations;
     thorough.restarts = 2;
-    IdentificationResult again = identifyPlant(data, prior, thorough);
+    IdentificationResult again = identifyPlant(data, prior, thorough, goOn);
     return again.ok() && again.positionRms < quick.positionRms ? again : quick;
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <QString>
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -325,7 +326,9 @@ IdentificationSettings mpcIdentificationSettings(const MpcParameters& parameters
 
 /// `mpc`'s model from its data (the demonstration): the quick search, and when that fits worse
 /// than `poorFit` a thorough one from the same prior (retryEvaluations), the better kept.
+/// `cancelled` (optional), asked now and then, stops it: the result says it was cancelled.
 IdentificationResult identifyForMpc(const std::vector<core::Demonstration>& data,
-                                    const PlantParameters& prior, const MpcParameters& parameters);
+                                    const PlantParameters& prior, const MpcParameters& parameters,
+                                    const std::function<bool()>& cancelled = {});
 
 }  // namespace prisca::sim

@@ -131,8 +131,13 @@ std::unique_ptr<core::Controller> RunSetup::makeController(
     if (method_->trainsOffline() && cancelled && cancelled()) {
         return nullptr;
     }
-    return MethodCatalog::create(method_->id, profile, task_.demonstration, task_.fit.b,
-                                 pegasusTheta.size() ? &pegasusTheta : nullptr);
+    auto controller =
+        MethodCatalog::create(method_->id, profile, task_.demonstration, task_.fit.b,
+                              pegasusTheta.size() ? &pegasusTheta : nullptr, cancelled);
+    if (cancelled && cancelled()) {
+        return nullptr;  // stopped while it was made (an identification cut short)
+    }
+    return controller;
 }
 
 std::unique_ptr<core::Controller> RunSetup::makeUntrainedController() const {

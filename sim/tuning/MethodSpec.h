@@ -9,6 +9,7 @@
 
 #include <QString>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct MethodInput {
     std::shared_ptr<const core::Demonstration> demonstration;
     const Eigen::MatrixXd& fittedB;
     const Eigen::MatrixXd* theta = nullptr;
+    /// Asked now and then by a method that takes long to make (mpc identifies its model): true
+    /// stops it (the run was stopped or E-STOP pressed); the controller made is then not used.
+    std::function<bool()> cancelled = {};
 };
 
 /// One method: everything the window, the CLI, Table I and the learning curves need to know of
