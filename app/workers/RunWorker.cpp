@@ -81,11 +81,6 @@ void RunWorker::start(const RunRequest& request) {
         emit failed(tr("Cannot start the run: %1").arg(QString::fromStdString(e.what())));
         return;
     }
-    if (emergency_.load()) {
-        // E-STOP while the controller was made (a model identified to its end): no trial starts.
-        enterEmergencyStop();
-        return;
-    }
     runLog_ = setup_->startRunLog(*controller_, request_.trials, request_.demonstrationSource);
     trial_ = 0;
     runTimeOffset_ = 0.0;

@@ -6,11 +6,22 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 namespace prisca::sim {
 
 namespace {
+
+// How far a measured position is from the lot (the demonstration's last pose), as parkingError
+// measures a trial.
+double distanceFromLot(const core::TrackingProblem& problem, const Eigen::VectorXd& observation) {
+    const core::Demonstration& demo = *problem.demonstration;
+    const core::PlanarPoseIndices pose = *problem.deviation.pose;
+    const int end = demo.length() - 1;
+    return std::hypot(observation[pose.x] - demo.states(end, pose.x),
+                      observation[pose.y] - demo.states(end, pose.y));
+}
 
 // Where the model's rolling resistance is among its parameters.
 int rollingIndex(const PlantParameters& model) {
@@ -423,12 +434,7 @@ void MpcController::recordLastTrial() {
     }
     // The distance from the lot as the last measurement has it (the car is at rest by the
     // trial's end, or what is left of its motion counts against whoever drove it).
-    const core::Demonstration& demo = *problem_.demonstration;
-    const core::PlanarPoseIndices pose = *problem_.deviation.pose;
-    const int end = demo.length() - 1;
-    const Eigen::VectorXd& last = observations_.back();
-    const double miss = std::hypot(last[pose.x] - demo.states(end, pose.x),
-                                   last[pose.y] - demo.states(end, pose.y));
+    const double miss = distanceFromLot(problem_, observations_.back());
     const bool startLawDrove = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
     (startLawDrove ? day_.startLaw : day_.planned).push_back(miss);
 }
@@ -438,11 +444,7 @@ QString MpcController::dayPrefersStartLaw() const {
         return {};
     }
     auto mean = [](const std::vector<double>& v) {
-        double sum = 0.0;
-        for (const double x : v) {
-            sum += x;
-        }
-        return sum / static_cast<double>(v.size());
+        return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
     };
     // "trial 5.0 cm" or "3 trials 5.0 cm ... on average"
     auto trials = [&](const std::vector<double>& v) {
@@ -683,15 +685,9 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
         const core::BodyVelocityIndices v = *problem_.deviation.bodyVelocity;
         const double speed = std::hypot(observation[v.forward], observation[v.lateral]);
         // mpc.park-near: the lot is the demonstration's last pose (as parkingError measures).
-        auto nearTheLot = [&] {
-            const core::Demonstration& demo = *problem_.demonstration;
-            const int end = demo.length() - 1;
-            return std::hypot(observation[pose.x] - demo.states(end, pose.x),
-                              observation[pose.y] - demo.states(end, pose.y)) <
-                   parameters_.parkingDistance;
-        };
         if (speed < parameters_.parkingSpeed &&
-            (parameters_.parkingDistance <= 0.0 || nearTheLot())) {
+            (parameters_.parkingDistance <= 0.0 ||
+             distanceFromLot(problem_, observation) < parameters_.parkingDistance)) {
             mode_ = MpcMode::Parking;
             fallbackStep_ = k;
         }
