@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace prisca::core {
@@ -95,6 +96,94 @@ QJsonObject spreadJson(const CellSpread& s) {
             {"worstCell", s.worstCell}};
 }
 
+// One cell's position MAE [cm], by its name and its day's index in the summary.
+struct CellValue {
+    QString name;
+    size_t day = 0;
+    double cm = 0.0;
+};
+
+double meanOfFinite(const std::vector<CellValue>& cells, const std::optional<size_t>& day) {
+    std::vector<double> finite;
+    for (const CellValue& c : cells) {
+        if ((!day || c.day == *day) && std::isfinite(c.cm)) {
+            finite.push_back(c.cm);
+        }
+    }
+    return finite.empty() ? kNaN : mean(finite);
+}
+
+// The planner's cells (all of them, or one day's) against the laws' (see LawComparison).
+LawComparison compareWithLaws(const std::vector<std::vector<CellValue>>& values, size_t planner,
+                              const std::vector<size_t>& laws, const std::vector<ProtocolRow>& rows,
+                              const std::optional<size_t>& day) {
+    LawComparison out;
+    out.bestLawMean = out.ratioOfMeans = out.worstRatio = kNaN;
+    for (size_t law : laws) {
+        const double m = meanOfFinite(values[law], day);
+        if (std::isfinite(m) && !(m >= out.bestLawMean)) {
+            out.bestLawMean = m;
+            out.bestLaw = rows[law].shownLabel();
+        }
+    }
+    const double plannerMean = meanOfFinite(values[planner], day);
+    if (std::isfinite(plannerMean) && out.bestLawMean > 0.0) {
+        out.ratioOfMeans = plannerMean / out.bestLawMean;
+    }
+    for (const CellValue& cell : values[planner]) {
+        if ((day && cell.day != *day) || !std::isfinite(cell.cm)) {
+            continue;
+        }
+        double best = std::numeric_limits<double>::infinity();
+        for (size_t law : laws) {
+            for (const CellValue& other : values[law]) {
+                if (other.name == cell.name && std::isfinite(other.cm)) {
+                    best = std::min(best, other.cm);
+                }
+            }
+        }
+        if (!std::isfinite(best)) {
+            continue;
+        }
+        ++out.cells;
+        if (cell.cm > kCellToleranceOverBestLaw * best) {
+            ++out.cellsOver;
+        }
+        const double ratio = best > 0.0      ? cell.cm / best
+                             : cell.cm > 0.0 ? std::numeric_limits<double>::infinity()
+                                             : 1.0;
+        if (!(ratio <= out.worstRatio)) {
+            out.worstRatio = ratio;
+            out.worstRatioCell = cell.name;
+        }
+    }
+    return out;
+}
+
+// "0.29x PD+LSD; 0 of 10 cells over 1.5x; worst 1.21x (x11 fast on day 8300)".
+QString lawComparisonText(const LawComparison& c) {
+    if (c.cells == 0) {
+        return QStringLiteral("n/a");
+    }
+    return QStringLiteral("%1x %2; %3 of %4 cells over %5x; worst %6x (%7)")
+        .arg(QString::number(c.ratioOfMeans, 'f', 2), c.bestLaw)
+        .arg(c.cellsOver)
+        .arg(c.cells)
+        .arg(QString::number(kCellToleranceOverBestLaw, 'f', 1),
+             QString::number(c.worstRatio, 'f', 2), c.worstRatioCell);
+}
+
+QJsonObject lawComparisonJson(const LawComparison& c) {
+    return {{"cells", c.cells},
+            {"bestLaw", c.bestLaw},
+            {"bestLawMeanCm", jsonNumber(c.bestLawMean)},
+            {"ratioOfMeans", jsonNumber(c.ratioOfMeans)},
+            {"tolerance", kCellToleranceOverBestLaw},
+            {"cellsOver", c.cellsOver},
+            {"worstRatio", jsonNumber(c.worstRatio)},
+            {"worstRatioCell", c.worstRatioCell}};
+}
+
 QString escapeLatex(QString text) {
     return text.replace(QLatin1Char('%'), QStringLiteral("\\%"))
         .replace(QLatin1Char('_'), QStringLiteral("\\_"));
@@ -148,6 +237,7 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
     ProtocolSummary summary;
     summary.styles = styles;
     summary.seedSets = seedSets;
+    std::vector<std::vector<CellValue>> values(cells.size());
     for (int m = 0; m < methods.size(); ++m) {
         ProtocolRow row;
         row.method = methods[m];
@@ -160,6 +250,7 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
         for (const ProtocolCell& cell : cells[m]) {
             row.label = cell.row.label;
             row.limit = cell.row.limit;
+            row.plansThroughModel = cell.row.plansThroughModel;
             position.push_back(cell.row.position.meanAbsoluteError);
             orientation.push_back(cell.row.orientation.meanAbsoluteError);
             cpu.push_back(cell.row.cpuMicrosecondsPerStep);
@@ -173,7 +264,11 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
             }
             stylePosition[s].push_back(cell.row.position.meanAbsoluteError);
             styleOrientation[s].push_back(cell.row.orientation.meanAbsoluteError);
-            const QString name = QStringLiteral("%1 on day %2").arg(cell.style).arg(cell.seedSet);
+            const QString name = QStringLiteral("%1 on day %2")
+                                     .arg(cell.demonstration.isEmpty()
+                                              ? cell.style
+                                              : cell.style + QLatin1Char(' ') + cell.demonstration)
+                                     .arg(cell.seedSet);
             names.append(name);
             const auto day = std::find(seedSets.begin(), seedSets.end(), cell.seedSet);
             if (day == seedSets.end()) {
@@ -185,6 +280,8 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
             const size_t d = static_cast<size_t>(day - seedSets.begin());
             dayPosition[d].push_back(cell.row.position.meanAbsoluteError);
             dayNames[d].append(name);
+            values[static_cast<size_t>(m)].push_back(
+                {name, d, cell.row.position.meanAbsoluteError});
         }
         row.spread = spreadOf(position, names);
         for (size_t d = 0; d < seedSets.size(); ++d) {
@@ -198,6 +295,22 @@ ProtocolSummary summarizeProtocol(const QStringList& methods, const QStringList&
             row.styleOrientation.push_back(meanInterval(styleOrientation[s]));
         }
         summary.rows.push_back(std::move(row));
+    }
+    std::vector<size_t> laws;
+    for (size_t m = 0; m < summary.rows.size(); ++m) {
+        if (!summary.rows[m].limit && !summary.rows[m].plansThroughModel) {
+            laws.push_back(m);
+        }
+    }
+    for (size_t m = 0; m < summary.rows.size() && !laws.empty(); ++m) {
+        ProtocolRow& row = summary.rows[m];
+        if (!row.plansThroughModel) {
+            continue;
+        }
+        row.againstLaws = compareWithLaws(values, m, laws, summary.rows, std::nullopt);
+        for (size_t d = 0; d < row.days.size(); ++d) {
+            row.days[d].againstLaws = compareWithLaws(values, m, laws, summary.rows, d);
+        }
     }
     return summary;
 }
@@ -259,6 +372,34 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                     out += QStringLiteral(" %1 |").arg(spreadText(day.position));
                 }
                 out += QLatin1Char('\n');
+            }
+            const bool planners =
+                std::any_of(summary.rows.begin(), summary.rows.end(),
+                            [](const ProtocolRow& r) { return r.againstLaws.cells > 0; });
+            if (planners) {
+                out += QStringLiteral(
+                           "\nPlanners against the feedback laws (every row but the planners and "
+                           "the limit): the ratio of means to the law that parks best over the "
+                           "cells, the cells worse than %1x the best law on that cell, the worst "
+                           "ratio (its cell):\n\n| method | all |")
+                           .arg(QString::number(kCellToleranceOverBestLaw, 'f', 1));
+                rule = QStringLiteral("| --- | --- |");
+                for (std::uint64_t set : summary.seedSets) {
+                    out += QStringLiteral(" %1 |").arg(set);
+                    rule += QStringLiteral(" --- |");
+                }
+                out += QLatin1Char('\n') + rule + QLatin1Char('\n');
+                for (const ProtocolRow& r : summary.rows) {
+                    if (r.againstLaws.cells == 0) {
+                        continue;
+                    }
+                    out += QStringLiteral("| %1 | %2 |")
+                               .arg(r.shownLabel(), lawComparisonText(r.againstLaws));
+                    for (const DaySpread& day : r.days) {
+                        out += QStringLiteral(" %1 |").arg(lawComparisonText(day.againstLaws));
+                    }
+                    out += QLatin1Char('\n');
+                }
             }
             break;
         }
@@ -367,6 +508,9 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                 for (const DaySpread& day : r.days) {
                     QJsonObject o = spreadJson(day.position);
                     o.insert("seedSet", static_cast<double>(day.seedSet));
+                    if (r.plansThroughModel) {
+                        o.insert("againstLaws", lawComparisonJson(day.againstLaws));
+                    }
                     days.append(o);
                 }
                 QJsonArray styles;
@@ -376,7 +520,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                                     {"positionCm", intervalJson(r.stylePosition[s])},
                                     {"orientationDeg", intervalJson(r.styleOrientation[s])}});
                 }
-                rows.append(QJsonObject{
+                QJsonObject row{
                     {"method", r.method},
                     {"label", r.shownLabel()},
                     {"trials", r.trials},
@@ -391,7 +535,11 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                     {"cpuMicrosecondsPerStep", jsonNumber(r.cpuMicrosecondsPerStep)},
                     {"styles", styles},
                     {"cellSpread", spreadJson(r.spread)},
-                    {"days", days}});
+                    {"days", days}};
+                if (r.plansThroughModel) {
+                    row.insert("againstLaws", lawComparisonJson(r.againstLaws));
+                }
+                rows.append(row);
             }
             QJsonArray styles, seedSets;
             for (const QString& style : summary.styles) {

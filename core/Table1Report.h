@@ -27,6 +27,9 @@ struct Table1Row {
     const QString& shownLabel() const { return label.isEmpty() ? method : label; }
     /// Fewer trials than asked for: every format marks it.
     bool partial() const { return plannedTrials > 0 && position.count < plannedTrials; }
+    /// Plans through an identified model (mpc): protocols read it per cell against the best
+    /// feedback law, the rows that are neither this nor the limit.
+    bool plansThroughModel = false;
 };
 
 /// Output formats of Table I.

@@ -166,7 +166,7 @@ std::vector<core::Table1Row> table1Rows(const Table1Result& result, int* finishe
         const MethodSpec& spec = MethodCatalog::get(method.method);
         rows.push_back({method.method, core::summarizeErrors(position),
                         core::summarizeErrors(orientation), core::mean(cpu), spec.label, spec.limit,
-                        static_cast<int>(method.trials.size())});
+                        static_cast<int>(method.trials.size()), spec.plansThroughModel});
     }
     if (finished) {
         *finished = count;

@@ -99,7 +99,8 @@ Table1ProtocolResult runTable1Protocol(const Table1ProtocolSettings& settings,
                 }
                 for (size_t m = 0; m < rows.size(); ++m) {
                     result.cells[m].push_back(
-                        {byVariant ? variantNames[static_cast<int>(v)] : style, set, rows[m]});
+                        {byVariant ? variantNames[static_cast<int>(v)] : style, set, rows[m],
+                         byVariant ? style : QString()});
                     // The trials by their place in the day, training first.
                     const MethodTrials& trials = run.methods[m];
                     TrialCurve& curve = result.curves[m];

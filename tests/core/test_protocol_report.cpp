@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace prisca::core;
@@ -115,6 +116,96 @@ class TestProtocolReport : public QObject {
         // A cell of a seed set the summary does not list is refused.
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  summarizeProtocol({"pd"}, {"A"}, {1, 3}, cells));
+    }
+
+    void planner_isReadCellByCellAgainstTheBestLaw() {
+        // mpc plans through a model; pd and ilc are the laws; the oracle is neither.
+        //            A/1  A/2  B/1  B/2
+        // mpc         1    9    2    3     mean 3.75
+        // pd          2    5   10    4     mean 5.25
+        // ilc         4    4    1    8     mean 4.25: the best law over all
+        // best law    2    4    1    4     mpc's ratios 0.5, 2.25, 2, 0.75: two over 1.5x
+        const QStringList methods{"mpc", "pd", "ilc", "oracle"};
+        const double values[3][4] = {{1, 9, 2, 3}, {2, 5, 10, 4}, {4, 4, 1, 8}};
+        std::vector<std::vector<ProtocolCell>> cells(4);
+        int i = 0;
+        for (const char* style : {"A", "B"}) {
+            for (std::uint64_t set : {1, 2}) {
+                for (int m = 0; m < 3; ++m) {
+                    Table1Row r = row(qPrintable(methods[m]), values[m][i], 1.0, 1.0);
+                    r.plansThroughModel = m == 0;
+                    cells[static_cast<size_t>(m)].push_back({style, set, r});
+                }
+                cells[3].push_back({style, set, row("oracle", 0.1, 0.1, 1.0)});
+                ++i;
+            }
+        }
+        // The laws' cells in another order: cells are matched by name, not by place.
+        std::reverse(cells[1].begin(), cells[1].end());
+        const ProtocolSummary s = summarizeProtocol(methods, {"A", "B"}, {1, 2}, cells);
+        const LawComparison& all = s.rows[0].againstLaws;
+        QCOMPARE(all.cells, 4);
+        QCOMPARE(all.bestLaw, QStringLiteral("ILC"));
+        QVERIFY(near(all.bestLawMean, 4.25));
+        QVERIFY(near(all.ratioOfMeans, 3.75 / 4.25));
+        QCOMPARE(all.cellsOver, 2);
+        QVERIFY(near(all.worstRatio, 2.25));
+        QCOMPARE(all.worstRatioCell, QStringLiteral("A on day 2"));
+        // Day 1: mpc 1, 2 (mean 1.5); pd 2, 10 (6); ilc 4, 1 (2.5); B/1 is 2x its best law.
+        const LawComparison& day1 = s.rows[0].days[0].againstLaws;
+        QCOMPARE(day1.cells, 2);
+        QCOMPARE(day1.bestLaw, QStringLiteral("ILC"));
+        QVERIFY(near(day1.ratioOfMeans, 0.6));
+        QCOMPARE(day1.cellsOver, 1);
+        QVERIFY(near(day1.worstRatio, 2.0));
+        QCOMPARE(day1.worstRatioCell, QStringLiteral("B on day 1"));
+        // Day 2: mpc 9, 3 (6); pd 5, 4 (4.5): the best law that day is another.
+        const LawComparison& day2 = s.rows[0].days[1].againstLaws;
+        QCOMPARE(day2.bestLaw, QStringLiteral("PD"));
+        QVERIFY(near(day2.ratioOfMeans, 6.0 / 4.5));
+        // Laws and the limit are not compared.
+        QCOMPARE(s.rows[1].againstLaws.cells, 0);
+        QCOMPARE(s.rows[3].againstLaws.cells, 0);
+
+        const QString md = formatProtocol(s, TableFormat::Markdown, "c");
+        QVERIFY2(md.contains("| MPC | 0.88x ILC; 2 of 4 cells over 1.5x; worst 2.25x (A on day 2) "
+                             "| 0.60x ILC; 1 of 2 cells over 1.5x; worst 2.00x (B on day 1) |"),
+                 qPrintable(md));
+        const QJsonArray rows =
+            QJsonDocument::fromJson(formatProtocol(s, TableFormat::Json, "c").toUtf8())
+                .object()
+                .value("rows")
+                .toArray();
+        const QJsonObject against = rows[0].toObject().value("againstLaws").toObject();
+        QCOMPARE(against.value("cellsOver").toInt(), 2);
+        QCOMPARE(against.value("tolerance").toDouble(), 1.5);
+        QCOMPARE(against.value("worstRatio").toDouble(), 2.25);
+        QCOMPARE(rows[0]
+                     .toObject()
+                     .value("days")
+                     .toArray()[1]
+                     .toObject()
+                     .value("againstLaws")
+                     .toObject()
+                     .value("bestLaw")
+                     .toString(),
+                 QStringLiteral("PD"));
+        QVERIFY(!rows[1].toObject().contains("againstLaws"));
+
+        // Without a law among the rows there is nothing to read the planner against.
+        std::vector<std::vector<ProtocolCell>> alone{cells[0], cells[3]};
+        const ProtocolSummary noLaw =
+            summarizeProtocol({"mpc", "oracle"}, {"A", "B"}, {1, 2}, alone);
+        QCOMPARE(noLaw.rows[0].againstLaws.cells, 0);
+        QVERIFY(!formatProtocol(noLaw, TableFormat::Markdown, "c").contains("Planners against"));
+    }
+
+    void aVariantsCell_isNamedWithItsDemonstration() {
+        std::vector<std::vector<ProtocolCell>> cells(1);
+        cells[0].push_back({"x11", 4, row("pd", 3.0, 1.0, 1.0), "fast"});
+        cells[0].push_back({"x11", 4, row("pd", 1.0, 1.0, 1.0), "blip"});
+        const ProtocolSummary s = summarizeProtocol({"pd"}, {"x11"}, {4}, cells);
+        QCOMPARE(s.rows[0].spread.worstCell, QStringLiteral("x11 fast on day 4"));
     }
 
     void markdown_showsIntervalsTheGapToTheLimitAndEveryStyle() {
