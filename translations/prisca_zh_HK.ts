@@ -530,11 +530,21 @@
     </message>
     <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="288"/>
+        <source>Start law learns across trials</source>
+        <translation>起始控制律跨試驗學習</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="289"/>
+        <source>The feedback law that drives a trial not planned through (ILC&apos;s loop) learns from the day&apos;s trials it drove.</source>
+        <translation>驅動未經規劃試驗的回饋控制律（ILC 迴路）會從當日由它駕駛的試驗中學習。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="303"/>
         <source>Plan kept while it parks within</source>
         <translation>計劃停車誤差上限</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="290"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="305"/>
         <source>Once a planned trial parks farther than this from the lot, the next trial is the feedback law&apos;s, and from then on each trial goes to whichever has parked the day&apos;s trials closer (0: the plan drives every trial it may).</source>
         <translation>按計劃駕駛的試驗一旦停在離車位超過此距離之處，下一次試驗交由回饋律駕駛；此後每次試驗交給當日試驗平均停得較近的一方（0：計劃駕駛每次可駕駛的試驗）。</translation>
     </message>
@@ -3940,27 +3950,27 @@ Do you want to replace it?</source>
         <translation>無法開始運行：%1</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="100"/>
+        <location filename="../app/workers/RunWorker.cpp" line="95"/>
         <source>Trial %1 of %2</source>
         <translation>第 %1 次試驗（共 %2 次）</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="179"/>
+        <location filename="../app/workers/RunWorker.cpp" line="174"/>
         <source>Run finished: %1 trials</source>
         <translation>運行完成：%1 次試驗</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="228"/>
+        <location filename="../app/workers/RunWorker.cpp" line="223"/>
         <source>The trial&apos;s bundle could not be written: %1</source>
         <translation>無法寫入試驗包：%1</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="253"/>
+        <location filename="../app/workers/RunWorker.cpp" line="248"/>
         <source>Run stopped</source>
         <translation>運行已停止</translation>
     </message>
     <message>
-        <location filename="../app/workers/RunWorker.cpp" line="271"/>
+        <location filename="../app/workers/RunWorker.cpp" line="266"/>
         <source>E-STOP: run stopped</source>
         <translation>緊急停止：運行已停止</translation>
     </message>

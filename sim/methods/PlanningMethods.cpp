@@ -281,6 +281,21 @@ const MethodParameter& mpcRefit() {
     return p;
 }
 
+const MethodParameter& mpcStartLearning() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "mpc.start-learning",
+            QT_TRANSLATE_NOOP("MethodParameter", "Start law learns across trials"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "The feedback law that drives a trial not planned through (ILC's "
+                              "loop) learns from the day's trials it drove."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.startLearning ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.startLearning = v[0] > 0.5; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcPlanTrust() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
@@ -324,15 +339,18 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
     // The fallback: the PD with the least-state-deviation reference, the profile's law.
     std::unique_ptr<core::Controller> fallback =
         makePdLsd(MethodInput{profile, demonstration, in.fittedB, nullptr});
-    // A trial not planned through at all is driven from its start by ILC's loop with its
-    // learning off: the PD on the time-aligned error at the profile's ILC gains (half the PD's
-    // on the slide-car). On the development cars with the reality gap it parked at 17.9 cm
-    // where PD+LSD parked at 34.3 (docs/research-log.md, issue 33's twelfth step); from the
-    // middle of a trial the least-state-deviation reference did better.
-    core::IlcParameters gentle = profile.ilcParameters();
-    gentle.learningGain.setZero();
+    // A trial not planned through at all is driven from its start by ILC's loop: the PD on the
+    // time-aligned error at the profile's ILC gains (half the PD's on the slide-car). On the
+    // development cars with the reality gap it parked at 17.9 cm where PD+LSD parked at 34.3
+    // (docs/research-log.md, issue 33's twelfth step); from the middle of a trial the
+    // least-state-deviation reference did better. It learns from the trials it drove as ILC
+    // does (mpc.start-learning); the controller steps it on those trials only.
+    core::IlcParameters startLawParameters = profile.ilcParameters();
+    if (!profile.mpc.startLearning) {
+        startLawParameters.learningGain.setZero();
+    }
     auto startLaw = std::make_unique<core::IlcController>(
-        profile.trackingProblem(demonstration, Mode::TimeDriven), gentle);
+        profile.trackingProblem(demonstration, Mode::TimeDriven), startLawParameters);
     std::vector<core::Demonstration> data{*demonstration};
     const IdentificationSettings settings = mpcIdentificationSettings(profile.mpc, false);
     PlantParameters model;
@@ -376,15 +394,16 @@ Made makeMpc(const MethodSpec&, const MethodInput& in) {
 /// MPC, with the PD+LSD law as its fallback.
 MethodSpec mpcMethod() {
     MethodSpec s = entry("mpc", "MPC", &makeMpc);
-    s.learnsOnline = true;  // the model may be refit on each trial (mpc.refit)
+    s.learnsOnline = true;  // the start law learns (mpc.start-learning); the model may be refit
     s.inDefaultTable1 = false;
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {mpcReplan(),          mpcRollouts(),    mpcTube(),         mpcPlanFit(),
-                    mpcPlanSlide(),       mpcStraight(),    mpcSteeringBias(), mpcSpinGuard(),
-                    mpcSegment(),         mpcRollingBias(), mpcParking(),      mpcParkingDistance(),
-                    mpcParkingApproach(), mpcPlanTrust(),   mpcRefit()};
+    s.parameters = {
+        mpcReplan(),          mpcRollouts(),    mpcTube(),          mpcPlanFit(),
+        mpcPlanSlide(),       mpcStraight(),    mpcSteeringBias(),  mpcSpinGuard(),
+        mpcSegment(),         mpcRollingBias(), mpcParking(),       mpcParkingDistance(),
+        mpcParkingApproach(), mpcPlanTrust(),   mpcStartLearning(), mpcRefit()};
     return s;
 }
 

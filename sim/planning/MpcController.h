@@ -156,6 +156,13 @@ struct MpcParameters {
     /// apart (docs/research-log.md, issue 33's twentieth step). 0: the plan drives every trial
     /// it may.
     double planTrust = 0.1;
+    /// The start law (ILC's loop) keeps ILC's learning across the day's trials it drives from
+    /// their start, learning from those trials only. On the thirteenth held-out round's two hard
+    /// days (then seen) the models of 13 of the 20 demonstrations fitted worse than `planFit`
+    /// and the loop without learning drove every trial, 1-2 cm a cell behind ILC's own row on
+    /// every one of them (docs/research-log.md, issue 33's twenty-first step). Off: every trial
+    /// the start law drives is as the day's first.
+    bool startLearning = true;
 };
 
 /// What the day's trials gave each driver: the measured distance [m] from the lot at each

@@ -502,7 +502,7 @@ class TestMpc : public QObject {
     }
 
     // A demonstration identification refuses (this one has no slide) has no model to plan
-    // through: the start law, ILC's loop with its learning off, drives every trial from its
+    // through: the start law, ILC's loop, drives every trial from its
     // start, and the trial note names the refusal.
     void refusedDemonstration_theStartLawDrives() {
         Setup setup;
@@ -528,6 +528,30 @@ class TestMpc : public QObject {
         const double byMpc = setup.trial(*mpc, 3, 1.0);
         QCOMPARE(byMpc, setup.trial(*ilc, 3, 1.0));
         QVERIFY(byMpc != setup.trial(*lsd, 3, 1.0));
+    }
+
+    // The start law is ILC's loop with its learning (mpc.start-learning): on a day the model is
+    // not planned through, each trial it drives learns from the ones before as ILC's own row
+    // does, a cold reset forgets, and with the parameter off every trial is as the first.
+    void startLaw_learnsFromTheTrialsItDrives() {
+        Setup setup;
+        setup.profile.mpc.planFit = 1e-6;
+        setup.profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        auto mpc = setup.mpc();
+        QCOMPARE(mpc->fallbackStep(), 0);
+        auto ilc = MethodCatalog::create("ilc", setup.profile, setup.demonstration, setup.b());
+        const double first = setup.trial(*mpc, 3, 1.0);
+        QCOMPARE(first, setup.trial(*ilc, 3, 1.0));
+        const double second = setup.trial(*mpc, 3, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(second, setup.trial(*ilc, 3, 1.0, core::ResetMode::WarmStart));
+        QVERIFY2(second != first, "the second trial is the first's: nothing was learned");
+        QCOMPARE(setup.trial(*mpc, 3, 1.0), first);
+
+        setup.profile.mpc.startLearning = false;
+        auto still = setup.mpc();
+        QCOMPARE(setup.trial(*still, 3, 1.0), first);
+        QCOMPARE(setup.trial(*still, 3, 1.0, core::ResetMode::WarmStart), first);
     }
 
     // A demonstration whose slide is smaller than mpc.plan-slide is not planned through: no
