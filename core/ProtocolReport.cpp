@@ -360,12 +360,16 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
             out += QStringLiteral(
                 "\nPer day (seed set), position MAE [cm] over the day's cells: mean / median / "
                 "worst (its cell):\n\n| method | all |");
-            rule = QStringLiteral("| --- | ---: |");
-            for (std::uint64_t set : summary.seedSets) {
-                out += QStringLiteral(" %1 |").arg(set);
-                rule += QStringLiteral(" ---: |");
-            }
-            out += QLatin1Char('\n') + rule + QLatin1Char('\n');
+            // A column per day (seed set) after "all", and the header's rule.
+            auto dayColumns = [&](const QString& alignment) {
+                QString dayRule = QStringLiteral("| --- | %1 |").arg(alignment);
+                for (std::uint64_t set : summary.seedSets) {
+                    out += QStringLiteral(" %1 |").arg(set);
+                    dayRule += QStringLiteral(" %1 |").arg(alignment);
+                }
+                out += QLatin1Char('\n') + dayRule + QLatin1Char('\n');
+            };
+            dayColumns(QStringLiteral("---:"));
             for (const ProtocolRow& r : summary.rows) {
                 out += QStringLiteral("| %1 | %2 |").arg(r.shownLabel(), spreadText(r.spread));
                 for (const DaySpread& day : r.days) {
@@ -383,12 +387,7 @@ QString formatProtocol(const ProtocolSummary& summary, TableFormat format, const
                            "cells, the cells worse than %1x the best law on that cell, the worst "
                            "ratio (its cell):\n\n| method | all |")
                            .arg(QString::number(kCellToleranceOverBestLaw, 'f', 1));
-                rule = QStringLiteral("| --- | --- |");
-                for (std::uint64_t set : summary.seedSets) {
-                    out += QStringLiteral(" %1 |").arg(set);
-                    rule += QStringLiteral(" --- |");
-                }
-                out += QLatin1Char('\n') + rule + QLatin1Char('\n');
+                dayColumns(QStringLiteral("---"));
                 for (const ProtocolRow& r : summary.rows) {
                     if (r.againstLaws.cells == 0) {
                         continue;

@@ -1,9 +1,10 @@
 // Developer tool (not installed): model-predictive parking trial by trial on one cell of the
 // new-car protocol (a variant, a style, a seed set), with a feedback law on the same trials (LAW=,
 // PD+LSD by default), what mpc did each trial (planned or fell back, and why; its model's fit;
-// refits; its rolling correction at the end).
+// refits; its rolling correction at the end). DEMO_CSV=PATH writes the cell's demonstration.
 //   mpc_dev VARIANT.json STYLE SEED_SET TRIALS [NAME=VALUE ...]
 #include "core/ActionMapping.h"
+#include "core/DemonstrationCsv.h"
 #include "sim/DemonstrationStyles.h"
 #include "sim/MethodCatalog.h"
 #include "sim/PlantCatalog.h"
@@ -92,6 +93,12 @@ int main(int argc, char** argv) {
             "demo: sideways %.2f m/s, side slip %.1f deg, yaw rate %.2f rad/s, slid %.2f m, "
             "turned %.2f rad, top speed %.2f m/s\n",
             lateral, slip * 180.0 / M_PI, yaw, slid, turned, top);
+        if (qEnvironmentVariableIsSet("DEMO_CSV")) {
+            core::FileError error;
+            if (!core::writeDemonstrationCsv(*task.demonstration, qEnvironmentVariable("DEMO_CSV"),
+                                             &error))
+                std::fprintf(stderr, "DEMO_CSV: not written\n");
+        }
         if (trials <= 0)
             return 0;
     }

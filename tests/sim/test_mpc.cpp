@@ -44,6 +44,13 @@ struct Setup {
         p.mpc.planSlide = 0.0;
         return p;
     }();
+    // The catalog car given as the model, with a plan-fit bound no model meets: the start law
+    // drives every trial from its start.
+    void noModelFitsWellEnough() {
+        profile.mpc.planFit = 1e-6;
+        profile.mpcModel =
+            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+    }
     Eigen::MatrixXd b() const {
         return core::fitActionMapping(*demonstration, profile.mapping,
                                       profile.info.deviationModel())
@@ -473,9 +480,7 @@ class TestMpc : public QObject {
     // fallback).
     void poorFit_theStartLawDrivesFromTheStart() {
         Setup setup;
-        setup.profile.mpc.planFit = 1e-6;
-        setup.profile.mpcModel =
-            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        setup.noModelFitsWellEnough();
         auto mpc = setup.mpc();
         QCOMPARE(mpc->mode(), MpcMode::Fallback);
         QCOMPARE(mpc->fallbackStep(), 0);
@@ -535,9 +540,7 @@ class TestMpc : public QObject {
     // does, a cold reset forgets, and with the parameter off every trial is as the first.
     void startLaw_learnsFromTheTrialsItDrives() {
         Setup setup;
-        setup.profile.mpc.planFit = 1e-6;
-        setup.profile.mpcModel =
-            std::make_shared<const PlantParameters>(defaultPlantParameters("slidecar"));
+        setup.noModelFitsWellEnough();
         auto mpc = setup.mpc();
         QCOMPARE(mpc->fallbackStep(), 0);
         auto ilc = MethodCatalog::create("ilc", setup.profile, setup.demonstration, setup.b());
