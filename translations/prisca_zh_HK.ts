@@ -539,12 +539,22 @@
         <translation>驅動未經規劃試驗的回饋控制律（ILC 迴路）會從當日由它駕駛的試驗中學習。</translation>
     </message>
     <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="302"/>
+        <source>Day&apos;s trials choose the law</source>
+        <translation>由當日試驗選擇控制律</translation>
+    </message>
+    <message>
         <location filename="../sim/methods/PlanningMethods.cpp" line="303"/>
+        <source>Once the start law&apos;s trials park farther than the plan&apos;s bound on average, the next trial not planned through is the fallback law&apos;s (PD+LSD) from its start, and from then on the one of the two that has parked the day&apos;s trials closer drives them.</source>
+        <translation>起始控制律的試驗平均停得比計劃的界限更遠時，下一次未經規劃的試驗由後備控制律（PD+LSD）從頭駕駛；此後由兩者中當日試驗平均停得較近的一方駕駛。</translation>
+    </message>
+    <message>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="319"/>
         <source>Plan kept while it parks within</source>
         <translation>計劃停車誤差上限</translation>
     </message>
     <message>
-        <location filename="../sim/methods/PlanningMethods.cpp" line="305"/>
+        <location filename="../sim/methods/PlanningMethods.cpp" line="321"/>
         <source>Once a planned trial parks farther than this from the lot, the next trial is the feedback law&apos;s, and from then on each trial goes to whichever has parked the day&apos;s trials closer (0: the plan drives every trial it may).</source>
         <translation>按計劃駕駛的試驗一旦停在離車位超過此距離之處，下一次試驗交由回饋律駕駛；此後每次試驗交給當日試驗平均停得較近的一方（0：計劃駕駛每次可駕駛的試驗）。</translation>
     </message>

@@ -296,6 +296,22 @@ const MethodParameter& mpcStartLearning() {
     return p;
 }
 
+const MethodParameter& mpcLawChoice() {
+    static const MethodParameter p = [] {
+        MethodParameter p = onOff(
+            "mpc.law-choice", QT_TRANSLATE_NOOP("MethodParameter", "Day's trials choose the law"),
+            QT_TRANSLATE_NOOP("MethodParameter",
+                              "Once the start law's trials park farther than the plan's bound "
+                              "on average, the next trial not planned through is the fallback "
+                              "law's (PD+LSD) from its start, and from then on the one of the "
+                              "two that has parked the day's trials closer drives them."));
+        p.get = [](const MethodTuning& f) { return one(f.mpc.lawChoice ? 1.0 : 0.0); };
+        p.set = [](MethodTuning& f, const Eigen::VectorXd& v) { f.mpc.lawChoice = v[0] > 0.5; };
+        return p;
+    }();
+    return p;
+}
+
 const MethodParameter& mpcPlanTrust() {
     static const MethodParameter p = [] {
         MethodParameter p = real(
@@ -399,11 +415,12 @@ MethodSpec mpcMethod() {
     s.plansThroughModel = true;
     s.plants = QStringList{QStringLiteral("slidecar")};  // what identification knows
     s.summary = "model-predictive parking through the car identified from its demonstration";
-    s.parameters = {
-        mpcReplan(),          mpcRollouts(),    mpcTube(),          mpcPlanFit(),
-        mpcPlanSlide(),       mpcStraight(),    mpcSteeringBias(),  mpcSpinGuard(),
-        mpcSegment(),         mpcRollingBias(), mpcParking(),       mpcParkingDistance(),
-        mpcParkingApproach(), mpcPlanTrust(),   mpcStartLearning(), mpcRefit()};
+    s.parameters = {mpcReplan(),          mpcRollouts(),  mpcTube(),
+                    mpcPlanFit(),         mpcPlanSlide(), mpcStraight(),
+                    mpcSteeringBias(),    mpcSpinGuard(), mpcSegment(),
+                    mpcRollingBias(),     mpcParking(),   mpcParkingDistance(),
+                    mpcParkingApproach(), mpcPlanTrust(), mpcStartLearning(),
+                    mpcLawChoice(),       mpcRefit()};
     return s;
 }
 

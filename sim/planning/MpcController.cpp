@@ -230,6 +230,7 @@ MpcController::MpcController(const MpcController& other)
       demonstrationCoast_(other.demonstrationCoast_),
       demonstrationCoastSpeed_(other.demonstrationCoastSpeed_),
       day_(other.day_),
+      fallbackLawDrives_(other.fallbackLawDrives_),
       record_(other.record_) {
     buildModel();
     if (other.appliedBias_ != 0.0) {
@@ -410,6 +411,7 @@ void MpcController::reset(core::ResetMode mode) {
     mode_ = MpcMode::Planning;
     fallbackReason_.clear();
     fallbackStep_ = -1;
+    fallbackLawDrives_ = false;
     if (demonstrationSlide_ < parameters_.planSlide) {
         fallBack(QStringLiteral("the demonstration slides at most %1 m/s sideways, and a plan is "
                                 "for slides of %2 m/s or more")
@@ -426,6 +428,12 @@ void MpcController::reset(core::ResetMode mode) {
     } else if (const QString why = dayPrefersStartLaw(); !why.isEmpty()) {
         fallBack(why);
     }
+    if (mode_ == MpcMode::Fallback) {
+        if (const QString why = dayPrefersFallbackLaw(); !why.isEmpty()) {
+            fallbackLawDrives_ = true;
+            fallbackReason_ = QStringLiteral("%1; %2").arg(fallbackReason_, why);
+        }
+    }
 }
 
 void MpcController::recordLastTrial() {
@@ -435,40 +443,79 @@ void MpcController::recordLastTrial() {
     // The distance from the lot as the last measurement has it (the car is at rest by the
     // trial's end, or what is left of its motion counts against whoever drove it).
     const double miss = distanceFromLot(problem_, observations_.back());
-    const bool startLawDrove = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
-    (startLawDrove ? day_.startLaw : day_.planned).push_back(miss);
+    const bool fromStart = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
+    if (!fromStart) {
+        day_.planned.push_back(miss);
+    } else {
+        (fallbackLawDrives_ ? day_.fallbackLaw : day_.startLaw).push_back(miss);
+    }
+}
+
+namespace {
+
+double meanOf(const std::vector<double>& v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+// "trial 5.0 cm from the lot" or "3 trials 5.0 cm from the lot on average"
+QString trialsText(const std::vector<double>& v) {
+    return v.size() == 1
+               ? QStringLiteral("trial %1 cm from the lot").arg(100.0 * v.front(), 0, 'f', 1)
+               : QStringLiteral("%1 trials %2 cm from the lot on average")
+                     .arg(v.size())
+                     .arg(100.0 * meanOf(v), 0, 'f', 1);
+}
+
+}  // namespace
+
+QString MpcController::dayPrefersFallbackLaw() const {
+    if (!parameters_.lawChoice || !(parameters_.planTrust > 0.0) || day_.startLaw.empty()) {
+        return {};
+    }
+    if (day_.fallbackLaw.empty()) {
+        if (!(meanOf(day_.startLaw) > parameters_.planTrust)) {
+            return {};
+        }
+        return QStringLiteral(
+                   "the fallback law drives it from its start, as the start law "
+                   "parked this day's %1, more than the %2 cm it may")
+            .arg(trialsText(day_.startLaw))
+            .arg(100.0 * parameters_.planTrust, 0, 'f', 1);
+    }
+    if (!(meanOf(day_.fallbackLaw) < meanOf(day_.startLaw))) {
+        return {};
+    }
+    return QStringLiteral(
+               "the fallback law drives it from its start: it parked this day's %1, "
+               "the start law its %2")
+        .arg(trialsText(day_.fallbackLaw))
+        .arg(trialsText(day_.startLaw));
 }
 
 QString MpcController::dayPrefersStartLaw() const {
     if (!(parameters_.planTrust > 0.0) || day_.planned.empty()) {
         return {};
     }
-    auto mean = [](const std::vector<double>& v) {
-        return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-    };
-    // "trial 5.0 cm" or "3 trials 5.0 cm ... on average"
-    auto trials = [&](const std::vector<double>& v) {
-        return v.size() == 1
-                   ? QStringLiteral("trial %1 cm from the lot").arg(100.0 * v.front(), 0, 'f', 1)
-                   : QStringLiteral("%1 trials %2 cm from the lot on average")
-                         .arg(v.size())
-                         .arg(100.0 * mean(v), 0, 'f', 1);
-    };
-    const double planned = mean(day_.planned);
+    const double planned = meanOf(day_.planned);
     if (day_.startLaw.empty()) {
         if (planned <= parameters_.planTrust) {
             return {};
         }
         return QStringLiteral("the plan parked this day's %1, more than the %2 cm it may")
-            .arg(trials(day_.planned))
+            .arg(trialsText(day_.planned))
             .arg(100.0 * parameters_.planTrust, 0, 'f', 1);
     }
-    if (planned <= mean(day_.startLaw)) {
+    // The plan against the better of the laws that drove trials from their start.
+    const bool fallbackBetter =
+        !day_.fallbackLaw.empty() && meanOf(day_.fallbackLaw) < meanOf(day_.startLaw);
+    const std::vector<double>& law = fallbackBetter ? day_.fallbackLaw : day_.startLaw;
+    if (planned <= meanOf(law)) {
         return {};
     }
-    return QStringLiteral("the start law parked this day's %1, the plan its %2")
-        .arg(trials(day_.startLaw))
-        .arg(trials(day_.planned));
+    return QStringLiteral("the %1 law parked this day's %2, the plan its %3")
+        .arg(fallbackBetter ? QStringLiteral("fallback") : QStringLiteral("start"))
+        .arg(trialsText(law))
+        .arg(trialsText(day_.planned));
 }
 
 double MpcController::approachThrottle(double law) {
@@ -640,10 +687,11 @@ const core::ControlStep& MpcController::step(const Eigen::Ref<const Eigen::Vecto
     const int k = step_;
     observations_.emplace_back(observation);
     // The fallback follows every step, so that its reference is current when it takes over;
-    // a trial not planned through at all (handed over at reset, step 0) is the start law's.
+    // a trial not planned through at all (handed over at reset, step 0) is the start law's,
+    // or the fallback law's where the day's trials chose it (lawChoice).
     const bool fromStart = mode_ == MpcMode::Fallback && fallbackStep_ == 0;
-    const core::ControlStep& law =
-        fromStart ? startLaw_->step(observation) : fallback_->step(observation);
+    const core::ControlStep& law = fromStart && !fallbackLawDrives_ ? startLaw_->step(observation)
+                                                                    : fallback_->step(observation);
     const core::PlanarPoseIndices pose = *problem_.deviation.pose;
     const int lag = tubeSteps();
     if (mode_ == MpcMode::Planning && k >= lag) {

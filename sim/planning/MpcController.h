@@ -156,6 +156,15 @@ struct MpcParameters {
     /// apart (docs/research-log.md, issue 33's twentieth step). 0: the plan drives every trial
     /// it may.
     double planTrust = 0.1;
+    /// A trial not planned through is the start law's until the day's trials it drove park on
+    /// average farther than `planTrust`; then the next is the fallback law's (PD+LSD) from its
+    /// start, and from then on the one of the two with the lower mean of the day drives such
+    /// trials. The plan is weighed against the better of the two. Off (or `planTrust` 0): the
+    /// start law drives every trial not planned through. On the fifteenth held-out round's 25
+    /// stick-90-left cells (then seen; never planned: the demonstrations slide under `planSlide`),
+    /// replayed from each law's 8 trials, ILC's loop alone 9.56 cm, PD+LSD alone 8.00, the
+    /// choice 7.51 (docs/research-log.md, issue 33's twenty-second step).
+    bool lawChoice = false;
     /// The start law (ILC's loop) keeps ILC's learning across the day's trials it drives from
     /// their start, learning from those trials only. On the thirteenth held-out round's two hard
     /// days (then seen) the models of 13 of the 20 demonstrations fitted worse than `planFit`
@@ -170,6 +179,8 @@ struct MpcParameters {
 struct MpcDayRecord {
     std::vector<double> planned;
     std::vector<double> startLaw;
+    /// Trials the fallback law (PD+LSD) drove from their start (lawChoice).
+    std::vector<double> fallbackLaw;
 };
 
 /// Who drives a trial now: the plan through the model; the feedback law because the model could
@@ -263,6 +274,9 @@ class MpcController : public core::Controller {
     void recordLastTrial();
     /// Why the day's record sends this trial to the start law (planTrust), or empty.
     QString dayPrefersStartLaw() const;
+    /// Why the day's record sends a trial not planned through to the fallback law instead of
+    /// the start law (lawChoice), or empty.
+    QString dayPrefersFallbackLaw() const;
     int tubeSteps() const;
     /// The throttle that carries the parking car on to the lot (parkingApproach), or NaN where
     /// the feedback law's is kept: the car's coast already ends there, or it is past the lot.
@@ -314,6 +328,7 @@ class MpcController : public core::Controller {
     double demonstrationCoast_ = 0.0;       // the demonstration's coast into the lot [m/s^2]
     double demonstrationCoastSpeed_ = 0.0;  // ... at this mean speed [m/s]
     MpcDayRecord day_;                      // the day's finished trials (planTrust)
+    bool fallbackLawDrives_ = false;        // this trial not planned through is PD+LSD's
     core::ControlStep record_;
 };
 

@@ -557,6 +557,59 @@ class TestMpc : public QObject {
         QCOMPARE(setup.trial(*still, 3, 1.0, core::ResetMode::WarmStart), first);
     }
 
+    // mpc.law-choice: on a day no trial is planned through, once the start law's trials park
+    // farther than mpc.plan-trust on average the next is the fallback law's (PD+LSD) from its
+    // start, and from then on the one of the two with the lower mean of the day drives; the
+    // start law learns only from the trials it drove. Off: the start law drives every trial.
+    void lawChoice_theDaysTrialsChooseTheLawThatDrives() {
+        Setup setup;
+        setup.noModelFitsWellEnough();
+        setup.profile.mpc.lawChoice = true;
+        setup.profile.mpc.planTrust = 1e-4;  // every trial parks farther than 0.1 mm
+        auto mpc = setup.mpc();
+        auto ilc = MethodCatalog::create("ilc", setup.profile, setup.demonstration, setup.b());
+        auto pdLsd = MethodCatalog::create("pd-lsd", setup.profile, setup.demonstration, setup.b());
+        const double first = setup.trial(*mpc, 3, 1.0);
+        QCOMPARE(first, setup.trial(*ilc, 3, 1.0));
+        QVERIFY2(!mpc->trialNote().contains(QLatin1String("fallback law drives")),
+                 qPrintable(mpc->trialNote()));
+
+        const double second = setup.trial(*mpc, 3, 1.0, core::ResetMode::WarmStart);
+        QVERIFY2(mpc->trialNote().contains(QLatin1String("the fallback law drives it from its "
+                                                         "start, as the start law parked this "
+                                                         "day's trial")),
+                 qPrintable(mpc->trialNote()));
+        QCOMPARE(second, setup.trial(*pdLsd, 3, 1.0));
+        QCOMPARE(mpc->dayRecord().startLaw.size(), size_t{1});
+        QVERIFY(mpc->dayRecord().fallbackLaw.empty());
+
+        const double third = setup.trial(*mpc, 3, 1.0, core::ResetMode::WarmStart);
+        const MpcDayRecord& day = mpc->dayRecord();
+        QCOMPARE(day.startLaw.size(), size_t{1});
+        QCOMPARE(day.fallbackLaw.size(), size_t{1});
+        QVERIFY(day.planned.empty());
+        QVERIFY(day.startLaw.front() != day.fallbackLaw.front());
+        if (day.fallbackLaw.front() < day.startLaw.front()) {
+            QVERIFY2(mpc->trialNote().contains(QLatin1String("the fallback law drives it")),
+                     qPrintable(mpc->trialNote()));
+            QCOMPARE(third, second);
+        } else {
+            QVERIFY2(!mpc->trialNote().contains(QLatin1String("fallback law drives")),
+                     qPrintable(mpc->trialNote()));
+            // ILC's loop has learned from its own trial only, not from PD+LSD's.
+            QCOMPARE(third, setup.trial(*ilc, 3, 1.0, core::ResetMode::WarmStart));
+        }
+
+        setup.profile.mpc.lawChoice = false;
+        auto alone = setup.mpc();
+        setup.trial(*alone, 3, 1.0);
+        setup.trial(*alone, 3, 1.0, core::ResetMode::WarmStart);
+        QCOMPARE(alone->dayRecord().startLaw.size(), size_t{1});
+        QVERIFY(alone->dayRecord().fallbackLaw.empty());
+        QVERIFY2(!alone->trialNote().contains(QLatin1String("fallback law drives")),
+                 qPrintable(alone->trialNote()));
+    }
+
     // A demonstration whose slide is smaller than mpc.plan-slide is not planned through: no
     // model is identified for it, the start law drives every trial from its start, and the note
     // says why. Just over its largest sideways speed the bound applies to a given model too; just
