@@ -163,7 +163,10 @@ struct MpcParameters {
     /// start law drives every trial not planned through. On the fifteenth held-out round's 25
     /// stick-90-left cells (then seen; never planned: the demonstrations slide under `planSlide`),
     /// replayed from each law's 8 trials, ILC's loop alone 9.56 cm, PD+LSD alone 8.00, the
-    /// choice 7.51 (docs/research-log.md, issue 33's twenty-second step).
+    /// choice 7.51 (docs/research-log.md, issue 33's twenty-second step). Held out on the
+    /// sixteenth round (the day's trials in a row) it parked at 9.51 cm against 9.21 without
+    /// it, better on four days of five, but one cell at 138 cm where PD+LSD ran the car away:
+    /// off (docs/results.md).
     bool lawChoice = false;
     /// The start law (ILC's loop) keeps ILC's learning across the day's trials it drives from
     /// their start, learning from those trials only. On the thirteenth held-out round's two hard
