@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
             core::FileError error;
             if (!core::writeDemonstrationCsv(*task.demonstration, qEnvironmentVariable("DEMO_CSV"),
                                              &error))
-                std::fprintf(stderr, "DEMO_CSV: not written\n");
+                std::fprintf(stderr, "DEMO_CSV: %s\n", qPrintable(error.toString()));
         }
         if (trials <= 0)
             return 0;
