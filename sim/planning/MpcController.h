@@ -90,9 +90,14 @@ struct MpcParameters {
     /// the 31 planned demonstrations sliding less than 1.2 m/s parked at 12.7 cm where ILC's
     /// loop from the start parked 8.4, the 12 sliding more at 4.3 against 12.4; on the catalog
     /// car (no reality gap) planned slides of 0.98-1.05 m/s parked at 3.8-6.4 cm against the
-    /// loop's 6.6-7.4 (docs/research-log.md, issue 33's fifteenth step). 0: every
-    /// demonstration identification accepts is planned through.
-    double planSlide = 1.0;
+    /// loop's 6.6-7.4 (docs/research-log.md, issue 33's fifteenth step). That was 1.0 m/s, from
+    /// before the day's trials chose who drives (`planTrust`) and the law parked the car
+    /// (`parkingSpeed`); with them, the 28 seen cells of the fifteenth and sixteenth held-out
+    /// rounds sliding 0.3-1.0 m/s parked at 6.57 cm planned against 8.35 for the loop (trials
+    /// 5-8 of 8), and held out (gap-eval17) 4.86 cm against 4.88, no day worse by more than
+    /// 0.3 cm (issue 33's twenty-third step): 0.3 m/s, where identification's own refusal
+    /// ("no slide") begins. 0: every demonstration identification accepts is planned through.
+    double planSlide = 0.3;
     /// The model is fitted over stretches of its data this long [s] (identification's
     /// segmentSeconds).
     double modelSegment = 1.0;
