@@ -95,7 +95,7 @@ struct MpcParameters {
     /// (`parkingSpeed`); with them, the 28 seen cells of the fifteenth and sixteenth held-out
     /// rounds sliding 0.3-1.0 m/s parked at 6.57 cm planned against 8.35 for the loop (trials
     /// 5-8 of 8), and held out (gap-eval17) 4.86 cm against 4.88, no day worse by more than
-    /// 0.3 cm (issue 33's twenty-third step): 0.3 m/s, where identification's own refusal
+    /// 0.32 cm (issue 33's twenty-third step): 0.3 m/s, where identification's own refusal
     /// ("no slide") begins. 0: every demonstration identification accepts is planned through.
     double planSlide = 0.3;
     /// The model is fitted over stretches of its data this long [s] (identification's
