@@ -130,8 +130,8 @@ struct MpcParameters {
     /// car it does not match (tyres, motor, floor, the ESC's neutral band) may not follow. At
     /// 0.5 eleven planned development cells with the reality gap went from 7.55 cm to 3.35; held
     /// out (the fourth round's cars) 10.55 cm to 10.93, the loss on 90-degree turns that
-    /// `planSlide` now leaves to the start law; on those cars' 13 planned demonstrations over
-    /// that bound 5.64 to 3.00
+    /// `planSlide` at 1.0 m/s then left to the start law; on those cars' 13 planned
+    /// demonstrations over that bound 5.64 to 3.00
     /// (docs/research-log.md, issue 33's fourteenth and fifteenth steps).
     double parkingSpeed = 0.5;
     /// The hand-over waits, too, until the measured position is within this distance [m] of

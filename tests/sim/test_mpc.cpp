@@ -39,8 +39,8 @@ struct Setup {
         std::make_shared<core::Demonstration>(PlantCatalog::demonstrate("slidecar", 1));
     MethodTuning profile = [] {
         MethodTuning p = PlantCatalog::tuning(PlantCatalog::describe("slidecar"));
-        // The tests are of the plan; this demonstration slides at about mpc.plan-slide's
-        // bound (1.0 m/s), which smallSlide_... tests on its own.
+        // The tests are of the plan: mpc.plan-slide's bound off here (this demonstration slides
+        // at about 1.0 m/s), which smallSlide_... tests on its own.
         p.mpc.planSlide = 0.0;
         return p;
     }();
