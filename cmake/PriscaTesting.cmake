@@ -1,10 +1,12 @@
 # prisca_add_test(<name> SOURCES <files...> LIBRARIES <targets...> LABELS <labels...>
-#                  [TIMEOUT <seconds>] [FUNCTIONS <test functions...>])
-# One QtTest executable registered with CTest; tests always run offscreen. With FUNCTIONS, each
-# of the executable's test functions is its own CTest test (<name>.<function>), so that the
-# minutes-long ones run side by side under `ctest -j`.
+#                  [TIMEOUT <seconds>] [EACH_FUNCTION] [ENVIRONMENT <VAR=value...>])
+# One QtTest executable registered with CTest; tests always run offscreen. With EACH_FUNCTION,
+# each test function of the sources (the `    void name() {` lines after "private slots:") is
+# its own CTest test (<name>.<function>), so that the minutes-long ones run side by side under
+# `ctest -j`; a source's change re-runs the configure, so a new function is registered.
 function(prisca_add_test name)
-    cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBRARIES;LABELS;FUNCTIONS" ${ARGN})
+    cmake_parse_arguments(ARG "EACH_FUNCTION" "TIMEOUT" "SOURCES;LIBRARIES;LABELS;ENVIRONMENT"
+                          ${ARGN})
     add_executable(${name} ${ARG_SOURCES})
     target_link_libraries(${name} PRIVATE Qt6::Test ${ARG_LIBRARIES})
     # Test helpers shared by several suites ("support/...").
@@ -15,35 +17,35 @@ function(prisca_add_test name)
         set(ARG_TIMEOUT 300)
     endif()
     set(tests)
-    if(ARG_FUNCTIONS)
-        # Every test function of the sources (after their "private slots:") must be listed, or
-        # a new one would never run.
+    if(ARG_EACH_FUNCTION)
         foreach(source IN LISTS ARG_SOURCES)
-            file(READ ${source} text)
+            set(path ${CMAKE_CURRENT_SOURCE_DIR}/${source})
+            set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${path})
+            file(READ ${path} text)
             string(FIND "${text}" "private slots:" at)
-            if(at GREATER -1)
-                string(SUBSTRING "${text}" ${at} -1 text)
+            if(at EQUAL -1)
+                message(FATAL_ERROR "${name}: ${source} has no \"private slots:\"")
             endif()
+            string(SUBSTRING "${text}" ${at} -1 text)
             string(REGEX MATCHALL "\n    void [A-Za-z0-9_]+\\(\\) {" slots "${text}")
             foreach(slot IN LISTS slots)
-                string(REGEX REPLACE "^\n    void ([A-Za-z0-9_]+).*" "\\1" slot "${slot}")
-                if(NOT slot IN_LIST ARG_FUNCTIONS)
-                    message(FATAL_ERROR "${name}: test function ${slot} is not in FUNCTIONS")
-                endif()
+                string(REGEX REPLACE "^\n    void ([A-Za-z0-9_]+).*" "\\1" function "${slot}")
+                add_test(NAME ${name}.${function} COMMAND ${name} ${function})
+                list(APPEND tests ${name}.${function})
             endforeach()
         endforeach()
-        foreach(function IN LISTS ARG_FUNCTIONS)
-            add_test(NAME ${name}.${function} COMMAND ${name} ${function})
-            list(APPEND tests ${name}.${function})
-        endforeach()
+        if(NOT tests)
+            message(FATAL_ERROR "${name}: no test function found in ${ARG_SOURCES}")
+        endif()
     else()
         add_test(NAME ${name} COMMAND ${name})
         set(tests ${name})
     endif()
+    set(environment QT_QPA_PLATFORM=offscreen ${ARG_ENVIRONMENT})
     set_tests_properties(${tests} PROPERTIES
         LABELS "${ARG_LABELS}"
         TIMEOUT ${ARG_TIMEOUT}
-        ENVIRONMENT "QT_QPA_PLATFORM=offscreen")
+        ENVIRONMENT "${environment}")
 endfunction()
 
 # prisca_add_benchmark(<name> SOURCES <files...> LIBRARIES <targets...>)
